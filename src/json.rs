@@ -1,0 +1,152 @@
+//! Strict JSON reading: serde_json keeps the last of two equal keys
+//! silently, so a scene with `"A"` twice under `points` would lose a point
+//! without a word. This reader builds the same `serde_json::Value` but
+//! records every repeated key with its JSON pointer.
+
+use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
+use serde_json::{Map, Number, Value};
+use std::cell::RefCell;
+use std::fmt;
+
+/// Escape one JSON-pointer token (RFC 6901).
+pub fn escape(token: &str) -> String {
+    token.replace('~', "~0").replace('/', "~1")
+}
+
+struct Strict<'a> {
+    path: String,
+    repeats: &'a RefCell<Vec<String>>,
+}
+
+impl<'de> DeserializeSeed<'de> for Strict<'_> {
+    type Value = Value;
+    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Strict<'_> {
+    type Value = Value;
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E>(self, v: bool) -> Result<Value, E> {
+        Ok(Value::Bool(v))
+    }
+    fn visit_i64<E>(self, v: i64) -> Result<Value, E> {
+        Ok(Value::Number(v.into()))
+    }
+    fn visit_u64<E>(self, v: u64) -> Result<Value, E> {
+        Ok(Value::Number(v.into()))
+    }
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Value, E> {
+        Number::from_f64(v)
+            .map(Value::Number)
+            .ok_or_else(|| E::custom(format!("{}: non-finite number", self.path)))
+    }
+    fn visit_str<E>(self, v: &str) -> Result<Value, E> {
+        Ok(Value::String(v.to_owned()))
+    }
+    fn visit_string<E>(self, v: String) -> Result<Value, E> {
+        Ok(Value::String(v))
+    }
+    fn visit_unit<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Value, A::Error> {
+        let mut out = Vec::new();
+        while let Some(v) = seq.next_element_seed(Strict {
+            path: format!("{}/{}", self.path, out.len()),
+            repeats: self.repeats,
+        })? {
+            out.push(v);
+        }
+        Ok(Value::Array(out))
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Value, A::Error> {
+        let mut out = Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            let path = format!("{}/{}", self.path, escape(&key));
+            let v = map.next_value_seed(Strict {
+                path: path.clone(),
+                repeats: self.repeats,
+            })?;
+            if out.contains_key(&key) {
+                self.repeats
+                    .borrow_mut()
+                    .push(format!("{path}: the name \"{key}\" is repeated"));
+            } else {
+                out.insert(key, v);
+            }
+        }
+        Ok(Value::Object(out))
+    }
+}
+
+/// Parse JSON text; an error is a human message (with line and column for
+/// syntax errors, JSON pointers for repeated keys).
+pub fn parse_strict(text: &str) -> Result<Value, Vec<String>> {
+    let repeats = RefCell::new(Vec::new());
+    let mut de = serde_json::Deserializer::from_str(text);
+    let seed = Strict {
+        path: String::new(),
+        repeats: &repeats,
+    };
+    let value = seed
+        .deserialize(&mut de)
+        .and_then(|v| de.end().map(|_| v))
+        .map_err(|e| vec![describe_syntax_error(text, &e)])?;
+    let repeats = repeats.into_inner();
+    if repeats.is_empty() {
+        Ok(value)
+    } else {
+        Err(repeats)
+    }
+}
+
+/// serde_json says "expected value" for `NaN`; say what is really wrong.
+fn describe_syntax_error(text: &str, e: &serde_json::Error) -> String {
+    let (line, col) = (e.line(), e.column());
+    let at = text
+        .lines()
+        .nth(line.saturating_sub(1))
+        .map(|l| l.chars().skip(col.saturating_sub(1)).collect::<String>())
+        .unwrap_or_default();
+    let at = at.trim_start();
+    let non_finite = ["NaN", "Infinity", "-Infinity", "inf", "-inf", "nan"]
+        .iter()
+        .any(|w| at.starts_with(w));
+    if non_finite {
+        format!(
+            "line {line}, column {col}: non-finite number (NaN or Infinity) is not allowed; every number must be finite"
+        )
+    } else if e.to_string().contains("number out of range") {
+        format!("line {line}, column {col}: number out of range (not a finite 64-bit float)")
+    } else {
+        format!("malformed JSON: {e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn repeated_key_is_reported_with_pointer() {
+        let e = parse_strict(r#"{"points": {"A": [0, 0], "A": [1, 1]}}"#).unwrap_err();
+        assert_eq!(e, vec!["/points/A: the name \"A\" is repeated".to_string()]);
+    }
+
+    #[test]
+    fn nan_is_named() {
+        let e = parse_strict("{\"a\": NaN}").unwrap_err();
+        assert!(e[0].contains("non-finite"), "{e:?}");
+    }
+
+    #[test]
+    fn order_is_kept() {
+        let v = parse_strict(r#"{"b": 1, "a": 2}"#).unwrap();
+        let keys: Vec<_> = v.as_object().unwrap().keys().cloned().collect();
+        assert_eq!(keys, vec!["b", "a"]);
+    }
+}

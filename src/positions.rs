@@ -1,0 +1,590 @@
+//! Positions: the input placed exactly, then every group in the order of
+//! attachment by its closed form (circle∩circle, circle∩line, line∩line, the
+//! rocking-guide angle) on the branch the sketch shows. A class III group is
+//! solved by a one-dimensional root search in its base angle, tracked
+//! continuously from the sketch.
+
+use crate::error::{Error, Result};
+use crate::geom::{
+    LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
+};
+use crate::mechanism::Mechanism;
+use crate::scene::InputSpec;
+use crate::structure::{AssurGroup, Conn, Dyad, DyadKind, Joint, Structure, Triad};
+use kurbo::{Point, Vec2};
+
+/// The poses of the links solved so far (None: not needed, not computed).
+#[derive(Clone, Debug)]
+pub struct Configuration {
+    pub poses: Vec<Option<Pose>>,
+}
+
+impl Configuration {
+    pub fn pose(&self, link: usize) -> Pose {
+        self.poses[link].expect("link solved before use")
+    }
+    /// World position of `point` as carried by `link`.
+    pub fn point(&self, m: &Mechanism, link: usize, point: usize) -> Point {
+        self.pose(link).apply(m.local(link, point))
+    }
+}
+
+/// Branch of each group as the sketch shows it, plus the tracked state of
+/// class III groups (their base angle).
+#[derive(Clone, Debug)]
+pub struct Branches {
+    pub sign: Vec<f64>,
+    pub triad_angle: Vec<f64>,
+}
+
+/// Describe an input value for messages: "φ = 123.4°" or "s = 0.05 m".
+pub fn describe_input(m: &Mechanism, q: f64) -> String {
+    match m.scene.input {
+        InputSpec::Crank { .. } => format!("φ = {:.6}°", q.to_degrees()),
+        InputSpec::Slider { .. } => format!("s = {q:.9} m"),
+    }
+}
+
+fn sketch(m: &Mechanism, p: usize) -> Point {
+    m.scene.points[p].sketch
+}
+
+fn point_of(j: Joint) -> usize {
+    match j {
+        Joint::R(p) => p,
+        Joint::P(_) => unreachable!("a revolute pair was expected"),
+    }
+}
+
+fn pair_of(j: Joint) -> usize {
+    match j {
+        Joint::P(k) => k,
+        Joint::R(_) => unreachable!("a prismatic pair was expected"),
+    }
+}
+
+/// Angle of `moving` given the angle of `known` across prismatic pair `k`.
+fn angle_across(m: &Mechanism, k: usize, known: usize, known_angle: f64) -> f64 {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        known_angle + pr.delta
+    } else {
+        known_angle - pr.delta
+    }
+}
+
+/// The world line on which the local point `x` of link `moving` (at angle
+/// `theta`) must lie, because of prismatic pair `k` with the posed link `known`.
+pub fn slide_line(
+    m: &Mechanism,
+    k: usize,
+    known: usize,
+    known_pose: &Pose,
+    theta: f64,
+    x: Vec2,
+) -> crate::geom::Line {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        crate::geom::Line {
+            point: known_pose.apply(pr.line_point) + rotate(x - pr.slider_local, theta),
+            dir: known_pose.dir(pr.line_dir),
+        }
+    } else {
+        crate::geom::Line {
+            point: known_pose.apply(pr.slider_local) + rotate(x - pr.line_point, theta),
+            dir: rotate(pr.line_dir, theta),
+        }
+    }
+}
+
+/// The guide direction of pair `k` in the sketch.
+fn sketch_guide_dir(m: &Mechanism, k: usize) -> Vec2 {
+    let pr = &m.prismatics[k];
+    m.links[pr.guide].sketch_pose.dir(pr.line_dir)
+}
+
+/// The constant h and the pins for the rocking-guide (RPR) closed form:
+/// cross(u(ψ), J_S − J_G) = h, with ψ the guide link's angle.
+struct RockingGuide {
+    guide: usize,
+    slider: usize,
+    pin_guide: usize,
+    pin_slider: usize,
+    h: f64,
+    alpha: f64,
+    delta: f64,
+}
+
+fn rocking_guide(m: &Mechanism, d: &Dyad) -> RockingGuide {
+    let k = pair_of(d.mid.joint);
+    let pr = &m.prismatics[k];
+    let (b, dd) = (point_of(d.ext1.joint), point_of(d.ext2.joint));
+    let (l1, l2) = (d.links[0], d.links[1]);
+    let (pin_guide, pin_slider) = if pr.guide == l1 { (b, dd) } else { (dd, b) };
+    let jg = m.local(pr.guide, pin_guide);
+    let js = m.local(pr.slider, pin_slider);
+    let h = pr.line_dir.cross(pr.line_point - jg)
+        - pr.line_dir.cross(rotate(pr.slider_local - js, pr.delta));
+    let _ = l2;
+    RockingGuide {
+        guide: pr.guide,
+        slider: pr.slider,
+        pin_guide,
+        pin_slider,
+        h,
+        alpha: pr.line_dir.atan2(),
+        delta: pr.delta,
+    }
+}
+
+/// Triad data: leash lengths and the base's joint coordinates.
+struct TriadGeom {
+    ext_pts: [usize; 3],
+    int_pts: [usize; 3],
+    r: [f64; 3],
+    b: [Vec2; 3],
+}
+
+fn triad_geom(m: &Mechanism, t: &Triad) -> TriadGeom {
+    let ext_pts = t.ext.map(|c| point_of(c.joint));
+    let int_pts = t.int.map(|c| point_of(c.joint));
+    let r = [0, 1, 2]
+        .map(|i| (m.local(t.leashes[i], int_pts[i]) - m.local(t.leashes[i], ext_pts[i])).hypot());
+    let b = int_pts.map(|p| m.local(t.base, p));
+    TriadGeom {
+        ext_pts,
+        int_pts,
+        r,
+        b,
+    }
+}
+
+impl Branches {
+    /// Read every group's branch off the sketch.
+    pub fn from_sketch(m: &Mechanism, s: &Structure) -> Result<Branches> {
+        let tol = 1e-9 * m.size * m.size;
+        let mut sign = Vec::new();
+        let mut triad_angle = Vec::new();
+        for g in &s.groups {
+            let (sg, psi) = match g {
+                AssurGroup::Dyad(d) => (dyad_sign(m, d), 0.0),
+                AssurGroup::Triad(t) => {
+                    let tg = triad_geom(m, t);
+                    let e0 = sketch(m, tg.ext_pts[0]);
+                    let e1 = sketch(m, tg.ext_pts[1]);
+                    let w1 = sketch(m, tg.int_pts[1]) - sketch(m, tg.int_pts[0]);
+                    let c = (e1 - w1 - e0).cross(sketch(m, tg.int_pts[0]) - e0);
+                    (c, m.links[t.base].sketch_pose.angle)
+                }
+            };
+            let sg_tol = sign_tol(sg, tol);
+            if sg_tol == 0.0 && sg.is_finite() && needs_sign(g) {
+                return Err(Error::Structure(format!(
+                    "the sketch shows group {} at a dead point (its branch cannot be read off the drawing); draw it in a general position",
+                    g.label(m)
+                )));
+            }
+            sign.push(if needs_sign(g) { sg_tol } else { 1.0 });
+            triad_angle.push(psi);
+        }
+        Ok(Branches { sign, triad_angle })
+    }
+}
+
+fn needs_sign(g: &AssurGroup) -> bool {
+    match g {
+        AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
+        AssurGroup::Triad(_) => true,
+    }
+}
+
+fn dyad_sign(m: &Mechanism, d: &Dyad) -> f64 {
+    match d.kind {
+        DyadKind::Rrr => {
+            let (b, c, dd) = (
+                sketch(m, point_of(d.ext1.joint)),
+                sketch(m, point_of(d.mid.joint)),
+                sketch(m, point_of(d.ext2.joint)),
+            );
+            (dd - b).cross(c - b)
+        }
+        DyadKind::Rrp => {
+            let b = sketch(m, point_of(d.ext1.joint));
+            let c = sketch(m, point_of(d.mid.joint));
+            (c - b).dot(sketch_guide_dir(m, pair_of(d.ext2.joint)))
+        }
+        DyadKind::Rpr => {
+            let rg = rocking_guide(m, d);
+            let u = sketch_guide_dir(m, pair_of(d.mid.joint));
+            u.dot(sketch(m, rg.pin_slider) - sketch(m, rg.pin_guide))
+        }
+        DyadKind::Prp | DyadKind::Rpp => 1.0,
+    }
+}
+
+/// Place the input link exactly at its coordinate `q` (rad or m).
+pub fn place_input(m: &Mechanism, q: f64) -> Pose {
+    match m.scene.input {
+        InputSpec::Crank { link, pivot, .. } => {
+            let pts = &m.links[link].points;
+            let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+            let w = m.local(link, other) - m.local(link, pivot);
+            let at = m.links[m.frame()]
+                .sketch_pose
+                .apply(m.local(m.frame(), pivot));
+            Pose::through(at, m.local(link, pivot), q - w.atan2())
+        }
+        InputSpec::Slider { pair, .. } => {
+            let pr = &m.prismatics[pair];
+            let line = pr.line(&Pose::IDENTITY);
+            let q0 = sketch_slider_ref(m, pair);
+            Pose::through(q0 + line.dir * q, pr.slider_local, pr.delta)
+        }
+    }
+}
+
+/// The reference of a driving slider's displacement: its point in the
+/// sketch, projected onto the guide.
+pub fn sketch_slider_ref(m: &Mechanism, pair: usize) -> Point {
+    let pr = &m.prismatics[pair];
+    let line = pr.line(&Pose::IDENTITY);
+    let p = sketch(m, pr.point);
+    line.point + line.dir * (p - line.point).dot(line.dir)
+}
+
+/// The input coordinate the sketch itself shows.
+pub fn sketch_input(m: &Mechanism) -> f64 {
+    match m.scene.input {
+        InputSpec::Crank { link, pivot, .. } => {
+            let pts = &m.links[link].points;
+            let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+            (sketch(m, other) - sketch(m, pivot)).atan2()
+        }
+        InputSpec::Slider { .. } => 0.0,
+    }
+}
+
+/// The position solver: closed forms per group with the sketch's branches.
+#[derive(Clone, Debug)]
+pub struct PositionSolver<'a> {
+    pub m: &'a Mechanism,
+    pub s: &'a Structure,
+    /// Which groups to solve (demand-driven).
+    pub need: Vec<bool>,
+    pub branches: Branches,
+    /// The input coordinate of the last solved position (for tracking).
+    pub last_q: f64,
+}
+
+impl<'a> PositionSolver<'a> {
+    pub fn new(m: &'a Mechanism, s: &'a Structure, need: Vec<bool>) -> Result<Self> {
+        Ok(PositionSolver {
+            m,
+            s,
+            need,
+            branches: Branches::from_sketch(m, s)?,
+            last_q: sketch_input(m),
+        })
+    }
+
+    fn has_triads(&self) -> bool {
+        self.s
+            .groups
+            .iter()
+            .zip(&self.need)
+            .any(|(g, &n)| n && matches!(g, AssurGroup::Triad(_)))
+    }
+
+    /// Solve at input coordinate `q`, reached continuously from the last
+    /// solved position (from the sketch at first), the short way round.
+    pub fn solve(&mut self, q: f64) -> Result<Configuration> {
+        if self.has_triads() {
+            // Track class III groups in small steps so they stay on their branch.
+            let span = match self.m.scene.input {
+                InputSpec::Crank { .. } => wrap_pi(q - self.last_q),
+                InputSpec::Slider { .. } => q - self.last_q,
+            };
+            let step = match self.m.scene.input {
+                InputSpec::Crank { .. } => 2f64.to_radians(),
+                InputSpec::Slider { .. } => 0.01 * self.m.size,
+            };
+            let n = (span.abs() / step).ceil() as usize;
+            for i in 1..n {
+                let qi = self.last_q + span * i as f64 / n as f64;
+                self.solve_at(qi)?;
+            }
+        }
+        let c = self.solve_at(q)?;
+        self.last_q = q;
+        Ok(c)
+    }
+
+    /// Solve at `q` from the current tracked state without stepping.
+    pub fn solve_at(&mut self, q: f64) -> Result<Configuration> {
+        let m = self.m;
+        let mut c = Configuration {
+            poses: vec![None; m.links.len()],
+        };
+        c.poses[m.frame()] = Some(Pose::IDENTITY);
+        c.poses[m.scene.input.link()] = Some(place_input(m, q));
+        for gi in 0..self.s.groups.len() {
+            if !self.need[gi] {
+                continue;
+            }
+            let sign = self.branches.sign[gi];
+            match &self.s.groups[gi] {
+                AssurGroup::Dyad(d) => {
+                    solve_dyad(m, d, sign, &mut c).map_err(|why| Error::Assembly {
+                        group: format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name()),
+                        at: describe_input(m, q),
+                        why,
+                    })?
+                }
+                AssurGroup::Triad(t) => {
+                    let psi = solve_triad(m, t, sign, self.branches.triad_angle[gi], &mut c)
+                        .map_err(|why| Error::Assembly {
+                            group: format!("group {} (class III)", self.s.groups[gi].label(m)),
+                            at: describe_input(m, q),
+                            why,
+                        })?;
+                    self.branches.triad_angle[gi] = psi;
+                }
+            }
+        }
+        Ok(c)
+    }
+}
+
+fn known_point(m: &Mechanism, c: &Configuration, conn: &Conn, known_side: usize) -> Point {
+    c.point(m, known_side, point_of(conn.joint))
+}
+
+fn solve_dyad(
+    m: &Mechanism,
+    d: &Dyad,
+    sign: f64,
+    c: &mut Configuration,
+) -> std::result::Result<(), String> {
+    let [l1, l2] = d.links;
+    let tol = 1e-10 * m.size;
+    let min_sin = 1e-12;
+    match d.kind {
+        DyadKind::Rrr => {
+            let (pb, pc, pd) = (
+                point_of(d.ext1.joint),
+                point_of(d.mid.joint),
+                point_of(d.ext2.joint),
+            );
+            let b = known_point(m, c, &d.ext1, d.ext1.from);
+            let dd = known_point(m, c, &d.ext2, d.ext2.to);
+            let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
+            let r2 = (m.local(l2, pc) - m.local(l2, pd)).hypot();
+            let x = circle_circle(b, r1, dd, r2, sign, tol).ok_or_else(|| {
+                format!(
+                    "the circles of radius {r1:.6} m about {} and {r2:.6} m about {} do not meet ({} and {} are {:.6} m apart)",
+                    m.point_name(pb),
+                    m.point_name(pd),
+                    m.point_name(pb),
+                    m.point_name(pd),
+                    b.distance(dd)
+                )
+            })?;
+            set_by_two(m, c, l1, pb, b, pc, x);
+            set_by_two(m, c, l2, pd, dd, pc, x);
+        }
+        DyadKind::Rrp => {
+            let (pb, pc) = (point_of(d.ext1.joint), point_of(d.mid.joint));
+            let k = pair_of(d.ext2.joint);
+            let k2 = d.ext2.to;
+            let b = known_point(m, c, &d.ext1, d.ext1.from);
+            let th2 = angle_across(m, k, k2, c.pose(k2).angle);
+            let line = slide_line(m, k, k2, &c.pose(k2), th2, m.local(l2, pc));
+            let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
+            let x = circle_line(b, r1, &line, sign, tol).ok_or_else(|| {
+                format!(
+                    "the circle of radius {r1:.6} m about {} does not reach the guide line ({:.6} m away)",
+                    m.point_name(pb),
+                    line.signed_distance(b).abs()
+                )
+            })?;
+            set_by_two(m, c, l1, pb, b, pc, x);
+            c.poses[l2] = Some(Pose::through(x, m.local(l2, pc), th2));
+        }
+        DyadKind::Rpr => {
+            let rg = rocking_guide(m, d);
+            let known_of = |p: usize| {
+                if p == point_of(d.ext1.joint) {
+                    c.point(m, d.ext1.from, p)
+                } else {
+                    c.point(m, d.ext2.to, p)
+                }
+            };
+            let jg = known_of(rg.pin_guide);
+            let js = known_of(rg.pin_slider);
+            let w = js - jg;
+            let dist = w.hypot();
+            let s = rg.h / dist;
+            if !s.is_finite() || s.abs() > 1.0 + 1e-12 || dist <= tol {
+                return Err(format!(
+                    "the guide passes {:.6} m from {} but {} is only {dist:.6} m away",
+                    rg.h.abs(),
+                    m.point_name(rg.pin_guide),
+                    m.point_name(rg.pin_slider)
+                ));
+            }
+            let s = s.clamp(-1.0, 1.0);
+            let gamma_minus_beta = s.atan2(sign * (1.0 - s * s).max(0.0).sqrt());
+            let psi = w.atan2() - gamma_minus_beta - rg.alpha;
+            c.poses[rg.guide] = Some(Pose::through(jg, m.local(rg.guide, rg.pin_guide), psi));
+            c.poses[rg.slider] = Some(Pose::through(
+                js,
+                m.local(rg.slider, rg.pin_slider),
+                psi + rg.delta,
+            ));
+        }
+        DyadKind::Prp => {
+            let pc = point_of(d.mid.joint);
+            let (k1, k2) = (d.ext1.from, d.ext2.to);
+            let (j1, j2) = (pair_of(d.ext1.joint), pair_of(d.ext2.joint));
+            let th1 = angle_across(m, j1, k1, c.pose(k1).angle);
+            let th2 = angle_across(m, j2, k2, c.pose(k2).angle);
+            let a = slide_line(m, j1, k1, &c.pose(k1), th1, m.local(l1, pc));
+            let b = slide_line(m, j2, k2, &c.pose(k2), th2, m.local(l2, pc));
+            let LineCut::Point { at, .. } = intersect_lines(&a, &b, min_sin) else {
+                return Err("the two guides are parallel: the joint is not determined".into());
+            };
+            c.poses[l1] = Some(Pose::through(at, m.local(l1, pc), th1));
+            c.poses[l2] = Some(Pose::through(at, m.local(l2, pc), th2));
+        }
+        DyadKind::Rpp => {
+            let pb = point_of(d.ext1.joint);
+            let (jm, j2) = (pair_of(d.mid.joint), pair_of(d.ext2.joint));
+            let k2 = d.ext2.to;
+            let b = known_point(m, c, &d.ext1, d.ext1.from);
+            let th2 = angle_across(m, j2, k2, c.pose(k2).angle);
+            let th1 = angle_across(m, jm, l2, th2);
+            let p1 = Pose::through(b, m.local(l1, pb), th1);
+            c.poses[l1] = Some(p1);
+            let a = slide_line(m, j2, k2, &c.pose(k2), th2, Vec2::ZERO);
+            let bl = slide_line(m, jm, l1, &p1, th2, Vec2::ZERO);
+            let LineCut::Point { at, .. } = intersect_lines(&a, &bl, min_sin) else {
+                return Err("the two guides are parallel: the slide is not determined".into());
+            };
+            c.poses[l2] = Some(Pose {
+                origin: at,
+                angle: th2,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Pose a link by two of its points at known world places.
+fn set_by_two(
+    m: &Mechanism,
+    c: &mut Configuration,
+    link: usize,
+    p: usize,
+    at_p: Point,
+    q: usize,
+    at_q: Point,
+) {
+    let (lp, lq) = (m.local(link, p), m.local(link, q));
+    let angle = (at_q - at_p).atan2() - (lq - lp).atan2();
+    c.poses[link] = Some(Pose::through(at_p, lp, angle));
+}
+
+/// Solve a three-leash group for its base angle ψ near `psi0`; returns ψ.
+fn solve_triad(
+    m: &Mechanism,
+    t: &Triad,
+    sign: f64,
+    psi0: f64,
+    c: &mut Configuration,
+) -> std::result::Result<f64, String> {
+    let tg = triad_geom(m, t);
+    let e = [0, 1, 2].map(|i| c.point(m, t.ext[i].from, tg.ext_pts[i]));
+    let tol = 1e-10 * m.size;
+    // Place J0 for a base angle; the residual is leash 2's length error.
+    let place = |psi: f64| -> Option<(Point, f64)> {
+        let w1 = rotate(tg.b[1] - tg.b[0], psi);
+        let j0 = circle_circle(e[0], tg.r[0], e[1] - w1, tg.r[1], sign, tol)?;
+        let j2 = j0 + rotate(tg.b[2] - tg.b[0], psi);
+        Some((j0, (j2 - e[2]).hypot() - tg.r[2]))
+    };
+    let f = |psi: f64| place(psi).map(|x| x.1);
+    let psi = root_near(f, psi0, m.size).ok_or_else(|| {
+        format!(
+            "no base angle near {:.4}° closes the group (leash {} cannot reach)",
+            psi0.to_degrees(),
+            m.link_id(t.leashes[2])
+        )
+    })?;
+    let (j0, _) = place(psi).expect("root is a placed angle");
+    let base_pose = Pose::through(j0, tg.b[0], psi);
+    c.poses[t.base] = Some(base_pose);
+    for (i, ei) in e.iter().enumerate() {
+        let j = base_pose.apply(tg.b[i]);
+        set_by_two(m, c, t.leashes[i], tg.ext_pts[i], *ei, tg.int_pts[i], j);
+    }
+    Ok(psi)
+}
+
+/// A root of `f` near `x0`: Newton with a numerical slope, then, if that
+/// wanders, a bracket grown around `x0` and bisection.
+fn root_near(f: impl Fn(f64) -> Option<f64>, x0: f64, scale: f64) -> Option<f64> {
+    let ftol = 1e-15 * scale;
+    let mut x = x0;
+    for _ in 0..30 {
+        let fx = f(x)?;
+        if fx.abs() <= ftol {
+            return Some(x);
+        }
+        let h = 1e-7;
+        let (fp, fm) = (f(x + h), f(x - h));
+        let (Some(fp), Some(fm)) = (fp, fm) else {
+            break;
+        };
+        let slope = (fp - fm) / (2.0 * h);
+        if slope == 0.0 {
+            break;
+        }
+        let dx = fx / slope;
+        if dx.abs() > 0.3 {
+            break;
+        }
+        x -= dx;
+        if dx.abs() < 1e-15 {
+            return f(x).filter(|v| v.abs() <= 1e3 * ftol).map(|_| x);
+        }
+    }
+    // Grow a bracket around x0.
+    let f0 = f(x0)?;
+    let mut step = 1e-3;
+    while step < 1.0 {
+        for dir in [1.0, -1.0] {
+            let x1 = x0 + dir * step;
+            if let Some(f1) = f(x1)
+                && f1.signum() != f0.signum()
+            {
+                let (mut a, mut b, mut fa) = (x0, x1, f0);
+                for _ in 0..200 {
+                    let mid = 0.5 * (a + b);
+                    let fm = f(mid)?;
+                    if fm.signum() == fa.signum() {
+                        a = mid;
+                        fa = fm;
+                    } else {
+                        b = mid;
+                    }
+                    if (b - a).abs() < 1e-16 {
+                        break;
+                    }
+                }
+                return Some(0.5 * (a + b));
+            }
+        }
+        step *= 1.5;
+    }
+    None
+}

@@ -1,0 +1,323 @@
+//! Results as the contract's JSON (`shared/spec/scene-format.md`, result
+//! section; additions in `docs/scene-format.md`) and as a terminal table.
+
+use crate::analytic::Order;
+use crate::geom::wrap_pi;
+use crate::scene::InputSpec;
+use crate::solve::{Analysis, Solved};
+use serde_json::{Map, Value, json};
+use std::fmt::Write as _;
+
+/// Round-trip-exact but tidy: integers print as integers, no `-0`.
+fn num(x: f64) -> Value {
+    let x = if x == 0.0 { 0.0 } else { x };
+    json!(x)
+}
+
+fn vec2(v: kurbo::Vec2) -> Value {
+    json!([num(v.x), num(v.y)])
+}
+
+fn deg(a: f64) -> f64 {
+    wrap_pi(a).to_degrees()
+}
+
+/// The result document for `mechplan solve --format json`.
+pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
+    let m = &an.mech;
+    let groups: Vec<Value> = an
+        .structure
+        .groups
+        .iter()
+        .map(|g| {
+            let mut o = Map::new();
+            o.insert("class".into(), json!(g.class()));
+            o.insert("kind".into(), json!(g.kind()));
+            if let crate::structure::AssurGroup::Dyad(d) = g {
+                o.insert("number".into(), json!(d.kind.number()));
+            }
+            o.insert(
+                "links".into(),
+                json!(g.links().iter().map(|&l| m.link_id(l)).collect::<Vec<_>>()),
+            );
+            Value::Object(o)
+        })
+        .collect();
+    let mut doc = Map::new();
+    doc.insert("mechplan".into(), json!(1));
+    if !m.scene.title.is_empty() {
+        doc.insert("title".into(), json!(m.scene.title));
+    }
+    doc.insert(
+        "structure".into(),
+        json!({ "dof": an.structure.dof, "formula": an.structure.formula(m), "groups": groups }),
+    );
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    let positions: Vec<Value> = solved
+        .iter()
+        .map(|s| {
+            let mut o = Map::new();
+            o.insert(
+                "input".into(),
+                match m.scene.input {
+                    InputSpec::Crank { .. } => json!({ "angle": num(s.q.to_degrees()), "omega": num(s.rate), "epsilon": num(s.rate2) }),
+                    InputSpec::Slider { .. } => json!({ "s": num(s.q), "v": num(s.rate), "a": num(s.rate2) }),
+                },
+            );
+            let mut pts = Map::new();
+            for &p in &an.points {
+                let ps = s.point(an, p);
+                let (at, st, an_) = (ps.at, ps.rates, ps.analogue);
+                let mut e = Map::new();
+                e.insert("p".into(), json!([num(at.x), num(at.y)]));
+                if vel {
+                    let (v, a) = st.unwrap();
+                    let (vq, aq) = an_.unwrap();
+                    e.insert("v".into(), vec2(v));
+                    if acc {
+                        e.insert("a".into(), vec2(a));
+                    }
+                    e.insert("v_q".into(), vec2(vq));
+                    if acc {
+                        e.insert("a_q".into(), vec2(aq));
+                    }
+                }
+                pts.insert(m.point_name(p).to_string(), Value::Object(e));
+            }
+            o.insert("points".into(), Value::Object(pts));
+            let mut links = Map::new();
+            for l in 0..m.links.len() {
+                if !an.include[l] {
+                    continue;
+                }
+                let mut e = Map::new();
+                e.insert("angle".into(), num(deg(s.config.pose(l).angle + base_offset(an, l))));
+                if vel {
+                    let mo = s.motion[l].unwrap();
+                    let aq = s.analogue[l].unwrap();
+                    e.insert("omega".into(), num(mo.omega));
+                    if acc {
+                        e.insert("epsilon".into(), num(mo.epsilon));
+                    }
+                    e.insert("phi_q".into(), num(aq.omega));
+                    if acc {
+                        e.insert("phi_qq".into(), num(aq.epsilon));
+                    }
+                }
+                links.insert(m.link_id(l).to_string(), Value::Object(e));
+            }
+            o.insert("links".into(), Value::Object(links));
+            let slides: Vec<Value> = s
+                .slides(an)
+                .iter()
+                .map(|sl| {
+                    let pr = &m.prismatics[sl.pair];
+                    let mut e = Map::new();
+                    e.insert("slider".into(), json!(m.link_id(pr.slider)));
+                    e.insert("guide".into(), json!(m.link_id(pr.guide)));
+                    e.insert("point".into(), json!(m.point_name(pr.point)));
+                    e.insert("s".into(), num(sl.s));
+                    if vel {
+                        e.insert("v".into(), num(sl.v));
+                        e.insert("s_q".into(), num(sl.s_q));
+                    }
+                    if acc {
+                        e.insert("a".into(), num(sl.a));
+                        e.insert("s_qq".into(), num(sl.s_qq));
+                        if pr.guide != m.frame() {
+                            e.insert("coriolis".into(), vec2(sl.coriolis));
+                        }
+                    }
+                    Value::Object(e)
+                })
+                .collect();
+            if !slides.is_empty() {
+                o.insert("sliders".into(), Value::Array(slides));
+            }
+            if let Some(c) = &s.check {
+                o.insert(
+                    "crosscheck".into(),
+                    json!({
+                        "max_rel_diff": num(c.max_rel_diff),
+                        "worst": c.worst,
+                        "conditioning": num(c.conditioning),
+                        "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time) },
+                    }),
+                );
+            }
+            Value::Object(o)
+        })
+        .collect();
+    doc.insert("positions".into(), Value::Array(positions));
+    Value::Object(doc)
+}
+
+/// The reported angle of a link is the direction of the ray from its first
+/// point to its second: the local frame's x-axis, or, for a one-point
+/// slider, its guide's direction (its frame is set up that way).
+fn base_offset(_an: &Analysis, _l: usize) -> f64 {
+    0.0
+}
+
+/// The sense of rotation, "-" for a value that is zero up to rounding
+/// (`scale` is the largest value of its kind at that position).
+fn sense(x: f64, scale: f64) -> &'static str {
+    if x.abs() <= 1e-12 * scale {
+        "-"
+    } else if x > 0.0 {
+        "ccw"
+    } else if x < 0.0 {
+        "cw"
+    } else {
+        "-"
+    }
+}
+
+/// A table for the terminal: points with |v|, |a|; links with ω, ε and senses.
+pub fn to_table(an: &Analysis, solved: &[Solved]) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    if !m.scene.title.is_empty() {
+        let _ = writeln!(t, "{}", m.scene.title);
+    }
+    let kinds: Vec<String> = an
+        .structure
+        .groups
+        .iter()
+        .map(|g| format!("{} {}", g.label(m), g.kind()))
+        .collect();
+    let _ = writeln!(
+        t,
+        "structure: W = {}, {}   [{}]",
+        an.structure.dof,
+        an.structure.formula(m),
+        kinds.join("; ")
+    );
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    for (i, s) in solved.iter().enumerate() {
+        let _ = writeln!(t);
+        let input = match m.scene.input {
+            InputSpec::Crank { .. } => format!(
+                "φ1 = {:.3}°, ω1 = {} rad/s, ε1 = {} rad/s²",
+                s.q.to_degrees().rem_euclid(360.0),
+                fmt(s.rate),
+                fmt(s.rate2)
+            ),
+            InputSpec::Slider { .. } => format!(
+                "s = {} m, v = {} m/s, a = {} m/s²",
+                fmt(s.q),
+                fmt(s.rate),
+                fmt(s.rate2)
+            ),
+        };
+        let _ = writeln!(t, "position {}: {input}", i + 1);
+        let _ = write!(t, "  {:<6} {:>11} {:>11}", "point", "x [m]", "y [m]");
+        if vel {
+            let _ = write!(t, " {:>12} {:>8}", "|v| [m/s]", "∠v [°]");
+        }
+        if acc {
+            let _ = write!(t, " {:>12} {:>8}", "|a| [m/s²]", "∠a [°]");
+        }
+        let _ = writeln!(t);
+        for &p in &an.points {
+            let ps = s.point(an, p);
+            let (at, st) = (ps.at, ps.rates);
+            let _ = write!(t, "  {:<6} {:>11.6} {:>11.6}", m.point_name(p), at.x, at.y);
+            if let Some((v, a)) = st.filter(|_| vel) {
+                let _ = write!(
+                    t,
+                    " {:>12.6} {:>8.2}",
+                    v.hypot(),
+                    if v.hypot() > 0.0 {
+                        v.atan2().to_degrees()
+                    } else {
+                        0.0
+                    }
+                );
+                if acc {
+                    let _ = write!(
+                        t,
+                        " {:>12.6} {:>8.2}",
+                        a.hypot(),
+                        if a.hypot() > 0.0 {
+                            a.atan2().to_degrees()
+                        } else {
+                            0.0
+                        }
+                    );
+                }
+            }
+            let _ = writeln!(t);
+        }
+        let _ = write!(t, "  {:<6} {:>11}", "link", "angle [°]");
+        if vel {
+            let _ = write!(t, " {:>12} {:>5}", "ω [rad/s]", "");
+        }
+        if acc {
+            let _ = write!(t, " {:>12} {:>5}", "ε [rad/s²]", "");
+        }
+        let _ = writeln!(t);
+        let (w_scale, e_scale) = s.motion.iter().flatten().fold((0.0f64, 0.0f64), |(w, e), mo| {
+            (w.max(mo.omega.abs()), e.max(mo.epsilon.abs()))
+        });
+        for l in 0..m.links.len() {
+            if !an.include[l] || l == m.frame() {
+                continue;
+            }
+            let _ = write!(
+                t,
+                "  {:<6} {:>11.4}",
+                m.link_id(l),
+                deg(s.config.pose(l).angle)
+            );
+            if vel {
+                let mo = s.motion[l].unwrap();
+                let _ = write!(t, " {:>12.6} {:>5}", mo.omega, sense(mo.omega, w_scale));
+                if acc {
+                    let _ = write!(t, " {:>12.6} {:>5}", mo.epsilon, sense(mo.epsilon, e_scale));
+                }
+            }
+            let _ = writeln!(t);
+        }
+        let slides = s.slides(an);
+        if vel && !slides.is_empty() {
+            for sl in &slides {
+                let pr = &m.prismatics[sl.pair];
+                let _ = write!(
+                    t,
+                    "  slide of {} on {} at {}: v_rel = {:.6} m/s",
+                    m.link_id(pr.slider),
+                    m.link_id(pr.guide),
+                    m.point_name(pr.point),
+                    sl.v
+                );
+                if acc {
+                    let _ = write!(t, ", a_rel = {:.6} m/s²", sl.a);
+                    if pr.guide != m.frame() {
+                        let _ = write!(t, ", |a_Coriolis| = {:.6} m/s²", sl.coriolis.hypot());
+                    }
+                }
+                let _ = writeln!(t);
+            }
+        }
+        if let Some(c) = &s.check {
+            let _ = writeln!(
+                t,
+                "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
+                c.max_rel_diff,
+                c.worst,
+                c.contour_time * 1e6,
+                c.constraint_time * 1e6
+            );
+        }
+    }
+    t
+}
+
+fn fmt(x: f64) -> String {
+    let s = format!("{x:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}

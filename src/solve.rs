@@ -1,0 +1,531 @@
+//! The whole analysis of a scene: which groups the wanted output needs,
+//! the input values of the positions (with the extreme position found
+//! exactly for `positions.count`), both analytic routes at every position,
+//! and their cross-check.
+
+use crate::analytic::constraint::{ConstraintSolver, Settings};
+use crate::analytic::{Drive, Motion, Order, contour};
+use crate::error::{Error, Result};
+use crate::geom::{Pose, perp, wrap_pi};
+use crate::mechanism::Mechanism;
+use crate::positions::{Configuration, PositionSolver, describe_input};
+use crate::scene::{InputSpec, PositionsSpec, Scene};
+use crate::structure::{Structure, analyse};
+use kurbo::{Point, Vec2};
+use std::time::Instant as Clock;
+
+/// A scene made ready: mechanism, structure, and what is to be computed.
+#[derive(Clone, Debug)]
+pub struct Analysis {
+    pub mech: Mechanism,
+    pub structure: Structure,
+    /// Groups to solve.
+    pub need: Vec<bool>,
+    /// Links solved (frame, input and the needed groups' links).
+    pub include: Vec<bool>,
+    /// Points reported, in scene order.
+    pub points: Vec<usize>,
+    /// None: positions only (no plans wanted).
+    pub order: Option<Order>,
+}
+
+/// (what, |difference|, |value|) of one kind of quantity.
+type Diffs = Vec<(String, f64, f64)>;
+
+/// Both routes' agreement at one position and what each cost.
+#[derive(Clone, Debug)]
+pub struct CrossCheck {
+    /// Largest difference between the routes, each quantity relative to
+    /// the largest magnitude of its kind at that position.
+    pub max_rel_diff: f64,
+    /// Which quantity it was ("v of B").
+    pub worst: String,
+    /// Wall time of route (a) (positions + contours), seconds.
+    pub contour_time: f64,
+    /// Wall time of route (b) (Newton + linear solves), seconds.
+    pub constraint_time: f64,
+    /// σ_min/σ_max of the scaled constraint Jacobian.
+    pub conditioning: f64,
+}
+
+/// One solved position.
+#[derive(Clone, Debug)]
+pub struct Solved {
+    /// The input coordinate (rad or m) and its rates.
+    pub q: f64,
+    pub rate: f64,
+    pub rate2: f64,
+    pub config: Configuration,
+    /// Route (a) motions; `None` for links not solved.
+    pub motion: Vec<Option<Motion>>,
+    /// Route (a) with unit input rate and zero input acceleration: the
+    /// transfer functions (analogues of velocity and acceleration).
+    pub analogue: Vec<Option<Motion>>,
+    pub check: Option<CrossCheck>,
+}
+
+impl Analysis {
+    pub fn new(scene: Scene) -> Result<Analysis> {
+        let mech = Mechanism::new(scene)?;
+        let structure = analyse(&mech)?;
+        let sc = &mech.scene;
+        let points: Vec<usize> = match &sc.want.points {
+            Some(p) => {
+                let mut p = p.clone();
+                p.sort_unstable();
+                p
+            }
+            None => (0..sc.points.len()).collect(),
+        };
+        let carriers: Vec<usize> = points.iter().map(|&p| mech.links_of_point(p)[0]).collect();
+        let need = if sc.want.points.is_some() {
+            structure.needed_for(&carriers)
+        } else {
+            vec![true; structure.groups.len()]
+        };
+        let mut include = vec![false; mech.links.len()];
+        include[mech.frame()] = true;
+        include[sc.input.link()] = true;
+        for (g, grp) in structure.groups.iter().enumerate() {
+            if need[g] {
+                for l in grp.links() {
+                    include[l] = true;
+                }
+            }
+        }
+        let order = match (sc.want.velocity, sc.want.acceleration) {
+            (_, true) => Some(Order::Acceleration),
+            (true, false) => Some(Order::Velocity),
+            (false, false) => None,
+        };
+        Ok(Analysis {
+            mech,
+            structure,
+            need,
+            include,
+            points,
+            order,
+        })
+    }
+
+    /// The link that reports point `p`: the first solved link carrying it.
+    pub fn carrier(&self, p: usize) -> usize {
+        self.mech
+            .links_of_point(p)
+            .into_iter()
+            .find(|&l| self.include[l])
+            .expect("reported points are carried by solved links")
+    }
+
+    /// Input coordinates of the positions asked for (rad or m).
+    pub fn input_values(&self) -> Result<Vec<f64>> {
+        let sc = &self.mech.scene;
+        Ok(match &sc.positions {
+            PositionsSpec::Single => vec![sc.input.coordinate()],
+            PositionsSpec::List(v) => v.clone(),
+            PositionsSpec::Count { count, output } => {
+                let out = output.unwrap_or_else(|| {
+                    *self
+                        .structure
+                        .groups
+                        .last()
+                        .map(|g| g.links())
+                        .unwrap_or_default()
+                        .last()
+                        .unwrap_or(&sc.input.link())
+                });
+                let start = self.working_stroke_start(out)?;
+                let (omega, _) = sc.input.rates();
+                let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+                (0..*count)
+                    .map(|k| {
+                        (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
+                            .rem_euclid(std::f64::consts::TAU)
+                    })
+                    .collect()
+            }
+        })
+    }
+
+    /// The output coordinate of link `out` and its first transfer function:
+    /// the slide along a frame guide for a slider, else the link's angle.
+    fn output_coordinate(
+        &self,
+        out: usize,
+        c: &Configuration,
+        an: &[Option<Motion>],
+    ) -> (f64, f64) {
+        let m = &self.mech;
+        if let Some(pr) = m
+            .prismatics
+            .iter()
+            .find(|p| p.slider == out && p.guide == m.frame())
+        {
+            let u = pr.line(&Pose::IDENTITY).dir;
+            let q = c.pose(out).apply(pr.slider_local);
+            let v = an[out].unwrap().velocity(q);
+            (u.dot(q.to_vec2()), u.dot(v))
+        } else {
+            (c.pose(out).angle, an[out].unwrap().omega)
+        }
+    }
+
+    /// The crank angle of the extreme position of `out` that begins the
+    /// working stroke (the stroke taking the larger crank angle), found as
+    /// a root of the output's transfer function to machine precision.
+    pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
+        let m = &self.mech;
+        let sc = &m.scene;
+        let InputSpec::Crank { omega, angle, .. } = sc.input else {
+            return Err(Error::scene(
+                "/positions/count",
+                "equal steps over a revolution need a crank input",
+            ));
+        };
+        let mut need = self.structure.needed_for(&[out]);
+        for (n, own) in need.iter_mut().zip(&self.need) {
+            *n |= *own;
+        }
+        let mut ps = PositionSolver::new(m, &self.structure, need.clone())?;
+        let eval = |ps: &mut PositionSolver, phi: f64, step: bool| -> Result<(f64, f64)> {
+            let c = if step {
+                ps.solve(phi)?
+            } else {
+                ps.solve_at(phi)?
+            };
+            let an = contour::solve(
+                m,
+                &self.structure,
+                &need,
+                &c,
+                Drive {
+                    q: phi,
+                    rate: 1.0,
+                    rate2: 0.0,
+                },
+                Order::Velocity,
+            )?;
+            Ok(self.output_coordinate(out, &c, &an))
+        };
+        let n = 720;
+        let mut samples = Vec::with_capacity(n + 1);
+        for k in 0..=n {
+            let phi = angle + std::f64::consts::TAU * k as f64 / n as f64;
+            let v = eval(&mut ps, phi, true).map_err(|e| match e {
+                Error::Assembly { group, at, why } => Error::Assembly {
+                    group,
+                    at,
+                    why: format!("{why}; the crank cannot turn fully, so positions.count (a full revolution) is impossible"),
+                },
+                e => e,
+            })?;
+            samples.push((phi, v.0, v.1));
+        }
+        let angular = !m
+            .prismatics
+            .iter()
+            .any(|p| p.slider == out && p.guide == m.frame());
+        // Unwrap an angular output so that min/max compare.
+        let mut extremes: Vec<(f64, f64)> = Vec::new();
+        let mut offset = 0.0;
+        for k in 0..n {
+            let (p0, _, d0) = samples[k];
+            let (p1, _, d1) = samples[k + 1];
+            if d0 == 0.0 || d0.signum() != d1.signum() {
+                ps.solve(p0)?;
+                // Bisection on the transfer function, then polish to the last ulp.
+                let (mut a, mut b, mut fa) = (p0, p1, d0);
+                for _ in 0..200 {
+                    let mid = 0.5 * (a + b);
+                    if mid <= a || mid >= b {
+                        break;
+                    }
+                    let (_, fm) = eval(&mut ps, mid, false)?;
+                    if fm == 0.0 {
+                        a = mid;
+                        b = mid;
+                        break;
+                    }
+                    if fm.signum() == fa.signum() {
+                        a = mid;
+                        fa = fm;
+                    } else {
+                        b = mid;
+                    }
+                }
+                let root = 0.5 * (a + b);
+                let (x, _) = eval(&mut ps, root, false)?;
+                let x = if angular {
+                    let base = samples[0].1;
+                    offset = base + wrap_pi(x - base);
+                    offset
+                } else {
+                    x
+                };
+                extremes.push((root, x));
+            }
+        }
+        let _ = offset;
+        if extremes.len() < 2 {
+            // No extreme positions: the output turns fully; start at the input.
+            return Ok(angle);
+        }
+        let lo =
+            extremes.iter().copied().fold(
+                (0.0, f64::INFINITY),
+                |acc, e| if e.1 < acc.1 { e } else { acc },
+            );
+        let hi = extremes
+            .iter()
+            .copied()
+            .fold(
+                (0.0, f64::NEG_INFINITY),
+                |acc, e| if e.1 > acc.1 { e } else { acc },
+            );
+        let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+        // Crank angle of the stroke lo → hi in the sense of rotation.
+        let d_lo_hi = (dir * (hi.0 - lo.0)).rem_euclid(std::f64::consts::TAU);
+        let d_hi_lo = std::f64::consts::TAU - d_lo_hi;
+        // The larger stroke begins the working stroke; at a tie (180° each)
+        // the extreme with the smallest output coordinate.
+        let start = if d_lo_hi >= d_hi_lo - 1e-9 {
+            lo.0
+        } else {
+            hi.0
+        };
+        Ok(start.rem_euclid(std::f64::consts::TAU))
+    }
+
+    /// Solve every position asked for, both routes, with the cross-check.
+    pub fn run(&self) -> Result<Vec<Solved>> {
+        let values = self.input_values()?;
+        let m = &self.mech;
+        let (rate, rate2) = m.scene.input.rates();
+        let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
+        let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
+        let mut out = Vec::with_capacity(values.len());
+        for &q in &values {
+            let t0 = Clock::now();
+            let config = ps.solve(q)?;
+            let (motion, analogue) = match self.order {
+                Some(order) => (
+                    contour::solve(
+                        m,
+                        &self.structure,
+                        &self.need,
+                        &config,
+                        Drive { q, rate, rate2 },
+                        order,
+                    )?,
+                    contour::solve(
+                        m,
+                        &self.structure,
+                        &self.need,
+                        &config,
+                        Drive {
+                            q,
+                            rate: 1.0,
+                            rate2: 0.0,
+                        },
+                        order,
+                    )?,
+                ),
+                None => (vec![None; m.links.len()], vec![None; m.links.len()]),
+            };
+            let contour_time = t0.elapsed().as_secs_f64();
+            let t1 = Clock::now();
+            cs.solve_positions(q)?;
+            let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
+            let constraint_time = t1.elapsed().as_secs_f64();
+            let mut solved = Solved {
+                q,
+                rate,
+                rate2,
+                config,
+                motion,
+                analogue,
+                check: None,
+            };
+            let (d, worst) = self.compare(&solved, &other);
+            solved.check = Some(CrossCheck {
+                max_rel_diff: d,
+                worst: worst.clone(),
+                contour_time,
+                constraint_time,
+                conditioning: cs.conditioning,
+            });
+            if d.is_nan() || d > 1e-6 {
+                return Err(Error::Singular {
+                    at: describe_input(m, q),
+                    why: format!(
+                        "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
+                    ),
+                });
+            }
+            out.push(solved);
+        }
+        Ok(out)
+    }
+
+    /// Largest relative difference between route (a) and route (b).
+    fn compare(&self, s: &Solved, other: &[Option<Motion>]) -> (f64, String) {
+        let m = &self.mech;
+        let mut worst = (0.0f64, String::from("none"));
+        let mut note = |d: f64, what: String| {
+            if d > worst.0 || d.is_nan() {
+                worst = (d, what);
+            }
+        };
+        let pts: Vec<(usize, usize)> = self.points.iter().map(|&p| (p, self.carrier(p))).collect();
+        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(m.local(l, p));
+        for &(p, l) in &pts {
+            let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
+            note(d, format!("position of {}", m.point_name(p)));
+        }
+        let links: Vec<usize> = (0..m.links.len()).filter(|&l| self.include[l]).collect();
+        for &l in &links {
+            let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
+            note(d, format!("angle of link {}", m.link_id(l)));
+        }
+        let Some(order) = self.order else {
+            return worst;
+        };
+        let a_of = |mo: &[Option<Motion>], p: usize, l: usize| {
+            let at = s.config.point(m, l, p);
+            (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at))
+        };
+        let mut kinds: Vec<(&str, Diffs)> = vec![("v", vec![]), ("ω", vec![])];
+        if order == Order::Acceleration {
+            kinds.push(("a", vec![]));
+            kinds.push(("ε", vec![]));
+        }
+        for &(p, l) in &pts {
+            let (va, aa) = a_of(&s.motion, p, l);
+            let (vb, ab) = a_of(other, p, l);
+            kinds[0]
+                .1
+                .push((m.point_name(p).to_string(), (va - vb).hypot(), va.hypot()));
+            if order == Order::Acceleration {
+                kinds[2]
+                    .1
+                    .push((m.point_name(p).to_string(), (aa - ab).hypot(), aa.hypot()));
+            }
+        }
+        for &l in &links {
+            let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
+            kinds[1].1.push((
+                format!("link {}", m.link_id(l)),
+                (ma.omega - mb.omega).abs(),
+                ma.omega.abs(),
+            ));
+            if order == Order::Acceleration {
+                kinds[3].1.push((
+                    format!("link {}", m.link_id(l)),
+                    (ma.epsilon - mb.epsilon).abs(),
+                    ma.epsilon.abs(),
+                ));
+            }
+        }
+        // Velocities and angular velocities share a scale (ω·size), as do
+        // accelerations and angular accelerations (ε·size).
+        let scale = |a: &[(String, f64, f64)], b: &[(String, f64, f64)]| {
+            let x = a.iter().map(|e| e.2).fold(0.0, f64::max);
+            let y = b.iter().map(|e| e.2 * m.size).fold(0.0, f64::max);
+            x.max(y).max(f64::MIN_POSITIVE)
+        };
+        let sv = scale(&kinds[0].1, &kinds[1].1);
+        for (name, d, _) in &kinds[0].1 {
+            note(d / sv, format!("v of {name}"));
+        }
+        for (name, d, _) in &kinds[1].1 {
+            note(d * m.size / sv, format!("ω of {name}"));
+        }
+        if order == Order::Acceleration {
+            let sa = scale(&kinds[2].1, &kinds[3].1);
+            for (name, d, _) in &kinds[2].1 {
+                note(d / sa, format!("a of {name}"));
+            }
+            for (name, d, _) in &kinds[3].1 {
+                note(d * m.size / sa, format!("ε of {name}"));
+            }
+        }
+        worst
+    }
+}
+
+/// A point's place and, when velocities were computed, its (v, a) and
+/// their transfer functions (v_q, a_q).
+#[derive(Clone, Copy, Debug)]
+pub struct PointState {
+    pub at: Point,
+    pub rates: Option<(Vec2, Vec2)>,
+    pub analogue: Option<(Vec2, Vec2)>,
+}
+
+/// A prismatic pair's relative motion at one position.
+#[derive(Clone, Debug)]
+pub struct Slide {
+    pub pair: usize,
+    /// Displacement of the slider's point along the guide from the sketch (m).
+    pub s: f64,
+    /// Relative velocity and acceleration along the guide.
+    pub v: f64,
+    pub a: f64,
+    /// Coriolis acceleration 2·ω_guide × v_rel (zero on a fixed guide).
+    pub coriolis: Vec2,
+    /// Transfer functions s' and s''.
+    pub s_q: f64,
+    pub s_qq: f64,
+}
+
+impl Solved {
+    /// Relative motion in every prismatic pair between solved links.
+    pub fn slides(&self, an: &Analysis) -> Vec<Slide> {
+        let m = &an.mech;
+        let mut out = Vec::new();
+        for (k, pr) in m.prismatics.iter().enumerate() {
+            if !(an.include[pr.slider] && an.include[pr.guide]) {
+                continue;
+            }
+            let (ps, pg) = (self.config.pose(pr.slider), self.config.pose(pr.guide));
+            let u = pg.dir(pr.line_dir);
+            let q = ps.apply(pr.slider_local);
+            let gs = m.links[pr.guide].sketch_pose;
+            let q_local = crate::geom::rotate(q - pg.origin, -pg.angle);
+            let q0_local =
+                crate::geom::rotate(m.scene.points[pr.point].sketch - gs.origin, -gs.angle);
+            let s = pr.line_dir.dot(q_local - q0_local);
+            let rel = |mo: &[Option<Motion>]| -> Option<(f64, f64, Vec2)> {
+                let (a, b) = (mo[pr.slider]?, mo[pr.guide]?);
+                let v = u.dot(a.velocity(q) - b.velocity(q));
+                let cor = perp(u) * (2.0 * b.omega * v);
+                let acc = u.dot(a.acceleration(q) - b.acceleration(q) - cor);
+                Some((v, acc, cor))
+            };
+            let (v, a, coriolis) = rel(&self.motion).unwrap_or((0.0, 0.0, Vec2::ZERO));
+            let (s_q, s_qq, _) = rel(&self.analogue).unwrap_or((0.0, 0.0, Vec2::ZERO));
+            out.push(Slide {
+                pair: k,
+                s,
+                v,
+                a,
+                coriolis,
+                s_q,
+                s_qq,
+            });
+        }
+        out
+    }
+
+    /// Place, velocity, acceleration of point `p` (route (a)).
+    pub fn point(&self, an: &Analysis, p: usize) -> PointState {
+        let l = an.carrier(p);
+        let at = self.config.point(&an.mech, l, p);
+        let st = |mo: &[Option<Motion>]| mo[l].map(|x| (x.velocity(at), x.acceleration(at)));
+        PointState {
+            at,
+            rates: st(&self.motion),
+            analogue: st(&self.analogue),
+        }
+    }
+}
