@@ -34,7 +34,8 @@ impl Configuration {
 #[derive(Clone, Debug)]
 pub struct Branches {
     pub sign: Vec<f64>,
-    pub triad_angle: Vec<f64>,
+    /// Tracked base pose of each class III group.
+    pub triad_pose: Vec<Pose>,
 }
 
 /// Describe an input value for messages: "φ = 123.4°" or "s = 0.05 m".
@@ -164,18 +165,12 @@ impl Branches {
     pub fn from_sketch(m: &Mechanism, s: &Structure) -> Result<Branches> {
         let tol = 1e-9 * m.size * m.size;
         let mut sign = Vec::new();
-        let mut triad_angle = Vec::new();
+        let mut triad_pose = Vec::new();
         for g in &s.groups {
-            let (sg, psi) = match g {
-                AssurGroup::Dyad(d) => (dyad_sign(m, d), 0.0),
-                AssurGroup::Triad(t) => {
-                    let tg = triad_geom(m, t);
-                    let e0 = sketch(m, tg.ext_pts[0]);
-                    let e1 = sketch(m, tg.ext_pts[1]);
-                    let w1 = sketch(m, tg.int_pts[1]) - sketch(m, tg.int_pts[0]);
-                    let c = (e1 - w1 - e0).cross(sketch(m, tg.int_pts[0]) - e0);
-                    (c, m.links[t.base].sketch_pose.angle)
-                }
+            let (sg, pose) = match g {
+                AssurGroup::Dyad(d) => (dyad_sign(m, d), Pose::IDENTITY),
+                // A class III group's branch is tracked continuously from the sketch.
+                AssurGroup::Triad(t) => (1.0, m.links[t.base].sketch_pose),
             };
             let sg_tol = sign_tol(sg, tol);
             if sg_tol == 0.0 && sg.is_finite() && needs_sign(g) {
@@ -185,16 +180,16 @@ impl Branches {
                 )));
             }
             sign.push(if needs_sign(g) { sg_tol } else { 1.0 });
-            triad_angle.push(psi);
+            triad_pose.push(pose);
         }
-        Ok(Branches { sign, triad_angle })
+        Ok(Branches { sign, triad_pose })
     }
 }
 
 fn needs_sign(g: &AssurGroup) -> bool {
     match g {
         AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
-        AssurGroup::Triad(_) => true,
+        AssurGroup::Triad(_) => false,
     }
 }
 
@@ -341,13 +336,13 @@ impl<'a> PositionSolver<'a> {
                     })?
                 }
                 AssurGroup::Triad(t) => {
-                    let psi = solve_triad(m, t, sign, self.branches.triad_angle[gi], &mut c)
+                    let pose = solve_triad(m, t, self.branches.triad_pose[gi], &mut c)
                         .map_err(|why| Error::Assembly {
                             group: format!("group {} (class III)", self.s.groups[gi].label(m)),
                             at: describe_input(m, q),
                             why,
                         })?;
-                    self.branches.triad_angle[gi] = psi;
+                    self.branches.triad_pose[gi] = pose;
                 }
             }
         }
@@ -494,97 +489,69 @@ fn set_by_two(
     c.poses[link] = Some(Pose::through(at_p, lp, angle));
 }
 
-/// Solve a three-leash group for its base angle ψ near `psi0`; returns ψ.
-fn solve_triad(
-    m: &Mechanism,
-    t: &Triad,
-    sign: f64,
-    psi0: f64,
-    c: &mut Configuration,
-) -> std::result::Result<f64, String> {
+/// Solve a three-leash group: the base pose (x, y, ψ) such that every
+/// leash closes, |J_i − E_i| = r_i, by Newton's method from `start` (the
+/// previous solution, or the sketch). The branch is the one continuous
+/// from the sketch; a dead point of the group (the three leashes' axes
+/// through one point) shows as a singular 3×3 system.
+fn solve_triad(m: &Mechanism, t: &Triad, start: Pose, c: &mut Configuration) -> std::result::Result<Pose, String> {
     let tg = triad_geom(m, t);
     let e = [0, 1, 2].map(|i| c.point(m, t.ext[i].from, tg.ext_pts[i]));
-    let tol = 1e-10 * m.size;
-    // Place J0 for a base angle; the residual is leash 2's length error.
-    let place = |psi: f64| -> Option<(Point, f64)> {
-        let w1 = rotate(tg.b[1] - tg.b[0], psi);
-        let j0 = circle_circle(e[0], tg.r[0], e[1] - w1, tg.r[1], sign, tol)?;
-        let j2 = j0 + rotate(tg.b[2] - tg.b[0], psi);
-        Some((j0, (j2 - e[2]).hypot() - tg.r[2]))
-    };
-    let f = |psi: f64| place(psi).map(|x| x.1);
-    let psi = root_near(f, psi0, m.size).ok_or_else(|| {
-        format!(
-            "no base angle near {:.4}° closes the group (leash {} cannot reach)",
-            psi0.to_degrees(),
-            m.link_id(t.leashes[2])
-        )
-    })?;
-    let (j0, _) = place(psi).expect("root is a placed angle");
-    let base_pose = Pose::through(j0, tg.b[0], psi);
-    c.poses[t.base] = Some(base_pose);
+    let residual = |p: &Pose| [0, 1, 2].map(|i| (p.apply(tg.b[i]) - e[i]).hypot2() - tg.r[i] * tg.r[i]);
+    let mut pose = start;
+    let size = m.size;
+    let mut converged = false;
+    for _ in 0..60 {
+        let r = residual(&pose);
+        let mut j = nalgebra::Matrix3::<f64>::zeros();
+        for i in 0..3 {
+            let d = pose.apply(tg.b[i]) - e[i];
+            let turn = crate::geom::perp(pose.dir(tg.b[i]));
+            j[(i, 0)] = 2.0 * d.x;
+            j[(i, 1)] = 2.0 * d.y;
+            j[(i, 2)] = 2.0 * d.dot(turn) / size;
+        }
+        let Some(step) = j.lu().solve(&nalgebra::Vector3::new(r[0], r[1], r[2])) else {
+            return Err("the group is at a dead point (its leashes' axes meet in one point)".into());
+        };
+        // Damp the step so that a far start cannot jump to the other branch.
+        let mut k = 1.0;
+        let norm = |r: [f64; 3]| r.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        let r0 = norm(r);
+        let mut next;
+        loop {
+            next = Pose {
+                origin: pose.origin - Vec2::new(step[0], step[1]) * k,
+                angle: pose.angle - step[2] / size * k,
+            };
+            if norm(residual(&next)) <= r0 || k < 1e-3 {
+                break;
+            }
+            k *= 0.5;
+        }
+        let moved = (step[0].abs().max(step[1].abs()).max(step[2].abs())) * k;
+        pose = next;
+        if !moved.is_finite() {
+            break;
+        }
+        if moved <= 1e-14 * size {
+            converged = true;
+            break;
+        }
+    }
+    let r = residual(&pose).iter().map(|x| x.abs()).fold(0.0, f64::max);
+    // |J − E|² − r² ≈ 2·r·δ: a residual of 1e-13·size² is a length error of
+    // order 1e-13·size.
+    if !converged || !r.is_finite() || r > 1e-13 * size * size {
+        return Err(format!(
+            "no position of the base link {} near the previous one closes the group (residual {r:.2e} m²)",
+            m.link_id(t.base)
+        ));
+    }
+    c.poses[t.base] = Some(pose);
     for (i, ei) in e.iter().enumerate() {
-        let j = base_pose.apply(tg.b[i]);
+        let j = pose.apply(tg.b[i]);
         set_by_two(m, c, t.leashes[i], tg.ext_pts[i], *ei, tg.int_pts[i], j);
     }
-    Ok(psi)
-}
-
-/// A root of `f` near `x0`: Newton with a numerical slope, then, if that
-/// wanders, a bracket grown around `x0` and bisection.
-fn root_near(f: impl Fn(f64) -> Option<f64>, x0: f64, scale: f64) -> Option<f64> {
-    let ftol = 1e-15 * scale;
-    let mut x = x0;
-    for _ in 0..30 {
-        let fx = f(x)?;
-        if fx.abs() <= ftol {
-            return Some(x);
-        }
-        let h = 1e-7;
-        let (fp, fm) = (f(x + h), f(x - h));
-        let (Some(fp), Some(fm)) = (fp, fm) else {
-            break;
-        };
-        let slope = (fp - fm) / (2.0 * h);
-        if slope == 0.0 {
-            break;
-        }
-        let dx = fx / slope;
-        if dx.abs() > 0.3 {
-            break;
-        }
-        x -= dx;
-        if dx.abs() < 1e-15 {
-            return f(x).filter(|v| v.abs() <= 1e3 * ftol).map(|_| x);
-        }
-    }
-    // Grow a bracket around x0.
-    let f0 = f(x0)?;
-    let mut step = 1e-3;
-    while step < 1.0 {
-        for dir in [1.0, -1.0] {
-            let x1 = x0 + dir * step;
-            if let Some(f1) = f(x1)
-                && f1.signum() != f0.signum()
-            {
-                let (mut a, mut b, mut fa) = (x0, x1, f0);
-                for _ in 0..200 {
-                    let mid = 0.5 * (a + b);
-                    let fm = f(mid)?;
-                    if fm.signum() == fa.signum() {
-                        a = mid;
-                        fa = fm;
-                    } else {
-                        b = mid;
-                    }
-                    if (b - a).abs() < 1e-16 {
-                        break;
-                    }
-                }
-                return Some(0.5 * (a + b));
-            }
-        }
-        step *= 1.5;
-    }
-    None
+    Ok(pose)
 }

@@ -1,0 +1,50 @@
+//! Shared helpers for the integration tests: fixtures and scene edits.
+#![allow(dead_code)]
+
+use mechplan::{Analysis, Scene, Solved};
+use serde_json::{Value, json};
+
+pub const FIXTURES: &[&str] = &[
+    "four_bar",
+    "offset_slider_crank",
+    "six_link_fig2_10",
+    "shaper_fig2_11",
+    "compressor_fig2_12",
+    "rrp_rotating_guide_002",
+    "class3_004",
+    "prp_tangent_drive",
+    "slider_driven_rocker",
+];
+
+pub fn fixture(name: &str) -> Value {
+    let path = format!("{}/fixtures/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap()
+}
+
+/// Input values (scene units) that sweep a fixture at 1° (or 1/360 of the
+/// slider's range) over the range where it assembles.
+pub fn sweep(name: &str, v: &Value) -> Value {
+    match name {
+        // The slot is parallel to the fixed guide at 0° and 180°.
+        "prp_tangent_drive" => json!({ "angles": (0..=140).map(|k| 20.0 + k as f64).collect::<Vec<_>>() }),
+        // The group locks (a dead point of the three-leash group) near
+        // φ = 34.6° and −92°: the crank of `004` rocks, it cannot turn fully.
+        "class3_004" => json!({ "angles": (0..=124).map(|k| -90.0 + k as f64).collect::<Vec<_>>() }),
+        "slider_driven_rocker" => json!({ "s": (0..=360).map(|k| -0.06 + 0.36 * k as f64 / 360.0).collect::<Vec<_>>() }),
+        _ => {
+            let a0 = v["input"]["angle"].as_f64().unwrap();
+            json!({ "angles": (0..360).map(|k| a0 + k as f64).collect::<Vec<_>>() })
+        }
+    }
+}
+
+pub fn scene_with(mut v: Value, positions: Value) -> Scene {
+    v["positions"] = positions;
+    Scene::from_json(&v.to_string()).unwrap()
+}
+
+pub fn solve(scene: Scene) -> (Analysis, Vec<Solved>) {
+    let an = Analysis::new(scene).unwrap();
+    let s = an.run().unwrap();
+    (an, s)
+}
