@@ -336,11 +336,13 @@ impl<'a> PositionSolver<'a> {
                     })?
                 }
                 AssurGroup::Triad(t) => {
-                    let pose = solve_triad(m, t, self.branches.triad_pose[gi], &mut c)
-                        .map_err(|why| Error::Assembly {
-                            group: format!("group {} (class III)", self.s.groups[gi].label(m)),
-                            at: describe_input(m, q),
-                            why,
+                    let pose =
+                        solve_triad(m, t, self.branches.triad_pose[gi], &mut c).map_err(|why| {
+                            Error::Assembly {
+                                group: format!("group {} (class III)", self.s.groups[gi].label(m)),
+                                at: describe_input(m, q),
+                                why,
+                            }
                         })?;
                     self.branches.triad_pose[gi] = pose;
                 }
@@ -494,10 +496,16 @@ fn set_by_two(
 /// previous solution, or the sketch). The branch is the one continuous
 /// from the sketch; a dead point of the group (the three leashes' axes
 /// through one point) shows as a singular 3×3 system.
-fn solve_triad(m: &Mechanism, t: &Triad, start: Pose, c: &mut Configuration) -> std::result::Result<Pose, String> {
+fn solve_triad(
+    m: &Mechanism,
+    t: &Triad,
+    start: Pose,
+    c: &mut Configuration,
+) -> std::result::Result<Pose, String> {
     let tg = triad_geom(m, t);
     let e = [0, 1, 2].map(|i| c.point(m, t.ext[i].from, tg.ext_pts[i]));
-    let residual = |p: &Pose| [0, 1, 2].map(|i| (p.apply(tg.b[i]) - e[i]).hypot2() - tg.r[i] * tg.r[i]);
+    let residual =
+        |p: &Pose| [0, 1, 2].map(|i| (p.apply(tg.b[i]) - e[i]).hypot2() - tg.r[i] * tg.r[i]);
     let mut pose = start;
     let size = m.size;
     let mut converged = false;
@@ -512,7 +520,9 @@ fn solve_triad(m: &Mechanism, t: &Triad, start: Pose, c: &mut Configuration) -> 
             j[(i, 2)] = 2.0 * d.dot(turn) / size;
         }
         let Some(step) = j.lu().solve(&nalgebra::Vector3::new(r[0], r[1], r[2])) else {
-            return Err("the group is at a dead point (its leashes' axes meet in one point)".into());
+            return Err(
+                "the group is at a dead point (its leashes' axes meet in one point)".into(),
+            );
         };
         // Damp the step so that a far start cannot jump to the other branch.
         let mut k = 1.0;

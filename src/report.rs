@@ -259,9 +259,13 @@ pub fn to_table(an: &Analysis, solved: &[Solved]) -> String {
             let _ = write!(t, " {:>12} {:>5}", "ε [rad/s²]", "");
         }
         let _ = writeln!(t);
-        let (w_scale, e_scale) = s.motion.iter().flatten().fold((0.0f64, 0.0f64), |(w, e), mo| {
-            (w.max(mo.omega.abs()), e.max(mo.epsilon.abs()))
-        });
+        let (w_scale, e_scale) = s
+            .motion
+            .iter()
+            .flatten()
+            .fold((0.0f64, 0.0f64), |(w, e), mo| {
+                (w.max(mo.omega.abs()), e.max(mo.epsilon.abs()))
+            });
         for l in 0..m.links.len() {
             if !an.include[l] || l == m.frame() {
                 continue;

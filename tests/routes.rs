@@ -34,24 +34,46 @@ fn routes_agree_on_every_fixture_at_360_positions() {
                 let (vb, ab) = (mb.velocity(pb), mb.acceleration(pb));
                 vmax = vmax.max(va.hypot());
                 amax = amax.max(aa.hypot());
-                assert!((st.at - pb).hypot() <= 1e-10 * m.size, "{name}: position of {}", m.point_name(p));
-                diffs.push(((va - vb).hypot(), (aa - ab).hypot(), m.point_name(p).to_string()));
+                assert!(
+                    (st.at - pb).hypot() <= 1e-10 * m.size,
+                    "{name}: position of {}",
+                    m.point_name(p)
+                );
+                diffs.push((
+                    (va - vb).hypot(),
+                    (aa - ab).hypot(),
+                    m.point_name(p).to_string(),
+                ));
             }
             for l in 0..m.links.len() {
                 if let (Some(x), Some(y)) = (s.motion[l], b[l]) {
                     vmax = vmax.max(x.omega.abs() * m.size);
                     amax = amax.max(x.epsilon.abs() * m.size);
-                    diffs.push(((x.omega - y.omega).abs() * m.size, (x.epsilon - y.epsilon).abs() * m.size, format!("link {}", m.link_id(l))));
+                    diffs.push((
+                        (x.omega - y.omega).abs() * m.size,
+                        (x.epsilon - y.epsilon).abs() * m.size,
+                        format!("link {}", m.link_id(l)),
+                    ));
                 }
             }
             for (dv, da, what) in diffs {
                 let (rv, ra) = (dv / vmax, da / amax);
                 worst = worst.max(rv).max(ra);
-                assert!(rv <= 1e-10 && ra <= 1e-10, "{name} at q = {}: {what}: v {rv:e}, a {ra:e}", s.q);
+                assert!(
+                    rv <= 1e-10 && ra <= 1e-10,
+                    "{name} at q = {}: {what}: v {rv:e}, a {ra:e}",
+                    s.q
+                );
             }
-            assert!(s.check.as_ref().unwrap().max_rel_diff <= 1e-10, "{name}: built-in cross-check");
+            assert!(
+                s.check.as_ref().unwrap().max_rel_diff <= 1e-10,
+                "{name}: built-in cross-check"
+            );
         }
-        eprintln!("{name}: {} positions, worst relative difference {worst:.1e}", solved.len());
+        eprintln!(
+            "{name}: {} positions, worst relative difference {worst:.1e}",
+            solved.len()
+        );
     }
 }
 
@@ -64,16 +86,40 @@ fn rates_match_finite_differences_of_positions() {
         let v = fixture(name);
         let base = scene_with(v.clone(), sweep(name, &v));
         let crank = matches!(base.input, InputSpec::Crank { .. });
-        let unit = if crank { base.angle_unit } else { base.length_unit };
-        let qs: Vec<f64> = match sweep(name, &v).as_object().unwrap().values().next().unwrap() {
-            serde_json::Value::Array(a) => a.iter().step_by(17).map(|x| x.as_f64().unwrap() * unit).collect(),
+        let unit = if crank {
+            base.angle_unit
+        } else {
+            base.length_unit
+        };
+        let qs: Vec<f64> = match sweep(name, &v)
+            .as_object()
+            .unwrap()
+            .values()
+            .next()
+            .unwrap()
+        {
+            serde_json::Value::Array(a) => a
+                .iter()
+                .step_by(17)
+                .map(|x| x.as_f64().unwrap() * unit)
+                .collect(),
             _ => unreachable!(),
         };
         // h1 for the first differences (truncation ~h1², rounding ~ε/h1),
         // h2 for the second (rounding ~ε/h2²).
-        let (h1, h2) = if crank { (1e-6, 1e-4) } else { (1e-6 * base.length_unit.max(0.1), 1e-4 * base.length_unit.max(0.1)) };
+        let (h1, h2) = if crank {
+            (1e-6, 1e-4)
+        } else {
+            (
+                1e-6 * base.length_unit.max(0.1),
+                1e-4 * base.length_unit.max(0.1),
+            )
+        };
         for &q in &qs {
-            let list: Vec<f64> = [q - h1, q, q + h1, q - h2, q + h2].iter().map(|x| x / unit).collect();
+            let list: Vec<f64> = [q - h1, q, q + h1, q - h2, q + h2]
+                .iter()
+                .map(|x| x / unit)
+                .collect();
             let key = if crank { "angles" } else { "s" };
             let (an, s) = solve(scene_with(v.clone(), serde_json::json!({ key: list })));
             let m = &an.mech;
@@ -86,17 +132,35 @@ fn rates_match_finite_differences_of_positions() {
                 let d2 = (c2.at.to_vec2() - 2.0 * b.at.to_vec2() + a2.at.to_vec2()) / (h2 * h2);
                 let scale1 = m.size.max(vq.hypot());
                 let scale2 = m.size.max(aq.hypot());
-                assert!((d1 - vq).hypot() <= 1e-8 * scale1, "{name} {}: dp/dq {d1:?} vs v_q {vq:?}", m.point_name(p));
-                assert!((d2 - aq).hypot() <= 1e-4 * scale2, "{name} {}: d2p/dq2 {d2:?} vs a_q {aq:?}", m.point_name(p));
+                assert!(
+                    (d1 - vq).hypot() <= 1e-8 * scale1,
+                    "{name} {}: dp/dq {d1:?} vs v_q {vq:?}",
+                    m.point_name(p)
+                );
+                assert!(
+                    (d2 - aq).hypot() <= 1e-4 * scale2,
+                    "{name} {}: d2p/dq2 {d2:?} vs a_q {aq:?}",
+                    m.point_name(p)
+                );
                 // The physical rates are the transfer functions scaled by the input's rates.
                 assert!((vv - vq * rate).hypot() <= 1e-12 * (scale1 * rate.abs()).max(1e-300));
                 let a_expected = aq * (rate * rate) + vq * rate2;
-                assert!((aa - a_expected).hypot() <= 1e-11 * (scale2 * rate * rate + scale1 * rate2.abs()).max(1e-300));
+                assert!(
+                    (aa - a_expected).hypot()
+                        <= 1e-11 * (scale2 * rate * rate + scale1 * rate2.abs()).max(1e-300)
+                );
             }
             for l in 0..m.links.len() {
-                if let (Some(a), Some(b), Some(c)) = (s[0].motion[l], s[1].analogue[l], s[2].motion[l]) {
+                if let (Some(a), Some(b), Some(c)) =
+                    (s[0].motion[l], s[1].analogue[l], s[2].motion[l])
+                {
                     let dth = mechplan::geom::wrap_pi(c.pose.angle - a.pose.angle) / (2.0 * h1);
-                    assert!((dth - b.omega).abs() * m.size <= 1e-6 * m.size.max(b.omega.abs() * m.size), "{name} link {}: dθ/dq {dth} vs φ' {}", m.link_id(l), b.omega);
+                    assert!(
+                        (dth - b.omega).abs() * m.size <= 1e-6 * m.size.max(b.omega.abs() * m.size),
+                        "{name} link {}: dθ/dq {dth} vs φ' {}",
+                        m.link_id(l),
+                        b.omega
+                    );
                 }
             }
         }

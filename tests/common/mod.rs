@@ -26,11 +26,17 @@ pub fn fixture(name: &str) -> Value {
 pub fn sweep(name: &str, v: &Value) -> Value {
     match name {
         // The slot is parallel to the fixed guide at 0° and 180°.
-        "prp_tangent_drive" => json!({ "angles": (0..=140).map(|k| 20.0 + k as f64).collect::<Vec<_>>() }),
+        "prp_tangent_drive" => {
+            json!({ "angles": (0..=140).map(|k| 20.0 + k as f64).collect::<Vec<_>>() })
+        }
         // The group locks (a dead point of the three-leash group) near
         // φ = 34.6° and −92°: the crank of `004` rocks, it cannot turn fully.
-        "class3_004" => json!({ "angles": (0..=124).map(|k| -90.0 + k as f64).collect::<Vec<_>>() }),
-        "slider_driven_rocker" => json!({ "s": (0..=360).map(|k| -0.06 + 0.36 * k as f64 / 360.0).collect::<Vec<_>>() }),
+        "class3_004" => {
+            json!({ "angles": (0..=124).map(|k| -90.0 + k as f64).collect::<Vec<_>>() })
+        }
+        "slider_driven_rocker" => {
+            json!({ "s": (0..=360).map(|k| -0.06 + 0.36 * k as f64 / 360.0).collect::<Vec<_>>() })
+        }
         _ => {
             let a0 = v["input"]["angle"].as_f64().unwrap();
             json!({ "angles": (0..360).map(|k| a0 + k as f64).collect::<Vec<_>>() })
