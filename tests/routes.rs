@@ -45,8 +45,8 @@ fn routes_agree_on_every_fixture_at_360_positions() {
                     m.point_name(p).to_string(),
                 ));
             }
-            for l in 0..m.links.len() {
-                if let (Some(x), Some(y)) = (s.motion[l], b[l]) {
+            for (l, (x, y)) in s.motion.iter().zip(&b).enumerate() {
+                if let (Some(x), Some(y)) = (x, y) {
                     vmax = vmax.max(x.omega.abs() * m.size);
                     amax = amax.max(x.epsilon.abs() * m.size);
                     diffs.push((
