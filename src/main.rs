@@ -83,7 +83,7 @@ fn run(text: &str, name: &str, format: Format, output: Option<&Path>) -> Result<
         e => e,
     };
     let scene = Scene::from_json(text).map_err(prefix)?;
-    let analysis = Analysis::new(scene)?;
+    let analysis = Analysis::new(scene).map_err(prefix)?;
     let solved = analysis.run()?;
     let text = match format {
         Format::Table => report::to_table(&analysis, &solved),

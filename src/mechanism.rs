@@ -95,13 +95,21 @@ impl Mechanism {
         );
         let size = (hi - lo).hypot().max(f64::MIN_POSITIVE);
         let mut links = Vec::with_capacity(scene.links.len());
+        // Links whose shape could not be built: checking them further would
+        // only report the same problem again in other words.
+        let mut broken = Vec::with_capacity(scene.links.len());
         for l in 0..scene.links.len() {
+            let before = issues.len();
             links.push(rigid_link(&scene, l, size, &mut issues));
+            broken.push(issues.len() > before);
         }
-        check_lengths(&scene, &links, &mut issues);
+        check_lengths(&scene, &links, &broken, &mut issues);
         let revolutes = revolutes(&scene);
         let mut prismatics = Vec::new();
         for (k, s) in scene.sliders.iter().enumerate() {
+            if broken[s.slider] || broken[s.guide] {
+                continue;
+            }
             if let Some(p) = prismatic(&scene, &links, k, size, &mut issues) {
                 prismatics.push(p);
             } else if issues.is_empty() {
@@ -285,9 +293,9 @@ fn rigid_link(scene: &Scene, l: usize, size: f64, issues: &mut Vec<Issue>) -> Li
 }
 
 /// Every given length must hold in the rigid shape (frame: in its coordinates).
-fn check_lengths(scene: &Scene, links: &[Link], issues: &mut Vec<Issue>) {
+fn check_lengths(scene: &Scene, links: &[Link], broken: &[bool], issues: &mut Vec<Issue>) {
     for len in &scene.lengths {
-        for link in links.iter() {
+        for (link, _) in links.iter().zip(broken).filter(|(_, b)| !**b) {
             let (Some(a), Some(b)) = (link.local_of(len.a), link.local_of(len.b)) else {
                 continue;
             };

@@ -171,6 +171,9 @@ pub const MAX_FILE_BYTES: usize = 4 << 20;
 pub const MAX_POINTS: usize = 10_000;
 pub const MAX_LINKS: usize = 5_000;
 pub const MAX_POSITIONS: usize = 100_000;
+/// Largest magnitude of any number: accelerations square velocities, so
+/// larger inputs would overflow to infinity.
+pub const MAX_MAGNITUDE: f64 = 1e100;
 
 impl Scene {
     pub fn point_index(&self, name: &str) -> Option<usize> {
@@ -197,7 +200,8 @@ impl Scene {
                 ),
             ));
         }
-        let value = parse_strict(text).map_err(Error::Json)?;
+        let value =
+            parse_strict(text.strip_prefix('\u{feff}').unwrap_or(text)).map_err(|e| Error::Json(locate_bad_numbers(text).unwrap_or(e)))?;
         let mut r = Reader::default();
         let scene = r.scene(&value);
         match scene {
@@ -261,7 +265,11 @@ impl Reader {
 
     fn number(&mut self, v: &Value, at: &str) -> Option<f64> {
         match v.as_f64() {
-            Some(x) if x.is_finite() => Some(x),
+            Some(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Some(x),
+            Some(x) if x.is_finite() => {
+                self.err(at, format!("{x:e} is too large (|x| ≤ {MAX_MAGNITUDE:e}): its square would not be a finite number"));
+                None
+            }
             Some(_) => {
                 self.err(at, "non-finite number");
                 None
@@ -991,7 +999,14 @@ impl Reader {
             return None;
         }
         let output = match o.get("output") {
-            Some(x) => Some(self.link_ref(x, "/positions/output", links)?),
+            Some(x) => {
+                let l = self.link_ref(x, "/positions/output", links)?;
+                if links[l].id == "0" {
+                    self.err("/positions/output", "the frame does not move: name a moving link");
+                    return None;
+                }
+                Some(l)
+            }
             None => None,
         };
         Some(PositionsSpec::Count { count, output })
@@ -1087,6 +1102,75 @@ impl Reader {
         }
         Some(w)
     }
+}
+
+/// serde_json stops at `NaN`, `Infinity` or `1e999` with only a line and
+/// column, but the contract names the field. Put a marker string in place of
+/// each such number and read the text again: where a marker lands in the tree
+/// is the field's JSON pointer. `None` when the text has no such number, more
+/// than a few, or other syntax errors besides (the plain message then stands).
+fn locate_bad_numbers(text: &str) -> Option<Vec<String>> {
+    const MARK: &str = r"\u0001mechplan-bad-number-";
+    let mut text = text.to_owned();
+    let mut found = Vec::new();
+    let value = loop {
+        let e = match serde_json::from_str::<Value>(&text) {
+            Ok(v) => break v,
+            Err(e) if found.len() < 32 => e,
+            Err(_) => return None,
+        };
+        // serde_json's column is 1-based, in bytes, and falls inside the token.
+        let line_start: usize = text
+            .split_inclusive('\n')
+            .take(e.line().saturating_sub(1))
+            .map(str::len)
+            .sum();
+        let at = line_start + e.column().saturating_sub(1);
+        let b = text.as_bytes();
+        let tok = |c: u8| c.is_ascii_alphanumeric() || matches!(c, b'+' | b'-' | b'.');
+        if at >= b.len() || !tok(b[at]) {
+            return None;
+        }
+        let start = (0..at).rev().find(|&i| !tok(b[i])).map_or(0, |i| i + 1);
+        let end = (at..b.len()).find(|&i| !tok(b[i])).unwrap_or(b.len());
+        let token = text[start..end].to_owned();
+        if token.parse::<f64>().map_or(true, f64::is_finite) {
+            return None;
+        }
+        text.replace_range(start..end, &format!("\"{MARK}{}\"", found.len()));
+        found.push((token, e.line()));
+    };
+    fn walk(v: &Value, at: &str, out: &mut Vec<(usize, String)>) {
+        match v {
+            Value::String(s) => {
+                if let Some(k) = s
+                    .strip_prefix("\u{1}mechplan-bad-number-")
+                    .and_then(|k| k.parse().ok())
+                {
+                    out.push((k, at.to_owned()));
+                }
+            }
+            Value::Array(a) => a
+                .iter()
+                .enumerate()
+                .for_each(|(i, x)| walk(x, &format!("{at}/{i}"), out)),
+            Value::Object(o) => o.iter().for_each(|(k, x)| walk(x, &ptr(at, k), out)),
+            _ => {}
+        }
+    }
+    let mut at = Vec::new();
+    walk(&value, "", &mut at);
+    at.sort();
+    let msgs: Vec<String> = at
+        .into_iter()
+        .filter_map(|(k, pointer)| {
+            let (token, line) = found.get(k)?;
+            Some(format!(
+                "{pointer}: non-finite number {token} (line {line}); every number must be finite"
+            ))
+        })
+        .collect();
+    (!msgs.is_empty()).then_some(msgs)
 }
 
 fn kind(v: &Value) -> &'static str {

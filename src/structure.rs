@@ -346,7 +346,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
             "the mechanism needs more than one input to move definitely"
         };
         return Err(Error::Structure(format!(
-            "mobility W = 3n - 2p5 = 3*{} - 2*{} = {dof}, but mechplan takes one input: {why}",
+            "/links: mobility W = 3n - 2p5 = 3*{} - 2*{} = {dof}, but mechplan takes one input: {why}",
             nl - 1,
             m.revolutes.len() + m.prismatics.len()
         )));
@@ -368,7 +368,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
     };
     if !ok {
         return Err(Error::Structure(format!(
-            "the input link \"{}\" must be joined to the frame by exactly its driving pair",
+            "/input/link: the input link \"{}\" must be joined to the frame by exactly its driving pair",
             m.link_id(input)
         )));
     }
@@ -415,7 +415,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
         let Some(g) = found else {
             let ids: Vec<&str> = unknown.iter().map(|&l| m.link_id(l)).collect();
             return Err(Error::Structure(format!(
-                "links {} do not decompose into Assur groups of class II (dyads) or III (three-leash groups) attached to {}",
+                "/links: links {} do not decompose into Assur groups of class II (dyads) or III (three-leash groups) attached to {}",
                 ids.join(", "),
                 (0..nl)
                     .filter(|&l| known[l])

@@ -14,13 +14,19 @@ fn units_mm_and_rad_give_the_same_results() {
     w["units"] = json!({ "length": "mm", "angle": "rad" });
     for (_, p) in w["points"].as_object_mut().unwrap() {
         let a = p.as_array().unwrap();
-        *p = json!([a[0].as_f64().unwrap() * 1000.0, a[1].as_f64().unwrap() * 1000.0]);
+        *p = json!([
+            a[0].as_f64().unwrap() * 1000.0,
+            a[1].as_f64().unwrap() * 1000.0
+        ]);
     }
     for (_, l) in w["lengths"].as_object_mut().unwrap() {
         *l = json!(l.as_f64().unwrap() * 1000.0);
     }
     w["input"]["angle"] = json!(45f64.to_radians());
-    let (an2, s2) = solve(scene_with(w, json!({ "angles": [45f64.to_radians(), 100f64.to_radians()] })));
+    let (an2, s2) = solve(scene_with(
+        w,
+        json!({ "angles": [45f64.to_radians(), 100f64.to_radians()] }),
+    ));
     for k in 0..2 {
         for &p in &an1.points {
             let (a, b) = (s1[k].point(&an1, p), s2[k].point(&an2, p));
@@ -50,7 +56,10 @@ fn rigid_shape_rule_places_points_from_lengths() {
     }"#;
     let an = mechplan::Analysis::new(Scene::from_json(text).unwrap()).unwrap();
     let link = &an.mech.links[2];
-    let p = |n: &str| link.local_of(an.mech.scene.point_index(n).unwrap()).unwrap();
+    let p = |n: &str| {
+        link.local_of(an.mech.scene.point_index(n).unwrap())
+            .unwrap()
+    };
     assert!(((p("B") - p("A")).hypot() - 0.3).abs() < 1e-15);
     assert!(((p("M") - p("A")).hypot() - 0.22).abs() < 1e-15);
     assert!(((p("M") - p("B")).hypot() - 0.2).abs() < 1e-15);
