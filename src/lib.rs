@@ -6,6 +6,7 @@
 //! [`solve`] (sequences of positions, the cross-check) → [`report`].
 
 pub mod analytic;
+pub mod construction;
 pub mod error;
 pub mod geom;
 pub mod json;

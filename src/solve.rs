@@ -5,6 +5,7 @@
 
 use crate::analytic::constraint::{ConstraintSolver, Settings};
 use crate::analytic::{Drive, Motion, Order, contour};
+use crate::construction::{Drafting, Plans, Setup, build_plans};
 use crate::error::{Error, Result};
 use crate::geom::{Pose, perp, wrap_pi};
 use crate::mechanism::Mechanism;
@@ -27,6 +28,8 @@ pub struct Analysis {
     pub points: Vec<usize>,
     /// None: positions only (no plans wanted).
     pub order: Option<Order>,
+    /// Fixed scales and the pencil precision of the plans.
+    pub drafting: Drafting,
 }
 
 /// (what, |difference|, |value|) of one kind of quantity.
@@ -46,6 +49,8 @@ pub struct CrossCheck {
     pub constraint_time: f64,
     /// σ_min/σ_max of the scaled constraint Jacobian.
     pub conditioning: f64,
+    /// Wall time of the plans' construction, seconds (0 without plans).
+    pub plan_time: f64,
 }
 
 /// One solved position.
@@ -61,6 +66,8 @@ pub struct Solved {
     /// Route (a) with unit input rate and zero input acceleration: the
     /// transfer functions (analogues of velocity and acceleration).
     pub analogue: Vec<Option<Motion>>,
+    /// The plans of velocities and accelerations, as constructions.
+    pub plans: Option<Plans>,
     pub check: Option<CrossCheck>,
 }
 
@@ -98,6 +105,11 @@ impl Analysis {
             (true, false) => Some(Order::Velocity),
             (false, false) => None,
         };
+        let drafting = Drafting {
+            mu_v: sc.want.scales.mu_v,
+            mu_a: sc.want.scales.mu_a,
+            ..Drafting::default()
+        };
         Ok(Analysis {
             mech,
             structure,
@@ -105,6 +117,7 @@ impl Analysis {
             include,
             points,
             order,
+            drafting,
         })
     }
 
@@ -215,7 +228,7 @@ impl Analysis {
                 Error::Assembly { group, at, why } => Error::Assembly {
                     group,
                     at,
-                    why: format!("{why}; the crank cannot turn fully, so positions.count (a full revolution) is impossible"),
+                    why: format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible"),
                 },
                 e => e,
             })?;
@@ -337,6 +350,27 @@ impl Analysis {
             cs.solve_positions(q)?;
             let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
             let constraint_time = t1.elapsed().as_secs_f64();
+            let t2 = Clock::now();
+            let plans = match self.order {
+                Some(order) => {
+                    let setup = Setup {
+                        m,
+                        s: &self.structure,
+                        need: &self.need,
+                        points: &self.points,
+                        include: &self.include,
+                    };
+                    Some(build_plans(
+                        &setup,
+                        &config,
+                        Drive { q, rate, rate2 },
+                        order,
+                        self.drafting,
+                    )?)
+                }
+                None => None,
+            };
+            let plan_time = t2.elapsed().as_secs_f64();
             let mut solved = Solved {
                 q,
                 rate,
@@ -344,15 +378,23 @@ impl Analysis {
                 config,
                 motion,
                 analogue,
+                plans,
                 check: None,
             };
-            let (d, worst) = self.compare(&solved, &other);
+            let (mut d, mut worst) = self.compare(&solved, &other);
+            for (route, mo) in [("contour", &solved.motion), ("constraint", &other)] {
+                let (dp, wp) = self.compare_plans(&solved, mo);
+                if dp > d || dp.is_nan() {
+                    (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
+                }
+            }
             solved.check = Some(CrossCheck {
                 max_rel_diff: d,
                 worst: worst.clone(),
                 contour_time,
                 constraint_time,
                 conditioning: cs.conditioning,
+                plan_time,
             });
             if d.is_nan() || d > 1e-6 {
                 return Err(Error::Singular {
@@ -365,6 +407,56 @@ impl Analysis {
             out.push(solved);
         }
         Ok(out)
+    }
+
+    /// Largest relative difference between the plans (measured values × μ)
+    /// and an analytic route.
+    fn compare_plans(&self, s: &Solved, mo: &[Option<Motion>]) -> (f64, String) {
+        let Some(plans) = &s.plans else {
+            return (0.0, String::new());
+        };
+        let m = &self.mech;
+        let mut worst = (0.0f64, String::new());
+        for (plan, acc) in [
+            (Some(&plans.velocity), false),
+            (plans.acceleration.as_ref(), true),
+        ] {
+            let Some(plan) = plan else { continue };
+            let mut items: Vec<(String, f64, f64)> = Vec::new();
+            for &p in &self.points {
+                let l = self.carrier(p);
+                let at = s.config.point(m, l, p);
+                let exact = if acc {
+                    mo[l].unwrap().acceleration(at)
+                } else {
+                    mo[l].unwrap().velocity(at)
+                };
+                if let Some(got) = plan.value_of(p) {
+                    items.push((
+                        format!("{} of {}", if acc { "a" } else { "v" }, m.point_name(p)),
+                        (got - exact).hypot(),
+                        exact.hypot(),
+                    ));
+                }
+            }
+            for (l, (rate, x)) in plan.rates.iter().zip(mo).enumerate() {
+                if let (Some((r, _)), Some(x)) = (rate, x) {
+                    let exact = if acc { x.epsilon } else { x.omega };
+                    items.push((
+                        format!("{} of link {}", if acc { "ε" } else { "ω" }, m.link_id(l)),
+                        (r - exact).abs() * m.size,
+                        exact.abs() * m.size,
+                    ));
+                }
+            }
+            let scale = items.iter().map(|e| e.2).fold(f64::MIN_POSITIVE, f64::max);
+            for (what, d, _) in items {
+                if d / scale > worst.0 || d.is_nan() {
+                    worst = (d / scale, what);
+                }
+            }
+        }
+        worst
     }
 
     /// Largest relative difference between route (a) and route (b).

@@ -1,0 +1,1446 @@
+//! The construction kernel: plans of velocities and accelerations drawn as
+//! a draftsman draws them, group by group in the order of attachment.
+//!
+//! The primitives are drafting operations on the sheet (millimetres, the
+//! pole at the origin): lay off a vector at scale μ; draw a line through a
+//! plan point perpendicular or parallel to a link or guide; intersect two
+//! lines; divide a segment; build the figure similar to a link's figure
+//! (same order of letters, so never a mirror image); turn a relative
+//! velocity by 90° in the sense of ω (Coriolis); measure a segment and
+//! multiply by μ. Directions come from the plan of the mechanism (the
+//! solved positions); magnitudes laid off come from the data (ω1, ε1) or
+//! from quantities measured earlier on the plans. Every step is recorded
+//! with the items it used, so a plan is a replayable list of steps.
+//!
+//! Every plan point carries a first-order drafting-error radius: a pencil
+//! error δ (mm) for each line drawn or vector laid off, amplified by
+//! 1/sin θ at an intersection of lines meeting at θ.
+
+pub mod scale;
+pub mod text;
+
+use crate::analytic::{Drive, Order};
+use crate::error::{Error, Result};
+use crate::geom::{Line, LineCut, perp, rotate};
+use crate::mechanism::Mechanism;
+use crate::positions::{Configuration, describe_input};
+use crate::scene::InputSpec;
+use crate::structure::{AssurGroup, Conn, Dyad, DyadKind, Joint, Structure, Triad};
+use kurbo::{Point, Vec2};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlanKind {
+    Velocity,
+    Acceleration,
+}
+
+/// A point of a plan: `key` is its name in result files (`b`, `s2`, and
+/// for construction points `n_2`, `k_3`, `b_3` …), `label` its letters and
+/// subscript for drawings.
+#[derive(Clone, Debug)]
+pub struct PlanPoint {
+    pub key: String,
+    pub label: (String, String),
+    /// Millimetres from the pole.
+    pub at: Vec2,
+    /// First-order drafting error radius, mm.
+    pub err: f64,
+}
+
+impl PlanPoint {
+    /// "b", "s2", "n2" …: letters and subscript run together, for text.
+    pub fn name(&self) -> String {
+        format!("{}{}", self.label.0, self.label.1)
+    }
+}
+
+/// A direction as the method describes it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Dir {
+    /// Perpendicular to the segment of the mechanism (`"BC"`).
+    Perp(String),
+    /// Parallel to a segment of the mechanism.
+    Along(String),
+    /// Parallel to a segment, from its first point toward its second.
+    Toward(String, String),
+    /// Parallel to the guide of a link.
+    Guide(String),
+    /// A vector turned by 90° in the sense of an angular velocity.
+    Turned(String, String),
+    /// Perpendicular to a segment in the sense of an angular rate.
+    PerpSense(String, String),
+}
+
+/// A line drawn on the plan: through a plan point, in a direction.
+#[derive(Clone, Debug)]
+pub struct PlanLine {
+    pub through: usize,
+    pub unit: Vec2,
+    pub dir: Dir,
+    /// Offset error of the drawn line, mm.
+    pub err: f64,
+}
+
+/// One drafting operation.
+#[derive(Clone, Debug)]
+pub enum Op {
+    /// The pole (plan point 0) and the frame points that lie there.
+    Pole { fixed: Vec<String> },
+    /// Lay off a known vector `what` (real value `value`) from `from`.
+    LayOff {
+        from: usize,
+        to: usize,
+        what: String,
+        value: f64,
+        dir: Dir,
+    },
+    /// Two lines and their intersection.
+    Intersect {
+        lines: [PlanLine; 2],
+        out: usize,
+        sin_angle: f64,
+    },
+    /// The similarity theorem: a triangle on `a b` similar to the link's.
+    Similar {
+        a: usize,
+        b: usize,
+        out: usize,
+        figure: [String; 3],
+        link: String,
+    },
+    /// A point of a link on the line of two others: divide the segment.
+    Divide {
+        a: usize,
+        b: usize,
+        out: usize,
+        figure: [String; 3],
+        ratio: f64,
+    },
+    /// A point coinciding with another (a translating link, or the pole).
+    Coincide {
+        out: usize,
+        with: usize,
+        why: String,
+    },
+    /// Measure a segment: `quantity` = length × μ; for a relative segment
+    /// also the link's angular rate (name, signed value, link segment).
+    Measure {
+        from: usize,
+        to: usize,
+        quantity: String,
+        value: f64,
+        length: Option<f64>,
+        rate: Option<(String, f64, String)>,
+    },
+    /// Links in a prismatic pair share ω (ε).
+    Same {
+        link: String,
+        from_link: String,
+        what: String,
+    },
+    /// The vector equations of a group, as the lecture writes them.
+    Equation { text: String },
+}
+
+#[derive(Clone, Debug)]
+pub struct Step {
+    pub op: Op,
+}
+
+/// A measured quantity with its drafting-error bound.
+#[derive(Clone, Debug)]
+pub struct Measured {
+    pub quantity: String,
+    pub from: usize,
+    pub to: usize,
+    pub mm: f64,
+    pub value: f64,
+    /// First-order bound of the drafting error of `value` (real units).
+    pub bound: f64,
+}
+
+/// A plan: the replayable list of steps and the named plan points.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    pub kind: PlanKind,
+    /// Scale coefficient: real value per mm.
+    pub mu: f64,
+    /// Pencil precision δ used for the error model, mm.
+    pub delta: f64,
+    pub points: Vec<PlanPoint>,
+    pub steps: Vec<Step>,
+    /// Angular velocity (velocity plan) or acceleration (acceleration plan)
+    /// of every constructed link, as measured; and its error bound.
+    pub rates: Vec<Option<(f64, f64)>>,
+    pub measured: Vec<Measured>,
+    /// Smallest sine of an intersection angle (1 when none).
+    pub worst_sin: f64,
+    /// Plan points known on each link: (local coordinates, plan point).
+    pub body: Vec<Vec<(Vec2, usize)>>,
+    /// The plan point of each named point of the mechanism.
+    pub of_point: Vec<Option<usize>>,
+}
+
+impl Plan {
+    pub fn point(&self, key: &str) -> Option<&PlanPoint> {
+        self.points.iter().find(|p| p.key == key)
+    }
+    /// The real vector of a named point (velocity or acceleration).
+    pub fn value_of(&self, point: usize) -> Option<Vec2> {
+        self.of_point[point].map(|i| self.points[i].at * self.mu)
+    }
+    /// Worst intersection angle, degrees.
+    pub fn worst_angle_deg(&self) -> f64 {
+        self.worst_sin.clamp(0.0, 1.0).asin().to_degrees()
+    }
+}
+
+/// What the kernel needs to know: the mechanism, its positions, the groups
+/// to build and the points to report.
+pub struct Setup<'a> {
+    pub m: &'a Mechanism,
+    pub s: &'a Structure,
+    pub need: &'a [bool],
+    pub points: &'a [usize],
+    pub include: &'a [bool],
+}
+
+/// Links whose angle cannot change (the frame, and links joined to a
+/// non-rotating link by a prismatic pair): no normal components, no
+/// Coriolis acceleration on them.
+pub fn non_rotating(m: &Mechanism) -> Vec<bool> {
+    let mut nr = vec![false; m.links.len()];
+    nr[m.frame()] = true;
+    loop {
+        let mut changed = false;
+        for pr in &m.prismatics {
+            if nr[pr.slider] != nr[pr.guide] {
+                nr[pr.slider] = true;
+                nr[pr.guide] = true;
+                changed = true;
+            }
+        }
+        if !changed {
+            return nr;
+        }
+    }
+}
+
+fn lower_label(name: &str) -> (String, String) {
+    let lower = name.to_lowercase();
+    let split = lower
+        .find(|c: char| c.is_ascii_digit() || c == '_')
+        .unwrap_or(lower.len());
+    let (a, b) = lower.split_at(split);
+    (a.to_string(), b.trim_start_matches('_').to_string())
+}
+
+/// A prismatic pair seen from a group: the link being found, the known
+/// link it slides on (or that slides on it), and which of them is the guide.
+#[derive(Clone, Copy)]
+struct Slide {
+    unknown: usize,
+    known: usize,
+    guide: usize,
+}
+
+struct Builder<'a> {
+    st: &'a Setup<'a>,
+    c: &'a Configuration,
+    plan: Plan,
+    /// The velocity plan, when building the acceleration plan.
+    vel: Option<&'a Plan>,
+    nr: Vec<bool>,
+    q: f64,
+}
+
+/// Build the velocity plan (`vel` = None) or the acceleration plan.
+pub fn build(
+    st: &Setup,
+    c: &Configuration,
+    drive: Drive,
+    kind: PlanKind,
+    vel: Option<&Plan>,
+    mu: Option<f64>,
+    delta: f64,
+) -> Result<Plan> {
+    let m = st.m;
+    let (q, rates) = (drive.q, (drive.rate, drive.rate2));
+    let mut b = Builder {
+        st,
+        c,
+        plan: Plan {
+            kind,
+            mu: 1.0,
+            delta,
+            points: Vec::new(),
+            steps: Vec::new(),
+            rates: vec![None; m.links.len()],
+            measured: Vec::new(),
+            worst_sin: 1.0,
+            body: vec![Vec::new(); m.links.len()],
+            of_point: vec![None; m.scene.points.len()],
+        },
+        vel,
+        nr: non_rotating(m),
+        q,
+    };
+    // First pass at unit scale, then the standard scale that fits, then the
+    // real construction at that scale (the steps' numbers are in mm).
+    let mu = match mu {
+        Some(mu) => mu,
+        None => {
+            b.run(rates)?;
+            let largest = b
+                .plan
+                .points
+                .iter()
+                .map(|p| p.at.hypot())
+                .fold(0.0, f64::max);
+            scale::standard_scale(largest, 150.0)
+        }
+    };
+    let mut b = Builder {
+        st,
+        c,
+        plan: Plan {
+            mu,
+            steps: Vec::new(),
+            points: Vec::new(),
+            measured: Vec::new(),
+            rates: vec![None; m.links.len()],
+            worst_sin: 1.0,
+            body: vec![Vec::new(); m.links.len()],
+            of_point: vec![None; m.scene.points.len()],
+            ..b.plan
+        },
+        vel,
+        nr: b.nr,
+        q,
+    };
+    b.run(rates)?;
+    Ok(b.plan)
+}
+
+impl<'a> Builder<'a> {
+    fn m(&self) -> &'a Mechanism {
+        self.st.m
+    }
+    fn vel_kind(&self) -> bool {
+        self.plan.kind == PlanKind::Velocity
+    }
+    fn step(&mut self, op: Op) {
+        self.plan.steps.push(Step { op });
+    }
+    fn world(&self, link: usize, p: usize) -> Point {
+        self.c.point(self.m(), link, p)
+    }
+    fn local(&self, link: usize, x: Point) -> Vec2 {
+        let pose = self.c.pose(link);
+        rotate(x - pose.origin, -pose.angle)
+    }
+    fn name(&self, p: usize) -> String {
+        self.m().point_name(p).to_string()
+    }
+    fn link(&self, l: usize) -> String {
+        self.m().link_id(l).to_string()
+    }
+    fn rate_sym(&self) -> &'static str {
+        if self.vel_kind() { "ω" } else { "ε" }
+    }
+    /// ω of a link from the velocity plan (for the acceleration plan).
+    fn omega(&self, l: usize) -> f64 {
+        match self.vel {
+            Some(v) => v.rates[l].map(|r| r.0).unwrap_or(0.0),
+            None => self.plan.rates[l].map(|r| r.0).unwrap_or(0.0),
+        }
+    }
+    fn omega_err(&self, l: usize) -> f64 {
+        self.vel
+            .and_then(|v| v.rates[l].map(|r| r.1))
+            .unwrap_or(0.0)
+    }
+
+    fn add_point(&mut self, key: String, label: (String, String), at: Vec2, err: f64) -> usize {
+        let mut key = key;
+        while self.plan.points.iter().any(|p| p.key == key) {
+            key.push('\'');
+        }
+        self.plan.points.push(PlanPoint {
+            key,
+            label,
+            at,
+            err,
+        });
+        self.plan.points.len() - 1
+    }
+
+    fn register(&mut self, link: usize, x: Point, idx: usize) {
+        let local = self.local(link, x);
+        let tol = 1e-9 * self.m().size;
+        if !self.plan.body[link]
+            .iter()
+            .any(|(l, _)| (*l - local).hypot() <= tol)
+        {
+            self.plan.body[link].push((local, idx));
+        }
+    }
+
+    fn find(&self, link: usize, x: Point) -> Option<usize> {
+        let local = self.local(link, x);
+        let tol = 1e-9 * self.m().size;
+        self.plan.body[link]
+            .iter()
+            .find(|(l, _)| (*l - local).hypot() <= tol)
+            .map(|e| e.1)
+    }
+
+    /// Lay off the real vector `v` from plan point `from`.
+    fn lay_off(
+        &mut self,
+        from: usize,
+        v: Vec2,
+        what: String,
+        dir: Dir,
+        (key, label): (String, (String, String)),
+        value_err: f64,
+    ) -> usize {
+        let at = self.plan.points[from].at + v / self.plan.mu;
+        let err = self.plan.points[from].err + self.plan.delta + value_err / self.plan.mu;
+        let to = self.add_point(key, label, at, err);
+        self.step(Op::LayOff {
+            from,
+            to,
+            what,
+            value: v.hypot(),
+            dir,
+        });
+        to
+    }
+
+    fn line(&self, through: usize, unit: Vec2, dir: Dir) -> PlanLine {
+        PlanLine {
+            through,
+            unit: unit.normalize(),
+            dir,
+            err: self.plan.points[through].err + self.plan.delta,
+        }
+    }
+
+    fn intersect(
+        &mut self,
+        a: PlanLine,
+        b: PlanLine,
+        key: String,
+        label: (String, String),
+    ) -> Result<usize> {
+        let la = Line {
+            point: self.plan.points[a.through].at.to_point(),
+            dir: a.unit,
+        };
+        let lb = Line {
+            point: self.plan.points[b.through].at.to_point(),
+            dir: b.unit,
+        };
+        let LineCut::Point { at, sin_angle } = crate::geom::intersect_lines(&la, &lb, 1e-12) else {
+            return Err(Error::Singular {
+                at: describe_input(self.m(), self.q),
+                why: format!(
+                    "on the {} plan the lines for {} are parallel: the position is a dead point of the group",
+                    self.kind_word(),
+                    label.0.clone() + &label.1
+                ),
+            });
+        };
+        let err = a.err.hypot(b.err) / sin_angle;
+        let out = self.add_point(key, label, at.to_vec2(), err);
+        self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
+        self.step(Op::Intersect {
+            lines: [a, b],
+            out,
+            sin_angle,
+        });
+        Ok(out)
+    }
+
+    fn kind_word(&self) -> &'static str {
+        if self.vel_kind() {
+            "velocity"
+        } else {
+            "acceleration"
+        }
+    }
+
+    /// The plan point of the material point of `link` now at `x`, built
+    /// from what the plan knows of that link: the pole for the frame, the
+    /// same point for a translating link, the similarity theorem from two
+    /// known points, or, from one known point, the relative vector of the
+    /// link's measured rates.
+    fn point_on(
+        &mut self,
+        link: usize,
+        x: Point,
+        key: String,
+        label: (String, String),
+        figure_name: String,
+    ) -> usize {
+        if let Some(i) = self.find(link, x) {
+            return i;
+        }
+        let m = self.m();
+        let known = self.plan.body[link].clone();
+        if link == m.frame() {
+            let out = self.add_point(key, label, Vec2::ZERO, 0.0);
+            self.step(Op::Coincide {
+                out,
+                with: 0,
+                why: self.fixed_why(),
+            });
+            self.register(link, x, out);
+            return out;
+        }
+        let local = self.local(link, x);
+        if self.nr[link] && !known.is_empty() {
+            // A translating link: all its points share one plan point.
+            let with = known[0].1;
+            let out = self.add_point(
+                key,
+                label,
+                self.plan.points[with].at,
+                self.plan.points[with].err,
+            );
+            let why = format!("link {} translates", self.link(link));
+            self.step(Op::Coincide { out, with, why });
+            self.register(link, x, out);
+            return out;
+        }
+        assert!(
+            !known.is_empty(),
+            "a link is constructed only after one of its points"
+        );
+        let names = |b: &Builder, l: Vec2| -> String {
+            // The mechanism's name for a known local point of this link.
+            let m = b.m();
+            m.links[link]
+                .points
+                .iter()
+                .find(|&&p| (m.local(link, p) - l).hypot() <= 1e-9 * m.size)
+                .map(|&p| m.point_name(p).to_string())
+                .unwrap_or_else(|| "·".into())
+        };
+        if known.len() >= 2 {
+            // The pair of known points farthest apart on the link.
+            let (mut ia, mut ib, mut best) = (0, 1, -1.0);
+            for i in 0..known.len() {
+                for j in i + 1..known.len() {
+                    let d = (known[i].0 - known[j].0).hypot();
+                    if d > best {
+                        (ia, ib, best) = (i, j, d);
+                    }
+                }
+            }
+            let ((la, pa), (lb, pb)) = (known[ia], known[ib]);
+            let ab = lb - la;
+            let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+            let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
+            let at = a_at + (b_at - a_at).rotate_scale(ratio);
+            let fig = [names(self, la), names(self, lb), figure_name];
+            let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
+            if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
+                let err = ea.max(eb) + self.plan.delta;
+                let out = self.add_point(key, label, at, err);
+                self.step(Op::Divide {
+                    a: pa,
+                    b: pb,
+                    out,
+                    figure: fig,
+                    ratio: ratio.x,
+                });
+                self.register(link, x, out);
+                out
+            } else {
+                // Two arcs from a and b; their angle at the new point.
+                let (ca, cb) = (at - a_at, at - b_at);
+                let s = if ca.hypot() * cb.hypot() > 0.0 {
+                    (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
+                } else {
+                    1.0
+                };
+                let err = (ea + self.plan.delta).hypot(eb + self.plan.delta) / s.max(1e-300);
+                let out = self.add_point(key, label, at, err);
+                if s < 1.0 {
+                    self.plan.worst_sin = self.plan.worst_sin.min(s.max(0.0));
+                }
+                let link_id = self.link(link);
+                self.step(Op::Similar {
+                    a: pa,
+                    b: pb,
+                    out,
+                    figure: fig,
+                    link: link_id,
+                });
+                self.register(link, x, out);
+                out
+            }
+        } else {
+            // One known point A and the link's rates: v_X = v_A + ω×AX,
+            // a_X = a_A + ε×AX − ω²·AX.
+            let (la, pa) = known[0];
+            let a_world = self.c.pose(link).apply(la);
+            let r = x - a_world;
+            let (an, xn) = (names(self, la), label.0.clone() + &label.1);
+            let w = self.omega(link);
+            let seg = format!("{}{}", an, figure_name);
+            if self.vel_kind() {
+                let werr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
+                let out = self.lay_off(
+                    pa,
+                    perp(r) * w,
+                    format!("ω{}·l_{seg}", self.link(link)),
+                    Dir::PerpSense(seg.clone(), format!("ω{}", self.link(link))),
+                    (key, label),
+                    werr * r.hypot(),
+                );
+                let _ = xn;
+                self.register(link, x, out);
+                out
+            } else {
+                let eps = self.plan.rates[link].map(|r| r.0).unwrap_or(0.0);
+                let eerr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
+                let n_key = format!("n_{}", self.link(link));
+                let mut from = pa;
+                if w != 0.0 {
+                    from = self.lay_off(
+                        pa,
+                        -r * (w * w),
+                        format!("ω{}²·l_{seg}", self.link(link)),
+                        Dir::Toward(figure_name.clone(), an.clone()),
+                        (n_key, ("n".into(), self.link(link))),
+                        2.0 * w.abs() * self.omega_err(link) * r.hypot(),
+                    );
+                }
+                let out = self.lay_off(
+                    from,
+                    perp(r) * eps,
+                    format!("ε{}·l_{seg}", self.link(link)),
+                    Dir::PerpSense(seg, format!("ε{}", self.link(link))),
+                    (key, label),
+                    eerr * r.hypot(),
+                );
+                self.register(link, x, out);
+                out
+            }
+        }
+    }
+
+    fn fixed_why(&self) -> String {
+        "a point of the frame lies at the pole".into()
+    }
+
+    /// The named point `p` carried by `link` (registering it on every link
+    /// carrying it that the plan knows).
+    fn named(&mut self, link: usize, p: usize) -> usize {
+        let x = self.world(link, p);
+        let (key, label) = (
+            self.m().point_name(p).to_lowercase(),
+            lower_label(self.m().point_name(p)),
+        );
+        let i = self.point_on(link, x, key, label, self.name(p));
+        if self.plan.of_point[p].is_none() {
+            self.plan.of_point[p] = Some(i);
+        }
+        i
+    }
+
+    /// The coincident point of `link` at world `x` (named after point `p`
+    /// with the link's number as subscript: b₃ is B as a point of link 3).
+    fn coincident(&mut self, link: usize, x: Point, p: usize) -> usize {
+        let (mut key, mut label) = (
+            self.m().point_name(p).to_lowercase(),
+            lower_label(self.m().point_name(p)),
+        );
+        key = format!("{key}_{}", self.link(link));
+        label.1 = self.link(link);
+        self.point_on(
+            link,
+            x,
+            key,
+            label,
+            format!("{}{}", self.name(p), self.link(link)),
+        )
+    }
+
+    /// The line of a rigid relation X ∈ link with known point J:
+    /// v_X = v_J + v_XJ (⊥ JX); a_X = a_J + a^n_XJ (toward J) + a^t_XJ (⊥ JX).
+    /// Returns the line and the plan point the relative (tangential) part
+    /// starts from.
+    fn rigid(
+        &mut self,
+        link: usize,
+        j: usize,
+        jw: Point,
+        jname: &str,
+        x: Point,
+        xname: &str,
+    ) -> (PlanLine, usize) {
+        let seg = format!("{jname}{xname}");
+        let u = perp(x - jw);
+        if self.vel_kind() {
+            (self.line(j, u, Dir::Perp(seg)), j)
+        } else {
+            let w = self.omega(link);
+            if self.nr[link] || w == 0.0 {
+                return (self.line(j, u, Dir::Perp(seg)), j);
+            }
+            let r = x - jw;
+            let n = self.lay_off(
+                j,
+                -r * (w * w),
+                format!("a^n_{xname}{jname} = ω{}²·l_{seg}", self.link(link)),
+                Dir::Toward(xname.to_string(), jname.to_string()),
+                (
+                    format!("n_{}", self.link(link)),
+                    ("n".into(), self.link(link)),
+                ),
+                2.0 * w.abs() * self.omega_err(link) * r.hypot(),
+            );
+            (self.line(n, u, Dir::Perp(seg)), n)
+        }
+    }
+
+    /// The line of a slide of `unknown` along `u` relative to `known`, the
+    /// point of `known` at x being plan point `kx`:
+    /// v_X = v_Xk + v_rel (∥ guide); a_X = a_Xk + a^k + a^r (∥ guide),
+    /// a^k = 2·ω×v_rel turned by 90° in the sense of ω (on a rotating guide).
+    fn slide(
+        &mut self,
+        kx: usize,
+        u: Vec2,
+        Slide {
+            unknown,
+            known,
+            guide,
+        }: Slide,
+        x: Point,
+        xname: &str,
+    ) -> Result<PlanLine> {
+        let dir = Dir::Guide(self.link(guide));
+        if self.vel_kind() || self.nr[known] {
+            return Ok(self.line(kx, u, dir));
+        }
+        let w = self.omega(known);
+        // v_rel of `unknown` relative to `known` at x, from the velocity plan.
+        let vel = self.vel.expect("acceleration plan after the velocity plan");
+        let local_u = self.local(unknown, x);
+        let local_k = self.local(known, x);
+        let tol = 1e-9 * self.m().size;
+        let find = |l: usize, loc: Vec2| {
+            vel.body[l]
+                .iter()
+                .find(|(p, _)| (*p - loc).hypot() <= tol)
+                .map(|e| e.1)
+        };
+        let (Some(iu), Some(ik)) = (find(unknown, local_u), find(known, local_k)) else {
+            unreachable!("the velocity plan has both coincident points");
+        };
+        let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
+        let k_vec = perp(vrel) * (2.0 * w);
+        let verr = (vel.points[iu].err + vel.points[ik].err) * vel.mu;
+        let k = self.lay_off(
+            kx,
+            k_vec,
+            format!(
+                "a^k = 2·ω{}·v_{xname}{}{}",
+                self.link(known),
+                self.link(unknown),
+                self.link(known)
+            ),
+            Dir::Turned(
+                format!("v_{xname}{}{}", self.link(unknown), self.link(known)),
+                format!("ω{}", self.link(known)),
+            ),
+            (
+                format!("k_{}", self.link(unknown)),
+                ("k".into(), self.link(unknown)),
+            ),
+            2.0 * (w.abs() * verr + self.omega_err(known) * vrel.hypot()),
+        );
+        Ok(self.line(k, u, dir))
+    }
+
+    /// Measure the relative segment from `from` to `to` (the tangential
+    /// part for accelerations) of `link` between J and X: its rate.
+    fn measure_rate(
+        &mut self,
+        link: usize,
+        from: usize,
+        to: usize,
+        (jw, jname): (Point, &str),
+        (x, xname): (Point, &str),
+    ) {
+        let mu = self.plan.mu;
+        let rel = (self.plan.points[to].at - self.plan.points[from].at) * mu;
+        let r = x - jw;
+        let len = r.hypot();
+        let sign = if r.cross(rel) >= 0.0 { 1.0 } else { -1.0 };
+        let value = sign * rel.hypot() / len;
+        let err =
+            (self.plan.points[to].err + self.plan.points[from].err + self.plan.delta) * mu / len;
+        self.plan.rates[link] = Some((value, err));
+        let quantity = if self.vel_kind() {
+            format!("v_{xname}{jname}")
+        } else {
+            format!("a^t_{xname}{jname}")
+        };
+        let name = format!("{}{}", self.rate_sym(), self.link(link));
+        self.plan.measured.push(Measured {
+            quantity: name.clone(),
+            from,
+            to,
+            mm: rel.hypot() / mu,
+            value,
+            bound: err,
+        });
+        self.step(Op::Measure {
+            from,
+            to,
+            quantity,
+            value: rel.hypot(),
+            length: Some(len),
+            rate: Some((name, value, format!("{jname}{xname}"))),
+        });
+    }
+
+    fn same_rate(&mut self, link: usize, from: usize) {
+        self.plan.rates[link] = self.plan.rates[from];
+        let (a, b, w) = (
+            self.link(link),
+            self.link(from),
+            self.rate_sym().to_string(),
+        );
+        self.step(Op::Same {
+            link: a,
+            from_link: b,
+            what: w,
+        });
+    }
+
+    fn run(&mut self, rates: (f64, f64)) -> Result<()> {
+        let m = self.m();
+        let frame = m.frame();
+        // The pole and the fixed points.
+        let pole_label = if self.vel_kind() {
+            ("p".to_string(), "v".to_string())
+        } else {
+            ("p".to_string(), "a".to_string())
+        };
+        self.add_point(
+            if self.vel_kind() {
+                "p_v".into()
+            } else {
+                "p_a".into()
+            },
+            pole_label,
+            Vec2::ZERO,
+            0.0,
+        );
+        let fixed: Vec<String> = m.links[frame]
+            .points
+            .iter()
+            .filter(|p| self.st.points.contains(p))
+            .map(|&p| self.name(p).to_lowercase())
+            .collect();
+        self.step(Op::Pole { fixed });
+        for &p in &m.links[frame].points.clone() {
+            let x = self.world(frame, p);
+            self.register(frame, x, 0);
+            if self.st.points.contains(&p) {
+                self.plan.of_point[p] = Some(0);
+            }
+        }
+        self.plan.rates[frame] = Some((0.0, 0.0));
+        self.input(rates)?;
+        for (gi, g) in self.st.s.groups.iter().enumerate() {
+            if !self.st.need[gi] {
+                continue;
+            }
+            match g {
+                AssurGroup::Dyad(d) => self.dyad(d)?,
+                AssurGroup::Triad(t) => self.triad(t)?,
+            }
+            // The reported points of the group's links.
+            for l in g.links() {
+                for &p in &m.links[l].points.clone() {
+                    if self.st.points.contains(&p)
+                        && self.plan.of_point[p].is_none()
+                        && self.carrier(p) == l
+                    {
+                        self.named(l, p);
+                    }
+                }
+            }
+        }
+        // Measured absolute values of the reported points.
+        for &p in self.st.points {
+            if let Some(i) = self.plan.of_point[p] {
+                if i == 0 {
+                    continue;
+                }
+                let mm = self.plan.points[i].at.hypot();
+                let q = format!(
+                    "{}_{}",
+                    if self.vel_kind() { "v" } else { "a" },
+                    self.name(p)
+                );
+                self.plan.measured.push(Measured {
+                    quantity: q.clone(),
+                    from: 0,
+                    to: i,
+                    mm,
+                    value: mm * self.plan.mu,
+                    bound: (self.plan.points[i].err + self.plan.delta) * self.plan.mu,
+                });
+                self.step(Op::Measure {
+                    from: 0,
+                    to: i,
+                    quantity: q,
+                    value: mm * self.plan.mu,
+                    length: None,
+                    rate: None,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    fn carrier(&self, p: usize) -> usize {
+        self.m()
+            .links_of_point(p)
+            .into_iter()
+            .find(|&l| self.st.include[l])
+            .unwrap_or(self.m().frame())
+    }
+
+    fn input(&mut self, (rate, rate2): (f64, f64)) -> Result<()> {
+        let m = self.m();
+        match m.scene.input {
+            InputSpec::Crank { link, pivot, .. } => {
+                let pts = &m.links[link].points;
+                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                let (o, a) = (self.world(link, pivot), self.world(link, other));
+                self.register(link, o, 0);
+                let (on, an) = (self.name(pivot), self.name(other));
+                let seg = format!("{on}{an}");
+                let key = an.to_lowercase();
+                let label = lower_label(&an);
+                let r = a - o;
+                let id = self.link(link);
+                let idx = if self.vel_kind() {
+                    self.plan.rates[link] = Some((rate, 0.0));
+                    self.step(Op::Equation {
+                        text: format!("v_{an} = ω{id}·l_{seg}, v_{an} ⊥ {seg}"),
+                    });
+                    self.lay_off(
+                        0,
+                        perp(r) * rate,
+                        format!("ω{id}·l_{seg}"),
+                        Dir::PerpSense(seg.clone(), format!("ω{id}")),
+                        (key, label),
+                        0.0,
+                    )
+                } else {
+                    self.plan.rates[link] = Some((rate2, 0.0));
+                    let w = self.omega(link);
+                    if rate2 != 0.0 {
+                        self.step(Op::Equation {
+                            text: format!("a_{an} = a^n_{an}{on} + a^t_{an}{on}"),
+                        });
+                        let n = self.lay_off(
+                            0,
+                            -r * (w * w),
+                            format!("a^n_{an}{on} = ω{id}²·l_{seg}"),
+                            Dir::Toward(an.clone(), on.clone()),
+                            (format!("n_{id}"), ("n".into(), id.clone())),
+                            0.0,
+                        );
+                        self.lay_off(
+                            n,
+                            perp(r) * rate2,
+                            format!("a^t_{an}{on} = ε{id}·l_{seg}"),
+                            Dir::PerpSense(seg.clone(), format!("ε{id}")),
+                            (key, label),
+                            0.0,
+                        )
+                    } else {
+                        self.step(Op::Equation {
+                            text: format!("a_{an} = a^n_{an}{on} (ε{id} = 0)"),
+                        });
+                        self.lay_off(
+                            0,
+                            -r * (w * w),
+                            format!("a^n_{an}{on} = ω{id}²·l_{seg}"),
+                            Dir::Toward(an.clone(), on.clone()),
+                            (key, label),
+                            0.0,
+                        )
+                    }
+                };
+                self.register(link, a, idx);
+                self.plan.of_point[other] = Some(idx);
+            }
+            InputSpec::Slider { link, pair, .. } => {
+                let pr = &m.prismatics[pair];
+                let x = self.world(link, pr.point);
+                let u = self.c.pose(m.frame()).dir(pr.line_dir);
+                let xn = self.name(pr.point);
+                let v = if self.vel_kind() { rate } else { rate2 };
+                self.plan.rates[link] = Some((0.0, 0.0));
+                let sym = if self.vel_kind() { "v" } else { "a" };
+                let idx = self.lay_off(
+                    0,
+                    u * v,
+                    format!("{sym}_{xn}"),
+                    Dir::Guide(self.link(m.frame())),
+                    (xn.to_lowercase(), lower_label(&xn)),
+                    0.0,
+                );
+                self.register(link, x, idx);
+                self.plan.of_point[pr.point] = Some(idx);
+            }
+        }
+        Ok(())
+    }
+
+    /// Plan point of the joint of connection `cn` on its known side `k`.
+    fn joint_on(&mut self, k: usize, cn: &Conn) -> (usize, Point, String) {
+        let Joint::R(p) = cn.joint else {
+            unreachable!("a revolute pair")
+        };
+        let i = self.named(k, p);
+        (i, self.world(k, p), self.name(p))
+    }
+
+    fn dyad(&mut self, d: &Dyad) -> Result<()> {
+        let m = self.m();
+        let [l1, l2] = d.links;
+        let (s1, s2) = (self.link(l1), self.link(l2));
+        let v = if self.vel_kind() { "v" } else { "a" };
+        match d.kind {
+            DyadKind::Rrr => {
+                let (b, bw, bn) = self.joint_on(d.ext1.from, &d.ext1);
+                let (dd, dw, dn) = self.joint_on(d.ext2.to, &d.ext2);
+                let Joint::R(pc) = d.mid.joint else {
+                    unreachable!()
+                };
+                let (cw, cn) = (self.world(l1, pc), self.name(pc));
+                self.register(l1, bw, b);
+                self.register(l2, dw, dd);
+                self.step(Op::Equation {
+                    text: format!(
+                        "{v}_{cn} = {v}_{bn} + {v}_{cn}{bn}; {v}_{cn} = {v}_{dn} + {v}_{cn}{dn}"
+                    ),
+                });
+                let (la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
+                let (lb, tb) = self.rigid(l2, dd, dw, &dn, cw, &cn);
+                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                self.register(l1, cw, c);
+                self.register(l2, cw, c);
+                self.plan.of_point[pc].get_or_insert(c);
+                self.measure_rate(l1, ta, c, (bw, &bn), (cw, &cn));
+                self.measure_rate(l2, tb, c, (dw, &dn), (cw, &cn));
+            }
+            DyadKind::Rrp => {
+                let (b, bw, bn) = self.joint_on(d.ext1.from, &d.ext1);
+                self.register(l1, bw, b);
+                let Joint::R(pc) = d.mid.joint else {
+                    unreachable!()
+                };
+                let Joint::P(k) = d.ext2.joint else {
+                    unreachable!()
+                };
+                let k2 = d.ext2.to;
+                let (cw, cn) = (self.world(l1, pc), self.name(pc));
+                let pr = &m.prismatics[k];
+                let u = self.c.pose(pr.guide).dir(pr.line_dir);
+                let kc = self.coincident(k2, cw, pc);
+                let kcn = format!("{cn}{}", self.link(k2));
+                self.step(Op::Equation {
+                    text: format!(
+                        "{v}_{cn} = {v}_{bn} + {v}_{cn}{bn}; {v}_{cn} = {v}_{kcn} + {v}_{cn}{kcn}"
+                    ),
+                });
+                let (la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
+                let lb = self.slide(
+                    kc,
+                    u,
+                    Slide {
+                        unknown: l2,
+                        known: k2,
+                        guide: pr.guide,
+                    },
+                    cw,
+                    &cn,
+                )?;
+                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                self.register(l1, cw, c);
+                self.register(l2, cw, c);
+                self.plan.of_point[pc].get_or_insert(c);
+                self.measure_rate(l1, ta, c, (bw, &bn), (cw, &cn));
+                self.same_rate(l2, k2);
+                let _ = (s1, s2);
+            }
+            DyadKind::Rpr => {
+                let Joint::P(k) = d.mid.joint else {
+                    unreachable!()
+                };
+                let pr = &m.prismatics[k];
+                let (g, s) = (pr.guide, pr.slider);
+                let (cg, cs) = if g == l1 {
+                    (d.ext1, d.ext2)
+                } else {
+                    (d.ext2, d.ext1)
+                };
+                let kg = if cg.to == g { cg.from } else { cg.to };
+                let ks = if cs.to == s { cs.from } else { cs.to };
+                let (jg, jgw, jgn) = self.joint_on(kg, &cg);
+                let (js, jsw, jsn) = self.joint_on(ks, &cs);
+                self.register(g, jgw, jg);
+                self.register(s, jsw, js);
+                let Joint::R(ps) = cs.joint else {
+                    unreachable!()
+                };
+                let u = self.c.pose(g).dir(pr.line_dir);
+                let xg = format!("{jsn}{}", self.link(g));
+                self.step(Op::Equation {
+                    text: format!(
+                        "{v}_{xg} = {v}_{jsn} + {v}_{xg}{jsn}; {v}_{xg} = {v}_{jgn} + {v}_{xg}{jgn}"
+                    ),
+                });
+                let (la, ta) = self.rigid(g, jg, jgw, &jgn, jsw, &xg);
+                let lb = self.slide(
+                    js,
+                    u,
+                    Slide {
+                        unknown: g,
+                        known: s,
+                        guide: g,
+                    },
+                    jsw,
+                    &jsn,
+                )?;
+                let (mut key, mut label) = (jsn.to_lowercase(), lower_label(&jsn));
+                key = format!("{key}_{}", self.link(g));
+                label.1 = self.link(g);
+                let x = self.intersect(la, lb, key, label)?;
+                self.register(g, jsw, x);
+                let _ = ps;
+                self.measure_rate(g, ta, x, (jgw, &jgn), (jsw, &xg));
+                self.same_rate(s, g);
+            }
+            DyadKind::Prp => {
+                let Joint::R(pc) = d.mid.joint else {
+                    unreachable!()
+                };
+                let (Joint::P(k1), Joint::P(k2)) = (d.ext1.joint, d.ext2.joint) else {
+                    unreachable!()
+                };
+                let (kk1, kk2) = (d.ext1.from, d.ext2.to);
+                let cw = self.world(l1, pc);
+                let cn = self.name(pc);
+                let (p1, p2) = (&m.prismatics[k1], &m.prismatics[k2]);
+                let (u1, u2) = (
+                    self.c.pose(p1.guide).dir(p1.line_dir),
+                    self.c.pose(p2.guide).dir(p2.line_dir),
+                );
+                let c1 = self.coincident(kk1, cw, pc);
+                let c2 = self.coincident(kk2, cw, pc);
+                let (n1, n2) = (
+                    format!("{cn}{}", self.link(kk1)),
+                    format!("{cn}{}", self.link(kk2)),
+                );
+                self.step(Op::Equation {
+                    text: format!(
+                        "{v}_{cn} = {v}_{n1} + {v}_{cn}{n1}; {v}_{cn} = {v}_{n2} + {v}_{cn}{n2}"
+                    ),
+                });
+                let la = self.slide(
+                    c1,
+                    u1,
+                    Slide {
+                        unknown: l1,
+                        known: kk1,
+                        guide: p1.guide,
+                    },
+                    cw,
+                    &cn,
+                )?;
+                let lb = self.slide(
+                    c2,
+                    u2,
+                    Slide {
+                        unknown: l2,
+                        known: kk2,
+                        guide: p2.guide,
+                    },
+                    cw,
+                    &cn,
+                )?;
+                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                self.register(l1, cw, c);
+                self.register(l2, cw, c);
+                self.plan.of_point[pc].get_or_insert(c);
+                self.same_rate(l1, kk1);
+                self.same_rate(l2, kk2);
+            }
+            DyadKind::Rpp => {
+                let (b, bw, bn) = self.joint_on(d.ext1.from, &d.ext1);
+                self.register(l1, bw, b);
+                let (Joint::P(km), Joint::P(ke)) = (d.mid.joint, d.ext2.joint) else {
+                    unreachable!()
+                };
+                let k2 = d.ext2.to;
+                let Joint::R(pb) = d.ext1.joint else {
+                    unreachable!()
+                };
+                let (pm, pe) = (&m.prismatics[km], &m.prismatics[ke]);
+                let (um, ue) = (
+                    self.c.pose(pm.guide).dir(pm.line_dir),
+                    self.c.pose(pe.guide).dir(pe.line_dir),
+                );
+                self.same_rate(l2, k2);
+                self.same_rate(l1, k2);
+                let bk = self.coincident(k2, bw, pb);
+                let (x2, xk) = (
+                    format!("{bn}{}", self.link(l2)),
+                    format!("{bn}{}", self.link(k2)),
+                );
+                self.step(Op::Equation {
+                    text: format!(
+                        "{v}_{x2} = {v}_{bn} + {v}_{x2}{bn}; {v}_{x2} = {v}_{xk} + {v}_{x2}{xk}"
+                    ),
+                });
+                let la = self.slide(
+                    b,
+                    um,
+                    Slide {
+                        unknown: l2,
+                        known: l1,
+                        guide: pm.guide,
+                    },
+                    bw,
+                    &bn,
+                )?;
+                let lb = self.slide(
+                    bk,
+                    ue,
+                    Slide {
+                        unknown: l2,
+                        known: k2,
+                        guide: pe.guide,
+                    },
+                    bw,
+                    &bn,
+                )?;
+                let (mut key, mut label) = (bn.to_lowercase(), lower_label(&bn));
+                key = format!("{key}_{}", self.link(l2));
+                label.1 = self.link(l2);
+                let x = self.intersect(la, lb, key, label)?;
+                self.register(l2, bw, x);
+            }
+        }
+        Ok(())
+    }
+
+    /// A three-leash group by Assur's special point: the axes of two
+    /// leashes meet at S, taken on the base link; v_S (a_S) is reached from
+    /// both leashes' outer joints along lines ⊥ their axes. The pair of
+    /// leashes whose axes meet at the largest angle is used (the documented
+    /// fallback when two axes are parallel).
+    fn triad(&mut self, t: &Triad) -> Result<()> {
+        let m = self.m();
+        let e: Vec<(usize, Point, String)> = (0..3)
+            .map(|i| self.joint_on(t.ext[i].from, &t.ext[i]))
+            .collect();
+        let jp: Vec<usize> = t
+            .int
+            .iter()
+            .map(|c| match c.joint {
+                Joint::R(p) => p,
+                Joint::P(_) => unreachable!(),
+            })
+            .collect();
+        let jw: Vec<Point> = jp.iter().map(|&p| self.world(t.base, p)).collect();
+        let jn: Vec<String> = jp.iter().map(|&p| self.name(p)).collect();
+        for (leash, ei) in t.leashes.iter().zip(&e) {
+            self.register(*leash, ei.1, ei.0);
+        }
+        let axis = |i: usize| Line::new(e[i].1, jw[i] - e[i].1);
+        let pairs = [(0, 1, 2), (0, 2, 1), (1, 2, 0)];
+        let (i, j, k) = *pairs
+            .iter()
+            .max_by(|a, b| {
+                axis(a.0)
+                    .dir
+                    .cross(axis(a.1).dir)
+                    .abs()
+                    .total_cmp(&axis(b.0).dir.cross(axis(b.1).dir).abs())
+            })
+            .unwrap();
+        let LineCut::Point { at: sw, .. } = crate::geom::intersect_lines(&axis(i), &axis(j), 1e-12)
+        else {
+            return Err(Error::Singular {
+                at: describe_input(m, self.q),
+                why: "all three leashes of the class III group are parallel".into(),
+            });
+        };
+        if (sw - jw[k]).hypot() <= 1e-9 * m.size {
+            return Err(Error::Singular {
+                at: describe_input(m, self.q),
+                why:
+                    "the three leashes' axes meet in one point: a dead point of the class III group"
+                        .into(),
+            });
+        }
+        let base = self.link(t.base);
+        let v = if self.vel_kind() { "v" } else { "a" };
+        let sname = format!("S{base}");
+        self.step(Op::Equation {
+            text: format!(
+                "special point {sname} = {}{} ∩ {}{} on link {base}: {v}_{sname} = {v}_{} + {v}_{}{} + {v}_{sname}{}; {v}_{sname} = {v}_{} + {v}_{}{} + {v}_{sname}{}",
+                e[i].2, jn[i], e[j].2, jn[j], e[i].2, jn[i], e[i].2, jn[i], e[j].2, jn[j], e[j].2, jn[j]
+            ),
+        });
+        // The line for S from leash n: through e_n (+ normals) ⊥ E_n J_n.
+        let line_for_s = |b: &mut Builder, n: usize| -> PlanLine {
+            let u = perp(jw[n] - e[n].1);
+            let seg = format!("{}{}", e[n].2, jn[n]);
+            if b.vel_kind() {
+                return b.line(e[n].0, u, Dir::Perp(seg));
+            }
+            let mut from = e[n].0;
+            let leash = t.leashes[n];
+            let (wl, wb) = (b.omega(leash), b.omega(t.base));
+            let r1 = jw[n] - e[n].1;
+            if wl != 0.0 {
+                from = b.lay_off(
+                    from,
+                    -r1 * (wl * wl),
+                    format!("a^n_{}{} = ω{}²·l_{seg}", jn[n], e[n].2, b.link(leash)),
+                    Dir::Toward(jn[n].clone(), e[n].2.clone()),
+                    (format!("n_{}", b.link(leash)), ("n".into(), b.link(leash))),
+                    2.0 * wl.abs() * b.omega_err(leash) * r1.hypot(),
+                );
+            }
+            let r2 = sw - jw[n];
+            if wb != 0.0 && r2.hypot() > 0.0 {
+                from = b.lay_off(
+                    from,
+                    -r2 * (wb * wb),
+                    format!(
+                        "a^n_{sname}{} = ω{}²·l_{sname}{}",
+                        jn[n],
+                        b.link(t.base),
+                        jn[n]
+                    ),
+                    Dir::Toward(sname.clone(), jn[n].clone()),
+                    (
+                        format!("n_{}", b.link(t.base)),
+                        ("n".into(), b.link(t.base)),
+                    ),
+                    2.0 * wb.abs() * b.omega_err(t.base) * r2.hypot(),
+                );
+            }
+            b.line(from, u, Dir::Perp(seg))
+        };
+        let la = line_for_s(self, i);
+        let lb = line_for_s(self, j);
+        let s_idx = self.intersect(la, lb, format!("s_{base}"), ("s".into(), base.clone()))?;
+        self.register(t.base, sw, s_idx);
+        // Third leash: J_k from S on the base and from E_k on the leash.
+        let (lbase, tbase) = self.rigid(t.base, s_idx, sw, &sname, jw[k], &jn[k]);
+        let (lleash, tleash) = self.rigid(t.leashes[k], e[k].0, e[k].1, &e[k].2, jw[k], &jn[k]);
+        let jk = self.intersect(lbase, lleash, jn[k].to_lowercase(), lower_label(&jn[k]))?;
+        self.register(t.base, jw[k], jk);
+        self.register(t.leashes[k], jw[k], jk);
+        self.plan.of_point[jp[k]].get_or_insert(jk);
+        self.measure_rate(t.base, tbase, jk, (sw, &sname), (jw[k], &jn[k]));
+        self.measure_rate(t.leashes[k], tleash, jk, (e[k].1, &e[k].2), (jw[k], &jn[k]));
+        // The other joints by similarity on the base, then the leashes' rates.
+        for n in [i, j] {
+            let jn_idx = self.named(t.base, jp[n]);
+            self.register(t.leashes[n], jw[n], jn_idx);
+            let from = if self.vel_kind() || self.omega(t.leashes[n]) == 0.0 {
+                e[n].0
+            } else {
+                let key = format!("n_{}", self.link(t.leashes[n]));
+                self.plan
+                    .points
+                    .iter()
+                    .position(|p| p.key == key)
+                    .unwrap_or(e[n].0)
+            };
+            self.measure_rate(
+                t.leashes[n],
+                from,
+                jn_idx,
+                (e[n].1, &e[n].2),
+                (jw[n], &jn[n]),
+            );
+        }
+        Ok(())
+    }
+}
+
+/// Both plans at one position, as `want.plans` asks.
+#[derive(Clone, Debug)]
+pub struct Plans {
+    pub velocity: Plan,
+    pub acceleration: Option<Plan>,
+}
+
+/// Fixed scales and the pencil precision for [`build_plans`].
+#[derive(Clone, Copy, Debug)]
+pub struct Drafting {
+    pub mu_v: Option<f64>,
+    pub mu_a: Option<f64>,
+    /// Pencil precision δ, mm.
+    pub delta: f64,
+}
+
+impl Default for Drafting {
+    fn default() -> Self {
+        Drafting {
+            mu_v: None,
+            mu_a: None,
+            delta: 0.5,
+        }
+    }
+}
+
+/// Build the velocity plan, and the acceleration plan when `order` asks
+/// (it needs the velocity plan's ω and relative velocities).
+pub fn build_plans(
+    st: &Setup,
+    c: &Configuration,
+    drive: Drive,
+    order: Order,
+    d: Drafting,
+) -> Result<Plans> {
+    let velocity = build(st, c, drive, PlanKind::Velocity, None, d.mu_v, d.delta)?;
+    let acceleration = match order {
+        Order::Acceleration => Some(build(
+            st,
+            c,
+            drive,
+            PlanKind::Acceleration,
+            Some(&velocity),
+            d.mu_a,
+            d.delta,
+        )?),
+        Order::Velocity => None,
+    };
+    Ok(Plans {
+        velocity,
+        acceleration,
+    })
+}
