@@ -1,6 +1,7 @@
 //! The `mechplan` command: parses arguments and calls the library.
 
 use clap::{Parser, Subcommand, ValueEnum};
+use mechplan::construction::text::Lang;
 use mechplan::{Analysis, Error, Scene, report};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -28,6 +29,12 @@ enum Command {
         /// Write to this file (atomically) instead of standard output.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Print the construction of the plans as numbered lecture-style steps.
+        #[arg(long)]
+        steps: bool,
+        /// Language of the steps: en, uk or ru (default: the scene's want.lang).
+        #[arg(long)]
+        lang: Option<String>,
     },
 }
 
@@ -37,25 +44,43 @@ enum Format {
     Json,
 }
 
+/// What to print, and where.
+struct Options {
+    format: Format,
+    output: Option<PathBuf>,
+    steps: bool,
+    lang: Option<String>,
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
-            Format::Table,
-            None,
+            Options {
+                format: Format::Table,
+                output: None,
+                steps: false,
+                lang: None,
+            },
         ),
         Some(Command::Solve {
             scene,
             format,
             output,
+            steps,
+            lang,
         }) => match std::fs::read_to_string(&scene) {
             Ok(text) => run(
                 &text,
                 &scene.display().to_string(),
-                format,
-                output.as_deref(),
+                Options {
+                    format,
+                    output,
+                    steps,
+                    lang,
+                },
             ),
             Err(source) => Err(Error::Io {
                 path: scene.display().to_string(),
@@ -72,7 +97,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(text: &str, name: &str, format: Format, output: Option<&Path>) -> Result<(), Error> {
+fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
     let prefix = |e: Error| match e {
         Error::Scene(mut v) => {
             for i in &mut v {
@@ -82,17 +107,32 @@ fn run(text: &str, name: &str, format: Format, output: Option<&Path>) -> Result<
         }
         e => e,
     };
+    let lang = match &opt.lang {
+        None => None,
+        Some(l) => Some(Lang::parse(l).ok_or_else(|| {
+            Error::scene(
+                "--lang",
+                format!("unknown language \"{l}\": use en, uk or ru"),
+            )
+        })?),
+    };
     let scene = Scene::from_json(text).map_err(prefix)?;
+    let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(prefix)?;
     let solved = analysis.run()?;
-    let text = match format {
-        Format::Table => report::to_table(&analysis, &solved),
-        Format::Json => {
-            serde_json::to_string_pretty(&report::to_json(&analysis, &solved))
-                .expect("JSON of finite numbers")
-                + "\n"
+    let text = if opt.steps {
+        report::to_steps(&analysis, &solved, lang)
+    } else {
+        match opt.format {
+            Format::Table => report::to_table(&analysis, &solved),
+            Format::Json => {
+                serde_json::to_string_pretty(&report::to_json(&analysis, &solved))
+                    .expect("JSON of finite numbers")
+                    + "\n"
+            }
         }
     };
+    let output = opt.output.as_deref();
     match output {
         None => {
             let _ = std::io::stdout().write_all(text.as_bytes());

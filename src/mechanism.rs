@@ -272,6 +272,13 @@ fn rigid_link(scene: &Scene, l: usize, size: f64, issues: &mut Vec<Issue>) -> Li
             });
             continue;
         }
+        if on_line {
+            // Exactly on the line QR: a tangency of the two circles would
+            // put the point off the line by √ε of its distance.
+            let x = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
+            local[k] = a + (b - a) * (x / d);
+            continue;
+        }
         let tol = LENGTH_REL_TOL * d.max(r1).max(r2);
         match circle_circle(a.to_point(), r1, b.to_point(), r2, if side == 0.0 { 1.0 } else { side }, tol) {
             Some(x) => local[k] = x.to_vec2(),

@@ -534,7 +534,9 @@ fn solve_triad(
                 origin: pose.origin - Vec2::new(step[0], step[1]) * k,
                 angle: pose.angle - step[2] / size * k,
             };
-            if norm(residual(&next)) <= r0 || k < 1e-3 {
+            // At the level of rounding the residual cannot fall: take the
+            // full step there, or the damping would fake convergence.
+            if norm(residual(&next)) <= r0 || r0 <= 1e-13 * size * size || k < 1e-3 {
                 break;
             }
             k *= 0.5;

@@ -135,6 +135,14 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
             if !slides.is_empty() {
                 o.insert("sliders".into(), Value::Array(slides));
             }
+            if let Some(plans) = &s.plans {
+                let mut pl = Map::new();
+                pl.insert("velocity".into(), plan_json(&plans.velocity, "omega"));
+                if let Some(a) = &plans.acceleration {
+                    pl.insert("acceleration".into(), plan_json(a, "epsilon"));
+                }
+                o.insert("plans".into(), Value::Object(pl));
+            }
             if let Some(c) = &s.check {
                 o.insert(
                     "crosscheck".into(),
@@ -142,7 +150,7 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
                         "max_rel_diff": num(c.max_rel_diff),
                         "worst": c.worst,
                         "conditioning": num(c.conditioning),
-                        "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time) },
+                        "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
                     }),
                 );
             }
@@ -151,6 +159,30 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
         .collect();
     doc.insert("positions".into(), Value::Array(positions));
     Value::Object(doc)
+}
+
+/// A plan in the result: μ, the plan points in mm from the pole (named
+/// points by their lower-case names, construction points as documented in
+/// docs/scene-format.md), the worst intersection angle and the drafting
+/// bounds of what was measured.
+fn plan_json(plan: &crate::construction::Plan, rate: &str) -> Value {
+    let mut points = Map::new();
+    for p in plan.points.iter().skip(1) {
+        points.insert(p.key.clone(), json!([num(p.at.x), num(p.at.y)]));
+    }
+    let measured: Vec<Value> = plan
+        .measured
+        .iter()
+        .map(|q| json!({ "quantity": q.quantity, "from": plan.points[q.from].key, "to": plan.points[q.to].key, "mm": num(q.mm), "value": num(q.value), "bound": num(q.bound) }))
+        .collect();
+    let _ = rate;
+    json!({
+        "mu": num(plan.mu),
+        "points": points,
+        "worst_angle": num(plan.worst_angle_deg()),
+        "delta": num(plan.delta),
+        "measured": measured,
+    })
 }
 
 /// The reported angle of a link is the direction of the ray from its first
@@ -324,4 +356,73 @@ fn fmt(x: f64) -> String {
     let s = format!("{x:.6}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" { "0".into() } else { s.into() }
+}
+
+/// The constructions as numbered lecture-style steps (`solve --steps`).
+pub fn to_steps(an: &Analysis, solved: &[Solved], lang: crate::construction::text::Lang) -> String {
+    use crate::construction::text::{Lang, num, sentence};
+    let m = &an.mech;
+    let mut t = String::new();
+    let (title_v, title_a, worst, bound_word) = match lang {
+        Lang::En => (
+            "Plan of velocities",
+            "Plan of accelerations",
+            "worst intersection angle",
+            "drafting bound",
+        ),
+        Lang::Uk => (
+            "План швидкостей",
+            "План прискорень",
+            "найменший кут перетину",
+            "похибка побудови",
+        ),
+        Lang::Ru => (
+            "План скоростей",
+            "План ускорений",
+            "наименьший угол пересечения",
+            "погрешность построения",
+        ),
+    };
+    if !m.scene.title.is_empty() {
+        let _ = writeln!(t, "{}", m.scene.title);
+    }
+    for (i, s) in solved.iter().enumerate() {
+        let Some(plans) = &s.plans else { continue };
+        let input = match m.scene.input {
+            InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
+            InputSpec::Slider { .. } => format!("s = {} m", num(s.q)),
+        };
+        for (title, plan) in [
+            (title_v, Some(&plans.velocity)),
+            (title_a, plans.acceleration.as_ref()),
+        ] {
+            let Some(plan) = plan else { continue };
+            let position = match lang {
+                Lang::En => "position",
+                Lang::Uk => "положення",
+                Lang::Ru => "положение",
+            };
+            let _ = writeln!(t, "\n{title}, {position} {}, {input}", i + 1);
+            for k in 0..plan.steps.len() {
+                let _ = writeln!(t, "{:>3}. {}", k + 1, sentence(plan, k, lang));
+            }
+            let mm = if lang == Lang::En { "mm" } else { "мм" };
+            let _ = writeln!(
+                t,
+                "     {worst}: {}°; δ = {} {mm}",
+                num(plan.worst_angle_deg()),
+                num(plan.delta)
+            );
+            for q in &plan.measured {
+                let _ = writeln!(
+                    t,
+                    "     {} = {} ± {} ({bound_word})",
+                    q.quantity,
+                    num(q.value),
+                    num(q.bound)
+                );
+            }
+        }
+    }
+    t
 }

@@ -200,8 +200,8 @@ impl Scene {
                 ),
             ));
         }
-        let value =
-            parse_strict(text.strip_prefix('\u{feff}').unwrap_or(text)).map_err(|e| Error::Json(locate_bad_numbers(text).unwrap_or(e)))?;
+        let value = parse_strict(text.strip_prefix('\u{feff}').unwrap_or(text))
+            .map_err(|e| Error::Json(locate_bad_numbers(text).unwrap_or(e)))?;
         let mut r = Reader::default();
         let scene = r.scene(&value);
         match scene {
@@ -1002,7 +1002,10 @@ impl Reader {
             Some(x) => {
                 let l = self.link_ref(x, "/positions/output", links)?;
                 if links[l].id == "0" {
-                    self.err("/positions/output", "the frame does not move: name a moving link");
+                    self.err(
+                        "/positions/output",
+                        "the frame does not move: name a moving link",
+                    );
                     return None;
                 }
                 Some(l)

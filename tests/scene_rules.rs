@@ -84,3 +84,27 @@ fn guide_offset_shifts_to_the_left_of_the_direction() {
         assert!(vel.y.abs() < 1e-12 && acc.y.abs() < 1e-9);
     }
 }
+
+/// Regression (found by the plan-law property test): a point placed on the
+/// extension of its two reference points (|r1 − r2| = d) must lie exactly
+/// on their line; tangent circles used to put it off by √ε of the length.
+#[test]
+fn collinear_point_beyond_its_references_stays_on_the_line() {
+    for k in [1.0, 4.8820785639929785, 0.37] {
+        let mut v = fixture("class3_004");
+        for (_, p) in v["points"].as_object_mut().unwrap() {
+            let a = p.as_array().unwrap();
+            *p = json!([a[0].as_f64().unwrap() * k, a[1].as_f64().unwrap() * k]);
+        }
+        for (_, l) in v["lengths"].as_object_mut().unwrap() {
+            *l = json!(l.as_f64().unwrap() * k);
+        }
+        let an = mechplan::Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+        let link = &an.mech.links[an.mech.scene.link_index("3").unwrap()];
+        let d = link
+            .local_of(an.mech.scene.point_index("D").unwrap())
+            .unwrap();
+        assert_eq!(d.y, 0.0, "D on the base line B→C at k = {k}");
+        assert!((d.x - 2.0 * k).abs() <= 4.0 * f64::EPSILON * k);
+    }
+}

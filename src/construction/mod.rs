@@ -45,11 +45,18 @@ pub struct PlanPoint {
     pub at: Vec2,
     /// First-order drafting error radius, mm.
     pub err: f64,
+    /// The point's name on the mechanism's figure (`B`, `S2`, `B3` for B
+    /// as a point of link 3); empty for construction points.
+    pub figure: String,
 }
 
 impl PlanPoint {
     /// "b", "s2", "n2" …: letters and subscript run together, for text.
     pub fn name(&self) -> String {
+        if self.key.starts_with("p_") {
+            // The pole keeps its subscript visible: p_v, p_a.
+            return self.key.clone();
+        }
         format!("{}{}", self.label.0, self.label.1)
     }
 }
@@ -79,6 +86,15 @@ pub struct PlanLine {
     pub dir: Dir,
     /// Offset error of the drawn line, mm.
     pub err: f64,
+}
+
+/// Why a plan point coincides with another.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Why {
+    /// A point of the frame: at the pole.
+    Fixed,
+    /// A point of a translating link (its id).
+    Translates(String),
 }
 
 /// One drafting operation.
@@ -117,11 +133,7 @@ pub enum Op {
         ratio: f64,
     },
     /// A point coinciding with another (a translating link, or the pole).
-    Coincide {
-        out: usize,
-        with: usize,
-        why: String,
-    },
+    Coincide { out: usize, with: usize, why: Why },
     /// Measure a segment: `quantity` = length × μ; for a relative segment
     /// also the link's angular rate (name, signed value, link segment).
     Measure {
@@ -130,7 +142,7 @@ pub enum Op {
         quantity: String,
         value: f64,
         length: Option<f64>,
-        rate: Option<(String, f64, String)>,
+        rate: Option<(String, f64, (String, String))>,
     },
     /// Links in a prismatic pair share ω (ε).
     Same {
@@ -366,11 +378,18 @@ impl<'a> Builder<'a> {
         while self.plan.points.iter().any(|p| p.key == key) {
             key.push('\'');
         }
+        let construction = key.starts_with("n_") || key.starts_with("k_") || key.starts_with("p_");
+        let figure = if construction {
+            String::new()
+        } else {
+            format!("{}{}", label.0, label.1).to_uppercase()
+        };
         self.plan.points.push(PlanPoint {
             key,
             label,
             at,
             err,
+            figure,
         });
         self.plan.points.len() - 1
     }
@@ -494,7 +513,7 @@ impl<'a> Builder<'a> {
             self.step(Op::Coincide {
                 out,
                 with: 0,
-                why: self.fixed_why(),
+                why: Why::Fixed,
             });
             self.register(link, x, out);
             return out;
@@ -509,7 +528,7 @@ impl<'a> Builder<'a> {
                 self.plan.points[with].at,
                 self.plan.points[with].err,
             );
-            let why = format!("link {} translates", self.link(link));
+            let why = Why::Translates(self.link(link));
             self.step(Op::Coincide { out, with, why });
             self.register(link, x, out);
             return out;
@@ -518,15 +537,16 @@ impl<'a> Builder<'a> {
             !known.is_empty(),
             "a link is constructed only after one of its points"
         );
-        let names = |b: &Builder, l: Vec2| -> String {
-            // The mechanism's name for a known local point of this link.
+        let names = |b: &Builder, (l, idx): (Vec2, usize)| -> String {
+            // The mechanism's name for a known point of this link: its own
+            // point there, else the name of the coincident plan point (B3).
             let m = b.m();
             m.links[link]
                 .points
                 .iter()
                 .find(|&&p| (m.local(link, p) - l).hypot() <= 1e-9 * m.size)
                 .map(|&p| m.point_name(p).to_string())
-                .unwrap_or_else(|| "·".into())
+                .unwrap_or_else(|| b.plan.points[idx].figure.clone())
         };
         if known.len() >= 2 {
             // The pair of known points farthest apart on the link.
@@ -544,7 +564,7 @@ impl<'a> Builder<'a> {
             let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
             let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
             let at = a_at + (b_at - a_at).rotate_scale(ratio);
-            let fig = [names(self, la), names(self, lb), figure_name];
+            let fig = [names(self, known[ia]), names(self, known[ib]), figure_name];
             let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
             if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
                 let err = ea.max(eb) + self.plan.delta;
@@ -588,7 +608,7 @@ impl<'a> Builder<'a> {
             let (la, pa) = known[0];
             let a_world = self.c.pose(link).apply(la);
             let r = x - a_world;
-            let (an, xn) = (names(self, la), label.0.clone() + &label.1);
+            let (an, xn) = (names(self, known[0]), label.0.clone() + &label.1);
             let w = self.omega(link);
             let seg = format!("{}{}", an, figure_name);
             if self.vel_kind() {
@@ -631,10 +651,6 @@ impl<'a> Builder<'a> {
                 out
             }
         }
-    }
-
-    fn fixed_why(&self) -> String {
-        "a point of the frame lies at the pole".into()
     }
 
     /// The named point `p` carried by `link` (registering it on every link
@@ -750,13 +766,12 @@ impl<'a> Builder<'a> {
             kx,
             k_vec,
             format!(
-                "a^k = 2·ω{}·v_{xname}{}{}",
-                self.link(known),
-                self.link(unknown),
-                self.link(known)
+                "a^k_{xname}{u}{xname}{k} = 2·ω{k}·v_{xname}{u}{xname}{k}",
+                u = self.link(unknown),
+                k = self.link(known)
             ),
             Dir::Turned(
-                format!("v_{xname}{}{}", self.link(unknown), self.link(known)),
+                format!("v_{xname}{}{xname}{}", self.link(unknown), self.link(known)),
                 format!("ω{}", self.link(known)),
             ),
             (
@@ -782,7 +797,7 @@ impl<'a> Builder<'a> {
         let rel = (self.plan.points[to].at - self.plan.points[from].at) * mu;
         let r = x - jw;
         let len = r.hypot();
-        let sign = if r.cross(rel) >= 0.0 { 1.0 } else { -1.0 };
+        let sign = r.cross(rel).signum();
         let value = sign * rel.hypot() / len;
         let err =
             (self.plan.points[to].err + self.plan.points[from].err + self.plan.delta) * mu / len;
@@ -807,7 +822,7 @@ impl<'a> Builder<'a> {
             quantity,
             value: rel.hypot(),
             length: Some(len),
-            rate: Some((name, value, format!("{jname}{xname}"))),
+            rate: Some((name, value, (jname.to_string(), xname.to_string()))),
         });
     }
 

@@ -2,7 +2,7 @@
 //! Ukrainian and Russian. The mathematics (names of points, vectors,
 //! numbers) is the same in every language; only the words change.
 
-use super::{Dir, Op, Plan, PlanKind};
+use super::{Dir, Op, Plan, PlanKind, Why};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Lang {
@@ -97,9 +97,11 @@ fn sense(l: Lang, x: f64) -> String {
 pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
     let p = |k: usize| plan.points[k].name();
     let step = &plan.steps[i];
-    let unit = match plan.kind {
-        PlanKind::Velocity => "m/s",
-        PlanKind::Acceleration => "m/s²",
+    let unit = match (plan.kind, l) {
+        (PlanKind::Velocity, Lang::En) => "m/s",
+        (PlanKind::Acceleration, Lang::En) => "m/s²",
+        (PlanKind::Velocity, _) => "м/с",
+        (PlanKind::Acceleration, _) => "м/с²",
     };
     let mu = match plan.kind {
         PlanKind::Velocity => "μ_v",
@@ -286,11 +288,21 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
                 p(*out)
             ),
         },
-        Op::Coincide { out, with, why } => match l {
-            Lang::En => format!("Point {} coincides with {}: {why}.", p(*out), p(*with)),
-            Lang::Uk => format!("Точка {} збігається з {}: {why}.", p(*out), p(*with)),
-            Lang::Ru => format!("Точка {} совпадает с {}: {why}.", p(*out), p(*with)),
-        },
+        Op::Coincide { out, with, why } => {
+            let why = match (why, l) {
+                (Why::Fixed, Lang::En) => "a point of the frame lies at the pole".to_string(),
+                (Why::Fixed, Lang::Uk) => "точки стояка лежать у полюсі".to_string(),
+                (Why::Fixed, Lang::Ru) => "точки стойки лежат в полюсе".to_string(),
+                (Why::Translates(k), Lang::En) => format!("link {k} translates"),
+                (Why::Translates(k), Lang::Uk) => format!("ланка {k} рухається поступально"),
+                (Why::Translates(k), Lang::Ru) => format!("звено {k} движется поступательно"),
+            };
+            match l {
+                Lang::En => format!("Point {} coincides with {}: {why}.", p(*out), p(*with)),
+                Lang::Uk => format!("Точка {} збігається з {}: {why}.", p(*out), p(*with)),
+                Lang::Ru => format!("Точка {} совпадает с {}: {why}.", p(*out), p(*with)),
+            }
+        }
         Op::Measure {
             from,
             to,
@@ -319,38 +331,37 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
                 ),
             };
             match (rate, length) {
-                (Some((name, w, link_seg)), Some(len)) => {
-                    let runit = match plan.kind {
-                        PlanKind::Velocity => "rad/s",
-                        PlanKind::Acceleration => "rad/s²",
+                (Some((name, w, (j, x))), Some(len)) => {
+                    let runit = match (plan.kind, l) {
+                        (PlanKind::Velocity, Lang::En) => "rad/s",
+                        (PlanKind::Acceleration, Lang::En) => "rad/s²",
+                        (PlanKind::Velocity, _) => "рад/с",
+                        (PlanKind::Acceleration, _) => "рад/с²",
                     };
+                    let value = format!(
+                        "{base}; {name} = {quantity}/l_{j}{x} = {} / {} = {} {runit}",
+                        num(*value),
+                        num(*len),
+                        num(w.abs())
+                    );
+                    if *w == 0.0 {
+                        return format!("{value}.");
+                    }
                     let why = match l {
                         Lang::En => format!(
-                            "segment {seg} carried to {} turns {link_seg} about {} {}",
-                            &link_seg[link_seg.len() / 2..],
-                            &link_seg[..link_seg.len() / 2],
+                            "segment {seg} carried to {x} turns {j}{x} about {j} {}",
                             sense(l, *w)
                         ),
                         Lang::Uk => format!(
-                            "відрізок {seg}, перенесений у точку {}, повертає {link_seg} навколо {} {}",
-                            &link_seg[link_seg.len() / 2..],
-                            &link_seg[..link_seg.len() / 2],
+                            "відрізок {seg}, перенесений у точку {x}, повертає {j}{x} навколо {j} {}",
                             sense(l, *w)
                         ),
                         Lang::Ru => format!(
-                            "отрезок {seg}, перенесённый в точку {}, поворачивает {link_seg} вокруг {} {}",
-                            &link_seg[link_seg.len() / 2..],
-                            &link_seg[..link_seg.len() / 2],
+                            "отрезок {seg}, перенесённый в точку {x}, поворачивает {j}{x} вокруг {j} {}",
                             sense(l, *w)
                         ),
                     };
-                    format!(
-                        "{base}; {name} = {quantity}/l_{link_seg} = {} / {} = {} {runit}, {} ({why}).",
-                        num(*value),
-                        num(*len),
-                        num(w.abs()),
-                        sense(l, *w)
-                    )
+                    format!("{value}, {} ({why}).", sense(l, *w))
                 }
                 _ => format!("{base}."),
             }

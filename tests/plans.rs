@@ -1,0 +1,442 @@
+//! The plans of velocities and accelerations, built as constructions,
+//! against the analytic routes and against the laws of the method.
+
+mod common;
+use common::*;
+use kurbo::Vec2;
+use mechplan::construction::Plan;
+use mechplan::{Analysis, Solved};
+use proptest::prelude::*;
+use serde_json::{Value, json};
+
+/// Every fixture at 1° steps: plan values (segment × μ) equal the analytic
+/// values to 1e-9 relative wherever the worst intersection angle is above
+/// 1°; where it is below, the reported drafting bound covers the difference.
+#[test]
+fn plans_equal_analytic_values_on_every_fixture() {
+    for name in FIXTURES {
+        let v = fixture(name);
+        let (an, solved) = solve(scene_with(v.clone(), sweep(name, &v)));
+        let mut worst = 0.0f64;
+        let mut low_angle = 0;
+        for s in &solved {
+            let plans = s.plans.as_ref().unwrap();
+            for (plan, acc) in [
+                (&plans.velocity, false),
+                (plans.acceleration.as_ref().unwrap(), true),
+            ] {
+                let (d, bound_ok) = plan_vs_analytic(&an, s, plan, acc);
+                if plan.worst_angle_deg() > 1.0 {
+                    assert!(
+                        d <= 1e-9,
+                        "{name} at q = {}: {} plan differs by {d:e}",
+                        s.q,
+                        if acc { "acceleration" } else { "velocity" }
+                    );
+                } else {
+                    low_angle += 1;
+                    assert!(
+                        bound_ok,
+                        "{name} at q = {}: the drafting bound does not cover the difference",
+                        s.q
+                    );
+                }
+                worst = worst.max(d);
+            }
+        }
+        eprintln!(
+            "{name}: {} positions, worst plan difference {worst:.1e}, {low_angle} plans with an angle below 1°",
+            solved.len()
+        );
+    }
+}
+
+/// Largest relative difference of a plan from route (a), and whether every
+/// measured quantity's bound covers its own difference.
+fn plan_vs_analytic(an: &Analysis, s: &Solved, plan: &Plan, acc: bool) -> (f64, bool) {
+    let m = &an.mech;
+    let mut items = Vec::new();
+    let mut ok = true;
+    for &p in &an.points {
+        let st = s.point(an, p);
+        let (v, a) = st.rates.unwrap();
+        let exact = if acc { a } else { v };
+        let got = plan.value_of(p).unwrap();
+        items.push(((got - exact).hypot(), exact.hypot()));
+    }
+    for (l, r) in plan.rates.iter().enumerate() {
+        if let (Some((r, bound)), Some(mo)) = (r, s.motion[l]) {
+            let exact = if acc { mo.epsilon } else { mo.omega };
+            items.push(((r - exact).abs() * m.size, exact.abs() * m.size));
+            ok &= (r - exact).abs() <= *bound + 1e-12;
+        }
+    }
+    for q in &plan.measured {
+        // Absolute values: compare with the analytic magnitude.
+        if let Some(name) = q.quantity.strip_prefix(if acc { "a_" } else { "v_" })
+            && let Some(p) = m.scene.point_index(name)
+        {
+            {
+                let (v, a) = s.point(an, p).rates.unwrap();
+                let exact = if acc { a.hypot() } else { v.hypot() };
+                ok &= (q.value - exact).abs() <= q.bound + 1e-12;
+            }
+        }
+    }
+    let scale = items.iter().map(|e| e.1).fold(f64::MIN_POSITIVE, f64::max);
+    (items.iter().map(|e| e.0 / scale).fold(0.0, f64::max), ok)
+}
+
+/// A rigid motion and scaling of a scene: rotate by `theta` (deg) about the
+/// origin, scale by `k`, shift by (dx, dy) (scene units).
+fn transform(v: &Value, theta: f64, k: f64, dx: f64, dy: f64) -> Value {
+    let mut w = v.clone();
+    let (s, c) = theta.to_radians().sin_cos();
+    let tr = |p: &Value| {
+        let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+        json!([k * (c * x - s * y) + dx, k * (s * x + c * y) + dy])
+    };
+    for (_, p) in w["points"].as_object_mut().unwrap() {
+        *p = tr(p);
+    }
+    if let Some(l) = w.get_mut("lengths").and_then(Value::as_object_mut) {
+        for (_, x) in l {
+            *x = json!(x.as_f64().unwrap() * k);
+        }
+    }
+    if let Some(sl) = w.get_mut("sliders").and_then(Value::as_array_mut) {
+        for e in sl {
+            let line = &mut e["line"];
+            if line["through"].is_array() {
+                line["through"] = tr(&line["through"]);
+            }
+            if let Some(a) = line.get("angle").and_then(Value::as_f64) {
+                line["angle"] = json!(a + theta);
+            }
+            if let Some(o) = line.get("offset").and_then(Value::as_f64) {
+                line["offset"] = json!(o * k);
+            }
+        }
+    }
+    if let Some(a) = w["input"].get("angle").and_then(Value::as_f64) {
+        w["input"]["angle"] = json!(a + theta);
+    }
+    for key in ["s", "v", "a"] {
+        if w["input"].get("slider").is_some()
+            && let Some(x) = w["input"].get(key).and_then(Value::as_f64)
+        {
+            {
+                w["input"][key] = json!(x * k);
+            }
+        }
+    }
+    w
+}
+
+fn rot(v: Vec2, theta: f64) -> Vec2 {
+    mechplan::geom::rotate(v, theta.to_radians())
+}
+
+/// One random case: a fixture, a position inside its range, rates of
+/// either sign, and a rigid motion with scaling.
+fn case() -> impl Strategy<Value = (usize, f64, f64, f64, f64, f64)> {
+    (
+        0..FIXTURES.len(),
+        0.0..1.0f64,
+        prop_oneof![-40.0..-0.5f64, 0.5..40.0f64],
+        -200.0..200.0f64,
+        -180.0..180.0f64,
+        0.05..20.0f64,
+    )
+}
+
+fn input_value(name: &str, v: &Value, t: f64) -> Value {
+    let sw = sweep(name, v);
+    let (key, list) = sw.as_object().unwrap().iter().next().unwrap();
+    let list = list.as_array().unwrap();
+    let x = list[((list.len() - 1) as f64 * t) as usize]
+        .as_f64()
+        .unwrap();
+    json!({ key.as_str(): [x] })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]
+
+    /// The laws of the plan: relative velocity ⊥ link; relative
+    /// acceleration's component along the link = −ω²·l (toward the
+    /// centre); the figure of a link's plan points is directly similar to
+    /// the link (same order of letters, ratio |ω|); and moving or scaling
+    /// the scene turns and scales the plan with it.
+    #[test]
+    fn plan_laws_hold_on_random_mechanisms((f, t, omega, eps, theta, k) in case()) {
+        let name = FIXTURES[f];
+        let mut v = fixture(name);
+        let slider = v["input"].get("slider").is_some();
+        if slider {
+            v["input"]["v"] = json!(omega * 0.05);
+            v["input"]["a"] = json!(eps * 0.05);
+        } else {
+            v["input"]["omega"] = json!(omega);
+            v["input"].as_object_mut().unwrap().remove("rpm");
+            v["input"]["epsilon"] = json!(eps);
+        }
+        let pos = input_value(name, &v, t);
+        let (an, s) = solve(scene_with(v.clone(), pos.clone()));
+        let m = &an.mech;
+        let plans = s[0].plans.as_ref().unwrap();
+        let (vp, ap) = (&plans.velocity, plans.acceleration.as_ref().unwrap());
+        let vscale = an.points.iter().filter_map(|&p| vp.value_of(p)).map(|x| x.hypot()).fold(1e-300, f64::max);
+        let ascale = an.points.iter().filter_map(|&p| ap.value_of(p)).map(|x| x.hypot()).fold(1e-300, f64::max);
+        for l in 0..m.links.len() {
+            let Some((w, _)) = vp.rates[l] else { continue };
+            let pts: Vec<usize> = m.links[l].points.iter().copied().filter(|&p| an.carrier(p) == l || m.links_of_point(p).contains(&l)).filter(|p| an.points.contains(p)).collect();
+            for i in 0..pts.len() {
+                for j in i + 1..pts.len() {
+                    let (x, y) = (s[0].config.point(m, l, pts[i]), s[0].config.point(m, l, pts[j]));
+                    let r = y - x;
+                    let dv = vp.value_of(pts[j]).unwrap() - vp.value_of(pts[i]).unwrap();
+                    let da = ap.value_of(pts[j]).unwrap() - ap.value_of(pts[i]).unwrap();
+                    prop_assert!(dv.dot(r).abs() <= 1e-9 * vscale * r.hypot(), "v_{}{} not ⊥ link {}", m.point_name(pts[j]), m.point_name(pts[i]), m.link_id(l));
+                    prop_assert!((da.dot(r) + w * w * r.hypot2()).abs() <= 1e-9 * (ascale * r.hypot() + w * w * r.hypot2()), "normal component of link {}", m.link_id(l));
+                    prop_assert!((dv.hypot() - w.abs() * r.hypot()).abs() <= 1e-9 * vscale, "ratio |ω| on link {}", m.link_id(l));
+                    for q in j + 1..pts.len() {
+                        let z = s[0].config.point(m, l, pts[q]);
+                        let fig = r.cross(z - x);
+                        let plan_fig = dv.cross(vp.value_of(pts[q]).unwrap() - vp.value_of(pts[i]).unwrap());
+                        if fig.abs() > 1e-6 * r.hypot2() && w.abs() * r.hypot() > 1e-6 * vscale {
+                            prop_assert!(fig.signum() == plan_fig.signum(), "letter order on link {}", m.link_id(l));
+                        }
+                    }
+                }
+            }
+        }
+        // The same scene turned, scaled and moved.
+        let w2 = transform(&v, theta, k, 0.3, -0.2);
+        let mut pos2 = pos.clone();
+        if let Some(a) = pos2.get_mut("angles") {
+            *a = json!([a[0].as_f64().unwrap() + theta]);
+        }
+        if let Some(x) = pos2.get_mut("s") {
+            *x = json!([x[0].as_f64().unwrap() * k]);
+        }
+        let (an2, s2) = solve(scene_with(w2, pos2));
+        let p2 = s2[0].plans.as_ref().unwrap();
+        for &p in &an.points {
+            let (a1, a2) = (vp.value_of(p).unwrap(), p2.velocity.value_of(p).unwrap());
+            prop_assert!((rot(a1, theta) * k - a2).hypot() <= 1e-9 * vscale * k, "velocity of {} under the motion", m.point_name(p));
+            let (b1, b2) = (ap.value_of(p).unwrap(), p2.acceleration.as_ref().unwrap().value_of(p).unwrap());
+            prop_assert!((rot(b1, theta) * k - b2).hypot() <= 1e-9 * ascale * k, "acceleration of {} under the motion", m.point_name(p));
+        }
+        let _ = an2;
+    }
+}
+
+/// Coriolis direction for all four sign cases of ω and v_rel: the relative
+/// velocity turned by 90° in the sense of ω of the guide, magnitude
+/// 2·|ω|·|v_rel|. The RRP group on the rotating guide of `002`, with ω1 of
+/// both signs, at positions where the slider moves out and in.
+#[test]
+fn coriolis_direction_in_all_four_sign_cases() {
+    let mut seen = std::collections::BTreeSet::new();
+    for omega in [7.0, -7.0] {
+        let mut v = fixture("rrp_rotating_guide_002");
+        v["input"]["omega"] = json!(omega);
+        let (an, s) = solve(scene_with(
+            v,
+            json!({ "angles": (0..36).map(|k| 10.0 * k as f64).collect::<Vec<_>>() }),
+        ));
+        for st in &s {
+            let plans = st.plans.as_ref().unwrap();
+            let (vp, ap) = (&plans.velocity, plans.acceleration.as_ref().unwrap());
+            // v_rel of slider 3 relative to guide 1 at C: from c_1 to c.
+            let vrel = (vp.point("c").unwrap().at - vp.point("c_1").unwrap().at) * vp.mu;
+            let kvec = (ap.point("k_3").unwrap().at - ap.point("c_1").unwrap().at) * ap.mu;
+            let w = st.motion[an.mech.scene.link_index("1").unwrap()]
+                .unwrap()
+                .omega;
+            if vrel.hypot() < 1e-6 {
+                continue;
+            }
+            let expected = mechplan::geom::perp(vrel) * (2.0 * w);
+            assert!(
+                (kvec - expected).hypot() <= 1e-12 * expected.hypot(),
+                "a^k = 2ω×v_rel"
+            );
+            assert_eq!(
+                vrel.cross(kvec).signum(),
+                w.signum(),
+                "turned in the sense of ω"
+            );
+            seen.insert((w > 0.0, slide_sign(&an, st)));
+        }
+    }
+    assert_eq!(
+        seen.len(),
+        4,
+        "all four sign cases of ω and v_rel met: {seen:?}"
+    );
+}
+
+fn slide_sign(an: &Analysis, s: &Solved) -> bool {
+    s.slides(an)[0].v > 0.0
+}
+
+/// Asking for the velocity of a point of the first group constructs
+/// nothing of later groups and no acceleration plan.
+#[test]
+fn only_what_is_wanted_is_constructed() {
+    let mut v = fixture("six_link_fig2_10");
+    v["want"] = json!({ "plans": ["velocity"], "points": ["S2"] });
+    let (an, s) = solve(scene_with(v, json!({ "angles": [60] })));
+    let plans = s[0].plans.as_ref().unwrap();
+    assert!(plans.acceleration.is_none());
+    let keys: Vec<&str> = plans
+        .velocity
+        .points
+        .iter()
+        .map(|p| p.key.as_str())
+        .collect();
+    for later in ["c", "d", "s4", "d_0"] {
+        assert!(
+            !keys.contains(&later),
+            "{later} of group II(4,5) was constructed: {keys:?}"
+        );
+    }
+    assert!(keys.contains(&"s2"));
+    let m = &an.mech;
+    for l in ["4", "5"] {
+        assert!(plans.velocity.rates[m.scene.link_index(l).unwrap()].is_none());
+    }
+    // Without want.points the later group is there.
+    let (_, full) = solve(scene_with(
+        fixture("six_link_fig2_10"),
+        json!({ "angles": [60] }),
+    ));
+    assert!(
+        full[0]
+            .plans
+            .as_ref()
+            .unwrap()
+            .velocity
+            .point("d")
+            .is_some()
+    );
+}
+
+/// The `--steps` text of the lecture's Figs 2.10 and 2.11, in English and
+/// Ukrainian, kept as golden files (regenerate with UPDATE_GOLDEN=1).
+#[test]
+fn steps_of_lecture_figures_match_golden_files() {
+    for (fix, angle) in [("six_link_fig2_10", 60.0), ("shaper_fig2_11", 30.0)] {
+        for lang in ["en", "uk"] {
+            let dir = std::env::temp_dir().join(format!("mechplan-golden-{}", std::process::id()));
+            std::fs::create_dir_all(&dir).unwrap();
+            let mut v = fixture(fix);
+            v["positions"] = json!({ "angles": [angle] });
+            let path = dir.join(format!("{fix}.json"));
+            std::fs::write(&path, v.to_string()).unwrap();
+            let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+                .args(["solve", path.to_str().unwrap(), "--steps", "--lang", lang])
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let got = String::from_utf8(out.stdout).unwrap();
+            let golden = format!(
+                "{}/tests/golden/steps_{fix}_{lang}.txt",
+                env!("CARGO_MANIFEST_DIR")
+            );
+            if std::env::var_os("UPDATE_GOLDEN").is_some() {
+                std::fs::create_dir_all(std::path::Path::new(&golden).parent().unwrap()).unwrap();
+                std::fs::write(&golden, &got).unwrap();
+                continue;
+            }
+            let want = std::fs::read_to_string(&golden)
+                .unwrap_or_else(|_| panic!("{golden} missing: run with UPDATE_GOLDEN=1"));
+            if got != want {
+                let diff: Vec<String> = want
+                    .lines()
+                    .zip(got.lines())
+                    .enumerate()
+                    .filter(|(_, (a, b))| a != b)
+                    .take(5)
+                    .map(|(i, (a, b))| format!("line {}:\n- {a}\n+ {b}", i + 1))
+                    .collect();
+                panic!(
+                    "{golden} differs (UPDATE_GOLDEN=1 regenerates):\n{}",
+                    diff.join("\n")
+                );
+            }
+        }
+    }
+}
+
+/// Near a dead point of an RRR group (a non-Grashof four-bar approaching
+/// its limit, coupler and rocker stretching into one line) the plan's lines
+/// meet at small angles: each result is either refused with a clear
+/// message, or its reported drafting bound covers its difference from the
+/// analytic value. Never silently wrong.
+#[test]
+fn bounds_cover_the_plan_near_a_dead_point() {
+    let (a, b, c, d) = (0.25f64, 0.2f64, 0.3f64, 0.4f64);
+    let limit = ((a * a + d * d - (b + c) * (b + c)) / (2.0 * a * d)).acos();
+    let phi0 = 60f64.to_radians();
+    let pa = (a * phi0.cos(), a * phi0.sin());
+    // B: circle (A, b) ∩ circle (O3, c), above the frame.
+    let (dx, dy) = (d - pa.0, -pa.1);
+    let dist = dx.hypot(dy);
+    let x = (dist * dist + b * b - c * c) / (2.0 * dist);
+    let h = (b * b - x * x).sqrt();
+    let pb = (
+        pa.0 + dx / dist * x + dy / dist * h,
+        pa.1 + dy / dist * x - dx / dist * h,
+    );
+    let base = json!({
+        "mechplan": 1,
+        "points": { "O1": [0, 0], "A": [pa.0, pa.1], "B": [pb.0, pb.1], "O3": [d, 0] },
+        "links": { "0": { "points": ["O1", "O3"] }, "1": { "points": ["O1", "A"] }, "2": { "points": ["A", "B"] }, "3": { "points": ["O3", "B"] } },
+        "lengths": { "O1-A": a, "A-B": b, "O3-B": c },
+        "input": { "link": "1", "pivot": "O1", "angle": 60, "omega": 10, "epsilon": 3 }
+    });
+    let mut low = 0;
+    for k in 2..=12 {
+        let phi = (limit - 10f64.powi(-k)).to_degrees();
+        let scene = scene_with(base.clone(), json!({ "angles": [phi] }));
+        let an = Analysis::new(scene).unwrap();
+        match an.run() {
+            Err(e) => {
+                let msg = e.to_string();
+                assert!(
+                    msg.contains("singular") || msg.contains("cannot be assembled"),
+                    "unclear refusal: {msg}"
+                );
+            }
+            Ok(s) => {
+                let plans = s[0].plans.as_ref().unwrap();
+                for (plan, acc) in [
+                    (&plans.velocity, false),
+                    (plans.acceleration.as_ref().unwrap(), true),
+                ] {
+                    let (diff, bound_ok) = plan_vs_analytic(&an, &s[0], plan, acc);
+                    if plan.worst_angle_deg() > 1.0 {
+                        assert!(
+                            diff <= 1e-9,
+                            "10^-{k} rad from the limit: difference {diff:e}"
+                        );
+                    } else {
+                        low += 1;
+                        assert!(bound_ok, "10^-{k} rad from the limit: bound does not cover");
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        low >= 2,
+        "the sweep reached plans with intersection angles below 1° ({low})"
+    );
+}
