@@ -48,6 +48,7 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
     if !m.scene.title.is_empty() {
         doc.insert("title".into(), json!(m.scene.title));
     }
+    doc.insert("mu_l".into(), num(an.mu_l));
     doc.insert(
         "structure".into(),
         json!({ "dof": an.structure.dof, "formula": an.structure.formula(m), "groups": groups }),

@@ -30,6 +30,9 @@ pub struct Analysis {
     pub order: Option<Order>,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
+    /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
+    /// the standard value that draws the sketch's extent within 150 mm.
+    pub mu_l: f64,
 }
 
 /// (what, |difference|, |value|) of one kind of quantity.
@@ -105,6 +108,11 @@ impl Analysis {
             (true, false) => Some(Order::Velocity),
             (false, false) => None,
         };
+        let mu_l = sc
+            .want
+            .scales
+            .mu_l
+            .unwrap_or_else(|| crate::construction::scale::standard_scale(mech.size, 150.0));
         let drafting = Drafting {
             mu_v: sc.want.scales.mu_v,
             mu_a: sc.want.scales.mu_a,
@@ -118,6 +126,7 @@ impl Analysis {
             points,
             order,
             drafting,
+            mu_l,
         })
     }
 

@@ -440,3 +440,46 @@ fn bounds_cover_the_plan_near_a_dead_point() {
         "the sweep reached plans with intersection angles below 1° ({low})"
     );
 }
+
+/// Scales: chosen from the standard values so that the largest plan
+/// vector is 75–150 mm; fixed scales from `want.scales` honoured.
+#[test]
+fn scales_are_standard_or_as_asked() {
+    let standard = [1.0, 2.0, 2.5, 4.0, 5.0];
+    for name in FIXTURES {
+        let v = fixture(name);
+        let pos = input_value(name, &v, 0.37);
+        let (an, s) = solve(scene_with(v.clone(), pos.clone()));
+        let plans = s[0].plans.as_ref().unwrap();
+        for plan in [&plans.velocity, plans.acceleration.as_ref().unwrap()] {
+            let mant = plan.mu / 10f64.powf(plan.mu.log10().floor());
+            assert!(
+                standard.iter().any(|m| (m - mant).abs() < 1e-9),
+                "{name}: μ = {}",
+                plan.mu
+            );
+            let largest = plan.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+            assert!(
+                (75.0..=150.0 + 1e-9).contains(&largest),
+                "{name}: largest vector {largest} mm"
+            );
+        }
+        let mant = an.mu_l / 10f64.powf(an.mu_l.log10().floor());
+        assert!(standard.iter().any(|m| (m - mant).abs() < 1e-9));
+        let mut w = v.clone();
+        w["want"] = json!({ "scales": { "mu_v": 0.0123, "mu_a": 0.77, "mu_l": 0.002 } });
+        let (an2, s2) = solve(scene_with(w, pos));
+        let p2 = s2[0].plans.as_ref().unwrap();
+        assert_eq!(p2.velocity.mu, 0.0123);
+        assert_eq!(p2.acceleration.as_ref().unwrap().mu, 0.77);
+        assert_eq!(an2.mu_l, 0.002);
+        // The same plan at another scale: every point scales inversely.
+        for &p in &an.points {
+            let (a, b) = (
+                plans.velocity.value_of(p).unwrap(),
+                p2.velocity.value_of(p).unwrap(),
+            );
+            assert!((a - b).hypot() <= 1e-12 * a.hypot().max(1.0));
+        }
+    }
+}

@@ -238,6 +238,17 @@ pub fn non_rotating(m: &Mechanism) -> Vec<bool> {
     }
 }
 
+/// A vector known in magnitude and direction, doubly underlined as the
+/// lecture marks it.
+fn known(s: &str) -> String {
+    s.chars().flat_map(|c| [c, '\u{0333}']).collect()
+}
+
+/// A vector known in direction only, singly underlined.
+fn direction_known(s: &str) -> String {
+    s.chars().flat_map(|c| [c, '\u{0332}']).collect()
+}
+
 fn lower_label(name: &str) -> (String, String) {
     let lower = name.to_lowercase();
     let split = lower
@@ -826,6 +837,38 @@ impl<'a> Builder<'a> {
         });
     }
 
+    /// One vector equation of a group: X from a known point `base` through
+    /// a rigid link (normal + tangential parts) or a slide (Coriolis +
+    /// relative parts), with the lecture's marks of what is known.
+    fn relation(&self, x: &str, base: &str, rigid: bool, rotating: bool) -> String {
+        if self.vel_kind() {
+            return format!(
+                "v_{x} = {} + {}",
+                known(&format!("v_{base}")),
+                direction_known(&format!("v_{x}{base}"))
+            );
+        }
+        let mut parts = vec![known(&format!("a_{base}"))];
+        if rigid {
+            if rotating {
+                parts.push(known(&format!("a^n_{x}{base}")));
+            }
+            parts.push(direction_known(&format!("a^t_{x}{base}")));
+        } else {
+            if rotating {
+                parts.push(known(&format!("a^k_{x}{base}")));
+            }
+            parts.push(direction_known(&format!("a^r_{x}{base}")));
+        }
+        format!("a_{x} = {}", parts.join(" + "))
+    }
+
+    fn equations(&mut self, a: String, b: String) {
+        self.step(Op::Equation {
+            text: format!("{a}; {b}"),
+        });
+    }
+
     fn same_rate(&mut self, link: usize, from: usize) {
         self.plan.rates[link] = self.plan.rates[from];
         let (a, b, w) = (
@@ -1039,7 +1082,6 @@ impl<'a> Builder<'a> {
         let m = self.m();
         let [l1, l2] = d.links;
         let (s1, s2) = (self.link(l1), self.link(l2));
-        let v = if self.vel_kind() { "v" } else { "a" };
         match d.kind {
             DyadKind::Rrr => {
                 let (b, bw, bn) = self.joint_on(d.ext1.from, &d.ext1);
@@ -1050,11 +1092,10 @@ impl<'a> Builder<'a> {
                 let (cw, cn) = (self.world(l1, pc), self.name(pc));
                 self.register(l1, bw, b);
                 self.register(l2, dw, dd);
-                self.step(Op::Equation {
-                    text: format!(
-                        "{v}_{cn} = {v}_{bn} + {v}_{cn}{bn}; {v}_{cn} = {v}_{dn} + {v}_{cn}{dn}"
-                    ),
-                });
+                self.equations(
+                    self.relation(&cn, &bn, true, !self.nr[l1]),
+                    self.relation(&cn, &dn, true, !self.nr[l2]),
+                );
                 let (la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
                 let (lb, tb) = self.rigid(l2, dd, dw, &dn, cw, &cn);
                 let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
@@ -1079,11 +1120,10 @@ impl<'a> Builder<'a> {
                 let u = self.c.pose(pr.guide).dir(pr.line_dir);
                 let kc = self.coincident(k2, cw, pc);
                 let kcn = format!("{cn}{}", self.link(k2));
-                self.step(Op::Equation {
-                    text: format!(
-                        "{v}_{cn} = {v}_{bn} + {v}_{cn}{bn}; {v}_{cn} = {v}_{kcn} + {v}_{cn}{kcn}"
-                    ),
-                });
+                self.equations(
+                    self.relation(&cn, &bn, true, !self.nr[l1]),
+                    self.relation(&cn, &kcn, false, !self.nr[k2]),
+                );
                 let (la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
                 let lb = self.slide(
                     kc,
@@ -1126,11 +1166,10 @@ impl<'a> Builder<'a> {
                 };
                 let u = self.c.pose(g).dir(pr.line_dir);
                 let xg = format!("{jsn}{}", self.link(g));
-                self.step(Op::Equation {
-                    text: format!(
-                        "{v}_{xg} = {v}_{jsn} + {v}_{xg}{jsn}; {v}_{xg} = {v}_{jgn} + {v}_{xg}{jgn}"
-                    ),
-                });
+                self.equations(
+                    self.relation(&xg, &jsn, false, !self.nr[s]),
+                    self.relation(&xg, &jgn, true, !self.nr[g]),
+                );
                 let (la, ta) = self.rigid(g, jg, jgw, &jgn, jsw, &xg);
                 let lb = self.slide(
                     js,
@@ -1173,11 +1212,10 @@ impl<'a> Builder<'a> {
                     format!("{cn}{}", self.link(kk1)),
                     format!("{cn}{}", self.link(kk2)),
                 );
-                self.step(Op::Equation {
-                    text: format!(
-                        "{v}_{cn} = {v}_{n1} + {v}_{cn}{n1}; {v}_{cn} = {v}_{n2} + {v}_{cn}{n2}"
-                    ),
-                });
+                self.equations(
+                    self.relation(&cn, &n1, false, !self.nr[kk1]),
+                    self.relation(&cn, &n2, false, !self.nr[kk2]),
+                );
                 let la = self.slide(
                     c1,
                     u1,
@@ -1229,11 +1267,10 @@ impl<'a> Builder<'a> {
                     format!("{bn}{}", self.link(l2)),
                     format!("{bn}{}", self.link(k2)),
                 );
-                self.step(Op::Equation {
-                    text: format!(
-                        "{v}_{x2} = {v}_{bn} + {v}_{x2}{bn}; {v}_{x2} = {v}_{xk} + {v}_{x2}{xk}"
-                    ),
-                });
+                self.equations(
+                    self.relation(&x2, &bn, false, !self.nr[l1]),
+                    self.relation(&x2, &xk, false, !self.nr[k2]),
+                );
                 let la = self.slide(
                     b,
                     um,
