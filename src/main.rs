@@ -2,6 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use mechplan::construction::text::Lang;
+use mechplan::drawing::{self, DrawOptions, SheetSize};
 use mechplan::{Analysis, Error, Scene, report};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -36,6 +37,35 @@ enum Command {
         #[arg(long)]
         lang: Option<String>,
     },
+    /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
+    Draw {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Folder to write the sheets into.
+        #[arg(short, long, default_value = "mechplan-out")]
+        output: PathBuf,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+        /// Sheet size: A4 (default), A3 or A1, landscape.
+        #[arg(long, default_value = "A4")]
+        sheet: String,
+        /// Add a title block to every sheet.
+        #[arg(long)]
+        title_block: bool,
+        /// Add the table of measured segments to the plans.
+        #[arg(long)]
+        table: bool,
+        /// Language of the annotations: en, uk or ru (default: the scene's want.lang).
+        #[arg(long)]
+        lang: Option<String>,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum DrawFormat {
+    Svg,
+    Png,
+    Pdf,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -64,7 +94,47 @@ fn main() -> ExitCode {
                 steps: false,
                 lang: None,
             },
-        ),
+        )
+        .and_then(|()| {
+            draw(
+                mechplan::DEFAULT_SCENE,
+                "the embedded default scene",
+                DrawArgs {
+                    dir: PathBuf::from("mechplan-out"),
+                    format: DrawFormat::Svg,
+                    sheet: "A4".into(),
+                    title_block: false,
+                    table: false,
+                    lang: None,
+                },
+            )
+        }),
+        Some(Command::Draw {
+            scene,
+            output,
+            format,
+            sheet,
+            title_block,
+            table,
+            lang,
+        }) => match std::fs::read_to_string(&scene) {
+            Ok(text) => draw(
+                &text,
+                &scene.display().to_string(),
+                DrawArgs {
+                    dir: output,
+                    format,
+                    sheet,
+                    title_block,
+                    table,
+                    lang,
+                },
+            ),
+            Err(source) => Err(Error::Io {
+                path: scene.display().to_string(),
+                source,
+            }),
+        },
         Some(Command::Solve {
             scene,
             format,
@@ -95,6 +165,70 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+struct DrawArgs {
+    dir: PathBuf,
+    format: DrawFormat,
+    sheet: String,
+    title_block: bool,
+    table: bool,
+    lang: Option<String>,
+}
+
+fn parse_lang(l: &Option<String>) -> Result<Option<Lang>, Error> {
+    match l {
+        None => Ok(None),
+        Some(l) => Lang::parse(l).map(Some).ok_or_else(|| {
+            Error::scene(
+                "--lang",
+                format!("unknown language \"{l}\": use en, uk or ru"),
+            )
+        }),
+    }
+}
+
+fn with_file_name(name: &str) -> impl Fn(Error) -> Error + '_ {
+    move |e| match e {
+        Error::Scene(mut v) => {
+            for i in &mut v {
+                i.message = format!("{} (in {name})", i.message);
+            }
+            Error::Scene(v)
+        }
+        e => e,
+    }
+}
+
+fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
+    let lang = parse_lang(&a.lang)?;
+    let sheet = SheetSize::parse(&a.sheet).ok_or_else(|| {
+        Error::scene(
+            "--sheet",
+            format!("unknown sheet \"{}\": use A4, A3 or A1", a.sheet),
+        )
+    })?;
+    let scene = Scene::from_json(text).map_err(with_file_name(name))?;
+    let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
+    let analysis = Analysis::new(scene).map_err(with_file_name(name))?;
+    let solved = analysis.run()?;
+    let opt = DrawOptions {
+        sheet,
+        lang,
+        title_block: a.title_block,
+        table: a.table,
+    };
+    let sheets = drawing::sheets(&analysis, &solved, &opt);
+    let format = match a.format {
+        DrawFormat::Svg => drawing::Format::Svg,
+        DrawFormat::Png => drawing::Format::Png,
+        DrawFormat::Pdf => drawing::Format::Pdf,
+    };
+    let written = drawing::write_sheets(&sheets, &a.dir, format)?;
+    for p in written {
+        println!("wrote {}", p.display());
+    }
+    Ok(())
 }
 
 fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {

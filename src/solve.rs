@@ -31,7 +31,7 @@ pub struct Analysis {
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
-    /// the standard value that draws the sketch's extent within 150 mm.
+    /// the standard value that draws the sketch's extent within 200 mm.
     pub mu_l: f64,
 }
 
@@ -112,7 +112,7 @@ impl Analysis {
             .want
             .scales
             .mu_l
-            .unwrap_or_else(|| crate::construction::scale::standard_scale(mech.size, 150.0));
+            .unwrap_or_else(|| crate::construction::scale::standard_scale(mech.size, 200.0));
         let drafting = Drafting {
             mu_v: sc.want.scales.mu_v,
             mu_a: sc.want.scales.mu_a,

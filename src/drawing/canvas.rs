@@ -1,0 +1,420 @@
+//! A drawing sheet in millimetres: primitives collected in drawing
+//! coordinates (y up, as the plans are computed), labels placed so that they
+//! overlap neither each other nor the drawn lines, then written as SVG with
+//! one number formatter so the output is byte-stable.
+
+use kurbo::{Point, Rect, Vec2};
+use std::fmt::Write as _;
+
+/// Line weights after ГОСТ 2.303: main lines S, thin lines S/2.
+pub const MAIN: f64 = 0.5;
+pub const THIN: f64 = 0.25;
+/// Font sizes after ГОСТ 2.304 (mm).
+pub const FONT: f64 = 3.5;
+pub const SMALL: f64 = 2.5;
+
+/// Numbers as 0.01 mm, no trailing zeros, no "-0": byte-stable output.
+pub fn fmt(x: f64) -> String {
+    let r = (x * 100.0).round() / 100.0;
+    let s = format!("{r:.2}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// What a drawn segment is, for its weight and for the checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Class {
+    /// A link, a guide, an absolute vector: main line.
+    Main,
+    /// A relative vector or a laid-off component: main line too.
+    Vector,
+    /// A construction line, hatching, a dimension: thin line.
+    Thin,
+}
+
+/// A label: letters and a subscript.
+#[derive(Clone, Debug)]
+pub struct Label {
+    pub base: String,
+    pub sub: String,
+    /// Plain text after the subscript (", o1, o2").
+    pub tail: String,
+}
+
+impl Label {
+    pub fn new(base: impl Into<String>, sub: impl Into<String>) -> Label {
+        Label {
+            base: base.into(),
+            sub: sub.into(),
+            tail: String::new(),
+        }
+    }
+    pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
+        self.tail = tail.into();
+        self
+    }
+    /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
+    pub fn width(&self, size: f64) -> f64 {
+        let w = |s: &str| s.chars().count() as f64;
+        0.62 * size * (w(&self.base) + w(&self.tail)) + 0.62 * 0.7 * size * w(&self.sub)
+    }
+}
+
+#[derive(Clone, Debug)]
+pub enum Prim {
+    Seg {
+        a: Point,
+        b: Point,
+        class: Class,
+        id: Option<String>,
+    },
+    Poly {
+        pts: Vec<Point>,
+        fill: &'static str,
+        stroke: f64,
+    },
+    Circle {
+        c: Point,
+        r: f64,
+        fill: &'static str,
+        stroke: f64,
+        id: Option<String>,
+    },
+    /// A filled arrowhead with its tip at `tip`, pointing along `dir`.
+    Arrow { tip: Point, dir: Vec2 },
+    /// A circular arc about `c` of radius `r` from angle `a0` swept by `sweep` (rad, CCW positive).
+    Arc {
+        c: Point,
+        r: f64,
+        a0: f64,
+        sweep: f64,
+    },
+    /// Text whose box's lower-left corner is `at` (drawing coordinates).
+    Text {
+        at: Point,
+        label: Label,
+        size: f64,
+        id: Option<String>,
+        class: &'static str,
+    },
+}
+
+/// The sheet: what is drawn, the boxes of the placed labels (drawing
+/// coordinates) and the segments labels must avoid.
+#[derive(Default)]
+pub struct Canvas {
+    pub prims: Vec<Prim>,
+    pub boxes: Vec<Rect>,
+    pub avoid: Vec<(Point, Point)>,
+}
+
+fn seg_hits_rect(a: Point, b: Point, r: &Rect) -> bool {
+    // Liang–Barsky clipping: does the segment enter the rectangle?
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    let d = b - a;
+    for (p, q) in [
+        (-d.x, a.x - r.x0),
+        (d.x, r.x1 - a.x),
+        (-d.y, a.y - r.y0),
+        (d.y, r.y1 - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+impl Canvas {
+    pub fn seg(&mut self, a: Point, b: Point, class: Class) {
+        self.prims.push(Prim::Seg {
+            a,
+            b,
+            class,
+            id: None,
+        });
+        if class != Class::Thin {
+            self.avoid.push((a, b));
+        }
+    }
+
+    /// A vector with its arrowhead at `b`.
+    pub fn vector(&mut self, a: Point, b: Point, class: Class, id: Option<String>) {
+        if (b - a).hypot() < 1e-6 {
+            return;
+        }
+        self.prims.push(Prim::Seg { a, b, class, id });
+        self.avoid.push((a, b));
+        self.prims.push(Prim::Arrow {
+            tip: b,
+            dir: (b - a).normalize(),
+        });
+    }
+
+    pub fn circle(&mut self, c: Point, r: f64, fill: &'static str, stroke: f64) {
+        self.prims.push(Prim::Circle {
+            c,
+            r,
+            fill,
+            stroke,
+            id: None,
+        });
+    }
+
+    /// A plan or mechanism point: a dot with an id the checks can find.
+    pub fn dot(&mut self, c: Point, id: String) {
+        self.prims.push(Prim::Circle {
+            c,
+            r: 0.5,
+            fill: "black",
+            stroke: 0.0,
+            id: Some(id),
+        });
+    }
+
+    /// Place `label` near `anchor`, at the first of 16 candidate places
+    /// whose box meets no placed label and no avoided segment (else the
+    /// least crowded one), and keep its box.
+    pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
+        let (w, h) = (label.width(size), size * 0.8);
+        let mut best: Option<(usize, Rect)> = None;
+        for ring in [1.2, 2.6, 4.5] {
+            for k in 0..8 {
+                let ang = std::f64::consts::FRAC_PI_4 * k as f64 + std::f64::consts::FRAC_PI_8;
+                let d = Vec2::from_angle(ang) * ring;
+                // The box sits on the side of the anchor the direction points to.
+                let x0 = anchor.x + d.x + if d.x < 0.0 { -w } else { 0.0 };
+                let y0 = anchor.y + d.y + if d.y < 0.0 { -h } else { 0.0 };
+                let r = Rect::new(x0, y0, x0 + w, y0 + h);
+                let hits = self
+                    .boxes
+                    .iter()
+                    .filter(|b| b.intersect(r).area() > 0.0)
+                    .count()
+                    * 4
+                    + self
+                        .avoid
+                        .iter()
+                        .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.2, 0.2)))
+                        .count();
+                if hits == 0 {
+                    best = Some((0, r));
+                    break;
+                }
+                if best.as_ref().is_none_or(|(h0, _)| hits < *h0) {
+                    best = Some((hits, r));
+                }
+            }
+            if best.as_ref().is_some_and(|b| b.0 == 0) {
+                break;
+            }
+        }
+        let (_, r) = best.expect("candidates exist");
+        self.boxes.push(r);
+        self.prims.push(Prim::Text {
+            at: Point::new(r.x0, r.y0),
+            label,
+            size,
+            id,
+            class: "label",
+        });
+    }
+
+    /// Free text (titles, scales) with its lower-left corner at `at`.
+    pub fn text(&mut self, at: Point, label: Label, size: f64, class: &'static str) {
+        let r = Rect::new(at.x, at.y, at.x + label.width(size), at.y + size * 0.8);
+        self.boxes.push(r);
+        self.prims.push(Prim::Text {
+            at,
+            label,
+            size,
+            id: None,
+            class,
+        });
+    }
+
+    /// Bounding box of everything drawn (drawing coordinates).
+    pub fn bounds(&self) -> Rect {
+        let mut r: Option<Rect> = None;
+        let mut add = |p: Point, pad: f64| {
+            let b = Rect::new(p.x - pad, p.y - pad, p.x + pad, p.y + pad);
+            r = Some(r.map_or(b, |x| x.union(b)));
+        };
+        for p in &self.prims {
+            match p {
+                Prim::Seg { a, b, .. } => {
+                    add(*a, 0.5);
+                    add(*b, 0.5);
+                }
+                Prim::Poly { pts, .. } => pts.iter().for_each(|q| add(*q, 0.3)),
+                Prim::Circle { c, r, .. } => add(*c, *r + 0.3),
+                Prim::Arrow { tip, .. } => add(*tip, 3.0),
+                Prim::Arc { c, r, .. } => add(*c, *r + 1.5),
+                Prim::Text {
+                    at, label, size, ..
+                } => {
+                    add(*at, 0.2);
+                    add(Point::new(at.x + label.width(*size), at.y + size), 0.2);
+                }
+            }
+        }
+        r.unwrap_or(Rect::ZERO)
+    }
+
+    /// Write the primitives as SVG elements, drawing coordinates mapped to
+    /// the page by x ↦ ox + x, y ↦ oy − y.
+    pub fn write(&self, out: &mut String, ox: f64, oy: f64) {
+        let px = |p: Point| format!("{} {}", fmt(ox + p.x), fmt(oy - p.y));
+        for p in &self.prims {
+            match p {
+                Prim::Seg { a, b, class, id } => {
+                    let w = if *class == Class::Thin { THIN } else { MAIN };
+                    let cls = match class {
+                        Class::Main => "main",
+                        Class::Vector => "vector",
+                        Class::Thin => "thin",
+                    };
+                    let id = id
+                        .as_ref()
+                        .map(|i| format!(r#" id="{i}""#))
+                        .unwrap_or_default();
+                    let _ = writeln!(
+                        out,
+                        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="black" stroke-width="{}" stroke-linecap="round"/>"#,
+                        fmt(ox + a.x),
+                        fmt(oy - a.y),
+                        fmt(ox + b.x),
+                        fmt(oy - b.y),
+                        fmt(w)
+                    );
+                }
+                Prim::Poly { pts, fill, stroke } => {
+                    let d: Vec<String> = pts.iter().map(|q| px(*q)).collect();
+                    let stroke = if *stroke > 0.0 {
+                        format!(r#" stroke="black" stroke-width="{}""#, fmt(*stroke))
+                    } else {
+                        String::new()
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<polygon points="{}" fill="{fill}"{stroke}/>"#,
+                        d.join(" ")
+                    );
+                }
+                Prim::Circle {
+                    c,
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                } => {
+                    let id = id
+                        .as_ref()
+                        .map(|i| format!(r#" id="{i}""#))
+                        .unwrap_or_default();
+                    let stroke = if *stroke > 0.0 {
+                        format!(r#" stroke="black" stroke-width="{}""#, fmt(*stroke))
+                    } else {
+                        String::new()
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<circle{id} cx="{}" cy="{}" r="{}" fill="{fill}"{stroke}/>"#,
+                        fmt(ox + c.x),
+                        fmt(oy - c.y),
+                        fmt(*r)
+                    );
+                }
+                Prim::Arrow { tip, dir } => {
+                    let (len, half) = (3.0, 0.7);
+                    let back = *tip - *dir * len;
+                    let n = Vec2::new(-dir.y, dir.x) * half;
+                    let _ = writeln!(
+                        out,
+                        r#"<polygon class="arrow" points="{} {} {}" fill="black"/>"#,
+                        px(*tip),
+                        px(back + n),
+                        px(back - n)
+                    );
+                }
+                Prim::Arc { c, r, a0, sweep } => {
+                    let p0 = *c + Vec2::from_angle(*a0) * *r;
+                    let p1 = *c + Vec2::from_angle(a0 + sweep) * *r;
+                    // In page coordinates y is flipped: a CCW sweep is sweep-flag 0.
+                    let large = if sweep.abs() > std::f64::consts::PI {
+                        1
+                    } else {
+                        0
+                    };
+                    let flag = if *sweep > 0.0 { 0 } else { 1 };
+                    let _ = writeln!(
+                        out,
+                        r#"<path d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
+                        px(p0),
+                        fmt(*r),
+                        fmt(*r),
+                        px(p1),
+                        fmt(THIN)
+                    );
+                }
+                Prim::Text {
+                    at,
+                    label,
+                    size,
+                    id,
+                    class,
+                } => {
+                    let id = id
+                        .as_ref()
+                        .map(|i| format!(r#" id="{i}""#))
+                        .unwrap_or_default();
+                    let sub = if label.sub.is_empty() {
+                        String::new()
+                    } else {
+                        format!(
+                            r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
+                            fmt(size * 0.7),
+                            xml(&label.sub)
+                        )
+                    };
+                    let tail = if label.tail.is_empty() {
+                        String::new()
+                    } else {
+                        format!("<tspan>{}</tspan>", xml(&label.tail))
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}">{}{sub}{tail}</text>"#,
+                        fmt(ox + at.x),
+                        fmt(oy - at.y),
+                        fmt(*size),
+                        xml(&label.base)
+                    );
+                }
+            }
+        }
+    }
+}
+
+pub fn xml(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}

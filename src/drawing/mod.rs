@@ -1,0 +1,405 @@
+//! Lecture-style drawings: the plan of the mechanism, the plans of
+//! velocities and accelerations, and the positions sheet, as SVG sheets
+//! (A4 landscape by default) with a ГОСТ 2.301 frame, exported to PNG
+//! (resvg) and PDF (svg2pdf). The drawing code only reads the analysis:
+//! the kernel knows nothing of SVG.
+
+pub mod canvas;
+pub mod mechanism;
+pub mod plan;
+pub mod positions;
+
+use crate::construction::text::{Lang, num};
+use crate::construction::{Plan, PlanKind};
+use crate::error::{Error, Result};
+use crate::scene::InputSpec;
+use crate::solve::{Analysis, Solved};
+use canvas::{Canvas, FONT, Label, SMALL, fmt, xml};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Sheet formats, landscape (ГОСТ 2.301).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SheetSize {
+    A4,
+    A3,
+    A1,
+}
+
+impl SheetSize {
+    pub fn mm(&self) -> (f64, f64) {
+        match self {
+            SheetSize::A4 => (297.0, 210.0),
+            SheetSize::A3 => (420.0, 297.0),
+            SheetSize::A1 => (841.0, 594.0),
+        }
+    }
+    pub fn parse(s: &str) -> Option<SheetSize> {
+        match s.to_ascii_uppercase().as_str() {
+            "A4" => Some(SheetSize::A4),
+            "A3" => Some(SheetSize::A3),
+            "A1" => Some(SheetSize::A1),
+            _ => None,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct DrawOptions {
+    pub sheet: SheetSize,
+    pub lang: Lang,
+    pub title_block: bool,
+    /// Add the table of measured segments to plan sheets.
+    pub table: bool,
+}
+
+impl Default for DrawOptions {
+    fn default() -> Self {
+        DrawOptions {
+            sheet: SheetSize::A4,
+            lang: Lang::En,
+            title_block: false,
+            table: false,
+        }
+    }
+}
+
+/// One sheet: its file stem (`velocity_1`) and SVG text.
+#[derive(Clone, Debug)]
+pub struct Sheet {
+    pub name: String,
+    pub title: String,
+    pub svg: String,
+}
+
+/// Output formats of `mechplan draw`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Svg,
+    Png,
+    Pdf,
+}
+
+fn words(lang: Lang) -> [&'static str; 6] {
+    match lang {
+        Lang::En => [
+            "Plan of the mechanism",
+            "Plan of velocities",
+            "Plan of accelerations",
+            "Positions of the mechanism",
+            "position",
+            "mm",
+        ],
+        Lang::Uk => [
+            "План механізму",
+            "План швидкостей",
+            "План прискорень",
+            "Положення механізму",
+            "положення",
+            "мм",
+        ],
+        Lang::Ru => [
+            "План механизма",
+            "План скоростей",
+            "План ускорений",
+            "Положения механизма",
+            "положение",
+            "мм",
+        ],
+    }
+}
+
+/// The drawings a scene asks for (`want.drawings`; by default the plan of
+/// the mechanism and the plans wanted, plus the positions sheet when there
+/// are several positions), one sheet per drawing and position.
+pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
+    let want = &an.mech.scene.want.drawings;
+    let has_acc = solved
+        .first()
+        .and_then(|s| s.plans.as_ref())
+        .is_some_and(|p| p.acceleration.is_some());
+    let has_vel = solved.first().is_some_and(|s| s.plans.is_some());
+    let asked = |d: &str| {
+        if want.is_empty() {
+            match d {
+                "mechanism" => true,
+                "velocity" => has_vel,
+                "acceleration" => has_acc,
+                "positions" => solved.len() > 1,
+                _ => false,
+            }
+        } else {
+            want.iter().any(|w| w == d)
+        }
+    };
+    let w = words(opt.lang);
+    let mut out = Vec::new();
+    if asked("positions") {
+        let mut c = Canvas::default();
+        positions::draw(an, solved, &mut c, an.mu_l);
+        let scale = scale_label("l", an.mu_l, "m", opt.lang);
+        out.push(page(
+            "positions".into(),
+            w[3].into(),
+            &c,
+            Some(scale),
+            opt,
+            None,
+        ));
+    }
+    for (k, s) in solved.iter().enumerate() {
+        let pos = position_text(an, s, k, opt.lang);
+        if asked("mechanism") {
+            let mut c = Canvas::default();
+            mechanism::draw(an, s, &mut c, an.mu_l, true);
+            out.push(page(
+                format!("mechanism_{}", k + 1),
+                format!("{}, {pos}", w[0]),
+                &c,
+                Some(scale_label("l", an.mu_l, "m", opt.lang)),
+                opt,
+                None,
+            ));
+        }
+        let Some(plans) = &s.plans else { continue };
+        for (name, title, plan) in [
+            ("velocity", w[1], Some(&plans.velocity)),
+            ("acceleration", w[2], plans.acceleration.as_ref()),
+        ] {
+            let Some(plan) = plan else { continue };
+            if !asked(name) {
+                continue;
+            }
+            let mut c = Canvas::default();
+            plan::draw(plan, &mut c, &an.points);
+            let (sym, unit) = match plan.kind {
+                PlanKind::Velocity => ("v", "m/s"),
+                PlanKind::Acceleration => ("a", "m/s²"),
+            };
+            let table = if opt.table { Some(plan) } else { None };
+            out.push(page(
+                format!("{name}_{}", k + 1),
+                format!("{title}, {pos}"),
+                &c,
+                Some(scale_label(sym, plan.mu, unit, opt.lang)),
+                opt,
+                table,
+            ));
+        }
+    }
+    out
+}
+
+fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
+    let w = words(lang);
+    match an.mech.scene.input {
+        InputSpec::Crank { .. } => format!(
+            "{} {}, φ1 = {}°",
+            w[4],
+            k + 1,
+            num(s.q.to_degrees().rem_euclid(360.0))
+        ),
+        InputSpec::Slider { .. } => format!("{} {}, s = {} m", w[4], k + 1, num(s.q)),
+    }
+}
+
+/// "μ_v = 0.01 (m/s)/mm", localised.
+fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
+    let (unit, mm) = match lang {
+        Lang::En => (unit.to_string(), "mm"),
+        _ => (unit.replace('m', "м").replace('s', "с"), "мм"),
+    };
+    let unit = if unit.contains('/') {
+        format!("({unit})")
+    } else {
+        unit
+    };
+    Label::new("μ", sym).with_tail(format!(" = {} {unit}/{mm}", num(mu)))
+}
+
+/// Compose a sheet: frame, heading, the drawing centred in the free area,
+/// optional title block and table of measured segments.
+fn page(
+    name: String,
+    title: String,
+    c: &Canvas,
+    scale: Option<Label>,
+    opt: &DrawOptions,
+    table: Option<&Plan>,
+) -> Sheet {
+    let (w, h) = opt.sheet.mm();
+    let (left, margin) = (20.0, 5.0);
+    let title_h = if opt.title_block { 20.0 } else { 0.0 };
+    let table_w = if table.is_some() { 70.0 } else { 0.0 };
+    // Free area for the drawing: inside the frame, below the heading.
+    let (ax0, ax1) = (left + 6.0, w - margin - 6.0 - table_w);
+    let (ay0, ay1) = (margin + 16.0, h - margin - 6.0 - title_h);
+    let b = c.bounds();
+    let ox = (ax0 + ax1) / 2.0 - (b.x0 + b.x1) / 2.0;
+    let oy = (ay0 + ay1) / 2.0 + (b.y0 + b.y1) / 2.0;
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, sans-serif">"#
+    );
+    let _ = writeln!(svg, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+    let _ = writeln!(
+        svg,
+        r#"<rect class="frame" x="{left}" y="{margin}" width="{}" height="{}" fill="none" stroke="black" stroke-width="0.7"/>"#,
+        fmt(w - left - margin),
+        fmt(h - 2.0 * margin)
+    );
+    let mut head = Canvas::default();
+    head.text(
+        kurbo::Point::new(0.0, 0.0),
+        Label::new(title.clone(), ""),
+        5.0,
+        "heading",
+    );
+    if let Some(s) = scale {
+        head.text(kurbo::Point::new(0.0, -7.0), s, FONT, "scale");
+    }
+    head.write(&mut svg, left + 6.0, margin + 9.0);
+    c.write(&mut svg, ox, oy);
+    if let Some(plan) = table {
+        let mut t = Canvas::default();
+        let x0 = w - margin - table_w + 2.0;
+        let mut y = 0.0;
+        let head = match opt.lang {
+            Lang::En => "segment, mm → value",
+            Lang::Uk => "відрізок, мм → величина",
+            Lang::Ru => "отрезок, мм → величина",
+        };
+        t.text(
+            kurbo::Point::new(0.0, y),
+            Label::new(head, ""),
+            SMALL,
+            "table",
+        );
+        for q in &plan.measured {
+            y -= 4.0;
+            let row = format!(
+                "{}{} = {} → {} = {}",
+                plan.points[q.from].name(),
+                plan.points[q.to].name(),
+                num(q.mm),
+                q.quantity,
+                num(q.value)
+            );
+            t.text(
+                kurbo::Point::new(0.0, y),
+                Label::new(row, ""),
+                SMALL,
+                "table",
+            );
+        }
+        t.write(&mut svg, x0, margin + 24.0);
+    }
+    if opt.title_block {
+        let (bw, bx, by) = (130.0, w - margin - 130.0, h - margin - title_h);
+        let _ = writeln!(
+            svg,
+            r#"<rect class="title-block" x="{}" y="{}" width="{bw}" height="{title_h}" fill="none" stroke="black" stroke-width="0.7"/>"#,
+            fmt(bx),
+            fmt(by)
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text class="title-block" x="{}" y="{}" font-size="3.5">{}</text>"#,
+            fmt(bx + 3.0),
+            fmt(by + 8.0),
+            xml(&truncate(&an_title(&title), 60))
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text class="title-block" x="{}" y="{}" font-size="2.5">mechplan</text>"#,
+            fmt(bx + 3.0),
+            fmt(by + 15.0)
+        );
+    }
+    svg.push_str("</svg>\n");
+    Sheet { name, title, svg }
+}
+
+fn an_title(t: &str) -> String {
+    t.to_string()
+}
+
+fn truncate(s: &str, n: usize) -> String {
+    if s.chars().count() <= n {
+        s.to_string()
+    } else {
+        s.chars().take(n - 1).collect::<String>() + "…"
+    }
+}
+
+/// A font database with the system's fonts (DejaVu on the project's machines).
+fn options() -> usvg::Options<'static> {
+    let mut o = usvg::Options::default();
+    o.fontdb_mut().load_system_fonts();
+    o
+}
+
+/// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
+pub fn tree(svg: &str) -> Result<usvg::Tree> {
+    usvg::Tree::from_str(svg, &options())
+        .map_err(|e| Error::Structure(format!("internal error: the drawing is not valid SVG: {e}")))
+}
+
+/// Render a sheet to PNG at `dpi`.
+pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
+    let tree = tree(svg)?;
+    let size = tree.size();
+    // usvg sizes the sheet in CSS pixels (96 per inch).
+    let k = (dpi / 96.0) as f32;
+    let (pw, ph) = (
+        (size.width() * k).ceil() as u32,
+        (size.height() * k).ceil() as u32,
+    );
+    let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
+        .ok_or_else(|| Error::Structure("the sheet is too large to render".into()))?;
+    resvg::render(
+        &tree,
+        tiny_skia::Transform::from_scale(k, k),
+        &mut pixmap.as_mut(),
+    );
+    pixmap
+        .encode_png()
+        .map_err(|e| Error::Structure(format!("PNG encoding failed: {e}")))
+}
+
+/// Convert a sheet to PDF.
+pub fn pdf(svg: &str) -> Result<Vec<u8>> {
+    let tree = tree(svg)?;
+    svg2pdf::to_pdf(
+        &tree,
+        svg2pdf::ConversionOptions::default(),
+        svg2pdf::PageOptions::default(),
+    )
+    .map_err(|e| Error::Structure(format!("PDF conversion failed: {e}")))
+}
+
+/// Write every sheet into `dir` in `format`, each file atomically
+/// (a temporary file renamed into place). Returns the paths written.
+pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
+        path: dir.display().to_string(),
+        source,
+    })?;
+    // Render everything first, so that a failure writes nothing.
+    let mut files = Vec::new();
+    for s in sheets {
+        let (ext, bytes) = match format {
+            Format::Svg => ("svg", s.svg.clone().into_bytes()),
+            Format::Png => ("png", png(&s.svg, 150.0)?),
+            Format::Pdf => ("pdf", pdf(&s.svg)?),
+        };
+        files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
+    }
+    let mut out = Vec::new();
+    for (path, bytes) in files {
+        crate::write_atomically(&path, &bytes)?;
+        out.push(path);
+    }
+    Ok(out)
+}
