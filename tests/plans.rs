@@ -458,10 +458,23 @@ fn scales_are_standard_or_as_asked() {
                 "{name}: μ = {}",
                 plan.mu
             );
+            // The largest vector is 75–150 mm unless the plan's extent
+            // (at most 240 × 130 mm) asked for a coarser scale.
             let largest = plan.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+            let (xs, ys): (Vec<f64>, Vec<f64>) =
+                plan.points.iter().map(|p| (p.at.x, p.at.y)).unzip();
+            let span = |v: &[f64]| {
+                v.iter().cloned().fold(f64::MIN, f64::max)
+                    - v.iter().cloned().fold(f64::MAX, f64::min)
+            };
+            let (w, h) = (span(&xs), span(&ys));
             assert!(
-                (75.0..=150.0 + 1e-9).contains(&largest),
-                "{name}: largest vector {largest} mm"
+                largest <= 150.0 + 1e-9 && w <= 240.0 + 1e-9 && h <= 130.0 + 1e-9,
+                "{name}: {largest} mm, {w} × {h} mm"
+            );
+            assert!(
+                largest >= 75.0 || w >= 120.0 || h >= 65.0,
+                "{name}: scale too coarse: {largest} mm, {w} × {h} mm"
             );
         }
         let mant = an.mu_l / 10f64.powf(an.mu_l.log10().floor());

@@ -314,13 +314,21 @@ pub fn build(
         Some(mu) => mu,
         None => {
             b.run(rates)?;
-            let largest = b
-                .plan
-                .points
-                .iter()
-                .map(|p| p.at.hypot())
-                .fold(0.0, f64::max);
+            // The largest vector at most 150 mm, and the whole plan within
+            // 240 × 130 mm, the free area of an A4 landscape sheet.
+            let pts = &b.plan.points;
+            let largest = pts.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+            let span = |f: fn(&PlanPoint) -> f64| {
+                let (lo, hi) = pts
+                    .iter()
+                    .map(f)
+                    .fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
+                hi - lo
+            };
+            let (w, h) = (span(|p| p.at.x), span(|p| p.at.y));
             scale::standard_scale(largest, 150.0)
+                .max(scale::standard_scale(w, 240.0))
+                .max(scale::standard_scale(h, 130.0))
         }
     };
     let mut b = Builder {

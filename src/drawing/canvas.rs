@@ -25,6 +25,17 @@ pub fn fmt(x: f64) -> String {
     }
 }
 
+/// Advance width of a glyph of DejaVu Sans in em, a little generous.
+fn char_width(c: char) -> f64 {
+    match c {
+        'm' | 'w' | 'M' | 'W' | 'ω' | 'Ω' | '—' => 1.0,
+        'i' | 'l' | 'j' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.36,
+        'f' | 't' | 'r' | ' ' | '(' | ')' | '/' => 0.46,
+        c if c.is_uppercase() => 0.8,
+        _ => 0.66,
+    }
+}
+
 /// What a drawn segment is, for its weight and for the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Class {
@@ -59,8 +70,8 @@ impl Label {
     }
     /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
     pub fn width(&self, size: f64) -> f64 {
-        let w = |s: &str| s.chars().count() as f64;
-        0.62 * size * (w(&self.base) + w(&self.tail)) + 0.62 * 0.7 * size * w(&self.sub)
+        let w = |s: &str| s.chars().map(char_width).sum::<f64>();
+        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub)
     }
 }
 
@@ -188,47 +199,48 @@ impl Canvas {
         });
     }
 
-    /// Place `label` near `anchor`, at the first of 16 candidate places
-    /// whose box meets no placed label and no avoided segment (else the
-    /// least crowded one), and keep its box.
+    /// Place `label` near `anchor`: the nearest of the candidate places
+    /// (16 directions on rings 1–9 mm away) whose box meets no placed label
+    /// and no avoided segment; failing that, the one that meets no label
+    /// and the fewest segments; and keep its box.
     pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
-        let (w, h) = (label.width(size), size * 0.8);
-        let mut best: Option<(usize, Rect)> = None;
-        for ring in [1.2, 2.6, 4.5] {
-            for k in 0..8 {
-                let ang = std::f64::consts::FRAC_PI_4 * k as f64 + std::f64::consts::FRAC_PI_8;
+        // The box runs from the subscript's bottom (0.35 em below the
+        // baseline) to the capitals' top (0.8 em above).
+        let (w, h) = (label.width(size), size * 1.15);
+        let mut best: Option<((usize, usize), Rect)> = None;
+        'rings: for ring in [1.0, 2.0, 3.2, 4.6, 6.5, 9.0, 12.0, 16.0] {
+            for k in 0..16 {
+                let ang =
+                    std::f64::consts::FRAC_PI_8 * k as f64 + std::f64::consts::FRAC_PI_8 / 2.0;
                 let d = Vec2::from_angle(ang) * ring;
                 // The box sits on the side of the anchor the direction points to.
                 let x0 = anchor.x + d.x + if d.x < 0.0 { -w } else { 0.0 };
                 let y0 = anchor.y + d.y + if d.y < 0.0 { -h } else { 0.0 };
                 let r = Rect::new(x0, y0, x0 + w, y0 + h);
-                let hits = self
+                let labels = self
                     .boxes
                     .iter()
-                    .filter(|b| b.intersect(r).area() > 0.0)
-                    .count()
-                    * 4
-                    + self
-                        .avoid
-                        .iter()
-                        .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.2, 0.2)))
-                        .count();
-                if hits == 0 {
-                    best = Some((0, r));
-                    break;
+                    .filter(|b| b.intersect(r.inflate(0.3, 0.3)).area() > 0.0)
+                    .count();
+                let lines = self
+                    .avoid
+                    .iter()
+                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.3, 0.3)))
+                    .count();
+                let score = (labels, lines);
+                if best.as_ref().is_none_or(|(s0, _)| score < *s0) {
+                    best = Some((score, r));
                 }
-                if best.as_ref().is_none_or(|(h0, _)| hits < *h0) {
-                    best = Some((hits, r));
+                if score == (0, 0) {
+                    break 'rings;
                 }
-            }
-            if best.as_ref().is_some_and(|b| b.0 == 0) {
-                break;
             }
         }
         let (_, r) = best.expect("candidates exist");
         self.boxes.push(r);
         self.prims.push(Prim::Text {
-            at: Point::new(r.x0, r.y0),
+            // The baseline sits 0.35 em above the box's bottom.
+            at: Point::new(r.x0, r.y0 + 0.35 * size),
             label,
             size,
             id,
@@ -238,7 +250,12 @@ impl Canvas {
 
     /// Free text (titles, scales) with its lower-left corner at `at`.
     pub fn text(&mut self, at: Point, label: Label, size: f64, class: &'static str) {
-        let r = Rect::new(at.x, at.y, at.x + label.width(size), at.y + size * 0.8);
+        let r = Rect::new(
+            at.x,
+            at.y - 0.35 * size,
+            at.x + label.width(size),
+            at.y + size * 0.8,
+        );
         self.boxes.push(r);
         self.prims.push(Prim::Text {
             at,

@@ -43,8 +43,16 @@ pub fn draw(plan: &Plan, c: &mut Canvas, reported: &[usize]) {
             _ => {}
         }
     }
-    // Vectors: laid-off components, relative segments, absolute vectors.
+    // Vectors: laid-off components, relative segments, absolute vectors
+    // (each drawn once: a relative segment from the pole is also absolute).
+    let mut drawn: Vec<(usize, usize)> = Vec::new();
     for step in &plan.steps {
+        if let Op::LayOff { from, to, .. } | Op::Measure { from, to, .. } = &step.op {
+            if drawn.contains(&(*from, *to)) {
+                continue;
+            }
+            drawn.push((*from, *to));
+        }
         match &step.op {
             Op::LayOff { from, to, .. } => {
                 c.vector(
