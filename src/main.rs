@@ -55,6 +55,9 @@ enum Command {
         /// Add the table of measured segments to the plans.
         #[arg(long)]
         table: bool,
+        /// Resolution of PNG sheets, dots per inch.
+        #[arg(long, default_value_t = 150.0)]
+        dpi: f64,
         /// Language of the annotations: en, uk or ru (default: the scene's want.lang).
         #[arg(long)]
         lang: Option<String>,
@@ -100,6 +103,7 @@ fn main() -> ExitCode {
                 mechplan::DEFAULT_SCENE,
                 "the embedded default scene",
                 DrawArgs {
+                    dpi: 150.0,
                     dir: PathBuf::from("mechplan-out"),
                     format: DrawFormat::Svg,
                     sheet: "A4".into(),
@@ -116,12 +120,14 @@ fn main() -> ExitCode {
             sheet,
             title_block,
             table,
+            dpi,
             lang,
         }) => match std::fs::read_to_string(&scene) {
             Ok(text) => draw(
                 &text,
                 &scene.display().to_string(),
                 DrawArgs {
+                    dpi,
                     dir: output,
                     format,
                     sheet,
@@ -168,6 +174,7 @@ fn main() -> ExitCode {
 }
 
 struct DrawArgs {
+    dpi: f64,
     dir: PathBuf,
     format: DrawFormat,
     sheet: String,
@@ -224,7 +231,10 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         DrawFormat::Png => drawing::Format::Png,
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
-    let written = drawing::write_sheets(&sheets, &a.dir, format)?;
+    if !(a.dpi.is_finite() && (10.0..=1200.0).contains(&a.dpi)) {
+        return Err(Error::scene("--dpi", format!("{} is not a resolution from 10 to 1200 dpi", a.dpi)));
+    }
+    let written = drawing::write_sheets(&sheets, &a.dir, format, a.dpi)?;
     for p in written {
         println!("wrote {}", p.display());
     }

@@ -381,7 +381,7 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
 
 /// Write every sheet into `dir` in `format`, each file atomically
 /// (a temporary file renamed into place). Returns the paths written.
-pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format) -> Result<Vec<PathBuf>> {
+pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format, dpi: f64) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Io {
         path: dir.display().to_string(),
         source,
@@ -391,7 +391,7 @@ pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format) -> Result<Vec<
     for s in sheets {
         let (ext, bytes) = match format {
             Format::Svg => ("svg", s.svg.clone().into_bytes()),
-            Format::Png => ("png", png(&s.svg, 150.0)?),
+            Format::Png => ("png", png(&s.svg, dpi)?),
             Format::Pdf => ("pdf", pdf(&s.svg)?),
         };
         files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
