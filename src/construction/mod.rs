@@ -86,6 +86,9 @@ pub struct PlanLine {
     pub dir: Dir,
     /// Offset error of the drawn line, mm.
     pub err: f64,
+    /// Where the pencil actually drew it: shifted by this much to the left
+    /// of `unit` (zero unless the plan emulates hand drafting).
+    pub shift: f64,
 }
 
 /// Why a plan point coincides with another.
@@ -191,6 +194,8 @@ pub struct Plan {
     pub body: Vec<Vec<(Vec2, usize)>>,
     /// The plan point of each named point of the mechanism.
     pub of_point: Vec<Option<usize>>,
+    /// With a deliberate mistake: the step where it was made.
+    pub mistake_step: Option<usize>,
 }
 
 impl Plan {
@@ -258,6 +263,40 @@ fn lower_label(name: &str) -> (String, String) {
     (a.to_string(), b.trim_start_matches('_').to_string())
 }
 
+/// A typical student's mistake, built into the construction on purpose so
+/// that a hand-drawn plan can be diagnosed by the mistake that explains it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mistake {
+    /// The Coriolis acceleration turned the wrong way (against ω).
+    CoriolisReversed,
+    /// The Coriolis acceleration left out on a rotating guide.
+    CoriolisForgotten,
+    /// A normal component laid off from the centre instead of toward it.
+    NormalFromCentre,
+    /// A similar figure built mirrored (letters in the wrong order).
+    MirroredFigure,
+    /// In an RRR group, each line drawn ⊥ the other link of the group.
+    WrongPerpendicular,
+    /// ε1 ≠ 0 but the tangential component of the crank's point left out.
+    Epsilon1Forgotten,
+    /// ε1 = 0 but a tangential component ε1·l added, taking ε1 = ω1².
+    Epsilon1Added,
+    /// Normal components computed with the input's ω1 instead of the link's ω.
+    OmegaWrongLink,
+    /// The crank's velocity laid off against the sense of ω1.
+    OmegaWrongSense,
+}
+
+/// How to build a plan besides the standard way: with a mistake, or with
+/// every drafting operation perturbed by the pencil (a hand drawing).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Variant {
+    pub mistake: Option<Mistake>,
+    /// Seed of the pencil noise: each laid-off point, each line and each
+    /// constructed point moves by at most δ.
+    pub jitter: Option<u64>,
+}
+
 /// A prismatic pair seen from a group: the link being found, the known
 /// link it slides on (or that slides on it), and which of them is the guide.
 #[derive(Clone, Copy)]
@@ -268,6 +307,8 @@ struct Slide {
 }
 
 struct Builder<'a> {
+    variant: Variant,
+    rng: Option<rand::rngs::StdRng>,
     st: &'a Setup<'a>,
     c: &'a Configuration,
     plan: Plan,
@@ -284,12 +325,24 @@ pub fn build(
     drive: Drive,
     kind: PlanKind,
     vel: Option<&Plan>,
-    mu: Option<f64>,
-    delta: f64,
+    d: &Drafting,
 ) -> Result<Plan> {
+    use rand::SeedableRng;
+    let (delta, variant) = (d.delta, d.variant);
+    let mu = match kind {
+        PlanKind::Velocity => d.mu_v,
+        PlanKind::Acceleration => d.mu_a,
+    };
     let m = st.m;
     let (q, rates) = (drive.q, (drive.rate, drive.rate2));
+    let rng = |k: u64| {
+        variant
+            .jitter
+            .map(|s| rand::rngs::StdRng::seed_from_u64(s ^ k))
+    };
     let mut b = Builder {
+        variant,
+        rng: rng(1),
         st,
         c,
         plan: Plan {
@@ -303,6 +356,7 @@ pub fn build(
             worst_sin: 1.0,
             body: vec![Vec::new(); m.links.len()],
             of_point: vec![None; m.scene.points.len()],
+            mistake_step: None,
         },
         vel,
         nr: non_rotating(m),
@@ -332,10 +386,13 @@ pub fn build(
         }
     };
     let mut b = Builder {
+        variant,
+        rng: rng(2),
         st,
         c,
         plan: Plan {
             mu,
+            mistake_step: None,
             steps: Vec::new(),
             points: Vec::new(),
             measured: Vec::new(),
@@ -443,7 +500,7 @@ impl<'a> Builder<'a> {
         (key, label): (String, (String, String)),
         value_err: f64,
     ) -> usize {
-        let at = self.plan.points[from].at + v / self.plan.mu;
+        let at = self.plan.points[from].at + v / self.plan.mu + self.pencil();
         let err = self.plan.points[from].err + self.plan.delta + value_err / self.plan.mu;
         let to = self.add_point(key, label, at, err);
         self.step(Op::LayOff {
@@ -456,12 +513,42 @@ impl<'a> Builder<'a> {
         to
     }
 
-    fn line(&self, through: usize, unit: Vec2, dir: Dir) -> PlanLine {
+    fn line(&mut self, through: usize, unit: Vec2, dir: Dir) -> PlanLine {
+        let shift = self.pencil().x;
         PlanLine {
             through,
             unit: unit.normalize(),
             dir,
             err: self.plan.points[through].err + self.plan.delta,
+            shift,
+        }
+    }
+
+    /// The pencil's error of one operation: a random displacement within δ
+    /// when emulating hand drafting, else zero.
+    fn pencil(&mut self) -> Vec2 {
+        use rand::Rng;
+        let delta = self.plan.delta;
+        match &mut self.rng {
+            None => Vec2::ZERO,
+            Some(r) => loop {
+                let v = Vec2::new(r.random_range(-1.0..=1.0), r.random_range(-1.0..=1.0));
+                if v.hypot2() <= 1.0 {
+                    break v * delta;
+                }
+            },
+        }
+    }
+
+    /// Is this mistake being made? Records the first step where it is.
+    fn making(&mut self, m: Mistake) -> bool {
+        if self.variant.mistake == Some(m) {
+            if self.plan.mistake_step.is_none() {
+                self.plan.mistake_step = Some(self.plan.steps.len());
+            }
+            true
+        } else {
+            false
         }
     }
 
@@ -473,11 +560,11 @@ impl<'a> Builder<'a> {
         label: (String, String),
     ) -> Result<usize> {
         let la = Line {
-            point: self.plan.points[a.through].at.to_point(),
+            point: self.plan.points[a.through].at.to_point() + perp(a.unit) * a.shift,
             dir: a.unit,
         };
         let lb = Line {
-            point: self.plan.points[b.through].at.to_point(),
+            point: self.plan.points[b.through].at.to_point() + perp(b.unit) * b.shift,
             dir: b.unit,
         };
         let LineCut::Point { at, sin_angle } = crate::geom::intersect_lines(&la, &lb, 1e-12) else {
@@ -580,9 +667,12 @@ impl<'a> Builder<'a> {
             }
             let ((la, pa), (lb, pb)) = (known[ia], known[ib]);
             let ab = lb - la;
-            let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+            let mut ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+            if ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
+                ratio.y = -ratio.y;
+            }
             let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
-            let at = a_at + (b_at - a_at).rotate_scale(ratio);
+            let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
             let fig = [names(self, known[ia]), names(self, known[ib]), figure_name];
             let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
             if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
@@ -723,14 +813,23 @@ impl<'a> Builder<'a> {
         if self.vel_kind() {
             (self.line(j, u, Dir::Perp(seg)), j)
         } else {
-            let w = self.omega(link);
+            let mut w = self.omega(link);
             if self.nr[link] || w == 0.0 {
                 return (self.line(j, u, Dir::Perp(seg)), j);
             }
+            let input = self.m().scene.input.link();
+            if link != input && self.making(Mistake::OmegaWrongLink) {
+                w = self.omega(input);
+            }
             let r = x - jw;
+            let toward = if self.making(Mistake::NormalFromCentre) {
+                1.0
+            } else {
+                -1.0
+            };
             let n = self.lay_off(
                 j,
-                -r * (w * w),
+                r * (toward * w * w),
                 format!("a^n_{xname}{jname} = ω{}²·l_{seg}", self.link(link)),
                 Dir::Toward(xname.to_string(), jname.to_string()),
                 (
@@ -779,7 +878,15 @@ impl<'a> Builder<'a> {
             unreachable!("the velocity plan has both coincident points");
         };
         let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
-        let k_vec = perp(vrel) * (2.0 * w);
+        if self.making(Mistake::CoriolisForgotten) {
+            return Ok(self.line(kx, u, dir));
+        }
+        let sense = if self.making(Mistake::CoriolisReversed) {
+            -1.0
+        } else {
+            1.0
+        };
+        let k_vec = perp(vrel) * (2.0 * w * sense);
         let verr = (vel.points[iu].err + vel.points[ik].err) * vel.mu;
         let k = self.lay_off(
             kx,
@@ -1006,9 +1113,14 @@ impl<'a> Builder<'a> {
                     self.step(Op::Equation {
                         text: format!("v_{an} = ω{id}·l_{seg}, v_{an} ⊥ {seg}"),
                     });
+                    let sense = if self.making(Mistake::OmegaWrongSense) {
+                        -1.0
+                    } else {
+                        1.0
+                    };
                     self.lay_off(
                         0,
-                        perp(r) * rate,
+                        perp(r) * (rate * sense),
                         format!("ω{id}·l_{seg}"),
                         Dir::PerpSense(seg.clone(), format!("ω{id}")),
                         (key, label),
@@ -1017,6 +1129,12 @@ impl<'a> Builder<'a> {
                 } else {
                     self.plan.rates[link] = Some((rate2, 0.0));
                     let w = self.omega(link);
+                    let mut rate2 = rate2;
+                    if rate2 != 0.0 && self.making(Mistake::Epsilon1Forgotten) {
+                        rate2 = 0.0;
+                    } else if rate2 == 0.0 && self.making(Mistake::Epsilon1Added) {
+                        rate2 = w * w;
+                    }
                     if rate2 != 0.0 {
                         self.step(Op::Equation {
                             text: format!("a_{an} = a^n_{an}{on} + a^t_{an}{on}"),
@@ -1104,8 +1222,13 @@ impl<'a> Builder<'a> {
                     self.relation(&cn, &bn, true, !self.nr[l1]),
                     self.relation(&cn, &dn, true, !self.nr[l2]),
                 );
-                let (la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
-                let (lb, tb) = self.rigid(l2, dd, dw, &dn, cw, &cn);
+                let (mut la, ta) = self.rigid(l1, b, bw, &bn, cw, &cn);
+                let (mut lb, tb) = self.rigid(l2, dd, dw, &dn, cw, &cn);
+                if self.making(Mistake::WrongPerpendicular) {
+                    // Each line ⊥ the other link of the group.
+                    std::mem::swap(&mut la.unit, &mut lb.unit);
+                    std::mem::swap(&mut la.dir, &mut lb.dir);
+                }
                 let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
                 self.register(l1, cw, c);
                 self.register(l2, cw, c);
@@ -1458,13 +1581,14 @@ pub struct Plans {
     pub acceleration: Option<Plan>,
 }
 
-/// Fixed scales and the pencil precision for [`build_plans`].
+/// Fixed scales, the pencil precision and the variant for [`build_plans`].
 #[derive(Clone, Copy, Debug)]
 pub struct Drafting {
     pub mu_v: Option<f64>,
     pub mu_a: Option<f64>,
     /// Pencil precision δ, mm.
     pub delta: f64,
+    pub variant: Variant,
 }
 
 impl Default for Drafting {
@@ -1473,6 +1597,7 @@ impl Default for Drafting {
             mu_v: None,
             mu_a: None,
             delta: 0.5,
+            variant: Variant::default(),
         }
     }
 }
@@ -1486,7 +1611,7 @@ pub fn build_plans(
     order: Order,
     d: Drafting,
 ) -> Result<Plans> {
-    let velocity = build(st, c, drive, PlanKind::Velocity, None, d.mu_v, d.delta)?;
+    let velocity = build(st, c, drive, PlanKind::Velocity, None, &d)?;
     let acceleration = match order {
         Order::Acceleration => Some(build(
             st,
@@ -1494,8 +1619,7 @@ pub fn build_plans(
             drive,
             PlanKind::Acceleration,
             Some(&velocity),
-            d.mu_a,
-            d.delta,
+            &d,
         )?),
         Order::Velocity => None,
     };
