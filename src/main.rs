@@ -232,7 +232,10 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
     if !(a.dpi.is_finite() && (10.0..=1200.0).contains(&a.dpi)) {
-        return Err(Error::scene("--dpi", format!("{} is not a resolution from 10 to 1200 dpi", a.dpi)));
+        return Err(Error::scene(
+            "--dpi",
+            format!("{} is not a resolution from 10 to 1200 dpi", a.dpi),
+        ));
     }
     let written = drawing::write_sheets(&sheets, &a.dir, format, a.dpi)?;
     for p in written {

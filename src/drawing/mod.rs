@@ -337,6 +337,7 @@ fn truncate(s: &str, n: usize) -> String {
 fn options() -> usvg::Options<'static> {
     let mut o = usvg::Options::default();
     o.fontdb_mut().load_system_fonts();
+    o.font_family = "DejaVu Sans".into();
     o
 }
 
@@ -381,7 +382,12 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
 
 /// Write every sheet into `dir` in `format`, each file atomically
 /// (a temporary file renamed into place). Returns the paths written.
-pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format, dpi: f64) -> Result<Vec<PathBuf>> {
+pub fn write_sheets(
+    sheets: &[Sheet],
+    dir: &Path,
+    format: Format,
+    dpi: f64,
+) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Io {
         path: dir.display().to_string(),
         source,
