@@ -37,6 +37,30 @@ enum Command {
         #[arg(long)]
         lang: Option<String>,
     },
+    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+        /// The student's answer: JSON (docs/check.md) or an SVG drawn in a vector editor.
+        answer: PathBuf,
+        #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
+        format: CheckFormat,
+        /// Write an SVG overlaying the student's points on the correct plan.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        /// Pencil precision δ in mm (default: the answer's, else 0.5).
+        #[arg(long)]
+        delta: Option<f64>,
+        /// For an SVG answer: the scale μ, if the drawing does not state it.
+        #[arg(long)]
+        mu: Option<f64>,
+        /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
+        #[arg(long)]
+        plan: Option<String>,
+        /// For an SVG answer: the position, from 1.
+        #[arg(long, default_value_t = 1)]
+        position: usize,
+    },
     /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
     Draw {
         /// The scene file (JSON, see docs/scene-format.md).
@@ -72,6 +96,12 @@ enum DrawFormat {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum Format {
     Table,
     Json,
@@ -87,7 +117,30 @@ struct Options {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Some(Command::Check {
+        scene,
+        answer,
+        format,
+        svg,
+        delta,
+        mu,
+        plan,
+        position,
+    }) = cli.command
+    {
+        return finish(check(CheckArgs {
+            scene,
+            answer,
+            format,
+            svg,
+            delta,
+            mu,
+            plan,
+            position,
+        }));
+    }
     let result = match cli.command {
+        Some(Command::Check { .. }) => unreachable!("handled above"),
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
@@ -164,13 +217,111 @@ fn main() -> ExitCode {
             }),
         },
     };
+    let result = match result {
+        Ok(()) => Ok(true),
+        Err(e) => Err(e),
+    };
+    finish(result)
+}
+
+/// Exit status: 0 done (or all right), 1 a checked answer has wrong items, 2 bad input.
+fn finish(result: Result<bool, Error>) -> ExitCode {
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
         Err(e) => {
             eprintln!("mechplan: {}", e.to_string().replace('\n', "\nmechplan: "));
             ExitCode::from(2)
         }
     }
+}
+
+struct CheckArgs {
+    scene: PathBuf,
+    answer: PathBuf,
+    format: CheckFormat,
+    svg: Option<PathBuf>,
+    delta: Option<f64>,
+    mu: Option<f64>,
+    plan: Option<String>,
+    position: usize,
+}
+
+/// `mechplan check`: Ok(true) when every item is right.
+fn check(a: CheckArgs) -> Result<bool, Error> {
+    use mechplan::check;
+    let read = |p: &Path| {
+        std::fs::read_to_string(p).map_err(|source| Error::Io {
+            path: p.display().to_string(),
+            source,
+        })
+    };
+    let scene_text = read(&a.scene)?;
+    let answer_text = read(&a.answer)?;
+    let in_answer = |e: Error| match e {
+        Error::Scene(mut v) => {
+            for i in &mut v {
+                i.message = format!("{} (in {})", i.message, a.answer.display());
+            }
+            Error::Scene(v)
+        }
+        e => e,
+    };
+    if let Some(d) = a.delta
+        && !(d.is_finite() && d > 0.0)
+    {
+        return Err(Error::scene(
+            "--delta",
+            "the pencil precision must be a positive number of mm",
+        ));
+    }
+    let is_svg = a
+        .answer
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+        || answer_text.trim_start().starts_with('<');
+    let mut ans = if is_svg {
+        let plan = match a.plan.as_deref() {
+            None => None,
+            Some("velocity") => Some(mechplan::construction::PlanKind::Velocity),
+            Some("acceleration") => Some(mechplan::construction::PlanKind::Acceleration),
+            Some(p) => {
+                return Err(Error::scene(
+                    "--plan",
+                    format!("unknown plan \"{p}\": velocity or acceleration"),
+                ));
+            }
+        };
+        check::svg::from_svg(
+            &answer_text,
+            a.mu,
+            plan,
+            a.delta.unwrap_or(0.5),
+            a.position.max(1),
+        )
+        .map_err(in_answer)?
+    } else {
+        check::answer::from_json(&answer_text).map_err(in_answer)?
+    };
+    if let Some(d) = a.delta {
+        ans.delta = d;
+    }
+    let scene =
+        Scene::from_json(&scene_text).map_err(with_file_name(&a.scene.display().to_string()))?;
+    let analysis = Analysis::new(scene).map_err(with_file_name(&a.scene.display().to_string()))?;
+    let solved = analysis.run()?;
+    let report = check::check(&analysis, &solved, &ans).map_err(in_answer)?;
+    let text = match a.format {
+        CheckFormat::Text => check::to_text(&report),
+        CheckFormat::Json => {
+            serde_json::to_string_pretty(&check::to_json(&report)).expect("finite numbers") + "\n"
+        }
+    };
+    if let Some(out) = &a.svg {
+        mechplan::write_atomically(out, check::overlay(&analysis, &ans, &report).as_bytes())?;
+    }
+    let _ = std::io::stdout().write_all(text.as_bytes());
+    Ok(report.wrong() == 0)
 }
 
 struct DrawArgs {

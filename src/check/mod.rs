@@ -195,7 +195,7 @@ fn expect(
             // Distance from the expected place is the difference; "expected" 0.
             let d = (Vec2::new(at[0], at[1]) - p[i].at).hypot();
             (
-                format!("point {}", p[i].name()),
+                format!("point {} (off its place)", p[i].name()),
                 0.0,
                 d,
                 p[i].err + delta,
@@ -565,4 +565,63 @@ pub fn to_json(r: &Report) -> serde_json::Value {
             "mistake": d.mistake, "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
         })),
     })
+}
+
+/// An SVG sheet with the correct plan (black) and the student's points
+/// (red crosses, labelled), for `check --svg`.
+pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
+    use crate::drawing::canvas::{Canvas, Class, Label, SMALL};
+    let plan = &r.plan_built;
+    let mut c = Canvas::default();
+    crate::drawing::plan::draw(plan, &mut c, &an.points);
+    // The student's points: given directly, or the far end of a segment
+    // from the pole.
+    for it in &ans.items {
+        let at = match &it.given {
+            Given::Point { at, .. } => Some(kurbo::Point::new(at[0], at[1])),
+            _ => None,
+        };
+        if let Some(p) = at {
+            let d = 1.2;
+            c.prims.push(crate::drawing::canvas::Prim::Seg {
+                a: p + Vec2::new(-d, -d),
+                b: p + Vec2::new(d, d),
+                class: Class::Thin,
+                id: Some(format!("student-{}", it.key)),
+            });
+            c.prims.push(crate::drawing::canvas::Prim::Seg {
+                a: p + Vec2::new(-d, d),
+                b: p + Vec2::new(d, -d),
+                class: Class::Thin,
+                id: None,
+            });
+            c.label(p, Label::new(format!("{}*", it.key), ""), SMALL, None);
+            if let Some(crate::drawing::canvas::Prim::Text { class, .. }) = c.prims.last_mut() {
+                *class = "student";
+            }
+        }
+    }
+    let title = format!(
+        "Check: {} plan, position {} — {} of {} right{}",
+        if r.plan == PlanKind::Velocity {
+            "velocity"
+        } else {
+            "acceleration"
+        },
+        r.position,
+        r.verdicts.len() - r.wrong(),
+        r.verdicts.len(),
+        r.diagnosis
+            .as_ref()
+            .map(|d| format!(" — {}", d.mistake))
+            .unwrap_or_default()
+    );
+    crate::drawing::page_svg(
+        "check".into(),
+        title,
+        &c,
+        None,
+        &crate::drawing::DrawOptions::default(),
+    )
+    .svg
 }

@@ -307,13 +307,19 @@ impl Canvas {
                         Class::Vector => "vector",
                         Class::Thin => "thin",
                     };
+                    // A student's marks (check --svg) in red.
+                    let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
+                        "#c00000"
+                    } else {
+                        "black"
+                    };
                     let id = id
                         .as_ref()
                         .map(|i| format!(r#" id="{i}""#))
                         .unwrap_or_default();
                     let _ = writeln!(
                         out,
-                        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="black" stroke-width="{}" stroke-linecap="round"/>"#,
+                        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="{color}" stroke-width="{}" stroke-linecap="round"/>"#,
                         fmt(ox + a.x),
                         fmt(oy - a.y),
                         fmt(ox + b.x),
@@ -415,9 +421,14 @@ impl Canvas {
                     } else {
                         format!("<tspan>{}</tspan>", xml(&label.tail))
                     };
+                    let fill = if *class == "student" {
+                        r##" fill="#c00000""##
+                    } else {
+                        ""
+                    };
                     let _ = writeln!(
                         out,
-                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}">{}{sub}{tail}</text>"#,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}{sub}{tail}</text>"#,
                         fmt(ox + at.x),
                         fmt(oy - at.y),
                         fmt(*size),

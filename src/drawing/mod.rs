@@ -217,6 +217,17 @@ fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
     Label::new("μ", sym).with_tail(format!(" = {} {unit}/{mm}", num(mu)))
 }
 
+/// A single sheet from a canvas (used by `check --svg`).
+pub fn page_svg(
+    name: String,
+    title: String,
+    c: &Canvas,
+    scale: Option<Label>,
+    opt: &DrawOptions,
+) -> Sheet {
+    page(name, title, c, scale, opt, None)
+}
+
 /// Compose a sheet: frame, heading, the drawing centred in the free area,
 /// optional title block and table of measured segments.
 fn page(
