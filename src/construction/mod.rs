@@ -380,9 +380,11 @@ pub fn build(
                 hi - lo
             };
             let (w, h) = (span(|p| p.at.x), span(|p| p.at.y));
-            scale::standard_scale(largest, 150.0)
+            let mu = scale::standard_scale(largest, 150.0)
                 .max(scale::standard_scale(w, 240.0))
-                .max(scale::standard_scale(h, 130.0))
+                .max(scale::standard_scale(h, 130.0));
+            // A plan all at the pole (everything at rest): any scale draws it.
+            if mu > 0.0 { mu } else { 1.0 }
         }
     };
     let mut b = Builder {
@@ -450,9 +452,11 @@ impl<'a> Builder<'a> {
     }
 
     fn add_point(&mut self, key: String, label: (String, String), at: Vec2, err: f64) -> usize {
-        let mut key = key;
+        let (mut key, mut label) = (key, label);
         while self.plan.points.iter().any(|p| p.key == key) {
+            // A second n₂ on one plan is n₂′ (then n₂″).
             key.push('\'');
+            label.1.push('′');
         }
         let construction = key.starts_with("n_") || key.starts_with("k_") || key.starts_with("p_");
         let figure = if construction {

@@ -8,7 +8,8 @@ const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 /// largest segment then lies between `max_mm`/2 and `max_mm`.
 pub fn standard_scale(largest: f64, max_mm: f64) -> f64 {
     if largest.is_nan() || largest <= 0.0 || !largest.is_finite() {
-        return 1.0;
+        // Nothing to fit: the smallest scale, so that it never dominates.
+        return 0.0;
     }
     let target = largest / max_mm;
     let mut k = target.log10().floor() as i32 - 1;
@@ -33,6 +34,11 @@ fn round_sig(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn nothing_to_fit_never_dominates() {
+        assert_eq!(standard_scale(0.0, 150.0), 0.0);
+    }
 
     #[test]
     fn picks_standard_values_that_fit() {

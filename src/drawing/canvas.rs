@@ -52,8 +52,11 @@ pub enum Class {
 pub struct Label {
     pub base: String,
     pub sub: String,
-    /// Plain text after the subscript (", o1, o2").
+    /// Plain text after the subscript.
     pub tail: String,
+    /// Further names sharing the label, each with its subscript
+    /// (", o₁, o₂").
+    pub more: Vec<(String, String)>,
 }
 
 impl Label {
@@ -62,7 +65,13 @@ impl Label {
             base: base.into(),
             sub: sub.into(),
             tail: String::new(),
+            more: Vec::new(),
         }
+    }
+    /// Another name at the same place: "p_v, o₁".
+    pub fn and(mut self, base: impl Into<String>, sub: impl Into<String>) -> Label {
+        self.more.push((base.into(), sub.into()));
+        self
     }
     pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
         self.tail = tail.into();
@@ -71,7 +80,12 @@ impl Label {
     /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
     pub fn width(&self, size: f64) -> f64 {
         let w = |s: &str| s.chars().map(char_width).sum::<f64>();
-        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub)
+        let more: f64 = self
+            .more
+            .iter()
+            .map(|(b, s)| size * (w(", ") + w(b)) + 0.7 * size * w(s))
+            .sum();
+        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub) + more
     }
 }
 
@@ -120,7 +134,13 @@ pub enum Prim {
 pub struct Canvas {
     pub prims: Vec<Prim>,
     pub boxes: Vec<Rect>,
+    /// Main lines, outlines of symbols, arrowheads: labels keep off them.
     pub avoid: Vec<(Point, Point)>,
+    /// Thin lines (hatching, construction lines): labels keep off them
+    /// where they can.
+    pub avoid_thin: Vec<(Point, Point)>,
+    /// Labels waiting to be placed once everything else is drawn.
+    pub pending: Vec<(Point, Label, f64, Option<String>)>,
 }
 
 fn seg_hits_rect(a: Point, b: Point, r: &Rect) -> bool {
@@ -162,6 +182,27 @@ impl Canvas {
         });
         if class != Class::Thin {
             self.avoid.push((a, b));
+        } else {
+            self.avoid_thin.push((a, b));
+        }
+    }
+
+    /// A filled polygon; its outline is kept clear of labels.
+    pub fn poly(&mut self, pts: Vec<Point>, fill: &'static str, stroke: f64) {
+        for i in 0..pts.len() {
+            self.avoid.push((pts[i], pts[(i + 1) % pts.len()]));
+        }
+        self.prims.push(Prim::Poly { pts, fill, stroke });
+    }
+
+    /// A label to place after everything else is drawn ([`Canvas::place_pending`]).
+    pub fn label_later(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
+        self.pending.push((anchor, label, size, id));
+    }
+
+    pub fn place_pending(&mut self) {
+        for (a, l, s, id) in std::mem::take(&mut self.pending) {
+            self.label(a, l, s, id);
         }
     }
 
@@ -172,13 +213,29 @@ impl Canvas {
         }
         self.prims.push(Prim::Seg { a, b, class, id });
         self.avoid.push((a, b));
-        self.prims.push(Prim::Arrow {
-            tip: b,
-            dir: (b - a).normalize(),
-        });
+        self.arrow(b, (b - a).normalize());
+    }
+
+    /// An arrowhead; its sides are kept clear of labels.
+    pub fn arrow(&mut self, tip: Point, dir: Vec2) {
+        let back = tip - dir * 3.0;
+        let n = Vec2::new(-dir.y, dir.x) * 0.7;
+        self.avoid.push((tip, back + n));
+        self.avoid.push((tip, back - n));
+        self.prims.push(Prim::Arrow { tip, dir });
     }
 
     pub fn circle(&mut self, c: Point, r: f64, fill: &'static str, stroke: f64) {
+        // Its bounding square keeps labels off the symbol.
+        let q = [
+            Vec2::new(-r, -r),
+            Vec2::new(r, -r),
+            Vec2::new(r, r),
+            Vec2::new(-r, r),
+        ];
+        for i in 0..4 {
+            self.avoid.push((c + q[i], c + q[(i + 1) % 4]));
+        }
         self.prims.push(Prim::Circle {
             c,
             r,
@@ -205,9 +262,9 @@ impl Canvas {
     /// and the fewest segments; and keep its box.
     pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
         // The box runs from the subscript's bottom (0.35 em below the
-        // baseline) to the capitals' top (0.8 em above).
-        let (w, h) = (label.width(size), size * 1.15);
-        let mut best: Option<((usize, usize), Rect)> = None;
+        // baseline) to the capitals' top (0.97 em above, as DejaVu renders).
+        let (w, h) = (label.width(size), size * 1.32);
+        let mut best: Option<((usize, usize, usize), Rect)> = None;
         'rings: for ring in [1.0, 2.0, 3.2, 4.6, 6.5, 9.0, 12.0, 16.0] {
             for k in 0..16 {
                 let ang =
@@ -227,11 +284,16 @@ impl Canvas {
                     .iter()
                     .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.3, 0.3)))
                     .count();
-                let score = (labels, lines);
+                let thin = self
+                    .avoid_thin
+                    .iter()
+                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.2, 0.2)))
+                    .count();
+                let score = (labels, lines, thin);
                 if best.as_ref().is_none_or(|(s0, _)| score < *s0) {
                     best = Some((score, r));
                 }
-                if score == (0, 0) {
+                if score == (0, 0, 0) {
                     break 'rings;
                 }
             }
@@ -416,6 +478,19 @@ impl Canvas {
                             xml(&label.sub)
                         )
                     };
+                    let sub_tspan = |b: &str, s: &str| {
+                        let s = if s.is_empty() {
+                            String::new()
+                        } else {
+                            format!(
+                                r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
+                                fmt(size * 0.7),
+                                xml(s)
+                            )
+                        };
+                        format!("<tspan>, {}</tspan>{s}", xml(b))
+                    };
+                    let more: String = label.more.iter().map(|(b, s)| sub_tspan(b, s)).collect();
                     let tail = if label.tail.is_empty() {
                         String::new()
                     } else {
@@ -428,7 +503,7 @@ impl Canvas {
                     };
                     let _ = writeln!(
                         out,
-                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}{sub}{tail}</text>"#,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}{sub}{more}{tail}</text>"#,
                         fmt(ox + at.x),
                         fmt(oy - at.y),
                         fmt(*size),

@@ -26,19 +26,12 @@ pub fn hatch(c: &mut Canvas, at: Point, down: Vec2, w: f64) {
 
 /// A fixed pivot: the pair's circle on a small triangle standing on a
 /// hatched base.
-fn pivot(c: &mut Canvas, at: Point) {
-    let down = Vec2::new(0.0, -1.0);
+fn pivot(c: &mut Canvas, at: Point, down: Vec2) {
+    let down = down.normalize();
+    let side = perp(down);
     let base = at + down * 4.0;
-    c.seg(
-        at + Vec2::new(-0.9, -1.0),
-        base + Vec2::new(-2.5, 0.0),
-        Class::Main,
-    );
-    c.seg(
-        at + Vec2::new(0.9, -1.0),
-        base + Vec2::new(2.5, 0.0),
-        Class::Main,
-    );
+    c.seg(at + down * 1.0 - side * 0.9, base - side * 2.5, Class::Main);
+    c.seg(at + down * 1.0 + side * 0.9, base + side * 2.5, Class::Main);
     hatch(c, base, down, 8.0);
     c.circle(at, 1.2, "white", MAIN);
 }
@@ -52,11 +45,7 @@ fn centre_of_mass(c: &mut Canvas, at: Point) {
         for k in 0..=6 {
             pts.push(at + Vec2::from_angle(q + std::f64::consts::FRAC_PI_2 * k as f64 / 6.0) * r);
         }
-        c.prims.push(super::canvas::Prim::Poly {
-            pts,
-            fill: "black",
-            stroke: 0.0,
-        });
+        c.poly(pts, "black", 0.0);
     }
 }
 
@@ -96,9 +85,22 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         if pr.guide == frame {
             let half = 18.0;
             c.seg(q - u * half, q + u * half, Class::Main);
-            // Hatch on the side away from the mechanism's centre.
+            // Hatch on the side away from the links that reach the slider.
+            let mut toward = Vec2::ZERO;
+            for &l in m
+                .links_of_point(pr.point)
+                .iter()
+                .filter(|&&l| l != pr.slider && an.include[l])
+            {
+                for &o in m.links[l].points.iter().filter(|&&o| o != pr.point) {
+                    toward += place(l, o) - q;
+                }
+            }
+            if toward.hypot() < 1e-9 {
+                toward = centre - q;
+            }
             let n = perp(u);
-            let n = if n.dot(centre - q) > 0.0 { n } else { -n };
+            let n = if n.dot(toward) > 0.0 { n } else { -n };
             let (b0, b1) = (q - u * half - n * 3.2, q + u * half - n * 3.2);
             c.seg(b0, b1, Class::Thin);
             for k in 0..=12 {
@@ -123,11 +125,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             .collect();
         let xy: Vec<Point> = pts.iter().map(|&p| place(l, p)).collect();
         if xy.len() >= 3 {
-            c.prims.push(super::canvas::Prim::Poly {
-                pts: xy.clone(),
-                fill: "#d9d9d9",
-                stroke: MAIN,
-            });
+            c.poly(xy.clone(), "#d9d9d9", MAIN);
         } else if xy.len() == 2 {
             c.seg(xy[0], xy[1], Class::Main);
         }
@@ -153,11 +151,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
                 q + u * a + n * b,
                 q - u * a + n * b,
             ];
-            c.prims.push(super::canvas::Prim::Poly {
-                pts: corners,
-                fill: "white",
-                stroke: MAIN,
-            });
+            c.poly(corners, "white", MAIN);
         }
         // Link number beside the middle of its first segment.
         let mid = if xy.len() >= 2 {
@@ -165,7 +159,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         } else {
             xy.first().copied().unwrap_or(Point::ORIGIN) + Vec2::new(0.0, 4.0)
         };
-        c.label(
+        c.label_later(
             mid,
             Label::new(link.id.clone(), ""),
             SMALL,
@@ -181,7 +175,25 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         }
         let at = at_point(p);
         if ls.contains(&frame) && joint {
-            pivot(c, at);
+            // The base stands on the side away from the links at the pivot,
+            // snapped to a multiple of 45° so it looks drawn, not computed.
+            let mut away = Vec2::ZERO;
+            for &l in ls.iter().filter(|&&l| l != frame && an.include[l]) {
+                for &q in m.links[l].points.iter().filter(|&&q| q != p) {
+                    let d = place(l, q) - at;
+                    if d.hypot() > 0.0 {
+                        away -= d.normalize();
+                    }
+                }
+            }
+            let down = if away.hypot() < 1e-9 {
+                Vec2::new(0.0, -1.0)
+            } else {
+                away
+            };
+            let snapped =
+                (down.atan2() / std::f64::consts::FRAC_PI_4).round() * std::f64::consts::FRAC_PI_4;
+            pivot(c, at, Vec2::from_angle(snapped));
         } else if joint {
             c.circle(at, 1.2, "white", MAIN);
         } else if is_mass(p) {
@@ -194,7 +206,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             let split = name
                 .find(|ch: char| ch.is_ascii_digit() || ch == '_')
                 .unwrap_or(name.len());
-            c.label(
+            c.label_later(
                 at,
                 Label::new(&name[..split], name[split..].trim_start_matches('_')),
                 FONT,
@@ -231,7 +243,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             let tangent = perp(Vec2::from_angle(end)) * val.signum();
             c.prims
                 .push(super::canvas::Prim::Arrow { tip, dir: tangent });
-            c.label(
+            c.label_later(
                 o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 1.0),
                 Label::new(name, m.link_id(link)),
                 FONT,

@@ -134,31 +134,69 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
     };
     let w = words(opt.lang);
     let mut out = Vec::new();
-    if asked("positions") {
-        let mut c = Canvas::default();
-        positions::draw(an, solved, &mut c, an.mu_l);
-        let scale = scale_label("l", an.mu_l, "m", opt.lang);
+    // The mechanism's sheets share one scale and one place on the page, so
+    // that flipping through them the mechanism does not jump; the scale
+    // grows to the next standard value until every position fits.
+    let (aw, ah) = free_area(opt, false);
+    let mut mu_l = an.mu_l;
+    let mut mech: Vec<Canvas>;
+    let mut pos_canvas: Option<Canvas>;
+    loop {
+        mech = if asked("mechanism") {
+            solved
+                .iter()
+                .map(|s| {
+                    let mut c = Canvas::default();
+                    mechanism::draw(an, s, &mut c, mu_l, true);
+                    c.place_pending();
+                    c
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        pos_canvas = asked("positions").then(|| {
+            let mut c = Canvas::default();
+            positions::draw(an, solved, &mut c, mu_l);
+            c
+        });
+        let union = mech
+            .iter()
+            .chain(pos_canvas.iter())
+            .map(|c| c.bounds())
+            .reduce(|a, b| a.union(b));
+        match union {
+            Some(u) if (u.width() > aw || u.height() > ah) && mu_l < 1e6 => {
+                let f = (u.width() / aw).max(u.height() / ah);
+                mu_l = crate::construction::scale::standard_scale(mu_l * f * 1.0001, 1.0);
+            }
+            _ => break,
+        }
+    }
+    let union = mech.iter().map(|c| c.bounds()).reduce(|a, b| a.union(b));
+    if let Some(c) = &pos_canvas {
+        let scale = scale_label("l", mu_l, "m", opt.lang);
         out.push(page(
             "positions".into(),
             w[3].into(),
-            &c,
+            c,
             Some(scale),
             opt,
+            None,
             None,
         ));
     }
     for (k, s) in solved.iter().enumerate() {
         let pos = position_text(an, s, k, opt.lang);
-        if asked("mechanism") {
-            let mut c = Canvas::default();
-            mechanism::draw(an, s, &mut c, an.mu_l, true);
+        if let Some(c) = mech.get(k) {
             out.push(page(
                 format!("mechanism_{}", k + 1),
                 format!("{}, {pos}", w[0]),
-                &c,
-                Some(scale_label("l", an.mu_l, "m", opt.lang)),
+                c,
+                Some(scale_label("l", mu_l, "m", opt.lang)),
                 opt,
                 None,
+                union,
             ));
         }
         let Some(plans) = &s.plans else { continue };
@@ -184,6 +222,7 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
                 Some(scale_label(sym, plan.mu, unit, opt.lang)),
                 opt,
                 table,
+                None,
             ));
         }
     }
@@ -225,7 +264,19 @@ pub fn page_svg(
     scale: Option<Label>,
     opt: &DrawOptions,
 ) -> Sheet {
-    page(name, title, c, scale, opt, None)
+    page(name, title, c, scale, opt, None, None)
+}
+
+/// The free area of a sheet for the drawing (mm): inside the frame, below
+/// the heading, beside the table and above the title block.
+fn free_area(opt: &DrawOptions, table: bool) -> (f64, f64) {
+    let (w, h) = opt.sheet.mm();
+    let title_h = if opt.title_block { 20.0 } else { 0.0 };
+    let table_w = if table { 70.0 } else { 0.0 };
+    (
+        w - 20.0 - 5.0 - 12.0 - table_w,
+        h - 10.0 - 16.0 - 6.0 - title_h,
+    )
 }
 
 /// Compose a sheet: frame, heading, the drawing centred in the free area,
@@ -237,6 +288,7 @@ fn page(
     scale: Option<Label>,
     opt: &DrawOptions,
     table: Option<&Plan>,
+    centre_on: Option<kurbo::Rect>,
 ) -> Sheet {
     let (w, h) = opt.sheet.mm();
     let (left, margin) = (20.0, 5.0);
@@ -245,7 +297,7 @@ fn page(
     // Free area for the drawing: inside the frame, below the heading.
     let (ax0, ax1) = (left + 6.0, w - margin - 6.0 - table_w);
     let (ay0, ay1) = (margin + 16.0, h - margin - 6.0 - title_h);
-    let b = c.bounds();
+    let b = centre_on.unwrap_or_else(|| c.bounds());
     let ox = (ax0 + ax1) / 2.0 - (b.x0 + b.x1) / 2.0;
     let oy = (ay0 + ay1) / 2.0 + (b.y0 + b.y1) / 2.0;
     let mut svg = String::new();
