@@ -93,7 +93,10 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
                     continue;
                 }
                 let mut e = Map::new();
-                e.insert("angle".into(), num(deg(s.config.pose(l).angle + base_offset(an, l))));
+                // The local x-axis runs from the link's first point to its
+                // second (a one-point slider: along its guide), as the
+                // contract defines a link's angle.
+                e.insert("angle".into(), num(deg(s.config.pose(l).angle)));
                 if vel {
                     let mo = s.motion[l].unwrap();
                     let aq = s.analogue[l].unwrap();
@@ -138,9 +141,9 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
             }
             if let Some(plans) = &s.plans {
                 let mut pl = Map::new();
-                pl.insert("velocity".into(), plan_json(&plans.velocity, "omega"));
+                pl.insert("velocity".into(), plan_json(&plans.velocity));
                 if let Some(a) = &plans.acceleration {
-                    pl.insert("acceleration".into(), plan_json(a, "epsilon"));
+                    pl.insert("acceleration".into(), plan_json(a));
                 }
                 o.insert("plans".into(), Value::Object(pl));
             }
@@ -166,7 +169,7 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
 /// points by their lower-case names, construction points as documented in
 /// docs/scene-format.md), the worst intersection angle and the drafting
 /// bounds of what was measured.
-fn plan_json(plan: &crate::construction::Plan, rate: &str) -> Value {
+fn plan_json(plan: &crate::construction::Plan) -> Value {
     let mut points = Map::new();
     for p in plan.points.iter().skip(1) {
         points.insert(p.key.clone(), json!([num(p.at.x), num(p.at.y)]));
@@ -176,7 +179,6 @@ fn plan_json(plan: &crate::construction::Plan, rate: &str) -> Value {
         .iter()
         .map(|q| json!({ "quantity": q.quantity, "from": plan.points[q.from].key, "to": plan.points[q.to].key, "mm": num(q.mm), "value": num(q.value), "bound": num(q.bound) }))
         .collect();
-    let _ = rate;
     json!({
         "mu": num(plan.mu),
         "points": points,
@@ -186,15 +188,6 @@ fn plan_json(plan: &crate::construction::Plan, rate: &str) -> Value {
     })
 }
 
-/// The reported angle of a link is the direction of the ray from its first
-/// point to its second: the local frame's x-axis, or, for a one-point
-/// slider, its guide's direction (its frame is set up that way).
-fn base_offset(_an: &Analysis, _l: usize) -> f64 {
-    0.0
-}
-
-/// The sense of rotation, "-" for a value that is zero up to rounding
-/// (`scale` is the largest value of its kind at that position).
 fn sense(x: f64, scale: f64) -> &'static str {
     if x.abs() <= 1e-12 * scale {
         "-"
