@@ -188,6 +188,8 @@ fn plan_json(plan: &crate::construction::Plan) -> Value {
     })
 }
 
+/// The sense of rotation, "-" for a value that is zero up to rounding
+/// (`scale` is the largest value of its kind at that position).
 fn sense(x: f64, scale: f64) -> &'static str {
     if x.abs() <= 1e-12 * scale {
         "-"
