@@ -20,10 +20,7 @@ use crate::positions::{Configuration, describe_input};
 use crate::scene::InputSpec;
 use crate::structure::{AssurGroup, Conn, Joint, Structure};
 use kurbo::Vec2;
-use nalgebra::{DMatrix, DVector};
-
-/// A contour: (index of a pair in the group, ±1 for the sense it is traversed in).
-type Contour = Vec<(usize, f64)>;
+use nalgebra::{SMatrix, SVector};
 
 /// A planar twist: angular rate and the velocity of the point at the origin.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -140,181 +137,241 @@ pub fn solve(
     order: Order,
 ) -> Result<Vec<Option<Motion>>> {
     let mut out: Vec<Option<Motion>> = vec![None; m.links.len()];
-    out[m.frame()] = Some(Motion::from_point(
+    // The twist and twist rate of every link solved so far, as `state`
+    // reads them off its motion: one buffer for the whole mechanism.
+    let mut known: Vec<Option<(Twist, Twist)>> = vec![None; m.links.len()];
+    let set =
+        |out: &mut [Option<Motion>], known: &mut [Option<(Twist, Twist)>], l: usize, mo: Motion| {
+            out[l] = Some(mo);
+            known[l] = Some(state(&mo));
+        };
+    let frame = Motion::from_point(
         c.pose(m.frame()),
         kurbo::Point::ORIGIN,
         Vec2::ZERO,
         Vec2::ZERO,
         0.0,
         0.0,
-    ));
-    out[m.scene.input.link()] = Some(input_motion(m, c, drive.rate, drive.rate2));
+    );
+    set(&mut out, &mut known, m.frame(), frame);
+    let input = input_motion(m, c, drive.rate, drive.rate2);
+    set(&mut out, &mut known, m.scene.input.link(), input);
+    let mut motions: [(usize, Motion); 4] = [(0, frame); 4];
     for (gi, g) in s.groups.iter().enumerate() {
         if !need[gi] {
             continue;
         }
+        let singular = || Error::Singular {
+            at: describe_input(m, drive.q),
+            why: format!(
+                "the velocity contour of group {} is singular (a dead point)",
+                g.label(m)
+            ),
+        };
         // The pairs of the group, in contour order: each contour is a list
         // of (pair index, sign) from a known link to a known link.
-        let (conns, contours, ends): (Vec<Conn>, Vec<Contour>, Vec<(usize, usize)>) = match g {
-            AssurGroup::Dyad(d) => (
-                vec![d.ext1, d.mid, d.ext2],
-                vec![vec![(0, 1.0), (1, 1.0), (2, 1.0)]],
-                vec![(d.ext1.from, d.ext2.to)],
+        let done = match g {
+            AssurGroup::Dyad(d) => group::<3>(
+                m,
+                c,
+                [d.ext1, d.mid, d.ext2],
+                &[&[(0, 1.0), (1, 1.0), (2, 1.0)]],
+                &[(d.ext1.from, d.ext2.to)],
+                &known,
+                order,
+                solve3,
+                &d.links,
+                &mut motions,
             ),
-            AssurGroup::Triad(t) => (
-                vec![t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
-                vec![
-                    vec![(0, 1.0), (1, 1.0), (2, -1.0), (3, -1.0)],
-                    vec![(0, 1.0), (1, 1.0), (4, -1.0), (5, -1.0)],
+            AssurGroup::Triad(t) => group::<6>(
+                m,
+                c,
+                [t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
+                &[
+                    &[(0, 1.0), (1, 1.0), (2, -1.0), (3, -1.0)],
+                    &[(0, 1.0), (1, 1.0), (4, -1.0), (5, -1.0)],
                 ],
-                vec![
+                &[
                     (t.ext[0].from, t.ext[1].from),
                     (t.ext[0].from, t.ext[2].from),
                 ],
+                &known,
+                order,
+                solve_lu,
+                &[t.leashes[0], t.leashes[1], t.leashes[2], t.base],
+                &mut motions,
             ),
         };
-        let xi: Vec<Twist> = conns.iter().map(|cn| unit_twist(m, c, cn)).collect();
-        let n = conns.len();
-        let mut a = DMatrix::<f64>::zeros(n, n);
-        for (ci, contour) in contours.iter().enumerate() {
-            for &(j, sg) in contour {
-                a[(3 * ci, j)] = sg * xi[j].w;
-                a[(3 * ci + 1, j)] = sg * xi[j].v.x;
-                a[(3 * ci + 2, j)] = sg * xi[j].v.y;
-            }
-        }
-        let known = |l: usize| state(out[l].as_ref().expect("attachment solved first"));
-        let rhs_of = |f: &dyn Fn(usize) -> Twist| {
-            let mut r = DVector::<f64>::zeros(n);
-            for (ci, &(k1, k2)) in ends.iter().enumerate() {
-                let t = f(k2) - f(k1);
-                r[3 * ci] = t.w;
-                r[3 * ci + 1] = t.v.x;
-                r[3 * ci + 2] = t.v.y;
-            }
-            r
-        };
-        let qd =
-            solve_small(&a, &rhs_of(&|l| known(l).0), m.size).ok_or_else(|| Error::Singular {
-                at: describe_input(m, drive.q),
-                why: format!(
-                    "the velocity contour of group {} is singular (a dead point)",
-                    g.label(m)
-                ),
-            })?;
-        // Twist of every link of the group: walk the pairs outward.
-        let mut vel: Vec<Option<Twist>> = (0..m.links.len())
-            .map(|l| out[l].as_ref().map(|mo| state(mo).0))
-            .collect();
-        let mut pending: Vec<usize> = (0..n).collect();
-        while !pending.is_empty() {
-            let before = pending.len();
-            pending.retain(|&j| {
-                let cn = &conns[j];
-                match (vel[cn.from], vel[cn.to]) {
-                    (Some(vf), None) => {
-                        vel[cn.to] = Some(vf + xi[j] * qd[j]);
-                        false
-                    }
-                    (None, Some(vt)) => {
-                        vel[cn.from] = Some(vt - xi[j] * qd[j]);
-                        false
-                    }
-                    (Some(_), Some(_)) => false,
-                    (None, None) => true,
-                }
-            });
-            assert!(
-                pending.len() < before,
-                "group pairs form a connected contour"
-            );
-        }
-        // Accelerations: the same matrix, known terms from the brackets.
-        let mut acc: Vec<Option<Twist>> = vec![None; m.links.len()];
-        if order == Order::Acceleration {
-            let drift: Vec<Twist> = (0..n)
-                .map(|j| bracket(vel[conns[j].from].unwrap(), xi[j]) * qd[j])
-                .collect();
-            let mut rhs = rhs_of(&|l| known(l).1);
-            for (ci, contour) in contours.iter().enumerate() {
-                for &(j, sg) in contour {
-                    rhs[3 * ci] -= sg * drift[j].w;
-                    rhs[3 * ci + 1] -= sg * drift[j].v.x;
-                    rhs[3 * ci + 2] -= sg * drift[j].v.y;
-                }
-            }
-            let qdd = solve_small(&a, &rhs, m.size).expect("same matrix as the velocity contour");
-            for l in 0..m.links.len() {
-                acc[l] = out[l].as_ref().map(|mo| state(mo).1);
-            }
-            let mut pending: Vec<usize> = (0..n).collect();
-            while !pending.is_empty() {
-                pending.retain(|&j| {
-                    let cn = &conns[j];
-                    let d = xi[j] * qdd[j] + drift[j];
-                    match (acc[cn.from], acc[cn.to]) {
-                        (Some(af), None) => {
-                            acc[cn.to] = Some(af + d);
-                            false
-                        }
-                        (None, Some(at)) => {
-                            acc[cn.from] = Some(at - d);
-                            false
-                        }
-                        (Some(_), Some(_)) => false,
-                        (None, None) => true,
-                    }
-                });
-            }
-        }
-        for l in g.links() {
-            let v = vel[l].expect("every group link reached");
-            let a = acc[l].unwrap_or_default();
-            out[l] = Some(Motion {
-                pose: c.pose(l),
-                omega: v.w,
-                epsilon: a.w,
-                v0: v.v,
-                a0: a.v + perp(v.v) * v.w,
-            });
+        let count = done.ok_or_else(singular)?;
+        for &(l, mo) in &motions[..count] {
+            set(&mut out, &mut known, l, mo);
         }
     }
     Ok(out)
 }
 
-/// Solve a 3×3 system by Cramer's rule (the closed form of a dyad) or a
-/// larger one by LU; `None` when the system is singular relative to the
-/// scale of its columns.
-fn solve_small(a: &DMatrix<f64>, b: &DVector<f64>, size: f64) -> Option<DVector<f64>> {
-    // Make the columns dimensionless: a revolute column has a length scale.
-    let n = a.ncols();
-    let scale: Vec<f64> = (0..n)
-        .map(|j| a.column(j).norm().max(f64::MIN_POSITIVE))
-        .collect();
-    let mut an = a.clone();
+/// One group's contours: the rates in its pairs, then the motion of each
+/// of its links (`links`, written to `motions` in ascending link order, the
+/// order of [`AssurGroup::links`]); `None` when the velocity contour is
+/// singular. `contours`: (pair index, sign) from the known link `ends[i].0`
+/// to the known link `ends[i].1`.
+#[allow(clippy::too_many_arguments)]
+fn group<const N: usize>(
+    m: &Mechanism,
+    c: &Configuration,
+    conns: [Conn; N],
+    contours: &[&[(usize, f64)]],
+    ends: &[(usize, usize)],
+    known: &[Option<(Twist, Twist)>],
+    order: Order,
+    solve_small: fn(&SMatrix<f64, N, N>, &SVector<f64, N>) -> Option<SVector<f64, N>>,
+    links: &[usize],
+    motions: &mut [(usize, Motion); 4],
+) -> Option<usize> {
+    let xi: [Twist; N] = conns.map(|cn| unit_twist(m, c, &cn));
+    let mut a = SMatrix::<f64, N, N>::zeros();
+    for (ci, contour) in contours.iter().enumerate() {
+        for &(j, sg) in contour.iter() {
+            a[(3 * ci, j)] = sg * xi[j].w;
+            a[(3 * ci + 1, j)] = sg * xi[j].v.x;
+            a[(3 * ci + 2, j)] = sg * xi[j].v.y;
+        }
+    }
+    let state_of = known;
+    let known = |l: usize| state_of[l].expect("attachment solved first");
+    let rhs_of = |f: &dyn Fn(usize) -> Twist| {
+        let mut r = SVector::<f64, N>::zeros();
+        for (ci, &(k1, k2)) in ends.iter().enumerate() {
+            let t = f(k2) - f(k1);
+            r[3 * ci] = t.w;
+            r[3 * ci + 1] = t.v.x;
+            r[3 * ci + 2] = t.v.y;
+        }
+        r
+    };
+    let qd = solve_small(&a, &rhs_of(&|l| known(l).0))?;
+    // Twist of every link of the group: walk the pairs outward, in the
+    // pairs' order, each pass over the pairs still pending.
+    let walk = |step: &dyn Fn(usize) -> Twist,
+                base: &dyn Fn(usize) -> Option<Twist>|
+     -> ([(usize, Twist); 4], usize) {
+        let mut found = [(usize::MAX, Twist::default()); 4];
+        let mut count = 0;
+        let get = |found: &[(usize, Twist); 4], count: usize, l: usize| {
+            base(l).or_else(|| found[..count].iter().find(|e| e.0 == l).map(|e| e.1))
+        };
+        let mut pending = [true; N];
+        let mut left = N;
+        while left > 0 {
+            let before = left;
+            for j in 0..N {
+                if !pending[j] {
+                    continue;
+                }
+                let cn = &conns[j];
+                match (get(&found, count, cn.from), get(&found, count, cn.to)) {
+                    (Some(vf), None) => {
+                        found[count] = (cn.to, vf + step(j));
+                        count += 1;
+                    }
+                    (None, Some(vt)) => {
+                        found[count] = (cn.from, vt - step(j));
+                        count += 1;
+                    }
+                    (Some(_), Some(_)) => {}
+                    (None, None) => continue,
+                }
+                pending[j] = false;
+                left -= 1;
+            }
+            assert!(left < before, "group pairs form a connected contour");
+        }
+        (found, count)
+    };
+    let (vel, nv) = walk(&|j| xi[j] * qd[j], &|l| state_of[l].map(|k| k.0));
+    let vel_of = |l: usize| {
+        state_of[l]
+            .map(|k| k.0)
+            .or_else(|| vel[..nv].iter().find(|e| e.0 == l).map(|e| e.1))
+    };
+    // Accelerations: the same matrix, known terms from the brackets.
+    let mut acc = [(usize::MAX, Twist::default()); 4];
+    let mut na = 0;
+    if order == Order::Acceleration {
+        let drift: [Twist; N] =
+            std::array::from_fn(|j| bracket(vel_of(conns[j].from).unwrap(), xi[j]) * qd[j]);
+        let mut rhs = rhs_of(&|l| known(l).1);
+        for (ci, contour) in contours.iter().enumerate() {
+            for &(j, sg) in contour.iter() {
+                rhs[3 * ci] -= sg * drift[j].w;
+                rhs[3 * ci + 1] -= sg * drift[j].v.x;
+                rhs[3 * ci + 2] -= sg * drift[j].v.y;
+            }
+        }
+        let qdd = solve_small(&a, &rhs).expect("same matrix as the velocity contour");
+        (acc, na) = walk(&|j| xi[j] * qdd[j] + drift[j], &|l| {
+            state_of[l].map(|k| k.1)
+        });
+    }
+    let mut sorted = [0usize; 4];
+    sorted[..links.len()].copy_from_slice(links);
+    sorted[..links.len()].sort_unstable();
+    for (k, &l) in sorted[..links.len()].iter().enumerate() {
+        let v = vel_of(l).expect("every group link reached");
+        let a = acc[..na]
+            .iter()
+            .find(|e| e.0 == l)
+            .map(|e| e.1)
+            .unwrap_or_default();
+        motions[k] = (
+            l,
+            Motion {
+                pose: c.pose(l),
+                omega: v.w,
+                epsilon: a.w,
+                v0: v.v,
+                a0: a.v + perp(v.v) * v.w,
+            },
+        );
+    }
+    Some(links.len())
+}
+
+/// Make the columns dimensionless (a revolute column has a length scale):
+/// the scaled matrix and the scales.
+fn scaled<const N: usize>(a: &SMatrix<f64, N, N>) -> (SMatrix<f64, N, N>, [f64; N]) {
+    let scale: [f64; N] = std::array::from_fn(|j| a.column(j).norm().max(f64::MIN_POSITIVE));
+    let mut an = *a;
     for (j, sc) in scale.iter().enumerate() {
         an.column_mut(j).scale_mut(1.0 / sc);
     }
-    let _ = size;
-    let x = if n == 3 {
-        let det = an.determinant();
-        if det.abs() < 1e-12 {
-            return None;
-        }
-        let mut x = DVector::zeros(3);
-        for j in 0..3 {
-            let mut aj = an.clone();
-            aj.set_column(j, b);
-            x[j] = aj.determinant() / det;
-        }
-        x
-    } else {
-        let lu = an.lu();
-        let det = lu.determinant();
-        if det.abs() < 1e-12 {
-            return None;
-        }
-        lu.solve(b)?
-    };
-    Some(DVector::from_iterator(n, (0..n).map(|j| x[j] / scale[j])))
+    (an, scale)
+}
+
+/// A 3×3 system by Cramer's rule (the closed form of a dyad); `None` when
+/// it is singular relative to the scale of its columns.
+fn solve3(a: &SMatrix<f64, 3, 3>, b: &SVector<f64, 3>) -> Option<SVector<f64, 3>> {
+    let (an, scale) = scaled(a);
+    let det = an.determinant();
+    if det.abs() < 1e-12 {
+        return None;
+    }
+    Some(SVector::<f64, 3>::from_fn(|j, _| {
+        let mut aj = an;
+        aj.set_column(j, b);
+        aj.determinant() / det / scale[j]
+    }))
+}
+
+/// A larger system (a three-leash group's two contours) by LU; `None` when
+/// it is singular relative to the scale of its columns.
+fn solve_lu(a: &SMatrix<f64, 6, 6>, b: &SVector<f64, 6>) -> Option<SVector<f64, 6>> {
+    let (an, scale) = scaled(a);
+    let lu = an.lu();
+    let det = lu.determinant();
+    if det.abs() < 1e-12 {
+        return None;
+    }
+    let x = lu.solve(b)?;
+    Some(SVector::<f64, 6>::from_fn(|j, _| x[j] / scale[j]))
 }

@@ -1,0 +1,307 @@
+//! Speed of mechplan per position, against a hand-written closed form.
+//!
+//! `cargo bench --bench speed` (docs/performance.md has the figures). The
+//! fixtures are the tests' own (`fixtures/*.json`). Every per-position
+//! bench cycles through the fixture's full turn at 1° steps, one position
+//! per iteration, so criterion's time is the time of one position:
+//!
+//! - `contour/*`: positions (`PositionSolver::solve`) and route (a)
+//!   (`contour::solve`, velocities and accelerations);
+//! - `construction/*`: the construction kernel (`build_plans`, both plans;
+//!   step sentences are rendered only on demand, so none here);
+//! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
+//! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
+//!   six-link fixture with its 12 positions (the whole `draw` but writing);
+//! - `limit/four_bar`: a minimal closed-form four-bar (positions,
+//!   velocities, accelerations of the same quantities, no allocation),
+//!   the practical limit for the four-bar fixture.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use mechplan::analytic::constraint::{ConstraintSolver, Settings};
+use mechplan::analytic::{Drive, Order, contour};
+use mechplan::construction::{Setup, build_plans};
+use mechplan::drawing::{self, DrawOptions};
+use mechplan::positions::{Configuration, PositionSolver};
+use mechplan::{Analysis, Scene};
+use std::hint::black_box;
+
+const FIXTURES: [&str; 3] = ["four_bar", "six_link_fig2_10", "shaper_fig2_11"];
+
+fn text(name: &str) -> String {
+    let path = format!("{}/fixtures/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn analysis(name: &str) -> Analysis {
+    Analysis::new(Scene::from_json(&text(name)).expect("fixture accepted")).expect("fixture solves")
+}
+
+/// A full turn at 1° from the fixture's own crank angle, in rad.
+fn turn(an: &Analysis) -> Vec<f64> {
+    let q0 = an.mech.scene.input.coordinate();
+    (0..360).map(|k| q0 + (k as f64).to_radians()).collect()
+}
+
+/// The hand-written closed form of the four-bar fixture: crank O1A, coupler
+/// AB with the coupler point M, rocker O3B. Everything is precomputed that
+/// does not depend on the crank angle.
+#[derive(Clone, Copy, Debug)]
+struct FourBar {
+    o1: [f64; 2],
+    o3: [f64; 2],
+    a: f64,
+    b: f64,
+    c: f64,
+    /// M in the coupler's frame (x along AB), relative to A.
+    m: [f64; 2],
+    sign: f64,
+    omega1: f64,
+    eps1: f64,
+}
+
+/// Angles, ω, ε of coupler and rocker; place, velocity, acceleration of A,
+/// B, M.
+#[derive(Clone, Copy, Debug, Default)]
+struct FourBarState {
+    theta: [f64; 2],
+    omega: [f64; 2],
+    eps: [f64; 2],
+    p: [[f64; 2]; 3],
+    v: [[f64; 2]; 3],
+    acc: [[f64; 2]; 3],
+}
+
+impl FourBar {
+    fn from_fixture() -> FourBar {
+        let v: serde_json::Value = serde_json::from_str(&text("four_bar")).unwrap();
+        let pt = |n: &str| {
+            [
+                v["points"][n][0].as_f64().unwrap(),
+                v["points"][n][1].as_f64().unwrap(),
+            ]
+        };
+        let len = |n: &str| v["lengths"][n].as_f64().unwrap();
+        let (o1, a, b, m, o3) = (pt("O1"), pt("A"), pt("B"), pt("M"), pt("O3"));
+        let ab = [b[0] - a[0], b[1] - a[1]];
+        let l = ab[0].hypot(ab[1]);
+        let e = [ab[0] / l, ab[1] / l];
+        let am = [m[0] - a[0], m[1] - a[1]];
+        // The branch: the side of B from the directed line A → O3.
+        let ad = [o3[0] - a[0], o3[1] - a[1]];
+        FourBar {
+            o1,
+            o3,
+            a: len("O1-A"),
+            b: len("A-B"),
+            c: len("O3-B"),
+            m: [am[0] * e[0] + am[1] * e[1], -am[0] * e[1] + am[1] * e[0]],
+            sign: (ad[0] * ab[1] - ad[1] * ab[0]).signum(),
+            omega1: v["input"]["omega"].as_f64().unwrap(),
+            eps1: v["input"]["epsilon"].as_f64().unwrap(),
+        }
+    }
+
+    #[inline(never)]
+    fn solve(&self, phi: f64) -> FourBarState {
+        let perp = |r: [f64; 2]| [-r[1], r[0]];
+        let dot = |p: [f64; 2], q: [f64; 2]| p[0] * q[0] + p[1] * q[1];
+        let (s, c) = phi.sin_cos();
+        let ra = [self.a * c, self.a * s];
+        let pa = [self.o1[0] + ra[0], self.o1[1] + ra[1]];
+        // B = circle (A, b) ∩ circle (O3, c) on the sketch's side.
+        let d = [self.o3[0] - pa[0], self.o3[1] - pa[1]];
+        let l2 = dot(d, d);
+        let l = l2.sqrt();
+        let x = (self.b * self.b - self.c * self.c + l2) / (2.0 * l);
+        let h = self.sign * (self.b * self.b - x * x).max(0.0).sqrt();
+        let pb = [
+            pa[0] + (d[0] * x - d[1] * h) / l,
+            pa[1] + (d[1] * x + d[0] * h) / l,
+        ];
+        let r2 = [pb[0] - pa[0], pb[1] - pa[1]];
+        let r3 = [pb[0] - self.o3[0], pb[1] - self.o3[1]];
+        let e2 = [r2[0] / self.b, r2[1] / self.b];
+        let rm = [
+            self.m[0] * e2[0] - self.m[1] * e2[1],
+            self.m[0] * e2[1] + self.m[1] * e2[0],
+        ];
+        let pm = [pa[0] + rm[0], pa[1] + rm[1]];
+        // Velocities: ω2·k×r2 − ω3·k×r3 = −v_A.
+        let w1 = self.omega1;
+        let va = [-w1 * ra[1], w1 * ra[0]];
+        let d23 = dot(perp(r2), r3);
+        let w2 = -dot(va, r3) / d23;
+        let w3 = -dot(va, r2) / d23;
+        let vb = [va[0] - w2 * r2[1], va[1] + w2 * r2[0]];
+        let vm = [va[0] - w2 * rm[1], va[1] + w2 * rm[0]];
+        // Accelerations: ε2·k×r2 − ε3·k×r3 = −a_A + ω2²·r2 − ω3²·r3.
+        let aa = [
+            -self.eps1 * ra[1] - w1 * w1 * ra[0],
+            self.eps1 * ra[0] - w1 * w1 * ra[1],
+        ];
+        let rhs = [
+            -aa[0] + w2 * w2 * r2[0] - w3 * w3 * r3[0],
+            -aa[1] + w2 * w2 * r2[1] - w3 * w3 * r3[1],
+        ];
+        let e2r = dot(rhs, r3) / d23;
+        let e3r = dot(rhs, r2) / d23;
+        let ab = [
+            aa[0] - e2r * r2[1] - w2 * w2 * r2[0],
+            aa[1] + e2r * r2[0] - w2 * w2 * r2[1],
+        ];
+        let am = [
+            aa[0] - e2r * rm[1] - w2 * w2 * rm[0],
+            aa[1] + e2r * rm[0] - w2 * w2 * rm[1],
+        ];
+        FourBarState {
+            theta: [r2[1].atan2(r2[0]), r3[1].atan2(r3[0])],
+            omega: [w2, w3],
+            eps: [e2r, e3r],
+            p: [pa, pb, pm],
+            v: [va, vb, vm],
+            acc: [aa, ab, am],
+        }
+    }
+}
+
+/// The closed form must compute what mechplan computes, or it is no limit.
+fn check_limit(an: &Analysis, fb: &FourBar) {
+    let m = &an.mech;
+    let mut ps = PositionSolver::new(m, &an.structure, an.need.clone()).unwrap();
+    let idx = |n: &str| m.scene.points.iter().position(|p| p.name == n).unwrap();
+    let link = |n: &str| m.scene.links.iter().position(|l| l.id == n).unwrap();
+    let (rate, rate2) = m.scene.input.rates();
+    for q in turn(an).into_iter().step_by(7) {
+        let c = ps.solve(q).unwrap();
+        let mo = contour::solve(
+            m,
+            &an.structure,
+            &an.need,
+            &c,
+            Drive { q, rate, rate2 },
+            Order::Acceleration,
+        )
+        .unwrap();
+        let st = fb.solve(q);
+        for (k, name) in ["A", "B", "M"].into_iter().enumerate() {
+            let p = idx(name);
+            let l = an.carrier(p);
+            let at = c.point(m, l, p);
+            let (v, a) = (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at));
+            let close = |x: [f64; 2], y: kurbo::Vec2, scale: f64| {
+                assert!(
+                    (x[0] - y.x).hypot(x[1] - y.y) <= 1e-9 * scale,
+                    "{name}: {x:?} vs {y:?}"
+                );
+            };
+            close(st.p[k], at.to_vec2(), 1.0);
+            close(st.v[k], v, 10.0);
+            close(st.acc[k], a, 100.0);
+        }
+        for (k, l) in [link("2"), link("3")].into_iter().enumerate() {
+            let x = mo[l].unwrap();
+            assert!((x.omega - st.omega[k]).abs() <= 1e-9 * 10.0);
+            assert!((x.epsilon - st.eps[k]).abs() <= 1e-9 * 100.0);
+            // Each link's frame has its x-axis from its first point to its second.
+            let dth = mechplan::geom::wrap_pi(x.pose.angle - st.theta[k]);
+            assert!(dth.abs() <= 1e-9, "angle of link {}: {dth}", k + 2);
+        }
+    }
+}
+
+fn per_position(cr: &mut Criterion) {
+    let fb = FourBar::from_fixture();
+    {
+        let an = analysis("four_bar");
+        check_limit(&an, &fb);
+        let qs = turn(&an);
+        let mut k = 0;
+        cr.bench_function("limit/four_bar", |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                black_box(fb.solve(black_box(qs[k])))
+            })
+        });
+    }
+    for name in FIXTURES {
+        let an = analysis(name);
+        let m = &an.mech;
+        let qs = turn(&an);
+        let (rate, rate2) = m.scene.input.rates();
+
+        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone()).unwrap();
+        let mut k = 0;
+        cr.bench_function(&format!("contour/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                let q = qs[k];
+                let c = ps.solve(q).unwrap();
+                let mo = contour::solve(
+                    m,
+                    &an.structure,
+                    &an.need,
+                    &c,
+                    Drive { q, rate, rate2 },
+                    Order::Acceleration,
+                )
+                .unwrap();
+                black_box((c, mo))
+            })
+        });
+
+        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone()).unwrap();
+        let configs: Vec<Configuration> = qs.iter().map(|&q| ps.solve(q).unwrap()).collect();
+        let setup = Setup {
+            m,
+            s: &an.structure,
+            need: &an.need,
+            points: &an.points,
+            include: &an.include,
+        };
+        let mut k = 0;
+        cr.bench_function(&format!("construction/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                let q = qs[k];
+                black_box(
+                    build_plans(
+                        &setup,
+                        &configs[k],
+                        Drive { q, rate, rate2 },
+                        Order::Acceleration,
+                        an.drafting,
+                    )
+                    .unwrap(),
+                )
+            })
+        });
+
+        let mut cs = ConstraintSolver::new(m, &an.include, Settings::default());
+        let mut k = 0;
+        cr.bench_function(&format!("constraint/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                cs.solve_positions(qs[k]).unwrap();
+                black_box(cs.solve_rates(rate, rate2, Order::Acceleration).unwrap())
+            })
+        });
+    }
+}
+
+fn draw(cr: &mut Criterion) {
+    let an = analysis("six_link_fig2_10");
+    assert_eq!(an.input_values().unwrap().len(), 12);
+    let opt = DrawOptions::default();
+    let mut g = cr.benchmark_group("draw");
+    g.sample_size(20);
+    g.bench_function("six_link_12", |b| {
+        b.iter(|| {
+            let solved = an.run().unwrap();
+            black_box(drawing::sheets(&an, &solved, &opt))
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, per_position, draw);
+criterion_main!(benches);
