@@ -94,8 +94,8 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
             (!ls.iter().all(|&l| pivoted(l)) && !slides_on_frame).then_some((p, l))
         })
         .collect();
-    if full_turn {
-        if let Ok(mut ps) = PositionSolver::new(m, &an.structure, an.need.clone()) {
+    if full_turn && let Ok(mut ps) = PositionSolver::new(m, &an.structure, an.need.clone()) {
+        {
             let q0 = solved[0].q;
             let dir = if solved[0].rate < 0.0 { -1.0 } else { 1.0 };
             let mut ok = true;
