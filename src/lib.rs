@@ -14,6 +14,8 @@ pub mod geom;
 pub mod json;
 pub mod mechanism;
 pub mod positions;
+pub mod precision;
+pub mod reference;
 pub mod report;
 pub mod scene;
 pub mod solve;

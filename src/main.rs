@@ -85,6 +85,28 @@ enum Command {
         /// Language of the annotations: en, uk or ru (default: the scene's want.lang).
         #[arg(long)]
         lang: Option<String>,
+        /// Write DIR/handout.html instead of the sheets: one offline page with every
+        /// position's drawings, the plans drawn step by step (Next/Previous, ← →) with
+        /// their lecture-style sentences, and the result tables.
+        #[arg(long, conflicts_with_all = ["format", "dpi", "sheet", "title_block", "table"])]
+        html: bool,
+    },
+    /// Work-precision report: each method's error against an extended-precision reference, and its run time.
+    Precision {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Folder to write NAME.md, NAME.svg and NAME.png into (default: print the table).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Monte Carlo seeds of the emulated hand drafting.
+        #[arg(long, default_value_t = 200)]
+        seeds: u64,
+        /// Compare at this many positions of a revolution (default: the scene's, or 36).
+        #[arg(long)]
+        positions: Option<usize>,
+        /// Least wall time of one timing batch, seconds.
+        #[arg(long, default_value_t = 0.1)]
+        min_time: f64,
     },
 }
 
@@ -141,6 +163,13 @@ fn main() -> ExitCode {
     }
     let result = match cli.command {
         Some(Command::Check { .. }) => unreachable!("handled above"),
+        Some(Command::Precision {
+            scene,
+            output,
+            seeds,
+            positions,
+            min_time,
+        }) => precision(&scene, output.as_deref(), seeds, positions, min_time),
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
@@ -163,6 +192,7 @@ fn main() -> ExitCode {
                     title_block: false,
                     table: false,
                     lang: None,
+                    html: false,
                 },
             )
         }),
@@ -175,6 +205,7 @@ fn main() -> ExitCode {
             table,
             dpi,
             lang,
+            html,
         }) => match std::fs::read_to_string(&scene) {
             Ok(text) => draw(
                 &text,
@@ -187,6 +218,7 @@ fn main() -> ExitCode {
                     title_block,
                     table,
                     lang,
+                    html,
                 },
             ),
             Err(source) => Err(Error::Io {
@@ -332,6 +364,8 @@ struct DrawArgs {
     title_block: bool,
     table: bool,
     lang: Option<String>,
+    /// The step-by-step handout instead of the sheets.
+    html: bool,
 }
 
 fn parse_lang(l: &Option<String>) -> Result<Option<Lang>, Error> {
@@ -370,6 +404,11 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
     let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(with_file_name(name))?;
     let solved = analysis.run()?;
+    if a.html {
+        let path = drawing::html::write_handout(&analysis, &solved, lang, &a.dir)?;
+        println!("wrote {}", path.display());
+        return Ok(());
+    }
     let opt = DrawOptions {
         sheet,
         lang,
@@ -462,4 +501,60 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
         let _ = std::fs::remove_file(&tmp);
         io(e)
     })
+}
+
+/// `mechplan precision`: the work-precision table (and plot with -o).
+fn precision(
+    scene: &Path,
+    dir: Option<&Path>,
+    seeds: u64,
+    positions: Option<usize>,
+    min_time: f64,
+) -> Result<(), Error> {
+    use mechplan::precision;
+    let name = scene.display().to_string();
+    let text = std::fs::read_to_string(scene).map_err(|source| Error::Io {
+        path: name.clone(),
+        source,
+    })?;
+    if !(min_time.is_finite() && min_time > 0.0) {
+        return Err(Error::scene(
+            "--min-time",
+            "must be a positive number of seconds",
+        ));
+    }
+    let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
+    let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
+    let settings = precision::Settings {
+        seeds,
+        positions,
+        min_time,
+        ..precision::Settings::default()
+    };
+    let report = precision::run(&analysis, &settings)?;
+    let table = precision::to_markdown(&report);
+    let Some(dir) = dir else {
+        let _ = std::io::stdout().write_all(table.as_bytes());
+        return Ok(());
+    };
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
+        path: dir.display().to_string(),
+        source,
+    })?;
+    let stem = scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "scene".into());
+    let svg = precision::to_svg(&report, &format!("{stem}: error against run time"));
+    let png = mechplan::drawing::png(&svg, 150.0)?;
+    for (ext, bytes) in [
+        ("md", table.as_bytes()),
+        ("svg", svg.as_bytes()),
+        ("png", png.as_slice()),
+    ] {
+        let path = dir.join(format!("{stem}.{ext}"));
+        mechplan::write_atomically(&path, bytes)?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
 }

@@ -163,7 +163,10 @@ fn triad_geom(m: &Mechanism, t: &Triad) -> TriadGeom {
 impl Branches {
     /// Read every group's branch off the sketch.
     pub fn from_sketch(m: &Mechanism, s: &Structure) -> Result<Branches> {
-        let tol = 1e-9 * m.size * m.size;
+        // Relative to the group's own lengths (`dyad_sign` is a sine or a
+        // cosine), not to the sketch's size: a far point of some other link
+        // must not make a group in general position look like a dead point.
+        let tol = 1e-9;
         let mut sign = Vec::new();
         let mut triad_pose = Vec::new();
         for g in &s.groups {
@@ -201,17 +204,19 @@ fn dyad_sign(m: &Mechanism, d: &Dyad) -> f64 {
                 sketch(m, point_of(d.mid.joint)),
                 sketch(m, point_of(d.ext2.joint)),
             );
-            (dd - b).cross(c - b)
+            (dd - b).cross(c - b) / ((dd - b).hypot() * (c - b).hypot()).max(f64::MIN_POSITIVE)
         }
         DyadKind::Rrp => {
             let b = sketch(m, point_of(d.ext1.joint));
             let c = sketch(m, point_of(d.mid.joint));
             (c - b).dot(sketch_guide_dir(m, pair_of(d.ext2.joint)))
+                / (c - b).hypot().max(f64::MIN_POSITIVE)
         }
         DyadKind::Rpr => {
             let rg = rocking_guide(m, d);
             let u = sketch_guide_dir(m, pair_of(d.mid.joint));
-            u.dot(sketch(m, rg.pin_slider) - sketch(m, rg.pin_guide))
+            let w = sketch(m, rg.pin_slider) - sketch(m, rg.pin_guide);
+            u.dot(w) / w.hypot().max(f64::MIN_POSITIVE)
         }
         DyadKind::Prp | DyadKind::Rpp => 1.0,
     }
@@ -554,7 +559,10 @@ fn solve_triad(
     let r = residual(&pose).iter().map(|x| x.abs()).fold(0.0, f64::max);
     // |J − E|² − r² ≈ 2·r·δ: a residual of 1e-13·size² is a length error of
     // order 1e-13·size.
-    if !converged || !r.is_finite() || r > 1e-13 * size * size {
+    // Near the group's dead point the steps need not fall below 1e-14·size
+    // (the nearly singular system amplifies rounding), but a residual at
+    // the level of rounding still means the group closes.
+    if !(converged || r <= 1e-15 * size * size) || !r.is_finite() || r > 1e-13 * size * size {
         return Err(format!(
             "no position of the base link {} near the previous one closes the group (residual {r:.2e} m²)",
             m.link_id(t.base)

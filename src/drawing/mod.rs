@@ -5,6 +5,7 @@
 //! the kernel knows nothing of SVG.
 
 pub mod canvas;
+pub mod html;
 pub mod mechanism;
 pub mod plan;
 pub mod positions;

@@ -1,0 +1,149 @@
+//! Regression tests from fuzzing (`fuzz/`, target `scene`; see
+//! `docs/fuzzing.md`) and the reader's size limits. Every crashing input
+//! the fuzzer finds becomes a named test here, inline, asserting a clean
+//! error or success; the limits each get a test with its message.
+
+use mechplan::drawing::{DrawOptions, sheets};
+use mechplan::scene::{MAX_FILE_BYTES, MAX_LINKS, MAX_MAGNITUDE, MAX_POINTS, MAX_POSITIONS};
+use mechplan::{Analysis, Error, Scene};
+use std::fmt::Write as _;
+
+/// What the fuzz target does: read, analyse, solve, draw; `Err` is fine,
+/// a panic is not.
+fn pipeline(text: &str) -> Result<usize, Error> {
+    let scene = Scene::from_json(text)?;
+    let an = Analysis::new(scene)?;
+    let solved = an.run()?;
+    Ok(sheets(&an, &solved, &DrawOptions::default()).len())
+}
+
+/// The error message of a scene the reader must reject.
+fn rejected(text: &str) -> String {
+    match Scene::from_json(text) {
+        Ok(_) => panic!("accepted a scene beyond a limit"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// A valid four-bar whose `points`, `links`, `positions` can be grown.
+fn four_bar(extra_points: &str, extra_links: &str, positions: &str) -> String {
+    format!(
+        r#"{{"mechplan": 1,
+  "points": {{"O1": [0, 0], "A": [0.070710678118655, 0.070710678118655],
+             "B": [0.340242120247775, 0.2939880878667], "O3": [0.4, 0]{extra_points}}},
+  "links": {{"0": {{"points": ["O1", "O3"]}}, "1": {{"points": ["O1", "A"]}},
+            "2": {{"points": ["A", "B"]}}, "3": {{"points": ["O3", "B"]}}{extra_links}}},
+  "lengths": {{"O1-A": 0.1, "A-B": 0.35, "O3-B": 0.3}},
+  "input": {{"link": "1", "pivot": "O1", "angle": 45, "omega": 10}}{positions}}}"#
+    )
+}
+
+#[test]
+fn the_base_scene_solves() {
+    assert_eq!(pipeline(&four_bar("", "", "")).unwrap(), 3);
+}
+
+#[test]
+fn fixtures_and_stress_catalogue_never_panic() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
+    for dir in [root.clone(), root.join("stress")] {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension().is_some_and(|x| x == "json") && !p.ends_with("004_table1.json") {
+                let text = std::fs::read_to_string(&p).unwrap();
+                // Either outcome is fine; reaching here without a panic is the test.
+                let _ = pipeline(&text);
+            }
+        }
+    }
+}
+
+#[test]
+fn limit_file_length() {
+    let mut text = four_bar("", "", "");
+    text.push_str(&" ".repeat(MAX_FILE_BYTES + 1 - text.len()));
+    assert_eq!(text.len(), MAX_FILE_BYTES + 1);
+    let e = rejected(&text);
+    assert!(
+        e.contains(&format!("the file has {} bytes", MAX_FILE_BYTES + 1))
+            && e.contains(&format!("at most {MAX_FILE_BYTES}")),
+        "{e}"
+    );
+    // Exactly at the limit the file is read.
+    text.pop();
+    assert!(Scene::from_json(&text).is_ok());
+}
+
+#[test]
+fn limit_points() {
+    let mut extra = String::new();
+    for k in 0..=MAX_POINTS - 4 {
+        write!(extra, r#", "P{k}": [{k}, 1]"#).unwrap();
+    }
+    let e = rejected(&four_bar(&extra, "", ""));
+    assert!(
+        e.contains(&format!(
+            "/points: {} points; at most {MAX_POINTS}",
+            MAX_POINTS + 1
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn limit_links() {
+    let mut extra = String::new();
+    for k in 4..=MAX_LINKS {
+        write!(extra, r#", "{k}": {{"points": ["A", "B"]}}"#).unwrap();
+    }
+    let e = rejected(&four_bar("", &extra, ""));
+    assert!(
+        e.contains(&format!(
+            "/links: {} links; at most {MAX_LINKS}",
+            MAX_LINKS + 1
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn limit_positions_list() {
+    let list = vec!["45"; MAX_POSITIONS + 1].join(",");
+    let e = rejected(&four_bar(
+        "",
+        "",
+        &format!(r#", "positions": {{"angles": [{list}]}}"#),
+    ));
+    assert!(
+        e.contains(&format!(
+            "/positions/angles: {} positions; at most {MAX_POSITIONS}",
+            MAX_POSITIONS + 1
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn limit_positions_count() {
+    let e = rejected(&four_bar(
+        "",
+        "",
+        &format!(r#", "positions": {{"count": {}}}"#, MAX_POSITIONS + 1),
+    ));
+    assert!(
+        e.contains(&format!(
+            "/positions/count: expected a whole number from 1 to {MAX_POSITIONS}"
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn limit_magnitude() {
+    let text = four_bar("", "", "").replace(r#""omega": 10"#, r#""omega": 1e101"#);
+    let e = rejected(&text);
+    assert!(
+        e.contains("/input/omega") && e.contains(&format!("{MAX_MAGNITUDE:e}")),
+        "{e}"
+    );
+}

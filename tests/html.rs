@@ -1,0 +1,243 @@
+//! The step-by-step handout (`mechplan draw --html`), checked offline:
+//! one self-contained file (nothing fetched from anywhere), every step's
+//! sentence present in its plan, every step revealing something
+//! (`data-step` values cover 1..=steps for each plan, the drawing steps in
+//! the SVG itself). The page's behaviour in a browser is checked by
+//! tests/html_handout.sh (headless Chromium).
+
+mod common;
+use common::*;
+use mechplan::construction::text::{Lang, sentence};
+use mechplan::construction::{Op, Plan};
+use mechplan::drawing::canvas::{Canvas, Prim};
+use mechplan::drawing::html::{handout, rich};
+use mechplan::drawing::plan::{draw_steps, made_at};
+use std::collections::BTreeSet;
+
+fn fixture_handout(name: &str, lang: Lang) -> (Vec<mechplan::Solved>, String) {
+    let scene = mechplan::Scene::from_json(&fixture(name).to_string()).unwrap();
+    let (an, s) = solve(scene);
+    let h = handout(&an, &s, lang);
+    (s, h)
+}
+
+/// The text between `start` (inclusive) and the next `end` after it.
+fn between<'a>(s: &'a str, start: &str, end: &str) -> Option<&'a str> {
+    let i = s.find(start)?;
+    let j = s[i..].find(end)? + i;
+    Some(&s[i..j + end.len()])
+}
+
+/// Text content: tags dropped, entities decoded.
+fn text(html: &str) -> String {
+    let mut out = String::new();
+    let mut tag = false;
+    for c in html.chars() {
+        match c {
+            '<' => tag = true,
+            '>' if tag => tag = false,
+            c if !tag => out.push(c),
+            _ => {}
+        }
+    }
+    out.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&amp;", "&")
+}
+
+/// A sentence compared by its letters: the notation's `_` and `^` become
+/// sub- and superscripts on the page, and underlines are combining marks.
+fn letters(s: &str) -> String {
+    s.chars()
+        .filter(|c| !matches!(c, '_' | '^' | '\u{300}'..='\u{36f}'))
+        .collect()
+}
+
+/// Values of `attr="…"` in `html`.
+fn attr_values(html: &str, attr: &str) -> Vec<String> {
+    let pat = format!(" {attr}=\"");
+    html.match_indices(&pat)
+        .map(|(i, _)| {
+            let rest = &html[i + pat.len()..];
+            rest[..rest.find('"').unwrap()].to_string()
+        })
+        .collect()
+}
+
+/// The figure of a plan: `pos-1-v`, `pos-3-a`.
+fn figure<'a>(h: &'a str, pos: usize, kind: &str) -> &'a str {
+    between(h, &format!("id=\"pos-{pos}-{kind}\""), "</figure>")
+        .unwrap_or_else(|| panic!("no figure pos-{pos}-{kind}"))
+}
+
+fn plans(s: &mechplan::Solved) -> Vec<(&'static str, &Plan)> {
+    let p = s.plans.as_ref().unwrap();
+    let mut v = vec![("v", &p.velocity)];
+    if let Some(a) = &p.acceleration {
+        v.push(("a", a));
+    }
+    v
+}
+
+/// Nothing outside the file: no web addresses but the SVG namespace, no
+/// linked style sheets, scripts, images, frames, fonts or imports.
+#[test]
+fn handout_is_self_contained() {
+    for name in FIXTURES {
+        let (_, h) = fixture_handout(name, Lang::En);
+        let rest = h.replace("http://www.w3.org/2000/svg", "");
+        assert!(
+            !rest.contains("http://") && !rest.contains("https://") && !rest.contains("//cdn"),
+            "{name}: a web address in the handout"
+        );
+        for bad in [
+            "<link",
+            "src=",
+            "href=",
+            "@import",
+            "url(",
+            "<iframe",
+            "<img",
+            "<object",
+            "<embed",
+            "fetch(",
+            "XMLHttpRequest",
+            "import(",
+        ] {
+            assert!(!h.contains(bad), "{name}: the handout has {bad}");
+        }
+        assert!(h.starts_with("<!DOCTYPE html>") && h.ends_with("</html>\n"));
+        assert_eq!(h.matches("<style>").count(), 1);
+        // Every SVG inline, and ids unique in the page.
+        let ids = attr_values(&h, "id");
+        let unique: BTreeSet<&String> = ids.iter().collect();
+        assert_eq!(unique.len(), ids.len(), "{name}: duplicate ids");
+    }
+}
+
+/// Each plan's steps listed in order with their sentences, in the language asked.
+#[test]
+fn every_sentence_is_in_its_plan() {
+    for name in ["six_link_fig2_10", "shaper_fig2_11"] {
+        for lang in [Lang::En, Lang::Uk, Lang::Ru] {
+            let (solved, h) = fixture_handout(name, lang);
+            for (k, s) in solved.iter().enumerate() {
+                for (kind, plan) in plans(s) {
+                    let fig = figure(&h, k + 1, kind);
+                    assert_eq!(
+                        attr_values(fig, "data-steps"),
+                        vec![plan.steps.len().to_string()]
+                    );
+                    for i in 0..plan.steps.len() {
+                        let li = between(fig, &format!("<li data-step=\"{}\">", i + 1), "</li>")
+                            .unwrap_or_else(|| {
+                                panic!("{name} pos {} {kind}: no step {}", k + 1, i + 1)
+                            });
+                        let want = sentence(plan, i, lang);
+                        assert_eq!(
+                            letters(&text(li)),
+                            letters(&want),
+                            "{name} pos {} {kind} step {}",
+                            k + 1,
+                            i + 1
+                        );
+                        assert!(li.contains(&rich(&want)));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Every step reveals something: `data-step` covers 1..=steps in each
+/// plan's figure; in its SVG, every step that draws (all but the vector
+/// equations and the shared ω/ε of a prismatic pair); `data-until` after
+/// `data-step`.
+#[test]
+fn data_steps_cover_every_step() {
+    for name in FIXTURES {
+        let (solved, h) = fixture_handout(name, Lang::En);
+        for (k, s) in solved.iter().enumerate() {
+            for (kind, plan) in plans(s) {
+                let at = format!("{name} pos {} {kind}", k + 1);
+                let fig = figure(&h, k + 1, kind);
+                let n = plan.steps.len();
+                let all: BTreeSet<usize> = attr_values(fig, "data-step")
+                    .iter()
+                    .map(|v| v.parse().unwrap())
+                    .collect();
+                assert_eq!(all, (1..=n).collect(), "{at}");
+                let svg = between(fig, "<svg", "</svg>").unwrap();
+                let drawn: BTreeSet<usize> = attr_values(svg, "data-step")
+                    .iter()
+                    .map(|v| v.parse().unwrap())
+                    .collect();
+                for (i, step) in plan.steps.iter().enumerate() {
+                    let draws = !matches!(step.op, Op::Equation { .. } | Op::Same { .. });
+                    assert_eq!(drawn.contains(&(i + 1)), draws, "{at} step {}", i + 1);
+                }
+                // Each group's until comes after its step.
+                for g in svg.split("<g ").skip(1) {
+                    let head = &g[..g.find('>').unwrap()];
+                    let s: usize = attr_values(&format!(" {head}"), "data-step")[0]
+                        .parse()
+                        .unwrap();
+                    if let Some(u) = attr_values(&format!(" {head}"), "data-until").first() {
+                        assert!(u.parse::<usize>().unwrap() > s, "{at}: {head}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// `draw_steps` tags every primitive with a step, and a point's dot is
+/// never shown before the step that made the point; `draw` draws the same.
+#[test]
+fn draw_steps_tags_every_primitive() {
+    for name in FIXTURES {
+        let scene = mechplan::Scene::from_json(&fixture(name).to_string()).unwrap();
+        let (an, solved) = solve(scene);
+        for s in &solved {
+            for (_, plan) in plans(s) {
+                let mut c = Canvas::default();
+                let tags = draw_steps(plan, &mut c, &an.points);
+                assert_eq!(tags.len(), c.prims.len());
+                assert!(tags.iter().all(|&t| t < plan.steps.len()));
+                let made = made_at(plan);
+                for (p, &t) in c.prims.iter().zip(&tags) {
+                    if let Prim::Circle { id: Some(id), .. } = p {
+                        let key = id.strip_prefix("pt-").unwrap();
+                        let i = plan.points.iter().position(|q| q.key == key).unwrap();
+                        assert!(made[i].is_none_or(|m| m <= t), "{name}: {id}");
+                    }
+                }
+                let mut d = Canvas::default();
+                mechplan::drawing::plan::draw(plan, &mut d, &an.points);
+                let (mut a, mut b) = (String::new(), String::new());
+                c.write(&mut a, 0.0, 0.0);
+                d.write(&mut b, 0.0, 0.0);
+                assert_eq!(a, b);
+            }
+        }
+    }
+}
+
+#[test]
+fn notation_as_on_the_board() {
+    assert_eq!(rich("v_B3C"), "v<sub>B3C</sub>");
+    assert_eq!(rich("a^n_BA"), "a<sup>n</sup><sub>BA</sub>");
+    assert_eq!(rich("p_vb3 = 5"), "p<sub>v</sub>b<sub>3</sub> = 5");
+    assert_eq!(rich("μ_a = 0.05"), "μ<sub>a</sub> = 0.05");
+    assert_eq!(
+        rich("ω3 = 1.5 rad/s, O2B"),
+        "ω<sub>3</sub> = 1.5 rad/s, O<sub>2</sub>B"
+    );
+    assert_eq!(rich("a < b & c"), "a &lt; b &amp; c");
+    // Doubly underlined (known) vectors keep their underlines.
+    assert_eq!(
+        rich("v\u{333}_\u{333}B\u{333}"),
+        "v\u{333}<sub>B\u{333}</sub>"
+    );
+}

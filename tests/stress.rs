@@ -1,0 +1,543 @@
+//! The stress catalogue `fixtures/stress/*.json`: dead centres, branch
+//! points, extreme link-length ratios and speeds, nearly parallel guides and
+//! leashes, coincident points. For every file, `mechplan solve` must either
+//! succeed with every reported number within its own error bound of an
+//! independent reference, or refuse with a clear message ("singular
+//! position" / "cannot be assembled"): never a silently wrong number.
+//!
+//! **The reference.** The extended-precision reference
+//! (`mechplan::reference`, about 50 digits) of the scene, and of the same
+//! scene driven at unit rate without acceleration (its rates are the
+//! transfer functions). Where it does not solve a position: route (b)'s
+//! formulation re-solved with a tighter Newton tolerance (corrections down
+//! to 1e-16 of the sketch size, no conditioning limit) and central finite
+//! differences of those positions, v = ω1·P', a = ω1²·P'' + ε1·P', with the
+//! step chosen per quantity from h, h/4, h/16 … as the one whose estimate
+//! changes least to the next step (that change ×2 is its error estimate).
+//!
+//! **The bounds.** Plans: each measured value against the reference within
+//! the plan's own drafting bound (`measured[].bound`). Analytic routes (the
+//! reported `p`, `v`, `a`, angles, ω, ε and their transfer functions):
+//! within
+//!
+//!   (c·ε·κ + 4·d)·S,   κ = 1 / `crosscheck.conditioning`, c = 256,
+//!
+//! where ε = 2⁻⁵², d = `crosscheck.max_rel_diff` and S is the position's
+//! scale of that kind (the sketch size for positions; the largest |v| or
+//! |ω|·size for velocities; the largest |a|, |ε|·size or ω²·size for
+//! accelerations; the same at unit input rate for transfer functions).
+//! c·ε·κ is the first-order effect of rounding on the linear systems
+//! (κ amplifies a relative perturbation of Φ_q·q̇ = b; c covers the few
+//! dozen roundings per equation and their accumulation through the
+//! groups). Near a dead point the positions' own rounding error is
+//! amplified again (second order in κ); the difference d between the two
+//! independent routes measures that part.
+
+use mechplan::analytic::constraint::{ConstraintSolver, Settings};
+use mechplan::scene::{InputSpec, PositionsSpec};
+use mechplan::{Analysis, Scene};
+use serde_json::Value;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const C: f64 = 256.0;
+
+/// Positions mechplan answers although the exact mechanism has no
+/// well-defined answer there (the extended-precision reference does not
+/// converge): known silently-wrong numbers, reported to the lead. The test
+/// checks that each still reproduces, so a fix shows up here.
+const KNOWN_UNVERIFIABLE: &[(&str, f64, &str)] = &[(
+    "class3_three_leashes_parallel_1e-9",
+    0.5235987755982988,
+    "the three leashes are parallel to 1e-9 rad, so the sketch angle is within rounding of the \
+     group's dead point (a fold: q is ~δ² = 1e-18 from it); mechplan reports ω4 = 2.9e8 rad/s, \
+     ε4 = −1.2e25 rad/s² with conditioning 7e-11 (> the 1e-13 limit) and the routes agreeing to \
+     3e-7, but rounding of the data alone decides these values",
+)];
+
+fn stress_files() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/stress");
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    v.sort();
+    v
+}
+
+/// The reference state of one position: every reported point's place and
+/// the angle of every solved link, as functions of the input coordinate.
+struct Probe<'a> {
+    an: &'a Analysis,
+    cs: ConstraintSolver<'a>,
+}
+
+impl<'a> Probe<'a> {
+    fn new(an: &'a Analysis) -> Self {
+        let settings = Settings {
+            tol: 1e-16,
+            max_iter: 200,
+            min_conditioning: 0.0,
+        };
+        Probe {
+            an,
+            cs: ConstraintSolver::new(&an.mech, &an.include, settings),
+        }
+    }
+
+    /// [x, y of every reported point…, θ of every solved link…] at q
+    /// (angles unwrapped near `near`).
+    fn state(&mut self, q: f64, near: Option<&[f64]>) -> Option<Vec<f64>> {
+        self.cs.solve_positions(q).ok()?;
+        let mo = self
+            .cs
+            .solve_rates(1.0, 0.0, mechplan::analytic::Order::Velocity)
+            .ok()?;
+        let m = &self.an.mech;
+        let mut out = Vec::new();
+        for &p in &self.an.points {
+            let l = self.an.carrier(p);
+            let at = mo[l].unwrap().pose.apply(m.local(l, p));
+            out.extend([at.x, at.y]);
+        }
+        let k0 = out.len();
+        for l in (0..m.links.len()).filter(|&l| self.an.include[l]) {
+            out.push(mo[l].unwrap().pose.angle);
+        }
+        if let Some(near) = near {
+            for k in k0..out.len() {
+                let d = out[k] - near[k];
+                out[k] -= (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+            }
+        }
+        Some(out)
+    }
+}
+
+/// Reference values at q, each with its error estimate: the state
+/// (points' x, y, then links' angles), its real rates (v, a; ω, ε) and its
+/// transfer functions (first and second derivatives in q).
+struct Reference {
+    x: Vec<f64>,
+    v: Vec<f64>,
+    ev: Vec<f64>,
+    a: Vec<f64>,
+    ea: Vec<f64>,
+    d1: Vec<f64>,
+    e1: Vec<f64>,
+    d2: Vec<f64>,
+    e2: Vec<f64>,
+}
+
+/// The extended-precision reference (`mechplan::reference`, about 50
+/// digits) when it solves the position; the finite differences otherwise.
+fn reference(an: &Analysis, unit: &Analysis, q: f64) -> Option<(Reference, &'static str)> {
+    if let Some(r) = extended(an, unit, q) {
+        return Some((r, "extended precision"));
+    }
+    finite_differences(an, q).map(|r| (r, "finite differences"))
+}
+
+/// State, first and second time derivatives from the extended reference.
+fn extended_state(an: &Analysis, q: f64) -> Option<[Vec<f64>; 3]> {
+    let st = mechplan::reference::solve(an, q).ok()?;
+    let m = &an.mech;
+    let mut out = [Vec::new(), Vec::new(), Vec::new()];
+    for &p in &an.points {
+        let (at, v, a) = st.point(an, p).to_f64();
+        out[0].extend([at.x, at.y]);
+        out[1].extend([v.x, v.y]);
+        out[2].extend([a.x, a.y]);
+    }
+    for l in (0..m.links.len()).filter(|&l| an.include[l]) {
+        let mo = st.links[l].as_ref()?;
+        out[0].push(mo.angle.to_f64());
+        out[1].push(mo.omega.to_f64());
+        out[2].push(mo.epsilon.to_f64());
+    }
+    Some(out)
+}
+
+/// `unit`: the same scene driven at unit rate without acceleration, whose
+/// rates are the transfer functions.
+fn extended(an: &Analysis, unit: &Analysis, q: f64) -> Option<Reference> {
+    let [x, v, a] = extended_state(an, q)?;
+    let [_, d1, d2] = extended_state(unit, q)?;
+    // Rounded to f64 once: an ulp or two.
+    let ulps = |v: &[f64]| v.iter().map(|y| 2.0 * f64::EPSILON * y.abs()).collect();
+    Some(Reference {
+        ev: ulps(&v),
+        ea: ulps(&a),
+        e1: ulps(&d1),
+        e2: ulps(&d2),
+        x,
+        v,
+        a,
+        d1,
+        d2,
+    })
+}
+
+fn finite_differences(an: &Analysis, q: f64) -> Option<Reference> {
+    let mut probe = Probe::new(an);
+    let x = probe.state(q, None)?;
+    let crank = matches!(an.mech.scene.input, InputSpec::Crank { .. });
+    let h0 = if crank { 1e-2 } else { 1e-2 * an.mech.size };
+    let n = x.len();
+    let mut est: Vec<(Vec<f64>, Vec<f64>, f64)> = Vec::new();
+    let mut h = h0;
+    for _ in 0..20 {
+        let a = probe.state(q + h, Some(&x));
+        let b = probe.state(q - h, Some(&x));
+        probe.state(q, None);
+        if let (Some(a), Some(b)) = (a, b) {
+            let d1: Vec<f64> = (0..n).map(|k| (a[k] - b[k]) / (2.0 * h)).collect();
+            let d2: Vec<f64> = (0..n)
+                .map(|k| (a[k] - 2.0 * x[k] + b[k]) / (h * h))
+                .collect();
+            est.push((d1, d2, h));
+        }
+        h /= 4.0;
+    }
+    if est.len() < 2 {
+        return None;
+    }
+    let pick = |which: usize, k: usize| -> (f64, f64) {
+        let val = |e: &(Vec<f64>, Vec<f64>, f64)| if which == 1 { e.0[k] } else { e.1[k] };
+        let mut best = (f64::NAN, f64::INFINITY);
+        for w in est.windows(2) {
+            let change = (val(&w[1]) - val(&w[0])).abs();
+            // Rounding floor: ε·|x|/h (first) or 4ε·|x|/h² (second).
+            let h = w[1].2;
+            let floor = if which == 1 {
+                f64::EPSILON * x[k].abs().max(an.mech.size) / h
+            } else {
+                4.0 * f64::EPSILON * x[k].abs().max(an.mech.size) / (h * h)
+            };
+            let e = 2.0 * change + floor;
+            if e < best.1 {
+                best = (val(&w[1]), e);
+            }
+        }
+        best
+    };
+    let (mut d1, mut e1, mut d2, mut e2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    for k in 0..n {
+        (d1[k], e1[k]) = pick(1, k);
+        (d2[k], e2[k]) = pick(2, k);
+    }
+    let (w1, r2) = an.mech.scene.input.rates();
+    Some(Reference {
+        v: d1.iter().map(|d| w1 * d).collect(),
+        ev: e1.iter().map(|e| w1.abs() * e).collect(),
+        a: (0..n).map(|k| w1 * w1 * d2[k] + r2 * d1[k]).collect(),
+        ea: (0..n).map(|k| w1 * w1 * e2[k] + r2.abs() * e1[k]).collect(),
+        x,
+        d1,
+        e1,
+        d2,
+        e2,
+    })
+}
+
+/// One compared number: what, reported, reference, allowed difference.
+struct Item {
+    what: String,
+    got: f64,
+    want: f64,
+    allowed: f64,
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap()
+}
+
+/// Every number of one reported position against the reference.
+fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
+    let m = &an.mech;
+    let eps = f64::EPSILON;
+    let kappa = 1.0 / num(&pos["crosscheck"]["conditioning"]);
+    let diff = num(&pos["crosscheck"]["max_rel_diff"]);
+    let np = an.points.len();
+    let links: Vec<usize> = (0..m.links.len()).filter(|&l| an.include[l]).collect();
+    // Scales of each kind at this position, from the reference: points'
+    // magnitudes, links' rates × size (and ω²·size for accelerations).
+    let scale = |v: &[f64], w2: Option<&[f64]>| -> f64 {
+        let mut s = f64::MIN_POSITIVE;
+        for k in 0..np {
+            s = s.max(v[2 * k].hypot(v[2 * k + 1]));
+        }
+        for j in 0..links.len() {
+            s = s.max(v[2 * np + j].abs() * m.size);
+            if let Some(w) = w2 {
+                s = s.max(w[2 * np + j].powi(2) * m.size);
+            }
+        }
+        s
+    };
+    let (sv, sa) = (scale(&r.v, None), scale(&r.a, Some(&r.v)));
+    let (sq, sqq) = (scale(&r.d1, None), scale(&r.d2, Some(&r.d1)));
+    let analytic = |s: f64| (C * eps * kappa + 4.0 * diff) * s;
+    let mut out = Vec::new();
+    for (k, &p) in an.points.iter().enumerate() {
+        let name = m.point_name(p);
+        let rp = &pos["points"][name];
+        for c in 0..2 {
+            let i = 2 * k + c;
+            for (key, want, allowed) in [
+                ("p", r.x[i], analytic(m.size)),
+                ("v", r.v[i], analytic(sv) + r.ev[i]),
+                ("a", r.a[i], analytic(sa) + r.ea[i]),
+                ("v_q", r.d1[i], analytic(sq) + r.e1[i]),
+                ("a_q", r.d2[i], analytic(sqq) + r.e2[i]),
+            ] {
+                if let Some(x) = rp[key].get(c) {
+                    out.push(Item {
+                        what: format!("{key}[{c}] of {name}"),
+                        got: num(x),
+                        want,
+                        allowed,
+                    });
+                }
+            }
+        }
+    }
+    for (j, &l) in links.iter().enumerate() {
+        let i = 2 * np + j;
+        let id = m.link_id(l);
+        let rl = &pos["links"][id];
+        // Angles are reported in degrees, in (−180°, 180°].
+        let ang = num(&rl["angle"]).to_radians();
+        let d = r.x[i] - ang;
+        let d = d - (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+        out.push(Item {
+            what: format!("angle of link {id}"),
+            got: ang,
+            want: ang + d,
+            allowed: analytic(1.0) + 1e-14,
+        });
+        for (key, want, allowed) in [
+            ("omega", r.v[i], analytic(sv) / m.size + r.ev[i]),
+            ("epsilon", r.a[i], analytic(sa) / m.size + r.ea[i]),
+            ("phi_q", r.d1[i], analytic(sq) / m.size + r.e1[i]),
+            ("phi_qq", r.d2[i], analytic(sqq) / m.size + r.e2[i]),
+        ] {
+            if let Some(x) = rl.get(key) {
+                out.push(Item {
+                    what: format!("{key} of link {id}"),
+                    got: num(x),
+                    want,
+                    allowed,
+                });
+            }
+        }
+    }
+    // The plans: every measured quantity whose segment joins named points
+    // (or the pole), and every ω, ε measured, within its drafting bound.
+    let key_of: BTreeMap<String, usize> = an
+        .points
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| (m.point_name(p).to_lowercase(), k))
+        .collect();
+    for (plan, acc) in [("velocity", false), ("acceleration", true)] {
+        let Some(pl) = pos["plans"].get(plan) else {
+            continue;
+        };
+        for meas in pl["measured"].as_array().unwrap() {
+            let q = meas["quantity"].as_str().unwrap();
+            let value = num(&meas["value"]);
+            let bound = num(&meas["bound"]);
+            let (from, to) = (meas["from"].as_str().unwrap(), meas["to"].as_str().unwrap());
+            let link_rate = q
+                .strip_prefix(if acc { "ε" } else { "ω" })
+                .and_then(|id| links.iter().position(|&l| m.link_id(l) == id));
+            if let Some(j) = link_rate {
+                let i = 2 * np + j;
+                out.push(Item {
+                    what: format!("plan {q}"),
+                    got: value,
+                    want: if acc { r.a[i] } else { r.v[i] },
+                    allowed: bound + if acc { r.ea[i] } else { r.ev[i] },
+                });
+                continue;
+            }
+            // A vector between two named plan points (or the pole).
+            let at = |key: &str| -> Option<((f64, f64), f64)> {
+                if key.starts_with("p_") || frame_key(an, key) {
+                    return Some(((0.0, 0.0), 0.0));
+                }
+                let k = *key_of.get(key)?;
+                let (i, j) = (2 * k, 2 * k + 1);
+                Some(if acc {
+                    ((r.a[i], r.a[j]), r.ea[i].hypot(r.ea[j]))
+                } else {
+                    ((r.v[i], r.v[j]), r.ev[i].hypot(r.ev[j]))
+                })
+            };
+            if let (Some((a, ea)), Some((b, eb))) = (at(from), at(to)) {
+                out.push(Item {
+                    what: format!("plan {q} ({from}{to})"),
+                    got: value.abs(),
+                    want: (b.0 - a.0).hypot(b.1 - a.1),
+                    allowed: bound + ea + eb,
+                });
+            }
+        }
+    }
+    out
+}
+
+fn frame_key(an: &Analysis, key: &str) -> bool {
+    let m = &an.mech;
+    m.links[m.frame()]
+        .points
+        .iter()
+        .any(|&p| m.point_name(p).to_lowercase() == key)
+}
+
+fn clear_refusal(msg: &str) -> bool {
+    msg.contains("singular position") || msg.contains("cannot be assembled")
+}
+
+/// The outcome of one file through the binary and, position by position,
+/// through the library.
+#[test]
+fn stress_catalogue_is_right_or_refused() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let files = stress_files();
+    assert!(files.len() >= 20, "the stress catalogue is missing");
+    let mut report = String::new();
+    let mut failures = Vec::new();
+    for path in &files {
+        let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        let text = std::fs::read_to_string(path).unwrap();
+        let raw: Value = serde_json::from_str(&text).unwrap();
+        let title = raw["title"].as_str().unwrap_or("");
+        assert!(
+            title.starts_with("Stress: "),
+            "{name}: the title says what it stresses"
+        );
+        let out = Command::new(exe)
+            .args(["solve", path.to_str().unwrap(), "--format", "json"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !stderr.contains("panicked"),
+            "{name}: the binary panicked: {stderr}"
+        );
+        // Per position through the library: which positions are refused.
+        let scene = Scene::from_json(&text);
+        let scene = match scene {
+            Ok(s) => s,
+            Err(e) => {
+                // A scene refused by the reader: a clear message naming the field.
+                assert_eq!(out.status.code(), Some(2), "{name}");
+                assert!(stderr.contains("/"), "{name}: {stderr}");
+                report += &format!("{name}: rejected by the reader: {e}\n");
+                continue;
+            }
+        };
+        let an = Analysis::new(scene.clone()).unwrap();
+        let unit = {
+            let mut u = scene.clone();
+            match &mut u.input {
+                InputSpec::Crank { omega, epsilon, .. } => (*omega, *epsilon) = (1.0, 0.0),
+                InputSpec::Slider { v, a, .. } => (*v, *a) = (1.0, 0.0),
+            }
+            Analysis::new(u).unwrap()
+        };
+        let qs = an.input_values().unwrap();
+        let mut per = Vec::new();
+        for &q in &qs {
+            let mut one = scene.clone();
+            one.positions = PositionsSpec::List(vec![q]);
+            let a1 = Analysis::new(one).unwrap();
+            per.push(match a1.run() {
+                Ok(_) => "ok".to_string(),
+                Err(e) => {
+                    let msg = e.to_string();
+                    if !clear_refusal(&msg) {
+                        failures.push(format!("{name} at q = {q}: unclear refusal: {msg}"));
+                    }
+                    if msg.contains("singular") {
+                        "singular".into()
+                    } else {
+                        "no assembly".into()
+                    }
+                }
+            });
+        }
+        if !out.status.success() {
+            let msg = stderr.trim().to_string();
+            assert_eq!(out.status.code(), Some(2), "{name}: {msg}");
+            if !clear_refusal(&msg) {
+                failures.push(format!("{name}: unclear refusal: {msg}"));
+            }
+            report += &format!(
+                "{name}: refused ({}) [{}]\n",
+                first_line(&msg),
+                per.join(", ")
+            );
+            continue;
+        }
+        let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let positions = doc["positions"].as_array().unwrap();
+        assert_eq!(positions.len(), qs.len(), "{name}");
+        let mut worst = (0.0f64, String::new());
+        let mut compared = 0;
+        let mut hows = std::collections::BTreeSet::new();
+        for (pos, &q) in positions.iter().zip(&qs) {
+            let known = KNOWN_UNVERIFIABLE.iter().find(|k| k.0 == name && k.1 == q);
+            let Some((r, how)) = reference(&an, &unit, q) else {
+                match known {
+                    Some(k) => {
+                        report += &format!("{name} at q = {q}: KNOWN BUG, unverifiable: {}\n", k.2)
+                    }
+                    None => {
+                        let why = mechplan::reference::solve(&an, q).err();
+                        failures.push(format!("{name} at q = {q}: no reference ({why:?})"));
+                    }
+                }
+                continue;
+            };
+            if known.is_some() {
+                failures.push(format!(
+                    "{name} at q = {q}: has a reference now: remove it from KNOWN_UNVERIFIABLE"
+                ));
+            }
+            hows.insert(how);
+            for it in items(&an, pos, &r) {
+                compared += 1;
+                let d = (it.got - it.want).abs();
+                let ratio = d / it.allowed;
+                if d > it.allowed || d.is_nan() {
+                    failures.push(format!(
+                        "{name} at q = {q:.17}: {}: reported {:e}, reference {:e}, difference {d:.3e} > allowed {:.3e}",
+                        it.what, it.got, it.want, it.allowed
+                    ));
+                }
+                if ratio > worst.0 || ratio.is_nan() {
+                    worst = (ratio, it.what);
+                }
+            }
+        }
+        report += &format!(
+            "{name}: solved, {} positions, {compared} numbers against {hows:?}, worst difference/allowed {:.2e} ({}) [{}]\n",
+            positions.len(),
+            worst.0,
+            worst.1,
+            per.join(", ")
+        );
+    }
+    eprintln!("{report}");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+fn first_line(s: &str) -> String {
+    let l = s.lines().next().unwrap_or("");
+    l.strip_prefix("mechplan: ").unwrap_or(l).to_string()
+}
