@@ -30,36 +30,81 @@ pub fn wrap_pi(a: f64) -> f64 {
 }
 
 /// The pose of a link: where its local frame sits in the world.
-/// `world(p) = origin + R(angle)·p`.
+/// `world(p) = origin + R(angle)·p`. The pose carries the sine and cosine
+/// of its angle, computed once where it is made: every point of a link is
+/// placed by the same rotation, and the trigonometry would otherwise be
+/// repeated for each (it was a quarter of a position's time).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pose {
     pub origin: Point,
     pub angle: f64,
+    sin: f64,
+    cos: f64,
 }
 
 impl Pose {
     pub const IDENTITY: Pose = Pose {
         origin: Point::ORIGIN,
         angle: 0.0,
+        sin: 0.0,
+        cos: 1.0,
     };
+
+    /// The pose with origin `origin` turned by `angle`.
+    #[inline]
+    pub fn new(origin: Point, angle: f64) -> Pose {
+        let (sin, cos) = angle.sin_cos();
+        Pose {
+            origin,
+            angle,
+            sin,
+            cos,
+        }
+    }
 
     /// World position of a point given in the link's local frame.
     #[inline]
     pub fn apply(&self, local: Vec2) -> Point {
-        self.origin + rotate(local, self.angle)
+        self.origin + self.dir(local)
     }
 
     /// World direction of a direction given in the local frame.
     #[inline]
     pub fn dir(&self, local: Vec2) -> Vec2 {
-        rotate(local, self.angle)
+        Vec2::new(
+            self.cos * local.x - self.sin * local.y,
+            self.sin * local.x + self.cos * local.y,
+        )
+    }
+
+    /// Local coordinates of a world point (the inverse of [`Pose::apply`]).
+    #[inline]
+    pub fn local(&self, world: Point) -> Vec2 {
+        let d = world - self.origin;
+        Vec2::new(
+            self.cos * d.x + self.sin * d.y,
+            -self.sin * d.x + self.cos * d.y,
+        )
     }
 
     /// The pose that puts local point `local` at world point `at`, turned by `angle`.
     pub fn through(at: Point, local: Vec2, angle: f64) -> Pose {
-        Pose {
-            origin: at - rotate(local, angle),
+        let (sin, cos) = angle.sin_cos();
+        Pose::through_turned(at, local, angle, (cos, sin))
+    }
+
+    /// As [`Pose::through`], with the cosine and sine of `angle` already
+    /// known (from two directions, without trigonometry).
+    pub fn through_turned(at: Point, local: Vec2, angle: f64, (cos, sin): (f64, f64)) -> Pose {
+        let turned = Pose {
+            origin: Point::ORIGIN,
             angle,
+            sin,
+            cos,
+        };
+        Pose {
+            origin: at - turned.dir(local),
+            ..turned
         }
     }
 }

@@ -198,14 +198,11 @@ fn rigid_link(scene: &Scene, l: usize, size: f64, issues: &mut Vec<Issue>) -> Li
         };
     }
     let mut local = vec![Vec2::ZERO; pts.len()];
-    let mut pose = Pose {
-        origin: sketch(scene, pts[0]),
-        angle: 0.0,
-    };
+    let mut pose = Pose::new(sketch(scene, pts[0]), 0.0);
     if pts.len() == 1 {
         // A one-point link is a slider: its angle is its guide's direction.
         match scene.sliders.iter().position(|s| s.slider == l) {
-            Some(k) => pose.angle = sketch_guide_dir(scene, k).atan2(),
+            Some(k) => pose = Pose::new(pose.origin, sketch_guide_dir(scene, k).atan2()),
             None => issues.push(Issue {
                 pointer: format!("{}/points", link_ptr(scene, l)),
                 message: format!(
@@ -239,7 +236,7 @@ fn rigid_link(scene: &Scene, l: usize, size: f64, issues: &mut Vec<Issue>) -> Li
             sketch_pose: pose,
         };
     }
-    pose.angle = (sketch(scene, p1) - sketch(scene, p0)).atan2();
+    pose = Pose::new(pose.origin, (sketch(scene, p1) - sketch(scene, p0)).atan2());
     local[1] = Vec2::new(d01, 0.0);
     for k in 2..pts.len() {
         let p = pts[k];

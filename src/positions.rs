@@ -472,10 +472,7 @@ fn solve_dyad(
             let LineCut::Point { at, .. } = intersect_lines(&a, &bl, min_sin) else {
                 return Err("the two guides are parallel: the slide is not determined".into());
             };
-            c.poses[l2] = Some(Pose {
-                origin: at,
-                angle: th2,
-            });
+            c.poses[l2] = Some(Pose::new(at, th2));
         }
     }
     Ok(())
@@ -492,8 +489,12 @@ fn set_by_two(
     at_q: Point,
 ) {
     let (lp, lq) = (m.local(link, p), m.local(link, q));
-    let angle = (at_q - at_p).atan2() - (lq - lp).atan2();
-    c.poses[link] = Some(Pose::through(at_p, lp, angle));
+    let (w, l) = (at_q - at_p, lq - lp);
+    let angle = w.atan2() - l.atan2();
+    // The turn from l to w: its cosine and sine straight from the vectors.
+    let norm = w.hypot() * l.hypot();
+    let turn = (l.dot(w) / norm, l.cross(w) / norm);
+    c.poses[link] = Some(Pose::through_turned(at_p, lp, angle, turn));
 }
 
 /// Solve a three-leash group: the base pose (x, y, ψ) such that every
@@ -535,10 +536,10 @@ fn solve_triad(
         let r0 = norm(r);
         let mut next;
         loop {
-            next = Pose {
-                origin: pose.origin - Vec2::new(step[0], step[1]) * k,
-                angle: pose.angle - step[2] / size * k,
-            };
+            next = Pose::new(
+                pose.origin - Vec2::new(step[0], step[1]) * k,
+                pose.angle - step[2] / size * k,
+            );
             // At the level of rounding the residual cannot fall: take the
             // full step there, or the damping would fake convergence.
             if norm(residual(&next)) <= r0 || r0 <= 1e-13 * size * size || k < 1e-3 {

@@ -114,10 +114,7 @@ impl<'a> ConstraintSolver<'a> {
 
     fn pose(&self, q: &DVector<f64>, l: usize) -> Pose {
         match self.slot[l] {
-            Some(i) => Pose {
-                origin: Point::new(q[3 * i], q[3 * i + 1]),
-                angle: q[3 * i + 2],
-            },
+            Some(i) => Pose::new(Point::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]),
             None => Pose::IDENTITY,
         }
     }

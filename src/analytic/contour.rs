@@ -9,7 +9,7 @@
 //! `(0, u)` for a slide along u). Differentiating once more gives the same
 //! matrix with the known terms `q̇_j·[V_j, ξ_j]`: the normal components
 //! ω²·l and the Coriolis terms 2·ω·v_rel of the textbook come out of these
-//! brackets. A dyad gives one contour (3×3, solved by Cramer's rule in
+//! brackets. A dyad gives one contour (3×3, inverted in
 //! closed form), a three-leash group two contours (6×6).
 
 use super::{Drive, Motion, Order};
@@ -136,15 +136,9 @@ pub fn solve(
     drive: Drive,
     order: Order,
 ) -> Result<Vec<Option<Motion>>> {
+    // The motions found so far; a group reads the twists of its known
+    // links off them (`state`).
     let mut out: Vec<Option<Motion>> = vec![None; m.links.len()];
-    // The twist and twist rate of every link solved so far, as `state`
-    // reads them off its motion: one buffer for the whole mechanism.
-    let mut known: Vec<Option<(Twist, Twist)>> = vec![None; m.links.len()];
-    let set =
-        |out: &mut [Option<Motion>], known: &mut [Option<(Twist, Twist)>], l: usize, mo: Motion| {
-            out[l] = Some(mo);
-            known[l] = Some(state(&mo));
-        };
     let frame = Motion::from_point(
         c.pose(m.frame()),
         kurbo::Point::ORIGIN,
@@ -153,9 +147,9 @@ pub fn solve(
         0.0,
         0.0,
     );
-    set(&mut out, &mut known, m.frame(), frame);
+    out[m.frame()] = Some(frame);
     let input = input_motion(m, c, drive.rate, drive.rate2);
-    set(&mut out, &mut known, m.scene.input.link(), input);
+    out[m.scene.input.link()] = Some(input);
     let mut motions: [(usize, Motion); 4] = [(0, frame); 4];
     for (gi, g) in s.groups.iter().enumerate() {
         if !need[gi] {
@@ -177,9 +171,9 @@ pub fn solve(
                 [d.ext1, d.mid, d.ext2],
                 &[&[(0, 1.0), (1, 1.0), (2, 1.0)]],
                 &[(d.ext1.from, d.ext2.to)],
-                &known,
+                &out,
                 order,
-                solve3,
+                invert3,
                 &d.links,
                 &mut motions,
             ),
@@ -195,16 +189,16 @@ pub fn solve(
                     (t.ext[0].from, t.ext[1].from),
                     (t.ext[0].from, t.ext[2].from),
                 ],
-                &known,
+                &out,
                 order,
-                solve_lu,
+                invert_lu,
                 &[t.leashes[0], t.leashes[1], t.leashes[2], t.base],
                 &mut motions,
             ),
         };
         let count = done.ok_or_else(singular)?;
         for &(l, mo) in &motions[..count] {
-            set(&mut out, &mut known, l, mo);
+            out[l] = Some(mo);
         }
     }
     Ok(out)
@@ -222,9 +216,9 @@ fn group<const N: usize>(
     conns: [Conn; N],
     contours: &[&[(usize, f64)]],
     ends: &[(usize, usize)],
-    known: &[Option<(Twist, Twist)>],
+    known: &[Option<Motion>],
     order: Order,
-    solve_small: fn(&SMatrix<f64, N, N>, &SVector<f64, N>) -> Option<SVector<f64, N>>,
+    invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
     links: &[usize],
     motions: &mut [(usize, Motion); 4],
 ) -> Option<usize> {
@@ -237,60 +231,13 @@ fn group<const N: usize>(
             a[(3 * ci + 2, j)] = sg * xi[j].v.y;
         }
     }
-    let state_of = known;
-    let known = |l: usize| state_of[l].expect("attachment solved first");
-    let rhs_of = |f: &dyn Fn(usize) -> Twist| {
-        let mut r = SVector::<f64, N>::zeros();
-        for (ci, &(k1, k2)) in ends.iter().enumerate() {
-            let t = f(k2) - f(k1);
-            r[3 * ci] = t.w;
-            r[3 * ci + 1] = t.v.x;
-            r[3 * ci + 2] = t.v.y;
-        }
-        r
-    };
-    let qd = solve_small(&a, &rhs_of(&|l| known(l).0))?;
-    // Twist of every link of the group: walk the pairs outward, in the
-    // pairs' order, each pass over the pairs still pending.
-    let walk = |step: &dyn Fn(usize) -> Twist,
-                base: &dyn Fn(usize) -> Option<Twist>|
-     -> ([(usize, Twist); 4], usize) {
-        let mut found = [(usize::MAX, Twist::default()); 4];
-        let mut count = 0;
-        let get = |found: &[(usize, Twist); 4], count: usize, l: usize| {
-            base(l).or_else(|| found[..count].iter().find(|e| e.0 == l).map(|e| e.1))
-        };
-        let mut pending = [true; N];
-        let mut left = N;
-        while left > 0 {
-            let before = left;
-            for j in 0..N {
-                if !pending[j] {
-                    continue;
-                }
-                let cn = &conns[j];
-                match (get(&found, count, cn.from), get(&found, count, cn.to)) {
-                    (Some(vf), None) => {
-                        found[count] = (cn.to, vf + step(j));
-                        count += 1;
-                    }
-                    (None, Some(vt)) => {
-                        found[count] = (cn.from, vt - step(j));
-                        count += 1;
-                    }
-                    (Some(_), Some(_)) => {}
-                    (None, None) => continue,
-                }
-                pending[j] = false;
-                left -= 1;
-            }
-            assert!(left < before, "group pairs form a connected contour");
-        }
-        (found, count)
-    };
-    let (vel, nv) = walk(&|j| xi[j] * qd[j], &|l| state_of[l].map(|k| k.0));
+    let state_of = |l: usize| known[l].map(|mo| state(&mo));
+    let known = |l: usize| state_of(l).expect("attachment solved first");
+    let inverse = invert(&a)?;
+    let qd = inverse.solve(&rhs::<N>(ends, |l| known(l).0));
+    let (vel, nv) = walk(&conns, |j| xi[j] * qd[j], |l| state_of(l).map(|k| k.0));
     let vel_of = |l: usize| {
-        state_of[l]
+        state_of(l)
             .map(|k| k.0)
             .or_else(|| vel[..nv].iter().find(|e| e.0 == l).map(|e| e.1))
     };
@@ -300,7 +247,7 @@ fn group<const N: usize>(
     if order == Order::Acceleration {
         let drift: [Twist; N] =
             std::array::from_fn(|j| bracket(vel_of(conns[j].from).unwrap(), xi[j]) * qd[j]);
-        let mut rhs = rhs_of(&|l| known(l).1);
+        let mut rhs = rhs::<N>(ends, |l| known(l).1);
         for (ci, contour) in contours.iter().enumerate() {
             for &(j, sg) in contour.iter() {
                 rhs[3 * ci] -= sg * drift[j].w;
@@ -308,14 +255,23 @@ fn group<const N: usize>(
                 rhs[3 * ci + 2] -= sg * drift[j].v.y;
             }
         }
-        let qdd = solve_small(&a, &rhs).expect("same matrix as the velocity contour");
-        (acc, na) = walk(&|j| xi[j] * qdd[j] + drift[j], &|l| {
-            state_of[l].map(|k| k.1)
-        });
+        let qdd = inverse.solve(&rhs);
+        (acc, na) = walk(
+            &conns,
+            |j| xi[j] * qdd[j] + drift[j],
+            |l| state_of(l).map(|k| k.1),
+        );
     }
+    // At most four links: an insertion sort, not the general sort.
     let mut sorted = [0usize; 4];
     sorted[..links.len()].copy_from_slice(links);
-    sorted[..links.len()].sort_unstable();
+    for i in 1..links.len() {
+        let mut j = i;
+        while j > 0 && sorted[j - 1] > sorted[j] {
+            sorted.swap(j - 1, j);
+            j -= 1;
+        }
+    }
     for (k, &l) in sorted[..links.len()].iter().enumerate() {
         let v = vel_of(l).expect("every group link reached");
         let a = acc[..na]
@@ -337,6 +293,61 @@ fn group<const N: usize>(
     Some(links.len())
 }
 
+/// The known side of the contours: the twist (or twist rate) of each
+/// contour's end link less that of its start link.
+fn rhs<const N: usize>(ends: &[(usize, usize)], f: impl Fn(usize) -> Twist) -> SVector<f64, N> {
+    let mut r = SVector::<f64, N>::zeros();
+    for (ci, &(k1, k2)) in ends.iter().enumerate() {
+        let t = f(k2) - f(k1);
+        r[3 * ci] = t.w;
+        r[3 * ci + 1] = t.v.x;
+        r[3 * ci + 2] = t.v.y;
+    }
+    r
+}
+
+/// The twist of every link of a group: walk the pairs outward from the
+/// known links (`base`), in the pairs' order, each pass over the pairs
+/// still pending; `step(j)` is the relative twist across pair j.
+fn walk<const N: usize>(
+    conns: &[Conn; N],
+    step: impl Fn(usize) -> Twist,
+    base: impl Fn(usize) -> Option<Twist>,
+) -> ([(usize, Twist); 4], usize) {
+    let mut found = [(usize::MAX, Twist::default()); 4];
+    let mut count = 0;
+    let get = |found: &[(usize, Twist); 4], count: usize, l: usize| {
+        base(l).or_else(|| found[..count].iter().find(|e| e.0 == l).map(|e| e.1))
+    };
+    let mut pending = [true; N];
+    let mut left = N;
+    while left > 0 {
+        let before = left;
+        for j in 0..N {
+            if !pending[j] {
+                continue;
+            }
+            let cn = &conns[j];
+            match (get(&found, count, cn.from), get(&found, count, cn.to)) {
+                (Some(vf), None) => {
+                    found[count] = (cn.to, vf + step(j));
+                    count += 1;
+                }
+                (None, Some(vt)) => {
+                    found[count] = (cn.from, vt - step(j));
+                    count += 1;
+                }
+                (Some(_), Some(_)) => {}
+                (None, None) => continue,
+            }
+            pending[j] = false;
+            left -= 1;
+        }
+        assert!(left < before, "group pairs form a connected contour");
+    }
+    (found, count)
+}
+
 /// Make the columns dimensionless (a revolute column has a length scale):
 /// the scaled matrix and the scales.
 fn scaled<const N: usize>(a: &SMatrix<f64, N, N>) -> (SMatrix<f64, N, N>, [f64; N]) {
@@ -348,30 +359,45 @@ fn scaled<const N: usize>(a: &SMatrix<f64, N, N>) -> (SMatrix<f64, N, N>, [f64; 
     (an, scale)
 }
 
-/// A 3×3 system by Cramer's rule (the closed form of a dyad); `None` when
-/// it is singular relative to the scale of its columns.
-fn solve3(a: &SMatrix<f64, 3, 3>, b: &SVector<f64, 3>) -> Option<SVector<f64, 3>> {
-    let (an, scale) = scaled(a);
-    let det = an.determinant();
-    if det.abs() < 1e-12 {
-        return None;
-    }
-    Some(SVector::<f64, 3>::from_fn(|j, _| {
-        let mut aj = an;
-        aj.set_column(j, b);
-        aj.determinant() / det / scale[j]
-    }))
+/// The inverse of a group's contour matrix, once per position: the
+/// velocity and the acceleration contours share it.
+struct Inverse<const N: usize> {
+    /// Inverse of the matrix with dimensionless columns.
+    inv: SMatrix<f64, N, N>,
+    /// The columns' scales.
+    scale: [f64; N],
 }
 
-/// A larger system (a three-leash group's two contours) by LU; `None` when
-/// it is singular relative to the scale of its columns.
-fn solve_lu(a: &SMatrix<f64, 6, 6>, b: &SVector<f64, 6>) -> Option<SVector<f64, 6>> {
+impl<const N: usize> Inverse<N> {
+    fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
+        let x = self.inv * b;
+        SVector::<f64, N>::from_fn(|j, _| x[j] / self.scale[j])
+    }
+}
+
+/// A dyad's 3×3 contour matrix inverted in closed form (cofactors); `None`
+/// when it is singular relative to the scale of its columns.
+fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
     let (an, scale) = scaled(a);
-    let lu = an.lu();
-    let det = lu.determinant();
-    if det.abs() < 1e-12 {
+    if an.determinant().abs() < 1e-12 {
         return None;
     }
-    let x = lu.solve(b)?;
-    Some(SVector::<f64, 6>::from_fn(|j, _| x[j] / scale[j]))
+    Some(Inverse {
+        inv: an.try_inverse()?,
+        scale,
+    })
+}
+
+/// A three-leash group's 6×6 matrix (two contours) by LU; `None` when it
+/// is singular relative to the scale of its columns.
+fn invert_lu(a: &SMatrix<f64, 6, 6>) -> Option<Inverse<6>> {
+    let (an, scale) = scaled(a);
+    let lu = an.lu();
+    if lu.determinant().abs() < 1e-12 {
+        return None;
+    }
+    Some(Inverse {
+        inv: lu.try_inverse()?,
+        scale,
+    })
 }

@@ -21,7 +21,7 @@ pub mod text;
 
 use crate::analytic::{Drive, Order};
 use crate::error::{Error, Result};
-use crate::geom::{Line, LineCut, perp, rotate};
+use crate::geom::{Line, LineCut, perp};
 use crate::mechanism::Mechanism;
 use crate::positions::{Configuration, describe_input};
 use crate::scene::InputSpec;
@@ -426,8 +426,7 @@ impl<'a> Builder<'a> {
         self.c.point(self.m(), link, p)
     }
     fn local(&self, link: usize, x: Point) -> Vec2 {
-        let pose = self.c.pose(link);
-        rotate(x - pose.origin, -pose.angle)
+        self.c.pose(link).local(x)
     }
     fn name(&self, p: usize) -> String {
         self.m().point_name(p).to_string()
