@@ -7,8 +7,11 @@
 //!
 //! - `contour/*`: positions (`PositionSolver::solve`) and route (a)
 //!   (`contour::solve`, velocities and accelerations);
-//! - `construction/*`: the construction kernel (`build_plans`, both plans;
-//!   step sentences are rendered only on demand, so none here);
+//! - `construction/*`: the construction kernel (`build_plans`, both plans,
+//!   with the names, labels and steps a drawing needs; step sentences are
+//!   rendered only on demand, so none here);
+//! - `construction_numbers/*`: the same constructions without names,
+//!   labels or steps (`build_plans_numbers`), the kernel "without step text";
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
@@ -19,7 +22,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
 use mechplan::analytic::{Drive, Order, contour};
-use mechplan::construction::{Setup, build_plans};
+use mechplan::construction::{Setup, build_plans, build_plans_numbers};
 use mechplan::drawing::{self, DrawOptions};
 use mechplan::positions::{Configuration, PositionSolver};
 use mechplan::{Analysis, Scene};
@@ -265,6 +268,24 @@ fn per_position(cr: &mut Criterion) {
                 let q = qs[k];
                 black_box(
                     build_plans(
+                        &setup,
+                        &configs[k],
+                        Drive { q, rate, rate2 },
+                        Order::Acceleration,
+                        an.drafting,
+                    )
+                    .unwrap(),
+                )
+            })
+        });
+
+        let mut k = 0;
+        cr.bench_function(&format!("construction_numbers/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                let q = qs[k];
+                black_box(
+                    build_plans_numbers(
                         &setup,
                         &configs[k],
                         Drive { q, rate, rate2 },

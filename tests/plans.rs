@@ -496,3 +496,61 @@ fn scales_are_standard_or_as_asked() {
         }
     }
 }
+
+/// The numbers-only build (no names, labels or steps) draws the same
+/// constructions: every plan point, error radius, rate, measured value and
+/// reliability equal, bit for bit, to the full build's, on every fixture
+/// over its sweep; and it records no steps.
+#[test]
+fn numbers_only_plans_equal_full_plans() {
+    use mechplan::analytic::{Drive, Order};
+    use mechplan::construction::{Setup, build_plans_numbers};
+    for name in FIXTURES {
+        let v = fixture(name);
+        let (an, solved) = solve(scene_with(v.clone(), sweep(name, &v)));
+        let setup = Setup {
+            m: &an.mech,
+            s: &an.structure,
+            need: &an.need,
+            points: &an.points,
+            include: &an.include,
+        };
+        for s in &solved {
+            let full = s.plans.as_ref().unwrap();
+            let drive = Drive {
+                q: s.q,
+                rate: s.rate,
+                rate2: s.rate2,
+            };
+            let lean =
+                build_plans_numbers(&setup, &s.config, drive, Order::Acceleration, an.drafting)
+                    .unwrap();
+            let pairs = [
+                (&full.velocity, &lean.velocity),
+                (
+                    full.acceleration.as_ref().unwrap(),
+                    lean.acceleration.as_ref().unwrap(),
+                ),
+            ];
+            for (f, l) in pairs {
+                assert!(l.steps.is_empty(), "{name}: a lean plan records no steps");
+                assert!(!f.steps.is_empty());
+                assert_eq!(f.mu, l.mu, "{name} at {}: scale", s.q);
+                assert_eq!(f.worst_sin, l.worst_sin);
+                assert_eq!(f.points.len(), l.points.len());
+                for (a, b) in f.points.iter().zip(&l.points) {
+                    assert_eq!((a.at, a.err), (b.at, b.err), "{name} at {}: {}", s.q, a.key);
+                }
+                assert_eq!(format!("{:?}", f.rates), format!("{:?}", l.rates));
+                assert_eq!(f.of_point, l.of_point);
+                let values = |p: &Plan| -> Vec<(f64, f64, f64)> {
+                    p.measured
+                        .iter()
+                        .map(|m| (m.mm, m.value, m.bound))
+                        .collect()
+                };
+                assert_eq!(values(f), values(l));
+            }
+        }
+    }
+}

@@ -28,6 +28,18 @@ use crate::scene::InputSpec;
 use crate::structure::{AssurGroup, Conn, Dyad, DyadKind, Joint, Structure, Triad};
 use kurbo::{Point, Vec2};
 
+/// The text of a name, a label or a step: formatted as `format!` does, or
+/// left empty (no allocation) when the builder is lean.
+macro_rules! txt {
+    ($b:expr, $($arg:tt)*) => {
+        if $b.lean {
+            String::new()
+        } else {
+            format!($($arg)*)
+        }
+    };
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PlanKind {
     Velocity,
@@ -174,6 +186,25 @@ pub struct Measured {
     pub bound: f64,
 }
 
+/// A plan point known on a link: the link, the point's local coordinates
+/// on it, and the plan point (one flat list for the whole plan).
+#[derive(Clone, Copy, Debug)]
+pub struct Known {
+    pub link: usize,
+    pub local: Vec2,
+    pub point: usize,
+}
+
+impl Plan {
+    /// The plan point of the material point of `link` at `local`.
+    fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
+        self.body
+            .iter()
+            .find(|k| k.link == link && (k.local - local).hypot() <= tol)
+            .map(|k| k.point)
+    }
+}
+
 /// A plan: the replayable list of steps and the named plan points.
 #[derive(Clone, Debug)]
 pub struct Plan {
@@ -190,8 +221,8 @@ pub struct Plan {
     pub measured: Vec<Measured>,
     /// Smallest sine of an intersection angle (1 when none).
     pub worst_sin: f64,
-    /// Plan points known on each link: (local coordinates, plan point).
-    pub body: Vec<Vec<(Vec2, usize)>>,
+    /// The plan points known on the links, in the order they were found.
+    pub body: Vec<Known>,
     /// The plan point of each named point of the mechanism.
     pub of_point: Vec<Option<usize>>,
     /// With a deliberate mistake: the step where it was made.
@@ -316,6 +347,12 @@ struct Builder<'a> {
     vel: Option<&'a Plan>,
     nr: Vec<bool>,
     q: f64,
+    /// Numbers only: no names, labels, steps or sentences (the scale
+    /// probe, and sweeps that read numbers only).
+    lean: bool,
+    /// The first normal-component point laid off for each link (n₂ …),
+    /// found by index, not by its name.
+    normal_of: Vec<Option<usize>>,
 }
 
 /// Build the velocity plan (`vel` = None) or the acceleration plan.
@@ -326,6 +363,7 @@ pub fn build(
     kind: PlanKind,
     vel: Option<&Plan>,
     d: &Drafting,
+    lean: bool,
 ) -> Result<Plan> {
     use rand::SeedableRng;
     let (delta, variant) = (d.delta, d.variant);
@@ -354,13 +392,16 @@ pub fn build(
             rates: vec![None; m.links.len()],
             measured: Vec::new(),
             worst_sin: 1.0,
-            body: vec![Vec::new(); m.links.len()],
+            body: Vec::new(),
             of_point: vec![None; m.scene.points.len()],
             mistake_step: None,
         },
         vel,
         nr: non_rotating(m),
         q,
+        // The probe only needs where the points fall.
+        lean: true,
+        normal_of: vec![None; m.links.len()],
     };
     // First pass at unit scale, then the standard scale that fits, then the
     // real construction at that scale (the steps' numbers are in mm).
@@ -387,6 +428,15 @@ pub fn build(
             if mu > 0.0 { mu } else { 1.0 }
         }
     };
+    // The real construction reuses the probe's buffers, emptied.
+    let mut probe = b.plan;
+    probe.points.clear();
+    probe.measured.clear();
+    probe.body.clear();
+    probe.rates.fill(None);
+    probe.of_point.fill(None);
+    let mut normal_of = b.normal_of;
+    normal_of.fill(None);
     let mut b = Builder {
         variant,
         rng: rng(2),
@@ -395,18 +445,14 @@ pub fn build(
         plan: Plan {
             mu,
             mistake_step: None,
-            steps: Vec::new(),
-            points: Vec::new(),
-            measured: Vec::new(),
-            rates: vec![None; m.links.len()],
             worst_sin: 1.0,
-            body: vec![Vec::new(); m.links.len()],
-            of_point: vec![None; m.scene.points.len()],
-            ..b.plan
+            ..probe
         },
         vel,
         nr: b.nr,
         q,
+        lean,
+        normal_of,
     };
     b.run(rates)?;
     Ok(b.plan)
@@ -420,7 +466,9 @@ impl<'a> Builder<'a> {
         self.plan.kind == PlanKind::Velocity
     }
     fn step(&mut self, op: Op) {
-        self.plan.steps.push(Step { op });
+        if !self.lean {
+            self.plan.steps.push(Step { op });
+        }
     }
     fn world(&self, link: usize, p: usize) -> Point {
         self.c.point(self.m(), link, p)
@@ -429,10 +477,21 @@ impl<'a> Builder<'a> {
         self.c.pose(link).local(x)
     }
     fn name(&self, p: usize) -> String {
-        self.m().point_name(p).to_string()
+        txt!(self, "{}", self.m().point_name(p))
     }
     fn link(&self, l: usize) -> String {
-        self.m().link_id(l).to_string()
+        txt!(self, "{}", self.m().link_id(l))
+    }
+    fn label(&self, name: &str) -> (String, String) {
+        if self.lean {
+            (String::new(), String::new())
+        } else {
+            lower_label(name)
+        }
+    }
+    /// Remember the first normal-component point of `link`.
+    fn note_normal(&mut self, link: usize, idx: usize) {
+        self.normal_of[link].get_or_insert(idx);
     }
     fn rate_sym(&self) -> &'static str {
         if self.vel_kind() { "ω" } else { "ε" }
@@ -451,6 +510,16 @@ impl<'a> Builder<'a> {
     }
 
     fn add_point(&mut self, key: String, label: (String, String), at: Vec2, err: f64) -> usize {
+        if self.lean {
+            self.plan.points.push(PlanPoint {
+                key,
+                label,
+                at,
+                err,
+                figure: String::new(),
+            });
+            return self.plan.points.len() - 1;
+        }
         let (mut key, mut label) = (key, label);
         while self.plan.points.iter().any(|p| p.key == key) {
             // A second n₂ on one plan is n₂′ (then n₂″).
@@ -461,7 +530,7 @@ impl<'a> Builder<'a> {
         let figure = if construction {
             String::new()
         } else {
-            format!("{}{}", label.0, label.1).to_uppercase()
+            txt!(self, "{}{}", label.0, label.1).to_uppercase()
         };
         self.plan.points.push(PlanPoint {
             key,
@@ -476,21 +545,19 @@ impl<'a> Builder<'a> {
     fn register(&mut self, link: usize, x: Point, idx: usize) {
         let local = self.local(link, x);
         let tol = 1e-9 * self.m().size;
-        if !self.plan.body[link]
-            .iter()
-            .any(|(l, _)| (*l - local).hypot() <= tol)
-        {
-            self.plan.body[link].push((local, idx));
+        if self.plan.known_at(link, local, tol).is_none() {
+            self.plan.body.push(Known {
+                link,
+                local,
+                point: idx,
+            });
         }
     }
 
     fn find(&self, link: usize, x: Point) -> Option<usize> {
         let local = self.local(link, x);
         let tol = 1e-9 * self.m().size;
-        self.plan.body[link]
-            .iter()
-            .find(|(l, _)| (*l - local).hypot() <= tol)
-            .map(|e| e.1)
+        self.plan.known_at(link, local, tol)
     }
 
     /// Lay off the real vector `v` from plan point `from`.
@@ -616,7 +683,22 @@ impl<'a> Builder<'a> {
             return i;
         }
         let m = self.m();
-        let known = self.plan.body[link].clone();
+        // What the plan knows of the link: its first known point, and the
+        // pair of known points farthest apart on it.
+        let on_link = |k: &&Known| k.link == link;
+        let body = &self.plan.body;
+        let first = body.iter().find(on_link).map(|k| (k.local, k.point));
+        let mut far = None;
+        let mut best = -1.0;
+        for (i, a) in body.iter().enumerate().filter(|(_, k)| k.link == link) {
+            for b in body[i + 1..].iter().filter(on_link) {
+                let d = (a.local - b.local).hypot();
+                if d > best {
+                    best = d;
+                    far = Some(((a.local, a.point), (b.local, b.point)));
+                }
+            }
+        }
         if link == m.frame() {
             let out = self.add_point(key, label, Vec2::ZERO, 0.0);
             self.step(Op::Coincide {
@@ -628,9 +710,8 @@ impl<'a> Builder<'a> {
             return out;
         }
         let local = self.local(link, x);
-        if self.nr[link] && !known.is_empty() {
+        if let (true, Some((_, with))) = (self.nr[link], first) {
             // A translating link: all its points share one plan point.
-            let with = known[0].1;
             let out = self.add_point(
                 key,
                 label,
@@ -642,13 +723,13 @@ impl<'a> Builder<'a> {
             self.register(link, x, out);
             return out;
         }
-        assert!(
-            !known.is_empty(),
-            "a link is constructed only after one of its points"
-        );
+        let first = first.expect("a link is constructed only after one of its points");
         let names = |b: &Builder, (l, idx): (Vec2, usize)| -> String {
             // The mechanism's name for a known point of this link: its own
             // point there, else the name of the coincident plan point (B3).
+            if b.lean {
+                return String::new();
+            }
             let m = b.m();
             m.links[link]
                 .points
@@ -657,18 +738,8 @@ impl<'a> Builder<'a> {
                 .map(|&p| m.point_name(p).to_string())
                 .unwrap_or_else(|| b.plan.points[idx].figure.clone())
         };
-        if known.len() >= 2 {
-            // The pair of known points farthest apart on the link.
-            let (mut ia, mut ib, mut best) = (0, 1, -1.0);
-            for i in 0..known.len() {
-                for j in i + 1..known.len() {
-                    let d = (known[i].0 - known[j].0).hypot();
-                    if d > best {
-                        (ia, ib, best) = (i, j, d);
-                    }
-                }
-            }
-            let ((la, pa), (lb, pb)) = (known[ia], known[ib]);
+        if let Some((ka, kb)) = far {
+            let ((la, pa), (lb, pb)) = (ka, kb);
             let ab = lb - la;
             let mut ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
             if ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
@@ -676,7 +747,7 @@ impl<'a> Builder<'a> {
             }
             let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
             let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
-            let fig = [names(self, known[ia]), names(self, known[ib]), figure_name];
+            let fig = [names(self, ka), names(self, kb), figure_name];
             let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
             if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
                 let err = ea.max(eb) + self.plan.delta;
@@ -717,45 +788,45 @@ impl<'a> Builder<'a> {
         } else {
             // One known point A and the link's rates: v_X = v_A + ω×AX,
             // a_X = a_A + ε×AX − ω²·AX.
-            let (la, pa) = known[0];
+            let (la, pa) = first;
             let a_world = self.c.pose(link).apply(la);
             let r = x - a_world;
-            let (an, xn) = (names(self, known[0]), label.0.clone() + &label.1);
+            let an = names(self, first);
             let w = self.omega(link);
-            let seg = format!("{}{}", an, figure_name);
+            let seg = txt!(self, "{}{}", an, figure_name);
             if self.vel_kind() {
                 let werr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
                 let out = self.lay_off(
                     pa,
                     perp(r) * w,
-                    format!("ω{}·l_{seg}", self.link(link)),
-                    Dir::PerpSense(seg.clone(), format!("ω{}", self.link(link))),
+                    txt!(self, "ω{}·l_{seg}", self.link(link)),
+                    Dir::PerpSense(seg.clone(), txt!(self, "ω{}", self.link(link))),
                     (key, label),
                     werr * r.hypot(),
                 );
-                let _ = xn;
                 self.register(link, x, out);
                 out
             } else {
                 let eps = self.plan.rates[link].map(|r| r.0).unwrap_or(0.0);
                 let eerr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
-                let n_key = format!("n_{}", self.link(link));
+                let n_key = txt!(self, "n_{}", self.link(link));
                 let mut from = pa;
                 if w != 0.0 {
                     from = self.lay_off(
                         pa,
                         -r * (w * w),
-                        format!("ω{}²·l_{seg}", self.link(link)),
+                        txt!(self, "ω{}²·l_{seg}", self.link(link)),
                         Dir::Toward(figure_name.clone(), an.clone()),
-                        (n_key, ("n".into(), self.link(link))),
+                        (n_key, (txt!(self, "n"), self.link(link))),
                         2.0 * w.abs() * self.omega_err(link) * r.hypot(),
                     );
+                    self.note_normal(link, from);
                 }
                 let out = self.lay_off(
                     from,
                     perp(r) * eps,
-                    format!("ε{}·l_{seg}", self.link(link)),
-                    Dir::PerpSense(seg, format!("ε{}", self.link(link))),
+                    txt!(self, "ε{}·l_{seg}", self.link(link)),
+                    Dir::PerpSense(seg, txt!(self, "ε{}", self.link(link))),
                     (key, label),
                     eerr * r.hypot(),
                 );
@@ -769,11 +840,15 @@ impl<'a> Builder<'a> {
     /// carrying it that the plan knows).
     fn named(&mut self, link: usize, p: usize) -> usize {
         let x = self.world(link, p);
-        let (key, label) = (
-            self.m().point_name(p).to_lowercase(),
-            lower_label(self.m().point_name(p)),
-        );
-        let i = self.point_on(link, x, key, label, self.name(p));
+        // A point the plan already has needs no name.
+        let i = match self.find(link, x) {
+            Some(i) => i,
+            None => {
+                let name = self.name(p);
+                let (key, label) = (name.to_lowercase(), self.label(&name));
+                self.point_on(link, x, key, label, name)
+            }
+        };
         if self.plan.of_point[p].is_none() {
             self.plan.of_point[p] = Some(i);
         }
@@ -783,18 +858,19 @@ impl<'a> Builder<'a> {
     /// The coincident point of `link` at world `x` (named after point `p`
     /// with the link's number as subscript: b₃ is B as a point of link 3).
     fn coincident(&mut self, link: usize, x: Point, p: usize) -> usize {
-        let (mut key, mut label) = (
-            self.m().point_name(p).to_lowercase(),
-            lower_label(self.m().point_name(p)),
-        );
-        key = format!("{key}_{}", self.link(link));
+        if let Some(i) = self.find(link, x) {
+            return i;
+        }
+        let name = self.name(p);
+        let (mut key, mut label) = (name.to_lowercase(), self.label(&name));
+        key = txt!(self, "{key}_{}", self.link(link));
         label.1 = self.link(link);
         self.point_on(
             link,
             x,
             key,
             label,
-            format!("{}{}", self.name(p), self.link(link)),
+            txt!(self, "{}{}", self.name(p), self.link(link)),
         )
     }
 
@@ -811,7 +887,7 @@ impl<'a> Builder<'a> {
         x: Point,
         xname: &str,
     ) -> (PlanLine, usize) {
-        let seg = format!("{jname}{xname}");
+        let seg = txt!(self, "{jname}{xname}");
         let u = perp(x - jw);
         if self.vel_kind() {
             (self.line(j, u, Dir::Perp(seg)), j)
@@ -833,14 +909,15 @@ impl<'a> Builder<'a> {
             let n = self.lay_off(
                 j,
                 r * (toward * w * w),
-                format!("a^n_{xname}{jname} = ω{}²·l_{seg}", self.link(link)),
+                txt!(self, "a^n_{xname}{jname} = ω{}²·l_{seg}", self.link(link)),
                 Dir::Toward(xname.to_string(), jname.to_string()),
                 (
-                    format!("n_{}", self.link(link)),
-                    ("n".into(), self.link(link)),
+                    txt!(self, "n_{}", self.link(link)),
+                    (txt!(self, "n"), self.link(link)),
                 ),
                 2.0 * w.abs() * self.omega_err(link) * r.hypot(),
             );
+            self.note_normal(link, n);
             (self.line(n, u, Dir::Perp(seg)), n)
         }
     }
@@ -871,12 +948,7 @@ impl<'a> Builder<'a> {
         let local_u = self.local(unknown, x);
         let local_k = self.local(known, x);
         let tol = 1e-9 * self.m().size;
-        let find = |l: usize, loc: Vec2| {
-            vel.body[l]
-                .iter()
-                .find(|(p, _)| (*p - loc).hypot() <= tol)
-                .map(|e| e.1)
-        };
+        let find = |l: usize, loc: Vec2| vel.known_at(l, loc, tol);
         let (Some(iu), Some(ik)) = (find(unknown, local_u), find(known, local_k)) else {
             unreachable!("the velocity plan has both coincident points");
         };
@@ -894,18 +966,24 @@ impl<'a> Builder<'a> {
         let k = self.lay_off(
             kx,
             k_vec,
-            format!(
+            txt!(
+                self,
                 "a^k_{xname}{u}{xname}{k} = 2·ω{k}·v_{xname}{u}{xname}{k}",
                 u = self.link(unknown),
                 k = self.link(known)
             ),
             Dir::Turned(
-                format!("v_{xname}{}{xname}{}", self.link(unknown), self.link(known)),
-                format!("ω{}", self.link(known)),
+                txt!(
+                    self,
+                    "v_{xname}{}{xname}{}",
+                    self.link(unknown),
+                    self.link(known)
+                ),
+                txt!(self, "ω{}", self.link(known)),
             ),
             (
-                format!("k_{}", self.link(unknown)),
-                ("k".into(), self.link(unknown)),
+                txt!(self, "k_{}", self.link(unknown)),
+                (txt!(self, "k"), self.link(unknown)),
             ),
             2.0 * (w.abs() * verr + self.omega_err(known) * vrel.hypot()),
         );
@@ -932,11 +1010,11 @@ impl<'a> Builder<'a> {
             (self.plan.points[to].err + self.plan.points[from].err + self.plan.delta) * mu / len;
         self.plan.rates[link] = Some((value, err));
         let quantity = if self.vel_kind() {
-            format!("v_{xname}{jname}")
+            txt!(self, "v_{xname}{jname}")
         } else {
-            format!("a^t_{xname}{jname}")
+            txt!(self, "a^t_{xname}{jname}")
         };
-        let name = format!("{}{}", self.rate_sym(), self.link(link));
+        let name = txt!(self, "{}{}", self.rate_sym(), self.link(link));
         self.plan.measured.push(Measured {
             quantity: name.clone(),
             from,
@@ -959,31 +1037,35 @@ impl<'a> Builder<'a> {
     /// a rigid link (normal + tangential parts) or a slide (Coriolis +
     /// relative parts), with the lecture's marks of what is known.
     fn relation(&self, x: &str, base: &str, rigid: bool, rotating: bool) -> String {
+        if self.lean {
+            return String::new();
+        }
         if self.vel_kind() {
-            return format!(
+            return txt!(
+                self,
                 "v_{x} = {} + {}",
-                known(&format!("v_{base}")),
-                direction_known(&format!("v_{x}{base}"))
+                known(&txt!(self, "v_{base}")),
+                direction_known(&txt!(self, "v_{x}{base}"))
             );
         }
-        let mut parts = vec![known(&format!("a_{base}"))];
+        let mut parts = vec![known(&txt!(self, "a_{base}"))];
         if rigid {
             if rotating {
-                parts.push(known(&format!("a^n_{x}{base}")));
+                parts.push(known(&txt!(self, "a^n_{x}{base}")));
             }
-            parts.push(direction_known(&format!("a^t_{x}{base}")));
+            parts.push(direction_known(&txt!(self, "a^t_{x}{base}")));
         } else {
             if rotating {
-                parts.push(known(&format!("a^k_{x}{base}")));
+                parts.push(known(&txt!(self, "a^k_{x}{base}")));
             }
-            parts.push(direction_known(&format!("a^r_{x}{base}")));
+            parts.push(direction_known(&txt!(self, "a^r_{x}{base}")));
         }
-        format!("a_{x} = {}", parts.join(" + "))
+        txt!(self, "a_{x} = {}", parts.join(" + "))
     }
 
     fn equations(&mut self, a: String, b: String) {
         self.step(Op::Equation {
-            text: format!("{a}; {b}"),
+            text: txt!(self, "{a}; {b}"),
         });
     }
 
@@ -1020,14 +1102,18 @@ impl<'a> Builder<'a> {
             Vec2::ZERO,
             0.0,
         );
-        let fixed: Vec<String> = m.links[frame]
-            .points
-            .iter()
-            .filter(|p| self.st.points.contains(p))
-            .map(|&p| self.name(p).to_lowercase())
-            .collect();
+        let fixed: Vec<String> = if self.lean {
+            Vec::new()
+        } else {
+            m.links[frame]
+                .points
+                .iter()
+                .filter(|p| self.st.points.contains(p))
+                .map(|&p| self.name(p).to_lowercase())
+                .collect()
+        };
         self.step(Op::Pole { fixed });
-        for &p in &m.links[frame].points.clone() {
+        for &p in &m.links[frame].points {
             let x = self.world(frame, p);
             self.register(frame, x, 0);
             if self.st.points.contains(&p) {
@@ -1046,7 +1132,7 @@ impl<'a> Builder<'a> {
             }
             // The reported points of the group's links.
             for l in g.links() {
-                for &p in &m.links[l].points.clone() {
+                for &p in &m.links[l].points {
                     if self.st.points.contains(&p)
                         && self.plan.of_point[p].is_none()
                         && self.carrier(p) == l
@@ -1063,7 +1149,8 @@ impl<'a> Builder<'a> {
                     continue;
                 }
                 let mm = self.plan.points[i].at.hypot();
-                let q = format!(
+                let q = txt!(
+                    self,
                     "{}_{}",
                     if self.vel_kind() { "v" } else { "a" },
                     self.name(p)
@@ -1089,12 +1176,12 @@ impl<'a> Builder<'a> {
         Ok(())
     }
 
+    /// The first included link carrying `p` (in scene order), else the frame.
     fn carrier(&self, p: usize) -> usize {
-        self.m()
-            .links_of_point(p)
-            .into_iter()
-            .find(|&l| self.st.include[l])
-            .unwrap_or(self.m().frame())
+        let m = self.m();
+        (0..m.links.len())
+            .find(|&l| self.st.include[l] && m.links[l].points.contains(&p))
+            .unwrap_or(m.frame())
     }
 
     fn input(&mut self, (rate, rate2): (f64, f64)) -> Result<()> {
@@ -1106,15 +1193,15 @@ impl<'a> Builder<'a> {
                 let (o, a) = (self.world(link, pivot), self.world(link, other));
                 self.register(link, o, 0);
                 let (on, an) = (self.name(pivot), self.name(other));
-                let seg = format!("{on}{an}");
+                let seg = txt!(self, "{on}{an}");
                 let key = an.to_lowercase();
-                let label = lower_label(&an);
+                let label = self.label(&an);
                 let r = a - o;
                 let id = self.link(link);
                 let idx = if self.vel_kind() {
                     self.plan.rates[link] = Some((rate, 0.0));
                     self.step(Op::Equation {
-                        text: format!("v_{an} = ω{id}·l_{seg}, v_{an} ⊥ {seg}"),
+                        text: txt!(self, "v_{an} = ω{id}·l_{seg}, v_{an} ⊥ {seg}"),
                     });
                     let sense = if self.making(Mistake::OmegaWrongSense) {
                         -1.0
@@ -1124,8 +1211,8 @@ impl<'a> Builder<'a> {
                     self.lay_off(
                         0,
                         perp(r) * (rate * sense),
-                        format!("ω{id}·l_{seg}"),
-                        Dir::PerpSense(seg.clone(), format!("ω{id}")),
+                        txt!(self, "ω{id}·l_{seg}"),
+                        Dir::PerpSense(seg.clone(), txt!(self, "ω{id}")),
                         (key, label),
                         0.0,
                     )
@@ -1140,32 +1227,33 @@ impl<'a> Builder<'a> {
                     }
                     if rate2 != 0.0 {
                         self.step(Op::Equation {
-                            text: format!("a_{an} = a^n_{an}{on} + a^t_{an}{on}"),
+                            text: txt!(self, "a_{an} = a^n_{an}{on} + a^t_{an}{on}"),
                         });
                         let n = self.lay_off(
                             0,
                             -r * (w * w),
-                            format!("a^n_{an}{on} = ω{id}²·l_{seg}"),
+                            txt!(self, "a^n_{an}{on} = ω{id}²·l_{seg}"),
                             Dir::Toward(an.clone(), on.clone()),
-                            (format!("n_{id}"), ("n".into(), id.clone())),
+                            (txt!(self, "n_{id}"), (txt!(self, "n"), id.clone())),
                             0.0,
                         );
+                        self.note_normal(link, n);
                         self.lay_off(
                             n,
                             perp(r) * rate2,
-                            format!("a^t_{an}{on} = ε{id}·l_{seg}"),
-                            Dir::PerpSense(seg.clone(), format!("ε{id}")),
+                            txt!(self, "a^t_{an}{on} = ε{id}·l_{seg}"),
+                            Dir::PerpSense(seg.clone(), txt!(self, "ε{id}")),
                             (key, label),
                             0.0,
                         )
                     } else {
                         self.step(Op::Equation {
-                            text: format!("a_{an} = a^n_{an}{on} (ε{id} = 0)"),
+                            text: txt!(self, "a_{an} = a^n_{an}{on} (ε{id} = 0)"),
                         });
                         self.lay_off(
                             0,
                             -r * (w * w),
-                            format!("a^n_{an}{on} = ω{id}²·l_{seg}"),
+                            txt!(self, "a^n_{an}{on} = ω{id}²·l_{seg}"),
                             Dir::Toward(an.clone(), on.clone()),
                             (key, label),
                             0.0,
@@ -1186,9 +1274,9 @@ impl<'a> Builder<'a> {
                 let idx = self.lay_off(
                     0,
                     u * v,
-                    format!("{sym}_{xn}"),
+                    txt!(self, "{sym}_{xn}"),
                     Dir::Guide(self.link(m.frame())),
-                    (xn.to_lowercase(), lower_label(&xn)),
+                    (xn.to_lowercase(), self.label(&xn)),
                     0.0,
                 );
                 self.register(link, x, idx);
@@ -1232,7 +1320,7 @@ impl<'a> Builder<'a> {
                     std::mem::swap(&mut la.unit, &mut lb.unit);
                     std::mem::swap(&mut la.dir, &mut lb.dir);
                 }
-                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                let c = self.intersect(la, lb, cn.to_lowercase(), self.label(&cn))?;
                 self.register(l1, cw, c);
                 self.register(l2, cw, c);
                 self.plan.of_point[pc].get_or_insert(c);
@@ -1253,7 +1341,7 @@ impl<'a> Builder<'a> {
                 let pr = &m.prismatics[k];
                 let u = self.c.pose(pr.guide).dir(pr.line_dir);
                 let kc = self.coincident(k2, cw, pc);
-                let kcn = format!("{cn}{}", self.link(k2));
+                let kcn = txt!(self, "{cn}{}", self.link(k2));
                 self.equations(
                     self.relation(&cn, &bn, true, !self.nr[l1]),
                     self.relation(&cn, &kcn, false, !self.nr[k2]),
@@ -1270,7 +1358,7 @@ impl<'a> Builder<'a> {
                     cw,
                     &cn,
                 )?;
-                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                let c = self.intersect(la, lb, cn.to_lowercase(), self.label(&cn))?;
                 self.register(l1, cw, c);
                 self.register(l2, cw, c);
                 self.plan.of_point[pc].get_or_insert(c);
@@ -1299,7 +1387,7 @@ impl<'a> Builder<'a> {
                     unreachable!()
                 };
                 let u = self.c.pose(g).dir(pr.line_dir);
-                let xg = format!("{jsn}{}", self.link(g));
+                let xg = txt!(self, "{jsn}{}", self.link(g));
                 self.equations(
                     self.relation(&xg, &jsn, false, !self.nr[s]),
                     self.relation(&xg, &jgn, true, !self.nr[g]),
@@ -1316,8 +1404,8 @@ impl<'a> Builder<'a> {
                     jsw,
                     &jsn,
                 )?;
-                let (mut key, mut label) = (jsn.to_lowercase(), lower_label(&jsn));
-                key = format!("{key}_{}", self.link(g));
+                let (mut key, mut label) = (jsn.to_lowercase(), self.label(&jsn));
+                key = txt!(self, "{key}_{}", self.link(g));
                 label.1 = self.link(g);
                 let x = self.intersect(la, lb, key, label)?;
                 self.register(g, jsw, x);
@@ -1343,8 +1431,8 @@ impl<'a> Builder<'a> {
                 let c1 = self.coincident(kk1, cw, pc);
                 let c2 = self.coincident(kk2, cw, pc);
                 let (n1, n2) = (
-                    format!("{cn}{}", self.link(kk1)),
-                    format!("{cn}{}", self.link(kk2)),
+                    txt!(self, "{cn}{}", self.link(kk1)),
+                    txt!(self, "{cn}{}", self.link(kk2)),
                 );
                 self.equations(
                     self.relation(&cn, &n1, false, !self.nr[kk1]),
@@ -1372,7 +1460,7 @@ impl<'a> Builder<'a> {
                     cw,
                     &cn,
                 )?;
-                let c = self.intersect(la, lb, cn.to_lowercase(), lower_label(&cn))?;
+                let c = self.intersect(la, lb, cn.to_lowercase(), self.label(&cn))?;
                 self.register(l1, cw, c);
                 self.register(l2, cw, c);
                 self.plan.of_point[pc].get_or_insert(c);
@@ -1398,8 +1486,8 @@ impl<'a> Builder<'a> {
                 self.same_rate(l1, k2);
                 let bk = self.coincident(k2, bw, pb);
                 let (x2, xk) = (
-                    format!("{bn}{}", self.link(l2)),
-                    format!("{bn}{}", self.link(k2)),
+                    txt!(self, "{bn}{}", self.link(l2)),
+                    txt!(self, "{bn}{}", self.link(k2)),
                 );
                 self.equations(
                     self.relation(&x2, &bn, false, !self.nr[l1]),
@@ -1427,8 +1515,8 @@ impl<'a> Builder<'a> {
                     bw,
                     &bn,
                 )?;
-                let (mut key, mut label) = (bn.to_lowercase(), lower_label(&bn));
-                key = format!("{key}_{}", self.link(l2));
+                let (mut key, mut label) = (bn.to_lowercase(), self.label(&bn));
+                key = txt!(self, "{key}_{}", self.link(l2));
                 label.1 = self.link(l2);
                 let x = self.intersect(la, lb, key, label)?;
                 self.register(l2, bw, x);
@@ -1489,9 +1577,9 @@ impl<'a> Builder<'a> {
         }
         let base = self.link(t.base);
         let v = if self.vel_kind() { "v" } else { "a" };
-        let sname = format!("S{base}");
+        let sname = txt!(self, "S{base}");
         self.step(Op::Equation {
-            text: format!(
+            text: txt!(self,
                 "special point {sname} = {}{} ∩ {}{} on link {base}: {v}_{sname} = {v}_{} + {v}_{}{} + {v}_{sname}{}; {v}_{sname} = {v}_{} + {v}_{}{} + {v}_{sname}{}",
                 e[i].2, jn[i], e[j].2, jn[j], e[i].2, jn[i], e[i].2, jn[i], e[j].2, jn[j], e[j].2, jn[j]
             ),
@@ -1499,7 +1587,7 @@ impl<'a> Builder<'a> {
         // The line for S from leash n: through e_n (+ normals) ⊥ E_n J_n.
         let line_for_s = |b: &mut Builder, n: usize| -> PlanLine {
             let u = perp(jw[n] - e[n].1);
-            let seg = format!("{}{}", e[n].2, jn[n]);
+            let seg = txt!(b, "{}{}", e[n].2, jn[n]);
             if b.vel_kind() {
                 return b.line(e[n].0, u, Dir::Perp(seg));
             }
@@ -1511,18 +1599,23 @@ impl<'a> Builder<'a> {
                 from = b.lay_off(
                     from,
                     -r1 * (wl * wl),
-                    format!("a^n_{}{} = ω{}²·l_{seg}", jn[n], e[n].2, b.link(leash)),
+                    txt!(b, "a^n_{}{} = ω{}²·l_{seg}", jn[n], e[n].2, b.link(leash)),
                     Dir::Toward(jn[n].clone(), e[n].2.clone()),
-                    (format!("n_{}", b.link(leash)), ("n".into(), b.link(leash))),
+                    (
+                        txt!(b, "n_{}", b.link(leash)),
+                        (txt!(b, "n"), b.link(leash)),
+                    ),
                     2.0 * wl.abs() * b.omega_err(leash) * r1.hypot(),
                 );
+                b.note_normal(leash, from);
             }
             let r2 = sw - jw[n];
             if wb != 0.0 && r2.hypot() > 0.0 {
                 from = b.lay_off(
                     from,
                     -r2 * (wb * wb),
-                    format!(
+                    txt!(
+                        b,
                         "a^n_{sname}{} = ω{}²·l_{sname}{}",
                         jn[n],
                         b.link(t.base),
@@ -1530,22 +1623,28 @@ impl<'a> Builder<'a> {
                     ),
                     Dir::Toward(sname.clone(), jn[n].clone()),
                     (
-                        format!("n_{}", b.link(t.base)),
-                        ("n".into(), b.link(t.base)),
+                        txt!(b, "n_{}", b.link(t.base)),
+                        (txt!(b, "n"), b.link(t.base)),
                     ),
                     2.0 * wb.abs() * b.omega_err(t.base) * r2.hypot(),
                 );
+                b.note_normal(t.base, from);
             }
             b.line(from, u, Dir::Perp(seg))
         };
         let la = line_for_s(self, i);
         let lb = line_for_s(self, j);
-        let s_idx = self.intersect(la, lb, format!("s_{base}"), ("s".into(), base.clone()))?;
+        let s_idx = self.intersect(
+            la,
+            lb,
+            txt!(self, "s_{base}"),
+            (txt!(self, "s"), base.clone()),
+        )?;
         self.register(t.base, sw, s_idx);
         // Third leash: J_k from S on the base and from E_k on the leash.
         let (lbase, tbase) = self.rigid(t.base, s_idx, sw, &sname, jw[k], &jn[k]);
         let (lleash, tleash) = self.rigid(t.leashes[k], e[k].0, e[k].1, &e[k].2, jw[k], &jn[k]);
-        let jk = self.intersect(lbase, lleash, jn[k].to_lowercase(), lower_label(&jn[k]))?;
+        let jk = self.intersect(lbase, lleash, jn[k].to_lowercase(), self.label(&jn[k]))?;
         self.register(t.base, jw[k], jk);
         self.register(t.leashes[k], jw[k], jk);
         self.plan.of_point[jp[k]].get_or_insert(jk);
@@ -1558,12 +1657,7 @@ impl<'a> Builder<'a> {
             let from = if self.vel_kind() || self.omega(t.leashes[n]) == 0.0 {
                 e[n].0
             } else {
-                let key = format!("n_{}", self.link(t.leashes[n]));
-                self.plan
-                    .points
-                    .iter()
-                    .position(|p| p.key == key)
-                    .unwrap_or(e[n].0)
+                self.normal_of[t.leashes[n]].unwrap_or(e[n].0)
             };
             self.measure_rate(
                 t.leashes[n],
@@ -1614,7 +1708,32 @@ pub fn build_plans(
     order: Order,
     d: Drafting,
 ) -> Result<Plans> {
-    let velocity = build(st, c, drive, PlanKind::Velocity, None, &d)?;
+    plans(st, c, drive, order, d, false)
+}
+
+/// The same constructions as [`build_plans`], numbers only: every plan
+/// point, rate, measured value and error bound, but no names, labels or
+/// steps (the plan cannot be drawn or narrated). For sweeps that read
+/// numbers: the precision report, the speed bench.
+pub fn build_plans_numbers(
+    st: &Setup,
+    c: &Configuration,
+    drive: Drive,
+    order: Order,
+    d: Drafting,
+) -> Result<Plans> {
+    plans(st, c, drive, order, d, true)
+}
+
+fn plans(
+    st: &Setup,
+    c: &Configuration,
+    drive: Drive,
+    order: Order,
+    d: Drafting,
+    lean: bool,
+) -> Result<Plans> {
+    let velocity = build(st, c, drive, PlanKind::Velocity, None, &d, lean)?;
     let acceleration = match order {
         Order::Acceleration => Some(build(
             st,
@@ -1623,6 +1742,7 @@ pub fn build_plans(
             PlanKind::Acceleration,
             Some(&velocity),
             &d,
+            lean,
         )?),
         Order::Velocity => None,
     };
