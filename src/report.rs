@@ -148,15 +148,16 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
                 o.insert("plans".into(), Value::Object(pl));
             }
             if let Some(c) = &s.check {
-                o.insert(
-                    "crosscheck".into(),
-                    json!({
-                        "max_rel_diff": num(c.max_rel_diff),
-                        "worst": c.worst,
-                        "conditioning": num(c.conditioning),
-                        "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
-                    }),
-                );
+                let mut check = json!({
+                    "max_rel_diff": num(c.max_rel_diff),
+                    "worst": c.worst,
+                    "conditioning": num(c.conditioning),
+                    "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
+                });
+                if let Some(sens) = c.data_sensitivity {
+                    check["data_sensitivity"] = num(sens);
+                }
+                o.insert("crosscheck".into(), check);
             }
             Value::Object(o)
         })

@@ -54,7 +54,26 @@ pub struct CrossCheck {
     pub conditioning: f64,
     /// Wall time of the plans' construction, seconds (0 without plans).
     pub plan_time: f64,
+    /// Near a singular position (conditioning below [`SENSITIVITY_GATE`]):
+    /// how far the answer moves when the scene's data change by a few
+    /// units of rounding, relative as `max_rel_diff`; `None` elsewhere.
+    pub data_sensitivity: Option<f64>,
 }
+
+/// Below this conditioning the rounding of the data may decide the answer.
+/// Both routes start from the same rounded numbers, so their agreement
+/// cannot show it; at a fold of a group (a dead point) the answer's
+/// sensitivity to the data grows like κ² (the position moves by ε·κ, its
+/// rates by κ times that). Above the gate ε·κ² < 3e-8, below the refusal
+/// limit, so the check runs only where it can refuse.
+pub const SENSITIVITY_GATE: f64 = 1e-4;
+
+/// The largest data sensitivity accepted, as the routes' disagreement.
+pub const MAX_REL_DIFF: f64 = 1e-6;
+
+/// The change of the data for the sensitivity check: every length and
+/// sketch coordinate by this many units of rounding (relative).
+const DATA_PERTURBATION: f64 = 8.0 * f64::EPSILON;
 
 /// One solved position.
 #[derive(Clone, Debug)]
@@ -404,8 +423,9 @@ impl Analysis {
                 constraint_time,
                 conditioning: cs.conditioning,
                 plan_time,
+                data_sensitivity: None,
             });
-            if d.is_nan() || d > 1e-6 {
+            if d.is_nan() || d > MAX_REL_DIFF {
                 return Err(Error::Singular {
                     at: describe_input(m, q),
                     why: format!(
@@ -413,9 +433,83 @@ impl Analysis {
                     ),
                 });
             }
+            if cs.conditioning < SENSITIVITY_GATE && self.order.is_some() {
+                let sens = self
+                    .data_sensitivity(&solved)
+                    .map_err(|why| Error::Singular {
+                        at: describe_input(m, q),
+                        why,
+                    })?;
+                if let Some(c) = solved.check.as_mut() {
+                    c.data_sensitivity = Some(sens);
+                }
+            }
             out.push(solved);
         }
         Ok(out)
+    }
+
+    /// How far the answer at a solved position moves when every length
+    /// and sketch coordinate of the scene changes by a few units of
+    /// rounding (two opposite changes of a fixed alternating pattern): the
+    /// largest relative change, as the routes' comparison measures it.
+    /// `Err` (a refusal) when the data's rounding alone decides the answer:
+    /// the changed mechanism does not assemble here, or the answer moves by
+    /// more than [`MAX_REL_DIFF`].
+    fn data_sensitivity(&self, s: &Solved) -> std::result::Result<f64, String> {
+        let m = &self.mech;
+        let order = self.order.unwrap_or(Order::Velocity);
+        let mut worst = (0.0f64, String::new());
+        for sign in [1.0, -1.0] {
+            let mut scene = m.scene.clone();
+            let k = sign * DATA_PERTURBATION;
+            for (i, l) in scene.lengths.iter_mut().enumerate() {
+                l.value *= 1.0 + if i % 2 == 0 { k } else { -k };
+            }
+            for (i, p) in scene.points.iter_mut().enumerate() {
+                let (dx, dy) = if i % 2 == 0 { (k, -k) } else { (-k, k) };
+                p.sketch = Point::new(
+                    p.sketch.x + dx * m.size.max(p.sketch.x.abs()),
+                    p.sketch.y + dy * m.size.max(p.sketch.y.abs()),
+                );
+            }
+            let moved = Analysis::new(scene)
+                .and_then(|an| {
+                    let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())?;
+                    let c = ps.solve(s.q)?;
+                    contour::solve(
+                        &an.mech,
+                        &an.structure,
+                        &an.need,
+                        &c,
+                        Drive {
+                            q: s.q,
+                            rate: s.rate,
+                            rate2: s.rate2,
+                        },
+                        order,
+                    )
+                })
+                .map_err(|e| {
+                    format!(
+                        "the position is within rounding of a dead point: with the data changed by {} units of rounding the mechanism has no answer here ({e})",
+                        DATA_PERTURBATION / f64::EPSILON
+                    )
+                })?;
+            let (d, what) = self.compare(s, &moved);
+            if d > worst.0 || d.is_nan() {
+                worst = (d, what);
+            }
+        }
+        if worst.0.is_nan() || worst.0 > MAX_REL_DIFF {
+            return Err(format!(
+                "the answer is decided by the rounding of the data: a change of {} units of rounding in the lengths moves {} by {:.2e} (relative); the position is too close to a dead point",
+                DATA_PERTURBATION / f64::EPSILON,
+                worst.1,
+                worst.0
+            ));
+        }
+        Ok(worst.0)
     }
 
     /// Largest relative difference between the plans (measured values × μ)

@@ -20,9 +20,10 @@
 //! reported `p`, `v`, `a`, angles, ω, ε and their transfer functions):
 //! within
 //!
-//!   (c·ε·κ + 4·d)·S,   κ = 1 / `crosscheck.conditioning`, c = 256,
+//!   (c·ε·κ + 4·d + 4·σ)·S,   κ = 1 / `crosscheck.conditioning`, c = 256,
 //!
-//! where ε = 2⁻⁵², d = `crosscheck.max_rel_diff` and S is the position's
+//! where ε = 2⁻⁵², d = `crosscheck.max_rel_diff`, σ =
+//! `crosscheck.data_sensitivity` (0 where absent) and S is the position's
 //! scale of that kind (the sketch size for positions; the largest |v| or
 //! |ω|·size for velocities; the largest |a|, |ε|·size or ω²·size for
 //! accelerations; the same at unit input rate for transfer functions).
@@ -30,8 +31,12 @@
 //! (κ amplifies a relative perturbation of Φ_q·q̇ = b; c covers the few
 //! dozen roundings per equation and their accumulation through the
 //! groups). Near a dead point the positions' own rounding error is
-//! amplified again (second order in κ); the difference d between the two
-//! independent routes measures that part.
+//! amplified again (second order in κ): the difference d between the two
+//! independent routes measures the part the routes' own arithmetic adds,
+//! and σ (how far a few units of rounding in the data move the answer,
+//! measured by mechplan below a conditioning of 1e-4) the part the data's
+//! rounding decides, which both routes share. Where σ > 1e-6 mechplan
+//! refuses the position.
 
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
 use mechplan::scene::{InputSpec, PositionsSpec};
@@ -45,16 +50,12 @@ const C: f64 = 256.0;
 
 /// Positions mechplan answers although the exact mechanism has no
 /// well-defined answer there (the extended-precision reference does not
-/// converge): known silently-wrong numbers, reported to the lead. The test
-/// checks that each still reproduces, so a fix shows up here.
-const KNOWN_UNVERIFIABLE: &[(&str, f64, &str)] = &[(
-    "class3_three_leashes_parallel_1e-9",
-    0.5235987755982988,
-    "the three leashes are parallel to 1e-9 rad, so the sketch angle is within rounding of the \
-     group's dead point (a fold: q is ~δ² = 1e-18 from it); mechplan reports ω4 = 2.9e8 rad/s, \
-     ε4 = −1.2e25 rad/s² with conditioning 7e-11 (> the 1e-13 limit) and the routes agreeing to \
-     3e-7, but rounding of the data alone decides these values",
-)];
+/// converge): known silently-wrong numbers. The test checks that each
+/// still reproduces, so a fix shows up here. Empty since mechplan measures
+/// the data's sensitivity near dead points (`class3_three_leashes_parallel_1e-9`,
+/// three leashes parallel to 1e-9 rad, was answered with ω4 = 2.9e8 rad/s
+/// decided by rounding alone; it is now refused).
+const KNOWN_UNVERIFIABLE: &[(&str, f64, &str)] = &[];
 
 fn stress_files() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/stress");
@@ -260,6 +261,11 @@ fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
     let eps = f64::EPSILON;
     let kappa = 1.0 / num(&pos["crosscheck"]["conditioning"]);
     let diff = num(&pos["crosscheck"]["max_rel_diff"]);
+    // Near a dead point: how far a few units of rounding in the data move
+    // the answer (absent where the conditioning is above the gate).
+    let sens = pos["crosscheck"]["data_sensitivity"]
+        .as_f64()
+        .unwrap_or(0.0);
     let np = an.points.len();
     let links: Vec<usize> = (0..m.links.len()).filter(|&l| an.include[l]).collect();
     // Scales of each kind at this position, from the reference: points'
@@ -279,7 +285,7 @@ fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
     };
     let (sv, sa) = (scale(&r.v, None), scale(&r.a, Some(&r.v)));
     let (sq, sqq) = (scale(&r.d1, None), scale(&r.d2, Some(&r.d1)));
-    let analytic = |s: f64| (C * eps * kappa + 4.0 * diff) * s;
+    let analytic = |s: f64| (C * eps * kappa + 4.0 * diff + 4.0 * sens) * s;
     let mut out = Vec::new();
     for (k, &p) in an.points.iter().enumerate() {
         let name = m.point_name(p);
@@ -540,4 +546,101 @@ fn stress_catalogue_is_right_or_refused() {
 fn first_line(s: &str) -> String {
     let l = s.lines().next().unwrap_or("");
     l.strip_prefix("mechplan: ").unwrap_or(l).to_string()
+}
+
+mod common;
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 48,
+        .. proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// Random mechanisms: a fixture with every length changed by up to
+    /// ±4 %, a random position of its sweep, random ω1 (ε1) over twelve
+    /// orders of magnitude. Either mechplan refuses with a clear message,
+    /// or every number it reports (places, v, a, angles, ω, ε, transfer
+    /// functions, plan values) is within its own reported bound of the
+    /// extended-precision reference.
+    #[test]
+    fn reported_bounds_cover_the_error_on_random_mechanisms(
+        f in 0..common::FIXTURES.len(),
+        t in 0.0..1.0f64,
+        lengths in proptest::collection::vec(-0.04..0.04f64, 16),
+        log_omega in -6.0..6.0f64,
+        eps_ratio in -2.0..2.0f64,
+    ) {
+        let name = common::FIXTURES[f];
+        let mut v = common::fixture(name);
+        let fixture = v.clone();
+        if let Some(l) = v.get_mut("lengths").and_then(Value::as_object_mut) {
+            for (k, (_, x)) in l.iter_mut().enumerate() {
+                *x = serde_json::json!(x.as_f64().unwrap() * (1.0 + lengths[k % lengths.len()]));
+            }
+        }
+        // Changed lengths that contradict the sketch (a point drawn on a
+        // line its distances put off it) are refused by the reader with
+        // the field named; then the fixture's own lengths are used.
+        if let Err(e) = Scene::from_json(&v.to_string()).and_then(Analysis::new) {
+            proptest::prop_assert!(e.to_string().contains("/"), "{name}: {e}");
+            v["lengths"] = fixture["lengths"].clone();
+        }
+        let omega = 10f64.powf(log_omega);
+        if v["input"].get("slider").is_some() {
+            v["input"]["v"] = serde_json::json!(omega * 0.05);
+            v["input"]["a"] = serde_json::json!(eps_ratio * omega * omega * 0.05);
+        } else {
+            v["input"]["omega"] = serde_json::json!(omega);
+            v["input"].as_object_mut().unwrap().remove("rpm");
+            v["input"]["epsilon"] = serde_json::json!(eps_ratio * omega * omega);
+        }
+        let sw = common::sweep(name, &v);
+        let (key, list) = sw.as_object().unwrap().iter().next().unwrap();
+        let list = list.as_array().unwrap();
+        let x = list[((list.len() - 1) as f64 * t) as usize].as_f64().unwrap();
+        v["positions"] = serde_json::json!({ key.as_str(): [x] });
+        let scene = match Scene::from_json(&v.to_string()) {
+            Ok(s) => s,
+            Err(e) => {
+                proptest::prop_assert!(e.to_string().contains('/'), "{name}: {e}");
+                return Ok(());
+            }
+        };
+        let an = match Analysis::new(scene.clone()) {
+            Ok(an) => an,
+            Err(e) => {
+                proptest::prop_assert!(clear_refusal(&e.to_string()), "{name}: {e}");
+                return Ok(());
+            }
+        };
+        let solved = match an.run() {
+            Ok(s) => s,
+            Err(e) => {
+                proptest::prop_assert!(clear_refusal(&e.to_string()), "{name}: {e}");
+                return Ok(());
+            }
+        };
+        let doc = mechplan::report::to_json(&an, &solved);
+        let pos = &doc["positions"][0];
+        let q = solved[0].q;
+        let unit = {
+            let mut u = scene.clone();
+            match &mut u.input {
+                InputSpec::Crank { omega, epsilon, .. } => (*omega, *epsilon) = (1.0, 0.0),
+                InputSpec::Slider { v, a, .. } => (*v, *a) = (1.0, 0.0),
+            }
+            Analysis::new(u).unwrap()
+        };
+        let r = extended(&an, &unit, q);
+        proptest::prop_assert!(r.is_some(), "{name} at q = {q}: no extended-precision reference");
+        let r = r.unwrap();
+        for it in items(&an, pos, &r) {
+            let d = (it.got - it.want).abs();
+            proptest::prop_assert!(
+                d <= it.allowed,
+                "{name} at q = {q}: {}: reported {:e}, reference {:e}, difference {d:.3e} > allowed {:.3e}",
+                it.what, it.got, it.want, it.allowed
+            );
+        }
+    }
 }
