@@ -15,6 +15,9 @@
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
+//! - `sweep/six_link_3600/{1,2}_threads`: `Analysis::run` over 3600
+//!   positions of the six-link fixture on a rayon pool of one thread and of
+//!   two (the per-position work runs in parallel, `mechplan::progress`);
 //! - `limit/four_bar`: a minimal closed-form four-bar (positions,
 //!   velocities, accelerations of the same quantities, no allocation),
 //!   the practical limit for the four-bar fixture.
@@ -324,5 +327,24 @@ fn draw(cr: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, per_position, draw);
+fn sweep(cr: &mut Criterion) {
+    let mut v: serde_json::Value = serde_json::from_str(&text("six_link_fig2_10")).unwrap();
+    let a0 = v["input"]["angle"].as_f64().unwrap();
+    v["positions"] = serde_json::json!({ "angles": (0..3600).map(|k| a0 + k as f64 / 10.0).collect::<Vec<_>>() });
+    let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    let mut g = cr.benchmark_group("sweep");
+    g.sample_size(10);
+    for threads in [1, 2] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        g.bench_function(format!("six_link_3600/{threads}_threads"), |b| {
+            b.iter(|| pool.install(|| black_box(an.run().unwrap())))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, per_position, draw, sweep);
 criterion_main!(benches);

@@ -15,6 +15,7 @@ pub mod json;
 pub mod mechanism;
 pub mod positions;
 pub mod precision;
+pub mod progress;
 pub mod reference;
 pub mod report;
 pub mod scene;

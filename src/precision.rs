@@ -237,11 +237,13 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     let links: Vec<usize> = (0..m.links.len())
         .filter(|&l| an.include[l] && l != m.frame())
         .collect();
-    // The reference at every evaluation position.
+    // The reference at every evaluation position: the starts in order (on
+    // the sketch's branch), then each refined on its own, in parallel.
     let mut re = Reference::new(an)?;
-    let mut truth = Vec::with_capacity(qs.len());
-    for &q in &qs {
-        let st: RefState = re.solve_f64(q)?;
+    let starts: Vec<(f64, Configuration)> = qs.iter().copied().zip(re.starts(&qs)?).collect();
+    let truth = crate::progress::map(&starts, "reference", |(q, c)| -> Result<Truth> {
+        let st: RefState = re.refine(&Real::from_f64(*q), c)?;
+        let q = *q;
         let points: Vec<_> = an.points.iter().map(|&p| st.point(an, p)).collect();
         let rates: Vec<(Real, Real)> = links
             .iter()
@@ -260,14 +262,16 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
             sv = sv.max(w.abs().to_f64() * m.size);
             sa = sa.max(e.abs().to_f64() * m.size);
         }
-        truth.push(Truth {
+        Ok(Truth {
             q,
             points,
             rates,
             sv: sv.max(f64::MIN_POSITIVE),
             sa: sa.max(f64::MIN_POSITIVE),
-        });
-    }
+        })
+    })
+    .into_iter()
+    .collect::<Result<Vec<Truth>>>()?;
     let setup = Setup {
         m,
         s: &an.structure,

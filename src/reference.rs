@@ -17,7 +17,7 @@
 //! with partial pivoting.
 
 use crate::error::{Error, Result};
-use crate::positions::{PositionSolver, describe_input};
+use crate::positions::{Configuration, PositionSolver, describe_input};
 use crate::scene::{Direction, InputSpec, Through};
 use crate::solve::Analysis;
 use dashu_float::FBig;
@@ -601,9 +601,23 @@ impl<'a> Reference<'a> {
 
     /// Solve at the input coordinate `q` given in extended precision.
     pub fn solve(&mut self, q: &Real) -> Result<RefState> {
+        let c = self.ps.solve(q.to_f64())?;
+        self.refine(q, &c)
+    }
+
+    /// The start of the reference at each of `qs`, in order: the double
+    /// precision positions, continued from one to the next on the branch
+    /// the sketch shows. Each then refines on its own ([`Reference::refine`]).
+    pub fn starts(&mut self, qs: &[f64]) -> Result<Vec<Configuration>> {
+        qs.iter().map(|&q| self.ps.solve(q)).collect()
+    }
+
+    /// Newton's method in extended precision from the double precision
+    /// position `c` at `q`, then velocities and accelerations. Independent
+    /// of any other position, so positions can be refined in parallel.
+    pub fn refine(&self, q: &Real, c: &Configuration) -> Result<RefState> {
         let m = &self.an.mech;
         let qf = q.to_f64();
-        let c = self.ps.solve(qf)?;
         let mut x: Vec<Real> = Vec::with_capacity(3 * self.links.len());
         for &l in &self.links {
             let p = c.pose(l);

@@ -75,6 +75,17 @@ pub const MAX_REL_DIFF: f64 = 1e-6;
 /// sketch coordinate by this many units of rounding (relative).
 const DATA_PERTURBATION: f64 = 8.0 * f64::EPSILON;
 
+/// A position found in order by both routes, before its rates.
+struct Placed<'a> {
+    q: f64,
+    config: Configuration,
+    /// Route (b) at this position (its state continues from the last).
+    constraint: ConstraintSolver<'a>,
+    /// Time of finding the position, seconds, by route (a) and route (b).
+    contour_time: f64,
+    constraint_time: f64,
+}
+
 /// One solved position.
 #[derive(Clone, Debug)]
 pub struct Solved {
@@ -338,115 +349,175 @@ impl Analysis {
     }
 
     /// Solve every position asked for, both routes, with the cross-check.
+    ///
+    /// The positions are found in order (both routes continue from one
+    /// position to the next, which keeps them on the sketch's branch);
+    /// then each position's velocities, accelerations, plans and checks are
+    /// independent, and long sweeps do them in parallel
+    /// ([`crate::progress::map`]). The result, and the first error in the
+    /// order of the positions, are those of a sequential run.
     pub fn run(&self) -> Result<Vec<Solved>> {
         let values = self.input_values()?;
         let m = &self.mech;
-        let (rate, rate2) = m.scene.input.rates();
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
-        let mut out = Vec::with_capacity(values.len());
+        let mut placed = Vec::with_capacity(values.len());
+        let mut stop = None;
         for &q in &values {
             let t0 = Clock::now();
-            let config = ps.solve(q)?;
-            let (motion, analogue) = match self.order {
-                Some(order) => (
-                    contour::solve(
-                        m,
-                        &self.structure,
-                        &self.need,
-                        &config,
-                        Drive { q, rate, rate2 },
-                        order,
-                    )?,
-                    contour::solve(
-                        m,
-                        &self.structure,
-                        &self.need,
-                        &config,
-                        Drive {
-                            q,
-                            rate: 1.0,
-                            rate2: 0.0,
-                        },
-                        order,
-                    )?,
-                ),
-                None => (vec![None; m.links.len()], vec![None; m.links.len()]),
+            let config = match ps.solve(q) {
+                Ok(c) => c,
+                Err(e) => {
+                    stop = Some(e);
+                    break;
+                }
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
-            cs.solve_positions(q)?;
-            let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
-            let constraint_time = t1.elapsed().as_secs_f64();
-            let t2 = Clock::now();
-            let plans = match self.order {
-                Some(order) => {
-                    let setup = Setup {
-                        m,
-                        s: &self.structure,
-                        need: &self.need,
-                        points: &self.points,
-                        include: &self.include,
-                    };
-                    Some(build_plans(
-                        &setup,
-                        &config,
-                        Drive { q, rate, rate2 },
-                        order,
-                        self.drafting,
-                    )?)
-                }
-                None => None,
-            };
-            let plan_time = t2.elapsed().as_secs_f64();
-            let mut solved = Solved {
-                q,
-                rate,
-                rate2,
-                config,
-                motion,
-                analogue,
-                plans,
-                check: None,
-            };
-            let (mut d, mut worst) = self.compare(&solved, &other);
-            for (route, mo) in [("contour", &solved.motion), ("constraint", &other)] {
-                let (dp, wp) = self.compare_plans(&solved, mo);
-                if dp > d || dp.is_nan() {
-                    (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
-                }
+            if let Err(e) = cs.solve_positions(q) {
+                // Route (a)'s rates come first at a position: its error,
+                // if it has one here, is the one a sequential run reports.
+                stop = Some(self.contour_error(q, &config).unwrap_or(e));
+                break;
             }
-            solved.check = Some(CrossCheck {
-                max_rel_diff: d,
-                worst: worst.clone(),
+            let constraint_time = t1.elapsed().as_secs_f64();
+            placed.push(Placed {
+                q,
+                config,
+                constraint: cs.clone(),
                 contour_time,
                 constraint_time,
-                conditioning: cs.conditioning,
-                plan_time,
-                data_sensitivity: None,
             });
-            if d.is_nan() || d > MAX_REL_DIFF {
-                return Err(Error::Singular {
-                    at: describe_input(m, q),
-                    why: format!(
-                        "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
-                    ),
-                });
-            }
-            if cs.conditioning < SENSITIVITY_GATE && self.order.is_some() {
-                let sens = self
-                    .data_sensitivity(&solved)
-                    .map_err(|why| Error::Singular {
-                        at: describe_input(m, q),
-                        why,
-                    })?;
-                if let Some(c) = solved.check.as_mut() {
-                    c.data_sensitivity = Some(sens);
-                }
-            }
-            out.push(solved);
         }
-        Ok(out)
+        let solved = crate::progress::map(&placed, "positions", |p| self.finish(p));
+        let mut out = Vec::with_capacity(solved.len());
+        for s in solved {
+            out.push(s?);
+        }
+        match stop {
+            Some(e) => Err(e),
+            None => Ok(out),
+        }
+    }
+
+    /// Route (a)'s error at a position, if its contours are singular there.
+    fn contour_error(&self, q: f64, config: &Configuration) -> Option<Error> {
+        let order = self.order?;
+        let (rate, rate2) = self.mech.scene.input.rates();
+        contour::solve(
+            &self.mech,
+            &self.structure,
+            &self.need,
+            config,
+            Drive { q, rate, rate2 },
+            order,
+        )
+        .err()
+    }
+
+    /// One placed position: both routes' rates, the plans, the cross-check.
+    fn finish(&self, p: &Placed) -> Result<Solved> {
+        let m = &self.mech;
+        let (rate, rate2) = m.scene.input.rates();
+        let (q, config) = (p.q, p.config.clone());
+        let mut cs = p.constraint.clone();
+        let t0 = Clock::now();
+        let (motion, analogue) = match self.order {
+            Some(order) => (
+                contour::solve(
+                    m,
+                    &self.structure,
+                    &self.need,
+                    &config,
+                    Drive { q, rate, rate2 },
+                    order,
+                )?,
+                contour::solve(
+                    m,
+                    &self.structure,
+                    &self.need,
+                    &config,
+                    Drive {
+                        q,
+                        rate: 1.0,
+                        rate2: 0.0,
+                    },
+                    order,
+                )?,
+            ),
+            None => (vec![None; m.links.len()], vec![None; m.links.len()]),
+        };
+        let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
+        let t1 = Clock::now();
+        let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
+        let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
+        let t2 = Clock::now();
+        let plans = match self.order {
+            Some(order) => {
+                let setup = Setup {
+                    m,
+                    s: &self.structure,
+                    need: &self.need,
+                    points: &self.points,
+                    include: &self.include,
+                };
+                Some(build_plans(
+                    &setup,
+                    &config,
+                    Drive { q, rate, rate2 },
+                    order,
+                    self.drafting,
+                )?)
+            }
+            None => None,
+        };
+        let plan_time = t2.elapsed().as_secs_f64();
+        let mut solved = Solved {
+            q,
+            rate,
+            rate2,
+            config,
+            motion,
+            analogue,
+            plans,
+            check: None,
+        };
+        let (mut d, mut worst) = self.compare(&solved, &other);
+        for (route, mo) in [("contour", &solved.motion), ("constraint", &other)] {
+            let (dp, wp) = self.compare_plans(&solved, mo);
+            if dp > d || dp.is_nan() {
+                (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
+            }
+        }
+        solved.check = Some(CrossCheck {
+            max_rel_diff: d,
+            worst: worst.clone(),
+            contour_time,
+            constraint_time,
+            conditioning: cs.conditioning,
+            plan_time,
+            data_sensitivity: None,
+        });
+        if d.is_nan() || d > MAX_REL_DIFF {
+            return Err(Error::Singular {
+                at: describe_input(m, q),
+                why: format!(
+                    "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
+                ),
+            });
+        }
+        if cs.conditioning < SENSITIVITY_GATE && self.order.is_some() {
+            let sens = self
+                .data_sensitivity(&solved)
+                .map_err(|why| Error::Singular {
+                    at: describe_input(m, q),
+                    why,
+                })?;
+            if let Some(c) = solved.check.as_mut() {
+                c.data_sensitivity = Some(sens);
+            }
+        }
+        Ok(solved)
     }
 
     /// How far the answer at a solved position moves when every length
