@@ -374,7 +374,8 @@ impl Analysis {
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
-            if let Err(e) = cs.solve_positions(q) {
+            let span = self.path_span(&ps, cs.last_input(), q);
+            if let Err(e) = cs.solve_positions_by(q, span) {
                 // Route (a)'s rates come first at a position: its error,
                 // if it has one here, is the one a sequential run reports.
                 stop = Some(self.contour_error(q, &config).unwrap_or(e));
@@ -398,6 +399,28 @@ impl Analysis {
             Some(e) => Err(e),
             None => Ok(out),
         }
+    }
+
+    /// Which way the input goes from `from` to `to`: a slider straight; a
+    /// crank the short way round, unless the mechanism does not assemble
+    /// on it (a crank that only rocks) and does the other way. Route (a)'s
+    /// closed forms, tried every 5°, tell; route (b) then continues along
+    /// that way, so a valid sequence of a rocking crank is never refused.
+    fn path_span(&self, ps: &PositionSolver, from: f64, to: f64) -> f64 {
+        let InputSpec::Crank { .. } = self.mech.scene.input else {
+            return to - from;
+        };
+        let short = wrap_pi(to - from);
+        let assembles = |span: f64| {
+            let mut probe = ps.clone();
+            let n = (span.abs() / 5f64.to_radians()).ceil().max(1.0) as usize;
+            (1..n).all(|i| probe.solve_at(from + span * i as f64 / n as f64).is_ok())
+        };
+        if short == 0.0 || assembles(short) {
+            return short;
+        }
+        let long = short - std::f64::consts::TAU.copysign(short);
+        if assembles(long) { long } else { short }
     }
 
     /// Route (a)'s error at a position, if its contours are singular there.

@@ -166,3 +166,45 @@ fn rates_match_finite_differences_of_positions() {
         }
     }
 }
+
+/// A crank that only rocks (a triple rocker: |φ| ≤ 101.07°, never near
+/// 180°, where A and O3 are 0.75 m apart and the links reach 0.6 m). From
+/// 100° to −100° the short way round (through 180°) does not assemble; the
+/// mechanism goes back through 0°. Route (b) continues along the way the
+/// mechanism assembles, so the sequence is solved, not refused, and both
+/// routes agree at every position.
+#[test]
+fn a_rocking_crank_is_followed_the_way_it_assembles() {
+    let scene = serde_json::json!({
+        "mechplan": 1,
+        "title": "Rocking crank: a triple rocker whose input link only rocks",
+        "units": { "length": "m", "angle": "deg" },
+        "points": {
+            "O1": [0, 0],
+            "A": [0.21650635094610968, 0.12499999999999999],
+            "B": [0.4619023753811321, 0.29757111922765594],
+            "O3": [0.5, 0]
+        },
+        "links": {
+            "0": { "points": ["O1", "O3"] },
+            "1": { "points": ["O1", "A"] },
+            "2": { "points": ["A", "B"] },
+            "3": { "points": ["O3", "B"] }
+        },
+        "lengths": { "O1-A": 0.25, "A-B": 0.3, "O3-B": 0.3 },
+        "input": { "link": "1", "pivot": "O1", "angle": 30, "omega": 2, "epsilon": 0.5 },
+        "positions": { "angles": [30, 100, -100, 0, 100, -95, 95] }
+    });
+    let scene = mechplan::Scene::from_json(&scene.to_string()).unwrap();
+    let an = mechplan::Analysis::new(scene).unwrap();
+    // The short way from 100° to −100° passes 180°, where it cannot assemble.
+    let mut cs = ConstraintSolver::new(&an.mech, &an.include, Settings::default());
+    cs.solve_positions(100f64.to_radians()).unwrap();
+    assert!(cs.solve_positions((-100f64).to_radians()).is_err());
+    let solved = an.run().unwrap();
+    assert_eq!(solved.len(), 7);
+    for s in &solved {
+        let c = s.check.as_ref().unwrap();
+        assert!(c.max_rel_diff < 1e-12, "at {}: {}", s.q, c.max_rel_diff);
+    }
+}

@@ -354,7 +354,18 @@ impl<'a> ConstraintSolver<'a> {
     /// Positions at input coordinate `x`, reached by continuation from the
     /// previous solve (from the sketch at first), the short way round.
     pub fn solve_positions(&mut self, x: f64) -> Result<()> {
-        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
+        let last = self.last_input();
+        let span = match self.m.scene.input {
+            InputSpec::Crank { .. } => wrap_pi(x - last),
+            InputSpec::Slider { .. } => x - last,
+        };
+        self.solve_positions_by(x, span)
+    }
+
+    /// Positions at input coordinate `x`, reached from the previous solve
+    /// by turning the input through `span` (which way round a rocking
+    /// crank goes is the caller's: the way the mechanism assembles).
+    pub fn solve_positions_by(&mut self, x: f64, span: f64) -> Result<()> {
         let err = |why: String| Error::Assembly {
             group: "the mechanism (constraint solver)".into(),
             at: describe_input(self.m, x),
@@ -365,11 +376,25 @@ impl<'a> ConstraintSolver<'a> {
             self.newton(x0).map_err(err)?;
             self.last_input = x0;
         }
-        let span = if crank {
-            wrap_pi(x - self.last_input)
+        self.walk(span).map_err(err)?;
+        self.last_input = x;
+        Ok(())
+    }
+
+    /// The input coordinate of the last solved position (the sketch's
+    /// before the first).
+    pub fn last_input(&self) -> f64 {
+        if self.last_input.is_nan() {
+            sketch_input(self.m)
         } else {
-            x - self.last_input
-        };
+            self.last_input
+        }
+    }
+
+    /// Newton's method along the input from the last solved coordinate by
+    /// `span`, in steps of at most 5° (or 2 % of the size).
+    fn walk(&mut self, span: f64) -> std::result::Result<(), String> {
+        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
         let step = if crank {
             5f64.to_radians()
         } else {
@@ -377,10 +402,8 @@ impl<'a> ConstraintSolver<'a> {
         };
         let n = ((span.abs() / step).ceil() as usize).max(1);
         for i in 1..=n {
-            let xi = self.last_input + span * i as f64 / n as f64;
-            self.newton(xi).map_err(err)?;
+            self.newton(self.last_input + span * i as f64 / n as f64)?;
         }
-        self.last_input = x;
         Ok(())
     }
 
