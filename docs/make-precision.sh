@@ -40,7 +40,7 @@ route (a) to 5e-15 on every fixture, and with the exact dimensions of seed
 
 | method | what is timed per position | what is compared |
 |---|---|---|
-| kernel | positions (route (a)) + the velocity and acceleration plans as drafting operations | plan segments × μ and ω, ε measured on the plans; the pencil error is *not* counted: this is the kernel's floating-point error |
+| kernel | positions (route (a)) + the velocity and acceleration plans as drafting operations (numbers only: \`build_plans_numbers\`, no names or steps) | plan segments × μ and ω, ε measured on the plans; the pencil error is *not* counted: this is the kernel's floating-point error |
 | contour | positions + route (a)'s closed vector contours | places, v, a, ω, ε |
 | newton, tol | route (b): Newton continued from the last position (steps ≤ 5°) stopped when the correction is below tol × size, the SVD conditioning check and the two linear solves | places, v, a, ω, ε |
 | chords, N | one position solve per position of a diagram of N positions per revolution and the differences | v from the chord of the interval of which the position is the midpoint (the lecture's diagrams), a and ε from the chords of that diagram back at the node (the second difference); ω, ε from the links' angles |
@@ -58,9 +58,10 @@ a dashed line joins the settings of one method.
 - The three exact routes sit at the floor of f64: route (a) and the
   kernel at a few 1e-16 (ε up to a few 1e-15 where an angular acceleration
   is small against a·size), route (b) the same once Newton's tolerance is
-  1e-8 or finer. Route (a) is the cheapest (about 1 µs per position for
-  dyads), the kernel and route (b) cost 50–100 µs (the kernel records every
-  drafting step; route (b) pays an SVD for its conditioning check).
+  1e-8 or finer. Route (a) is the cheapest (under 1 µs per position for
+  dyads), the kernel and route (b) cost some 10–50 µs (the kernel keeps
+  every plan point with its error radius and chooses a standard scale by a
+  first construction; route (b) pays an SVD for its conditioning check).
 - Newton's tolerance is conservative: it bounds the last correction, and
   the quadratic convergence makes the error after it about its square, so
   tol 1e-4 gives 1e-13…1e-8 and tol 1e-8 is already at the floor.

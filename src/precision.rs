@@ -25,7 +25,7 @@
 
 use crate::analytic::constraint::{ConstraintSolver, Settings as NewtonSettings};
 use crate::analytic::{Drive, Motion, Order, contour};
-use crate::construction::{Drafting, Setup, Variant, build_plans};
+use crate::construction::{Drafting, Setup, Variant, build_plans_numbers};
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::positions::{Configuration, PositionSolver};
@@ -311,7 +311,7 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         ..an.drafting
     };
     let kernel_got = |c: &Configuration, q: f64, d: Drafting| -> Result<Got> {
-        let plans = build_plans(&setup, c, drive(q), Order::Acceleration, d)?;
+        let plans = build_plans_numbers(&setup, c, drive(q), Order::Acceleration, d)?;
         let acc = plans.acceleration.as_ref().expect("asked for");
         let mut g = Got {
             places: Some(
@@ -344,7 +344,7 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         let time = time_per_call(set.min_time, || {
             for &q in &qs {
                 let c = ps.solve(q)?;
-                build_plans(&setup, &c, drive(q), Order::Acceleration, drafting)?;
+                build_plans_numbers(&setup, &c, drive(q), Order::Acceleration, drafting)?;
             }
             Ok(())
         })? / npos as f64;

@@ -504,7 +504,7 @@ fn scales_are_standard_or_as_asked() {
 #[test]
 fn numbers_only_plans_equal_full_plans() {
     use mechplan::analytic::{Drive, Order};
-    use mechplan::construction::{Setup, build_plans_numbers};
+    use mechplan::construction::{Setup, build_plans, build_plans_numbers};
     for name in FIXTURES {
         let v = fixture(name);
         let (an, solved) = solve(scene_with(v.clone(), sweep(name, &v)));
@@ -525,11 +525,27 @@ fn numbers_only_plans_equal_full_plans() {
             let lean =
                 build_plans_numbers(&setup, &s.config, drive, Order::Acceleration, an.drafting)
                     .unwrap();
+            // Emulated hand drafting too: the pencil moves the same way.
+            let jitter = mechplan::construction::Drafting {
+                variant: mechplan::construction::Variant {
+                    mistake: None,
+                    jitter: Some(s.q.to_bits()),
+                },
+                ..an.drafting
+            };
+            let hand = build_plans(&setup, &s.config, drive, Order::Acceleration, jitter).unwrap();
+            let hand_lean =
+                build_plans_numbers(&setup, &s.config, drive, Order::Acceleration, jitter).unwrap();
             let pairs = [
                 (&full.velocity, &lean.velocity),
                 (
                     full.acceleration.as_ref().unwrap(),
                     lean.acceleration.as_ref().unwrap(),
+                ),
+                (&hand.velocity, &hand_lean.velocity),
+                (
+                    hand.acceleration.as_ref().unwrap(),
+                    hand_lean.acceleration.as_ref().unwrap(),
                 ),
             ];
             for (f, l) in pairs {
