@@ -6,6 +6,7 @@
 //! [`solve`] (sequences of positions, the cross-check) → [`report`].
 
 pub mod analytic;
+pub mod centres;
 pub mod check;
 pub mod construction;
 pub mod drawing;

@@ -90,6 +90,9 @@ enum Command {
         /// their lecture-style sentences, and the result tables.
         #[arg(long, conflicts_with_all = ["format", "dpi", "sheet", "title_block", "table"])]
         html: bool,
+        /// Mark the instant centres (Kennedy's theorem) on the plans of the mechanism.
+        #[arg(long, conflicts_with = "html")]
+        centres: bool,
     },
     /// Work-precision report: each method's error against an extended-precision reference, and its run time.
     Precision {
@@ -107,6 +110,16 @@ enum Command {
         /// Least wall time of one timing batch, seconds.
         #[arg(long, default_value_t = 0.1)]
         min_time: f64,
+    },
+    /// Instant centres of velocity of every two links (Kennedy's theorem), per position.
+    Centres {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Only this position (from 1).
+        #[arg(long)]
+        position: Option<usize>,
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
     },
 }
 
@@ -170,6 +183,11 @@ fn main() -> ExitCode {
             positions,
             min_time,
         }) => precision(&scene, output.as_deref(), seeds, positions, min_time),
+        Some(Command::Centres {
+            scene,
+            position,
+            format,
+        }) => centres(&scene, position, format),
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
@@ -193,6 +211,7 @@ fn main() -> ExitCode {
                     table: false,
                     lang: None,
                     html: false,
+                    centres: false,
                 },
             )
         }),
@@ -206,6 +225,7 @@ fn main() -> ExitCode {
             dpi,
             lang,
             html,
+            centres,
         }) => match std::fs::read_to_string(&scene) {
             Ok(text) => draw(
                 &text,
@@ -219,6 +239,7 @@ fn main() -> ExitCode {
                     table,
                     lang,
                     html,
+                    centres,
                 },
             ),
             Err(source) => Err(Error::Io {
@@ -366,6 +387,8 @@ struct DrawArgs {
     lang: Option<String>,
     /// The step-by-step handout instead of the sheets.
     html: bool,
+    /// Instant centres on the plans of the mechanism.
+    centres: bool,
 }
 
 fn parse_lang(l: &Option<String>) -> Result<Option<Lang>, Error> {
@@ -414,6 +437,7 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         lang,
         title_block: a.title_block,
         table: a.table,
+        centres: a.centres,
     };
     let sheets = drawing::sheets(&analysis, &solved, &opt);
     let format = match a.format {
@@ -556,5 +580,38 @@ fn precision(
         mechplan::write_atomically(&path, bytes)?;
         println!("wrote {}", path.display());
     }
+    Ok(())
+}
+
+/// `mechplan centres`: the instant centres of every position (or one).
+fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), Error> {
+    let name = scene.display().to_string();
+    let text = std::fs::read_to_string(scene).map_err(|source| Error::Io {
+        path: name.clone(),
+        source,
+    })?;
+    let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
+    let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
+    let solved = analysis.run()?;
+    if let Some(p) = position
+        && !(1..=solved.len()).contains(&p)
+    {
+        return Err(Error::scene(
+            "--position",
+            format!("the scene has positions 1 to {}, not {p}", solved.len()),
+        ));
+    }
+    let out = match format {
+        Format::Table => mechplan::centres::to_table(&analysis, &solved, position),
+        Format::Json => {
+            let mut t = serde_json::to_string_pretty(&mechplan::centres::to_json(
+                &analysis, &solved, position,
+            ))
+            .expect("JSON of numbers and strings");
+            t.push('\n');
+            t
+        }
+    };
+    let _ = std::io::stdout().write_all(out.as_bytes());
     Ok(())
 }

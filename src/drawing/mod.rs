@@ -5,6 +5,7 @@
 //! the kernel knows nothing of SVG.
 
 pub mod canvas;
+pub mod centres;
 pub mod html;
 pub mod mechanism;
 pub mod plan;
@@ -52,6 +53,8 @@ pub struct DrawOptions {
     pub title_block: bool,
     /// Add the table of measured segments to plan sheets.
     pub table: bool,
+    /// Mark the instant centres on the plans of the mechanism.
+    pub centres: bool,
 }
 
 impl Default for DrawOptions {
@@ -61,6 +64,7 @@ impl Default for DrawOptions {
             lang: Lang::En,
             title_block: false,
             table: false,
+            centres: false,
         }
     }
 }
@@ -149,6 +153,9 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
                 .map(|s| {
                     let mut c = Canvas::default();
                     mechanism::draw(an, s, &mut c, mu_l, true);
+                    if opt.centres {
+                        centres::draw(an, s, &mut c, mu_l);
+                    }
                     c.place_pending();
                     c
                 })
