@@ -12,6 +12,7 @@ pub mod construction;
 pub mod drawing;
 pub mod error;
 pub mod geom;
+pub mod invariants;
 pub mod json;
 pub mod mechanism;
 pub mod positions;

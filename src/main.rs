@@ -121,6 +121,25 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Table)]
         format: Format,
     },
+    /// Motion-law invariants of an output (paper 003): phases, and the peak constants B, C, D.
+    Invariants {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// The output link (id): a slider on a frame guide, or a rocking link (default: the last group's last link).
+        #[arg(long)]
+        output: Option<String>,
+        /// Dwell tolerance E, relative to the whole stroke.
+        #[arg(long, default_value_t = 1e-3)]
+        tolerance: f64,
+        /// Shortest dwell reported, degrees of the crank.
+        #[arg(long, default_value_t = 10.0)]
+        min_dwell: f64,
+        /// Grid steps over a revolution.
+        #[arg(long, default_value_t = 1440)]
+        n: usize,
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -188,6 +207,14 @@ fn main() -> ExitCode {
             position,
             format,
         }) => centres(&scene, position, format),
+        Some(Command::Invariants {
+            scene,
+            output,
+            tolerance,
+            min_dwell,
+            n,
+            format,
+        }) => invariants(&scene, output, tolerance, min_dwell, n, format),
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
@@ -613,5 +640,61 @@ fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), 
         }
     };
     let _ = std::io::stdout().write_all(out.as_bytes());
+    Ok(())
+}
+
+/// `mechplan invariants`: the phases of an output and their peak constants.
+fn invariants(
+    scene: &Path,
+    output: Option<String>,
+    tolerance: f64,
+    min_dwell: f64,
+    n: usize,
+    format: Format,
+) -> Result<(), Error> {
+    use mechplan::invariants;
+    let name = scene.display().to_string();
+    let text = std::fs::read_to_string(scene).map_err(|source| Error::Io {
+        path: name.clone(),
+        source,
+    })?;
+    if !(tolerance.is_finite() && (0.0..0.5).contains(&tolerance)) {
+        return Err(Error::scene(
+            "--tolerance",
+            "must be a fraction of the stroke from 0 to 0.5",
+        ));
+    }
+    if !(min_dwell.is_finite() && (0.0..360.0).contains(&min_dwell)) {
+        return Err(Error::scene("--min-dwell", "must be from 0 to 360 degrees"));
+    }
+    if !(36..=1_000_000).contains(&n) {
+        return Err(Error::scene("--n", "must be from 36 to 1000000 steps"));
+    }
+    let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
+    let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
+    let out =
+        match &output {
+            Some(id) => analysis.mech.scene.link_index(id).ok_or_else(|| {
+                Error::scene("--output", format!("the scene has no link \"{id}\""))
+            })?,
+            None => invariants::default_output(&analysis),
+        };
+    let set = invariants::Settings {
+        output: out,
+        tolerance,
+        min_dwell: min_dwell.to_radians(),
+        n,
+    };
+    let list = invariants::phases(&analysis, &set)?;
+    let text = match format {
+        Format::Table => invariants::to_table(&analysis, &set, &list),
+        Format::Json => {
+            let mut t = serde_json::to_string_pretty(&invariants::to_json(&analysis, &set, &list))
+                .expect("JSON of numbers and strings");
+            t.push('\n');
+            t
+        }
+    };
+    let _ = std::io::stdout().write_all(text.as_bytes());
     Ok(())
 }
