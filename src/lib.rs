@@ -11,6 +11,7 @@ pub mod check;
 pub mod construction;
 pub mod drawing;
 pub mod error;
+pub mod frenet;
 pub mod geom;
 pub mod invariants;
 pub mod json;

@@ -140,6 +140,17 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Table)]
         format: Format,
     },
+    /// Families of link positions in the Frenet trihedron (paper 001, Figs 2, 3, 5) as sheets.
+    Frenet {
+        /// Folder to write the sheets into.
+        #[arg(short, long, default_value = "mechplan-out")]
+        output: PathBuf,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+        /// Segments per revolution of the guide circle.
+        #[arg(long, default_value_t = 36)]
+        count: usize,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -215,6 +226,11 @@ fn main() -> ExitCode {
             n,
             format,
         }) => invariants(&scene, output, tolerance, min_dwell, n, format),
+        Some(Command::Frenet {
+            output,
+            format,
+            count,
+        }) => frenet(&output, format, count),
         None => run(
             mechplan::DEFAULT_SCENE,
             "the embedded default scene",
@@ -696,5 +712,22 @@ fn invariants(
         }
     };
     let _ = std::io::stdout().write_all(text.as_bytes());
+    Ok(())
+}
+
+/// `mechplan frenet`: the families of link positions of paper 001.
+fn frenet(dir: &Path, format: DrawFormat, count: usize) -> Result<(), Error> {
+    if !(2..=10_000).contains(&count) {
+        return Err(Error::scene("--count", "must be from 2 to 10000 segments"));
+    }
+    let sheets = drawing::frenet::sheets(count, &DrawOptions::default());
+    let format = match format {
+        DrawFormat::Svg => drawing::Format::Svg,
+        DrawFormat::Png => drawing::Format::Png,
+        DrawFormat::Pdf => drawing::Format::Pdf,
+    };
+    for p in drawing::write_sheets(&sheets, dir, format, 150.0)? {
+        println!("wrote {}", p.display());
+    }
     Ok(())
 }

@@ -6,6 +6,7 @@
 
 pub mod canvas;
 pub mod centres;
+pub mod frenet;
 pub mod html;
 pub mod mechanism;
 pub mod plan;
@@ -251,7 +252,7 @@ fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
 }
 
 /// "μ_v = 0.01 (m/s)/mm", localised.
-fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
+pub(crate) fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
     let (unit, mm) = match lang {
         Lang::En => (unit.to_string(), "mm"),
         _ => (unit.replace('m', "м").replace('s', "с"), "мм"),
