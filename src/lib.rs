@@ -9,6 +9,7 @@ pub mod analytic;
 pub mod centres;
 pub mod check;
 pub mod construction;
+pub mod diagrams;
 pub mod drawing;
 pub mod error;
 pub mod frenet;

@@ -140,6 +140,22 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Table)]
         format: Format,
     },
+    /// Kinematic diagrams of an output by the chord method of the lecture, with their errors.
+    Diagram {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// The output link (id): a slider on a frame guide, or a rocking link (default: the last group's last link).
+        #[arg(long)]
+        output: Option<String>,
+        /// Intervals per revolution.
+        #[arg(short, default_value_t = 12)]
+        n: usize,
+        /// Write the sheet into this folder instead of printing the table.
+        #[arg(short, long)]
+        output_dir: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+    },
     /// Families of link positions in the Frenet trihedron (paper 001, Figs 2, 3, 5) as sheets.
     Frenet {
         /// Folder to write the sheets into.
@@ -226,6 +242,13 @@ fn main() -> ExitCode {
             n,
             format,
         }) => invariants(&scene, output, tolerance, min_dwell, n, format),
+        Some(Command::Diagram {
+            scene,
+            output,
+            n,
+            output_dir,
+            format,
+        }) => diagram(&scene, output, n, output_dir.as_deref(), format),
         Some(Command::Frenet {
             output,
             format,
@@ -482,7 +505,8 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         table: a.table,
         centres: a.centres,
     };
-    let sheets = drawing::sheets(&analysis, &solved, &opt);
+    let mut sheets = drawing::sheets(&analysis, &solved, &opt);
+    sheets.extend(drawing::diagram::wanted(&analysis, &opt)?);
     let format = match a.format {
         DrawFormat::Svg => drawing::Format::Svg,
         DrawFormat::Png => drawing::Format::Png,
@@ -727,6 +751,49 @@ fn frenet(dir: &Path, format: DrawFormat, count: usize) -> Result<(), Error> {
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
     for p in drawing::write_sheets(&sheets, dir, format, 150.0)? {
+        println!("wrote {}", p.display());
+    }
+    Ok(())
+}
+
+/// `mechplan diagram`: the kinematic diagrams of an output, as a table or a sheet.
+fn diagram(
+    scene: &Path,
+    output: Option<String>,
+    n: usize,
+    dir: Option<&Path>,
+    format: DrawFormat,
+) -> Result<(), Error> {
+    use mechplan::diagrams::Diagrams;
+    let name = scene.display().to_string();
+    let text = std::fs::read_to_string(scene).map_err(|source| Error::Io {
+        path: name.clone(),
+        source,
+    })?;
+    if !(4..=3600).contains(&n) {
+        return Err(Error::scene("-n", "must be from 4 to 3600 intervals"));
+    }
+    let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
+    let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
+    let out =
+        match &output {
+            Some(id) => analysis.mech.scene.link_index(id).ok_or_else(|| {
+                Error::scene("--output", format!("the scene has no link \"{id}\""))
+            })?,
+            None => mechplan::invariants::default_output(&analysis),
+        };
+    let d = Diagrams::build(&analysis, out, n, drawing::diagram::LENGTH)?;
+    let Some(dir) = dir else {
+        let _ = std::io::stdout().write_all(mechplan::diagrams::to_table(&analysis, &d).as_bytes());
+        return Ok(());
+    };
+    let sheet = drawing::diagram::sheet(&analysis, &d, &DrawOptions::default());
+    let format = match format {
+        DrawFormat::Svg => drawing::Format::Svg,
+        DrawFormat::Png => drawing::Format::Png,
+        DrawFormat::Pdf => drawing::Format::Pdf,
+    };
+    for p in drawing::write_sheets(&[sheet], dir, format, 150.0)? {
         println!("wrote {}", p.display());
     }
     Ok(())

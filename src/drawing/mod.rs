@@ -6,6 +6,7 @@
 
 pub mod canvas;
 pub mod centres;
+pub mod diagram;
 pub mod frenet;
 pub mod html;
 pub mod mechanism;
