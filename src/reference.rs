@@ -17,6 +17,7 @@
 //! with partial pivoting.
 
 use crate::error::{Error, Result};
+use crate::mechanism::LENGTH_REL_TOL;
 use crate::positions::{Configuration, PositionSolver, describe_input};
 use crate::scene::{Direction, InputSpec, Through};
 use crate::solve::Analysis;
@@ -462,8 +463,13 @@ impl<'a> Reference<'a> {
                 let x = (d.square() + r1.square() - r2.square()) / (Real::from_f64(2.0) * &d);
                 let h2 = r1.square() - x.square();
                 let foot = a.add(&e.scale(&x));
-                let tiny = (d.clone() * Real::from_f64(1e-9)).square();
-                loc[k] = if h2 <= tiny {
+                // On the line QR within the contract's tolerance: project
+                // onto it, as mechanism.rs does (the circles' tangency
+                // would put the point √ε of its distance off the line).
+                let tol = d.clone() * Real::from_f64(LENGTH_REL_TOL);
+                let on_line = (r1.clone() + &r2 - &d).abs() <= tol
+                    || ((r1.clone() - &r2).abs() - &d).abs() <= tol;
+                loc[k] = if on_line || h2.is_negative() {
                     foot
                 } else {
                     let h = h2.sqrt();

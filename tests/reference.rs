@@ -184,3 +184,44 @@ fn decimal_numerals_and_degrees() {
     let (s, _) = Real::from_degrees(&Real::from_f64(30.0)).sin_cos();
     assert!((s - Real::from_f64(0.5)).abs().to_f64() < 1e-50);
 }
+
+/// A rigid shape's point on the line of two others (coupler point M on AB
+/// extended), with lengths that make the line only to rounding: A-M is
+/// 0.4499999999999999, so in extended precision the two circles about A
+/// and B overlap by 1e-16 and their intersection lies √ε·|AM| ≈ 5e-9 m off
+/// the line (where the reference put it before). Like `mechanism.rs`, the reference projects onto the line:
+/// M lies on AB and at the distance the exact construction gives,
+/// x = (AB² + AM² − BM²) / (2·AB) from A, both to 1e-25.
+#[test]
+fn collinear_shape_point_lies_on_its_line_in_extended_precision() {
+    let mut v = fixture("four_bar");
+    let p = |k: &str, i: usize| v["points"][k][i].as_f64().unwrap();
+    let (ax, ay, bx, by) = (p("A", 0), p("A", 1), p("B", 0), p("B", 1));
+    let k = 0.45 / 0.35;
+    v["points"]["M"] = serde_json::json!([ax + (bx - ax) * k, ay + (by - ay) * k]);
+    let am = 0.4499999999999999f64;
+    v["lengths"]["A-M"] = am.into();
+    v["lengths"]["B-M"] = 0.1.into();
+    let an = Analysis::new(scene_with(v, serde_json::json!({ "angles": [45.0] }))).unwrap();
+    let sc = &an.mech.scene;
+    let mut re = Reference::new(&an).unwrap();
+    let st = re.solve_f64(45f64.to_radians()).unwrap();
+    let at = |name: &str| st.point(&an, sc.point_index(name).unwrap()).at;
+    let (a, b, mp) = (at("A"), at("B"), at("M"));
+    let ab = b.sub(&a);
+    let off_line = (ab.cross(&mp.sub(&a)) / ab.norm()).abs().to_f64();
+    // The scene is in metres: its numbers are taken as the binary values.
+    let (d, r1, r2) = (
+        Real::from_f64(0.35),
+        Real::from_f64(am),
+        Real::from_f64(0.1),
+    );
+    let x = (d.square() + r1.square() - r2.square()) / (Real::from_f64(2.0) * &d);
+    let along = (mp.sub(&a).norm() - x).abs().to_f64();
+    eprintln!("M off the line AB by {off_line:.1e} m, from the exact distance by {along:.1e} m");
+    assert!(off_line < 1e-25, "M is {off_line:.1e} m off the line AB");
+    assert!(
+        along < 1e-25,
+        "M is {along:.1e} m from the exact construction along AB"
+    );
+}
