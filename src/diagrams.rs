@@ -54,8 +54,11 @@ pub const DENSE: usize = 12;
 /// The diagrams of one output with N intervals per revolution.
 #[derive(Clone, Debug)]
 pub struct Diagrams {
-    /// The output link (a slider on a frame guide: its slide; else its angle).
+    /// The output link (a slider on a frame guide: its slide; else its
+    /// angle), or the link carrying `point`.
     pub output: usize,
+    /// A point's path (its arc length), instead of the link's coordinate.
+    pub point: Option<usize>,
     /// It is a slide (m), not an angle (rad).
     pub slide: bool,
     pub n: usize,
@@ -126,6 +129,30 @@ impl Diagrams {
     /// The diagrams of the output link `output` with `n` intervals, the
     /// abscissa `l` mm long for the revolution.
     pub fn build(an: &Analysis, output: usize, n: usize, l: f64) -> Result<Diagrams> {
+        let out = Output::new(an, output)?;
+        let start = an.working_stroke_start(output)?;
+        Diagrams::from_output(an, out, output, None, start, n, l)
+    }
+
+    /// The diagrams of point `p` along its path (the arc length from the
+    /// start of the working stroke of the mechanism's output), of its speed
+    /// analogue and its tangential acceleration analogue.
+    pub fn build_point(an: &Analysis, p: usize, n: usize, l: f64) -> Result<Diagrams> {
+        let out = Output::point(an, p)?;
+        let start = an.working_stroke_start(crate::invariants::default_output(an))?;
+        let carrier = an.carrier(p);
+        Diagrams::from_output(an, out, carrier, Some(p), start, n, l)
+    }
+
+    fn from_output(
+        an: &Analysis,
+        mut out: Output,
+        output: usize,
+        point: Option<usize>,
+        phi0: f64,
+        n: usize,
+        l: f64,
+    ) -> Result<Diagrams> {
         let m = &an.mech;
         let InputSpec::Crank { omega, .. } = m.scene.input else {
             return Err(Error::scene(
@@ -137,19 +164,31 @@ impl Diagrams {
             return Err(Error::scene("-n", "a diagram needs at least 4 intervals"));
         }
         let dir = if omega < 0.0 { -1.0 } else { 1.0 };
-        let mut out = Output::new(an, output)?;
-        let slide = m
-            .prismatics
-            .iter()
-            .any(|p| p.slider == output && p.guide == m.frame());
-        let phi0 = an.working_stroke_start(output)?;
+        let path = point.is_some();
+        let slide = path
+            || m.prismatics
+                .iter()
+                .any(|p| p.slider == output && p.guide == m.frame());
         let h = TAU / n as f64;
+        // A path's arc length: Gauss–Legendre over each step of |v|.
+        let arc = |out: &mut Output, from: f64, step: f64| -> Result<f64> {
+            let mut sum = 0.0;
+            for (x, w) in GAUSS8 {
+                let phi = from + dir * step * 0.5 * (1.0 + x);
+                sum += w * dir * out.at(phi)?.1;
+            }
+            Ok(0.5 * step * sum)
+        };
         let mut s = Vec::with_capacity(n + 1);
         let (mut ds, mut dds) = (Vec::new(), Vec::new());
         let mut prev: Option<f64> = None;
         for k in 0..=n {
             let (v, v1, v2) = out.at(phi0 + dir * h * k as f64)?;
             let v = match (slide, prev) {
+                _ if path => match prev {
+                    None => 0.0,
+                    Some(p) => p + arc(&mut out, phi0 + dir * h * (k - 1) as f64, h)?,
+                },
                 (false, Some(p)) => p + crate::geom::wrap_pi(v - p),
                 _ => v,
             };
@@ -175,9 +214,16 @@ impl Diagrams {
         }
         let mut dense = Vec::with_capacity(n * DENSE + 1);
         let mut near = s0;
+        let hd = h / DENSE as f64;
         for j in 0..=n * DENSE {
-            let (v, v1, v2) = out.at(phi0 + dir * h * j as f64 / DENSE as f64)?;
-            let v = if slide {
+            let (v, v1, v2) = out.at(phi0 + dir * hd * j as f64)?;
+            let v = if path {
+                if j == 0 {
+                    s0
+                } else {
+                    near + arc(&mut out, phi0 + dir * hd * (j - 1) as f64, hd)?
+                }
+            } else if slide {
                 v
             } else {
                 near + crate::geom::wrap_pi(v - near)
@@ -213,6 +259,7 @@ impl Diagrams {
         let mu_a = mu_v / (h2 * mu_phi);
         Ok(Diagrams {
             output,
+            point,
             slide,
             n,
             phi0,
@@ -369,10 +416,17 @@ pub fn to_table(an: &Analysis, d: &Diagrams) -> String {
         (format!("φ{}", m.link_id(d.output)), "rad")
     };
     let mut out = format!(
-        "kinematic diagrams of link {} ({}), N = {}, from φ1 = {:.3}° (the start of the working stroke)\n\
+        "kinematic diagrams of {} ({}), N = {}, from φ1 = {:.3}° (the start of the working stroke)\n\
          scales: μ_{sym} = {} {unit}/mm, μ_φ = {:.6} rad/mm, H1 = {} mm, H2 = {} mm, μ_{sym}′ = μ_{sym}/(H1·μ_φ) = {:.6} {unit}/mm, μ_{sym}″ = μ_{sym}′/(H2·μ_φ) = {:.6} {unit}/mm\n\n",
-        m.link_id(d.output),
-        if d.slide { "its slide" } else { "its angle" },
+        match d.point {
+            Some(p) => format!("point {}", m.point_name(p)),
+            None => format!("link {}", m.link_id(d.output)),
+        },
+        match (d.point, d.slide) {
+            (Some(_), _) => "the arc length of its path",
+            (None, true) => "its slide",
+            (None, false) => "its angle",
+        },
         d.n,
         d.phi0.to_degrees().rem_euclid(360.0),
         crate::construction::text::num(d.mu_s),

@@ -173,6 +173,8 @@ pub struct Output<'a> {
     slide: Option<kurbo::Vec2>,
     /// A point of the slider on the guide (its local coordinates).
     local: kurbo::Vec2,
+    /// For a point's path: the point, and the sense of the crank (±1).
+    point: Option<(usize, f64)>,
 }
 
 impl<'a> Output<'a> {
@@ -202,7 +204,37 @@ impl<'a> Output<'a> {
             out,
             slide: pr.map(|p| p.line(&Pose::IDENTITY).dir),
             local: pr.map(|p| p.slider_local).unwrap_or_default(),
+            point: None,
         })
+    }
+
+    /// A point's motion along its path: `at` gives the derivatives of the
+    /// arc length in the sense of the crank's rotation, ds/dψ = |v| and
+    /// d²s/dψ² = v·a/|v| (ψ = ±φ), returned as the link outputs are
+    /// (times the sense, so that callers treat both alike); the arc length
+    /// itself (NaN here) is the integral of |v|.
+    pub fn point(an: &'a Analysis, p: usize) -> Result<Output<'a>> {
+        let m = &an.mech;
+        let InputSpec::Crank { omega, .. } = m.scene.input else {
+            return Err(Error::scene(
+                "/input",
+                "diagrams over a revolution need a crank input",
+            ));
+        };
+        let carrier = m
+            .links_of_point(p)
+            .into_iter()
+            .find(|&l| l != m.frame())
+            .ok_or_else(|| Error::scene("--point", "a point of the frame does not move"))?;
+        let mut out = Output::new(an, carrier)?;
+        out.slide = None;
+        out.point = Some((p, if omega < 0.0 { -1.0 } else { 1.0 }));
+        Ok(out)
+    }
+
+    /// Is this a point's path (not a link's slide or angle)?
+    pub fn is_path(&self) -> bool {
+        self.point.is_some()
     }
 
     /// (s, ds/dφ, d²s/dφ²) at crank angle φ, reached continuously.
@@ -222,6 +254,13 @@ impl<'a> Output<'a> {
             Order::Acceleration,
         )?;
         let x = mo[self.out].expect("output solved");
+        if let Some((p, dir)) = self.point {
+            let at = c.point(m, self.out, p);
+            let (v, a) = (x.velocity(at), x.acceleration(at));
+            let speed = v.hypot();
+            let tangential = if speed > 0.0 { v.dot(a) / speed } else { 0.0 };
+            return Ok((f64::NAN, dir * speed, dir * tangential));
+        }
         Ok(match self.slide {
             Some(u) => {
                 let p = c.pose(self.out).apply(self.local);

@@ -145,8 +145,11 @@ enum Command {
         /// The scene file (JSON, see docs/scene-format.md).
         scene: PathBuf,
         /// The output link (id): a slider on a frame guide, or a rocking link (default: the last group's last link).
-        #[arg(long)]
+        #[arg(long, conflicts_with = "point")]
         output: Option<String>,
+        /// A point instead: its displacement along its path (arc length), speed and tangential acceleration.
+        #[arg(long)]
+        point: Option<String>,
         /// Intervals per revolution.
         #[arg(short, default_value_t = 12)]
         n: usize,
@@ -245,10 +248,11 @@ fn main() -> ExitCode {
         Some(Command::Diagram {
             scene,
             output,
+            point,
             n,
             output_dir,
             format,
-        }) => diagram(&scene, output, n, output_dir.as_deref(), format),
+        }) => diagram(&scene, (output, point), n, output_dir.as_deref(), format),
         Some(Command::Frenet {
             output,
             format,
@@ -759,7 +763,7 @@ fn frenet(dir: &Path, format: DrawFormat, count: usize) -> Result<(), Error> {
 /// `mechplan diagram`: the kinematic diagrams of an output, as a table or a sheet.
 fn diagram(
     scene: &Path,
-    output: Option<String>,
+    (output, point): (Option<String>, Option<String>),
     n: usize,
     dir: Option<&Path>,
     format: DrawFormat,
@@ -782,7 +786,15 @@ fn diagram(
             })?,
             None => mechplan::invariants::default_output(&analysis),
         };
-    let d = Diagrams::build(&analysis, out, n, drawing::diagram::LENGTH)?;
+    let d = match &point {
+        Some(name) => {
+            let p = analysis.mech.scene.point_index(name).ok_or_else(|| {
+                Error::scene("--point", format!("the scene has no point \"{name}\""))
+            })?;
+            Diagrams::build_point(&analysis, p, n, drawing::diagram::LENGTH)?
+        }
+        None => Diagrams::build(&analysis, out, n, drawing::diagram::LENGTH)?,
+    };
     let Some(dir) = dir else {
         let _ = std::io::stdout().write_all(mechplan::diagrams::to_table(&analysis, &d).as_bytes());
         return Ok(());

@@ -54,19 +54,11 @@ pub struct CrossCheck {
     pub conditioning: f64,
     /// Wall time of the plans' construction, seconds (0 without plans).
     pub plan_time: f64,
-    /// Near a singular position (conditioning below [`SENSITIVITY_GATE`]):
-    /// how far the answer moves when the scene's data change by a few
-    /// units of rounding, relative as `max_rel_diff`; `None` elsewhere.
+    /// How far the answer moves when the scene's data change by a few
+    /// units of rounding, relative as `max_rel_diff` (`None` only before
+    /// it is measured).
     pub data_sensitivity: Option<f64>,
 }
-
-/// Below this conditioning the rounding of the data may decide the answer.
-/// Both routes start from the same rounded numbers, so their agreement
-/// cannot show it; at a fold of a group (a dead point) the answer's
-/// sensitivity to the data grows like κ² (the position moves by ε·κ, its
-/// rates by κ times that). Above the gate ε·κ² < 3e-8, below the refusal
-/// limit, so the check runs only where it can refuse.
-pub const SENSITIVITY_GATE: f64 = 1e-4;
 
 /// The largest data sensitivity accepted, as the routes' disagreement.
 pub const MAX_REL_DIFF: f64 = 1e-6;
@@ -74,6 +66,10 @@ pub const MAX_REL_DIFF: f64 = 1e-6;
 /// The change of the data for the sensitivity check: every length and
 /// sketch coordinate by this many units of rounding (relative).
 const DATA_PERTURBATION: f64 = 8.0 * f64::EPSILON;
+
+/// The scene with its data changed by a few units of rounding, both ways
+/// ([`Analysis::changed_data`]).
+type ChangedData = Vec<std::result::Result<Analysis, String>>;
 
 /// A position found in order by both routes, before its rates.
 struct Placed<'a> {
@@ -390,7 +386,8 @@ impl Analysis {
                 constraint_time,
             });
         }
-        let solved = crate::progress::map(&placed, "positions", |p| self.finish(p));
+        let changed = self.changed_data();
+        let solved = crate::progress::map(&placed, "positions", |p| self.finish(p, &changed));
         let mut out = Vec::with_capacity(solved.len());
         for s in solved {
             out.push(s?);
@@ -439,7 +436,7 @@ impl Analysis {
     }
 
     /// One placed position: both routes' rates, the plans, the cross-check.
-    fn finish(&self, p: &Placed) -> Result<Solved> {
+    fn finish(&self, p: &Placed, changed: &ChangedData) -> Result<Solved> {
         let m = &self.mech;
         let (rate, rate2) = m.scene.input.rates();
         let (q, config) = (p.q, p.config.clone());
@@ -529,48 +526,67 @@ impl Analysis {
                 ),
             });
         }
-        if cs.conditioning < SENSITIVITY_GATE && self.order.is_some() {
-            let sens = self
-                .data_sensitivity(&solved)
-                .map_err(|why| Error::Singular {
-                    at: describe_input(m, q),
-                    why,
-                })?;
-            if let Some(c) = solved.check.as_mut() {
-                c.data_sensitivity = Some(sens);
-            }
+        let sens = self
+            .data_sensitivity(&solved, changed)
+            .map_err(|why| Error::Singular {
+                at: describe_input(m, q),
+                why,
+            })?;
+        if let Some(c) = solved.check.as_mut() {
+            c.data_sensitivity = Some(sens);
         }
         Ok(solved)
     }
 
-    /// How far the answer at a solved position moves when every length
-    /// and sketch coordinate of the scene changes by a few units of
-    /// rounding (two opposite changes of a fixed alternating pattern): the
-    /// largest relative change, as the routes' comparison measures it.
-    /// `Err` (a refusal) when the data's rounding alone decides the answer:
-    /// the changed mechanism does not assemble here, or the answer moves by
-    /// more than [`MAX_REL_DIFF`].
-    fn data_sensitivity(&self, s: &Solved) -> std::result::Result<f64, String> {
+    /// The scene with every length and sketch coordinate changed by a
+    /// few units of rounding, in a fixed alternating pattern, both ways;
+    /// built once per run. An error when such a change already makes the
+    /// mechanism another one (a shape or a structure decided by rounding).
+    fn changed_data(&self) -> ChangedData {
         let m = &self.mech;
+        [1.0, -1.0]
+            .iter()
+            .map(|sign| {
+                let mut scene = m.scene.clone();
+                let k = sign * DATA_PERTURBATION;
+                for (i, l) in scene.lengths.iter_mut().enumerate() {
+                    l.value *= 1.0 + if i % 2 == 0 { k } else { -k };
+                }
+                for (i, p) in scene.points.iter_mut().enumerate() {
+                    let (dx, dy) = if i % 2 == 0 { (k, -k) } else { (-k, k) };
+                    p.sketch = Point::new(
+                        p.sketch.x + dx * m.size.max(p.sketch.x.abs()),
+                        p.sketch.y + dy * m.size.max(p.sketch.y.abs()),
+                    );
+                }
+                Analysis::new(scene).map_err(|e| e.to_string())
+            })
+            .collect()
+    }
+
+    /// How far the answer at a solved position moves with the data changed
+    /// by a few units of rounding ([`Analysis::changed_data`]): the largest
+    /// relative change, as the routes' comparison measures it, each scene's
+    /// points on its own shapes. Both routes start from the same rounded
+    /// data, so their agreement cannot show this. An error (a refusal) when
+    /// the data's rounding decides the answer: the changed mechanism does
+    /// not assemble here, or the answer moves by more than [`MAX_REL_DIFF`].
+    fn data_sensitivity(
+        &self,
+        s: &Solved,
+        changed: &ChangedData,
+    ) -> std::result::Result<f64, String> {
         let order = self.order.unwrap_or(Order::Velocity);
+        let units = DATA_PERTURBATION / f64::EPSILON;
         let mut worst = (0.0f64, String::new());
-        for sign in [1.0, -1.0] {
-            let mut scene = m.scene.clone();
-            let k = sign * DATA_PERTURBATION;
-            for (i, l) in scene.lengths.iter_mut().enumerate() {
-                l.value *= 1.0 + if i % 2 == 0 { k } else { -k };
-            }
-            for (i, p) in scene.points.iter_mut().enumerate() {
-                let (dx, dy) = if i % 2 == 0 { (k, -k) } else { (-k, k) };
-                p.sketch = Point::new(
-                    p.sketch.x + dx * m.size.max(p.sketch.x.abs()),
-                    p.sketch.y + dy * m.size.max(p.sketch.y.abs()),
-                );
-            }
-            let moved = Analysis::new(scene)
+        for an in changed {
+            let moved = an
+                .as_ref()
+                .map_err(|e| e.clone())
                 .and_then(|an| {
-                    let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())?;
-                    let c = ps.solve(s.q)?;
+                    let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())
+                        .map_err(|e| e.to_string())?;
+                    let c = ps.solve(s.q).map_err(|e| e.to_string())?;
                     contour::solve(
                         &an.mech,
                         &an.structure,
@@ -583,24 +599,23 @@ impl Analysis {
                         },
                         order,
                     )
+                    .map(|mo| (an, mo))
+                    .map_err(|e| e.to_string())
                 })
                 .map_err(|e| {
                     format!(
-                        "the position is within rounding of a dead point: with the data changed by {} units of rounding the mechanism has no answer here ({e})",
-                        DATA_PERTURBATION / f64::EPSILON
+                        "the position is within rounding of a dead point: with the data changed by {units} units of rounding the mechanism has no answer here ({e})"
                     )
                 })?;
-            let (d, what) = self.compare(s, &moved);
+            let (d, what) = self.compare_with(s, &moved.1, &moved.0.mech);
             if d > worst.0 || d.is_nan() {
                 worst = (d, what);
             }
         }
         if worst.0.is_nan() || worst.0 > MAX_REL_DIFF {
             return Err(format!(
-                "the answer is decided by the rounding of the data: a change of {} units of rounding in the lengths moves {} by {:.2e} (relative); the position is too close to a dead point",
-                DATA_PERTURBATION / f64::EPSILON,
-                worst.1,
-                worst.0
+                "the answer is decided by the rounding of the data: a change of {units} units of rounding in the lengths moves {} by {:.2e} (relative); the position is too close to a dead point",
+                worst.1, worst.0
             ));
         }
         Ok(worst.0)
@@ -658,6 +673,13 @@ impl Analysis {
 
     /// Largest relative difference between route (a) and route (b).
     fn compare(&self, s: &Solved, other: &[Option<Motion>]) -> (f64, String) {
+        self.compare_with(s, other, &self.mech)
+    }
+
+    /// As [`Analysis::compare`], the other motions belonging to mechanism
+    /// `om` (the same links and points, its own shapes: a scene with its
+    /// data changed).
+    fn compare_with(&self, s: &Solved, other: &[Option<Motion>], om: &Mechanism) -> (f64, String) {
         let m = &self.mech;
         let mut worst = (0.0f64, String::from("none"));
         let mut note = |d: f64, what: String| {
@@ -666,7 +688,7 @@ impl Analysis {
             }
         };
         let pts: Vec<(usize, usize)> = self.points.iter().map(|&p| (p, self.carrier(p))).collect();
-        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(m.local(l, p));
+        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
         for &(p, l) in &pts {
             let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
             note(d, format!("position of {}", m.point_name(p)));
@@ -679,8 +701,8 @@ impl Analysis {
         let Some(order) = self.order else {
             return worst;
         };
-        let a_of = |mo: &[Option<Motion>], p: usize, l: usize| {
-            let at = s.config.point(m, l, p);
+        // Each motion at its own place of the point.
+        let a_of = |mo: &[Option<Motion>], l: usize, at: Point| {
             (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at))
         };
         let mut kinds: Vec<(&str, Diffs)> = vec![("v", vec![]), ("ω", vec![])];
@@ -689,8 +711,8 @@ impl Analysis {
             kinds.push(("ε", vec![]));
         }
         for &(p, l) in &pts {
-            let (va, aa) = a_of(&s.motion, p, l);
-            let (vb, ab) = a_of(other, p, l);
+            let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
+            let (vb, ab) = a_of(other, l, place_b(p, l));
             kinds[0]
                 .1
                 .push((m.point_name(p).to_string(), (va - vb).hypot(), va.hypot()));

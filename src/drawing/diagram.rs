@@ -177,7 +177,9 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
             "",
         );
     }
-    let what = if d.slide {
+    let what = if let Some(p) = d.point {
+        format!("point {} along its path", m.point_name(p))
+    } else if d.slide {
         format!("slider {}", m.link_id(d.output))
     } else {
         format!("link {}", m.link_id(d.output))
