@@ -235,6 +235,12 @@ impl Diagrams {
         // within 50 mm; the poles so that the derived curves fit 35 mm.
         let mu_phi = TAU / l;
         let range = s.iter().fold(0.0f64, |a, &x| a.max(x.abs()));
+        if range.is_nan() || range <= 1e-12 * m.size {
+            return Err(Error::scene(
+                if path { "--point" } else { "--output" },
+                "it does not move over the revolution: there is no diagram to draw",
+            ));
+        }
         let mu_s = standard_scale(range.max(f64::MIN_POSITIVE), HEIGHT_S);
         let dx = h / mu_phi;
         let slope1 = (0..n)

@@ -278,11 +278,11 @@ impl<'a> Output<'a> {
 /// The phases of the output over one revolution and their invariants.
 pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     let m = &an.mech;
+    let mut out = Output::new(an, set.output)?;
     let InputSpec::Crank { omega, .. } = m.scene.input else {
-        unreachable!("checked by Output::new")
+        unreachable!("Output::new refuses other inputs")
     };
     let dir = if omega < 0.0 { -1.0 } else { 1.0 };
-    let mut out = Output::new(an, set.output)?;
     let n = set.n.max(36);
     let turning = out.slide.is_none();
     // The output at crank angle φ, a link's angle kept near `near`.

@@ -142,6 +142,13 @@ fn diagrams_are_drawn_when_asked_and_printed_by_the_command() {
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("crank"));
+    // A point at rest has no diagram.
+    let rest = std::process::Command::new(exe)
+        .args(["diagram", scene.to_str().unwrap(), "--point", "O"])
+        .output()
+        .unwrap();
+    assert_eq!(rest.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&rest.stderr).contains("does not move"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -194,4 +194,15 @@ fn invariants_command_prints_phases_and_refuses_bad_options() {
             "{args:?}"
         );
     }
+    // A slider input has no revolution to split into phases.
+    let slider = format!(
+        "{}/fixtures/slider_driven_rocker.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = std::process::Command::new(exe)
+        .args(["invariants", &slider])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("crank"));
 }
