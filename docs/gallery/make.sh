@@ -29,6 +29,23 @@ for f in fixtures/*.json; do
   done
   echo >> "$index.tmp"
 done
+# The pictures of docs/centres.md, docs/frenet.md and docs/diagrams.md.
+./target/release/mechplan draw fixtures/four_bar.json -o "$tmp/centres" --centres --format png > /dev/null
+cp "$tmp/centres/mechanism_5.png" "$out/centres_four_bar.png"
+./target/release/mechplan frenet -o "$tmp/frenet" --format png > /dev/null
+cp "$tmp/frenet/fig5a.png" "$out/frenet_fig5a.png"
+cp "$tmp/frenet/fig2a.png" "$out/frenet_fig2a.png"
+./target/release/mechplan diagram fixtures/offset_slider_crank.json -o "$tmp/diagrams" --format png > /dev/null
+cp "$tmp/diagrams/diagrams.png" "$out/diagrams_offset_slider_crank.png"
+{
+  echo "## Instant centres, kinematic diagrams, the Frenet trihedron"
+  echo
+  echo "![instant centres of the four-bar](centres_four_bar.png)"
+  echo "![kinematic diagrams of the offset slider-crank](diagrams_offset_slider_crank.png)"
+  echo "![001 Fig. 5 a](frenet_fig5a.png)"
+  echo "![001 Fig. 2 a](frenet_fig2a.png)"
+  echo
+} >> "$index.tmp"
 mv "$index.tmp" "$index"
 rm -rf "$tmp"
 echo "gallery written to $out"

@@ -108,8 +108,17 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
                 c.seg(p, p - (u + n) * 1.4, Class::Thin);
             }
         } else {
-            // A guide on a moving link (a kulisa): its slot through the slider.
-            c.seg(q - u * 10.0, q + u * 10.0, Class::Main);
+            // A guide on a moving link (a kulisa): its slot through the
+            // slider. A one-point link carrying a slot (a sliding yoke) is
+            // drawn as the slot itself, reaching its own point, so that the
+            // slot and the yoke read as one link.
+            let (mut lo, mut hi) = (-10.0f64, 10.0f64);
+            if m.links[pr.guide].points.len() == 1 {
+                let t = (place(pr.guide, m.links[pr.guide].points[0]) - q).dot(u);
+                lo = lo.min(t - 3.0);
+                hi = hi.max(t + 3.0);
+            }
+            c.seg(q + u * lo, q + u * hi, Class::Main);
         }
     }
     // Links.
