@@ -23,6 +23,7 @@ pub mod progress;
 pub mod reference;
 pub mod report;
 pub mod scene;
+pub mod shape;
 pub mod solve;
 pub mod structure;
 

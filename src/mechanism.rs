@@ -4,14 +4,16 @@
 //! prismatic pair with its guide line fixed in the guide link's frame.
 
 use crate::error::{Error, Issue, Result};
-use crate::geom::{Line, Pose, circle_circle, perp, rotate, sign_tol};
+use crate::geom::{Line, Pose, perp, rotate};
 use crate::scene::{Direction, Scene, Through};
+use crate::shape::Placement;
 use kurbo::{Point, Vec2};
 
-/// Relative tolerance for "equal" lengths in the scene (the contract's 1e-9).
+/// Relative tolerance for a length between two frame points against their
+/// coordinates (the contract's 1e-9: frame points are exact).
 pub const LENGTH_REL_TOL: f64 = 1e-9;
 /// How far off its guide a slider's point may be drawn in the sketch,
-/// relative to the size of the sketch: the sketch is a drawing.
+/// relative to the links that carry it: the sketch is a drawing.
 pub const SKETCH_REL_TOL: f64 = 1e-3;
 
 /// A rigid link: its points in its own frame.
@@ -23,6 +25,10 @@ pub struct Link {
     pub local: Vec<Vec2>,
     /// The pose that places the local frame on the sketch.
     pub sketch_pose: Pose,
+    /// The link's own size: the largest distance of its points from its
+    /// first. Tolerances about this link are relative to it, not to the
+    /// size of the whole sketch.
+    pub extent: f64,
 }
 
 impl Link {
@@ -74,12 +80,27 @@ pub struct Mechanism {
     pub links: Vec<Link>,
     pub revolutes: Vec<Revolute>,
     pub prismatics: Vec<Prismatic>,
-    /// Size of the sketch (diagonal of its bounding box), for tolerances.
+    /// Size of the sketch (diagonal of its bounding box): the scale of
+    /// drawings and of the reported bounds of positions.
     pub size: f64,
+    /// How each link's points were placed ([`crate::shape`]), parallel to
+    /// `links`: the decisions a rebuild with changed data follows.
+    pub placements: Vec<Vec<Placement>>,
 }
 
 impl Mechanism {
     pub fn new(scene: Scene) -> Result<Mechanism> {
+        Mechanism::build(scene, None)
+    }
+
+    /// The same mechanism on other data (the data sensitivity check: the
+    /// lengths and coordinates moved by a few units of rounding), its
+    /// shapes built with this mechanism's decisions.
+    pub fn with_data(&self, scene: Scene) -> Result<Mechanism> {
+        Mechanism::build(scene, Some(&self.placements))
+    }
+
+    fn build(scene: Scene, decided: Option<&[Vec<Placement>]>) -> Result<Mechanism> {
         let mut issues = Vec::new();
         let (lo, hi) = scene.points.iter().fold(
             (
@@ -95,12 +116,15 @@ impl Mechanism {
         );
         let size = (hi - lo).hypot().max(f64::MIN_POSITIVE);
         let mut links = Vec::with_capacity(scene.links.len());
+        let mut placements = Vec::with_capacity(scene.links.len());
         // Links whose shape could not be built: checking them further would
         // only report the same problem again in other words.
         let mut broken = Vec::with_capacity(scene.links.len());
         for l in 0..scene.links.len() {
             let before = issues.len();
-            links.push(rigid_link(&scene, l, size, &mut issues));
+            let (link, placed) = rigid_link(&scene, l, decided.map(|d| &d[l][..]), &mut issues);
+            links.push(link);
+            placements.push(placed);
             broken.push(issues.len() > before);
         }
         check_lengths(&scene, &links, &broken, &mut issues);
@@ -126,6 +150,7 @@ impl Mechanism {
             revolutes,
             prismatics,
             size,
+            placements,
         })
     }
 
@@ -167,14 +192,6 @@ fn revolutes(scene: &Scene) -> Vec<Revolute> {
     out
 }
 
-fn length_between(scene: &Scene, a: usize, b: usize) -> Option<f64> {
-    scene
-        .lengths
-        .iter()
-        .find(|l| (l.a == a && l.b == b) || (l.a == b && l.b == a))
-        .map(|l| l.value)
-}
-
 fn sketch(scene: &Scene, p: usize) -> Point {
     scene.points[p].sketch
 }
@@ -183,123 +200,80 @@ fn link_ptr(scene: &Scene, l: usize) -> String {
     format!("/links/{}", crate::json::escape(&scene.links[l].id))
 }
 
-/// Build one link's local shape by the contract's rule.
-fn rigid_link(scene: &Scene, l: usize, size: f64, issues: &mut Vec<Issue>) -> Link {
+/// Build one link's local shape by the contract's rule ([`crate::shape`]),
+/// deciding its placements from the data or following `decided`.
+fn rigid_link(
+    scene: &Scene,
+    l: usize,
+    decided: Option<&[Placement]>,
+    issues: &mut Vec<Issue>,
+) -> (Link, Vec<Placement>) {
     let spec = &scene.links[l];
     let pts = &spec.points;
     let id = spec.id.clone();
+    let link = |local: Vec<Vec2>, sketch_pose: Pose| Link {
+        id: id.clone(),
+        points: pts.clone(),
+        extent: local
+            .iter()
+            .map(|v| (*v - local[0]).hypot())
+            .fold(0.0, f64::max),
+        local,
+        sketch_pose,
+    };
     if l == scene.frame {
         // The frame is exact: its local frame is the world.
-        return Link {
-            id,
-            points: pts.clone(),
-            local: pts.iter().map(|&p| sketch(scene, p).to_vec2()).collect(),
-            sketch_pose: Pose::IDENTITY,
-        };
+        let local = pts.iter().map(|&p| sketch(scene, p).to_vec2()).collect();
+        return (link(local, Pose::IDENTITY), Vec::new());
     }
-    let mut local = vec![Vec2::ZERO; pts.len()];
-    let mut pose = Pose::new(sketch(scene, pts[0]), 0.0);
+    let origin = sketch(scene, pts[0]);
     if pts.len() == 1 {
         // A one-point link is a slider: its angle is its guide's direction.
-        match scene.sliders.iter().position(|s| s.slider == l) {
-            Some(k) => pose = Pose::new(pose.origin, sketch_guide_dir(scene, k).atan2()),
-            None => issues.push(Issue {
-                pointer: format!("{}/points", link_ptr(scene, l)),
-                message: format!(
-                    "link \"{}\" has a single point, so it must be the slider of a prismatic pair (an entry in /sliders)",
-                    spec.id
-                ),
-            }),
-        }
-        return Link {
-            id,
-            points: pts.clone(),
-            local,
-            sketch_pose: pose,
+        let pose = match scene.sliders.iter().position(|s| s.slider == l) {
+            Some(k) => Pose::new(origin, sketch_guide_dir(scene, k).atan2()),
+            None => {
+                issues.push(Issue {
+                    pointer: format!("{}/points", link_ptr(scene, l)),
+                    message: format!(
+                        "link \"{}\" has a single point, so it must be the slider of a prismatic pair (an entry in /sliders)",
+                        spec.id
+                    ),
+                });
+                Pose::new(origin, 0.0)
+            }
         };
+        return (link(vec![Vec2::ZERO], pose), Vec::new());
     }
-    let (p0, p1) = (pts[0], pts[1]);
-    let d01 = length_between(scene, p0, p1)
-        .unwrap_or_else(|| sketch(scene, p0).distance(sketch(scene, p1)));
-    if d01 <= LENGTH_REL_TOL * size {
-        issues.push(Issue {
-            pointer: format!("{}/points", link_ptr(scene, l)),
-            message: format!(
-                "zero-length link: its first two points \"{}\" and \"{}\" coincide",
-                scene.points[p0].name, scene.points[p1].name
-            ),
-        });
-        return Link {
-            id,
-            points: pts.clone(),
-            local,
-            sketch_pose: pose,
-        };
-    }
-    pose = Pose::new(pose.origin, (sketch(scene, p1) - sketch(scene, p0)).atan2());
-    local[1] = Vec2::new(d01, 0.0);
-    for k in 2..pts.len() {
-        let p = pts[k];
-        // References: earlier points paired with p in `lengths` first, then the earliest others.
-        let mut refs: Vec<usize> = (0..k)
-            .filter(|&j| length_between(scene, p, pts[j]).is_some())
-            .collect();
-        refs.extend((0..k).filter(|&j| length_between(scene, p, pts[j]).is_none()));
-        let (j1, j2) = (refs[0], refs[1]);
-        let (q1, q2) = (pts[j1], pts[j2]);
-        let dist = |a: usize, b: usize| {
-            length_between(scene, a, b)
-                .unwrap_or_else(|| sketch(scene, a).distance(sketch(scene, b)))
-        };
-        let (r1, r2) = (dist(p, q1), dist(p, q2));
-        let (a, b) = (local[j1], local[j2]);
-        let d = (b - a).hypot();
-        let on_line = (r1 + r2 - d).abs() <= LENGTH_REL_TOL * d
-            || ((r1 - r2).abs() - d).abs() <= LENGTH_REL_TOL * d;
-        let s_cross =
-            (sketch(scene, q2) - sketch(scene, q1)).cross(sketch(scene, p) - sketch(scene, q1));
-        let side = sign_tol(s_cross, 1e-12 * size * size);
-        if side == 0.0 && !on_line {
-            issues.push(Issue {
-                pointer: format!("{}/points/{k}", link_ptr(scene, l)),
-                message: format!(
-                    "point \"{}\" is drawn on the line through \"{}\" and \"{}\", but its distances make a triangle: draw it on the side it belongs",
-                    scene.points[p].name, scene.points[q1].name, scene.points[q2].name
-                ),
-            });
-            continue;
+    match crate::shape::shape(scene, l, decided) {
+        Ok((placements, shape)) => (
+            link(shape.local, Pose::new(origin, shape.sketch_angle)),
+            placements,
+        ),
+        Err(found) => {
+            for f in found {
+                issues.push(Issue {
+                    pointer: match f.point {
+                        Some(k) => format!("{}/points/{k}", link_ptr(scene, l)),
+                        None => format!("{}/points", link_ptr(scene, l)),
+                    },
+                    message: f.message,
+                });
+            }
+            (
+                link(vec![Vec2::ZERO; pts.len()], Pose::new(origin, 0.0)),
+                Vec::new(),
+            )
         }
-        if on_line {
-            // Exactly on the line QR: a tangency of the two circles would
-            // put the point off the line by √ε of its distance.
-            let x = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
-            local[k] = a + (b - a) * (x / d);
-            continue;
-        }
-        let tol = LENGTH_REL_TOL * d.max(r1).max(r2);
-        match circle_circle(a.to_point(), r1, b.to_point(), r2, if side == 0.0 { 1.0 } else { side }, tol) {
-            Some(x) => local[k] = x.to_vec2(),
-            None => issues.push(Issue {
-                pointer: format!("{}/points/{k}", link_ptr(scene, l)),
-                message: format!(
-                    "link \"{}\" cannot be rigid: point \"{}\" at {r1} from \"{}\" and {r2} from \"{}\", which are {d} apart (triangle inequality)",
-                    spec.id, scene.points[p].name, scene.points[q1].name, scene.points[q2].name
-                ),
-            }),
-        }
-    }
-    Link {
-        id,
-        points: pts.clone(),
-        local,
-        sketch_pose: pose,
     }
 }
 
-/// Every given length must hold in the rigid shape (frame: in its coordinates).
+/// Every given length must hold in the rigid shape: between frame points
+/// to the contract's 1e-9 (frame points are exact), on a moving link to
+/// the rounding of the data (an over-determined shape that does not close
+/// is an error, never a silent change).
 fn check_lengths(scene: &Scene, links: &[Link], broken: &[bool], issues: &mut Vec<Issue>) {
     for len in &scene.lengths {
-        for (link, _) in links.iter().zip(broken).filter(|(_, b)| !**b) {
+        for (l, link) in links.iter().enumerate().filter(|(l, _)| !broken[*l]) {
             let (Some(a), Some(b)) = (link.local_of(len.a), link.local_of(len.b)) else {
                 continue;
             };
@@ -307,14 +281,20 @@ fn check_lengths(scene: &Scene, links: &[Link], broken: &[bool], issues: &mut Ve
                 continue;
             }
             let actual = (a - b).hypot();
-            if (actual - len.value).abs() > LENGTH_REL_TOL * len.value.max(actual) {
+            let frame = l == scene.frame;
+            let slack = if frame {
+                LENGTH_REL_TOL * len.value.max(actual)
+            } else {
+                crate::shape::length_slack(scene, &link.points, len.value, a, b)
+            };
+            if (actual - len.value).abs() > slack {
                 issues.push(Issue {
                     pointer: format!("/lengths/{}", crate::json::escape(&len.key)),
                     message: format!(
                         "{} does not fit link \"{}\": its rigid shape gives {actual}{}",
                         len.value,
                         link.id,
-                        if link.sketch_pose == Pose::IDENTITY && links[scene.frame].id == link.id {
+                        if frame {
                             " (frame points are exact)"
                         } else {
                             " (over-determined: see the rigid-shape rule in docs/scene-format.md)"
@@ -358,7 +338,8 @@ fn prismatic(
         Direction::Angle(a) => rotate(Vec2::from_angle(a), -gpose.angle),
         Direction::Along(q, r) => {
             let v = g.local_of(r)? - g.local_of(q)?;
-            if v.hypot() <= LENGTH_REL_TOL * size {
+            let (sq, sr) = (sketch(scene, q).to_vec2(), sketch(scene, r).to_vec2());
+            if v.hypot() <= 4.0 * f64::EPSILON * (sq.hypot() + sr.hypot()) {
                 return fail(
                     format!("{at}/line/along"),
                     "the two points coincide: no direction".into(),
@@ -375,13 +356,30 @@ fn prismatic(
         Through::Coords(c) => c,
     } + perp(sk_dir) * s.line.offset;
     let off = Line::new(sk_through, sk_dir).signed_distance(sketch(scene, s.point));
-    if off.abs() > SKETCH_REL_TOL * size {
+    // The drawing's tolerance, relative to the links that carry the point
+    // (a small linkage in a large sketch is judged by its own size).
+    let own = scene
+        .links_of_point(s.point)
+        .into_iter()
+        .filter(|&l| l != scene.frame)
+        .map(|l| links[l].extent)
+        .fold(0.0, f64::max);
+    let reach = match own.max(links[s.guide].extent) {
+        r if r > 0.0 => r,
+        _ => size,
+    };
+    // A point drawn exactly on its guide is off it by the rounding of the
+    // coordinates that draw the two.
+    let rounding = 16.0
+        * f64::EPSILON
+        * (sk_through.to_vec2().hypot() + sketch(scene, s.point).to_vec2().hypot());
+    if off.abs() > SKETCH_REL_TOL * reach + rounding {
         return fail(
             format!("{at}/point"),
             format!(
-                "point \"{}\" is {:.6} m off its guide line in the sketch; a slider's point lies on its guide",
+                "point \"{}\" is {} off its guide line in the sketch; a slider's point lies on its guide",
                 scene.points[s.point].name,
-                off.abs()
+                crate::error::quantity(off.abs(), "m")
             ),
         );
     }

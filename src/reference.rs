@@ -17,9 +17,9 @@
 //! with partial pivoting.
 
 use crate::error::{Error, Result};
-use crate::mechanism::LENGTH_REL_TOL;
 use crate::positions::{Configuration, PositionSolver, describe_input};
 use crate::scene::{Direction, InputSpec, Through};
+use crate::shape::Placement;
 use crate::solve::Analysis;
 use dashu_float::FBig;
 use dashu_float::round::mode::HalfEven;
@@ -448,13 +448,25 @@ impl<'a> Reference<'a> {
                 local.push(loc);
                 continue;
             }
-            sketch_angle.push(sketch[pts[1]].sub(&sketch[pts[0]]).atan2());
+            let axis = sketch[pts[1]].sub(&sketch[pts[0]]);
+            sketch_angle.push(axis.atan2());
             loc[1] = V2::new(dist(pts[0], pts[1]), Real::zero());
+            let axis_len = axis.norm();
+            let (ca, sa) = (axis.x.clone() / &axis_len, axis.y.clone() / &axis_len);
             for k in 2..pts.len() {
                 let p = pts[k];
-                let mut refs: Vec<usize> = (0..k).filter(|&j| given(p, pts[j]).is_some()).collect();
-                refs.extend((0..k).filter(|&j| given(p, pts[j]).is_none()));
-                let (j1, j2) = (refs[0], refs[1]);
+                // The placement mechanism.rs decided (crate::shape), in
+                // extended precision.
+                let (j1, j2, flat, side) = match m.placements[l][k] {
+                    Placement::Sketch => {
+                        // The sketch position in the link's frame.
+                        loc[k] = sketch[p].sub(&sketch[pts[0]]).rotate(&-&sa, &ca);
+                        continue;
+                    }
+                    Placement::OnLine { refs } => (refs.0, refs.1, true, 1.0),
+                    Placement::Triangle { refs, side } => (refs.0, refs.1, false, side),
+                    Placement::Origin | Placement::Base => unreachable!("first two points"),
+                };
                 let (r1, r2) = (dist(p, pts[j1]), dist(p, pts[j2]));
                 let (a, b) = (loc[j1].clone(), loc[j2].clone());
                 let ab = b.sub(&a);
@@ -463,25 +475,11 @@ impl<'a> Reference<'a> {
                 let x = (d.square() + r1.square() - r2.square()) / (Real::from_f64(2.0) * &d);
                 let h2 = r1.square() - x.square();
                 let foot = a.add(&e.scale(&x));
-                // On the line QR within the contract's tolerance: project
-                // onto it, as mechanism.rs does (the circles' tangency
-                // would put the point √ε of its distance off the line).
-                let tol = d.clone() * Real::from_f64(LENGTH_REL_TOL);
-                let on_line = (r1.clone() + &r2 - &d).abs() <= tol
-                    || ((r1.clone() - &r2).abs() - &d).abs() <= tol;
-                loc[k] = if on_line || h2.is_negative() {
+                loc[k] = if flat || h2.is_negative() {
                     foot
                 } else {
-                    let h = h2.sqrt();
-                    let c1 = foot.add(&e.perp().scale(&h));
-                    let c2 = foot.sub(&e.perp().scale(&h));
-                    // The side the f64 shape took (read off the sketch there).
-                    let want = link.local[k];
-                    if c1.dist_f64(want) <= c2.dist_f64(want) {
-                        c1
-                    } else {
-                        c2
-                    }
+                    let h = h2.sqrt() * Real::from_f64(side);
+                    foot.add(&e.perp().scale(&h))
                 };
             }
             local.push(loc);

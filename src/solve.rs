@@ -102,7 +102,11 @@ pub struct Solved {
 
 impl Analysis {
     pub fn new(scene: Scene) -> Result<Analysis> {
-        let mech = Mechanism::new(scene)?;
+        Analysis::of(Mechanism::new(scene)?)
+    }
+
+    /// The analysis of a mechanism already built.
+    fn of(mech: Mechanism) -> Result<Analysis> {
         let structure = analyse(&mech)?;
         let sc = &mech.scene;
         let points: Vec<usize> = match &sc.want.points {
@@ -538,10 +542,12 @@ impl Analysis {
         Ok(solved)
     }
 
-    /// The scene with every length and sketch coordinate changed by a
-    /// few units of rounding, in a fixed alternating pattern, both ways;
-    /// built once per run. An error when such a change already makes the
-    /// mechanism another one (a shape or a structure decided by rounding).
+    /// The scene with every datum (length, sketch coordinate, guide line)
+    /// changed by a few units of its own rounding, in a fixed alternating
+    /// pattern, both ways; built once per run, its shapes with this
+    /// mechanism's decisions (rounding must not change which rule places a
+    /// point). An error when such a change already makes the mechanism
+    /// another one (a structure decided by rounding).
     fn changed_data(&self) -> ChangedData {
         let m = &self.mech;
         [1.0, -1.0]
@@ -549,17 +555,37 @@ impl Analysis {
             .map(|sign| {
                 let mut scene = m.scene.clone();
                 let k = sign * DATA_PERTURBATION;
-                for (i, l) in scene.lengths.iter_mut().enumerate() {
-                    l.value *= 1.0 + if i % 2 == 0 { k } else { -k };
+                let mut n = 0usize;
+                // Each datum relative to its own magnitude: a coordinate
+                // near the origin is known better than one far from it.
+                let mut moved = |x: &mut f64| {
+                    n += 1;
+                    *x *= 1.0 + if n % 2 == 0 { k } else { -k };
+                };
+                for l in scene.lengths.iter_mut() {
+                    moved(&mut l.value);
                 }
-                for (i, p) in scene.points.iter_mut().enumerate() {
-                    let (dx, dy) = if i % 2 == 0 { (k, -k) } else { (-k, k) };
-                    p.sketch = Point::new(
-                        p.sketch.x + dx * m.size.max(p.sketch.x.abs()),
-                        p.sketch.y + dy * m.size.max(p.sketch.y.abs()),
-                    );
+                for p in scene.points.iter_mut() {
+                    let (mut x, mut y) = (p.sketch.x, p.sketch.y);
+                    moved(&mut x);
+                    moved(&mut y);
+                    p.sketch = Point::new(x, y);
                 }
-                Analysis::new(scene).map_err(|e| e.to_string())
+                for sl in scene.sliders.iter_mut() {
+                    if let crate::scene::Through::Coords(c) = &mut sl.line.through {
+                        let (mut x, mut y) = (c.x, c.y);
+                        moved(&mut x);
+                        moved(&mut y);
+                        *c = Point::new(x, y);
+                    }
+                    if let crate::scene::Direction::Angle(a) = &mut sl.line.direction {
+                        moved(a);
+                    }
+                    moved(&mut sl.line.offset);
+                }
+                m.with_data(scene)
+                    .and_then(Analysis::of)
+                    .map_err(|e| e.to_string())
             })
             .collect()
     }
