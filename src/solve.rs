@@ -560,7 +560,7 @@ impl Analysis {
                 // near the origin is known better than one far from it.
                 let mut moved = |x: &mut f64| {
                     n += 1;
-                    *x *= 1.0 + if n % 2 == 0 { k } else { -k };
+                    *x *= 1.0 + if n.is_multiple_of(2) { k } else { -k };
                 };
                 for l in scene.lengths.iter_mut() {
                     moved(&mut l.value);
