@@ -19,7 +19,7 @@ use crate::mechanism::Mechanism;
 use crate::positions::{Configuration, describe_input};
 use crate::scene::InputSpec;
 use crate::structure::{AssurGroup, Conn, Joint, Structure};
-use kurbo::Vec2;
+use kurbo::{Point, Vec2};
 use nalgebra::{SMatrix, SVector};
 
 /// A planar twist: angular rate and the velocity of the point at the origin.
@@ -66,31 +66,31 @@ fn bracket(a: Twist, b: Twist) -> Twist {
     }
 }
 
-/// Twist and twist rate of a link. The rate of the spatial velocity v_O
-/// is not the acceleration of the material point at O: a_O = v̇_O + ω×v_O.
-fn state(mo: &Motion) -> (Twist, Twist) {
+/// Twist and twist rate of a link about the fixed point `o`: the
+/// velocity of the link's material point at `o`, and the rate of that
+/// spatial twist. The rate of the spatial velocity v_o is not the
+/// acceleration of the material point at o: a_o = v̇_o + ω×v_o.
+fn state(mo: &Motion, o: Point) -> (Twist, Twist) {
+    let v = mo.velocity(o);
     (
-        Twist {
-            w: mo.omega,
-            v: mo.v0,
-        },
+        Twist { w: mo.omega, v },
         Twist {
             w: mo.epsilon,
-            v: mo.a0 - perp(mo.v0) * mo.omega,
+            v: mo.acceleration(o) - perp(v) * mo.omega,
         },
     )
 }
 
-/// Unit twist of a pair, traversed from `conn.from` to `conn.to`; the rate
-/// that multiplies it is ω_to − ω_from (revolute) or the slide of the
-/// slider along its guide (prismatic).
-fn unit_twist(m: &Mechanism, c: &Configuration, conn: &Conn) -> Twist {
+/// Unit twist of a pair about the point `o`, traversed from `conn.from`
+/// to `conn.to`; the rate that multiplies it is ω_to − ω_from (revolute)
+/// or the slide of the slider along its guide (prismatic).
+fn unit_twist(m: &Mechanism, c: &Configuration, conn: &Conn, o: Point) -> Twist {
     match conn.joint {
         Joint::R(p) => {
             let at = c.point(m, conn.to, p);
             Twist {
                 w: 1.0,
-                v: -perp(at.to_vec2()),
+                v: -perp(at - o),
             }
         }
         Joint::P(k) => {
@@ -115,13 +115,7 @@ pub fn input_motion(m: &Mechanism, c: &Configuration, rate: f64, rate2: f64) -> 
         }
         InputSpec::Slider { pair, .. } => {
             let u = c.pose(m.frame()).dir(m.prismatics[pair].line_dir);
-            Motion {
-                pose,
-                omega: 0.0,
-                epsilon: 0.0,
-                v0: u * rate,
-                a0: u * rate2,
-            }
+            Motion::from_point(pose, pose.origin, u * rate, u * rate2, 0.0, 0.0)
         }
     }
 }
@@ -222,7 +216,10 @@ fn group<const N: usize>(
     links: &[usize],
     motions: &mut [(usize, Motion); 4],
 ) -> Option<usize> {
-    let xi: [Twist; N] = conns.map(|cn| unit_twist(m, c, &cn));
+    // The twists are taken about a point of the group (the pose of its
+    // first link), so that the contour's numbers are the group's own size.
+    let o = c.pose(links[0]).origin;
+    let xi: [Twist; N] = conns.map(|cn| unit_twist(m, c, &cn, o));
     let mut a = SMatrix::<f64, N, N>::zeros();
     for (ci, contour) in contours.iter().enumerate() {
         for &(j, sg) in contour.iter() {
@@ -231,7 +228,7 @@ fn group<const N: usize>(
             a[(3 * ci + 2, j)] = sg * xi[j].v.y;
         }
     }
-    let state_of = |l: usize| known[l].map(|mo| state(&mo));
+    let state_of = |l: usize| known[l].map(|mo| state(&mo, o));
     let known = |l: usize| state_of(l).expect("attachment solved first");
     let inverse = invert(&a)?;
     let qd = inverse.solve(&rhs::<N>(ends, |l| known(l).0));
@@ -281,13 +278,7 @@ fn group<const N: usize>(
             .unwrap_or_default();
         motions[k] = (
             l,
-            Motion {
-                pose: c.pose(l),
-                omega: v.w,
-                epsilon: a.w,
-                v0: v.v,
-                a0: a.v + perp(v.v) * v.w,
-            },
+            Motion::from_point(c.pose(l), o, v.v, a.v + perp(v.v) * v.w, v.w, a.w),
         );
     }
     Some(links.len())

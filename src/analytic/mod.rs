@@ -14,6 +14,12 @@ use crate::geom::{Pose, perp};
 use kurbo::{Point, Vec2};
 
 /// The motion of one link at one instant.
+///
+/// The state is kept at a material point `at` of the link (or near it: a
+/// joint of its group), not at the world origin: the velocity of the
+/// link's point at the origin of a small linkage drawn far from it is the
+/// difference of two large numbers (ω×r against v), and would lose the
+/// linkage's own digits.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Motion {
     pub pose: Pose,
@@ -21,32 +27,34 @@ pub struct Motion {
     pub omega: f64,
     /// Angular acceleration.
     pub epsilon: f64,
-    /// Velocity of the link's material point at the world origin.
-    pub v0: Vec2,
+    /// Where the state is kept.
+    pub at: Point,
+    /// Velocity of the link's material point now at `at`.
+    pub v_at: Vec2,
     /// Acceleration of that material point.
-    pub a0: Vec2,
+    pub a_at: Vec2,
 }
 
 impl Motion {
     /// Velocity of the link's material point now at `p`.
     pub fn velocity(&self, p: Point) -> Vec2 {
-        self.v0 + perp(p.to_vec2()) * self.omega
+        self.v_at + perp(p - self.at) * self.omega
     }
     /// Acceleration of the link's material point now at `p`:
     /// a_P = a_O + ε×OP − ω²·OP.
     pub fn acceleration(&self, p: Point) -> Vec2 {
-        let r = p.to_vec2();
-        self.a0 + perp(r) * self.epsilon - r * (self.omega * self.omega)
+        let r = p - self.at;
+        self.a_at + perp(r) * self.epsilon - r * (self.omega * self.omega)
     }
     /// Rigid motion from the state of one material point `p`.
     pub fn from_point(pose: Pose, p: Point, v: Vec2, a: Vec2, omega: f64, epsilon: f64) -> Motion {
-        let r = p.to_vec2();
         Motion {
             pose,
             omega,
             epsilon,
-            v0: v - perp(r) * omega,
-            a0: a - perp(r) * epsilon + r * (omega * omega),
+            at: p,
+            v_at: v,
+            a_at: a,
         }
     }
 }
