@@ -4,7 +4,7 @@
 //! solved by a one-dimensional root search in its base angle, tracked
 //! continuously from the sketch.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, quantity};
 use crate::geom::{
     LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
 };
@@ -38,11 +38,13 @@ pub struct Branches {
     pub triad_pose: Vec<Pose>,
 }
 
-/// Describe an input value for messages: "φ = 123.4°" or "s = 0.05 m".
+/// Describe an input value for messages: "φ = 123.4°" or "s = 0.05 m",
+/// in the shortest decimal that is the value (near a limit, positions a
+/// nano-degree apart must read apart).
 pub fn describe_input(m: &Mechanism, q: f64) -> String {
     match m.scene.input {
-        InputSpec::Crank { .. } => format!("φ = {:.6}°", q.to_degrees()),
-        InputSpec::Slider { .. } => format!("s = {q:.9} m"),
+        InputSpec::Crank { .. } => format!("φ = {}°", q.to_degrees()),
+        InputSpec::Slider { .. } => format!("s = {q} m"),
     }
 }
 
@@ -144,6 +146,8 @@ struct TriadGeom {
     int_pts: [usize; 3],
     r: [f64; 3],
     b: [Vec2; 3],
+    /// The group's own size: its longest leash or base side.
+    scale: f64,
 }
 
 fn triad_geom(m: &Mechanism, t: &Triad) -> TriadGeom {
@@ -152,11 +156,21 @@ fn triad_geom(m: &Mechanism, t: &Triad) -> TriadGeom {
     let r = [0, 1, 2]
         .map(|i| (m.local(t.leashes[i], int_pts[i]) - m.local(t.leashes[i], ext_pts[i])).hypot());
     let b = int_pts.map(|p| m.local(t.base, p));
+    let scale = r
+        .iter()
+        .copied()
+        .chain([
+            (b[1] - b[0]).hypot(),
+            (b[2] - b[0]).hypot(),
+            (b[2] - b[1]).hypot(),
+        ])
+        .fold(0.0, f64::max);
     TriadGeom {
         ext_pts,
         int_pts,
         r,
         b,
+        scale,
     }
 }
 
@@ -306,7 +320,20 @@ impl<'a> PositionSolver<'a> {
             };
             let step = match self.m.scene.input {
                 InputSpec::Crank { .. } => 2f64.to_radians(),
-                InputSpec::Slider { .. } => 0.01 * self.m.size,
+                // A hundredth of the smallest class III group: the groups'
+                // own size, not the sketch's.
+                InputSpec::Slider { .. } => {
+                    0.01 * self
+                        .s
+                        .groups
+                        .iter()
+                        .zip(&self.need)
+                        .filter_map(|(g, &n)| match g {
+                            AssurGroup::Triad(t) if n => Some(triad_geom(self.m, t).scale),
+                            _ => None,
+                        })
+                        .fold(f64::INFINITY, f64::min)
+                }
             };
             let n = (span.abs() / step).ceil() as usize;
             for i in 1..n {
@@ -368,7 +395,12 @@ fn solve_dyad(
     c: &mut Configuration,
 ) -> std::result::Result<(), String> {
     let [l1, l2] = d.links;
-    let tol = 1e-10 * m.size;
+    // Tangency (a toggle) is accepted to the rounding of the numbers that
+    // meet there: the group's lengths and the coordinates of its joints,
+    // never a fraction of the sketch's size.
+    let rounding = |lens: f64, at: &[Point]| {
+        64.0 * f64::EPSILON * (lens + at.iter().map(|p| p.to_vec2().hypot()).sum::<f64>())
+    };
     let min_sin = 1e-12;
     match d.kind {
         DyadKind::Rrr => {
@@ -381,14 +413,17 @@ fn solve_dyad(
             let dd = known_point(m, c, &d.ext2, d.ext2.to);
             let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
             let r2 = (m.local(l2, pc) - m.local(l2, pd)).hypot();
+            let tol = rounding(r1 + r2, &[b, dd]);
             let x = circle_circle(b, r1, dd, r2, sign, tol).ok_or_else(|| {
                 format!(
-                    "the circles of radius {r1:.6} m about {} and {r2:.6} m about {} do not meet ({} and {} are {:.6} m apart)",
+                    "the circles of radius {} about {} and {} about {} do not meet ({} and {} are {} apart)",
+                    quantity(r1, "m"),
                     m.point_name(pb),
+                    quantity(r2, "m"),
                     m.point_name(pd),
                     m.point_name(pb),
                     m.point_name(pd),
-                    b.distance(dd)
+                    quantity(b.distance(dd), "m")
                 )
             })?;
             set_by_two(m, c, l1, pb, b, pc, x);
@@ -402,11 +437,13 @@ fn solve_dyad(
             let th2 = angle_across(m, k, k2, c.pose(k2).angle);
             let line = slide_line(m, k, k2, &c.pose(k2), th2, m.local(l2, pc));
             let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
+            let tol = rounding(r1, &[b, line.point]);
             let x = circle_line(b, r1, &line, sign, tol).ok_or_else(|| {
                 format!(
-                    "the circle of radius {r1:.6} m about {} does not reach the guide line ({:.6} m away)",
+                    "the circle of radius {} about {} does not reach the guide line ({} away)",
+                    quantity(r1, "m"),
                     m.point_name(pb),
-                    line.signed_distance(b).abs()
+                    quantity(line.signed_distance(b).abs(), "m")
                 )
             })?;
             set_by_two(m, c, l1, pb, b, pc, x);
@@ -426,12 +463,14 @@ fn solve_dyad(
             let w = js - jg;
             let dist = w.hypot();
             let s = rg.h / dist;
-            if !s.is_finite() || s.abs() > 1.0 + 1e-12 || dist <= tol {
+            let tol = rounding(rg.h.abs(), &[jg, js]);
+            if !s.is_finite() || rg.h.abs() - dist > tol || dist <= tol {
                 return Err(format!(
-                    "the guide passes {:.6} m from {} but {} is only {dist:.6} m away",
-                    rg.h.abs(),
+                    "the guide passes {} from {} but {} is only {} away",
+                    quantity(rg.h.abs(), "m"),
                     m.point_name(rg.pin_guide),
-                    m.point_name(rg.pin_slider)
+                    m.point_name(rg.pin_slider),
+                    quantity(dist, "m")
                 ));
             }
             let s = s.clamp(-1.0, 1.0);
@@ -513,7 +552,11 @@ fn solve_triad(
     let residual =
         |p: &Pose| [0, 1, 2].map(|i| (p.apply(tg.b[i]) - e[i]).hypot2() - tg.r[i] * tg.r[i]);
     let mut pose = start;
-    let size = m.size;
+    // The group's own size scales its angle and its tolerances; the
+    // coordinates' magnitude bounds how small a correction can get.
+    let size = tg.scale;
+    let far = e.iter().map(|p| p.to_vec2().hypot()).fold(0.0, f64::max);
+    let floor = 4.0 * f64::EPSILON * (size + far);
     let mut converged = false;
     for _ in 0..60 {
         let r = residual(&pose);
@@ -542,7 +585,7 @@ fn solve_triad(
             );
             // At the level of rounding the residual cannot fall: take the
             // full step there, or the damping would fake convergence.
-            if norm(residual(&next)) <= r0 || r0 <= 1e-13 * size * size || k < 1e-3 {
+            if norm(residual(&next)) <= r0 || r0 <= 1e-13 * size * (size + far) || k < 1e-3 {
                 break;
             }
             k *= 0.5;
@@ -552,7 +595,7 @@ fn solve_triad(
         if !moved.is_finite() {
             break;
         }
-        if moved <= 1e-14 * size {
+        if moved <= floor {
             converged = true;
             break;
         }
@@ -563,7 +606,10 @@ fn solve_triad(
     // Near the group's dead point the steps need not fall below 1e-14·size
     // (the nearly singular system amplifies rounding), but a residual at
     // the level of rounding still means the group closes.
-    if !(converged || r <= 1e-15 * size * size) || !r.is_finite() || r > 1e-13 * size * size {
+    if !(converged || r <= 1e-15 * size * (size + far))
+        || !r.is_finite()
+        || r > 1e-13 * size * (size + far)
+    {
         return Err(format!(
             "no position of the base link {} near the previous one closes the group (residual {r:.2e} m²)",
             m.link_id(t.base)
