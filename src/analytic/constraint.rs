@@ -28,7 +28,8 @@ enum Constraint {
 /// Newton's stopping rule and the limit of conditioning accepted.
 #[derive(Clone, Copy, Debug)]
 pub struct Settings {
-    /// Stop when the largest correction is below `tol` × the sketch size.
+    /// Stop when every correction is below `tol` × its unknown's own scale
+    /// (a coordinate: its link's size and magnitude; an angle: one radian).
     pub tol: f64,
     pub max_iter: usize,
     /// Smallest accepted ratio σ_min/σ_max of the scaled Jacobian.
@@ -45,6 +46,12 @@ impl Default for Settings {
     }
 }
 
+/// The largest turn of the path over one step of the path follower (in
+/// the links' own lengths): small enough that the predictor stays closer
+/// to its assembly than to any other (at a neck of width δ the radius of
+/// the path is about δ, so a step is a few hundredths of δ).
+const MAX_TURN: f64 = 0.035;
+
 /// The solver over a subset of links (those the wanted output needs).
 #[derive(Clone, Debug)]
 pub struct ConstraintSolver<'a> {
@@ -56,8 +63,47 @@ pub struct ConstraintSolver<'a> {
     q: DVector<f64>,
     last_input: f64,
     settings: Settings,
+    /// Each solved link's own size ([`link_scale`]), parallel to `links`.
+    scale: Vec<f64>,
     /// σ_min/σ_max of the scaled Jacobian at the last solve.
     pub conditioning: f64,
+    /// Steps the last walk along the input took (path following).
+    pub steps: usize,
+}
+
+/// The size that scales a link's angle into a length (its extent; a
+/// one-point link: the largest of its neighbours'): the Jacobian's columns
+/// and rows and Newton's tolerances are judged relative to the links they
+/// concern, not to the whole sketch.
+fn link_scale(m: &Mechanism, l: usize) -> f64 {
+    let own = m.links[l].extent;
+    if own > 0.0 {
+        return own;
+    }
+    // A one-point link: the links that share its point, its guides and
+    // what slides on it, and theirs.
+    let mut near: Vec<usize> = vec![l];
+    for _ in 0..2 {
+        let mut next = near.clone();
+        for &k in &near {
+            next.extend(m.links_of_point(m.links[k].points[0]));
+            for p in &m.prismatics {
+                if p.slider == k {
+                    next.push(p.guide);
+                }
+                if p.guide == k {
+                    next.push(p.slider);
+                }
+            }
+        }
+        near = next;
+    }
+    let reach = near
+        .into_iter()
+        .filter(|&k| k != m.frame())
+        .map(|k| m.links[k].extent)
+        .fold(0.0, f64::max);
+    if reach > 0.0 { reach } else { m.size }
 }
 
 impl<'a> ConstraintSolver<'a> {
@@ -100,6 +146,7 @@ impl<'a> ConstraintSolver<'a> {
             q[3 * i + 1] = p.origin.y;
             q[3 * i + 2] = p.angle;
         }
+        let scale = links.iter().map(|&l| link_scale(m, l)).collect();
         ConstraintSolver {
             m,
             links,
@@ -108,7 +155,9 @@ impl<'a> ConstraintSolver<'a> {
             q,
             last_input: f64::NAN,
             settings,
+            scale,
             conditioning: 1.0,
+            steps: 0,
         }
     }
 
@@ -307,48 +356,134 @@ impl<'a> ConstraintSolver<'a> {
         g
     }
 
-    /// Column scaling so that θ columns carry a length, as x and y do.
+    /// The scale of each row: a length for the rows that close points, a
+    /// link's size for the rows of angles (a prismatic pair's relative
+    /// angle, a crank's angle).
+    fn row_scales(&self) -> Vec<f64> {
+        let m = self.m;
+        let size_of = |l: usize| self.slot[l].map_or(0.0, |i| self.scale[i]);
+        let mut out = Vec::with_capacity(self.rows());
+        for c in &self.cons {
+            match *c {
+                Constraint::Revolute { .. } => out.extend([1.0, 1.0]),
+                Constraint::Prismatic { k } => {
+                    let pr = &m.prismatics[k];
+                    let l = size_of(pr.slider).max(size_of(pr.guide));
+                    out.extend([l.max(f64::MIN_POSITIVE), 1.0]);
+                }
+                Constraint::Driver => out.push(match m.scene.input {
+                    InputSpec::Crank { link, .. } => size_of(link),
+                    InputSpec::Slider { .. } => 1.0,
+                }),
+            }
+        }
+        out
+    }
+
+    /// σ_min/σ_max of the Jacobian with every unknown and every equation
+    /// in the lengths of the links it concerns: θ columns times their
+    /// link's size, angle rows likewise, then each column to unit norm
+    /// (a small linkage in a large sketch is as well conditioned as the
+    /// same linkage alone).
     fn scaled_conditioning(&self, j: &DMatrix<f64>) -> f64 {
         let mut js = j.clone();
+        for (r, sc) in self.row_scales().into_iter().enumerate() {
+            js.row_mut(r).scale_mut(sc);
+        }
         for i in 0..self.links.len() {
-            js.column_mut(3 * i + 2).scale_mut(1.0 / self.m.size);
+            js.column_mut(3 * i + 2).scale_mut(1.0 / self.scale[i]);
+        }
+        for c in 0..js.ncols() {
+            let n = js.column(c).norm();
+            if n > 0.0 {
+                js.column_mut(c).scale_mut(1.0 / n);
+            }
         }
         let sv = js.singular_values();
         let max = sv.max();
         if max == 0.0 { 0.0 } else { sv.min() / max }
     }
 
-    fn newton(&mut self, x: f64) -> std::result::Result<(), String> {
+    /// The largest correction relative to the rounding of its unknown: a
+    /// coordinate against its link's size and its own magnitude, an angle
+    /// against one radian.
+    fn correction(&self, q: &DVector<f64>, dq: &DVector<f64>) -> f64 {
+        let mut big = 0.0f64;
+        for i in 0..self.links.len() {
+            let l = self.scale[i];
+            big = big
+                .max(dq[3 * i].abs() / (l + q[3 * i].abs()))
+                .max(dq[3 * i + 1].abs() / (l + q[3 * i + 1].abs()))
+                .max(dq[3 * i + 2].abs() / (1.0 + q[3 * i + 2].abs()));
+        }
+        big
+    }
+
+    /// Newton's method at input `x` from the current state. Converged when
+    /// every correction is at the rounding of its unknown (or `tol`); it
+    /// fails when the corrections stop contracting (`strict`: each at most
+    /// half the one before, as the path follower demands of its corrector)
+    /// or after `max_iter`.
+    fn newton(&mut self, x: f64, strict: bool) -> std::result::Result<usize, String> {
         let s = self.settings;
-        for _ in 0..s.max_iter {
+        let floor = s.tol.max(4.0 * f64::EPSILON);
+        let mut last = f64::INFINITY;
+        for it in 0..s.max_iter {
             let r = self.residual(&self.q, x);
             let j = self.jacobian(&self.q);
             let Some(dq) = j.lu().solve(&r) else {
                 return Err("the constraint Jacobian is singular".into());
             };
-            self.q -= &dq;
-            let mut big = 0.0f64;
-            for i in 0..self.links.len() {
-                big = big
-                    .max(dq[3 * i].abs())
-                    .max(dq[3 * i + 1].abs())
-                    .max(dq[3 * i + 2].abs() * self.m.size);
-            }
+            let big = self.correction(&self.q, &dq);
             if !big.is_finite() {
                 return Err("Newton's method diverged".into());
             }
-            if big <= s.tol * self.m.size {
-                return Ok(());
+            self.q -= &dq;
+            if big <= floor {
+                return Ok(it + 1);
             }
+            if strict && big > 0.5 * last && last > 16.0 * floor {
+                return Err(format!(
+                    "Newton's method contracts too slowly ({big:.1e} after {last:.1e})"
+                ));
+            }
+            last = big;
         }
         let r = self.residual(&self.q, x).amax();
-        if r <= 1e-9 * self.m.size {
-            Ok(())
+        let reach = self.scale.iter().copied().fold(0.0, f64::max);
+        if !strict && r <= 1e-12 * reach {
+            Ok(s.max_iter)
         } else {
             Err(format!(
-                "Newton's method did not converge (residual {r:.3e})"
+                "Newton's method did not converge (residual {})",
+                crate::error::quantity(r, "")
             ))
         }
+    }
+
+    /// The tangent of the path: dq/dx from Φ_q·q' = −∂Φ/∂x (the driver's
+    /// row alone depends on x).
+    fn tangent(&self) -> Option<DVector<f64>> {
+        let j = self.jacobian(&self.q);
+        let mut b = DVector::zeros(self.rows());
+        let last = b.len() - 1;
+        b[last] = 1.0;
+        j.lu().solve(&b)
+    }
+
+    /// A direction on the path in the links' own lengths (x, y over the
+    /// link's size, θ, and the input over its own scale), of unit length,
+    /// to measure how the path turns.
+    fn unit_direction(&self, t: &DVector<f64>, dx: f64) -> DVector<f64> {
+        let mut d = DVector::zeros(t.len() + 1);
+        for i in 0..self.links.len() {
+            d[3 * i] = t[3 * i] / self.scale[i];
+            d[3 * i + 1] = t[3 * i + 1] / self.scale[i];
+            d[3 * i + 2] = t[3 * i + 2];
+        }
+        d[t.len()] = dx;
+        let n = d.norm();
+        if n > 0.0 { d / n } else { d }
     }
 
     /// Positions at input coordinate `x`, reached by continuation from the
@@ -373,7 +508,7 @@ impl<'a> ConstraintSolver<'a> {
         };
         if self.last_input.is_nan() {
             let x0 = sketch_input(self.m);
-            self.newton(x0).map_err(err)?;
+            self.newton(x0, false).map_err(err)?;
             self.last_input = x0;
         }
         self.walk(span).map_err(err)?;
@@ -391,18 +526,83 @@ impl<'a> ConstraintSolver<'a> {
         }
     }
 
-    /// Newton's method along the input from the last solved coordinate by
-    /// `span`, in steps of at most 5° (or 2 % of the size).
+    /// Follow the assembly along the input from the last solved coordinate
+    /// by `span`: a predictor along the path's tangent, Newton's corrector,
+    /// and step control. A step is halved when the path turns by more than
+    /// [`MAX_TURN`] over it, when the corrector does not contract (each
+    /// correction at most half the last), or when the Jacobian is singular
+    /// on the way; it grows again after easy steps. So a narrow neck (a
+    /// near-toggle, a change point passed at 1e-11) is passed on the same
+    /// assembly in steps as small as the neck, and open country in steps
+    /// up to 5° (or 5 % of the input link's size).
+    ///
+    /// This is the same branch that route (a) takes by its sign rule: the
+    /// orientation sign of a group (docs/analysis.md) changes only through
+    /// a toggle, where the two assemblies meet; a path that never meets
+    /// the other assembly keeps its sign.
     fn walk(&mut self, span: f64) -> std::result::Result<(), String> {
         let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
-        let step = if crank {
+        let input_scale = if crank {
+            1.0
+        } else {
+            let l = self.m.scene.input.link();
+            self.slot[l].map_or(self.m.size, |i| self.scale[i])
+        };
+        let max_step = if crank {
             5f64.to_radians()
         } else {
-            0.02 * self.m.size
+            0.05 * input_scale
         };
-        let n = ((span.abs() / step).ceil() as usize).max(1);
-        for i in 1..=n {
-            self.newton(self.last_input + span * i as f64 / n as f64)?;
+        let start = self.last_input;
+        let end = start + span;
+        // The smallest step worth taking: the rounding of the input itself.
+        let min_step = 64.0 * f64::EPSILON * (start.abs().max(end.abs()) + input_scale);
+        let mut x = start;
+        let mut h = max_step.min(span.abs());
+        let dir = span.signum();
+        self.steps = 0;
+        let Some(mut t) = self.tangent() else {
+            return Err("the constraint Jacobian is singular at the start of the path".into());
+        };
+        while (end - x) * dir > 0.0 {
+            let to = if (end - x).abs() <= h { end } else { x + dir * h };
+            let dx = to - x;
+            let saved = self.q.clone();
+            // Predictor along the tangent, then Newton's corrector.
+            self.q += &t * dx;
+            let accepted = match self.newton(to, true) {
+                Ok(_) => match self.tangent() {
+                    Some(t_new) => {
+                        let a = self.unit_direction(&t, 1.0 / input_scale);
+                        let b = self.unit_direction(&t_new, 1.0 / input_scale);
+                        let turn = a.dot(&b).clamp(-1.0, 1.0).acos();
+                        (turn <= MAX_TURN).then_some((t_new, turn))
+                    }
+                    None => None,
+                },
+                Err(_) => None,
+            };
+            match accepted {
+                Some((t_new, turn)) => {
+                    x = to;
+                    t = t_new;
+                    self.steps += 1;
+                    if turn < 0.25 * MAX_TURN {
+                        h = (h * 1.5).min(max_step);
+                    }
+                }
+                None => {
+                    self.q = saved;
+                    h *= 0.5;
+                    if h < min_step {
+                        return Err(format!(
+                            "the assembly cannot be followed past {} (steps down to {} do not converge on it)",
+                            describe_input(self.m, x),
+                            crate::error::quantity(h, if crank { "rad" } else { "m" })
+                        ));
+                    }
+                }
+            }
         }
         Ok(())
     }
