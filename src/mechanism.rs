@@ -169,6 +169,42 @@ impl Mechanism {
             .local_of(point)
             .expect("point belongs to link (checked by structure)")
     }
+
+
+    /// The size that scales a link's angle into a length (its extent; a
+    /// one-point link: the largest of its neighbours'): tolerances and
+    /// scalings about a link are relative to it, not to the whole sketch.
+    pub fn link_scale(&self, l: usize) -> f64 {
+        let own = self.links[l].extent;
+        if own > 0.0 {
+            return own;
+        }
+        // A one-point link: the links that share its point, its guides and
+        // what slides on it, and theirs.
+        let mut near: Vec<usize> = vec![l];
+        for _ in 0..2 {
+            let mut next = near.clone();
+            for &k in &near {
+                next.extend(self.links_of_point(self.links[k].points[0]));
+                for p in &self.prismatics {
+                    if p.slider == k {
+                        next.push(p.guide);
+                    }
+                    if p.guide == k {
+                        next.push(p.slider);
+                    }
+                }
+            }
+            near = next;
+        }
+        let reach = near
+            .into_iter()
+            .filter(|&k| k != self.frame())
+            .map(|k| self.links[k].extent)
+            .fold(0.0, f64::max);
+        if reach > 0.0 { reach } else { self.size }
+    }
+
     /// Links carrying `point`, in scene order.
     pub fn links_of_point(&self, point: usize) -> Vec<usize> {
         self.scene.links_of_point(point)

@@ -157,6 +157,30 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
                 if let Some(sens) = c.data_sensitivity {
                     check["data_sensitivity"] = num(sens);
                 }
+                if let Some(b) = &c.bound {
+                    let mut bound = json!({ "p": num(b.p), "angle": num(b.angle) });
+                    if s.motion.iter().flatten().next().is_some() {
+                        for (k, x) in [
+                            ("v", b.v),
+                            ("omega", b.omega),
+                            ("v_q", b.v_q),
+                            ("phi_q", b.phi_q),
+                        ] {
+                            bound[k] = num(x);
+                        }
+                        if an.order == Some(crate::analytic::Order::Acceleration) {
+                            for (k, x) in [
+                                ("a", b.a),
+                                ("epsilon", b.epsilon),
+                                ("a_q", b.a_q),
+                                ("phi_qq", b.phi_qq),
+                            ] {
+                                bound[k] = num(x);
+                            }
+                        }
+                    }
+                    check["bound"] = bound;
+                }
                 o.insert("crosscheck".into(), check);
             }
             Value::Object(o)

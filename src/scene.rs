@@ -394,6 +394,17 @@ impl Reader {
         })
     }
 
+    /// An angle of the file in radians, reduced once, exactly, in the unit
+    /// it was written in (whole turns off: `x % 360` is exact in degrees),
+    /// before any route sees it: 1e6 turns plus 30° is 30°, for both.
+    fn angle(&self, x: f64) -> f64 {
+        if self.ang == 1.0 {
+            x % std::f64::consts::TAU
+        } else {
+            (x % 360.0) * self.ang
+        }
+    }
+
     fn units(&mut self, v: Option<&Value>) {
         self.len = 1.0;
         self.ang = std::f64::consts::PI / 180.0;
@@ -646,7 +657,7 @@ impl Reader {
         let direction = match (o.get("angle"), o.get("along")) {
             (Some(a), None) => self
                 .number(a, &format!("{at}/angle"))
-                .map(|x| Direction::Angle(x * self.ang)),
+                .map(|x| Direction::Angle(self.angle(x))),
             (None, Some(al)) => {
                 let pat = format!("{at}/along");
                 match al.as_array() {
@@ -861,7 +872,7 @@ impl Reader {
                 None
             }
         };
-        let angle = opt(self, "angle", None).map(|x| x * self.ang);
+        let angle = opt(self, "angle", None).map(|x| self.angle(x));
         let omega = match (o.get("omega"), o.get("rpm")) {
             (Some(w), None) => self.number(w, "/input/omega"),
             (None, Some(n)) => self
@@ -969,7 +980,8 @@ impl Reader {
                 );
                 return None;
             }
-            return list(self, "angles", self.ang).map(PositionsSpec::List);
+            return list(self, "angles", 1.0)
+                .map(|v| PositionsSpec::List(v.into_iter().map(|x| self.angle(x)).collect()));
         }
         if o.contains_key("s") {
             if crank {

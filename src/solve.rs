@@ -58,7 +58,42 @@ pub struct CrossCheck {
     /// units of rounding, relative as `max_rel_diff` (`None` only before
     /// it is measured).
     pub data_sensitivity: Option<f64>,
+    /// The error bound of every reported number of each kind, in SI
+    /// (`None` only before the data sensitivity is measured).
+    pub bound: Option<Bounds>,
 }
+
+/// The error bound of every number of one position that the routes report,
+/// by kind, in SI: each reported value lies within its kind's bound of the
+/// exact answer for the scene's data.
+///
+/// Each is (c·ε·κ + 4·d + 4·σ)·S: κ = 1/conditioning (the scaled
+/// Jacobian's σ_max/σ_min: how much rounding of the linear systems is
+/// amplified; c = 256 covers the few dozen roundings per equation and
+/// their accumulation through the groups), d the routes' disagreement (the
+/// part of their own arithmetic that κ misses near a dead point), σ the
+/// data sensitivity (the part the data's rounding decides, which both
+/// routes share); S the position's scale of that kind: the sketch's size
+/// for places, the largest |v| or |ω|·size for velocities, the largest
+/// |a|, |ε|·size or ω²·size for accelerations, the same at unit input rate
+/// for the transfer functions. Angles, ω, ε and their transfer functions:
+/// the same over the size.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Bounds {
+    pub p: f64,
+    pub v: f64,
+    pub a: f64,
+    pub v_q: f64,
+    pub a_q: f64,
+    pub angle: f64,
+    pub omega: f64,
+    pub epsilon: f64,
+    pub phi_q: f64,
+    pub phi_qq: f64,
+}
+
+/// The constant c of [`Bounds`].
+pub const BOUND_ROUNDINGS: f64 = 256.0;
 
 /// The largest data sensitivity accepted, as the routes' disagreement.
 pub const MAX_REL_DIFF: f64 = 1e-6;
@@ -521,6 +556,7 @@ impl Analysis {
             conditioning: cs.conditioning,
             plan_time,
             data_sensitivity: None,
+            bound: None,
         });
         if d.is_nan() || d > MAX_REL_DIFF {
             return Err(Error::Singular {
@@ -536,10 +572,52 @@ impl Analysis {
                 at: describe_input(m, q),
                 why,
             })?;
+        let bound = self.bounds(&solved, cs.conditioning, d, sens);
         if let Some(c) = solved.check.as_mut() {
             c.data_sensitivity = Some(sens);
+            c.bound = Some(bound);
         }
         Ok(solved)
+    }
+
+    /// The bounds of a solved position ([`Bounds`]).
+    fn bounds(&self, s: &Solved, conditioning: f64, diff: f64, sens: f64) -> Bounds {
+        let m = &self.mech;
+        let size = m.size;
+        let rel = BOUND_ROUNDINGS * f64::EPSILON / conditioning + 4.0 * diff + 4.0 * sens;
+        // The scale of one kind: the points' magnitudes and the links'
+        // rates × size (and ω²·size for accelerations).
+        let scale = |mo: &[Option<Motion>], acc: bool| -> f64 {
+            let mut x = f64::MIN_POSITIVE;
+            for &p in &self.points {
+                let l = self.carrier(p);
+                if let Some(k) = mo[l] {
+                    let at = s.config.point(m, l, p);
+                    x = x.max(if acc { k.acceleration(at) } else { k.velocity(at) }.hypot());
+                }
+            }
+            for k in mo.iter().flatten() {
+                x = x.max(if acc { k.epsilon } else { k.omega }.abs() * size);
+                if acc {
+                    x = x.max(k.omega * k.omega * size);
+                }
+            }
+            x
+        };
+        let (sv, sa) = (scale(&s.motion, false), scale(&s.motion, true));
+        let (sq, sqq) = (scale(&s.analogue, false), scale(&s.analogue, true));
+        Bounds {
+            p: rel * size,
+            v: rel * sv,
+            a: rel * sa,
+            v_q: rel * sq,
+            a_q: rel * sqq,
+            angle: rel,
+            omega: rel * sv / size,
+            epsilon: rel * sa / size,
+            phi_q: rel * sq / size,
+            phi_qq: rel * sqq / size,
+        }
     }
 
     /// The scene with every datum (length, sketch coordinate, guide line)

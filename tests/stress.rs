@@ -18,25 +18,8 @@
 //! **The bounds.** Plans: each measured value against the reference within
 //! the plan's own drafting bound (`measured[].bound`). Analytic routes (the
 //! reported `p`, `v`, `a`, angles, ω, ε and their transfer functions):
-//! within
-//!
-//!   (c·ε·κ + 4·d + 4·σ)·S,   κ = 1 / `crosscheck.conditioning`, c = 256,
-//!
-//! where ε = 2⁻⁵², d = `crosscheck.max_rel_diff`, σ =
-//! `crosscheck.data_sensitivity` (0 where absent) and S is the position's
-//! scale of that kind (the sketch size for positions; the largest |v| or
-//! |ω|·size for velocities; the largest |a|, |ε|·size or ω²·size for
-//! accelerations; the same at unit input rate for transfer functions).
-//! c·ε·κ is the first-order effect of rounding on the linear systems
-//! (κ amplifies a relative perturbation of Φ_q·q̇ = b; c covers the few
-//! dozen roundings per equation and their accumulation through the
-//! groups). Near a dead point the positions' own rounding error is
-//! amplified again (second order in κ): the difference d between the two
-//! independent routes measures the part the routes' own arithmetic adds,
-//! and σ (how far a few units of rounding in the data move the answer,
-//! measured by mechplan at every position) the part the data's rounding
-//! decides, which both routes share. Where σ > 1e-6 mechplan
-//! refuses the position.
+//! within the bound of their kind that mechplan prints (`crosscheck.bound`,
+//! `mechplan::solve::Bounds`, where its formula is explained).
 
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
 use mechplan::scene::{InputSpec, PositionsSpec};
@@ -45,8 +28,6 @@ use serde_json::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-const C: f64 = 256.0;
 
 /// Positions mechplan answers although the exact mechanism has no
 /// well-defined answer there (the extended-precision reference does not
@@ -255,56 +236,37 @@ fn num(v: &Value) -> f64 {
     v.as_f64().unwrap()
 }
 
-/// Every number of one reported position against the reference.
+/// Every number of one reported position against the reference, each
+/// allowed its kind's printed bound (`crosscheck.bound`) plus the
+/// reference's own error estimate.
 fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
     let m = &an.mech;
-    let eps = f64::EPSILON;
-    let kappa = 1.0 / num(&pos["crosscheck"]["conditioning"]);
-    let diff = num(&pos["crosscheck"]["max_rel_diff"]);
-    // Near a dead point: how far a few units of rounding in the data move
-    // the answer (measured at every position).
-    let sens = pos["crosscheck"]["data_sensitivity"]
-        .as_f64()
-        .unwrap_or(0.0);
     let np = an.points.len();
     let links: Vec<usize> = (0..m.links.len()).filter(|&l| an.include[l]).collect();
-    // Scales of each kind at this position, from the reference: points'
-    // magnitudes, links' rates × size (and ω²·size for accelerations).
-    let scale = |v: &[f64], w2: Option<&[f64]>| -> f64 {
-        let mut s = f64::MIN_POSITIVE;
-        for k in 0..np {
-            s = s.max(v[2 * k].hypot(v[2 * k + 1]));
-        }
-        for j in 0..links.len() {
-            s = s.max(v[2 * np + j].abs() * m.size);
-            if let Some(w) = w2 {
-                s = s.max(w[2 * np + j].powi(2) * m.size);
-            }
-        }
-        s
+    let bound = |k: &str| -> f64 {
+        pos["crosscheck"]["bound"][k]
+            .as_f64()
+            .unwrap_or_else(|| panic!("crosscheck.bound.{k} missing"))
     };
-    let (sv, sa) = (scale(&r.v, None), scale(&r.a, Some(&r.v)));
-    let (sq, sqq) = (scale(&r.d1, None), scale(&r.d2, Some(&r.d1)));
-    let analytic = |s: f64| (C * eps * kappa + 4.0 * diff + 4.0 * sens) * s;
     let mut out = Vec::new();
     for (k, &p) in an.points.iter().enumerate() {
         let name = m.point_name(p);
         let rp = &pos["points"][name];
         for c in 0..2 {
             let i = 2 * k + c;
-            for (key, want, allowed) in [
-                ("p", r.x[i], analytic(m.size)),
-                ("v", r.v[i], analytic(sv) + r.ev[i]),
-                ("a", r.a[i], analytic(sa) + r.ea[i]),
-                ("v_q", r.d1[i], analytic(sq) + r.e1[i]),
-                ("a_q", r.d2[i], analytic(sqq) + r.e2[i]),
+            for (key, want, err) in [
+                ("p", r.x[i], 0.0),
+                ("v", r.v[i], r.ev[i]),
+                ("a", r.a[i], r.ea[i]),
+                ("v_q", r.d1[i], r.e1[i]),
+                ("a_q", r.d2[i], r.e2[i]),
             ] {
                 if let Some(x) = rp[key].get(c) {
                     out.push(Item {
                         what: format!("{key}[{c}] of {name}"),
                         got: num(x),
                         want,
-                        allowed,
+                        allowed: bound(key) + err,
                     });
                 }
             }
@@ -314,7 +276,8 @@ fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
         let i = 2 * np + j;
         let id = m.link_id(l);
         let rl = &pos["links"][id];
-        // Angles are reported in degrees, in (−180°, 180°].
+        // Angles are reported in degrees, in (−180°, 180°]: their own
+        // rounding to degrees and back is an ulp of 180°.
         let ang = num(&rl["angle"]).to_radians();
         let d = r.x[i] - ang;
         let d = d - (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
@@ -322,20 +285,20 @@ fn items(an: &Analysis, pos: &Value, r: &Reference) -> Vec<Item> {
             what: format!("angle of link {id}"),
             got: ang,
             want: ang + d,
-            allowed: analytic(1.0) + 1e-14,
+            allowed: bound("angle") + 1e-14,
         });
-        for (key, want, allowed) in [
-            ("omega", r.v[i], analytic(sv) / m.size + r.ev[i]),
-            ("epsilon", r.a[i], analytic(sa) / m.size + r.ea[i]),
-            ("phi_q", r.d1[i], analytic(sq) / m.size + r.e1[i]),
-            ("phi_qq", r.d2[i], analytic(sqq) / m.size + r.e2[i]),
+        for (key, want, err) in [
+            ("omega", r.v[i], r.ev[i]),
+            ("epsilon", r.a[i], r.ea[i]),
+            ("phi_q", r.d1[i], r.e1[i]),
+            ("phi_qq", r.d2[i], r.e2[i]),
         ] {
             if let Some(x) = rl.get(key) {
                 out.push(Item {
                     what: format!("{key} of link {id}"),
                     got: num(x),
                     want,
-                    allowed,
+                    allowed: bound(key) + err,
                 });
             }
         }

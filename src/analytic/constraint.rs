@@ -63,47 +63,12 @@ pub struct ConstraintSolver<'a> {
     q: DVector<f64>,
     last_input: f64,
     settings: Settings,
-    /// Each solved link's own size ([`link_scale`]), parallel to `links`.
+    /// Each solved link's own size ([`Mechanism::link_scale`]), parallel to `links`.
     scale: Vec<f64>,
     /// σ_min/σ_max of the scaled Jacobian at the last solve.
     pub conditioning: f64,
     /// Steps the last walk along the input took (path following).
     pub steps: usize,
-}
-
-/// The size that scales a link's angle into a length (its extent; a
-/// one-point link: the largest of its neighbours'): the Jacobian's columns
-/// and rows and Newton's tolerances are judged relative to the links they
-/// concern, not to the whole sketch.
-fn link_scale(m: &Mechanism, l: usize) -> f64 {
-    let own = m.links[l].extent;
-    if own > 0.0 {
-        return own;
-    }
-    // A one-point link: the links that share its point, its guides and
-    // what slides on it, and theirs.
-    let mut near: Vec<usize> = vec![l];
-    for _ in 0..2 {
-        let mut next = near.clone();
-        for &k in &near {
-            next.extend(m.links_of_point(m.links[k].points[0]));
-            for p in &m.prismatics {
-                if p.slider == k {
-                    next.push(p.guide);
-                }
-                if p.guide == k {
-                    next.push(p.slider);
-                }
-            }
-        }
-        near = next;
-    }
-    let reach = near
-        .into_iter()
-        .filter(|&k| k != m.frame())
-        .map(|k| m.links[k].extent)
-        .fold(0.0, f64::max);
-    if reach > 0.0 { reach } else { m.size }
 }
 
 impl<'a> ConstraintSolver<'a> {
@@ -146,7 +111,7 @@ impl<'a> ConstraintSolver<'a> {
             q[3 * i + 1] = p.origin.y;
             q[3 * i + 2] = p.angle;
         }
-        let scale = links.iter().map(|&l| link_scale(m, l)).collect();
+        let scale = links.iter().map(|&l| m.link_scale(l)).collect();
         ConstraintSolver {
             m,
             links,
@@ -430,6 +395,11 @@ impl<'a> ConstraintSolver<'a> {
         let mut last = f64::INFINITY;
         for it in 0..s.max_iter {
             let r = self.residual(&self.q, x);
+            // At the rounding of the equations (their lengths and the
+            // coordinates' magnitudes) a nearly singular Jacobian turns the
+            // rounding into corrections that need not contract: the
+            // equations hold as well as they can, and κ bounds the rest.
+            let at_rounding = r.amax() <= 64.0 * f64::EPSILON * self.magnitude();
             let j = self.jacobian(&self.q);
             let Some(dq) = j.lu().solve(&r) else {
                 return Err("the constraint Jacobian is singular".into());
@@ -439,10 +409,10 @@ impl<'a> ConstraintSolver<'a> {
                 return Err("Newton's method diverged".into());
             }
             self.q -= &dq;
-            if big <= floor {
+            if big <= floor || (at_rounding && it > 0) {
                 return Ok(it + 1);
             }
-            if strict && big > 0.5 * last && last > 16.0 * floor {
+            if strict && !at_rounding && big > 0.5 * last && last > 16.0 * floor {
                 return Err(format!(
                     "Newton's method contracts too slowly ({big:.1e} after {last:.1e})"
                 ));
@@ -461,14 +431,32 @@ impl<'a> ConstraintSolver<'a> {
         }
     }
 
-    /// The tangent of the path: dq/dx from Φ_q·q' = −∂Φ/∂x (the driver's
-    /// row alone depends on x).
-    fn tangent(&self) -> Option<DVector<f64>> {
+    /// The size of the numbers in the equations: the largest link and the
+    /// largest coordinate of a solved link.
+    fn magnitude(&self) -> f64 {
+        let mut x = 0.0f64;
+        for i in 0..self.links.len() {
+            x = x.max(self.scale[i] + self.q[3 * i].abs().max(self.q[3 * i + 1].abs()));
+        }
+        x
+    }
+
+    /// The tangent of the path, dq/dx from Φ_q·q' = −∂Φ/∂x (the driver's
+    /// row alone depends on x), and the sign of det Φ_q: the sign of the
+    /// assembly's orientation, which changes only where the path meets a
+    /// singular position (where two assemblies meet).
+    fn tangent(&self) -> Option<(DVector<f64>, f64)> {
         let j = self.jacobian(&self.q);
         let mut b = DVector::zeros(self.rows());
         let last = b.len() - 1;
         b[last] = 1.0;
-        j.lu().solve(&b)
+        let lu = j.lu();
+        let u = lu.u();
+        let mut sign: f64 = lu.p().determinant();
+        for i in 0..u.nrows().min(u.ncols()) {
+            sign *= u[(i, i)].signum();
+        }
+        Some((lu.solve(&b)?, sign))
     }
 
     /// A direction on the path in the links' own lengths (x, y over the
@@ -561,7 +549,7 @@ impl<'a> ConstraintSolver<'a> {
         let mut h = max_step.min(span.abs());
         let dir = span.signum();
         self.steps = 0;
-        let Some(mut t) = self.tangent() else {
+        let Some((mut t, sign)) = self.tangent() else {
             return Err("the constraint Jacobian is singular at the start of the path".into());
         };
         while (end - x) * dir > 0.0 {
@@ -570,13 +558,17 @@ impl<'a> ConstraintSolver<'a> {
             let saved = self.q.clone();
             // Predictor along the tangent, then Newton's corrector.
             self.q += &t * dx;
+            // The step stands if the corrector contracts, the path turns
+            // little over it, and the orientation keeps its sign: a step
+            // over a narrow neck, whose ends may look alike, lands on the
+            // other assembly, of the other sign.
             let accepted = match self.newton(to, true) {
                 Ok(_) => match self.tangent() {
-                    Some(t_new) => {
+                    Some((t_new, sign_new)) => {
                         let a = self.unit_direction(&t, 1.0 / input_scale);
                         let b = self.unit_direction(&t_new, 1.0 / input_scale);
                         let turn = a.dot(&b).clamp(-1.0, 1.0).acos();
-                        (turn <= MAX_TURN).then_some((t_new, turn))
+                        (turn <= MAX_TURN && sign_new == sign).then_some((t_new, turn))
                     }
                     None => None,
                 },

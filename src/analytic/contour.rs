@@ -220,18 +220,33 @@ fn group<const N: usize>(
     // first link), so that the contour's numbers are the group's own size.
     let o = c.pose(links[0]).origin;
     let xi: [Twist; N] = conns.map(|cn| unit_twist(m, c, &cn, o));
+    // The contour's velocity rows in the group's own unit of length (its
+    // joints' reach from o): a small group is as well conditioned as a
+    // large one of the same shape, and its dead point is judged so.
+    let reach = xi
+        .iter()
+        .map(|t| if t.w != 0.0 { t.v.hypot() } else { 0.0 })
+        .fold(0.0, f64::max);
+    let per_length = if reach > 0.0 { 1.0 / reach } else { 1.0 };
+    let in_group_units = |mut r: SVector<f64, N>| {
+        for ci in 0..contours.len() {
+            r[3 * ci + 1] *= per_length;
+            r[3 * ci + 2] *= per_length;
+        }
+        r
+    };
     let mut a = SMatrix::<f64, N, N>::zeros();
     for (ci, contour) in contours.iter().enumerate() {
         for &(j, sg) in contour.iter() {
             a[(3 * ci, j)] = sg * xi[j].w;
-            a[(3 * ci + 1, j)] = sg * xi[j].v.x;
-            a[(3 * ci + 2, j)] = sg * xi[j].v.y;
+            a[(3 * ci + 1, j)] = sg * xi[j].v.x * per_length;
+            a[(3 * ci + 2, j)] = sg * xi[j].v.y * per_length;
         }
     }
     let state_of = |l: usize| known[l].map(|mo| state(&mo, o));
     let known = |l: usize| state_of(l).expect("attachment solved first");
     let inverse = invert(&a)?;
-    let qd = inverse.solve(&rhs::<N>(ends, |l| known(l).0));
+    let qd = inverse.solve(&in_group_units(rhs::<N>(ends, |l| known(l).0)));
     let (vel, nv) = walk(&conns, |j| xi[j] * qd[j], |l| state_of(l).map(|k| k.0));
     let vel_of = |l: usize| {
         state_of(l)
@@ -252,7 +267,7 @@ fn group<const N: usize>(
                 rhs[3 * ci + 2] -= sg * drift[j].v.y;
             }
         }
-        let qdd = inverse.solve(&rhs);
+        let qdd = inverse.solve(&in_group_units(rhs));
         (acc, na) = walk(
             &conns,
             |j| xi[j] * qdd[j] + drift[j],

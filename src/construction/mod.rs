@@ -542,9 +542,16 @@ impl<'a> Builder<'a> {
         self.plan.points.len() - 1
     }
 
+    /// How close two places of one link are the same material point: a
+    /// billionth of the link's own size, above the rounding of the
+    /// coordinates (never a fraction of the whole sketch).
+    fn same_point(&self, link: usize, x: Point) -> f64 {
+        1e-9 * self.m().link_scale(link) + 64.0 * f64::EPSILON * x.to_vec2().hypot()
+    }
+
     fn register(&mut self, link: usize, x: Point, idx: usize) {
         let local = self.local(link, x);
-        let tol = 1e-9 * self.m().size;
+        let tol = self.same_point(link, x);
         if self.plan.known_at(link, local, tol).is_none() {
             self.plan.body.push(Known {
                 link,
@@ -556,7 +563,7 @@ impl<'a> Builder<'a> {
 
     fn find(&self, link: usize, x: Point) -> Option<usize> {
         let local = self.local(link, x);
-        let tol = 1e-9 * self.m().size;
+        let tol = self.same_point(link, x);
         self.plan.known_at(link, local, tol)
     }
 
@@ -734,7 +741,7 @@ impl<'a> Builder<'a> {
             m.links[link]
                 .points
                 .iter()
-                .find(|&&p| (m.local(link, p) - l).hypot() <= 1e-9 * m.size)
+                .find(|&&p| (m.local(link, p) - l).hypot() <= 1e-9 * m.link_scale(link))
                 .map(|&p| m.point_name(p).to_string())
                 .unwrap_or_else(|| b.plan.points[idx].figure.clone())
         };
@@ -947,9 +954,9 @@ impl<'a> Builder<'a> {
         let vel = self.vel.expect("acceleration plan after the velocity plan");
         let local_u = self.local(unknown, x);
         let local_k = self.local(known, x);
-        let tol = 1e-9 * self.m().size;
-        let find = |l: usize, loc: Vec2| vel.known_at(l, loc, tol);
-        let (Some(iu), Some(ik)) = (find(unknown, local_u), find(known, local_k)) else {
+        let (tol_u, tol_k) = (self.same_point(unknown, x), self.same_point(known, x));
+        let find = |l: usize, loc: Vec2, tol: f64| vel.known_at(l, loc, tol);
+        let (Some(iu), Some(ik)) = (find(unknown, local_u, tol_u), find(known, local_k, tol_k)) else {
             unreachable!("the velocity plan has both coincident points");
         };
         let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
@@ -1567,7 +1574,13 @@ impl<'a> Builder<'a> {
                 why: "all three leashes of the class III group are parallel".into(),
             });
         };
-        if (sw - jw[k]).hypot() <= 1e-9 * m.size {
+        let group_size = t
+            .leashes
+            .iter()
+            .chain([&t.base])
+            .map(|&l| m.link_scale(l))
+            .fold(0.0, f64::max);
+        if (sw - jw[k]).hypot() <= 1e-9 * group_size {
             return Err(Error::Singular {
                 at: describe_input(m, self.q),
                 why:
