@@ -170,7 +170,6 @@ impl Mechanism {
             .expect("point belongs to link (checked by structure)")
     }
 
-
     /// The size that scales a link's angle into a length (its extent; a
     /// one-point link: the largest of its neighbours'): tolerances and
     /// scalings about a link are relative to it, not to the whole sketch.

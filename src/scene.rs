@@ -164,7 +164,16 @@ pub struct Scene {
     pub length_unit: f64,
     /// Angle unit of the file (rad per unit).
     pub angle_unit: f64,
+    /// The rounding of each listed input value as the file writes it (rad
+    /// or m; one value for the single `input` position, none for `count`):
+    /// a few units of it move the input in the data check, as the data's
+    /// own rounding does (an angle of a million turns in radians is known
+    /// only to about 1e-9 rad).
+    pub input_rounding: Vec<f64>,
 }
+
+/// Unit roundoff of f64: half an ulp, relative.
+const U: f64 = f64::EPSILON / 2.0;
 
 /// Upper limits that keep a hostile file from exhausting the machine.
 pub const MAX_FILE_BYTES: usize = 4 << 20;
@@ -227,6 +236,8 @@ struct Reader {
     issues: Vec<Issue>,
     len: f64,
     ang: f64,
+    /// [`Scene::input_rounding`], as the positions are read.
+    rounding: Vec<f64>,
 }
 
 fn ptr(base: &str, key: &str) -> String {
@@ -391,6 +402,7 @@ impl Reader {
             want: want?,
             length_unit: self.len,
             angle_unit: self.ang,
+            input_rounding: std::mem::take(&mut self.rounding),
         })
     }
 
@@ -403,6 +415,15 @@ impl Reader {
         } else {
             (x % 360.0) * self.ang
         }
+    }
+
+    /// The rounding of an angle written `x` in the file's unit, in rad:
+    /// the decimal's own (half an ulp of what is written: of all its turns
+    /// in radians, of the reduced angle in degrees, whose reduction is
+    /// exact), and the conversion's.
+    fn angle_rounding(&self, x: f64) -> f64 {
+        let written = if self.ang == 1.0 { x } else { x % 360.0 };
+        2.0 * U * written.abs() * self.ang + U * self.angle(x).abs()
     }
 
     fn units(&mut self, v: Option<&Value>) {
@@ -832,6 +853,7 @@ impl Reader {
         if is_slider {
             self.only_keys(o, "/input", &["link", "slider", "s", "v", "a"]);
             let s = opt(self, "s", Some(0.0)).map(|x| x * self.len);
+            self.rounding = s.map(|x| vec![2.0 * U * x.abs()]).unwrap_or_default();
             let vv = opt(self, "v", None).map(|x| x * self.len);
             let a = opt(self, "a", Some(0.0)).map(|x| x * self.len);
             let link = link?;
@@ -872,7 +894,11 @@ impl Reader {
                 None
             }
         };
-        let angle = opt(self, "angle", None).map(|x| self.angle(x));
+        let raw = opt(self, "angle", None);
+        self.rounding = raw
+            .map(|x| vec![self.angle_rounding(x)])
+            .unwrap_or_default();
+        let angle = raw.map(|x| self.angle(x));
         let omega = match (o.get("omega"), o.get("rpm")) {
             (Some(w), None) => self.number(w, "/input/omega"),
             (None, Some(n)) => self
@@ -980,8 +1006,10 @@ impl Reader {
                 );
                 return None;
             }
-            return list(self, "angles", 1.0)
-                .map(|v| PositionsSpec::List(v.into_iter().map(|x| self.angle(x)).collect()));
+            return list(self, "angles", 1.0).map(|v| {
+                self.rounding = v.iter().map(|&x| self.angle_rounding(x)).collect();
+                PositionsSpec::List(v.into_iter().map(|x| self.angle(x)).collect())
+            });
         }
         if o.contains_key("s") {
             if crank {
@@ -991,7 +1019,10 @@ impl Reader {
                 );
                 return None;
             }
-            return list(self, "s", self.len).map(PositionsSpec::List);
+            return list(self, "s", self.len).map(|v| {
+                self.rounding = v.iter().map(|&x| 2.0 * U * x.abs()).collect();
+                PositionsSpec::List(v)
+            });
         }
         let count = match o["count"].as_u64() {
             Some(c) if (1..=MAX_POSITIONS as u64).contains(&c) => c as usize,
@@ -1024,6 +1055,7 @@ impl Reader {
             }
             None => None,
         };
+        self.rounding.clear();
         Some(PositionsSpec::Count { count, output })
     }
 

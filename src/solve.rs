@@ -109,6 +109,8 @@ type ChangedData = Vec<std::result::Result<Analysis, String>>;
 /// A position found in order by both routes, before its rates.
 struct Placed<'a> {
     q: f64,
+    /// The rounding of q as the file writes it (rad or m).
+    q_rounding: f64,
     config: Configuration,
     /// Route (b) at this position (its state continues from the last).
     constraint: ConstraintSolver<'a>,
@@ -398,7 +400,13 @@ impl Analysis {
         let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
         let mut placed = Vec::with_capacity(values.len());
         let mut stop = None;
-        for &q in &values {
+        let rounding = &m.scene.input_rounding;
+        for (k, &q) in values.iter().enumerate() {
+            let q_rounding = if rounding.len() == values.len() {
+                rounding[k]
+            } else {
+                0.0
+            };
             let t0 = Clock::now();
             let config = match ps.solve(q) {
                 Ok(c) => c,
@@ -419,6 +427,7 @@ impl Analysis {
             let constraint_time = t1.elapsed().as_secs_f64();
             placed.push(Placed {
                 q,
+                q_rounding,
                 config,
                 constraint: cs.clone(),
                 contour_time,
@@ -567,7 +576,7 @@ impl Analysis {
             });
         }
         let sens = self
-            .data_sensitivity(&solved, changed)
+            .data_sensitivity(&solved, p.q_rounding, changed)
             .map_err(|why| Error::Singular {
                 at: describe_input(m, q),
                 why,
@@ -593,7 +602,14 @@ impl Analysis {
                 let l = self.carrier(p);
                 if let Some(k) = mo[l] {
                     let at = s.config.point(m, l, p);
-                    x = x.max(if acc { k.acceleration(at) } else { k.velocity(at) }.hypot());
+                    x = x.max(
+                        if acc {
+                            k.acceleration(at)
+                        } else {
+                            k.velocity(at)
+                        }
+                        .hypot(),
+                    );
                 }
             }
             for k in mo.iter().flatten() {
@@ -678,26 +694,30 @@ impl Analysis {
     fn data_sensitivity(
         &self,
         s: &Solved,
+        q_rounding: f64,
         changed: &ChangedData,
     ) -> std::result::Result<f64, String> {
         let order = self.order.unwrap_or(Order::Velocity);
         let units = DATA_PERTURBATION / f64::EPSILON;
         let mut worst = (0.0f64, String::new());
-        for an in changed {
+        for (an, sign) in changed.iter().zip([1.0, -1.0]) {
+            // The input moves with the data, by as many units of its own
+            // rounding (exact reductions leave an ulp of the angle).
+            let q = s.q + sign * units * q_rounding;
             let moved = an
                 .as_ref()
                 .map_err(|e| e.clone())
                 .and_then(|an| {
                     let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())
                         .map_err(|e| e.to_string())?;
-                    let c = ps.solve(s.q).map_err(|e| e.to_string())?;
+                    let c = ps.solve(q).map_err(|e| e.to_string())?;
                     contour::solve(
                         &an.mech,
                         &an.structure,
                         &an.need,
                         &c,
                         Drive {
-                            q: s.q,
+                            q,
                             rate: s.rate,
                             rate2: s.rate2,
                         },
@@ -718,7 +738,7 @@ impl Analysis {
         }
         if worst.0.is_nan() || worst.0 > MAX_REL_DIFF {
             return Err(format!(
-                "the answer is decided by the rounding of the data: a change of {units} units of rounding in the lengths moves {} by {:.2e} (relative); the position is too close to a dead point",
+                "the answer is decided by the rounding of the data: a change of {units} units of rounding in the data moves {} by {:.2e} (relative); the position is too close to a dead point",
                 worst.1, worst.0
             ));
         }

@@ -29,15 +29,6 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// Positions mechplan answers although the exact mechanism has no
-/// well-defined answer there (the extended-precision reference does not
-/// converge): known silently-wrong numbers. The test checks that each
-/// still reproduces, so a fix shows up here. Empty since mechplan measures
-/// the data's sensitivity near dead points (`class3_three_leashes_parallel_1e-9`,
-/// three leashes parallel to 1e-9 rad, was answered with ω4 = 2.9e8 rad/s
-/// decided by rounding alone; it is now refused).
-const KNOWN_UNVERIFIABLE: &[(&str, f64, &str)] = &[];
-
 fn stress_files() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/stress");
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
@@ -371,14 +362,16 @@ fn clear_refusal(msg: &str) -> bool {
     msg.contains("singular position") || msg.contains("cannot be assembled")
 }
 
-/// The outcome of one file through the binary and, position by position,
-/// through the library.
+/// Every file through the binary (`solve --format json`): it never panics;
+/// it answers with valid JSON for every position, or refuses with exit
+/// status 2 and a clear message ("singular position" / "cannot be
+/// assembled"). The numbers are judged against the independent reference
+/// in [`stress_catalogue_against_the_independent_reference`].
 #[test]
-fn stress_catalogue_is_right_or_refused() {
+fn stress_catalogue_through_the_binary() {
     let exe = env!("CARGO_BIN_EXE_mechplan");
     let files = stress_files();
-    assert!(files.len() >= 20, "the stress catalogue is missing");
-    let mut report = String::new();
+    assert!(files.len() >= 60, "the stress catalogue is missing");
     let mut failures = Vec::new();
     for path in &files {
         let name = path.file_stem().unwrap().to_string_lossy().into_owned();
@@ -398,111 +391,23 @@ fn stress_catalogue_is_right_or_refused() {
             !stderr.contains("panicked"),
             "{name}: the binary panicked: {stderr}"
         );
-        // Per position through the library: which positions are refused.
-        let scene = Scene::from_json(&text);
-        let scene = match scene {
-            Ok(s) => s,
-            Err(e) => {
-                // A scene refused by the reader: a clear message naming the field.
-                assert_eq!(out.status.code(), Some(2), "{name}");
-                assert!(stderr.contains("/"), "{name}: {stderr}");
-                report += &format!("{name}: rejected by the reader: {e}\n");
-                continue;
-            }
-        };
-        let an = Analysis::new(scene.clone()).unwrap();
-        let unit = {
-            let mut u = scene.clone();
-            match &mut u.input {
-                InputSpec::Crank { omega, epsilon, .. } => (*omega, *epsilon) = (1.0, 0.0),
-                InputSpec::Slider { v, a, .. } => (*v, *a) = (1.0, 0.0),
-            }
-            Analysis::new(u).unwrap()
-        };
-        let qs = an.input_values().unwrap();
-        let mut per = Vec::new();
-        for &q in &qs {
-            let mut one = scene.clone();
-            one.positions = PositionsSpec::List(vec![q]);
-            let a1 = Analysis::new(one).unwrap();
-            per.push(match a1.run() {
-                Ok(_) => "ok".to_string(),
-                Err(e) => {
-                    let msg = e.to_string();
-                    if !clear_refusal(&msg) {
-                        failures.push(format!("{name} at q = {q}: unclear refusal: {msg}"));
-                    }
-                    if msg.contains("singular") {
-                        "singular".into()
-                    } else {
-                        "no assembly".into()
-                    }
-                }
-            });
-        }
-        if !out.status.success() {
+        if out.status.success() {
+            let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+            let an = Analysis::new(Scene::from_json(&text).unwrap()).unwrap();
+            assert_eq!(
+                doc["positions"].as_array().unwrap().len(),
+                an.input_values().unwrap().len(),
+                "{name}"
+            );
+        } else {
             let msg = stderr.trim().to_string();
             assert_eq!(out.status.code(), Some(2), "{name}: {msg}");
-            if !clear_refusal(&msg) {
+            let reader = Scene::from_json(&text).is_err();
+            if !(clear_refusal(&msg) || reader && msg.contains('/')) {
                 failures.push(format!("{name}: unclear refusal: {msg}"));
             }
-            report += &format!(
-                "{name}: refused ({}) [{}]\n",
-                first_line(&msg),
-                per.join(", ")
-            );
-            continue;
         }
-        let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
-        let positions = doc["positions"].as_array().unwrap();
-        assert_eq!(positions.len(), qs.len(), "{name}");
-        let mut worst = (0.0f64, String::new());
-        let mut compared = 0;
-        let mut hows = std::collections::BTreeSet::new();
-        for (pos, &q) in positions.iter().zip(&qs) {
-            let known = KNOWN_UNVERIFIABLE.iter().find(|k| k.0 == name && k.1 == q);
-            let Some((r, how)) = reference(&an, &unit, q) else {
-                match known {
-                    Some(k) => {
-                        report += &format!("{name} at q = {q}: KNOWN BUG, unverifiable: {}\n", k.2)
-                    }
-                    None => {
-                        let why = mechplan::reference::solve(&an, q).err();
-                        failures.push(format!("{name} at q = {q}: no reference ({why:?})"));
-                    }
-                }
-                continue;
-            };
-            if known.is_some() {
-                failures.push(format!(
-                    "{name} at q = {q}: has a reference now: remove it from KNOWN_UNVERIFIABLE"
-                ));
-            }
-            hows.insert(how);
-            for it in items(&an, pos, &r) {
-                compared += 1;
-                let d = (it.got - it.want).abs();
-                let ratio = d / it.allowed;
-                if d > it.allowed || d.is_nan() {
-                    failures.push(format!(
-                        "{name} at q = {q:.17}: {}: reported {:e}, reference {:e}, difference {d:.3e} > allowed {:.3e}",
-                        it.what, it.got, it.want, it.allowed
-                    ));
-                }
-                if ratio > worst.0 || ratio.is_nan() {
-                    worst = (ratio, it.what);
-                }
-            }
-        }
-        report += &format!(
-            "{name}: solved, {} positions, {compared} numbers against {hows:?}, worst difference/allowed {:.2e} ({}) [{}]\n",
-            positions.len(),
-            worst.0,
-            worst.1,
-            per.join(", ")
-        );
     }
-    eprintln!("{report}");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
@@ -745,4 +650,251 @@ proptest! {
         };
         bound_covers_error(&format!("random {} {dims:?} φ = {phi} branch {branch} ω = {w:e} ε = {e:e}", if slider { "slider-crank" } else { "four-bar" }), scene)?;
     }
+}
+
+/// One position of the independent reference (`tests/reference/mpref.py`,
+/// 50 digits, written from the scene contract alone): its status, values
+/// in the order of [`Reference`], and how far the data's own rounding (half
+/// an ulp of every datum) moves the exact answer, relative to the kind's
+/// scale.
+struct Independent {
+    assembles: bool,
+    reference: Option<Reference>,
+    sensitivity: f64,
+}
+
+fn independent(an: &Analysis, pos: &Value) -> Independent {
+    let m = &an.mech;
+    let f = |v: &Value| -> f64 {
+        v.as_str()
+            .map(|s| s.parse().unwrap())
+            .unwrap_or_else(|| v.as_f64().unwrap())
+    };
+    let sensitivity = pos["sensitivity"]["max"]
+        .as_str()
+        .map(|s| s.parse::<f64>().unwrap_or(f64::INFINITY))
+        .unwrap_or(f64::INFINITY);
+    if pos["status"] != "ok" {
+        return Independent {
+            assembles: false,
+            reference: None,
+            sensitivity,
+        };
+    }
+    let mut out: [Vec<f64>; 5] = Default::default();
+    for &p in &an.points {
+        let rp = &pos["points"][m.point_name(p)];
+        for (k, key) in ["p", "v", "a", "v_q", "a_q"].iter().enumerate() {
+            out[k].extend([f(&rp[key][0]), f(&rp[key][1])]);
+        }
+    }
+    for l in (0..m.links.len()).filter(|&l| an.include[l]) {
+        let rl = &pos["links"][m.link_id(l)];
+        for (k, key) in ["angle", "omega", "epsilon", "phi_q", "phi_qq"]
+            .iter()
+            .enumerate()
+        {
+            out[k].push(f(&rl[key]));
+        }
+    }
+    // 25 correct digits, rounded to f64 once: an ulp or two.
+    let ulps = |v: &[f64]| v.iter().map(|y| 2.0 * f64::EPSILON * y.abs()).collect();
+    let [x, v, a, d1, d2] = out;
+    Independent {
+        assembles: true,
+        reference: Some(Reference {
+            ev: ulps(&v),
+            ea: ulps(&a),
+            e1: ulps(&d1),
+            e2: ulps(&d2),
+            x,
+            v,
+            a,
+            d1,
+            d2,
+        }),
+        sensitivity,
+    }
+}
+
+/// The refusal threshold of the issue: a position whose exact answer the
+/// data's rounding moves by less than this must be answered.
+const DETERMINED: f64 = 1e-10;
+
+/// The stiff catalogue against the independent reference
+/// (`fixtures/stress/reference/NAME.json`, made by
+/// `tests/reference/make.sh` from each scene's exact decimals): every
+/// position mechplan answers is within its printed bound of the reference,
+/// every position it refuses is one the data's rounding moves by 1e-10 or
+/// more (or that does not assemble), and every position that does not
+/// assemble is refused. Position k is solved as the file reaches it: from
+/// the sketch through the positions before it that mechplan answers.
+/// The counts are the table in docs/precision.md (UPDATE_GOLDEN=1 rewrites
+/// it).
+#[test]
+fn stress_catalogue_against_the_independent_reference() {
+    use sha2::{Digest, Sha256};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut failures = Vec::new();
+    let mut rows = Vec::new();
+    let mut total = [0usize; 5];
+    for path in stress_files() {
+        let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        let bytes = std::fs::read(&path).unwrap();
+        let refpath = root.join(format!("fixtures/stress/reference/{name}.json"));
+        let Ok(reftext) = std::fs::read_to_string(&refpath) else {
+            failures.push(format!("{name}: no reference; run tests/reference/make.sh"));
+            continue;
+        };
+        let refdoc: Value = serde_json::from_str(&reftext).unwrap();
+        let sha: String = Sha256::digest(&bytes)
+            .iter()
+            .map(|b| format!("{b:02x}"))
+            .collect();
+        if refdoc["scene_sha256"] != sha.as_str() {
+            failures.push(format!(
+                "{name}: the reference is stale (the scene changed); run tests/reference/make.sh"
+            ));
+            continue;
+        }
+        let text = String::from_utf8(bytes).unwrap();
+        let built = Scene::from_json(&text).and_then(|s| Analysis::new(s.clone()).map(|a| (s, a)));
+        if let Some(why) = refdoc["rejected"].as_str() {
+            match built {
+                Err(e) => rows.push(format!(
+                    "| {name} | rejected: {} | | | | |",
+                    first_line(&e.to_string())
+                )),
+                Ok(_) => failures.push(format!(
+                    "{name}: the reference rejects the scene ({why}) but mechplan builds it"
+                )),
+            }
+            continue;
+        }
+        let (scene, an) = match built {
+            Ok(x) => x,
+            Err(e) => {
+                failures.push(format!(
+                    "{name}: mechplan rejects a scene the reference builds: {e}"
+                ));
+                continue;
+            }
+        };
+        let qs = an.input_values().unwrap();
+        let refs = refdoc["positions"].as_array().unwrap();
+        assert_eq!(refs.len(), qs.len(), "{name}: positions");
+        // Counts: answered within the bound, refused rightly, refused
+        // wrongly, answered outside the bound or where nothing assembles.
+        let mut c = [0usize; 5];
+        let mut worst = 0.0f64;
+        let mut accepted: Vec<usize> = Vec::new();
+        let rounding = &scene.input_rounding;
+        for (k, &q) in qs.iter().enumerate() {
+            let ind = independent(&an, &refs[k]);
+            let mut one = scene.clone();
+            let path: Vec<usize> = accepted.iter().copied().chain([k]).collect();
+            one.positions = PositionsSpec::List(path.iter().map(|&i| qs[i]).collect());
+            if rounding.len() == qs.len() {
+                one.input_rounding = path.iter().map(|&i| rounding[i]).collect();
+            }
+            let a1 = Analysis::new(one).unwrap();
+            let last = path.len() - 1;
+            match a1.run() {
+                Ok(solved) => {
+                    accepted.push(k);
+                    let Some(r) = ind.reference else {
+                        c[4] += 1;
+                        failures.push(format!(
+                            "{name} position {}: mechplan answers where the mechanism does not assemble",
+                            k + 1
+                        ));
+                        continue;
+                    };
+                    let doc = mechplan::report::to_json(&a1, &solved);
+                    let mut outside = false;
+                    for it in items(&a1, &doc["positions"][last], &r) {
+                        let d = (it.got - it.want).abs();
+                        worst = worst.max(d / it.allowed);
+                        if d > it.allowed || d.is_nan() {
+                            outside = true;
+                            failures.push(format!(
+                                "{name} position {} (q = {q:e}): {}: reported {:e}, reference {:e}, difference {d:.3e} > bound {:.3e}",
+                                k + 1,
+                                it.what,
+                                it.got,
+                                it.want,
+                                it.allowed
+                            ));
+                        }
+                    }
+                    c[if outside { 4 } else { 0 }] += 1;
+                }
+                Err(e) => {
+                    let msg = e.to_string();
+                    if !clear_refusal(&msg) {
+                        failures.push(format!("{name} position {}: unclear refusal: {msg}", k + 1));
+                    }
+                    if ind.assembles && ind.sensitivity < DETERMINED {
+                        c[2] += 1;
+                        failures.push(format!(
+                            "{name} position {} (q = {q:e}): refused although the data's rounding moves the answer by only {:.1e}: {msg}",
+                            k + 1,
+                            ind.sensitivity
+                        ));
+                    } else {
+                        c[1] += 1;
+                    }
+                }
+            }
+        }
+        for i in 0..5 {
+            total[i] += c[i];
+        }
+        rows.push(format!(
+            "| {name} | {} | {} | {} | {} | {} |",
+            qs.len(),
+            c[0],
+            c[1],
+            c[2] + c[4],
+            if c[0] > 0 {
+                format!("{worst:.1e}")
+            } else {
+                String::new()
+            }
+        ));
+    }
+    let table = format!(
+        "| scene | positions | within the bound | refused (rounding decides, or no assembly) | wrong (false refusal or outside the bound) | worst error / bound |\n|---|---|---|---|---|---|\n{}\n| **all** | {} | {} | {} | {} | |\n",
+        rows.join("\n"),
+        total.iter().sum::<usize>(),
+        total[0],
+        total[1],
+        total[2] + total[4],
+    );
+    let doc_path = root.join("docs/precision.md");
+    let doc = std::fs::read_to_string(&doc_path).unwrap();
+    let (begin, end) = (
+        "<!-- stiff catalogue: begin -->\n",
+        "<!-- stiff catalogue: end -->",
+    );
+    let block = |d: &str| -> Option<(usize, usize)> {
+        let a = d.find(begin)? + begin.len();
+        Some((a, a + d[a..].find(end)?))
+    };
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        let new = match block(&doc) {
+            Some((a, b)) => format!("{}{table}{}", &doc[..a], &doc[b..]),
+            None => format!("{doc}\n{begin}{table}{end}\n"),
+        };
+        std::fs::write(&doc_path, new).unwrap();
+    } else {
+        match block(&doc) {
+            Some((a, b)) if doc[a..b] == table => {}
+            _ => failures.push(format!(
+                "docs/precision.md does not show the current counts (UPDATE_GOLDEN=1 rewrites them):\n{table}"
+            )),
+        }
+    }
+    eprintln!("{table}");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

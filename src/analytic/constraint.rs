@@ -553,7 +553,11 @@ impl<'a> ConstraintSolver<'a> {
             return Err("the constraint Jacobian is singular at the start of the path".into());
         };
         while (end - x) * dir > 0.0 {
-            let to = if (end - x).abs() <= h { end } else { x + dir * h };
+            let to = if (end - x).abs() <= h {
+                end
+            } else {
+                x + dir * h
+            };
             let dx = to - x;
             let saved = self.q.clone();
             // Predictor along the tangent, then Newton's corrector.

@@ -956,7 +956,8 @@ impl<'a> Builder<'a> {
         let local_k = self.local(known, x);
         let (tol_u, tol_k) = (self.same_point(unknown, x), self.same_point(known, x));
         let find = |l: usize, loc: Vec2, tol: f64| vel.known_at(l, loc, tol);
-        let (Some(iu), Some(ik)) = (find(unknown, local_u, tol_u), find(known, local_k, tol_k)) else {
+        let (Some(iu), Some(ik)) = (find(unknown, local_u, tol_u), find(known, local_k, tol_k))
+        else {
             unreachable!("the velocity plan has both coincident points");
         };
         let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
