@@ -360,13 +360,20 @@ impl<'a> PositionSolver<'a> {
             }
             let sign = self.branches.sign[gi];
             match &self.s.groups[gi] {
-                AssurGroup::Dyad(d) => {
-                    solve_dyad(m, d, sign, &mut c).map_err(|why| Error::Assembly {
-                        group: format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name()),
-                        at: describe_input(m, q),
-                        why,
-                    })?
-                }
+                AssurGroup::Dyad(d) => solve_dyad(m, d, sign, &mut c).map_err(|why| {
+                    let group = format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name());
+                    match why.strip_prefix(SINGULAR) {
+                        Some(why) => Error::Singular {
+                            at: describe_input(m, q),
+                            why: format!("{group}: {why}"),
+                        },
+                        None => Error::Assembly {
+                            group,
+                            at: describe_input(m, q),
+                            why,
+                        },
+                    }
+                })?,
                 AssurGroup::Triad(t) => {
                     let pose =
                         solve_triad(m, t, self.branches.triad_pose[gi], &mut c).map_err(|why| {
@@ -387,6 +394,10 @@ impl<'a> PositionSolver<'a> {
 fn known_point(m: &Mechanism, c: &Configuration, conn: &Conn, known_side: usize) -> Point {
     c.point(m, known_side, point_of(conn.joint))
 }
+
+/// The mark of a dyad's failure that is a singular position, not a
+/// failure to assemble.
+const SINGULAR: &str = "singular: ";
 
 fn solve_dyad(
     m: &Mechanism,
@@ -464,6 +475,15 @@ fn solve_dyad(
             let dist = w.hypot();
             let s = rg.h / dist;
             let tol = rounding(rg.h.abs(), &[jg, js]);
+            if dist <= tol && rg.h.abs() <= tol {
+                // The pin on the guide's pivot: any direction through it is
+                // a guide line; the position is singular, not impossible.
+                return Err(format!(
+                    "{SINGULAR}{} is on {} (the guide through it), so the guide's direction is not determined",
+                    m.point_name(rg.pin_slider),
+                    m.point_name(rg.pin_guide)
+                ));
+            }
             if !s.is_finite() || rg.h.abs() - dist > tol || dist <= tol {
                 return Err(format!(
                     "the guide passes {} from {} but {} is only {} away",
