@@ -328,6 +328,32 @@ pub struct Variant {
     pub jitter: Option<u64>,
 }
 
+/// How a point of a link is placed ([`Builder::best_construction`]).
+#[derive(Clone, Copy, Debug)]
+enum Construction {
+    /// The figure similar to the link's on known points `a`, `b` (indices
+    /// in the list of the link's known points), the new point at
+    /// a + ρ·(b − a) with the complex ratio ρ.
+    Figure {
+        a: usize,
+        b: usize,
+        ratio: Vec2,
+        err: FigureErr,
+    },
+    /// From known point `a` by the relative vector of the link's rates.
+    Relation { a: usize },
+}
+
+/// The way a similar figure is drawn, and the new point's error radius.
+#[derive(Clone, Copy, Debug)]
+enum FigureErr {
+    /// Proportional division of the segment (the point on or a hair off
+    /// the line of the two).
+    Divide(f64),
+    /// Two arcs meeting at an angle of sine `.1`.
+    Arcs(f64, f64),
+}
+
 /// A prismatic pair seen from a group: the link being found, the known
 /// link it slides on (or that slides on it), and which of them is the guide.
 #[derive(Clone, Copy)]
@@ -690,22 +716,13 @@ impl<'a> Builder<'a> {
             return i;
         }
         let m = self.m();
-        // What the plan knows of the link: its first known point, and the
-        // pair of known points farthest apart on it.
-        let on_link = |k: &&Known| k.link == link;
-        let body = &self.plan.body;
-        let first = body.iter().find(on_link).map(|k| (k.local, k.point));
-        let mut far = None;
-        let mut best = -1.0;
-        for (i, a) in body.iter().enumerate().filter(|(_, k)| k.link == link) {
-            for b in body[i + 1..].iter().filter(on_link) {
-                let d = (a.local - b.local).hypot();
-                if d > best {
-                    best = d;
-                    far = Some(((a.local, a.point), (b.local, b.point)));
-                }
-            }
-        }
+        let known: Vec<(Vec2, usize)> = self
+            .plan
+            .body
+            .iter()
+            .filter(|k| k.link == link)
+            .map(|k| (k.local, k.point))
+            .collect();
         if link == m.frame() {
             let out = self.add_point(key, label, Vec2::ZERO, 0.0);
             self.step(Op::Coincide {
@@ -717,7 +734,7 @@ impl<'a> Builder<'a> {
             return out;
         }
         let local = self.local(link, x);
-        if let (true, Some((_, with))) = (self.nr[link], first) {
+        if let (true, Some(&(_, with))) = (self.nr[link], known.first()) {
             // A translating link: all its points share one plan point.
             let out = self.add_point(
                 key,
@@ -730,7 +747,10 @@ impl<'a> Builder<'a> {
             self.register(link, x, out);
             return out;
         }
-        let first = first.expect("a link is constructed only after one of its points");
+        assert!(
+            !known.is_empty(),
+            "a link is constructed only after one of its points"
+        );
         let names = |b: &Builder, (l, idx): (Vec2, usize)| -> String {
             // The mechanism's name for a known point of this link: its own
             // point there, else the name of the coincident plan point (B3).
@@ -745,102 +765,202 @@ impl<'a> Builder<'a> {
                 .map(|&p| m.point_name(p).to_string())
                 .unwrap_or_else(|| b.plan.points[idx].figure.clone())
         };
-        if let Some((ka, kb)) = far {
-            let ((la, pa), (lb, pb)) = (ka, kb);
-            let ab = lb - la;
-            let mut ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
-            if ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
-                ratio.y = -ratio.y;
-            }
-            let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
-            let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
-            let fig = [names(self, ka), names(self, kb), figure_name];
-            let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
-            if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
-                let err = ea.max(eb) + self.plan.delta;
-                let out = self.add_point(key, label, at, err);
-                self.step(Op::Divide {
-                    a: pa,
-                    b: pb,
-                    out,
-                    figure: fig,
-                    ratio: ratio.x,
-                });
-                self.register(link, x, out);
-                out
-            } else {
-                // Two arcs from a and b; their angle at the new point.
-                let (ca, cb) = (at - a_at, at - b_at);
-                let s = if ca.hypot() * cb.hypot() > 0.0 {
-                    (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
-                } else {
-                    1.0
+        match self.best_construction(link, local, x, &known) {
+            Construction::Figure { a, b, ratio, err } => {
+                let ((la, pa), (lb, pb)) = (known[a], known[b]);
+                let mut ratio = ratio;
+                let collinear = matches!(err, FigureErr::Divide(_));
+                if !collinear && ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
+                    ratio.y = -ratio.y;
+                }
+                let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
+                let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
+                let fig = [names(self, (la, pa)), names(self, (lb, pb)), figure_name];
+                let (e, op_is_divide, s) = match err {
+                    FigureErr::Divide(e) => (e, true, 1.0),
+                    FigureErr::Arcs(e, s) => (e, false, s),
                 };
-                let err = (ea + self.plan.delta).hypot(eb + self.plan.delta) / s.max(1e-300);
-                let out = self.add_point(key, label, at, err);
-                if s < 1.0 {
-                    self.plan.worst_sin = self.plan.worst_sin.min(s.max(0.0));
+                let out = self.add_point(key, label, at, e);
+                if op_is_divide {
+                    self.step(Op::Divide {
+                        a: pa,
+                        b: pb,
+                        out,
+                        figure: fig,
+                        ratio: ratio.x,
+                    });
+                } else {
+                    if s < 1.0 {
+                        self.plan.worst_sin = self.plan.worst_sin.min(s.max(0.0));
+                    }
+                    let link_id = self.link(link);
+                    self.step(Op::Similar {
+                        a: pa,
+                        b: pb,
+                        out,
+                        figure: fig,
+                        link: link_id,
+                    });
                 }
-                let link_id = self.link(link);
-                self.step(Op::Similar {
-                    a: pa,
-                    b: pb,
-                    out,
-                    figure: fig,
-                    link: link_id,
-                });
                 self.register(link, x, out);
                 out
             }
-        } else {
-            // One known point A and the link's rates: v_X = v_A + ω×AX,
-            // a_X = a_A + ε×AX − ω²·AX.
-            let (la, pa) = first;
-            let a_world = self.c.pose(link).apply(la);
-            let r = x - a_world;
-            let an = names(self, first);
-            let w = self.omega(link);
-            let seg = txt!(self, "{}{}", an, figure_name);
-            if self.vel_kind() {
-                let werr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
-                let out = self.lay_off(
-                    pa,
-                    perp(r) * w,
-                    txt!(self, "ω{}·l_{seg}", self.link(link)),
-                    Dir::PerpSense(seg.clone(), txt!(self, "ω{}", self.link(link))),
-                    (key, label),
-                    werr * r.hypot(),
-                );
-                self.register(link, x, out);
-                out
-            } else {
-                let eps = self.plan.rates[link].map(|r| r.0).unwrap_or(0.0);
-                let eerr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
-                let n_key = txt!(self, "n_{}", self.link(link));
-                let mut from = pa;
-                if w != 0.0 {
-                    from = self.lay_off(
+            Construction::Relation { a } => {
+                // One known point A and the link's rates: v_X = v_A + ω×AX,
+                // a_X = a_A + ε×AX − ω²·AX.
+                let (la, pa) = known[a];
+                let a_world = self.c.pose(link).apply(la);
+                let r = x - a_world;
+                let an = names(self, known[a]);
+                let w = self.omega(link);
+                let seg = txt!(self, "{}{}", an, figure_name);
+                if self.vel_kind() {
+                    let werr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
+                    let out = self.lay_off(
                         pa,
-                        -r * (w * w),
-                        txt!(self, "ω{}²·l_{seg}", self.link(link)),
-                        Dir::Toward(figure_name.clone(), an.clone()),
-                        (n_key, (txt!(self, "n"), self.link(link))),
-                        2.0 * w.abs() * self.omega_err(link) * r.hypot(),
+                        perp(r) * w,
+                        txt!(self, "ω{}·l_{seg}", self.link(link)),
+                        Dir::PerpSense(seg.clone(), txt!(self, "ω{}", self.link(link))),
+                        (key, label),
+                        werr * r.hypot(),
                     );
-                    self.note_normal(link, from);
+                    self.register(link, x, out);
+                    out
+                } else {
+                    let eps = self.plan.rates[link].map(|r| r.0).unwrap_or(0.0);
+                    let eerr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
+                    let n_key = txt!(self, "n_{}", self.link(link));
+                    let mut from = pa;
+                    if w != 0.0 {
+                        from = self.lay_off(
+                            pa,
+                            -r * (w * w),
+                            txt!(self, "ω{}²·l_{seg}", self.link(link)),
+                            Dir::Toward(figure_name.clone(), an.clone()),
+                            (n_key, (txt!(self, "n"), self.link(link))),
+                            2.0 * w.abs() * self.omega_err(link) * r.hypot(),
+                        );
+                        self.note_normal(link, from);
+                    }
+                    let out = self.lay_off(
+                        from,
+                        perp(r) * eps,
+                        txt!(self, "ε{}·l_{seg}", self.link(link)),
+                        Dir::PerpSense(seg, txt!(self, "ε{}", self.link(link))),
+                        (key, label),
+                        eerr * r.hypot(),
+                    );
+                    self.register(link, x, out);
+                    out
                 }
-                let out = self.lay_off(
-                    from,
-                    perp(r) * eps,
-                    txt!(self, "ε{}·l_{seg}", self.link(link)),
-                    Dir::PerpSense(seg, txt!(self, "ε{}", self.link(link))),
-                    (key, label),
-                    eerr * r.hypot(),
-                );
-                self.register(link, x, out);
-                out
             }
         }
+    }
+
+    /// The best-conditioned way a careful draftsman places the material
+    /// point of `link` at `local` (world `x`) from what the plan knows of
+    /// the link (`known`: local place and plan point): the similar figure
+    /// on any pair of its known points — by proportional division when the
+    /// point is (nearly) on their line, by two arcs otherwise — or, from
+    /// one known point, the relative vector of the link's measured rates.
+    /// Each way's first-order error radius: the similar figure moves with
+    /// its base as a + ρ·(b − a) does (|1 − ρ|·e_a + |ρ|·e_b: an extension
+    /// beyond b grows it by its ratio), plus the pencil's δ for a division
+    /// and the point's offset from the line the division ignores, or √2·δ
+    /// over the sine of the arcs' angle; the relative vector adds δ per
+    /// vector laid off and the rate's error times the distance. The least
+    /// wins, so a point a hair off a rod is divided, not found by two
+    /// nearly tangent arcs.
+    fn best_construction(
+        &self,
+        link: usize,
+        local: Vec2,
+        x: Point,
+        known: &[(Vec2, usize)],
+    ) -> Construction {
+        let delta = self.plan.delta;
+        let mu = self.plan.mu;
+        let pts = &self.plan.points;
+        let mut best: Option<(f64, Construction)> = None;
+        let consider = |e: f64, c: Construction, best: &mut Option<(f64, Construction)>| {
+            if best.as_ref().is_none_or(|b| e < b.0) {
+                *best = Some((e, c));
+            }
+        };
+        for a in 0..known.len() {
+            for b in a + 1..known.len() {
+                let ((la, pa), (lb, pb)) = (known[a], known[b]);
+                let ab = lb - la;
+                if ab.hypot2() == 0.0 {
+                    continue;
+                }
+                let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+                let (ea, eb) = (pts[pa].err, pts[pb].err);
+                let moved = (Vec2::new(1.0, 0.0) - ratio).hypot() * ea + ratio.hypot() * eb;
+                let (a_at, b_at) = (pts[pa].at, pts[pb].at);
+                let plan_ab = (b_at - a_at).hypot();
+                // Division: the offset from the line is not drawn.
+                let divide = moved + delta + ratio.y.abs() * plan_ab;
+                let by_division = Construction::Figure {
+                    a,
+                    b,
+                    ratio,
+                    err: FigureErr::Divide(divide),
+                };
+                if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
+                    consider(divide, by_division, &mut best);
+                } else {
+                    // Two arcs from a and b, meeting at the angle of the
+                    // figure's sides at the new point.
+                    let at = a_at + (b_at - a_at).rotate_scale(ratio);
+                    let (ca, cb) = (at - a_at, at - b_at);
+                    let s = if ca.hypot() * cb.hypot() > 0.0 {
+                        (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
+                    } else {
+                        1.0
+                    };
+                    let arcs = moved + std::f64::consts::SQRT_2 * delta / s.max(1e-300);
+                    // A triangle is drawn by arcs (the lecture's way); a
+                    // point a hair off the line by division, where the
+                    // arcs would meet at too small an angle.
+                    if 2.0 * divide < arcs {
+                        consider(divide, by_division, &mut best);
+                    } else {
+                        consider(
+                            arcs,
+                            Construction::Figure {
+                                a,
+                                b,
+                                ratio,
+                                err: FigureErr::Arcs(arcs, s),
+                            },
+                            &mut best,
+                        );
+                    }
+                }
+            }
+        }
+        if let Some((rate, rate_err)) = self.plan.rates[link] {
+            for (a, &(la, pa)) in known.iter().enumerate() {
+                let r = (x - self.c.pose(link).apply(la)).hypot();
+                let e = if self.vel_kind() {
+                    pts[pa].err + delta + rate_err * r / mu
+                } else {
+                    let w = self.omega(link);
+                    let normal = if w != 0.0 {
+                        delta + 2.0 * w.abs() * self.omega_err(link) * r / mu
+                    } else {
+                        0.0
+                    };
+                    pts[pa].err + normal + delta + rate_err * r / mu
+                };
+                let _ = rate;
+                // The similar figure is the lecture's way: the relative
+                // vector takes over only where it is clearly better.
+                consider(e * 2.0, Construction::Relation { a }, &mut best);
+            }
+        }
+        best.map(|b| b.1).unwrap_or(Construction::Relation { a: 0 })
     }
 
     /// The named point `p` carried by `link` (registering it on every link
