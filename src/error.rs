@@ -1,6 +1,7 @@
 //! Errors. User errors (a bad scene, a mechanism that cannot be assembled or
 //! is singular) carry enough context to fix the input; they map to exit
-//! status 2 in the binary.
+//! status 2 in the binary. A result that could not be written
+//! ([`Error::Write`]) maps to exit status 3.
 
 use std::fmt;
 
@@ -23,9 +24,16 @@ impl fmt::Display for Issue {
 
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// The file could not be read or written.
+    /// An input file could not be read.
     #[error("{path}: {source}")]
     Io {
+        path: String,
+        source: std::io::Error,
+    },
+    /// A result could not be written (a full disk, a file-size limit, a
+    /// closed pipe): `path` is the file or "standard output".
+    #[error("cannot write {path}: {source}")]
+    Write {
         path: String,
         source: std::io::Error,
     },

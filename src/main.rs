@@ -3,6 +3,7 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use mechplan::construction::text::Lang;
 use mechplan::drawing::{self, DrawOptions, SheetSize};
+use mechplan::output::stdout;
 use mechplan::{Analysis, Error, Scene, report};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -37,7 +38,7 @@ enum Command {
         #[arg(long)]
         lang: Option<String>,
     },
-    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input.
+    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input, 3 output not written.
     Check {
         /// The scene file.
         scene: PathBuf,
@@ -347,14 +348,23 @@ fn main() -> ExitCode {
     finish(result)
 }
 
-/// Exit status: 0 done (or all right), 1 a checked answer has wrong items, 2 bad input.
+/// Exit status: 0 done (or all right), 1 a checked answer has wrong items,
+/// 2 bad input, 3 a result could not be written.
 fn finish(result: Result<bool, Error>) -> ExitCode {
     match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
         Err(e) => {
-            eprintln!("mechplan: {}", e.to_string().replace('\n', "\nmechplan: "));
-            ExitCode::from(2)
+            // Standard error may fail too; the status still tells.
+            let _ = writeln!(
+                std::io::stderr(),
+                "mechplan: {}",
+                e.to_string().replace('\n', "\nmechplan: ")
+            );
+            ExitCode::from(match e {
+                Error::Write { .. } => 3,
+                _ => 2,
+            })
         }
     }
 }
@@ -443,7 +453,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
     if let Some(out) = &a.svg {
         mechplan::write_atomically(out, check::overlay(&analysis, &ans, &report).as_bytes())?;
     }
-    let _ = std::io::stdout().write_all(text.as_bytes());
+    stdout(&text)?;
     Ok(report.wrong() == 0)
 }
 
@@ -499,8 +509,7 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
     let solved = analysis.run()?;
     if a.html {
         let path = drawing::html::write_handout(&analysis, &solved, lang, &a.dir)?;
-        println!("wrote {}", path.display());
-        return Ok(());
+        return stdout(&format!("wrote {}\n", path.display()));
     }
     let opt = DrawOptions {
         sheet,
@@ -523,10 +532,15 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         ));
     }
     let written = drawing::write_sheets(&sheets, &a.dir, format, a.dpi)?;
-    for p in written {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&written))
+}
+
+/// "wrote PATH" lines for the files written.
+fn wrote(paths: &[PathBuf]) -> String {
+    paths
+        .iter()
+        .map(|p| format!("wrote {}\n", p.display()))
+        .collect()
 }
 
 fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
@@ -564,38 +578,10 @@ fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
             }
         }
     };
-    let output = opt.output.as_deref();
-    match output {
-        None => {
-            let _ = std::io::stdout().write_all(text.as_bytes());
-            Ok(())
-        }
-        Some(path) => write_atomically(path, text.as_bytes()),
+    match opt.output.as_deref() {
+        None => stdout(&text),
+        Some(path) => mechplan::write_atomically(path, text.as_bytes()),
     }
-}
-
-/// Write to a temporary file beside `path`, then rename: never half a file.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let io = |source| Error::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        path.file_name()
-            .map(|f| f.to_string_lossy())
-            .unwrap_or_default(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io(e)
-    })
 }
 
 /// `mechplan precision`: the work-precision table (and plot with -o).
@@ -629,29 +615,27 @@ fn precision(
     let report = precision::run(&analysis, &settings)?;
     let table = precision::to_markdown(&report);
     let Some(dir) = dir else {
-        let _ = std::io::stdout().write_all(table.as_bytes());
-        return Ok(());
+        return stdout(&table);
     };
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| mechplan::output::write_error(&dir.display().to_string(), e))?;
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "scene".into());
     let svg = precision::to_svg(&report, &format!("{stem}: error against run time"));
     let png = mechplan::drawing::png(&svg, 150.0)?;
-    for (ext, bytes) in [
+    let files: Vec<(PathBuf, &[u8])> = [
         ("md", table.as_bytes()),
         ("svg", svg.as_bytes()),
         ("png", png.as_slice()),
-    ] {
-        let path = dir.join(format!("{stem}.{ext}"));
-        mechplan::write_atomically(&path, bytes)?;
-        println!("wrote {}", path.display());
-    }
-    Ok(())
+    ]
+    .into_iter()
+    .map(|(ext, bytes)| (dir.join(format!("{stem}.{ext}")), bytes))
+    .collect();
+    mechplan::output::write_files_atomically(&files)?;
+    let paths: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
+    stdout(&wrote(&paths))
 }
 
 /// `mechplan centres`: the instant centres of every position (or one).
@@ -683,8 +667,7 @@ fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), 
             t
         }
     };
-    let _ = std::io::stdout().write_all(out.as_bytes());
-    Ok(())
+    stdout(&out)
 }
 
 /// `mechplan invariants`: the phases of an output and their peak constants.
@@ -739,8 +722,7 @@ fn invariants(
             t
         }
     };
-    let _ = std::io::stdout().write_all(text.as_bytes());
-    Ok(())
+    stdout(&text)
 }
 
 /// `mechplan frenet`: the families of link positions of paper 001.
@@ -754,10 +736,7 @@ fn frenet(dir: &Path, format: DrawFormat, count: usize) -> Result<(), Error> {
         DrawFormat::Png => drawing::Format::Png,
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
-    for p in drawing::write_sheets(&sheets, dir, format, 150.0)? {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&drawing::write_sheets(&sheets, dir, format, 150.0)?))
 }
 
 /// `mechplan diagram`: the kinematic diagrams of an output, as a table or a sheet.
@@ -796,8 +775,7 @@ fn diagram(
         None => Diagrams::build(&analysis, out, n, drawing::diagram::LENGTH)?,
     };
     let Some(dir) = dir else {
-        let _ = std::io::stdout().write_all(mechplan::diagrams::to_table(&analysis, &d).as_bytes());
-        return Ok(());
+        return stdout(&mechplan::diagrams::to_table(&analysis, &d));
     };
     let sheet = drawing::diagram::sheet(&analysis, &d, &DrawOptions::default());
     let format = match format {
@@ -805,8 +783,10 @@ fn diagram(
         DrawFormat::Png => drawing::Format::Png,
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
-    for p in drawing::write_sheets(&[sheet], dir, format, 150.0)? {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&drawing::write_sheets(
+        &[sheet],
+        dir,
+        format,
+        150.0,
+    )?))
 }

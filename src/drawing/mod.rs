@@ -453,18 +453,19 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
     .map_err(|e| Error::Structure(format!("PDF conversion failed: {e}")))
 }
 
-/// Write every sheet into `dir` in `format`, each file atomically
-/// (a temporary file renamed into place). Returns the paths written.
+/// Write every sheet into `dir` in `format`, all or nothing: every sheet is
+/// rendered, then written to a temporary file beside its place, and only
+/// when all are written are they renamed into place; a failure removes
+/// every temporary of this run ([`crate::output::write_files_atomically`]).
+/// Returns the paths written.
 pub fn write_sheets(
     sheets: &[Sheet],
     dir: &Path,
     format: Format,
     dpi: f64,
 ) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
     // Render everything first, so that a failure writes nothing.
     let mut files = Vec::new();
     for s in sheets {
@@ -475,10 +476,7 @@ pub fn write_sheets(
         };
         files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
     }
-    let mut out = Vec::new();
-    for (path, bytes) in files {
-        crate::write_atomically(&path, &bytes)?;
-        out.push(path);
-    }
-    Ok(out)
+    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
+    crate::output::write_files_atomically(&refs)?;
+    Ok(files.into_iter().map(|(p, _)| p).collect())
 }
