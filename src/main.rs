@@ -58,9 +58,9 @@ enum Command {
         /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
         #[arg(long)]
         plan: Option<String>,
-        /// For an SVG answer: the position, from 1.
-        #[arg(long, default_value_t = 1)]
-        position: usize,
+        /// Which of the scene's positions, from 1 (default: the answer file's, else 1).
+        #[arg(long)]
+        position: Option<usize>,
     },
     /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
     Draw {
@@ -377,7 +377,7 @@ struct CheckArgs {
     delta: Option<f64>,
     mu: Option<f64>,
     plan: Option<String>,
-    position: usize,
+    position: Option<usize>,
 }
 
 /// `mechplan check`: Ok(true) when every item is right.
@@ -390,7 +390,6 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
         })
     };
     let scene_text = read(&a.scene)?;
-    let answer_text = read(&a.answer)?;
     let in_answer = |e: Error| match e {
         Error::Scene(mut v) => {
             for i in &mut v {
@@ -400,6 +399,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
         }
         e => e,
     };
+    let answer_text = read_answer(&a.answer).map_err(in_answer)?;
     if let Some(d) = a.delta
         && !(d.is_finite() && d > 0.0)
     {
@@ -430,7 +430,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
             a.mu,
             plan,
             a.delta.unwrap_or(0.5),
-            a.position.max(1),
+            a.position.unwrap_or(1),
         )
         .map_err(in_answer)?
     } else {
@@ -439,9 +439,17 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
     if let Some(d) = a.delta {
         ans.delta = d;
     }
+    if let Some(p) = a.position {
+        ans.position = p;
+    }
     let scene =
         Scene::from_json(&scene_text).map_err(with_file_name(&a.scene.display().to_string()))?;
     let analysis = Analysis::new(scene).map_err(with_file_name(&a.scene.display().to_string()))?;
+    let count = analysis.input_values()?.len();
+    match a.position {
+        Some(p) => position_in_range("--position", p, count)?,
+        None => position_in_range("/position", ans.position, count).map_err(in_answer)?,
+    }
     let solved = analysis.run()?;
     let report = check::check(&analysis, &solved, &ans).map_err(in_answer)?;
     let text = match a.format {
@@ -455,6 +463,40 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
     }
     stdout(&text)?;
     Ok(report.wrong() == 0)
+}
+
+/// Positions are numbered from 1: `p` must be one of the scene's `count`.
+fn position_in_range(option: &str, p: usize, count: usize) -> Result<(), Error> {
+    if (1..=count).contains(&p) {
+        return Ok(());
+    }
+    Err(Error::scene(
+        option,
+        format!(
+            "position {p} is not one of the scene's positions: they are numbered from 1 to {count}"
+        ),
+    ))
+}
+
+/// Read an answer file, refusing one larger than
+/// [`mechplan::check::answer::MAX_ANSWER_BYTES`] before reading it.
+fn read_answer(p: &Path) -> Result<String, Error> {
+    use mechplan::check::answer::{MAX_ANSWER_BYTES, check_size};
+    use std::io::Read;
+    let io = |source| Error::Io {
+        path: p.display().to_string(),
+        source,
+    };
+    let f = std::fs::File::open(p).map_err(io)?;
+    if let Ok(md) = f.metadata() {
+        check_size(md.len())?;
+    }
+    let mut text = String::new();
+    f.take(MAX_ANSWER_BYTES as u64 + 1)
+        .read_to_string(&mut text)
+        .map_err(io)?;
+    check_size(text.len() as u64)?;
+    Ok(text)
 }
 
 struct DrawArgs {
@@ -647,15 +689,10 @@ fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), 
     })?;
     let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
     let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
-    let solved = analysis.run()?;
-    if let Some(p) = position
-        && !(1..=solved.len()).contains(&p)
-    {
-        return Err(Error::scene(
-            "--position",
-            format!("the scene has positions 1 to {}, not {p}", solved.len()),
-        ));
+    if let Some(p) = position {
+        position_in_range("--position", p, analysis.input_values()?.len())?;
     }
+    let solved = analysis.run()?;
     let out = match format {
         Format::Table => mechplan::centres::to_table(&analysis, &solved, position),
         Format::Json => {

@@ -312,10 +312,14 @@ fn plan_on(
 
 /// Check `answer` against the scene's analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
-    let Some(s) = solved.get(ans.position - 1) else {
+    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Err(Error::scene(
             "/position",
-            format!("the scene has {} position(s)", solved.len()),
+            format!(
+                "position {} is not one of the scene's positions: they are numbered from 1 to {}",
+                ans.position,
+                solved.len()
+            ),
         ));
     };
     if an.order.is_none()
