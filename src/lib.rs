@@ -21,6 +21,7 @@ pub mod output;
 pub mod positions;
 pub mod precision;
 pub mod progress;
+pub mod quantity;
 pub mod reference;
 pub mod report;
 pub mod scene;
