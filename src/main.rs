@@ -71,9 +71,10 @@ enum Command {
         output: PathBuf,
         #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
         format: DrawFormat,
-        /// Sheet size: A4 (default), A3 or A1, landscape.
-        #[arg(long, default_value = "A4")]
-        sheet: String,
+        /// Sheet size: A4, A3 or A1, landscape (default: the smallest whose field holds
+        /// the mechanism's drawings at the scene's μ_l, A4 when it does).
+        #[arg(long)]
+        sheet: Option<String>,
         /// Add a title block to every sheet.
         #[arg(long)]
         title_block: bool,
@@ -277,7 +278,7 @@ fn main() -> ExitCode {
                     dpi: 150.0,
                     dir: PathBuf::from("mechplan-out"),
                     format: DrawFormat::Svg,
-                    sheet: "A4".into(),
+                    sheet: None,
                     title_block: false,
                     table: false,
                     lang: None,
@@ -503,7 +504,7 @@ struct DrawArgs {
     dpi: f64,
     dir: PathBuf,
     format: DrawFormat,
-    sheet: String,
+    sheet: Option<String>,
     title_block: bool,
     table: bool,
     lang: Option<String>,
@@ -539,12 +540,17 @@ fn with_file_name(name: &str) -> impl Fn(Error) -> Error + '_ {
 
 fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
     let lang = parse_lang(&a.lang)?;
-    let sheet = SheetSize::parse(&a.sheet).ok_or_else(|| {
-        Error::scene(
-            "--sheet",
-            format!("unknown sheet \"{}\": use A4, A3 or A1", a.sheet),
-        )
-    })?;
+    // A sheet asked for is the only one tried; else the smallest that
+    // holds the drawings at the scene's μ_l.
+    let sizes = match &a.sheet {
+        Some(s) => vec![SheetSize::parse(s).ok_or_else(|| {
+            Error::scene(
+                "--sheet",
+                format!("unknown sheet \"{s}\": use A4, A3 or A1"),
+            )
+        })?],
+        None => vec![SheetSize::A4, SheetSize::A3, SheetSize::A1],
+    };
     let scene = Scene::from_json(text).map_err(with_file_name(name))?;
     let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(with_file_name(name))?;
@@ -554,13 +560,23 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         return stdout(&format!("wrote {}\n", path.display()));
     }
     let opt = DrawOptions {
-        sheet,
+        sheet: sizes[0],
         lang,
         title_block: a.title_block,
         table: a.table,
         centres: a.centres,
     };
-    let mut sheets = drawing::sheets(&analysis, &solved, &opt);
+    // μ_l is the scene's, as `solve` reports it: never changed to fit.
+    let (mut sheets, sheet) = drawing::sheets_at_scene_scale(&analysis, &solved, &opt, &sizes)?;
+    if sheet != sizes[0] {
+        let _ = writeln!(
+            std::io::stderr(),
+            "mechplan: note: the drawing of the mechanism at μ_l = {} m/mm does not fit sheet {:?}: drawn on {sheet:?}",
+            analysis.mu_l,
+            sizes[0]
+        );
+    }
+    let opt = DrawOptions { sheet, ..opt };
     sheets.extend(drawing::diagram::wanted(&analysis, &opt)?);
     let format = match a.format {
         DrawFormat::Svg => drawing::Format::Svg,
