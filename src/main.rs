@@ -623,22 +623,32 @@ fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
     let scene = Scene::from_json(text).map_err(prefix)?;
     let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(prefix)?;
-    let solved = analysis.run()?;
-    let text = if opt.steps {
-        report::to_steps(&analysis, &solved, lang)
-    } else {
-        match opt.format {
-            Format::Table => report::to_table(&analysis, &solved),
-            Format::Json => {
-                serde_json::to_string_pretty(&report::to_json(&analysis, &solved))
-                    .expect("JSON of finite numbers")
-                    + "\n"
-            }
-        }
+    let style = match (opt.steps, opt.format) {
+        (true, _) => report::Style::Steps(lang),
+        (false, Format::Table) => report::Style::Table,
+        (false, Format::Json) => report::Style::Json,
+    };
+    // Each position's text is written as soon as the position is solved,
+    // and the position dropped: a long sweep costs no more memory than a
+    // short one. The text goes to a temporary file (-o) or is held back
+    // (standard output), so a run refused at a late position writes nothing.
+    let write = |out: &mut dyn FnMut(&str) -> Result<(), Error>| -> Result<(), Error> {
+        out(&report::text_head(&analysis, style))?;
+        let mut count = 0;
+        analysis.run_each(|s| {
+            out(&report::text_position(&analysis, style, count, &s))?;
+            count += 1;
+            Ok(())
+        })?;
+        out(&report::text_tail(&analysis, style, count))
     };
     match opt.output.as_deref() {
-        None => stdout(&text),
-        Some(path) => mechplan::write_atomically(path, text.as_bytes()),
+        None => {
+            let mut spool = mechplan::output::Spool::new();
+            write(&mut |t| spool.write(t))?;
+            spool.finish()
+        }
+        Some(path) => mechplan::output::write_atomically_with(path, |o| write(&mut |t| o.write(t))),
     }
 }
 
