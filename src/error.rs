@@ -1,6 +1,7 @@
 //! Errors. User errors (a bad scene, a mechanism that cannot be assembled or
 //! is singular) carry enough context to fix the input; they map to exit
-//! status 2 in the binary.
+//! status 2 in the binary. A result that could not be written
+//! ([`Error::Write`]) maps to exit status 3.
 
 use std::fmt;
 
@@ -23,9 +24,16 @@ impl fmt::Display for Issue {
 
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// The file could not be read or written.
+    /// An input file could not be read.
     #[error("{path}: {source}")]
     Io {
+        path: String,
+        source: std::io::Error,
+    },
+    /// A result could not be written (a full disk, a file-size limit, a
+    /// closed pipe): `path` is the file or "standard output".
+    #[error("cannot write {path}: {source}")]
+    Write {
         path: String,
         source: std::io::Error,
     },
@@ -67,53 +75,3 @@ impl Error {
 }
 
 pub type Result<T> = std::result::Result<T, Error>;
-
-/// A quantity for a message, in significant digits: `2e-12 m`, `0.35 m`,
-/// `1.25e3 m/s` — never a small value printed as `0.000000`.
-pub fn quantity(x: f64, unit: &str) -> String {
-    let n = number(x);
-    if unit.is_empty() {
-        n
-    } else {
-        format!("{n} {unit}")
-    }
-}
-
-/// A number in six significant digits, without trailing zeros; plain
-/// decimals from 1e-4 to 1e6, scientific notation outside.
-pub fn number(x: f64) -> String {
-    if !x.is_finite() || x == 0.0 {
-        return format!("{x}");
-    }
-    let a = x.abs();
-    let s = if (1e-4..1e6).contains(&a) {
-        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
-        format!("{x:.digits$}")
-    } else {
-        format!("{x:.5e}")
-    };
-    // Trailing zeros of the mantissa say nothing.
-    let (mant, exp) = match s.find('e') {
-        Some(i) => (&s[..i], &s[i..]),
-        None => (&s[..], ""),
-    };
-    let mant = if mant.contains('.') {
-        mant.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        mant
-    };
-    format!("{mant}{exp}")
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn small_quantities_keep_their_digits() {
-        assert_eq!(super::quantity(2e-12, "m"), "2e-12 m");
-        assert_eq!(super::quantity(0.35, "m"), "0.35 m");
-        assert_eq!(super::quantity(-1250000.0, "m/s"), "-1.25e6 m/s");
-        assert_eq!(super::number(0.123456789), "0.123457");
-        assert_eq!(super::number(123.0), "123");
-        assert_eq!(super::number(0.0), "0");
-    }
-}

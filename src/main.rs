@@ -3,6 +3,7 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use mechplan::construction::text::Lang;
 use mechplan::drawing::{self, DrawOptions, SheetSize};
+use mechplan::output::stdout;
 use mechplan::{Analysis, Error, Scene, report};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -37,7 +38,7 @@ enum Command {
         #[arg(long)]
         lang: Option<String>,
     },
-    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input.
+    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input, 3 output not written.
     Check {
         /// The scene file.
         scene: PathBuf,
@@ -57,9 +58,9 @@ enum Command {
         /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
         #[arg(long)]
         plan: Option<String>,
-        /// For an SVG answer: the position, from 1.
-        #[arg(long, default_value_t = 1)]
-        position: usize,
+        /// Which of the scene's positions, from 1 (default: the answer file's, else 1).
+        #[arg(long)]
+        position: Option<usize>,
     },
     /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
     Draw {
@@ -70,9 +71,10 @@ enum Command {
         output: PathBuf,
         #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
         format: DrawFormat,
-        /// Sheet size: A4 (default), A3 or A1, landscape.
-        #[arg(long, default_value = "A4")]
-        sheet: String,
+        /// Sheet size: A4, A3 or A1, landscape (default: the smallest whose field holds
+        /// the mechanism's drawings at the scene's μ_l, A4 when it does).
+        #[arg(long)]
+        sheet: Option<String>,
         /// Add a title block to every sheet.
         #[arg(long)]
         title_block: bool,
@@ -276,7 +278,7 @@ fn main() -> ExitCode {
                     dpi: 150.0,
                     dir: PathBuf::from("mechplan-out"),
                     format: DrawFormat::Svg,
-                    sheet: "A4".into(),
+                    sheet: None,
                     title_block: false,
                     table: false,
                     lang: None,
@@ -347,14 +349,23 @@ fn main() -> ExitCode {
     finish(result)
 }
 
-/// Exit status: 0 done (or all right), 1 a checked answer has wrong items, 2 bad input.
+/// Exit status: 0 done (or all right), 1 a checked answer has wrong items,
+/// 2 bad input, 3 a result could not be written.
 fn finish(result: Result<bool, Error>) -> ExitCode {
     match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
         Err(e) => {
-            eprintln!("mechplan: {}", e.to_string().replace('\n', "\nmechplan: "));
-            ExitCode::from(2)
+            // Standard error may fail too; the status still tells.
+            let _ = writeln!(
+                std::io::stderr(),
+                "mechplan: {}",
+                e.to_string().replace('\n', "\nmechplan: ")
+            );
+            ExitCode::from(match e {
+                Error::Write { .. } => 3,
+                _ => 2,
+            })
         }
     }
 }
@@ -367,7 +378,7 @@ struct CheckArgs {
     delta: Option<f64>,
     mu: Option<f64>,
     plan: Option<String>,
-    position: usize,
+    position: Option<usize>,
 }
 
 /// `mechplan check`: Ok(true) when every item is right.
@@ -380,7 +391,6 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
         })
     };
     let scene_text = read(&a.scene)?;
-    let answer_text = read(&a.answer)?;
     let in_answer = |e: Error| match e {
         Error::Scene(mut v) => {
             for i in &mut v {
@@ -390,6 +400,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
         }
         e => e,
     };
+    let answer_text = read_answer(&a.answer).map_err(in_answer)?;
     if let Some(d) = a.delta
         && !(d.is_finite() && d > 0.0)
     {
@@ -420,7 +431,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
             a.mu,
             plan,
             a.delta.unwrap_or(0.5),
-            a.position.max(1),
+            a.position.unwrap_or(1),
         )
         .map_err(in_answer)?
     } else {
@@ -429,9 +440,17 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
     if let Some(d) = a.delta {
         ans.delta = d;
     }
+    if let Some(p) = a.position {
+        ans.position = p;
+    }
     let scene =
         Scene::from_json(&scene_text).map_err(with_file_name(&a.scene.display().to_string()))?;
     let analysis = Analysis::new(scene).map_err(with_file_name(&a.scene.display().to_string()))?;
+    let count = analysis.input_values()?.len();
+    match a.position {
+        Some(p) => position_in_range("--position", p, count)?,
+        None => position_in_range("/position", ans.position, count).map_err(in_answer)?,
+    }
     let solved = analysis.run()?;
     let report = check::check(&analysis, &solved, &ans).map_err(in_answer)?;
     let text = match a.format {
@@ -443,15 +462,49 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
     if let Some(out) = &a.svg {
         mechplan::write_atomically(out, check::overlay(&analysis, &ans, &report).as_bytes())?;
     }
-    let _ = std::io::stdout().write_all(text.as_bytes());
+    stdout(&text)?;
     Ok(report.wrong() == 0)
+}
+
+/// Positions are numbered from 1: `p` must be one of the scene's `count`.
+fn position_in_range(option: &str, p: usize, count: usize) -> Result<(), Error> {
+    if (1..=count).contains(&p) {
+        return Ok(());
+    }
+    Err(Error::scene(
+        option,
+        format!(
+            "position {p} is not one of the scene's positions: they are numbered from 1 to {count}"
+        ),
+    ))
+}
+
+/// Read an answer file, refusing one larger than
+/// [`mechplan::check::answer::MAX_ANSWER_BYTES`] before reading it.
+fn read_answer(p: &Path) -> Result<String, Error> {
+    use mechplan::check::answer::{MAX_ANSWER_BYTES, check_size};
+    use std::io::Read;
+    let io = |source| Error::Io {
+        path: p.display().to_string(),
+        source,
+    };
+    let f = std::fs::File::open(p).map_err(io)?;
+    if let Ok(md) = f.metadata() {
+        check_size(md.len())?;
+    }
+    let mut text = String::new();
+    f.take(MAX_ANSWER_BYTES as u64 + 1)
+        .read_to_string(&mut text)
+        .map_err(io)?;
+    check_size(text.len() as u64)?;
+    Ok(text)
 }
 
 struct DrawArgs {
     dpi: f64,
     dir: PathBuf,
     format: DrawFormat,
-    sheet: String,
+    sheet: Option<String>,
     title_block: bool,
     table: bool,
     lang: Option<String>,
@@ -487,29 +540,43 @@ fn with_file_name(name: &str) -> impl Fn(Error) -> Error + '_ {
 
 fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
     let lang = parse_lang(&a.lang)?;
-    let sheet = SheetSize::parse(&a.sheet).ok_or_else(|| {
-        Error::scene(
-            "--sheet",
-            format!("unknown sheet \"{}\": use A4, A3 or A1", a.sheet),
-        )
-    })?;
+    // A sheet asked for is the only one tried; else the smallest that
+    // holds the drawings at the scene's μ_l.
+    let sizes = match &a.sheet {
+        Some(s) => vec![SheetSize::parse(s).ok_or_else(|| {
+            Error::scene(
+                "--sheet",
+                format!("unknown sheet \"{s}\": use A4, A3 or A1"),
+            )
+        })?],
+        None => vec![SheetSize::A4, SheetSize::A3, SheetSize::A1],
+    };
     let scene = Scene::from_json(text).map_err(with_file_name(name))?;
     let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(with_file_name(name))?;
     let solved = analysis.run()?;
     if a.html {
         let path = drawing::html::write_handout(&analysis, &solved, lang, &a.dir)?;
-        println!("wrote {}", path.display());
-        return Ok(());
+        return stdout(&format!("wrote {}\n", path.display()));
     }
     let opt = DrawOptions {
-        sheet,
+        sheet: sizes[0],
         lang,
         title_block: a.title_block,
         table: a.table,
         centres: a.centres,
     };
-    let mut sheets = drawing::sheets(&analysis, &solved, &opt);
+    // μ_l is the scene's, as `solve` reports it: never changed to fit.
+    let (mut sheets, sheet) = drawing::sheets_at_scene_scale(&analysis, &solved, &opt, &sizes)?;
+    if sheet != sizes[0] {
+        let _ = writeln!(
+            std::io::stderr(),
+            "mechplan: note: the drawing of the mechanism at μ_l = {} m/mm does not fit sheet {:?}: drawn on {sheet:?}",
+            analysis.mu_l,
+            sizes[0]
+        );
+    }
+    let opt = DrawOptions { sheet, ..opt };
     sheets.extend(drawing::diagram::wanted(&analysis, &opt)?);
     let format = match a.format {
         DrawFormat::Svg => drawing::Format::Svg,
@@ -523,10 +590,15 @@ fn draw(text: &str, name: &str, a: DrawArgs) -> Result<(), Error> {
         ));
     }
     let written = drawing::write_sheets(&sheets, &a.dir, format, a.dpi)?;
-    for p in written {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&written))
+}
+
+/// "wrote PATH" lines for the files written.
+fn wrote(paths: &[PathBuf]) -> String {
+    paths
+        .iter()
+        .map(|p| format!("wrote {}\n", p.display()))
+        .collect()
 }
 
 fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
@@ -551,51 +623,33 @@ fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
     let scene = Scene::from_json(text).map_err(prefix)?;
     let lang = lang.unwrap_or_else(|| Lang::parse(&scene.want.lang).unwrap_or(Lang::En));
     let analysis = Analysis::new(scene).map_err(prefix)?;
-    let solved = analysis.run()?;
-    let text = if opt.steps {
-        report::to_steps(&analysis, &solved, lang)
-    } else {
-        match opt.format {
-            Format::Table => report::to_table(&analysis, &solved),
-            Format::Json => {
-                serde_json::to_string_pretty(&report::to_json(&analysis, &solved))
-                    .expect("JSON of finite numbers")
-                    + "\n"
-            }
-        }
+    let style = match (opt.steps, opt.format) {
+        (true, _) => report::Style::Steps(lang),
+        (false, Format::Table) => report::Style::Table,
+        (false, Format::Json) => report::Style::Json,
     };
-    let output = opt.output.as_deref();
-    match output {
-        None => {
-            let _ = std::io::stdout().write_all(text.as_bytes());
+    // Each position's text is written as soon as the position is solved,
+    // and the position dropped: a long sweep costs no more memory than a
+    // short one. The text goes to a temporary file (-o) or is held back
+    // (standard output), so a run refused at a late position writes nothing.
+    let write = |out: &mut dyn FnMut(&str) -> Result<(), Error>| -> Result<(), Error> {
+        out(&report::text_head(&analysis, style))?;
+        let mut count = 0;
+        analysis.run_each(|s| {
+            out(&report::text_position(&analysis, style, count, &s))?;
+            count += 1;
             Ok(())
-        }
-        Some(path) => write_atomically(path, text.as_bytes()),
-    }
-}
-
-/// Write to a temporary file beside `path`, then rename: never half a file.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let io = |source| Error::Io {
-        path: path.display().to_string(),
-        source,
+        })?;
+        out(&report::text_tail(&analysis, style, count))
     };
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        path.file_name()
-            .map(|f| f.to_string_lossy())
-            .unwrap_or_default(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io(e)
-    })
+    match opt.output.as_deref() {
+        None => {
+            let mut spool = mechplan::output::Spool::new();
+            write(&mut |t| spool.write(t))?;
+            spool.finish()
+        }
+        Some(path) => mechplan::output::write_atomically_with(path, |o| write(&mut |t| o.write(t))),
+    }
 }
 
 /// `mechplan precision`: the work-precision table (and plot with -o).
@@ -629,29 +683,27 @@ fn precision(
     let report = precision::run(&analysis, &settings)?;
     let table = precision::to_markdown(&report);
     let Some(dir) = dir else {
-        let _ = std::io::stdout().write_all(table.as_bytes());
-        return Ok(());
+        return stdout(&table);
     };
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| mechplan::output::write_error(&dir.display().to_string(), e))?;
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "scene".into());
     let svg = precision::to_svg(&report, &format!("{stem}: error against run time"));
     let png = mechplan::drawing::png(&svg, 150.0)?;
-    for (ext, bytes) in [
+    let files: Vec<(PathBuf, &[u8])> = [
         ("md", table.as_bytes()),
         ("svg", svg.as_bytes()),
         ("png", png.as_slice()),
-    ] {
-        let path = dir.join(format!("{stem}.{ext}"));
-        mechplan::write_atomically(&path, bytes)?;
-        println!("wrote {}", path.display());
-    }
-    Ok(())
+    ]
+    .into_iter()
+    .map(|(ext, bytes)| (dir.join(format!("{stem}.{ext}")), bytes))
+    .collect();
+    mechplan::output::write_files_atomically(&files)?;
+    let paths: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
+    stdout(&wrote(&paths))
 }
 
 /// `mechplan centres`: the instant centres of every position (or one).
@@ -663,15 +715,10 @@ fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), 
     })?;
     let sc = Scene::from_json(&text).map_err(with_file_name(&name))?;
     let analysis = Analysis::new(sc).map_err(with_file_name(&name))?;
-    let solved = analysis.run()?;
-    if let Some(p) = position
-        && !(1..=solved.len()).contains(&p)
-    {
-        return Err(Error::scene(
-            "--position",
-            format!("the scene has positions 1 to {}, not {p}", solved.len()),
-        ));
+    if let Some(p) = position {
+        position_in_range("--position", p, analysis.input_values()?.len())?;
     }
+    let solved = analysis.run()?;
     let out = match format {
         Format::Table => mechplan::centres::to_table(&analysis, &solved, position),
         Format::Json => {
@@ -683,8 +730,7 @@ fn centres(scene: &Path, position: Option<usize>, format: Format) -> Result<(), 
             t
         }
     };
-    let _ = std::io::stdout().write_all(out.as_bytes());
-    Ok(())
+    stdout(&out)
 }
 
 /// `mechplan invariants`: the phases of an output and their peak constants.
@@ -739,8 +785,7 @@ fn invariants(
             t
         }
     };
-    let _ = std::io::stdout().write_all(text.as_bytes());
-    Ok(())
+    stdout(&text)
 }
 
 /// `mechplan frenet`: the families of link positions of paper 001.
@@ -754,10 +799,7 @@ fn frenet(dir: &Path, format: DrawFormat, count: usize) -> Result<(), Error> {
         DrawFormat::Png => drawing::Format::Png,
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
-    for p in drawing::write_sheets(&sheets, dir, format, 150.0)? {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&drawing::write_sheets(&sheets, dir, format, 150.0)?))
 }
 
 /// `mechplan diagram`: the kinematic diagrams of an output, as a table or a sheet.
@@ -796,8 +838,7 @@ fn diagram(
         None => Diagrams::build(&analysis, out, n, drawing::diagram::LENGTH)?,
     };
     let Some(dir) = dir else {
-        let _ = std::io::stdout().write_all(mechplan::diagrams::to_table(&analysis, &d).as_bytes());
-        return Ok(());
+        return stdout(&mechplan::diagrams::to_table(&analysis, &d));
     };
     let sheet = drawing::diagram::sheet(&analysis, &d, &DrawOptions::default());
     let format = match format {
@@ -805,8 +846,10 @@ fn diagram(
         DrawFormat::Png => drawing::Format::Png,
         DrawFormat::Pdf => drawing::Format::Pdf,
     };
-    for p in drawing::write_sheets(&[sheet], dir, format, 150.0)? {
-        println!("wrote {}", p.display());
-    }
-    Ok(())
+    stdout(&wrote(&drawing::write_sheets(
+        &[sheet],
+        dir,
+        format,
+        150.0,
+    )?))
 }

@@ -414,7 +414,7 @@ fn prismatic(
             format!(
                 "point \"{}\" is {} off its guide line in the sketch; a slider's point lies on its guide",
                 scene.points[s.point].name,
-                crate::error::quantity(off.abs(), "m")
+                crate::quantity::format_quantity(off.abs(), "m")
             ),
         );
     }

@@ -4,11 +4,12 @@
 //! solved by a one-dimensional root search in its base angle, tracked
 //! continuously from the sketch.
 
-use crate::error::{Error, Result, quantity};
+use crate::error::{Error, Result};
 use crate::geom::{
     LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
 };
 use crate::mechanism::Mechanism;
+use crate::quantity::format_quantity as quantity;
 use crate::scene::InputSpec;
 use crate::structure::{AssurGroup, Conn, Dyad, DyadKind, Joint, Structure, Triad};
 use kurbo::{Point, Vec2};

@@ -33,7 +33,19 @@ pub fn bar(len: usize, what: &str) -> ProgressBar {
 /// order; with a progress bar for very long ones.
 pub fn map<T: Sync, R: Send>(items: &[T], what: &str, f: impl Fn(&T) -> R + Sync) -> Vec<R> {
     let pb = bar(items.len(), what);
-    let out = if items.len() >= PARALLEL_FROM {
+    let out = map_on(items, &pb, f);
+    pb.finish_and_clear();
+    out
+}
+
+/// As [`map`], counting on a bar made by the caller (one bar for a sweep
+/// done a part at a time).
+pub fn map_on<T: Sync, R: Send>(
+    items: &[T],
+    pb: &ProgressBar,
+    f: impl Fn(&T) -> R + Sync,
+) -> Vec<R> {
+    if items.len() >= PARALLEL_FROM {
         items
             .par_iter()
             .map(|x| {
@@ -51,7 +63,5 @@ pub fn map<T: Sync, R: Send>(items: &[T], what: &str, f: impl Fn(&T) -> R + Sync
                 r
             })
             .collect()
-    };
-    pb.finish_and_clear();
-    out
+    }
 }

@@ -24,7 +24,7 @@
 //! sensitivity check rebuilds the shapes from data moved by a few units of
 //! rounding with the same decisions: rounding must not change the rule.
 
-use crate::error::quantity;
+use crate::quantity::format_quantity as quantity;
 use crate::scene::Scene;
 use kurbo::{Point, Vec2};
 

@@ -95,6 +95,11 @@ pub struct Bounds {
 /// The constant c of [`Bounds`].
 pub const BOUND_ROUNDINGS: f64 = 256.0;
 
+/// Positions found and finished at a time by [`Analysis::run_each`]:
+/// enough to keep both cores busy, few enough that a sweep of the largest
+/// count allowed needs no more memory than a short one.
+pub const RUN_CHUNK: usize = 512;
+
 /// The largest data sensitivity accepted, as the routes' disagreement.
 pub const MAX_REL_DIFF: f64 = 1e-6;
 
@@ -391,22 +396,62 @@ impl Analysis {
     /// position to the next, which keeps them on the sketch's branch);
     /// then each position's velocities, accelerations, plans and checks are
     /// independent, and long sweeps do them in parallel
-    /// ([`crate::progress::map`]). The result, and the first error in the
-    /// order of the positions, are those of a sequential run.
+    /// ([`crate::progress::map_on`], a chunk at a time). The result, and
+    /// the first error in the order of the positions, are those of a
+    /// sequential run.
     pub fn run(&self) -> Result<Vec<Solved>> {
+        let mut out = Vec::new();
+        self.run_each(|s| {
+            out.push(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// As [`Analysis::run`], each solved position handed to `f` in order
+    /// instead of kept: the positions are found and finished
+    /// [`RUN_CHUNK`] at a time, so that memory does not grow with their
+    /// number. The positions before the first error are handed over; an
+    /// error of `f` stops the run and is returned.
+    pub fn run_each(&self, mut f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
         let values = self.input_values()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
+        let changed = self.changed_data();
+        let bar = crate::progress::bar(values.len(), "positions");
+        // The rounding of each input value as written (none for `count`).
+        let rounding = if m.scene.input_rounding.len() == values.len() {
+            m.scene.input_rounding.clone()
+        } else {
+            vec![0.0; values.len()]
+        };
+        let done = values
+            .chunks(RUN_CHUNK)
+            .zip(rounding.chunks(RUN_CHUNK))
+            .try_for_each(|(chunk, rounding)| {
+                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, &bar, &mut f)
+            });
+        bar.finish_and_clear();
+        done
+    }
+
+    /// One chunk of [`Analysis::run_each`]: its positions found in order,
+    /// then finished (in parallel when long) and handed to `f` in order.
+    #[allow(clippy::too_many_arguments)]
+    fn run_chunk<'a>(
+        &'a self,
+        values: &[f64],
+        rounding: &[f64],
+        ps: &mut PositionSolver,
+        cs: &mut ConstraintSolver<'a>,
+        changed: &ChangedData,
+        bar: &indicatif::ProgressBar,
+        f: &mut impl FnMut(Solved) -> Result<()>,
+    ) -> Result<()> {
         let mut placed = Vec::with_capacity(values.len());
         let mut stop = None;
-        let rounding = &m.scene.input_rounding;
-        for (k, &q) in values.iter().enumerate() {
-            let q_rounding = if rounding.len() == values.len() {
-                rounding[k]
-            } else {
-                0.0
-            };
+        for (&q, &q_rounding) in values.iter().zip(rounding) {
             let t0 = Clock::now();
             let config = match ps.solve(q) {
                 Ok(c) => c,
@@ -417,7 +462,7 @@ impl Analysis {
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
-            let span = self.path_span(&ps, cs.last_input(), q);
+            let span = self.path_span(ps, cs.last_input(), q);
             if let Err(e) = cs.solve_positions_by(q, span) {
                 // Route (a)'s rates come first at a position: its error,
                 // if it has one here, is the one a sequential run reports.
@@ -434,15 +479,12 @@ impl Analysis {
                 constraint_time,
             });
         }
-        let changed = self.changed_data();
-        let solved = crate::progress::map(&placed, "positions", |p| self.finish(p, &changed));
-        let mut out = Vec::with_capacity(solved.len());
-        for s in solved {
-            out.push(s?);
+        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, changed)) {
+            f(s?)?;
         }
         match stop {
             Some(e) => Err(e),
-            None => Ok(out),
+            None => Ok(()),
         }
     }
 

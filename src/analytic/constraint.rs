@@ -426,7 +426,7 @@ impl<'a> ConstraintSolver<'a> {
         } else {
             Err(format!(
                 "Newton's method did not converge (residual {})",
-                crate::error::quantity(r, "")
+                crate::quantity::format_quantity(r, "")
             ))
         }
     }
@@ -594,7 +594,7 @@ impl<'a> ConstraintSolver<'a> {
                         return Err(format!(
                             "the assembly cannot be followed past {} (steps down to {} do not converge on it)",
                             describe_input(self.m, x),
-                            crate::error::quantity(h, if crank { "rad" } else { "m" })
+                            crate::quantity::format_quantity(h, if crank { "rad" } else { "m" })
                         ));
                     }
                 }

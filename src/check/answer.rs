@@ -49,6 +49,23 @@ pub struct Answer {
     pub items: Vec<Item>,
 }
 
+/// The largest answer file read, JSON or SVG (8 MiB): a hand-drawn plan
+/// is a few kilobytes; a file beyond this is refused before it is read.
+pub const MAX_ANSWER_BYTES: usize = 8 << 20;
+
+/// The refusal of an answer of `bytes` bytes, if it is too large.
+pub fn check_size(bytes: u64) -> Result<()> {
+    if bytes > MAX_ANSWER_BYTES as u64 {
+        return Err(Error::Scene(vec![issue(
+            "",
+            format!(
+                "the answer file has {bytes} bytes; an answer may have at most {MAX_ANSWER_BYTES} (8 MiB)"
+            ),
+        )]));
+    }
+    Ok(())
+}
+
 fn issue(pointer: impl Into<String>, message: impl Into<String>) -> Issue {
     Issue {
         pointer: pointer.into(),
@@ -122,6 +139,7 @@ fn number(v: &Value, at: &str, issues: &mut Vec<Issue>) -> Option<f64> {
 /// Read an answer JSON. Names are checked against the plan later; here the
 /// file's own shape: known fields, numbers, positive lengths, μ present.
 pub fn from_json(text: &str) -> Result<Answer> {
+    check_size(text.len() as u64)?;
     let v = parse_strict(text).map_err(Error::Json)?;
     let mut issues = Vec::new();
     let Some(o) = v.as_object() else {

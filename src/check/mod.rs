@@ -9,10 +9,11 @@ pub mod answer;
 pub mod svg;
 
 use crate::analytic::Drive;
-use crate::construction::text::{Lang, num, sentence};
+use crate::construction::text::{Lang, sentence};
 use crate::construction::{Drafting, Mistake, Plan, PlanKind, Setup, Variant, build_plans};
 use crate::error::{Error, Issue, Result};
 use crate::positions::{Configuration, PositionSolver};
+use crate::quantity::format_number;
 use crate::solve::{Analysis, Solved};
 use answer::{Answer, Given, Quantity};
 use kurbo::Vec2;
@@ -108,7 +109,7 @@ fn mistake_sentence(c: Candidate, mu: f64) -> String {
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
             "The scale μ is applied in the wrong units (mm instead of m, or the reverse): the derived values are off by 1000.".into()
         }
-        Candidate::Scale(_) => format!("The scale μ is inverted: values are segment/μ instead of segment·μ (μ = {}).", num(mu)),
+        Candidate::Scale(_) => format!("The scale μ is inverted: values are segment/μ instead of segment·μ (μ = {}).", format_number(mu)),
     }
 }
 
@@ -312,10 +313,14 @@ fn plan_on(
 
 /// Check `answer` against the scene's analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
-    let Some(s) = solved.get(ans.position - 1) else {
+    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Err(Error::scene(
             "/position",
-            format!("the scene has {} position(s)", solved.len()),
+            format!(
+                "position {} is not one of the scene's positions: they are numbered from 1 to {}",
+                ans.position,
+                solved.len()
+            ),
         ));
     };
     if an.order.is_none()
@@ -500,16 +505,16 @@ pub fn to_text(r: &Report) -> String {
     };
     let _ = writeln!(
         t,
-        "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {} mm",
+        "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {}",
         r.position,
-        num(r.mu),
-        num(r.delta)
+        format_number(r.mu),
+        crate::quantity::format_quantity(r.delta, "mm")
     );
     if r.worst_angle < 5.0 {
         let _ = writeln!(
             t,
             "note: lines of this construction meet at {}°; tolerances are wide here (near a dead centre)",
-            num(r.worst_angle)
+            format_number(r.worst_angle)
         );
     }
     let _ = writeln!(
@@ -522,10 +527,10 @@ pub fn to_text(r: &Report) -> String {
             t,
             "  {:<24} {:>12} {:>12} {:>12} {:>12}  {} {}",
             v.what,
-            num(v.expected),
-            num(v.given),
-            num(v.difference),
-            num(v.tolerance),
+            format_number(v.expected),
+            format_number(v.given),
+            format_number(v.difference),
+            format_number(v.tolerance),
             v.unit,
             if v.ok { "OK" } else { "WRONG" }
         );

@@ -17,7 +17,7 @@ use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
 use crate::construction::text::{Lang, num, sentence};
 use crate::construction::{Op, Plan, PlanKind};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::scene::InputSpec;
 use crate::solve::{Analysis, Solved};
 use kurbo::Point;
@@ -753,10 +753,8 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
 
 /// Write `dir/handout.html` (atomically); returns its path.
 pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -> Result<PathBuf> {
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
     let path = dir.join("handout.html");
     crate::write_atomically(&path, handout(an, solved, lang).as_bytes())?;
     Ok(path)

@@ -116,40 +116,40 @@ fn words(lang: Lang) -> [&'static str; 6] {
     }
 }
 
-/// The drawings a scene asks for (`want.drawings`; by default the plan of
-/// the mechanism and the plans wanted, plus the positions sheet when there
-/// are several positions), one sheet per drawing and position.
-pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
+/// Whether the scene asks for drawing `d` (`want.drawings`; by default the
+/// plan of the mechanism and the plans wanted, plus the positions sheet
+/// when there are several positions).
+fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
     let want = &an.mech.scene.want.drawings;
-    let has_acc = solved
-        .first()
-        .and_then(|s| s.plans.as_ref())
-        .is_some_and(|p| p.acceleration.is_some());
-    let has_vel = solved.first().is_some_and(|s| s.plans.is_some());
-    let asked = |d: &str| {
-        if want.is_empty() {
-            match d {
-                "mechanism" => true,
-                "velocity" => has_vel,
-                "acceleration" => has_acc,
-                "positions" => solved.len() > 1,
-                _ => false,
-            }
-        } else {
-            want.iter().any(|w| w == d)
+    if want.is_empty() {
+        let has_vel = solved.first().is_some_and(|s| s.plans.is_some());
+        let has_acc = solved
+            .first()
+            .and_then(|s| s.plans.as_ref())
+            .is_some_and(|p| p.acceleration.is_some());
+        match d {
+            "mechanism" => true,
+            "velocity" => has_vel,
+            "acceleration" => has_acc,
+            "positions" => solved.len() > 1,
+            _ => false,
         }
-    };
-    let w = words(opt.lang);
-    let mut out = Vec::new();
-    // The mechanism's sheets share one scale and one place on the page, so
-    // that flipping through them the mechanism does not jump; the scale
-    // grows to the next standard value until every position fits.
-    let (aw, ah) = free_area(opt, false);
-    let mut mu_l = an.mu_l;
-    let mut mech: Vec<Canvas>;
-    let mut pos_canvas: Option<Canvas>;
-    loop {
-        mech = if asked("mechanism") {
+    } else {
+        want.iter().any(|w| w == d)
+    }
+}
+
+/// The drawings of the mechanism at one scale: one per position (the plan
+/// of the mechanism) and the positions sheet, those asked for.
+struct MechanismDrawings {
+    mu_l: f64,
+    mech: Vec<Canvas>,
+    positions: Option<Canvas>,
+}
+
+impl MechanismDrawings {
+    fn new(an: &Analysis, solved: &[Solved], opt: &DrawOptions, mu_l: f64) -> MechanismDrawings {
+        let mech = if asked(an, solved, "mechanism") {
             solved
                 .iter()
                 .map(|s| {
@@ -165,24 +165,175 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
         } else {
             Vec::new()
         };
-        pos_canvas = asked("positions").then(|| {
+        let positions = asked(an, solved, "positions").then(|| {
             let mut c = Canvas::default();
             positions::draw(an, solved, &mut c, mu_l);
             c
         });
-        let union = mech
+        MechanismDrawings {
+            mu_l,
+            mech,
+            positions,
+        }
+    }
+
+    /// The union of every drawing's extent, mm (None: nothing drawn).
+    fn extent(&self) -> Option<kurbo::Rect> {
+        self.mech
             .iter()
-            .chain(pos_canvas.iter())
+            .chain(self.positions.iter())
             .map(|c| c.bounds())
-            .reduce(|a, b| a.union(b));
-        match union {
-            Some(u) if (u.width() > aw || u.height() > ah) && mu_l < 1e6 => {
-                let f = (u.width() / aw).max(u.height() / ah);
-                mu_l = crate::construction::scale::standard_scale(mu_l * f * 1.0001, 1.0);
+            .reduce(|a, b| a.union(b))
+    }
+}
+
+/// Whether an extent fits a field (mm).
+fn fits(u: kurbo::Rect, (aw, ah): (f64, f64)) -> bool {
+    !(u.width() > aw || u.height() > ah)
+}
+
+/// The drawings a scene asks for (`want.drawings`; by default the plan of
+/// the mechanism and the plans wanted, plus the positions sheet when there
+/// are several positions), one sheet per drawing and position.
+///
+/// The mechanism's sheets share one scale and one place on the page, so
+/// that flipping through them the mechanism does not jump. Here the scale
+/// is the scene's μ_l (`want.scales.mu_l`, else the default that `solve`
+/// reports) when the drawings fit the sheet, else it grows to the next
+/// standard value until they do (the sheets say which). `mechplan draw`
+/// uses [`sheets_at_scene_scale`] instead, which never changes μ_l.
+pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
+    let area = free_area(opt, false);
+    let mut d = MechanismDrawings::new(an, solved, opt, an.mu_l);
+    loop {
+        match d.extent() {
+            Some(u) if !fits(u, area) && d.mu_l < 1e6 => {
+                let f = (u.width() / area.0).max(u.height() / area.1);
+                let mu_l = crate::construction::scale::standard_scale(d.mu_l * f * 1.0001, 1.0);
+                d = MechanismDrawings::new(an, solved, opt, mu_l);
             }
             _ => break,
         }
     }
+    compose(an, solved, opt, d)
+}
+
+/// The sheets at the scene's μ_l (`an.mu_l`: `want.scales.mu_l`, else the
+/// default, the value `solve` reports), on the first of `sizes` whose
+/// field holds the drawings of the mechanism; with it, the size used.
+/// When none does: a refusal with the reason (the drawing's size at that
+/// μ_l, the field's size, the smallest standard μ_l that fits the first
+/// of `sizes`, and the smallest sheet that would hold it).
+pub fn sheets_at_scene_scale(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    sizes: &[SheetSize],
+) -> Result<(Vec<Sheet>, SheetSize)> {
+    let d = MechanismDrawings::new(an, solved, opt, an.mu_l);
+    let Some(u) = d.extent() else {
+        let size = sizes.first().copied().unwrap_or(opt.sheet);
+        let opt = DrawOptions {
+            sheet: size,
+            ..*opt
+        };
+        return Ok((compose(an, solved, &opt, d), size));
+    };
+    for &size in sizes {
+        let opt = DrawOptions {
+            sheet: size,
+            ..*opt
+        };
+        if fits(u, free_area(&opt, false)) {
+            return Ok((compose(an, solved, &opt, d), size));
+        }
+    }
+    Err(misfit(an, solved, opt, sizes, u))
+}
+
+/// Why the mechanism's drawings at the scene's μ_l do not fit any of
+/// `sizes`, and what would.
+fn misfit(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    sizes: &[SheetSize],
+    u: kurbo::Rect,
+) -> Error {
+    use crate::construction::scale::standard_scale;
+    use crate::quantity::format_quantity as q;
+    let first = sizes.first().copied().unwrap_or(opt.sheet);
+    let last = sizes.last().copied().unwrap_or(opt.sheet);
+    let area_of = |sheet| free_area(&DrawOptions { sheet, ..*opt }, false);
+    let (aw, ah) = area_of(first);
+    // The smallest standard μ_l that fits the first sheet: from the one
+    // that would if the drawing's size were all geometry (labels and
+    // symbols keep their size), up one standard value at a time.
+    let f = (u.width() / aw).max(u.height() / ah);
+    let mut mu = standard_scale(an.mu_l * f, 1.0);
+    while mu < 1e6 {
+        let e = MechanismDrawings::new(an, solved, opt, mu).extent();
+        if e.is_none_or(|e| fits(e, (aw, ah))) {
+            break;
+        }
+        mu = standard_scale(mu * 1.0001, 1.0);
+    }
+    // The smallest sheet holding it at this μ_l, beyond those tried.
+    let bigger = [SheetSize::A4, SheetSize::A3, SheetSize::A1]
+        .into_iter()
+        .filter(|s| !sizes.contains(s))
+        .find(|&s| s.mm().0 > last.mm().0 && fits(u, area_of(s)));
+    let given = an.mech.scene.want.scales.mu_l.is_some();
+    let whose = if given {
+        "want.scales.mu_l"
+    } else {
+        "the scene's default, as solve reports it; want.scales.mu_l sets another"
+    };
+    let field = if sizes.len() > 1 {
+        let (w, h) = area_of(last);
+        format!(
+            "larger than the field of every sheet up to {last:?} ({} × {})",
+            q(w, "mm"),
+            q(h, "mm")
+        )
+    } else {
+        format!(
+            "larger than the field of sheet {first:?} ({} × {})",
+            q(aw, "mm"),
+            q(ah, "mm")
+        )
+    };
+    let mut msg = format!(
+        "the drawing of the mechanism at μ_l = {} m/mm ({whose}) is {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
+        an.mu_l,
+        q(u.width(), "mm"),
+        q(u.height(), "mm"),
+    );
+    if let Some(s) = bigger {
+        msg += &format!(", or draw on --sheet {s:?}");
+    }
+    let pointer = if given || sizes.len() > 1 {
+        "/want/scales/mu_l"
+    } else {
+        "--sheet"
+    };
+    Error::scene(pointer, msg)
+}
+
+/// Compose the sheets from the mechanism's drawings and the plans.
+fn compose(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    d: MechanismDrawings,
+) -> Vec<Sheet> {
+    let w = words(opt.lang);
+    let mut out = Vec::new();
+    let MechanismDrawings {
+        mu_l,
+        mech,
+        positions: pos_canvas,
+    } = d;
     let union = mech.iter().map(|c| c.bounds()).reduce(|a, b| a.union(b));
     if let Some(c) = &pos_canvas {
         let scale = scale_label("l", mu_l, "m", opt.lang);
@@ -215,7 +366,7 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
             ("acceleration", w[2], plans.acceleration.as_ref()),
         ] {
             let Some(plan) = plan else { continue };
-            if !asked(name) {
+            if !asked(an, solved, name) {
                 continue;
             }
             let mut c = Canvas::default();
@@ -453,18 +604,19 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
     .map_err(|e| Error::Structure(format!("PDF conversion failed: {e}")))
 }
 
-/// Write every sheet into `dir` in `format`, each file atomically
-/// (a temporary file renamed into place). Returns the paths written.
+/// Write every sheet into `dir` in `format`, all or nothing: every sheet is
+/// rendered, then written to a temporary file beside its place, and only
+/// when all are written are they renamed into place; a failure removes
+/// every temporary of this run ([`crate::output::write_files_atomically`]).
+/// Returns the paths written.
 pub fn write_sheets(
     sheets: &[Sheet],
     dir: &Path,
     format: Format,
     dpi: f64,
 ) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
     // Render everything first, so that a failure writes nothing.
     let mut files = Vec::new();
     for s in sheets {
@@ -475,10 +627,7 @@ pub fn write_sheets(
         };
         files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
     }
-    let mut out = Vec::new();
-    for (path, bytes) in files {
-        crate::write_atomically(&path, &bytes)?;
-        out.push(path);
-    }
-    Ok(out)
+    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
+    crate::output::write_files_atomically(&refs)?;
+    Ok(files.into_iter().map(|(p, _)| p).collect())
 }

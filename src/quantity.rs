@@ -1,0 +1,79 @@
+//! Numbers in messages, to significant digits: a distance of 2e-12 m is
+//! "2e-12 m", never "0.000000 m".
+
+/// Significant digits of [`format_number`].
+pub const DIGITS: usize = 4;
+
+/// `x` to four significant digits: fixed for 0.001 ≤ |x| < 1000 (trailing
+/// zeros kept, they are significant: "0.3500", "12.00"), else scientific
+/// with the mantissa's trailing zeros dropped ("2e-12", "1.25e3"); "0" for
+/// zero (either sign), "inf", "-inf", "NaN" as Rust writes them.
+pub fn format_number(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    // The exponent after rounding to DIGITS significant digits.
+    let sci = format!("{:.*e}", DIGITS - 1, x);
+    let (mantissa, exp) = sci.split_once('e').expect("scientific notation");
+    let exp: i32 = exp.parse().expect("an integer exponent");
+    if (-3..=2).contains(&exp) {
+        let decimals = (DIGITS as i32 - 1 - exp) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exp}")
+    }
+}
+
+/// `x` and its unit: `format_quantity(2e-12, "m")` is "2e-12 m",
+/// `format_quantity(0.35, "m")` "0.3500 m", `format_quantity(1250.0, "m")`
+/// "1.25e3 m"; no unit, no space.
+pub fn format_quantity(x: f64, unit: &str) -> String {
+    if unit.is_empty() {
+        format_number(x)
+    } else {
+        format!("{} {unit}", format_number(x))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn significant_digits_at_every_magnitude() {
+        for (x, want) in [
+            (2e-12, "2e-12"),
+            (-2e-12, "-2e-12"),
+            (0.35, "0.3500"),
+            (1250.0, "1.25e3"),
+            (1000.0, "1e3"),
+            (999.96, "1e3"),
+            (999.94, "999.9"),
+            (0.001, "0.001000"),
+            (0.00099996, "0.001000"),
+            (0.00099994, "9.999e-4"),
+            (12.0, "12.00"),
+            (-0.5, "-0.5000"),
+            (1.23456e-7, "1.235e-7"),
+            (6.02e23, "6.02e23"),
+            (0.0, "0"),
+            (-0.0, "0"),
+            (f64::INFINITY, "inf"),
+            (f64::NAN, "NaN"),
+        ] {
+            assert_eq!(format_number(x), want, "{x:e}");
+        }
+        assert_eq!(format_quantity(2e-12, "m"), "2e-12 m");
+        assert_eq!(format_quantity(0.35, "m"), "0.3500 m");
+        assert_eq!(format_quantity(1250.0, "m"), "1.25e3 m");
+        assert_eq!(format_quantity(3.0, ""), "3.000");
+    }
+}
