@@ -346,15 +346,16 @@ fn main() -> ExitCode {
         Ok(()) => Ok(true),
         Err(e) => Err(e),
     };
-    finish(result)
+    finish(result.map(|ok| if ok { 0 } else { 1 }))
 }
 
 /// Exit status: 0 done (or all right), 1 a checked answer has wrong items,
 /// 2 bad input, 3 a result could not be written.
-fn finish(result: Result<bool, Error>) -> ExitCode {
+/// The exit status: the command's own (0 success; `check`: 1 an item
+/// wrong, 4 an item that cannot be judged), 2 bad input, 3 a failed write.
+fn finish(result: Result<u8, Error>) -> ExitCode {
     match result {
-        Ok(true) => ExitCode::SUCCESS,
-        Ok(false) => ExitCode::from(1),
+        Ok(status) => ExitCode::from(status),
         Err(e) => {
             // Standard error may fail too; the status still tells.
             let _ = writeln!(
@@ -382,7 +383,7 @@ struct CheckArgs {
 }
 
 /// `mechplan check`: Ok(true) when every item is right.
-fn check(a: CheckArgs) -> Result<bool, Error> {
+fn check(a: CheckArgs) -> Result<u8, Error> {
     use mechplan::check;
     let read = |p: &Path| {
         std::fs::read_to_string(p).map_err(|source| Error::Io {
@@ -463,7 +464,7 @@ fn check(a: CheckArgs) -> Result<bool, Error> {
         mechplan::write_atomically(out, check::overlay(&analysis, &ans, &report).as_bytes())?;
     }
     stdout(&text)?;
-    Ok(report.wrong() == 0)
+    Ok(report.status())
 }
 
 /// Positions are numbered from 1: `p` must be one of the scene's `count`.

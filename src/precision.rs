@@ -489,8 +489,8 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         for seed in 0..set.seeds {
             let d = Drafting {
                 variant: Variant {
-                    mistake: None,
                     jitter: Some(seed),
+                    ..Variant::default()
                 },
                 ..drafting
             };

@@ -337,6 +337,20 @@ pub fn shape(
             Placement::Triangle { side, .. } => (false, side),
             _ => (true, 1.0),
         };
+        if d <= 4.0 * U * (local[j1].hypot() + local[j2].hypot()) {
+            // Two coincident references fix no place (found by fuzzing:
+            // the triangle's base of length zero gave NaN).
+            issues.push(issue(
+                Some(k),
+                format!(
+                    "point \"{}\" cannot be placed: its reference points \"{}\" and \"{}\" coincide (give lengths that pair it with two distinct points of the link)",
+                    name(p),
+                    name(q1),
+                    name(q2)
+                ),
+            ));
+            continue;
+        }
         local[k] = match apex(local[j1], local[j2], r1, r2, side, flat) {
             Ok((at, _)) => at,
             // A degenerate triangle to the rounding of the data: on the

@@ -147,3 +147,23 @@ fn limit_magnitude() {
         "{e}"
     );
 }
+
+/// Found by the `shape` fuzz target: a point whose two reference points
+/// coincide (C drawn at A, D placed by its lengths to A and C) was placed
+/// at NaN; it is a clear error naming the point.
+#[test]
+fn coincident_references_are_an_error_not_nan() {
+    let text = r#"{"mechplan": 1,
+      "points": {"O": [0, 0], "A": [0.1, 0], "B": [0.5, 0], "C": [0.1, 0], "D": [0.3, 0.2], "Q": [0.6, 0]},
+      "links": {"0": {"points": ["O", "Q"]}, "1": {"points": ["O", "A"]},
+                "2": {"points": ["A", "B", "C", "D"]}, "3": {"points": ["Q", "B"]}},
+      "lengths": {"A-D": 0.28, "C-D": 0.28},
+      "input": {"link": "1", "pivot": "O", "angle": 0, "omega": 1}}"#;
+    let e = pipeline(text).unwrap_err().to_string();
+    assert!(
+        e.contains("/links/2/points/3")
+            && e.contains("\"D\" cannot be placed")
+            && e.contains("coincide"),
+        "{e}"
+    );
+}

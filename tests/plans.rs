@@ -528,8 +528,8 @@ fn numbers_only_plans_equal_full_plans() {
             // Emulated hand drafting too: the pencil moves the same way.
             let jitter = mechplan::construction::Drafting {
                 variant: mechplan::construction::Variant {
-                    mistake: None,
                     jitter: Some(s.q.to_bits()),
+                    ..Default::default()
                 },
                 ..an.drafting
             };

@@ -47,6 +47,14 @@ pub struct Answer {
     /// Pencil precision, mm.
     pub delta: f64,
     pub items: Vec<Item>,
+    /// For an acceleration plan: the scale of the student's velocity plan,
+    /// (m/s)/mm, whose measured ω give the normal components (their
+    /// drafting error grows with it). `None`: the standard scale.
+    pub mu_v: Option<f64>,
+    /// For an acceleration plan: the angular velocities the student took
+    /// from the velocity plan (link id, signed ω); the acceleration plan is
+    /// checked as built with them.
+    pub omegas: Vec<(String, f64)>,
 }
 
 /// The largest answer file read, JSON or SVG (8 MiB): a hand-drawn plan
@@ -148,10 +156,11 @@ pub fn from_json(text: &str) -> Result<Answer> {
     for k in o.keys() {
         if ![
             "plan", "position", "mu", "delta", "segments", "angles", "points", "values", "title",
+            "velocity",
         ]
         .contains(&k.as_str())
         {
-            issues.push(issue(format!("/{}", escape(k)), format!("unknown field \"{k}\" (allowed: plan, position, mu, delta, segments, angles, points, values)")));
+            issues.push(issue(format!("/{}", escape(k)), format!("unknown field \"{k}\" (allowed: plan, position, mu, delta, segments, angles, points, values, velocity)")));
         }
     }
     let plan = match o.get("plan").and_then(Value::as_str) {
@@ -271,13 +280,46 @@ pub fn from_json(text: &str) -> Result<Answer> {
     }
     for (ptr, key, v) in section("values", &mut issues) {
         let value = match &v {
-            Value::String(s) => parse_with_sense(s),
+            Value::String(s) => match parse_with_sense(s) {
+                Ok(x) => Some(x),
+                Err(why) => {
+                    issues.push(issue(&ptr, why));
+                    continue;
+                }
+            },
             v => v.as_f64().filter(|x| x.is_finite()),
         };
         let Some(value) = value else {
             issues.push(issue(&ptr, "expected a number (signed: counter-clockwise positive) or \"1.2 cw\" / \"1.2 ccw\""));
             continue;
         };
+        // A quantity of the other plan is a slip of the file, not of the
+        // plan: refuse it rather than read a_B as v_B.
+        let kind_of = |c: char| match c {
+            'w' | 'v' => PlanKind::Velocity,
+            _ => PlanKind::Acceleration,
+        };
+        if let (Some(p), Some((c, _))) = (plan, quantity(&key))
+            && kind_of(c) != p
+        {
+            issues.push(issue(
+                &ptr,
+                format!(
+                    "\"{key}\" belongs to the {} plan, but this answer is the {} plan",
+                    if kind_of(c) == PlanKind::Velocity {
+                        "velocity"
+                    } else {
+                        "acceleration"
+                    },
+                    if p == PlanKind::Velocity {
+                        "velocity"
+                    } else {
+                        "acceleration"
+                    },
+                ),
+            ));
+            continue;
+        }
         match quantity(&key) {
             Some(('w' | 'e', link)) => items.push(Item {
                 pointer: ptr,
@@ -307,6 +349,59 @@ pub fn from_json(text: &str) -> Result<Answer> {
             )),
         }
     }
+    // The velocity plan an acceleration plan was drawn from.
+    let (mut mu_v, mut omegas) = (None, Vec::new());
+    match o.get("velocity") {
+        None => {}
+        Some(_) if plan == Some(PlanKind::Velocity) => issues.push(issue(
+            "/velocity",
+            "a velocity plan has no velocity plan of its own: give \"velocity\" with an acceleration plan",
+        )),
+        Some(Value::Object(vo)) => {
+            for k in vo.keys() {
+                if !["mu", "values"].contains(&k.as_str()) {
+                    issues.push(issue(
+                        format!("/velocity/{}", escape(k)),
+                        format!("unknown field \"{k}\" (allowed: mu, values)"),
+                    ));
+                }
+            }
+            if let Some(m) = vo.get("mu") {
+                mu_v = number(m, "/velocity/mu", &mut issues).filter(|&m| {
+                    let ok = m > 0.0;
+                    if !ok {
+                        issues.push(issue("/velocity/mu", "a scale must be positive"));
+                    }
+                    ok
+                });
+            }
+            match vo.get("values") {
+                None => {}
+                Some(Value::Object(vals)) => {
+                    for (k, v) in vals {
+                        let ptr = format!("/velocity/values/{}", escape(k));
+                        let value = match v {
+                            Value::String(s) => parse_with_sense(s).map_err(|w| issues.push(issue(&ptr, w))).ok(),
+                            v => number(v, &ptr, &mut issues),
+                        };
+                        match (quantity(k), value) {
+                            (Some(('w', link)), Some(x)) => omegas.push((link, x)),
+                            (_, None) => {}
+                            _ => issues.push(issue(
+                                &ptr,
+                                format!("\"{k}\": the velocity plan's values here are the links' ω (omega2, ω3)"),
+                            )),
+                        }
+                    }
+                }
+                Some(_) => issues.push(issue("/velocity/values", "expected an object")),
+            }
+        }
+        Some(_) => issues.push(issue(
+            "/velocity",
+            "expected an object: { \"mu\": the velocity plan's scale, \"values\": { \"omega2\": … } }",
+        )),
+    }
     if items.is_empty() && issues.is_empty() {
         issues.push(issue(
             "",
@@ -322,19 +417,41 @@ pub fn from_json(text: &str) -> Result<Answer> {
         mu: mu.unwrap(),
         delta: delta.unwrap(),
         items,
+        mu_v,
+        omegas,
     })
 }
 
-/// "1.2 cw" → −1.2, "1.2 ccw" → 1.2, "-0.4" → −0.4.
-fn parse_with_sense(s: &str) -> Option<f64> {
-    let s = s.trim();
-    let (num, sign) = if let Some(n) = s.strip_suffix("ccw") {
-        (n, 1.0)
-    } else if let Some(n) = s.strip_suffix("cw") {
-        (n, -1.0)
+/// "1.2 cw" → −1.2, "1.2 ccw" → 1.2, "-0.4" → −0.4, in any case ("CW");
+/// a sign and a sense together ("-3.40 cw") contradict each other and are
+/// refused, never read one way or the other.
+fn parse_with_sense(s: &str) -> std::result::Result<f64, String> {
+    let t = s.trim();
+    let lower = t.to_lowercase();
+    let (num, sense) = if let Some(n) = lower.strip_suffix("ccw") {
+        (n.to_string(), Some(1.0))
+    } else if let Some(n) = lower.strip_suffix("cw") {
+        (n.to_string(), Some(-1.0))
     } else {
-        (s, 1.0)
+        (lower.clone(), None)
     };
-    let x: f64 = num.trim().parse().ok()?;
-    x.is_finite().then_some(x * sign)
+    let num = num.trim();
+    let bad = || {
+        format!(
+            "cannot read \"{t}\": write a number (counter-clockwise positive) or a magnitude with its sense, \"1.2 cw\" / \"1.2 ccw\""
+        )
+    };
+    let x: f64 = num.parse().map_err(|_| bad())?;
+    if !x.is_finite() {
+        return Err(bad());
+    }
+    match sense {
+        None => Ok(x),
+        Some(_) if num.starts_with(['-', '+']) => Err(format!(
+            "\"{t}\" gives both a sign and a sense of rotation: write \"{} {}\" or the signed number alone",
+            num.trim_start_matches(['-', '+']),
+            if lower.ends_with("ccw") { "ccw" } else { "cw" }
+        )),
+        Some(sign) => Ok(x * sign),
+    }
 }

@@ -1,22 +1,39 @@
 //! Checking hand-drawn plans: the student's answer item by item against
 //! the construction at the student's own scale, with a tolerance from the
-//! drafting-error model (pencil precision δ propagated through the
-//! construction, so it widens where lines meet at small angles), and a
-//! diagnosis: the plan is rebuilt with each typical mistake, and the one
-//! that explains the answer is named with the step where it happens.
+//! drafting-error model of the best-conditioned construction (pencil
+//! precision δ propagated through it), a verdict that is never "right"
+//! where the tolerance cannot tell the right answer from a typical mistake,
+//! and a diagnosis by model selection: the plan rebuilt with each typical
+//! mistake, made at one element or everywhere, and the one whose
+//! construction explains the answer within its own tolerance, clearly
+//! better than any other, named with the step where it enters.
 
 pub mod answer;
 pub mod svg;
 
-use crate::analytic::Drive;
-use crate::construction::text::{Lang, sentence};
-use crate::construction::{Drafting, Mistake, Plan, PlanKind, Setup, Variant, build_plans};
+use crate::analytic::{Drive, Order};
+use crate::construction::text::{Lang, num, sentence};
+use crate::construction::{
+    Drafting, Mistake, Plan, PlanKind, Setup, Variant, build_acceleration, build_plans,
+};
 use crate::error::{Error, Issue, Result};
 use crate::positions::{Configuration, PositionSolver};
-use crate::quantity::format_number;
 use crate::solve::{Analysis, Solved};
+use crate::structure::{AssurGroup, DyadKind};
 use answer::{Answer, Given, Quantity};
 use kurbo::Vec2;
+
+/// What the check says of one item.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Judgement {
+    /// Within the tolerance, and no typical mistake could have put it there.
+    Right,
+    /// Outside the tolerance: the construction cannot give it.
+    Wrong,
+    /// Within the tolerance, but the tolerance cannot tell the right answer
+    /// from a mistaken one at this position (the reason says why).
+    CannotJudge(String),
+}
 
 /// The verdict on one item.
 #[derive(Clone, Debug)]
@@ -31,18 +48,32 @@ pub struct Verdict {
     pub difference: f64,
     pub tolerance: f64,
     pub unit: &'static str,
-    pub ok: bool,
+    /// The same item on the plan, in mm (values: their segment), where it
+    /// has one: (expected, given).
+    pub on_plan: Option<(f64, f64)>,
+    /// The step of the construction that draws the item's point (1-based)
+    /// and its sentence.
+    pub step: Option<(usize, String)>,
+    pub judgement: Judgement,
 }
 
-/// A mistake that explains the answer.
+impl Verdict {
+    pub fn ok(&self) -> bool {
+        self.judgement == Judgement::Right
+    }
+}
+
+/// What explains a wrong answer.
 #[derive(Clone, Debug)]
 pub struct Diagnosis {
-    /// One sentence naming the mistake.
-    pub mistake: String,
-    /// The step of the construction where it happens, and its sentence.
+    /// One sentence naming the mistake; `None`: not recognised.
+    pub mistake: Option<String>,
+    /// The step of the construction where it enters, and its sentence.
     pub step: Option<(usize, String)>,
     /// How many items the mistaken construction explains.
     pub explained: usize,
+    /// Other explanations as good, when the answer cannot tell them apart.
+    pub alternatives: Vec<String>,
 }
 
 #[derive(Clone, Debug)]
@@ -61,18 +92,50 @@ pub struct Report {
 
 impl Report {
     pub fn wrong(&self) -> usize {
-        self.verdicts.iter().filter(|v| !v.ok).count()
+        self.verdicts
+            .iter()
+            .filter(|v| v.judgement == Judgement::Wrong)
+            .count()
+    }
+    pub fn unjudged(&self) -> usize {
+        self.verdicts
+            .iter()
+            .filter(|v| matches!(v.judgement, Judgement::CannotJudge(_)))
+            .count()
+    }
+    pub fn right(&self) -> usize {
+        self.verdicts.iter().filter(|v| v.ok()).count()
+    }
+    /// The exit status of `mechplan check`: 0 every item right, 1 any
+    /// wrong, 4 none wrong but some that cannot be judged here.
+    pub fn status(&self) -> u8 {
+        if self.wrong() > 0 {
+            1
+        } else if self.unjudged() > 0 {
+            4
+        } else {
+            0
+        }
     }
 }
 
-/// The best explanation so far: the candidate, (items explained, misfit),
-/// and the step where the mistake happens.
-type Best = (Candidate, (usize, f64), Option<(usize, String)>);
+/// The fraction of the plan's size beyond which a tolerance judges
+/// nothing: an item whose tolerance exceeds a fifth of the plan cannot be
+/// told from a point elsewhere on it.
+pub const MAX_TOLERANCE_OF_PLAN: f64 = 0.2;
 
 /// A way the plan may have been built wrong.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Candidate {
-    Mistake(Mistake),
+    /// A mistake at one decision (`Some(n)`) or every one, on the checked
+    /// plan or on both plans.
+    Mistake {
+        m: Mistake,
+        at: Option<usize>,
+        both: bool,
+    },
+    /// One vector laid off with a wrong length: the n-th, times `factor`.
+    Slip { at: usize, factor: f64 },
     /// The other assembly branch of group g.
     Branch(usize),
     /// Derived values scaled by a factor: μ in mm instead of m (1000 or
@@ -80,36 +143,57 @@ enum Candidate {
     Scale(f64),
 }
 
-const MISTAKES: [Mistake; 9] = [
+/// The discrete mistakes tried, one element at a time and everywhere.
+const MISTAKES: [Mistake; 13] = [
     Mistake::CoriolisReversed,
     Mistake::CoriolisForgotten,
+    Mistake::CoriolisFactorOne,
     Mistake::NormalFromCentre,
+    Mistake::NormalForgotten,
     Mistake::MirroredFigure,
     Mistake::WrongPerpendicular,
+    Mistake::TangentialParallel,
+    Mistake::WrongLink,
     Mistake::Epsilon1Forgotten,
     Mistake::Epsilon1Added,
     Mistake::OmegaWrongLink,
     Mistake::OmegaWrongSense,
 ];
 
-fn mistake_sentence(c: Candidate, mu: f64) -> String {
+fn mistake_sentence(c: Candidate, mu: f64, what: &str) -> String {
+    let one = |at: Option<usize>, every: &str, single: &str| -> String {
+        if at.is_some() {
+            single.to_string()
+        } else {
+            every.to_string()
+        }
+    };
     match c {
-        Candidate::Mistake(m) => match m {
-            Mistake::CoriolisReversed => "The Coriolis acceleration is turned the wrong way: turn the relative velocity by 90° in the sense of ω of the guide.".into(),
+        Candidate::Mistake { m, at, .. } => match m {
+            Mistake::CoriolisReversed => one(at, "The Coriolis acceleration is turned the wrong way: turn the relative velocity by 90° in the sense of ω of the guide.", "One Coriolis acceleration is turned the wrong way: turn the relative velocity by 90° in the sense of ω of the guide."),
             Mistake::CoriolisForgotten => "The Coriolis acceleration is forgotten: a point sliding on a rotating guide has a^k = 2·ω·v_rel.".into(),
-            Mistake::NormalFromCentre => "A normal component is laid off from the centre instead of toward it: a^n points from the point to the centre of its rotation.".into(),
-            Mistake::MirroredFigure => "A similar figure is mirrored: its letters must run around it in the same order as around the link.".into(),
+            Mistake::CoriolisFactorOne => "The Coriolis acceleration is taken as ω·v_rel: it is 2·ω·v_rel.".into(),
+            Mistake::NormalFromCentre => one(at, "Normal components are laid off from the centre instead of toward it: a^n points from the point to the centre of its rotation.", "One normal component is laid off from the centre instead of toward it: a^n points from the point to the centre of its rotation."),
+            Mistake::NormalForgotten => one(at, "The normal components ω²·l are forgotten.", "A normal component ω²·l is forgotten."),
+            Mistake::MirroredFigure => one(at, "The similar figures are mirrored: their letters must run around them in the same order as around the link.", "A similar figure is mirrored: its letters must run around it in the same order as around the link."),
             Mistake::WrongPerpendicular => "A perpendicular is drawn to the wrong link: v_CB is ⊥ BC, v_CD is ⊥ CD.".into(),
+            Mistake::TangentialParallel => one(at, "The relative (tangential) components are drawn parallel to the links instead of perpendicular to them.", "A relative (tangential) component is drawn parallel to its link instead of perpendicular to it."),
+            Mistake::WrongLink => "A point is taken on the wrong link: the guide's point (b₃) is not the slider's point (b₂); they differ by the relative sliding.".into(),
             Mistake::Epsilon1Forgotten => "The crank's tangential acceleration ε1·l is forgotten (ε1 ≠ 0).".into(),
             Mistake::Epsilon1Added => "A tangential acceleration of the crank is added although ε1 = 0.".into(),
-            Mistake::OmegaWrongLink => "A normal component ω²·l uses ω of the crank instead of the link's own ω.".into(),
+            Mistake::OmegaWrongLink => one(at, "The normal components ω²·l use ω of the crank instead of each link's own ω.", "A normal component ω²·l uses ω of the crank instead of the link's own ω."),
             Mistake::OmegaWrongSense => "The crank's velocity is laid off against the sense of ω1.".into(),
+            Mistake::Slip => "A vector is laid off with a wrong length.".into(),
         },
+        Candidate::Slip { factor, .. } => format!(
+            "A slip in one length: {what} is laid off {} times its right length (an arithmetic or measuring slip).",
+            num(factor)
+        ),
         Candidate::Branch(_) => "The mechanism is assembled on the other branch (a group drawn mirrored on the plan of the mechanism).".into(),
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
             "The scale μ is applied in the wrong units (mm instead of m, or the reverse): the derived values are off by 1000.".into()
         }
-        Candidate::Scale(_) => format!("The scale μ is inverted: values are segment/μ instead of segment·μ (μ = {}).", format_number(mu)),
+        Candidate::Scale(_) => format!("The scale μ is inverted: values are segment/μ instead of segment·μ (μ = {}).", num(mu)),
     }
 }
 
@@ -130,6 +214,37 @@ pub fn resolve(plan: &Plan, name: &str) -> Option<usize> {
         .position(|p| p.name().to_lowercase() == n || p.key.replace('_', "").to_lowercase() == n)
 }
 
+/// One item on one plan: what it is, its expected value and tolerance,
+/// the given value (compared modulo a turn for directions), the unit, how
+/// small a difference the pencil can show in that unit, the item in mm on
+/// the plan, and the plan point whose step draws it.
+struct Expected {
+    what: String,
+    expected: f64,
+    given: f64,
+    tol: f64,
+    unit: &'static str,
+    /// The pencil precision δ in the item's unit: a mistake that moves the
+    /// item by less cannot be seen on paper.
+    visible: f64,
+    /// (expected, given) in mm on the plan.
+    on_plan: Option<(f64, f64)>,
+    point: Option<usize>,
+    /// For a point: where this plan has it (mm from the pole).
+    place: Option<Vec2>,
+}
+
+impl Expected {
+    /// How far another construction's expectation of this item is from
+    /// this one's.
+    fn moved(&self, other: &Expected) -> f64 {
+        match (self.place, other.place) {
+            (Some(a), Some(b)) => (a - b).hypot(),
+            _ => (self.expected - other.expected).abs(),
+        }
+    }
+}
+
 /// The expected value and tolerance of an item on `plan`; `Err` names an
 /// unknown letter or link.
 fn expect(
@@ -137,7 +252,7 @@ fn expect(
     plan: &Plan,
     it: &answer::Item,
     delta: f64,
-) -> std::result::Result<(String, f64, f64, f64, &'static str), Issue> {
+) -> std::result::Result<Expected, Issue> {
     let unknown = |n: &str| Issue {
         pointer: it.pointer.clone(),
         message: format!(
@@ -162,46 +277,59 @@ fn expect(
         Given::Segment { from, mm, .. } => {
             let (a, b) = seg(from)?;
             let len = (p[b].at - p[a].at).hypot();
-            (
-                format!("segment {}{}", p[a].name(), p[b].name()),
-                len,
-                *mm,
-                p[a].err + p[b].err + delta,
-                "mm",
-            )
+            Expected {
+                what: format!("segment {}{}", p[a].name(), p[b].name()),
+                expected: len,
+                given: *mm,
+                tol: p[a].err + p[b].err + delta,
+                unit: "mm",
+                visible: delta,
+                on_plan: Some((len, *mm)),
+                point: Some(a.max(b)),
+                place: None,
+            }
         }
         Given::Angle { from, deg, .. } => {
             let (a, b) = seg(from)?;
             let d = p[b].at - p[a].at;
-            let tol = if d.hypot() > 0.0 {
-                ((p[a].err + p[b].err + delta) / d.hypot())
-                    .min(std::f64::consts::PI)
-                    .to_degrees()
-            } else {
-                180.0
+            let len = d.hypot();
+            let deg_of = |mm: f64| {
+                if len > 0.0 {
+                    (mm / len).min(std::f64::consts::PI).to_degrees()
+                } else {
+                    180.0
+                }
             };
             let exp = d.atan2().to_degrees();
             // Compare directions modulo a turn.
             let given = exp + crate::geom::wrap_pi((deg - exp).to_radians()).to_degrees();
-            (
-                format!("direction of {}{}", p[a].name(), p[b].name()),
-                exp,
+            Expected {
+                what: format!("direction of {}{}", p[a].name(), p[b].name()),
+                expected: exp,
                 given,
-                tol,
-                "°",
-            )
+                tol: deg_of(p[a].err + p[b].err + delta),
+                unit: "°",
+                visible: deg_of(delta),
+                on_plan: None,
+                point: Some(a.max(b)),
+                place: None,
+            }
         }
         Given::Point { name, at } => {
             let i = resolve(plan, name).ok_or_else(|| unknown(name))?;
             // Distance from the expected place is the difference; "expected" 0.
             let d = (Vec2::new(at[0], at[1]) - p[i].at).hypot();
-            (
-                format!("point {} (off its place)", p[i].name()),
-                0.0,
-                d,
-                p[i].err + delta,
-                "mm",
-            )
+            Expected {
+                what: format!("point {} (off its place)", p[i].name()),
+                expected: 0.0,
+                given: d,
+                tol: p[i].err + delta,
+                unit: "mm",
+                visible: delta,
+                on_plan: Some((0.0, d)),
+                point: Some(i),
+                place: Some(p[i].at),
+            }
         }
         Given::Value {
             quantity: Quantity::Point(name),
@@ -221,13 +349,18 @@ fn expect(
             } else {
                 ("a", "m/s²")
             };
-            (
-                format!("{sym}_{name}"),
-                p[i].at.hypot() * mu,
-                *value,
-                (p[i].err + delta) * mu,
+            let len = p[i].at.hypot();
+            Expected {
+                what: format!("{sym}_{name}"),
+                expected: len * mu,
+                given: *value,
+                tol: (p[i].err + delta) * mu,
                 unit,
-            )
+                visible: delta * mu,
+                on_plan: Some((len, value / mu)),
+                point: Some(i),
+                place: None,
+            }
         }
         Given::Value {
             quantity: Quantity::Rate(id),
@@ -247,7 +380,28 @@ fn expect(
             } else {
                 ("ε", "rad/s²")
             };
-            (format!("{sym}{id}"), r, *value, bound, unit)
+            let len = plan.rate_len[l];
+            let measured = plan
+                .measured
+                .iter()
+                .find(|q| q.quantity == format!("{sym}{id}"));
+            // A sense that cannot be read off this plan: magnitudes only.
+            let (r, given) = if plan.rate_sense[l] {
+                (r, *value)
+            } else {
+                (r.abs(), value.abs())
+            };
+            Expected {
+                what: format!("{sym}{id}"),
+                expected: r,
+                given,
+                tol: bound,
+                unit,
+                visible: if len > 0.0 { delta * mu / len } else { bound },
+                on_plan: (len > 0.0).then(|| (r.abs() * len / mu, value.abs() * len / mu)),
+                point: measured.map(|q| q.to),
+                place: None,
+            }
         }
     })
 }
@@ -258,57 +412,108 @@ fn names(plan: &Plan) -> String {
     v.join(", ")
 }
 
-/// The plan of `kind` built on configuration `c` at scale `mu`.
-fn plan_on(
-    an: &Analysis,
-    s: &Solved,
-    c: &Configuration,
-    kind: PlanKind,
-    mu: f64,
-    delta: f64,
-    variant: Variant,
-) -> Result<Plan> {
-    let setup = Setup {
-        m: &an.mech,
-        s: &an.structure,
-        need: &an.need,
-        points: &an.points,
-        include: &an.include,
-    };
-    let d = Drafting {
-        mu_v: if kind == PlanKind::Velocity {
-            Some(mu)
-        } else {
-            None
-        },
-        mu_a: if kind == PlanKind::Acceleration {
-            Some(mu)
-        } else {
-            None
-        },
-        delta,
-        variant,
-    };
-    let order = if kind == PlanKind::Velocity {
-        crate::analytic::Order::Velocity
-    } else {
-        crate::analytic::Order::Acceleration
-    };
-    let plans = build_plans(
-        &setup,
-        c,
+/// What the plans of one answer are built from.
+struct Builds<'a> {
+    an: &'a Analysis,
+    s: &'a Solved,
+    ans: &'a Answer,
+}
+
+impl Builds<'_> {
+    fn setup(&self) -> Setup<'_> {
+        Setup {
+            m: &self.an.mech,
+            s: &self.an.structure,
+            need: &self.an.need,
+            points: &self.an.points,
+            include: &self.an.include,
+        }
+    }
+
+    fn drive(&self) -> Drive {
         Drive {
-            q: s.q,
-            rate: s.rate,
-            rate2: s.rate2,
-        },
-        order,
-        d,
-    )?;
-    Ok(match kind {
-        PlanKind::Velocity => plans.velocity,
-        PlanKind::Acceleration => plans.acceleration.expect("asked for"),
-    })
+            q: self.s.q,
+            rate: self.s.rate,
+            rate2: self.s.rate2,
+        }
+    }
+
+    /// The answer's plan built on configuration `c` with `variant`: a
+    /// velocity plan at the student's μ; an acceleration plan at the
+    /// student's μ on their velocity plan (its μ_v, their measured ω).
+    fn plan(&self, c: &Configuration, variant: Variant) -> Result<Plan> {
+        let (ans, st) = (self.ans, self.setup());
+        let d = Drafting {
+            mu_v: Some(ans.mu),
+            mu_a: None,
+            delta: ans.delta,
+            variant,
+        };
+        if ans.plan == PlanKind::Velocity {
+            return Ok(build_plans(&st, c, self.drive(), Order::Velocity, d)?.velocity);
+        }
+        let dv = Drafting {
+            mu_v: ans.mu_v,
+            ..d
+        };
+        let mut vel = build_plans(&st, c, self.drive(), Order::Velocity, dv)?.velocity;
+        for (id, w) in &ans.omegas {
+            if let Some(l) = self.an.mech.scene.link_index(id)
+                && let Some(r) = vel.rates[l].as_mut()
+            {
+                r.0 = *w;
+            }
+        }
+        let da = Drafting {
+            mu_v: ans.mu_v,
+            mu_a: Some(ans.mu),
+            ..d
+        };
+        build_acceleration(&st, c, self.drive(), &vel, da)
+    }
+}
+
+/// A candidate's plan and how it fits the answer.
+struct Fit {
+    c: Candidate,
+    plan: Plan,
+    /// Per item, as this plan expects it (values scaled by a Scale
+    /// candidate's factor).
+    items: Vec<Expected>,
+}
+
+impl Fit {
+    /// The items within this construction's own tolerance, and the misfit
+    /// Σ (difference / tolerance)².
+    fn score(&self) -> (usize, f64) {
+        let mut ok = 0;
+        let mut misfit = 0.0;
+        for e in &self.items {
+            let d = (e.given - e.expected).abs() / e.tol.max(1e-300);
+            if d <= 1.0 {
+                ok += 1;
+            }
+            misfit += d.min(1e3).powi(2);
+        }
+        (ok, misfit)
+    }
+}
+
+/// The answer's items as plan `p` expects them, values scaled by `factor`.
+fn expectations(b: &Builds, p: &Plan, factor: f64) -> Option<Vec<Expected>> {
+    b.ans
+        .items
+        .iter()
+        .map(|it| {
+            let mut e = expect(b.an, p, it, b.ans.delta).ok()?;
+            if matches!(it.given, Given::Value { .. }) {
+                e.expected *= factor;
+                e.tol *= factor.abs();
+                e.visible *= factor.abs();
+            }
+            Some(e)
+        })
+        .collect()
 }
 
 /// Check `answer` against the scene's analysis.
@@ -324,46 +529,63 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         ));
     };
     if an.order.is_none()
-        || (ans.plan == PlanKind::Acceleration
-            && an.order != Some(crate::analytic::Order::Acceleration))
+        || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))
     {
         return Err(Error::scene(
             "/plan",
             "the scene's want.plans does not include this plan",
         ));
     }
-    let plan = plan_on(
-        an,
-        s,
-        &s.config,
-        ans.plan,
-        ans.mu,
-        ans.delta,
-        Variant::default(),
-    )?;
-    let mut verdicts = Vec::new();
+    for (id, _) in &ans.omegas {
+        if an.mech.scene.link_index(id).is_none() {
+            return Err(Error::scene(
+                format!("/velocity/values/omega{id}"),
+                format!("unknown link \"{id}\""),
+            ));
+        }
+    }
+    let b = Builds { an, s, ans };
+    let plan = b.plan(&s.config, Variant::default())?;
+    let mut exp = Vec::new();
     let mut issues = Vec::new();
     for it in &ans.items {
         match expect(an, &plan, it, ans.delta) {
-            Ok((what, expected, given, tol, unit)) => {
-                let difference = (given - expected).abs();
-                verdicts.push(Verdict {
-                    pointer: it.pointer.clone(),
-                    key: it.key.clone(),
-                    what,
-                    expected,
-                    given,
-                    difference,
-                    tolerance: tol,
-                    unit,
-                    ok: difference <= tol,
-                });
-            }
+            Ok(e) => exp.push(e),
             Err(i) => issues.push(i),
         }
     }
     if !issues.is_empty() {
         return Err(Error::Scene(issues));
+    }
+    let candidates = candidates(&b, &plan, &exp);
+    // The plan's size: the farthest of its points from the pole.
+    let size = plan.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+    let mut verdicts = Vec::new();
+    for (k, (it, e)) in ans.items.iter().zip(&exp).enumerate() {
+        let difference = (e.given - e.expected).abs();
+        let judgement = if difference > e.tol {
+            Judgement::Wrong
+        } else {
+            cannot_judge(k, e, size, plan.mu, &candidates, ans.mu)
+                .map(Judgement::CannotJudge)
+                .unwrap_or(Judgement::Right)
+        };
+        verdicts.push(Verdict {
+            pointer: it.pointer.clone(),
+            key: it.key.clone(),
+            what: e.what.clone(),
+            expected: e.expected,
+            given: e.given,
+            difference,
+            tolerance: e.tol,
+            unit: e.unit,
+            on_plan: e.on_plan,
+            step: e
+                .point
+                .and_then(|i| plan.step_of(i))
+                .map(|k| (k + 1, sentence(&plan, k, Lang::En))),
+            judgement,
+        });
     }
     let mut report = Report {
         plan: ans.plan,
@@ -376,104 +598,136 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         plan_built: plan,
     };
     if report.wrong() > 0 {
-        report.diagnosis = diagnose(an, s, ans, &report);
+        report.diagnosis = Some(diagnose(&b, &report, &exp, &candidates));
     }
     Ok(report)
 }
 
-/// Rebuild the plan with each candidate mistake; name the one that
-/// explains the answer (all items within tolerance, or far more of them
-/// than the correct plan with a much smaller misfit).
-fn diagnose(an: &Analysis, s: &Solved, ans: &Answer, report: &Report) -> Option<Diagnosis> {
-    let score = |plan: &Plan, factor: f64| -> Option<(usize, f64)> {
-        let mut ok = 0;
-        let mut misfit = 0.0;
-        for it in &ans.items {
-            let (_, mut expected, given, tol, _) = expect(an, plan, it, ans.delta).ok()?;
-            if matches!(it.given, Given::Value { .. }) {
-                expected *= factor;
-            }
-            let d = (given - expected).abs() / tol.max(1e-300);
-            if d <= 1.0 {
-                ok += 1;
-            }
-            misfit += d.min(30.0).powi(2);
-        }
-        Some((ok, misfit))
+/// Is item `k` (within its tolerance) one this answer cannot be judged
+/// on? Either its tolerance exceeds [`MAX_TOLERANCE_OF_PLAN`] of the plan,
+/// or the whole answer fits some typical mistake's construction within its
+/// tolerances as well, and that construction moves this item visibly (by
+/// more than the pencil's δ): the answer could be that mistake drawn
+/// carefully, so "right" would accept it.
+fn cannot_judge(
+    k: usize,
+    e: &Expected,
+    size: f64,
+    mu: f64,
+    candidates: &[Fit],
+    student_mu: f64,
+) -> Option<String> {
+    let tol_mm = match e.unit {
+        "mm" => e.tol,
+        "°" => None?,
+        _ => e
+            .on_plan
+            .map(|(x, _)| {
+                if e.expected != 0.0 {
+                    e.tol * x / e.expected.abs()
+                } else {
+                    e.tol / mu
+                }
+            })
+            .unwrap_or(e.tol / mu),
     };
-    let base = score(&report.plan_built, 1.0)?;
-    let mut best: Option<Best> = None;
-    let consider = |c: Candidate, plan: &Plan, factor: f64, best: &mut Option<Best>| {
-        let Some(sc) = score(plan, factor) else {
-            return;
-        };
-        if best
-            .as_ref()
-            .is_none_or(|b| sc.0 > b.1.0 || (sc.0 == b.1.0 && sc.1 < b.1.1))
-        {
-            let step = plan
-                .mistake_step
-                .map(|k| (k + 1, sentence(plan, k.min(plan.steps.len() - 1), Lang::En)));
-            *best = Some((c, sc, step));
+    if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
+        return Some(format!(
+            "its tolerance ({}) exceeds a fifth of the plan ({} across): near a dead point the construction cannot place it",
+            crate::quantity::format_quantity(tol_mm, "mm"),
+            crate::quantity::format_quantity(size, "mm")
+        ));
+    }
+    for f in candidates {
+        let other = &f.items[k];
+        let moved = e.moved(other);
+        // The whole answer fits a mistaken construction within its own
+        // tolerances, and that construction moves this item visibly: the
+        // answer cannot tell which was drawn. (An answer that contradicts
+        // the mistake anywhere rules it out.)
+        let fits = f.score().0 == f.items.len();
+        if moved > e.visible && fits {
+            return Some(format!(
+                "within its tolerance ({}) of the right construction and of a mistaken one that moves it by only {}: {}",
+                crate::quantity::format_quantity(e.tol, e.unit),
+                crate::quantity::format_quantity(moved, e.unit),
+                mistake_sentence(f.c, student_mu, &e.what)
+            ));
         }
+    }
+    None
+}
+
+/// Every discrete candidate's plan (the typical mistakes at each of their
+/// decisions and everywhere, the other branch of each group, the scale
+/// applied wrongly), with its expected values on the answer's items;
+/// candidates that change no item are left out.
+fn candidates(b: &Builds, plan: &Plan, exp: &[Expected]) -> Vec<Fit> {
+    let (an, s, ans) = (b.an, b.s, b.ans);
+    let fit = |c: Candidate, p: Plan, factor: f64| -> Option<Fit> {
+        let items = expectations(b, &p, factor)?;
+        // The same answer as the right construction: no candidate.
+        let differs = items
+            .iter()
+            .zip(exp)
+            .any(|(x, e)| e.moved(x) > 1e-9 * (1.0 + e.expected.abs() + e.tol));
+        differs.then_some(Fit { c, plan: p, items })
     };
-    let same = |a: &Plan, b: &Plan| {
-        a.points.len() == b.points.len()
-            && a.points
-                .iter()
-                .zip(&b.points)
-                .all(|(x, y)| (x.at - y.at).hypot() < 1e-9)
+    let mut out = Vec::new();
+    let variant = |m: Mistake, at: Option<usize>, both: bool| Variant {
+        mistake: Some(m),
+        at,
+        on: (!both).then_some(ans.plan),
+        ..Variant::default()
     };
     for m in MISTAKES {
-        let Ok(plan) = plan_on(
-            an,
-            s,
-            &s.config,
-            ans.plan,
-            ans.mu,
-            ans.delta,
-            Variant {
-                mistake: Some(m),
-                jitter: None,
-            },
-        ) else {
+        // How many decisions of this kind the checked plan takes.
+        let Ok(count) = b.plan(&s.config, variant(m, Some(usize::MAX), false)) else {
             continue;
         };
-        if plan.mistake_step.is_none() || same(&plan, &report.plan_built) {
-            continue;
+        let n = count.decisions;
+        let mut tries: Vec<(Option<usize>, bool)> = Vec::new();
+        if n > 0 {
+            tries.push((None, false));
         }
-        consider(Candidate::Mistake(m), &plan, 1.0, &mut best);
+        if n > 1 {
+            tries.extend((0..n).map(|i| (Some(i), false)));
+        }
+        if ans.plan == PlanKind::Acceleration {
+            // A mistake made on the velocity plan too (the student's ω).
+            tries.push((None, true));
+        }
+        for (at, both) in tries {
+            if let Ok(p) = b.plan(&s.config, variant(m, at, both))
+                && p.mistake_step.is_some()
+                && let Some(f) = fit(Candidate::Mistake { m, at, both }, p, 1.0)
+            {
+                out.push(f);
+            }
+        }
     }
     // The other assembly branch of each group with one.
     for g in 0..an.structure.groups.len() {
+        let has_branch = match &an.structure.groups[g] {
+            AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
+            AssurGroup::Triad(_) => false,
+        };
+        if !an.need[g] || !has_branch {
+            continue;
+        }
         let Ok(mut ps) = PositionSolver::new(&an.mech, &an.structure, an.need.clone()) else {
             continue;
         };
-        if !an.need[g]
-            || ps.branches.sign[g] == 0.0
-            || matches!(
-                an.structure.groups[g],
-                crate::structure::AssurGroup::Triad(_)
-            )
-        {
-            continue;
-        }
-        let kind_has_branch = match &an.structure.groups[g] {
-            crate::structure::AssurGroup::Dyad(d) => !matches!(
-                d.kind,
-                crate::structure::DyadKind::Prp | crate::structure::DyadKind::Rpp
-            ),
-            _ => false,
-        };
-        if !kind_has_branch {
+        if ps.branches.sign[g] == 0.0 {
             continue;
         }
         ps.branches.sign[g] = -ps.branches.sign[g];
         let Ok(c) = ps.solve_at(s.q) else { continue };
-        let Ok(plan) = plan_on(an, s, &c, ans.plan, ans.mu, ans.delta, Variant::default()) else {
-            continue;
-        };
-        consider(Candidate::Branch(g), &plan, 1.0, &mut best);
+        if let Ok(p) = b.plan(&c, Variant::default())
+            && let Some(f) = fit(Candidate::Branch(g), p, 1.0)
+        {
+            out.push(f);
+        }
     }
     if ans
         .items
@@ -481,22 +735,178 @@ fn diagnose(an: &Analysis, s: &Solved, ans: &Answer, report: &Report) -> Option<
         .any(|i| matches!(i.given, Given::Value { .. }))
     {
         for f in [1000.0, 1e-3, 1.0 / (ans.mu * ans.mu)] {
-            consider(Candidate::Scale(f), &report.plan_built, f, &mut best);
+            if let Some(x) = fit(Candidate::Scale(f), plan.clone(), f) {
+                out.push(x);
+            }
         }
     }
-    let (c, sc, step) = best?;
-    let n = ans.items.len();
-    let explains = sc.0 == n || (sc.0 > base.0 && sc.1 < base.1 / 4.0);
-    explains.then(|| Diagnosis {
-        mistake: mistake_sentence(c, ans.mu),
-        step,
-        explained: sc.0,
-    })
+    out
+}
+
+/// Name the mistake that explains the answer: the candidates whose
+/// construction puts every item within its own tolerance; of those the
+/// one with the least misfit, if no other explanation of a different kind
+/// comes close (within a factor 2 of its misfit); otherwise "not
+/// recognised". When no discrete mistake explains the answer, a slip in
+/// one laid-off length is tried (its factor fitted).
+fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) -> Diagnosis {
+    let n = exp.len();
+    let step_of = |f: &Fit| {
+        f.plan.mistake_step.map(|k| {
+            let k = k.min(f.plan.steps.len().saturating_sub(1));
+            (k + 1, sentence(&f.plan, k, Lang::En))
+        })
+    };
+    let what_of = |f: &Fit| -> String {
+        f.plan
+            .mistake_step
+            .and_then(|k| f.plan.steps.get(k))
+            .map(|st| match &st.op {
+                crate::construction::Op::LayOff { what, .. } => what.clone(),
+                _ => String::from("a vector"),
+            })
+            .unwrap_or_else(|| "a vector".into())
+    };
+    let mut explaining: Vec<(&Fit, f64)> = cands
+        .iter()
+        .filter_map(|f| {
+            let (ok, misfit) = f.score();
+            (ok == n).then_some((f, misfit))
+        })
+        .collect();
+    explaining.sort_by(|a, b| a.1.total_cmp(&b.1));
+    if let Some(&(best, misfit)) = explaining.first() {
+        let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f));
+        let name = sentence_of(best);
+        // Explanations of another kind that fit about as well.
+        let mut alternatives: Vec<String> = explaining[1..]
+            .iter()
+            .filter(|(f, m)| *m <= 2.0 * misfit.max(1e-12) && !same_kind(f.c, best.c))
+            .map(|(f, _)| sentence_of(f))
+            .collect();
+        alternatives.dedup();
+        let mistake = alternatives.is_empty().then_some(name.clone());
+        if mistake.is_none() {
+            alternatives.insert(0, name);
+        }
+        return Diagnosis {
+            mistake,
+            step: step_of(best),
+            explained: n,
+            alternatives,
+        };
+    }
+    // A slip in one length: each laid-off vector in turn, its factor fitted.
+    let mut best: Option<(Fit, f64)> = None;
+    if let Ok(count) = b.plan(
+        &b.s.config,
+        Variant {
+            mistake: Some(Mistake::Slip),
+            at: Some(usize::MAX),
+            on: Some(b.ans.plan),
+            ..Variant::default()
+        },
+    ) {
+        for at in 0..count.decisions {
+            if let Some((f, misfit)) = fit_slip(b, at, exp)
+                && best.as_ref().is_none_or(|x| misfit < x.1)
+            {
+                best = Some((f, misfit));
+            }
+        }
+    }
+    if let Some((f, _)) = best {
+        return Diagnosis {
+            mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f))),
+            step: step_of(&f),
+            explained: n,
+            alternatives: Vec::new(),
+        };
+    }
+    Diagnosis {
+        mistake: None,
+        step: None,
+        explained: 0,
+        alternatives: Vec::new(),
+    }
+}
+
+/// Two candidates that name the same mistake (one element of a kind and
+/// every element of it, on one plan or both).
+fn same_kind(a: Candidate, b: Candidate) -> bool {
+    match (a, b) {
+        (Candidate::Mistake { m: x, .. }, Candidate::Mistake { m: y, .. }) => x == y,
+        (Candidate::Branch(_), Candidate::Branch(_)) => true,
+        (Candidate::Scale(x), Candidate::Scale(y)) => x == y,
+        _ => false,
+    }
+}
+
+/// The laid-off vector `at` with its length times a factor fitted to the
+/// answer (a coarse grid, then golden sections); `Some` when the slip
+/// explains every item within its tolerance. Factors that are another
+/// named mistake (0: a component forgotten; −1: reversed; ½: a factor 2
+/// forgotten) are left to those.
+fn fit_slip(b: &Builds, at: usize, exp: &[Expected]) -> Option<(Fit, f64)> {
+    let eval = |factor: f64| -> Option<(Fit, f64, usize)> {
+        let p = b
+            .plan(
+                &b.s.config,
+                Variant {
+                    mistake: Some(Mistake::Slip),
+                    at: Some(at),
+                    on: Some(b.ans.plan),
+                    factor,
+                    ..Variant::default()
+                },
+            )
+            .ok()?;
+        let items = expectations(b, &p, 1.0)?;
+        let f = Fit {
+            c: Candidate::Slip { at, factor },
+            plan: p,
+            items,
+        };
+        let (ok, misfit) = f.score();
+        Some((f, misfit, ok))
+    };
+    let grid = [
+        0.1, 0.25, 0.5, 0.75, 0.9, 1.1, 1.25, 1.5, 2.0, 3.0, 5.0, 10.0,
+    ];
+    let mut best = (1.0, f64::INFINITY);
+    for &g in &grid {
+        if let Some((_, m, _)) = eval(g)
+            && m < best.1
+        {
+            best = (g, m);
+        }
+    }
+    // Golden sections on the log of the factor around the best grid point.
+    let (mut lo, mut hi) = ((best.0 / 2.0f64).ln(), (best.0 * 2.0f64).ln());
+    let phi = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..40 {
+        let (a, c) = (hi - phi * (hi - lo), lo + phi * (hi - lo));
+        let ma = eval(a.exp()).map_or(f64::INFINITY, |x| x.1);
+        let mc = eval(c.exp()).map_or(f64::INFINITY, |x| x.1);
+        if ma < mc {
+            hi = c;
+        } else {
+            lo = a;
+        }
+    }
+    let factor = (0.5 * (lo + hi)).exp();
+    let named = [0.0, -1.0, 0.5, 1.0]
+        .iter()
+        .any(|&x| (factor - x).abs() < 0.02);
+    let (f, misfit, ok) = eval(factor)?;
+    let moved = f.items.iter().zip(exp).any(|(x, e)| e.moved(x) > e.visible);
+    (ok == exp.len() && moved && !named).then_some((f, misfit))
 }
 
 /// The report as text for the terminal.
 pub fn to_text(r: &Report) -> String {
     use std::fmt::Write as _;
+    let fmt = crate::quantity::format_number;
     let mut t = String::new();
     let kind = if r.plan == PlanKind::Velocity {
         "velocity"
@@ -507,14 +917,14 @@ pub fn to_text(r: &Report) -> String {
         t,
         "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {}",
         r.position,
-        format_number(r.mu),
+        fmt(r.mu),
         crate::quantity::format_quantity(r.delta, "mm")
     );
     if r.worst_angle < 5.0 {
         let _ = writeln!(
             t,
             "note: lines of this construction meet at {}°; tolerances are wide here (near a dead centre)",
-            format_number(r.worst_angle)
+            fmt(r.worst_angle)
         );
     }
     let _ = writeln!(
@@ -523,31 +933,73 @@ pub fn to_text(r: &Report) -> String {
         "item", "expected", "given", "difference", "tolerance"
     );
     for v in &r.verdicts {
+        let verdict = match &v.judgement {
+            Judgement::Right => "RIGHT",
+            Judgement::Wrong => "WRONG",
+            Judgement::CannotJudge(_) => "CANNOT BE JUDGED",
+        };
         let _ = writeln!(
             t,
             "  {:<24} {:>12} {:>12} {:>12} {:>12}  {} {}",
             v.what,
-            format_number(v.expected),
-            format_number(v.given),
-            format_number(v.difference),
-            format_number(v.tolerance),
+            fmt(v.expected),
+            fmt(v.given),
+            fmt(v.difference),
+            fmt(v.tolerance),
             v.unit,
-            if v.ok { "OK" } else { "WRONG" }
+            verdict
         );
+        if !v.ok() {
+            if let Some((e, g)) = v.on_plan
+                && v.unit != "mm"
+            {
+                let _ = writeln!(
+                    t,
+                    "      on the plan: {} mm expected, {} mm given",
+                    fmt(e),
+                    fmt(g)
+                );
+            }
+            if let Some((k, s)) = &v.step {
+                let _ = writeln!(t, "      drawn at step {k}: {s}");
+            }
+            if let Judgement::CannotJudge(why) = &v.judgement {
+                let _ = writeln!(t, "      cannot be judged at this position: {why}");
+            }
+        }
     }
     let _ = writeln!(
         t,
-        "total: {} of {} right",
-        r.verdicts.len() - r.wrong(),
-        r.verdicts.len()
+        "total: {} of {} right, {} wrong, {} cannot be judged",
+        r.right(),
+        r.verdicts.len(),
+        r.wrong(),
+        r.unjudged()
     );
     if let Some(d) = &r.diagnosis {
-        let _ = writeln!(t, "likely mistake: {}", d.mistake);
-        if let Some((k, s)) = &d.step {
-            let _ = writeln!(t, "  at step {k}: {s}");
+        match &d.mistake {
+            Some(m) => {
+                let _ = writeln!(t, "likely mistake: {m}");
+                if let Some((k, s)) = &d.step {
+                    let _ = writeln!(t, "  it enters at step {k}: {s}");
+                }
+            }
+            None if !d.alternatives.is_empty() => {
+                let _ = writeln!(
+                    t,
+                    "mistake not recognised: these explain the answer equally well:"
+                );
+                for a in &d.alternatives {
+                    let _ = writeln!(t, "  - {a}");
+                }
+            }
+            None => {
+                let _ = writeln!(
+                    t,
+                    "mistake not recognised: no typical mistake explains these answers"
+                );
+            }
         }
-    } else if r.wrong() > 0 {
-        let _ = writeln!(t, "no single typical mistake explains these answers");
     }
     t
 }
@@ -562,12 +1014,25 @@ pub fn to_json(r: &Report) -> serde_json::Value {
         "worst_angle": r.worst_angle,
         "items": r.verdicts.iter().map(|v| serde_json::json!({
             "pointer": v.pointer, "key": v.key, "what": v.what, "expected": v.expected, "given": v.given,
-            "difference": v.difference, "tolerance": v.tolerance, "unit": v.unit, "ok": v.ok,
+            "difference": v.difference, "tolerance": v.tolerance, "unit": v.unit, "ok": v.ok(),
+            "judgement": match &v.judgement {
+                Judgement::Right => "right",
+                Judgement::Wrong => "wrong",
+                Judgement::CannotJudge(_) => "cannot be judged",
+            },
+            "reason": match &v.judgement { Judgement::CannotJudge(w) => Some(w.clone()), _ => None },
+            "on_plan_mm": v.on_plan.map(|(e, g)| serde_json::json!({ "expected": e, "given": g })),
+            "step": v.step.as_ref().map(|s| s.0),
+            "step_text": v.step.as_ref().map(|s| s.1.clone()),
         })).collect::<Vec<_>>(),
-        "right": r.verdicts.len() - r.wrong(),
+        "right": r.right(),
         "wrong": r.wrong(),
+        "cannot_be_judged": r.unjudged(),
+        "status": r.status(),
         "diagnosis": r.diagnosis.as_ref().map(|d| serde_json::json!({
-            "mistake": d.mistake, "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
+            "mistake": d.mistake, "recognised": d.mistake.is_some(),
+            "alternatives": d.alternatives,
+            "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
         })),
     })
 }
@@ -614,11 +1079,12 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
             "acceleration"
         },
         r.position,
-        r.verdicts.len() - r.wrong(),
+        r.right(),
         r.verdicts.len(),
         r.diagnosis
             .as_ref()
-            .map(|d| format!(" — {}", d.mistake))
+            .and_then(|d| d.mistake.as_ref())
+            .map(|m| format!(" — {m}"))
             .unwrap_or_default()
     );
     crate::drawing::page_svg(

@@ -333,6 +333,8 @@ pub fn from_svg(
         mu,
         delta,
         items,
+        mu_v: None,
+        omegas: Vec::new(),
     })
 }
 

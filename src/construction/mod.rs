@@ -218,6 +218,14 @@ pub struct Plan {
     /// Angular velocity (velocity plan) or acceleration (acceleration plan)
     /// of every constructed link, as measured; and its error bound.
     pub rates: Vec<Option<(f64, f64)>>,
+    /// The length each rate was measured over (the relative segment's
+    /// link length, m; 0 where a rate is taken over from another link).
+    pub rate_len: Vec<f64>,
+    /// Whether the sense of each rate can be read off the plan: the end of
+    /// its relative segment clear of the link's line by more than its
+    /// drafting error (only a plan drawn wrong has it on the line; then
+    /// the rate is known in magnitude only).
+    pub rate_sense: Vec<bool>,
     pub measured: Vec<Measured>,
     /// Smallest sine of an intersection angle (1 when none).
     pub worst_sin: f64,
@@ -227,9 +235,24 @@ pub struct Plan {
     pub of_point: Vec<Option<usize>>,
     /// With a deliberate mistake: the step where it was made.
     pub mistake_step: Option<usize>,
+    /// With a deliberate mistake: how many decisions of its kind the
+    /// construction took (whether made wrong or not).
+    pub decisions: usize,
 }
 
 impl Plan {
+    /// The step that draws plan point `idx` (its index in `steps`).
+    pub fn step_of(&self, idx: usize) -> Option<usize> {
+        self.steps.iter().position(|s| match &s.op {
+            Op::LayOff { to, .. } => *to == idx,
+            Op::Intersect { out, .. }
+            | Op::Similar { out, .. }
+            | Op::Divide { out, .. }
+            | Op::Coincide { out, .. } => *out == idx,
+            Op::Pole { .. } => idx == 0,
+            _ => false,
+        })
+    }
     pub fn point(&self, key: &str) -> Option<&PlanPoint> {
         self.points.iter().find(|p| p.key == key)
     }
@@ -296,18 +319,31 @@ fn lower_label(name: &str) -> (String, String) {
 
 /// A typical student's mistake, built into the construction on purpose so
 /// that a hand-drawn plan can be diagnosed by the mistake that explains it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Each kind is a decision the construction takes at certain steps (every
+/// normal component, every similar figure …); [`Variant::at`] makes it at
+/// one of them only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Mistake {
     /// The Coriolis acceleration turned the wrong way (against ω).
     CoriolisReversed,
     /// The Coriolis acceleration left out on a rotating guide.
     CoriolisForgotten,
+    /// The Coriolis acceleration as ω·v_rel, without the factor 2.
+    CoriolisFactorOne,
     /// A normal component laid off from the centre instead of toward it.
     NormalFromCentre,
+    /// A normal component ω²·l left out.
+    NormalForgotten,
     /// A similar figure built mirrored (letters in the wrong order).
     MirroredFigure,
     /// In an RRR group, each line drawn ⊥ the other link of the group.
     WrongPerpendicular,
+    /// A relative (tangential) component drawn ∥ the link instead of ⊥ it.
+    TangentialParallel,
+    /// A point taken on the wrong link: on a rocking guide, the guide's
+    /// coincident point b₃ taken as the slider's point b₂ (the relative
+    /// sliding ignored).
+    WrongLink,
     /// ε1 ≠ 0 but the tangential component of the crank's point left out.
     Epsilon1Forgotten,
     /// ε1 = 0 but a tangential component ε1·l added, taking ε1 = ω1².
@@ -316,16 +352,49 @@ pub enum Mistake {
     OmegaWrongLink,
     /// The crank's velocity laid off against the sense of ω1.
     OmegaWrongSense,
+    /// One vector laid off with a wrong length (an arithmetic or measuring
+    /// slip): its length times [`Variant::factor`].
+    Slip,
 }
 
 /// How to build a plan besides the standard way: with a mistake, or with
 /// every drafting operation perturbed by the pencil (a hand drawing).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct Variant {
     pub mistake: Option<Mistake>,
+    /// Which of the mistake's decisions is taken wrong, counted from 0 in
+    /// the order of the construction ([`Plan::decisions`] counts them);
+    /// `None`: every one (the mistake repeated wherever it can be made).
+    pub at: Option<usize>,
+    /// The plan the mistake is made on (`None`: both).
+    pub on: Option<PlanKind>,
+    /// For [`Mistake::Slip`]: the wrong length over the right one.
+    pub factor: f64,
     /// Seed of the pencil noise: each laid-off point, each line and each
     /// constructed point moves by at most δ.
     pub jitter: Option<u64>,
+}
+
+impl Default for Variant {
+    fn default() -> Self {
+        Variant {
+            mistake: None,
+            at: None,
+            on: None,
+            factor: 1.0,
+            jitter: None,
+        }
+    }
+}
+
+impl Variant {
+    /// The mistake `m` at every decision of its kind, on both plans.
+    pub fn everywhere(m: Mistake) -> Variant {
+        Variant {
+            mistake: Some(m),
+            ..Variant::default()
+        }
+    }
 }
 
 /// How a point of a link is placed ([`Builder::best_construction`]).
@@ -416,11 +485,14 @@ pub fn build(
             points: Vec::new(),
             steps: Vec::new(),
             rates: vec![None; m.links.len()],
+            rate_len: vec![0.0; m.links.len()],
+            rate_sense: vec![true; m.links.len()],
             measured: Vec::new(),
             worst_sin: 1.0,
             body: Vec::new(),
             of_point: vec![None; m.scene.points.len()],
             mistake_step: None,
+            decisions: 0,
         },
         vel,
         nr: non_rotating(m),
@@ -460,6 +532,8 @@ pub fn build(
     probe.measured.clear();
     probe.body.clear();
     probe.rates.fill(None);
+    probe.rate_len.fill(0.0);
+    probe.rate_sense.fill(true);
     probe.of_point.fill(None);
     let mut normal_of = b.normal_of;
     normal_of.fill(None);
@@ -471,6 +545,7 @@ pub fn build(
         plan: Plan {
             mu,
             mistake_step: None,
+            decisions: 0,
             worst_sin: 1.0,
             ..probe
         },
@@ -603,6 +678,11 @@ impl<'a> Builder<'a> {
         (key, label): (String, (String, String)),
         value_err: f64,
     ) -> usize {
+        let v = if self.making(Mistake::Slip) {
+            v * self.variant.factor
+        } else {
+            v
+        };
         let at = self.plan.points[from].at + v / self.plan.mu + self.pencil();
         let err = self.plan.points[from].err + self.plan.delta + value_err / self.plan.mu;
         let to = self.add_point(key, label, at, err);
@@ -643,16 +723,21 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// Is this mistake being made? Records the first step where it is.
+    /// Is this mistake being made at this decision? Counts the decisions
+    /// of its kind and records the first step where it is made.
     fn making(&mut self, m: Mistake) -> bool {
-        if self.variant.mistake == Some(m) {
-            if self.plan.mistake_step.is_none() {
-                self.plan.mistake_step = Some(self.plan.steps.len());
-            }
-            true
-        } else {
-            false
+        if self.variant.mistake != Some(m) || self.variant.on.is_some_and(|k| k != self.plan.kind) {
+            return false;
         }
+        let n = self.plan.decisions;
+        self.plan.decisions += 1;
+        if self.variant.at.is_some_and(|at| at != n) {
+            return false;
+        }
+        if self.plan.mistake_step.is_none() {
+            self.plan.mistake_step = Some(self.plan.steps.len());
+        }
+        true
     }
 
     fn intersect(
@@ -831,7 +916,7 @@ impl<'a> Builder<'a> {
                     let eerr = self.plan.rates[link].map(|r| r.1).unwrap_or(0.0);
                     let n_key = txt!(self, "n_{}", self.link(link));
                     let mut from = pa;
-                    if w != 0.0 {
+                    if w != 0.0 && !self.making(Mistake::NormalForgotten) {
                         from = self.lay_off(
                             pa,
                             -r * (w * w),
@@ -1015,16 +1100,21 @@ impl<'a> Builder<'a> {
         xname: &str,
     ) -> (PlanLine, usize) {
         let seg = txt!(self, "{jname}{xname}");
-        let u = perp(x - jw);
+        let u = if self.making(Mistake::TangentialParallel) {
+            x - jw
+        } else {
+            perp(x - jw)
+        };
         if self.vel_kind() {
             (self.line(j, u, Dir::Perp(seg)), j)
         } else {
             let mut w = self.omega(link);
-            if self.nr[link] || w == 0.0 {
+            if self.nr[link] || w == 0.0 || self.making(Mistake::NormalForgotten) {
                 return (self.line(j, u, Dir::Perp(seg)), j);
             }
             let input = self.m().scene.input.link();
-            if link != input && self.making(Mistake::OmegaWrongLink) {
+            // (A driving slider has no ω1 to take by mistake.)
+            if link != input && self.omega(input) != 0.0 && self.making(Mistake::OmegaWrongLink) {
                 w = self.omega(input);
             }
             let r = x - jw;
@@ -1089,7 +1179,12 @@ impl<'a> Builder<'a> {
         } else {
             1.0
         };
-        let k_vec = perp(vrel) * (2.0 * w * sense);
+        let factor = if self.making(Mistake::CoriolisFactorOne) {
+            1.0
+        } else {
+            2.0
+        };
+        let k_vec = perp(vrel) * (factor * w * sense);
         let verr = (vel.points[iu].err + vel.points[ik].err) * vel.mu;
         let k = self.lay_off(
             kx,
@@ -1134,9 +1229,16 @@ impl<'a> Builder<'a> {
         let len = r.hypot();
         let sign = r.cross(rel).signum();
         let value = sign * rel.hypot() / len;
-        let err =
-            (self.plan.points[to].err + self.plan.points[from].err + self.plan.delta) * mu / len;
+        let err_mm = self.plan.points[to].err + self.plan.points[from].err + self.plan.delta;
+        let err = err_mm * mu / len;
+        // The sense is read from the side of the link's line the relative
+        // segment's end lies on: within the drafting error of that line it
+        // cannot be read (only a plan drawn wrong has it there), and the
+        // rate is known only in magnitude.
+        let sense_known = !(len > 0.0 && (r.cross(rel) / len).abs() / mu <= err_mm);
+        self.plan.rate_sense[link] = sense_known;
         self.plan.rates[link] = Some((value, err));
+        self.plan.rate_len[link] = len;
         let quantity = if self.vel_kind() {
             txt!(self, "v_{xname}{jname}")
         } else {
@@ -1199,6 +1301,7 @@ impl<'a> Builder<'a> {
 
     fn same_rate(&mut self, link: usize, from: usize) {
         self.plan.rates[link] = self.plan.rates[from];
+        self.plan.rate_sense[link] = self.plan.rate_sense[from];
         let (a, b, w) = (
             self.link(link),
             self.link(from),
@@ -1535,7 +1638,12 @@ impl<'a> Builder<'a> {
                 let (mut key, mut label) = (jsn.to_lowercase(), self.label(&jsn));
                 key = txt!(self, "{key}_{}", self.link(g));
                 label.1 = self.link(g);
-                let x = self.intersect(la, lb, key, label)?;
+                let x = if self.making(Mistake::WrongLink) {
+                    // b₃ taken as b₂: the relative sliding ignored.
+                    js
+                } else {
+                    self.intersect(la, lb, key, label)?
+                };
                 self.register(g, jsw, x);
                 let _ = ps;
                 self.measure_rate(g, ta, x, (jgw, &jgn), (jsw, &xg));
@@ -1843,6 +1951,19 @@ pub fn build_plans(
     d: Drafting,
 ) -> Result<Plans> {
     plans(st, c, drive, order, d, false)
+}
+
+/// The acceleration plan built on a given velocity plan (its ω and
+/// relative velocities): a student's own velocity plan, at their scale,
+/// with the ω they measured.
+pub fn build_acceleration(
+    st: &Setup,
+    c: &Configuration,
+    drive: Drive,
+    vel: &Plan,
+    d: Drafting,
+) -> Result<Plan> {
+    build(st, c, drive, PlanKind::Acceleration, Some(vel), &d, false)
 }
 
 /// The same constructions as [`build_plans`], numbers only: every plan
