@@ -1764,9 +1764,47 @@ impl<'a> Builder<'a> {
     /// A three-leash group by Assur's special point: the axes of two
     /// leashes meet at S, taken on the base link; v_S (a_S) is reached from
     /// both leashes' outer joints along lines ⊥ their axes. The pair of
-    /// leashes whose axes meet at the largest angle is used (the documented
-    /// fallback when two axes are parallel).
+    /// leashes
+    /// whose construction is best conditioned: each of the three pairs is
+    /// drawn in turn and the one whose points come out with the smallest
+    /// largest error radius is kept (the largest angle between the axes
+    /// is not enough: a special point far out on the base carries large
+    /// normal components ω²·l of the base).
     fn triad(&mut self, t: &Triad) -> Result<()> {
+        let pairs = [(0, 1, 2), (0, 2, 1), (1, 2, 0)];
+        let saved = (self.plan.clone(), self.normal_of.clone(), self.rng.clone());
+        let start = self.plan.points.len();
+        let mut best: Option<(f64, (usize, usize, usize))> = None;
+        let mut first_err = None;
+        for pair in pairs {
+            (self.plan, self.normal_of, self.rng) = saved.clone();
+            match self.triad_by(t, Some(pair)) {
+                Ok(()) => {
+                    let worst = self.plan.points[start..]
+                        .iter()
+                        .map(|p| p.err)
+                        .fold(0.0, f64::max);
+                    if best.is_none_or(|b| worst < b.0) {
+                        best = Some((worst, pair));
+                    }
+                }
+                Err(e) => {
+                    first_err.get_or_insert(e);
+                }
+            }
+        }
+        (self.plan, self.normal_of, self.rng) = saved;
+        match best {
+            Some((_, pair)) => self.triad_by(t, Some(pair)),
+            // No pair constructs: the error of the best-angled one.
+            None => self.triad_by(t, None).and(Err(first_err.expect("three tries"))),
+        }
+    }
+
+    /// The three-leash group by the special point of leashes (i, j), the
+    /// third leash k found from it; `None`: the pair whose axes meet at the
+    /// largest angle.
+    fn triad_by(&mut self, t: &Triad, pair: Option<(usize, usize, usize)>) -> Result<()> {
         let m = self.m();
         let e: Vec<(usize, Point, String)> = (0..3)
             .map(|i| self.joint_on(t.ext[i].from, &t.ext[i]))
@@ -1786,16 +1824,18 @@ impl<'a> Builder<'a> {
         }
         let axis = |i: usize| Line::new(e[i].1, jw[i] - e[i].1);
         let pairs = [(0, 1, 2), (0, 2, 1), (1, 2, 0)];
-        let (i, j, k) = *pairs
-            .iter()
-            .max_by(|a, b| {
-                axis(a.0)
-                    .dir
-                    .cross(axis(a.1).dir)
-                    .abs()
-                    .total_cmp(&axis(b.0).dir.cross(axis(b.1).dir).abs())
-            })
-            .unwrap();
+        let (i, j, k) = pair.unwrap_or_else(|| {
+            *pairs
+                .iter()
+                .max_by(|a, b| {
+                    axis(a.0)
+                        .dir
+                        .cross(axis(a.1).dir)
+                        .abs()
+                        .total_cmp(&axis(b.0).dir.cross(axis(b.1).dir).abs())
+                })
+                .unwrap()
+        });
         let LineCut::Point { at: sw, .. } = crate::geom::intersect_lines(&axis(i), &axis(j), 1e-12)
         else {
             return Err(Error::Singular {
