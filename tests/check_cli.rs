@@ -82,3 +82,34 @@ fn exit_status_follows_the_verdict() {
         "nothing written on bad input"
     );
 }
+
+/// An item the construction cannot place within a fifth of the plan (the
+/// class III group's accelerations near its lock) is "cannot be judged":
+/// exit status 4, the reason printed, never "right".
+#[test]
+fn cannot_be_judged_has_its_own_status() {
+    let dir = std::env::temp_dir().join(format!("mechplan-check-unjudged-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = format!("{}/fixtures/class3_004.json", env!("CARGO_MANIFEST_DIR"));
+    let (code, out, _) = run(&["solve", &scene, "--format", "json"]);
+    assert_eq!(code, 0);
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let plan = &doc["positions"][0]["plans"]["acceleration"];
+    let answer = serde_json::json!({
+        "plan": "acceleration", "mu": plan["mu"], "points": { "d": plan["points"]["d"] }
+    });
+    let a = dir.join("answer.json");
+    std::fs::write(&a, answer.to_string()).unwrap();
+    let (code, out, err) = run(&["check", &scene, a.to_str().unwrap()]);
+    assert_eq!(code, 4, "{out}{err}");
+    assert!(
+        out.contains("CANNOT BE JUDGED") && out.contains("exceeds a fifth of the plan"),
+        "{out}"
+    );
+    let (code, out, _) = run(&["check", &scene, a.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(code, 4);
+    let r: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(r["status"], 4);
+    assert_eq!(r["items"][0]["judgement"], "cannot be judged");
+    let _ = std::fs::remove_dir_all(&dir);
+}

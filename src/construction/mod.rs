@@ -1797,7 +1797,9 @@ impl<'a> Builder<'a> {
         match best {
             Some((_, pair)) => self.triad_by(t, Some(pair)),
             // No pair constructs: the error of the best-angled one.
-            None => self.triad_by(t, None).and(Err(first_err.expect("three tries"))),
+            None => self
+                .triad_by(t, None)
+                .and(Err(first_err.expect("three tries"))),
         }
     }
 
