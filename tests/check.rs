@@ -738,3 +738,93 @@ fn bad_answers_are_refused_with_the_field_named() {
         assert!(err.contains(expect), "{text}: {err}");
     }
 }
+
+/// Two mistakes students combine (the Coriolis acceleration turned the
+/// wrong way, or forgotten, and the normal components laid off from the
+/// centre) are named together where each moves the answer visibly and no
+/// single mistake explains it.
+#[test]
+fn two_mistakes_together_are_named() {
+    let mut tried = 0;
+    for name in [
+        "shaper_fig2_11",
+        "rrp_rotating_guide_002",
+        "compressor_fig2_12",
+    ] {
+        let v = fixture(name);
+        let (an, solved) = positions(name, &v);
+        for (k, s) in solved.iter().enumerate() {
+            let plans = s.plans.as_ref().unwrap();
+            let (mu, mu_v) = (plans.acceleration.as_ref().unwrap().mu, plans.velocity.mu);
+            let reference =
+                drawn(&an, s, PlanKind::Acceleration, mu, mu_v, Variant::default()).unwrap();
+            for first in [Mistake::CoriolisReversed, Mistake::CoriolisForgotten] {
+                let make = |mistake: Mistake, also: Option<Mistake>| {
+                    let p = drawn(
+                        &an,
+                        s,
+                        PlanKind::Acceleration,
+                        mu,
+                        mu_v,
+                        Variant {
+                            mistake: Some(mistake),
+                            also,
+                            on: Some(PlanKind::Acceleration),
+                            ..Variant::default()
+                        },
+                    )?;
+                    let mut none = || 0.0;
+                    Some(items_of(&p, &reference, &an, &mut none))
+                };
+                let (Some(pair), Some(one), Some(other)) = (
+                    make(first, Some(Mistake::NormalFromCentre)),
+                    make(first, None),
+                    make(Mistake::NormalFromCentre, None),
+                ) else {
+                    continue;
+                };
+                // Each mistake must show beyond the other one's tolerance.
+                let r1 = check(
+                    &an,
+                    &solved,
+                    &answer(PlanKind::Acceleration, mu, mu_v, k + 1, one),
+                )
+                .unwrap();
+                let r2 = check(
+                    &an,
+                    &solved,
+                    &answer(PlanKind::Acceleration, mu, mu_v, k + 1, other),
+                )
+                .unwrap();
+                let r = check(
+                    &an,
+                    &solved,
+                    &answer(PlanKind::Acceleration, mu, mu_v, k + 1, pair),
+                )
+                .unwrap();
+                let single = |d: &Option<mechplan::check::Diagnosis>| {
+                    d.as_ref()
+                        .and_then(|d| d.mistake.clone())
+                        .is_some_and(|m| !m.contains("Two mistakes"))
+                };
+                if r1.wrong() == 0 || r2.wrong() == 0 || r.wrong() == 0 || single(&r.diagnosis) {
+                    continue;
+                }
+                tried += 1;
+                let d = r
+                    .diagnosis
+                    .as_ref()
+                    .and_then(|d| d.mistake.clone())
+                    .unwrap_or_else(|| mechplan::check::to_text(&r));
+                assert!(
+                    d.contains("Two mistakes")
+                        && d.contains("Coriolis")
+                        && d.contains("from the centre"),
+                    "{name} position {} {first:?}: {d}",
+                    k + 1
+                );
+            }
+        }
+    }
+    assert!(tried > 0, "no position where both mistakes show");
+}

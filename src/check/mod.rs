@@ -136,6 +136,8 @@ enum Candidate {
     },
     /// One vector laid off with a wrong length: the n-th, times `factor`.
     Slip { at: usize, factor: f64 },
+    /// Two mistakes together, each everywhere on the checked plan.
+    Pair(Mistake, Mistake),
     /// The other assembly branch of group g.
     Branch(usize),
     /// Derived values scaled by a factor: μ in mm instead of m (1000 or
@@ -189,6 +191,16 @@ fn mistake_sentence(c: Candidate, mu: f64, what: &str) -> String {
             "A slip in one length: {what} is laid off {} times its right length (an arithmetic or measuring slip).",
             num(factor)
         ),
+        Candidate::Pair(x, y) => {
+            let one = |m| {
+                mistake_sentence(
+                    Candidate::Mistake { m, at: None, both: false },
+                    mu,
+                    what,
+                )
+            };
+            format!("Two mistakes together: {} {}", one(x), one(y))
+        }
         Candidate::Branch(_) => "The mechanism is assembled on the other branch (a group drawn mirrored on the plan of the mechanism).".into(),
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
             "The scale μ is applied in the wrong units (mm instead of m, or the reverse): the derived values are off by 1000.".into()
@@ -796,6 +808,65 @@ fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) -> Diagnosi
             alternatives,
         };
     }
+    // Two mistakes combined, each everywhere: the pairs of the kinds this
+    // plan can make.
+    let kinds: Vec<Mistake> = {
+        let mut k: Vec<Mistake> = Vec::new();
+        for f in cands {
+            if let Candidate::Mistake { m, both: false, .. } = f.c
+                && !k.contains(&m)
+            {
+                k.push(m);
+            }
+        }
+        k
+    };
+    let mut pairs: Vec<(Fit, f64)> = Vec::new();
+    for (i, &x) in kinds.iter().enumerate() {
+        for &y in &kinds[i + 1..] {
+            let variant = Variant {
+                mistake: Some(x),
+                also: Some(y),
+                on: Some(b.ans.plan),
+                ..Variant::default()
+            };
+            if let Ok(p) = b.plan(&b.s.config, variant)
+                && let Some(items) = expectations(b, &p, 1.0)
+            {
+                let f = Fit {
+                    c: Candidate::Pair(x, y),
+                    plan: p,
+                    items,
+                };
+                let (ok, misfit) = f.score();
+                if ok == n {
+                    pairs.push((f, misfit));
+                }
+            }
+        }
+    }
+    pairs.sort_by(|a, b| a.1.total_cmp(&b.1));
+    if let Some((best, misfit)) = pairs.first() {
+        let others = pairs[1..]
+            .iter()
+            .filter(|p| p.1 <= 2.0 * misfit.max(1e-12))
+            .count();
+        let name = mistake_sentence(best.c, r.mu, &what_of(best));
+        return Diagnosis {
+            mistake: (others == 0).then(|| name.clone()),
+            step: step_of(best),
+            explained: n,
+            alternatives: if others == 0 {
+                Vec::new()
+            } else {
+                pairs
+                    .iter()
+                    .take(others + 1)
+                    .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0)))
+                    .collect()
+            },
+        };
+    }
     // A slip in one length: each laid-off vector in turn, its factor fitted.
     let mut best: Option<(Fit, f64)> = None;
     if let Ok(count) = b.plan(
@@ -838,6 +909,7 @@ fn same_kind(a: Candidate, b: Candidate) -> bool {
         (Candidate::Mistake { m: x, .. }, Candidate::Mistake { m: y, .. }) => x == y,
         (Candidate::Branch(_), Candidate::Branch(_)) => true,
         (Candidate::Scale(x), Candidate::Scale(y)) => x == y,
+        (Candidate::Pair(a, b), Candidate::Pair(c, d)) => (a, b) == (c, d),
         _ => false,
     }
 }

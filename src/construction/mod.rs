@@ -370,6 +370,10 @@ pub struct Variant {
     pub on: Option<PlanKind>,
     /// For [`Mistake::Slip`]: the wrong length over the right one.
     pub factor: f64,
+    /// A second mistake made together with the first, everywhere it can
+    /// be (students combine some: a Coriolis acceleration reversed and the
+    /// normals from the centre).
+    pub also: Option<Mistake>,
     /// Seed of the pencil noise: each laid-off point, each line and each
     /// constructed point moves by at most δ.
     pub jitter: Option<u64>,
@@ -382,6 +386,7 @@ impl Default for Variant {
             at: None,
             on: None,
             factor: 1.0,
+            also: None,
             jitter: None,
         }
     }
@@ -726,7 +731,17 @@ impl<'a> Builder<'a> {
     /// Is this mistake being made at this decision? Counts the decisions
     /// of its kind and records the first step where it is made.
     fn making(&mut self, m: Mistake) -> bool {
-        if self.variant.mistake != Some(m) || self.variant.on.is_some_and(|k| k != self.plan.kind) {
+        if self.variant.on.is_some_and(|k| k != self.plan.kind) {
+            return false;
+        }
+        if self.variant.also == Some(m) && self.variant.mistake != Some(m) {
+            // A second mistake combined with the first, made everywhere.
+            if self.plan.mistake_step.is_none() {
+                self.plan.mistake_step = Some(self.plan.steps.len());
+            }
+            return true;
+        }
+        if self.variant.mistake != Some(m) {
             return false;
         }
         let n = self.plan.decisions;
