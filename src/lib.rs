@@ -1,33 +1,37 @@
 //! mechplan: graphoanalytic kinematic analysis of planar linkages.
 //!
-//! The data flow follows the method of a TMM course: [`scene`] (the file) →
-//! [`mechanism`] (rigid links, pairs) → [`structure`] (mobility, Assur
-//! groups) → [`positions`] → [`analytic`] (two independent routes) →
-//! [`solve`] (sequences of positions, the cross-check) → [`report`].
+//! The modules follow the data flow of the method of a TMM course
+//! (docs/architecture.md): [`model`] (the scene file, rigid links, Assur
+//! groups) → [`kinematics`] (positions, two analytic routes, the plans as
+//! constructions, the analysis of a scene's positions) → [`studies`]
+//! (centres, invariants, diagrams) and [`verification`] (checking
+//! hand-drawn plans, the extended-precision reference) → [`presentation`]
+//! (result files, tables, sheets).
 
-pub mod analytic;
-pub mod centres;
-pub mod check;
-pub mod construction;
-pub mod diagrams;
-pub mod drawing;
+pub mod kinematics;
+pub mod model;
+pub mod presentation;
+pub mod studies;
+pub mod verification;
+
 pub mod error;
-pub mod frenet;
 pub mod geom;
-pub mod invariants;
 pub mod json;
-pub mod mechanism;
 pub mod output;
-pub mod positions;
-pub mod precision;
 pub mod progress;
-pub mod quantity;
-pub mod reference;
-pub mod report;
-pub mod scene;
-pub mod shape;
-pub mod solve;
-pub mod structure;
+
+// The paths of the first, flat layout, kept: tests, benches and fuzz
+// targets reach the internals by them.
+#[doc(hidden)]
+pub use kinematics::{analytic, construction, positions, solve};
+#[doc(hidden)]
+pub use model::{mechanism, scene, shape, structure};
+#[doc(hidden)]
+pub use presentation::{drawing, quantity, report};
+#[doc(hidden)]
+pub use studies::{centres, diagrams, frenet, invariants};
+#[doc(hidden)]
+pub use verification::{check, precision, reference};
 
 pub use error::{Error, Issue, Result};
 pub use scene::Scene;

@@ -1,0 +1,668 @@
+//! Route (b): a general constraint solver, independent of the group
+//! decomposition's formulas. Each moving link is a pose (x, y, θ); each
+//! revolute pair gives two equations (its point coincides on both links),
+//! each prismatic pair two (no relative rotation; the slider's point on the
+//! guide line), the input one. Positions by Newton's method from the
+//! previous solution, velocities and accelerations by linear solves with
+//! the constraint Jacobian, whose conditioning is checked by SVD.
+
+use super::{Motion, Order};
+use crate::error::{Error, Result};
+use crate::geom::{Pose, perp, rotate, wrap_pi};
+use crate::kinematics::positions::{describe_input, sketch_input, sketch_slider_ref};
+use crate::model::mechanism::Mechanism;
+use crate::model::scene::InputSpec;
+use kurbo::{Point, Vec2};
+use nalgebra::{DMatrix, DVector};
+
+#[derive(Clone, Debug)]
+enum Constraint {
+    /// Point `point` of links a and b coincide (2 rows).
+    Revolute { point: usize, a: usize, b: usize },
+    /// Prismatic pair k (2 rows).
+    Prismatic { k: usize },
+    /// The input coordinate (1 row).
+    Driver,
+}
+
+/// Newton's stopping rule and the limit of conditioning accepted.
+#[derive(Clone, Copy, Debug)]
+pub struct Settings {
+    /// Stop when every correction is below `tol` × its unknown's own scale
+    /// (a coordinate: its link's size and magnitude; an angle: one radian).
+    pub tol: f64,
+    pub max_iter: usize,
+    /// Smallest accepted ratio σ_min/σ_max of the scaled Jacobian.
+    pub min_conditioning: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            tol: 1e-15,
+            max_iter: 60,
+            min_conditioning: 1e-13,
+        }
+    }
+}
+
+/// The largest turn of the path over one step of the path follower (in
+/// the links' own lengths): small enough that the predictor stays closer
+/// to its assembly than to any other (at a neck of width δ the radius of
+/// the path is about δ, so a step is a few hundredths of δ).
+const MAX_TURN: f64 = 0.035;
+
+/// The solver over a subset of links (those the wanted output needs).
+#[derive(Clone, Debug)]
+pub struct ConstraintSolver<'a> {
+    m: &'a Mechanism,
+    /// Moving links solved, in order; their unknowns are 3·i .. 3·i+3.
+    links: Vec<usize>,
+    slot: Vec<Option<usize>>,
+    cons: Vec<Constraint>,
+    q: DVector<f64>,
+    last_input: f64,
+    settings: Settings,
+    /// Each solved link's own size ([`Mechanism::link_scale`]), parallel to `links`.
+    scale: Vec<f64>,
+    /// σ_min/σ_max of the scaled Jacobian at the last solve.
+    pub conditioning: f64,
+    /// Steps the last walk along the input took (path following).
+    pub steps: usize,
+}
+
+impl<'a> ConstraintSolver<'a> {
+    /// `include[l]`: link l is solved (the frame is always fixed).
+    pub fn new(m: &'a Mechanism, include: &[bool], settings: Settings) -> ConstraintSolver<'a> {
+        let frame = m.frame();
+        let links: Vec<usize> = (0..m.links.len())
+            .filter(|&l| l != frame && include[l])
+            .collect();
+        let mut slot = vec![None; m.links.len()];
+        for (i, &l) in links.iter().enumerate() {
+            slot[l] = Some(i);
+        }
+        let inside = |l: usize| l == frame || include[l];
+        let mut cons = Vec::new();
+        for p in 0..m.scene.points.len() {
+            let ls: Vec<usize> = m
+                .links_of_point(p)
+                .into_iter()
+                .filter(|&l| inside(l))
+                .collect();
+            for &b in ls.iter().skip(1) {
+                cons.push(Constraint::Revolute {
+                    point: p,
+                    a: ls[0],
+                    b,
+                });
+            }
+        }
+        for (k, pr) in m.prismatics.iter().enumerate() {
+            if inside(pr.slider) && inside(pr.guide) {
+                cons.push(Constraint::Prismatic { k });
+            }
+        }
+        cons.push(Constraint::Driver);
+        let mut q = DVector::zeros(3 * links.len());
+        for (i, &l) in links.iter().enumerate() {
+            let p = m.links[l].sketch_pose;
+            q[3 * i] = p.origin.x;
+            q[3 * i + 1] = p.origin.y;
+            q[3 * i + 2] = p.angle;
+        }
+        let scale = links.iter().map(|&l| m.link_scale(l)).collect();
+        ConstraintSolver {
+            m,
+            links,
+            slot,
+            cons,
+            q,
+            last_input: f64::NAN,
+            settings,
+            scale,
+            conditioning: 1.0,
+            steps: 0,
+        }
+    }
+
+    fn pose(&self, q: &DVector<f64>, l: usize) -> Pose {
+        match self.slot[l] {
+            Some(i) => Pose::new(Point::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]),
+            None => Pose::IDENTITY,
+        }
+    }
+
+    fn rows(&self) -> usize {
+        self.cons
+            .iter()
+            .map(|c| {
+                if matches!(c, Constraint::Driver) {
+                    1
+                } else {
+                    2
+                }
+            })
+            .sum()
+    }
+
+    /// Constraint residuals Φ(q) at input coordinate `x`.
+    fn residual(&self, q: &DVector<f64>, x: f64) -> DVector<f64> {
+        let m = self.m;
+        let mut r = DVector::zeros(self.rows());
+        let mut row = 0;
+        for c in &self.cons {
+            match *c {
+                Constraint::Revolute { point, a, b } => {
+                    let d = self.pose(q, a).apply(m.local(a, point))
+                        - self.pose(q, b).apply(m.local(b, point));
+                    r[row] = d.x;
+                    r[row + 1] = d.y;
+                    row += 2;
+                }
+                Constraint::Prismatic { k } => {
+                    let pr = &m.prismatics[k];
+                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
+                    r[row] = wrap_pi(ps.angle - pg.angle - pr.delta);
+                    let line = pr.line(&pg);
+                    r[row + 1] = line.dir.cross(ps.apply(pr.slider_local) - line.point);
+                    row += 2;
+                }
+                Constraint::Driver => {
+                    let d = self.driver_value(q) - x;
+                    // A crank angle is defined modulo a turn.
+                    r[row] = match m.scene.input {
+                        InputSpec::Crank { .. } => wrap_pi(d),
+                        InputSpec::Slider { .. } => d,
+                    };
+                    row += 1;
+                }
+            }
+        }
+        r
+    }
+
+    fn driver_value(&self, q: &DVector<f64>) -> f64 {
+        let m = self.m;
+        match m.scene.input {
+            InputSpec::Crank { link, pivot, .. } => {
+                let pts = &m.links[link].points;
+                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                let w = m.local(link, other) - m.local(link, pivot);
+                self.pose(q, link).angle + w.atan2()
+            }
+            InputSpec::Slider { link, pair, .. } => {
+                let pr = &m.prismatics[pair];
+                let u = pr.line(&Pose::IDENTITY).dir;
+                u.dot(self.pose(q, link).apply(pr.slider_local) - sketch_slider_ref(m, pair))
+            }
+        }
+    }
+
+    /// The Jacobian ∂Φ/∂q (analytic).
+    fn jacobian(&self, q: &DVector<f64>) -> DMatrix<f64> {
+        let m = self.m;
+        let mut j = DMatrix::zeros(self.rows(), q.len());
+        // d(world point)/d(pose of l): [I | k×r].
+        let put_point =
+            |j: &mut DMatrix<f64>, row: usize, l: usize, r: Vec2, sign: f64, w: Vec2| {
+                // Row of w·(world point of l) with r = R(θ)·local.
+                if let Some(i) = self.slot[l] {
+                    j[(row, 3 * i)] += sign * w.x;
+                    j[(row, 3 * i + 1)] += sign * w.y;
+                    j[(row, 3 * i + 2)] += sign * w.dot(perp(r));
+                }
+            };
+        let mut row = 0;
+        for c in &self.cons {
+            match *c {
+                Constraint::Revolute { point, a, b } => {
+                    let ra = self.pose(q, a).dir(m.local(a, point));
+                    let rb = self.pose(q, b).dir(m.local(b, point));
+                    for (k, w) in [(0, Vec2::new(1.0, 0.0)), (1, Vec2::new(0.0, 1.0))] {
+                        put_point(&mut j, row + k, a, ra, 1.0, w);
+                        put_point(&mut j, row + k, b, rb, -1.0, w);
+                    }
+                    row += 2;
+                }
+                Constraint::Prismatic { k } => {
+                    let pr = &m.prismatics[k];
+                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
+                    if let Some(i) = self.slot[pr.slider] {
+                        j[(row, 3 * i + 2)] += 1.0;
+                    }
+                    if let Some(i) = self.slot[pr.guide] {
+                        j[(row, 3 * i + 2)] -= 1.0;
+                    }
+                    // f = u × (Q − P): u and P turn with the guide.
+                    let line = pr.line(&pg);
+                    let u = line.dir;
+                    let rs = ps.dir(pr.slider_local);
+                    let rg = pg.dir(pr.line_point);
+                    let d = ps.apply(pr.slider_local) - line.point;
+                    // cross(u, X) = (−u.y, u.x)·X
+                    let n = Vec2::new(-u.y, u.x);
+                    put_point(&mut j, row + 1, pr.slider, rs, 1.0, n);
+                    put_point(&mut j, row + 1, pr.guide, rg, -1.0, n);
+                    if let Some(i) = self.slot[pr.guide] {
+                        j[(row + 1, 3 * i + 2)] += perp(u).cross(d);
+                    }
+                    row += 2;
+                }
+                Constraint::Driver => {
+                    match m.scene.input {
+                        InputSpec::Crank { link, .. } => {
+                            let i = self.slot[link].expect("input is solved");
+                            j[(row, 3 * i + 2)] = 1.0;
+                        }
+                        InputSpec::Slider { link, pair, .. } => {
+                            let pr = &m.prismatics[pair];
+                            let u = pr.line(&Pose::IDENTITY).dir;
+                            let r = self.pose(q, link).dir(pr.slider_local);
+                            put_point(&mut j, row, link, r, 1.0, u);
+                        }
+                    }
+                    row += 1;
+                }
+            }
+        }
+        j
+    }
+
+    /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in q̇).
+    fn gamma(&self, q: &DVector<f64>, qd: &DVector<f64>, input_acc: f64) -> DVector<f64> {
+        let m = self.m;
+        let mut g = DVector::zeros(self.rows());
+        let rate = |l: usize| self.slot[l].map_or(0.0, |i| qd[3 * i + 2]);
+        let lin =
+            |l: usize| self.slot[l].map_or(Vec2::ZERO, |i| Vec2::new(qd[3 * i], qd[3 * i + 1]));
+        let mut row = 0;
+        for c in &self.cons {
+            match *c {
+                Constraint::Revolute { point, a, b } => {
+                    let ra = self.pose(q, a).dir(m.local(a, point));
+                    let rb = self.pose(q, b).dir(m.local(b, point));
+                    let t = ra * rate(a).powi(2) - rb * rate(b).powi(2);
+                    g[row] = t.x;
+                    g[row + 1] = t.y;
+                    row += 2;
+                }
+                Constraint::Prismatic { k } => {
+                    let pr = &m.prismatics[k];
+                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
+                    let line = pr.line(&pg);
+                    let u = line.dir;
+                    let (ws, wg) = (rate(pr.slider), rate(pr.guide));
+                    let rs = ps.dir(pr.slider_local);
+                    let rg = pg.dir(pr.line_point);
+                    let d = ps.apply(pr.slider_local) - line.point;
+                    let dd = (lin(pr.slider) + perp(rs) * ws) - (lin(pr.guide) + perp(rg) * wg);
+                    // f̈ = ü×d + 2u̇×ḋ + u×d̈; move the q̈-free part to γ.
+                    let quad = (-u * wg * wg).cross(d)
+                        + 2.0 * (perp(u) * wg).cross(dd)
+                        + u.cross(-rs * ws * ws + rg * wg * wg);
+                    g[row + 1] = -quad;
+                    row += 2;
+                }
+                Constraint::Driver => {
+                    g[row] = match m.scene.input {
+                        InputSpec::Crank { .. } => input_acc,
+                        InputSpec::Slider { link, pair, .. } => {
+                            let pr = &m.prismatics[pair];
+                            let u = pr.line(&Pose::IDENTITY).dir;
+                            let r = self.pose(q, link).dir(pr.slider_local);
+                            input_acc + rate(link).powi(2) * u.dot(r)
+                        }
+                    };
+                    row += 1;
+                }
+            }
+        }
+        g
+    }
+
+    /// The scale of each row: a length for the rows that close points, a
+    /// link's size for the rows of angles (a prismatic pair's relative
+    /// angle, a crank's angle).
+    fn row_scales(&self) -> Vec<f64> {
+        let m = self.m;
+        let size_of = |l: usize| self.slot[l].map_or(0.0, |i| self.scale[i]);
+        let mut out = Vec::with_capacity(self.rows());
+        for c in &self.cons {
+            match *c {
+                Constraint::Revolute { .. } => out.extend([1.0, 1.0]),
+                Constraint::Prismatic { k } => {
+                    let pr = &m.prismatics[k];
+                    let l = size_of(pr.slider).max(size_of(pr.guide));
+                    out.extend([l.max(f64::MIN_POSITIVE), 1.0]);
+                }
+                Constraint::Driver => out.push(match m.scene.input {
+                    InputSpec::Crank { link, .. } => size_of(link),
+                    InputSpec::Slider { .. } => 1.0,
+                }),
+            }
+        }
+        out
+    }
+
+    /// σ_min/σ_max of the Jacobian with every unknown and every equation
+    /// in the lengths of the links it concerns: θ columns times their
+    /// link's size, angle rows likewise, then each column to unit norm
+    /// (a small linkage in a large sketch is as well conditioned as the
+    /// same linkage alone).
+    fn scaled_conditioning(&self, j: &DMatrix<f64>) -> f64 {
+        let mut js = j.clone();
+        for (r, sc) in self.row_scales().into_iter().enumerate() {
+            js.row_mut(r).scale_mut(sc);
+        }
+        for i in 0..self.links.len() {
+            js.column_mut(3 * i + 2).scale_mut(1.0 / self.scale[i]);
+        }
+        for c in 0..js.ncols() {
+            let n = js.column(c).norm();
+            if n > 0.0 {
+                js.column_mut(c).scale_mut(1.0 / n);
+            }
+        }
+        let sv = js.singular_values();
+        let max = sv.max();
+        if max == 0.0 { 0.0 } else { sv.min() / max }
+    }
+
+    /// The largest correction relative to the rounding of its unknown: a
+    /// coordinate against its link's size and its own magnitude, an angle
+    /// against one radian.
+    fn correction(&self, q: &DVector<f64>, dq: &DVector<f64>) -> f64 {
+        let mut big = 0.0f64;
+        for i in 0..self.links.len() {
+            let l = self.scale[i];
+            big = big
+                .max(dq[3 * i].abs() / (l + q[3 * i].abs()))
+                .max(dq[3 * i + 1].abs() / (l + q[3 * i + 1].abs()))
+                .max(dq[3 * i + 2].abs() / (1.0 + q[3 * i + 2].abs()));
+        }
+        big
+    }
+
+    /// Newton's method at input `x` from the current state. Converged when
+    /// every correction is at the rounding of its unknown (or `tol`); it
+    /// fails when the corrections stop contracting (`strict`: each at most
+    /// half the one before, as the path follower demands of its corrector)
+    /// or after `max_iter`.
+    fn newton(&mut self, x: f64, strict: bool) -> std::result::Result<usize, String> {
+        let s = self.settings;
+        let floor = s.tol.max(4.0 * f64::EPSILON);
+        let mut last = f64::INFINITY;
+        for it in 0..s.max_iter {
+            let r = self.residual(&self.q, x);
+            // At the rounding of the equations (their lengths and the
+            // coordinates' magnitudes) a nearly singular Jacobian turns the
+            // rounding into corrections that need not contract: the
+            // equations hold as well as they can, and κ bounds the rest.
+            let at_rounding = r.amax() <= 64.0 * f64::EPSILON * self.magnitude();
+            let j = self.jacobian(&self.q);
+            let Some(dq) = j.lu().solve(&r) else {
+                return Err("the constraint Jacobian is singular".into());
+            };
+            let big = self.correction(&self.q, &dq);
+            if !big.is_finite() {
+                return Err("Newton's method diverged".into());
+            }
+            self.q -= &dq;
+            if big <= floor || (at_rounding && it > 0) {
+                return Ok(it + 1);
+            }
+            if strict && !at_rounding && big > 0.5 * last && last > 16.0 * floor {
+                return Err(format!(
+                    "Newton's method contracts too slowly ({big:.1e} after {last:.1e})"
+                ));
+            }
+            last = big;
+        }
+        let r = self.residual(&self.q, x).amax();
+        let reach = self.scale.iter().copied().fold(0.0, f64::max);
+        if !strict && r <= 1e-12 * reach {
+            Ok(s.max_iter)
+        } else {
+            Err(format!(
+                "Newton's method did not converge (residual {})",
+                crate::presentation::quantity::format_quantity(r, "")
+            ))
+        }
+    }
+
+    /// The size of the numbers in the equations: the largest link and the
+    /// largest coordinate of a solved link.
+    fn magnitude(&self) -> f64 {
+        let mut x = 0.0f64;
+        for i in 0..self.links.len() {
+            x = x.max(self.scale[i] + self.q[3 * i].abs().max(self.q[3 * i + 1].abs()));
+        }
+        x
+    }
+
+    /// The tangent of the path, dq/dx from Φ_q·q' = −∂Φ/∂x (the driver's
+    /// row alone depends on x), and the sign of det Φ_q: the sign of the
+    /// assembly's orientation, which changes only where the path meets a
+    /// singular position (where two assemblies meet).
+    fn tangent(&self) -> Option<(DVector<f64>, f64)> {
+        let j = self.jacobian(&self.q);
+        let mut b = DVector::zeros(self.rows());
+        let last = b.len() - 1;
+        b[last] = 1.0;
+        let lu = j.lu();
+        let u = lu.u();
+        let mut sign: f64 = lu.p().determinant();
+        for i in 0..u.nrows().min(u.ncols()) {
+            sign *= u[(i, i)].signum();
+        }
+        Some((lu.solve(&b)?, sign))
+    }
+
+    /// A direction on the path in the links' own lengths (x, y over the
+    /// link's size, θ, and the input over its own scale), of unit length,
+    /// to measure how the path turns.
+    fn unit_direction(&self, t: &DVector<f64>, dx: f64) -> DVector<f64> {
+        let mut d = DVector::zeros(t.len() + 1);
+        for i in 0..self.links.len() {
+            d[3 * i] = t[3 * i] / self.scale[i];
+            d[3 * i + 1] = t[3 * i + 1] / self.scale[i];
+            d[3 * i + 2] = t[3 * i + 2];
+        }
+        d[t.len()] = dx;
+        let n = d.norm();
+        if n > 0.0 { d / n } else { d }
+    }
+
+    /// Positions at input coordinate `x`, reached by continuation from the
+    /// previous solve (from the sketch at first), the short way round.
+    pub fn solve_positions(&mut self, x: f64) -> Result<()> {
+        let last = self.last_input();
+        let span = match self.m.scene.input {
+            InputSpec::Crank { .. } => wrap_pi(x - last),
+            InputSpec::Slider { .. } => x - last,
+        };
+        self.solve_positions_by(x, span)
+    }
+
+    /// Positions at input coordinate `x`, reached from the previous solve
+    /// by turning the input through `span` (which way round a rocking
+    /// crank goes is the caller's: the way the mechanism assembles).
+    pub fn solve_positions_by(&mut self, x: f64, span: f64) -> Result<()> {
+        let err = |why: String| Error::Assembly {
+            group: "the mechanism (constraint solver)".into(),
+            at: describe_input(self.m, x),
+            why,
+        };
+        if self.last_input.is_nan() {
+            let x0 = sketch_input(self.m);
+            self.newton(x0, false).map_err(err)?;
+            self.last_input = x0;
+        }
+        self.walk(span).map_err(err)?;
+        self.last_input = x;
+        Ok(())
+    }
+
+    /// The input coordinate of the last solved position (the sketch's
+    /// before the first).
+    pub fn last_input(&self) -> f64 {
+        if self.last_input.is_nan() {
+            sketch_input(self.m)
+        } else {
+            self.last_input
+        }
+    }
+
+    /// Follow the assembly along the input from the last solved coordinate
+    /// by `span`: a predictor along the path's tangent, Newton's corrector,
+    /// and step control. A step is halved when the path turns by more than
+    /// [`MAX_TURN`] over it, when the corrector does not contract (each
+    /// correction at most half the last), or when the Jacobian is singular
+    /// on the way; it grows again after easy steps. So a narrow neck (a
+    /// near-toggle, a change point passed at 1e-11) is passed on the same
+    /// assembly in steps as small as the neck, and open country in steps
+    /// up to 5° (or 5 % of the input link's size).
+    ///
+    /// This is the same branch that route (a) takes by its sign rule: the
+    /// orientation sign of a group (docs/analysis.md) changes only through
+    /// a toggle, where the two assemblies meet; a path that never meets
+    /// the other assembly keeps its sign.
+    fn walk(&mut self, span: f64) -> std::result::Result<(), String> {
+        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
+        let input_scale = if crank {
+            1.0
+        } else {
+            let l = self.m.scene.input.link();
+            self.slot[l].map_or(self.m.size, |i| self.scale[i])
+        };
+        let max_step = if crank {
+            5f64.to_radians()
+        } else {
+            0.05 * input_scale
+        };
+        let start = self.last_input;
+        let end = start + span;
+        // The smallest step worth taking: the rounding of the input itself.
+        let min_step = 64.0 * f64::EPSILON * (start.abs().max(end.abs()) + input_scale);
+        let mut x = start;
+        let mut h = max_step.min(span.abs());
+        let dir = span.signum();
+        self.steps = 0;
+        let Some((mut t, sign)) = self.tangent() else {
+            return Err("the constraint Jacobian is singular at the start of the path".into());
+        };
+        while (end - x) * dir > 0.0 {
+            let to = if (end - x).abs() <= h {
+                end
+            } else {
+                x + dir * h
+            };
+            let dx = to - x;
+            let saved = self.q.clone();
+            // Predictor along the tangent, then Newton's corrector.
+            self.q += &t * dx;
+            // The step stands if the corrector contracts, the path turns
+            // little over it, and the orientation keeps its sign: a step
+            // over a narrow neck, whose ends may look alike, lands on the
+            // other assembly, of the other sign.
+            let accepted = match self.newton(to, true) {
+                Ok(_) => match self.tangent() {
+                    Some((t_new, sign_new)) => {
+                        let a = self.unit_direction(&t, 1.0 / input_scale);
+                        let b = self.unit_direction(&t_new, 1.0 / input_scale);
+                        let turn = a.dot(&b).clamp(-1.0, 1.0).acos();
+                        (turn <= MAX_TURN && sign_new == sign).then_some((t_new, turn))
+                    }
+                    None => None,
+                },
+                Err(_) => None,
+            };
+            match accepted {
+                Some((t_new, turn)) => {
+                    x = to;
+                    t = t_new;
+                    self.steps += 1;
+                    if turn < 0.25 * MAX_TURN {
+                        h = (h * 1.5).min(max_step);
+                    }
+                }
+                None => {
+                    self.q = saved;
+                    h *= 0.5;
+                    if h < min_step {
+                        return Err(format!(
+                            "the assembly cannot be followed past {} (steps down to {} do not converge on it)",
+                            describe_input(self.m, x),
+                            crate::presentation::quantity::format_quantity(
+                                h,
+                                if crank { "rad" } else { "m" }
+                            )
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Velocities and (if asked) accelerations at the last solved position.
+    pub fn solve_rates(
+        &mut self,
+        rate: f64,
+        rate2: f64,
+        order: Order,
+    ) -> Result<Vec<Option<Motion>>> {
+        let j = self.jacobian(&self.q);
+        self.conditioning = self.scaled_conditioning(&j);
+        if self.conditioning < self.settings.min_conditioning {
+            return Err(Error::Singular {
+                at: describe_input(self.m, self.last_input),
+                why: format!(
+                    "the constraint Jacobian is ill-conditioned (σ_min/σ_max = {:.2e})",
+                    self.conditioning
+                ),
+            });
+        }
+        let lu = j.lu();
+        let mut b = DVector::zeros(self.rows());
+        let last = b.len() - 1;
+        b[last] = rate;
+        let qd = lu.solve(&b).expect("conditioning checked");
+        let qdd = if order == Order::Acceleration {
+            Some(
+                lu.solve(&self.gamma(&self.q, &qd, rate2))
+                    .expect("conditioning checked"),
+            )
+        } else {
+            None
+        };
+        let mut out = vec![None; self.m.links.len()];
+        out[self.m.frame()] = Some(Motion::from_point(
+            Pose::IDENTITY,
+            Point::ORIGIN,
+            Vec2::ZERO,
+            Vec2::ZERO,
+            0.0,
+            0.0,
+        ));
+        for (i, &l) in self.links.iter().enumerate() {
+            let pose = self.pose(&self.q, l);
+            let v = Vec2::new(qd[3 * i], qd[3 * i + 1]);
+            let (a, eps) = match &qdd {
+                Some(a) => (Vec2::new(a[3 * i], a[3 * i + 1]), a[3 * i + 2]),
+                None => (Vec2::ZERO, 0.0),
+            };
+            out[l] = Some(Motion::from_point(
+                pose,
+                pose.origin,
+                v,
+                a,
+                qd[3 * i + 2],
+                eps,
+            ));
+        }
+        let _ = rotate;
+        Ok(out)
+    }
+}

@@ -1,0 +1,9 @@
+//! The kinematics: positions group by group ([`positions`]), velocities
+//! and accelerations by two independent analytic routes ([`analytic`]) and
+//! as the plans a draftsman draws ([`construction`]), and the analysis of a
+//! scene's positions with their cross-check ([`solve`]).
+
+pub mod analytic;
+pub mod construction;
+pub mod positions;
+pub mod solve;

@@ -1,0 +1,208 @@
+//! The kinematic diagrams sheet, as the lecture's Fig. 2.6 draws them: the
+//! displacement, velocity-analogue and acceleration-analogue diagrams one
+//! above the other, abscissas parallel and ordinate axes on one vertical;
+//! divisions 0…N; the chords of each curve; the poles P1, P2 on the
+//! abscissas at H1, H2 left of the origin with their rays to the ordinate
+//! axis; the ordinates carried to the interval midpoints (velocity) or to
+//! the nodes (acceleration) and joined; the analytic curve thin beside.
+
+use super::canvas::{Canvas, Class, Label, SMALL};
+use super::{DrawOptions, Sheet, page_svg};
+use crate::kinematics::construction::text::num;
+use crate::kinematics::solve::Analysis;
+use crate::studies::diagrams::{DENSE, Diagrams};
+use kurbo::{Point, Vec2};
+
+/// The gap between two diagrams, mm.
+const GAP: f64 = 14.0;
+
+/// The diagrams' sheet.
+pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
+    let m = &an.mech;
+    let mut c = Canvas::default();
+    let dx = d.h / d.mu_phi;
+    let n = d.n;
+    let l = dx * n as f64;
+    let x = |k: f64| k * dx;
+    // Vertical extents of the three curves (mm), for stacking.
+    let s_mm: Vec<f64> = d.s.iter().map(|v| v / d.mu_s).collect();
+    let ext = |v: &mut dyn Iterator<Item = f64>| {
+        v.fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)))
+    };
+    let es = ext(&mut s_mm
+        .iter()
+        .copied()
+        .chain(d.dense.iter().map(|p| p.0 / d.mu_s)));
+    let ev = ext(&mut d
+        .y1
+        .iter()
+        .copied()
+        .chain(d.dense.iter().map(|p| p.1 / d.mu_v)));
+    let ea = ext(&mut d
+        .y2
+        .iter()
+        .copied()
+        .chain(d.dense.iter().map(|p| p.2 / d.mu_a)));
+    let oy_s = 0.0;
+    let oy_v = oy_s + es.0 - GAP - ev.1;
+    let oy_a = oy_v + ev.0 - GAP - ea.1;
+    let (sym, unit) = if d.slide {
+        ("s".to_string(), "m")
+    } else {
+        (format!("φ{}", m.link_id(d.output)), "rad")
+    };
+    let divisions = |c: &mut Canvas, oy: f64, pole: Option<(f64, &str)>, name: &str| {
+        let left = pole.map(|(h, _)| -h).unwrap_or(0.0) - 4.0;
+        c.seg(Point::new(left, oy), Point::new(l + 8.0, oy), Class::Thin);
+        c.arrow(Point::new(l + 8.0, oy), Vec2::new(1.0, 0.0));
+        c.label(Point::new(l + 8.0, oy), Label::new("φ", "1"), SMALL, None);
+        let step = n.div_ceil(12);
+        for k in 0..=n {
+            let p = Point::new(x(k as f64), oy);
+            c.seg(
+                p - Vec2::new(0.0, 1.0),
+                p + Vec2::new(0.0, 1.0),
+                Class::Thin,
+            );
+            if k % step == 0 {
+                c.text(
+                    p + Vec2::new(-1.0, -4.5),
+                    Label::new(k.to_string(), ""),
+                    SMALL,
+                    "",
+                );
+            }
+        }
+        c.text(Point::new(1.5, oy + 1.5), Label::new(name, ""), SMALL, "");
+        if let Some((h, pname)) = pole {
+            let p = Point::new(-h, oy);
+            c.dot(p, pname.to_string());
+            c.text(
+                p + Vec2::new(-2.5, -4.5),
+                Label::new("P", &pname[1..]),
+                SMALL,
+                "",
+            );
+            c.text(
+                Point::new(-h - 1.0, oy - 9.0),
+                Label::new("H", &pname[1..]).with_tail(format!(" = {} mm", num(h))),
+                SMALL,
+                "",
+            );
+        }
+    };
+    // The ordinate axis, through all three diagrams.
+    let top = oy_s + es.1 + 8.0;
+    let bottom = oy_a + ea.0 - 4.0;
+    c.seg(Point::new(0.0, bottom), Point::new(0.0, top), Class::Thin);
+    c.arrow(Point::new(0.0, top), Vec2::new(0.0, 1.0));
+    // Displacement: the curve, its points 0, 1′, 2′ … and the chords.
+    divisions(&mut c, oy_s, None, &sym);
+    let dense_pts = |f: &dyn Fn(&(f64, f64, f64)) -> f64, oy: f64| -> Vec<Point> {
+        d.dense
+            .iter()
+            .enumerate()
+            .map(|(j, p)| Point::new(x(j as f64 / DENSE as f64), oy + f(p)))
+            .collect()
+    };
+    let curve = |c: &mut Canvas, pts: &[Point], class: Class| {
+        for w in pts.windows(2) {
+            c.seg(w[0], w[1], class);
+        }
+    };
+    curve(&mut c, &dense_pts(&|p| p.0 / d.mu_s, oy_s), Class::Main);
+    for k in 0..n {
+        let (a, b) = (
+            Point::new(x(k as f64), oy_s + s_mm[k]),
+            Point::new(x(k as f64 + 1.0), oy_s + s_mm[k + 1]),
+        );
+        c.seg(a, b, Class::Thin);
+        c.dot(a, format!("s{k}"));
+    }
+    // Velocity analogue: P1's rays parallel to the chords, their ordinates
+    // carried to the midpoints, the curve through them.
+    divisions(&mut c, oy_v, Some((d.h1, "P1")), &format!("{sym}′"));
+    let mut graphical = Vec::new();
+    for (k, &y) in d.y1.iter().enumerate() {
+        let on_axis = Point::new(0.0, oy_v + y);
+        c.seg(Point::new(-d.h1, oy_v), on_axis, Class::Thin);
+        let at = Point::new(x(k as f64 + 0.5), oy_v + y);
+        c.seg(on_axis, at, Class::Thin);
+        c.dot(at, format!("v{k}"));
+        graphical.push(at);
+    }
+    curve(&mut c, &graphical, Class::Main);
+    curve(&mut c, &dense_pts(&|p| p.1 / d.mu_v, oy_v), Class::Thin);
+    // Acceleration analogue from the velocity diagram's chords, with P2.
+    divisions(&mut c, oy_a, Some((d.h2, "P2")), &format!("{sym}″"));
+    let mut graphical = Vec::new();
+    for (k, &y) in
+        d.y2.iter()
+            .enumerate()
+            .chain(std::iter::once((n, &d.y2[0])))
+    {
+        let on_axis = Point::new(0.0, oy_a + y);
+        if k < n {
+            c.seg(Point::new(-d.h2, oy_a), on_axis, Class::Thin);
+        }
+        let at = Point::new(x(k as f64), oy_a + y);
+        c.seg(on_axis, at, Class::Thin);
+        c.dot(at, format!("a{k}"));
+        graphical.push(at);
+    }
+    curve(&mut c, &graphical, Class::Main);
+    curve(&mut c, &dense_pts(&|p| p.2 / d.mu_a, oy_a), Class::Thin);
+    // The scales, as the lecture writes them.
+    let lines = [
+        format!(
+            "μ_{sym} = {} {unit}/mm,  μ_φ = 2π/{} = {} rad/mm",
+            num(d.mu_s),
+            num(l),
+            num(d.mu_phi)
+        ),
+        format!(
+            "μ_{sym}′ = μ_{sym}/(H1·μ_φ) = {} ({unit}/rad)/mm",
+            num(d.mu_v)
+        ),
+        format!(
+            "μ_{sym}″ = μ_{sym}′/(H2·μ_φ) = {} ({unit}/rad²)/mm",
+            num(d.mu_a)
+        ),
+    ];
+    for (i, t) in lines.iter().enumerate() {
+        c.text(
+            Point::new(0.0, bottom - 8.0 - 5.0 * i as f64),
+            Label::new(t.clone(), ""),
+            SMALL,
+            "",
+        );
+    }
+    let what = if let Some(p) = d.point {
+        format!("point {} along its path", m.point_name(p))
+    } else if d.slide {
+        format!("slider {}", m.link_id(d.output))
+    } else {
+        format!("link {}", m.link_id(d.output))
+    };
+    page_svg(
+        "diagrams".into(),
+        format!("Kinematic diagrams of {what}: {sym}, {sym}′, {sym}″ (N = {n}, chords)"),
+        &c,
+        None,
+        opt,
+    )
+}
+
+/// The diagrams sheet a scene asks for (`want.drawings` has "diagrams"):
+/// the output of the last group, N = 12 as the lecture draws them.
+pub fn wanted(an: &Analysis, opt: &DrawOptions) -> crate::error::Result<Option<Sheet>> {
+    if !an.mech.scene.want.drawings.iter().any(|w| w == "diagrams") {
+        return Ok(None);
+    }
+    let out = crate::studies::invariants::default_output(an);
+    let d = Diagrams::build(an, out, 12, LENGTH)?;
+    Ok(Some(sheet(an, &d, opt)))
+}
+
+/// The abscissa of a revolution, mm.
+pub const LENGTH: f64 = 180.0;

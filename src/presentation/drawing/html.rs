@@ -1,0 +1,1019 @@
+//! The step-by-step handout (`mechplan draw --html`): one self-contained
+//! HTML file (inline CSS, JS and SVG, nothing fetched) that shows, for each
+//! position, the plan of the mechanism and the plans of velocities and
+//! accelerations being drawn step by step, with the lecture-style sentence
+//! of the current step, the sentences so far, and the result tables.
+//!
+//! Every SVG element a step draws sits in a `<g data-step="k">` (k from 1;
+//! `data-until="m"` when it is replaced at step m, as a shared label that
+//! grows when a coinciding point joins it); the page's script shows the
+//! elements with `data-step` ≤ the current step. Steps that draw nothing
+//! new (measuring a segment already drawn) mark what they use for their
+//! own step only. `#step=N` opens the N-th step of the whole handout,
+//! `#pos=P` (and `#pos=P&step=K`) a position, `#selftest` steps through
+//! every step and reports in the page's title.
+
+use super::canvas::{Canvas, Prim, fmt, xml};
+use super::{mechanism, plan, scale_label, words};
+use crate::error::Result;
+use crate::kinematics::construction::text::{Lang, num, sentence};
+use crate::kinematics::construction::{Op, Plan, PlanKind};
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::model::scene::InputSpec;
+use kurbo::Point;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Words of the page around the drawings.
+struct Ui {
+    prev: &'static str,
+    next: &'static str,
+    start: &'static str,
+    all: &'static str,
+    step: &'static str,
+    of: &'static str,
+    keys: &'static str,
+    position: &'static str,
+    points: &'static str,
+    links: &'static str,
+    measured: &'static str,
+    point: &'static str,
+    link: &'static str,
+    segment: &'static str,
+    value: &'static str,
+    worst: &'static str,
+    after: &'static str,
+    no_plans: &'static str,
+    results: &'static str,
+    steps_title: &'static str,
+    structure: &'static str,
+}
+
+fn ui(l: Lang) -> Ui {
+    match l {
+        Lang::En => Ui {
+            prev: "Previous",
+            next: "Next",
+            start: "From the start",
+            all: "All steps",
+            step: "step",
+            of: "of",
+            keys: "keys ← →, Home, End",
+            position: "Position",
+            points: "Points",
+            links: "Links",
+            measured: "Measured on the plans",
+            point: "point",
+            link: "link",
+            segment: "segment",
+            value: "value ± drafting bound",
+            worst: "worst intersection angle",
+            after: "drawn after the plan of velocities",
+            no_plans: "The scene asks for no plans of velocities or accelerations.",
+            results: "Results",
+            steps_title: "Construction",
+            structure: "Structure",
+        },
+        Lang::Uk => Ui {
+            prev: "Назад",
+            next: "Далі",
+            start: "Спочатку",
+            all: "Усі кроки",
+            step: "крок",
+            of: "з",
+            keys: "клавіші ← →, Home, End",
+            position: "Положення",
+            points: "Точки",
+            links: "Ланки",
+            measured: "Виміряно на планах",
+            point: "точка",
+            link: "ланка",
+            segment: "відрізок",
+            value: "величина ± похибка побудови",
+            worst: "найменший кут перетину",
+            after: "будується після плану швидкостей",
+            no_plans: "Сцена не вимагає планів швидкостей чи прискорень.",
+            results: "Результати",
+            steps_title: "Побудова",
+            structure: "Будова",
+        },
+        Lang::Ru => Ui {
+            prev: "Назад",
+            next: "Далее",
+            start: "Сначала",
+            all: "Все шаги",
+            step: "шаг",
+            of: "из",
+            keys: "клавиши ← →, Home, End",
+            position: "Положение",
+            points: "Точки",
+            links: "Звенья",
+            measured: "Измерено на планах",
+            point: "точка",
+            link: "звено",
+            segment: "отрезок",
+            value: "величина ± погрешность построения",
+            worst: "наименьший угол пересечения",
+            after: "строится после плана скоростей",
+            no_plans: "Сцена не требует планов скоростей и ускорений.",
+            results: "Результаты",
+            steps_title: "Построение",
+            structure: "Строение",
+        },
+    }
+}
+
+/// A unit in the language of the page.
+fn unit(u: &str, l: Lang) -> String {
+    match l {
+        Lang::En => u.to_string(),
+        _ => u
+            .replace("rad", "рад")
+            .replace("mm", "мм")
+            .replace('m', "м")
+            .replace('s', "с"),
+    }
+}
+
+/// A sentence (or a quantity's name) as HTML, in the lecture's notation:
+/// `v_B3C` → v<sub>B3C</sub>, `a^n_BA` → a<sup>n</sup><sub>BA</sub>, the
+/// pole `p_vb` → p<sub>v</sub>b, digits after a letter as a subscript
+/// (`ω1`, `b3`, `O2`) as the drawings write them. Only `_` and `^` are
+/// dropped (with a combining underline right after them); the rest of the
+/// text is kept, escaped.
+pub fn rich(s: &str) -> String {
+    let cs: Vec<char> = s.chars().collect();
+    let mark = |c: char| ('\u{300}'..='\u{36f}').contains(&c);
+    let esc = |v: &[char]| xml(&v.iter().collect::<String>());
+    // The last character that is not a combining mark, before `i`.
+    let base_before = |i: usize| cs[..i].iter().rev().find(|c| !mark(**c)).copied();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < cs.len() {
+        let c = cs[i];
+        let skip_marks = |mut j: usize| {
+            while j < cs.len() && mark(cs[j]) {
+                j += 1;
+            }
+            j
+        };
+        if c == '^' || c == '_' {
+            let start = skip_marks(i + 1);
+            let mut j = start;
+            let pole = c == '_'
+                && base_before(i) == Some('p')
+                && i >= 1
+                && cs[..i - 1]
+                    .iter()
+                    .rev()
+                    .find(|c| !mark(**c))
+                    .is_none_or(|c| !c.is_alphanumeric())
+                && matches!(cs.get(start), Some('v' | 'a'));
+            if pole {
+                j = skip_marks(start + 1);
+            } else if c == '^' {
+                while j < cs.len() && (cs[j].is_alphabetic() || mark(cs[j])) {
+                    j += 1;
+                }
+            } else {
+                while j < cs.len() && (cs[j].is_alphanumeric() || mark(cs[j])) {
+                    j += 1;
+                }
+            }
+            if j > start {
+                let tag = if c == '^' { "sup" } else { "sub" };
+                let _ = write!(out, "<{tag}>{}</{tag}>", esc(&cs[start..j]));
+                i = j;
+                continue;
+            }
+        } else if c.is_ascii_digit() && base_before(i).is_some_and(|b| b.is_alphabetic()) {
+            let mut j = i;
+            while j < cs.len() && (cs[j].is_ascii_digit() || mark(cs[j])) {
+                j += 1;
+            }
+            let _ = write!(out, "<sub>{}</sub>", esc(&cs[i..j]));
+            i = j;
+            continue;
+        }
+        out.push_str(&xml(&c.to_string()));
+        i += 1;
+    }
+    out
+}
+
+/// A label (letters, subscript, more names, tail) as HTML.
+fn label_html(l: &super::canvas::Label) -> String {
+    let sub = |s: &str| {
+        if s.is_empty() {
+            String::new()
+        } else {
+            format!("<sub>{}</sub>", xml(s))
+        }
+    };
+    let mut h = format!("{}{}", xml(&l.base), sub(&l.sub));
+    for (b, s) in &l.more {
+        let _ = write!(h, ", {}{}", xml(b), sub(s));
+    }
+    h + &xml(&l.tail)
+}
+
+/// Where a canvas goes in its own SVG: page = (ox + x, oy − y).
+struct Fit {
+    ox: f64,
+    oy: f64,
+    w: f64,
+    h: f64,
+}
+
+impl Fit {
+    fn new(b: kurbo::Rect, pad: f64) -> Fit {
+        Fit {
+            ox: pad - b.x0,
+            oy: pad + b.y1,
+            w: b.width() + 2.0 * pad,
+            h: b.height() + 2.0 * pad,
+        }
+    }
+    fn x(&self, p: Point) -> String {
+        fmt(self.ox + p.x)
+    }
+    fn y(&self, p: Point) -> String {
+        fmt(self.oy - p.y)
+    }
+    fn open(&self, class: &str, aria: &str) -> String {
+        format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" class="{class}" viewBox="0 0 {} {}" font-family="DejaVu Sans, sans-serif" role="img" aria-label="{}">"#,
+            fmt(self.w),
+            fmt(self.h),
+            xml(aria)
+        ) + "\n"
+    }
+}
+
+/// Ids made unique in the page (every sheet has its `pt-b`).
+fn prefixed(svg: String, prefix: &str) -> String {
+    svg.replace(" id=\"", &format!(" id=\"{prefix}"))
+}
+
+/// The plan of the mechanism at every position.
+fn mechanism_canvases(an: &Analysis, solved: &[Solved]) -> Vec<Canvas> {
+    solved
+        .iter()
+        .map(|s| {
+            let mut c = Canvas::default();
+            mechanism::draw(an, s, &mut c, an.mu_l, true);
+            c.place_pending();
+            c
+        })
+        .collect()
+}
+
+/// The plan of the mechanism at a position, whole, in the frame `f` that
+/// all positions share (the frame stays put from position to position).
+fn mechanism_svg(c: &Canvas, f: &Fit, prefix: &str, aria: &str) -> String {
+    let mut body = String::new();
+    c.write(&mut body, f.ox, f.oy);
+    f.open("sheet", aria) + &prefixed(body, prefix) + "</svg>\n"
+}
+
+/// A primitive and the steps it is shown for: from `from` (1-based) until
+/// before `until`.
+struct Tagged {
+    prim: Prim,
+    from: usize,
+    until: Option<usize>,
+}
+
+/// A plan drawn step by step: every primitive in a group tagged with its
+/// step; shared labels in versions that grow as their points are made;
+/// a mark on what a step uses when it draws nothing new.
+fn plan_svg(plan: &Plan, an: &Analysis, prefix: &str, aria: &str) -> String {
+    let mut c = Canvas::default();
+    let mut steps = plan::draw_steps(plan, &mut c, &an.points);
+    c.place_pending();
+    let made = plan::made_at(plan);
+    // Whatever was drawn after the steps (labels placed last): a point's
+    // dot and label by the step that made the point, else the last step.
+    let last = plan.steps.len().saturating_sub(1);
+    for prim in &c.prims[steps.len()..] {
+        let id = match prim {
+            Prim::Text { id, .. } | Prim::Circle { id, .. } => id.as_deref(),
+            _ => None,
+        };
+        let key = id.and_then(|i| i.strip_prefix("label-").or_else(|| i.strip_prefix("pt-")));
+        let k = key
+            .and_then(|key| plan.points.iter().position(|p| p.key == key))
+            .and_then(|i| made[i])
+            .unwrap_or(last);
+        steps.push(k);
+    }
+    let mut tagged: Vec<Tagged> = Vec::new();
+    for (prim, &k) in c.prims.iter().zip(&steps) {
+        if let Some(v) = label_versions(plan, &made, prim, k) {
+            tagged.extend(v);
+            continue;
+        }
+        tagged.push(Tagged {
+            prim: prim.clone(),
+            from: k + 1,
+            until: None,
+        });
+    }
+    let f = Fit::new(c.bounds(), 4.0);
+    let mut body = String::new();
+    let mut i = 0;
+    while i < tagged.len() {
+        let (from, until) = (tagged[i].from, tagged[i].until);
+        let mut run = Canvas::default();
+        while i < tagged.len() && tagged[i].from == from && tagged[i].until == until {
+            run.prims.push(tagged[i].prim.clone());
+            i += 1;
+        }
+        let until = until
+            .map(|u| format!(r#" data-until="{u}""#))
+            .unwrap_or_default();
+        let _ = writeln!(body, r#"<g data-step="{from}"{until}>"#);
+        run.write(&mut body, f.ox, f.oy);
+        body.push_str("</g>\n");
+    }
+    // Steps that drew nothing: mark the segment measured, the point met.
+    let drew: Vec<bool> = (1..=plan.steps.len())
+        .map(|k| tagged.iter().any(|t| t.from == k))
+        .collect();
+    let at = |i: usize| plan.points[i].at.to_point();
+    for (k, step) in plan.steps.iter().enumerate() {
+        if drew[k] {
+            continue;
+        }
+        let (a, b) = match &step.op {
+            Op::Measure { from, to, .. } => (at(*from), at(*to)),
+            Op::LayOff { to, .. }
+            | Op::Coincide { out: to, .. }
+            | Op::Divide { out: to, .. }
+            | Op::Similar { out: to, .. }
+            | Op::Intersect { out: to, .. } => (at(*to), at(*to)),
+            Op::Pole { .. } => (at(0), at(0)),
+            Op::Same { .. } | Op::Equation { .. } => continue,
+        };
+        let mark = if (b - a).hypot() > 0.05 {
+            format!(
+                r#"<line x1="{}" y1="{}" x2="{}" y2="{}"/>"#,
+                f.x(a),
+                f.y(a),
+                f.x(b),
+                f.y(b)
+            )
+        } else {
+            format!(r#"<circle cx="{}" cy="{}" r="2.2"/>"#, f.x(b), f.y(b))
+        };
+        let _ = writeln!(
+            body,
+            r#"<g class="mark" data-step="{}" data-until="{}">{mark}</g>"#,
+            k + 1,
+            k + 2
+        );
+    }
+    f.open("sheet", aria) + &prefixed(body, prefix) + "</svg>\n"
+}
+
+/// A label shared by points made at different steps, in one version per
+/// step: from the step its first point is made, each next version with the
+/// names made so far. None for other primitives.
+fn label_versions(
+    plan: &Plan,
+    made: &[Option<usize>],
+    prim: &Prim,
+    k: usize,
+) -> Option<Vec<Tagged>> {
+    let Prim::Text {
+        label,
+        id: Some(id),
+        ..
+    } = prim
+    else {
+        return None;
+    };
+    let key = id.strip_prefix("label-")?;
+    if label.more.is_empty() {
+        return None;
+    }
+    let first = plan.points.iter().find(|p| p.key == key)?;
+    // Each further name: the point of that name at the same place.
+    let when: Vec<usize> = label
+        .more
+        .iter()
+        .map(|(b, s)| {
+            plan.points
+                .iter()
+                .enumerate()
+                .find(|(_, p)| {
+                    p.key != first.key
+                        && (&p.label.0, &p.label.1) == (b, s)
+                        && (p.at - first.at).hypot() < 0.05
+                })
+                .map(|(i, _)| made[i].unwrap_or(k).max(k))
+        })
+        .collect::<Option<_>>()?;
+    let mut at: Vec<usize> = when.clone();
+    at.push(k);
+    at.sort_unstable();
+    at.dedup();
+    let versions = at
+        .iter()
+        .enumerate()
+        .map(|(n, &s)| {
+            let mut prim = prim.clone();
+            if let Prim::Text { label, id, .. } = &mut prim {
+                // The id stays with the complete label, unique in the page.
+                if n + 1 < at.len() {
+                    *id = None;
+                }
+                let more = std::mem::take(&mut label.more);
+                label.more = more
+                    .into_iter()
+                    .zip(&when)
+                    .filter(|(_, w)| **w <= s)
+                    .map(|(m, _)| m)
+                    .collect();
+            }
+            Tagged {
+                prim,
+                from: s + 1,
+                until: at.get(n + 1).map(|u| u + 1),
+            }
+        })
+        .collect();
+    Some(versions)
+}
+
+/// "φ1 = 235.8°" or "s = 0.1 m".
+fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
+    match an.mech.scene.input {
+        InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
+        InputSpec::Slider { .. } => format!("s = {} {}", num(s.q), unit("m", l)),
+    }
+}
+
+/// The drive at a position: "ω1 = −10 rad/s, ε1 = 0 rad/s²".
+fn drive_text(an: &Analysis, s: &Solved, l: Lang) -> String {
+    match an.mech.scene.input {
+        InputSpec::Crank { .. } => format!(
+            "ω1 = {} {}, ε1 = {} {}",
+            num(s.rate),
+            unit("rad/s", l),
+            num(s.rate2),
+            unit("rad/s²", l)
+        ),
+        InputSpec::Slider { .. } => format!(
+            "v = {} {}, a = {} {}",
+            num(s.rate),
+            unit("m/s", l),
+            num(s.rate2),
+            unit("m/s²", l)
+        ),
+    }
+}
+
+/// A signed angular rate with its sense: "0.837 ↺".
+fn rate_cell(x: f64, scale: f64) -> String {
+    if x.abs() <= 1e-12 * scale || x == 0.0 {
+        return "0".into();
+    }
+    format!(
+        "{} <span class=\"sense\">{}</span>",
+        num(x.abs()),
+        if x > 0.0 { "↺" } else { "↻" }
+    )
+}
+
+/// The tables of a position: points, links, what was measured on the plans.
+fn tables(an: &Analysis, s: &Solved, l: Lang, w: &Ui) -> String {
+    let m = &an.mech;
+    let vel = an.order.is_some();
+    let acc = an.order == Some(crate::kinematics::analytic::Order::Acceleration);
+    let mut h = String::new();
+    h.push_str("<div class=\"tables\">\n");
+    if vel {
+        let _ = write!(
+            h,
+            "<table><caption>{}</caption><thead><tr><th>{}</th><th>|v|, {}</th>",
+            w.points,
+            w.point,
+            unit("m/s", l)
+        );
+        if acc {
+            let _ = write!(h, "<th>|a|, {}</th>", unit("m/s²", l));
+        }
+        h.push_str("</tr></thead><tbody>\n");
+        for &p in &an.points {
+            let Some((v, a)) = s.point(an, p).rates else {
+                continue;
+            };
+            let _ = write!(
+                h,
+                "<tr><td>{}</td><td>{}</td>",
+                rich(m.point_name(p)),
+                num(v.hypot())
+            );
+            if acc {
+                let _ = write!(h, "<td>{}</td>", num(a.hypot()));
+            }
+            h.push_str("</tr>\n");
+        }
+        h.push_str("</tbody></table>\n");
+        let (ws, es) = s
+            .motion
+            .iter()
+            .flatten()
+            .fold((0.0f64, 0.0f64), |(a, b), mo| {
+                (a.max(mo.omega.abs()), b.max(mo.epsilon.abs()))
+            });
+        let _ = write!(
+            h,
+            "<table><caption>{}</caption><thead><tr><th>{}</th><th>ω, {}</th>",
+            w.links,
+            w.link,
+            unit("rad/s", l)
+        );
+        if acc {
+            let _ = write!(h, "<th>ε, {}</th>", unit("rad/s²", l));
+        }
+        h.push_str("</tr></thead><tbody>\n");
+        for k in 0..m.links.len() {
+            if !an.include[k] || k == m.frame() {
+                continue;
+            }
+            let Some(mo) = s.motion[k] else { continue };
+            let _ = write!(
+                h,
+                "<tr><td>{}</td><td>{}</td>",
+                xml(m.link_id(k)),
+                rate_cell(mo.omega, ws)
+            );
+            if acc {
+                let _ = write!(h, "<td>{}</td>", rate_cell(mo.epsilon, es));
+            }
+            h.push_str("</tr>\n");
+        }
+        h.push_str("</tbody></table>\n");
+    }
+    if let Some(plans) = &s.plans {
+        let mm = unit("mm", l);
+        let _ = writeln!(
+            h,
+            "<table class=\"measured\"><caption>{}</caption><thead><tr><th></th><th>{}, {mm}</th><th>{}</th></tr></thead>",
+            w.measured, w.segment, w.value
+        );
+        let titles = words(l);
+        for (title, plan) in [
+            (titles[1], Some(&plans.velocity)),
+            (titles[2], plans.acceleration.as_ref()),
+        ] {
+            let Some(plan) = plan else { continue };
+            let _ = writeln!(
+                h,
+                "<tbody><tr class=\"group\"><th colspan=\"3\">{title}: {} {}°, δ = {} {mm}</th></tr>",
+                w.worst,
+                num(plan.worst_angle_deg()),
+                num(plan.delta)
+            );
+            for q in &plan.measured {
+                let u = match (q.quantity.starts_with(['ω', 'ε']), plan.kind) {
+                    (true, PlanKind::Velocity) => "rad/s",
+                    (true, PlanKind::Acceleration) => "rad/s²",
+                    (false, PlanKind::Velocity) => "m/s",
+                    (false, PlanKind::Acceleration) => "m/s²",
+                };
+                let seg = format!("{}{}", plan.points[q.from].name(), plan.points[q.to].name());
+                // An angular rate as its magnitude and sense, as in the links' table.
+                let value = if u.starts_with("rad") {
+                    rate_cell(q.value, q.value.abs())
+                } else {
+                    num(q.value)
+                };
+                let _ = writeln!(
+                    h,
+                    "<tr><td>{}</td><td>{} = {}</td><td>{value} ± {} {}</td></tr>",
+                    rich(&q.quantity),
+                    rich(&seg),
+                    num(q.mm),
+                    num(q.bound),
+                    unit(u, l)
+                );
+            }
+            h.push_str("</tbody>\n");
+        }
+        h.push_str("</table>\n");
+    }
+    h.push_str("</div>\n");
+    h
+}
+
+/// The handout: every position's drawings and tables, the plans drawn step
+/// by step with their sentences in `lang`.
+pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
+    let w = ui(lang);
+    let sheet_words = words(lang);
+    let m = &an.mech;
+    let title = if m.scene.title.is_empty() {
+        "mechplan".to_string()
+    } else {
+        m.scene.title.clone()
+    };
+    let code = match lang {
+        Lang::En => "en",
+        Lang::Uk => "uk",
+        Lang::Ru => "ru",
+    };
+    let kinds: Vec<String> = an
+        .structure
+        .groups
+        .iter()
+        .map(|g| format!("{} {}", g.label(m), g.kind()))
+        .collect();
+    let structure = format!(
+        "{}: W = {}, {} [{}]",
+        w.structure,
+        an.structure.dof,
+        an.structure.formula(m).replace("->", "→"),
+        kinds.join("; ")
+    );
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n<style>\n{CSS}</style>\n<script>\n{ERRORS_JS}</script>\n</head>\n",
+        xml(&title)
+    );
+    let _ = writeln!(
+        h,
+        "<body data-word-step=\"{}\" data-word-of=\"{}\">",
+        xml(w.step),
+        xml(w.of)
+    );
+    let _ = writeln!(
+        h,
+        "<header class=\"top\">\n<h1>{}</h1>\n<p class=\"meta\">{}</p>",
+        xml(&title),
+        rich(&structure)
+    );
+    h.push_str("<nav class=\"tabs\">\n");
+    for (k, s) in solved.iter().enumerate() {
+        let _ = writeln!(
+            h,
+            "<button type=\"button\" class=\"tab\" data-pos=\"{}\">{} {}</button>",
+            k + 1,
+            k + 1,
+            rich(&format!("· {}", input_text(an, s, lang)))
+        );
+    }
+    h.push_str("</nav>\n</header>\n");
+    let _ = write!(
+        h,
+        "<div class=\"board\" id=\"board\">\n<div class=\"where\"><span id=\"where\"></span><span id=\"counter\"></span></div>\n<div class=\"sentence\" id=\"sentence\" aria-live=\"polite\"></div>\n<div class=\"controls\"><button type=\"button\" id=\"first\" title=\"Home\">⇤ {}</button><button type=\"button\" id=\"prev\" title=\"←\">◀ {}</button><button type=\"button\" id=\"next\" class=\"primary\" title=\"→\">{} ▶</button><button type=\"button\" id=\"last\" title=\"End\">{} ⇥</button><span class=\"hint\">{}</span></div>\n</div>\n",
+        w.start, w.prev, w.next, w.all, w.keys
+    );
+    if solved.iter().all(|s| s.plans.is_none()) {
+        let _ = writeln!(h, "<p class=\"none\">{}</p>", w.no_plans);
+    }
+    h.push_str("<main>\n");
+    let mechs = mechanism_canvases(an, solved);
+    let frame = mechs
+        .iter()
+        .map(|c| c.bounds())
+        .reduce(|a, b| a.union(b))
+        .unwrap_or_default();
+    let frame = Fit::new(frame, 4.0);
+    for (k, s) in solved.iter().enumerate() {
+        let pos = k + 1;
+        let heading = format!(
+            "{} {pos}: {}; {}",
+            w.position,
+            input_text(an, s, lang),
+            drive_text(an, s, lang)
+        );
+        let _ = writeln!(
+            h,
+            "<section class=\"position\" id=\"pos-{pos}\" data-pos=\"{pos}\">\n<h2>{}</h2>\n<div class=\"figs\">",
+            rich(&heading)
+        );
+        let mu_l = scale_label("l", an.mu_l, "m", lang);
+        let _ = write!(
+            h,
+            "<figure class=\"fig mech\"><figcaption><b>{}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}</div></figure>\n",
+            sheet_words[0],
+            label_html(&mu_l),
+            mechanism_svg(&mechs[k], &frame, &format!("p{pos}m-"), sheet_words[0])
+        );
+        if let Some(plans) = &s.plans {
+            for (kind, title, plan) in [
+                ("v", sheet_words[1], Some(&plans.velocity)),
+                ("a", sheet_words[2], plans.acceleration.as_ref()),
+            ] {
+                let Some(plan) = plan else { continue };
+                let (sym, u) = match plan.kind {
+                    PlanKind::Velocity => ("v", "m/s"),
+                    PlanKind::Acceleration => ("a", "m/s²"),
+                };
+                let scale = scale_label(sym, plan.mu, u, lang);
+                let _ = write!(
+                    h,
+                    "<figure class=\"fig plan\" id=\"pos-{pos}-{kind}\" data-pos=\"{pos}\" data-kind=\"{kind}\" data-steps=\"{}\" data-title=\"{}, {} {pos}\">\n<figcaption><b>{title}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}<p class=\"placeholder\">{}</p></div>\n",
+                    plan.steps.len(),
+                    xml(title),
+                    xml(&w.position.to_lowercase()),
+                    label_html(&scale),
+                    plan_svg(plan, an, &format!("p{pos}{kind}-"), title),
+                    w.after
+                );
+                let _ = writeln!(
+                    h,
+                    "<details class=\"steps\" open><summary>{}</summary><ol class=\"log\">",
+                    w.steps_title
+                );
+                for i in 0..plan.steps.len() {
+                    let _ = writeln!(
+                        h,
+                        "<li data-step=\"{}\">{}</li>",
+                        i + 1,
+                        rich(&sentence(plan, i, lang))
+                    );
+                }
+                h.push_str("</ol></details>\n</figure>\n");
+            }
+        }
+        h.push_str("</div>\n");
+        let _ = writeln!(h, "<h3>{}</h3>", w.results);
+        h.push_str(&tables(an, s, lang, &w));
+        h.push_str("</section>\n");
+    }
+    h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
+    let _ = write!(h, "<script>\n{JS}</script>\n</body>\n</html>\n");
+    h
+}
+
+/// Write `dir/handout.html` (atomically); returns its path.
+pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -> Result<PathBuf> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
+    let path = dir.join("handout.html");
+    crate::write_atomically(&path, handout(an, solved, lang).as_bytes())?;
+    Ok(path)
+}
+
+/// Errors of the page's script, collected for `#selftest`.
+const ERRORS_JS: &str = r#"window.handoutErrors = [];
+window.addEventListener('error', function (e) { window.handoutErrors.push(String(e.message || e)); });
+window.addEventListener('unhandledrejection', function (e) { window.handoutErrors.push(String(e.reason)); });
+"#;
+
+const CSS: &str = r#":root {
+  --ink: #1d1d1f; --muted: #6b6b70; --paper: #ffffff; --desk: #eceae4;
+  --board: #27423c; --chalk: #f3f0e6; --new: #c62828; --line: #d6d3cb;
+}
+* { box-sizing: border-box; }
+html { background: var(--desk); }
+body { margin: 0; color: var(--ink); font: 15px/1.45 "DejaVu Sans", "Segoe UI", Arial, sans-serif; }
+sub, sup { font-size: 0.72em; line-height: 0; }
+header.top { padding: 12px 24px 6px; display: flex; flex-wrap: wrap; align-items: baseline; gap: 4px 18px; }
+header.top h1 { font: 600 17px/1.3 "DejaVu Serif", Georgia, serif; margin: 0; flex: 1 1 560px; }
+header.top .meta { margin: 0; color: var(--muted); font-size: 13px; }
+nav.tabs { flex: 1 0 100%; display: flex; flex-wrap: wrap; gap: 4px; margin-top: 6px; }
+nav.tabs .tab { font: 12px/1.2 "DejaVu Sans", sans-serif; padding: 4px 8px; border: 1px solid var(--line); background: #f7f6f2; color: var(--ink); border-radius: 3px; cursor: pointer; }
+nav.tabs .tab.current { background: var(--board); color: var(--chalk); border-color: var(--board); }
+.board { position: sticky; top: 0; z-index: 5; margin: 6px 24px 10px; padding: 10px 18px 10px; background: var(--board); color: var(--chalk); border-radius: 4px; box-shadow: 0 2px 6px rgba(0,0,0,.25); }
+.board .where { display: flex; justify-content: space-between; font-size: 12px; letter-spacing: .04em; text-transform: uppercase; opacity: .75; }
+.board .sentence { font: 19px/1.45 "DejaVu Serif", Georgia, serif; min-height: 2.9em; margin: 4px 0 8px; }
+.board .controls { display: flex; align-items: center; gap: 8px; flex-wrap: wrap; }
+.board button { font: 13px/1 "DejaVu Sans", sans-serif; padding: 6px 12px; border-radius: 3px; border: 1px solid rgba(255,255,255,.35); background: transparent; color: var(--chalk); cursor: pointer; }
+.board button.primary { background: var(--chalk); color: var(--board); border-color: var(--chalk); font-weight: 600; }
+.board button:disabled { opacity: .35; cursor: default; }
+.board .hint { margin-left: auto; font-size: 12px; opacity: .6; }
+main { padding: 0 24px 24px; }
+section.position { display: none; }
+section.position.current { display: block; }
+section.position h2 { font: 600 15px/1.3 "DejaVu Serif", Georgia, serif; margin: 4px 0 8px; color: var(--muted); }
+section.position h3 { font: 600 14px/1.3 "DejaVu Serif", Georgia, serif; margin: 16px 0 6px; }
+.figs { display: grid; grid-template-columns: minmax(0, 6fr) minmax(0, 7fr); grid-template-rows: auto 1fr; grid-template-areas: "mech big" "side big"; gap: 12px 16px; align-items: start; }
+.fig { margin: 0; background: var(--paper); border: 1px solid var(--line); box-shadow: 0 1px 3px rgba(0,0,0,.08); padding: 6px 10px 8px; }
+.fig figcaption { font-size: 13px; color: var(--muted); margin-bottom: 2px; }
+.fig figcaption b { color: var(--ink); font-weight: 600; }
+.fig figcaption .scale { margin-left: 10px; }
+.fig.mech { grid-area: mech; }
+.fig.plan { grid-area: side; }
+.fig.plan.active { grid-area: big; }
+.figs .fig.plan:not(.active) ~ .fig.plan:not(.active) { grid-area: auto; grid-column: 1; }
+.paper { position: relative; }
+svg.sheet { display: block; width: 100%; height: auto; max-height: 34vh; }
+.fig.plan.active svg.sheet { max-height: 50vh; }
+.placeholder { display: none; margin: 0; padding: 28px 0; text-align: center; color: var(--muted); font-style: italic; }
+.fig.plan.empty .placeholder { display: block; }
+.fig.plan.empty svg.sheet { display: none; }
+@media screen { .off { display: none; } }
+.now line { stroke: var(--new); }
+.now polygon.arrow, .now circle { fill: var(--new); }
+.now polygon:not(.arrow) { fill: #f3c7c4; stroke: var(--new); stroke-width: .25; }
+.now text { fill: var(--new); }
+.mark line { stroke: var(--new); stroke-width: 2.4; stroke-opacity: .35; stroke-linecap: round; }
+.mark circle { fill: none; stroke: var(--new); stroke-width: .5; }
+.fig.plan:not(.active) .mark { display: none; }
+details.steps { display: none; margin-top: 6px; border-top: 1px solid var(--line); }
+.fig.plan.active details.steps { display: block; }
+details.steps summary { font-size: 12px; color: var(--muted); cursor: pointer; padding: 4px 0; }
+ol.log { position: relative; margin: 0; padding: 0 0 0 2.2em; max-height: 7.6em; overflow: auto; font: 13.5px/1.5 "DejaVu Serif", Georgia, serif; }
+ol.log li { padding: 1px 4px; }
+ol.log li.now { background: #fbe9e7; color: #7f1d1d; }
+.tables { display: flex; flex-wrap: wrap; gap: 14px; align-items: flex-start; }
+table { border-collapse: collapse; background: var(--paper); border: 1px solid var(--line); font-size: 13px; }
+caption { text-align: left; font-weight: 600; padding: 0 0 3px; font-size: 13px; }
+th, td { padding: 3px 10px; border-bottom: 1px solid #eeeae2; text-align: right; white-space: nowrap; }
+th:first-child, td:first-child { text-align: left; }
+thead th { background: #f4f2ec; font-weight: 600; }
+tr.group th { text-align: left; background: #faf9f6; color: var(--muted); font-weight: 600; }
+.sense { color: var(--muted); }
+p.none { margin: 0 24px; }
+#selftest { margin: 0 24px 24px; padding: 8px; background: #fff; border: 1px solid var(--line); white-space: pre-wrap; }
+@media (max-width: 900px) {
+  .figs { grid-template-columns: 1fr; grid-template-areas: "big" "mech" "side"; }
+}
+@media print {
+  html { background: #fff; }
+  .board, nav.tabs { display: none; }
+  section.position { display: block; break-after: page; }
+  .mark, .placeholder { display: none !important; }
+  details.steps { display: block; }
+  ol.log { max-height: none; overflow: visible; }
+}
+"#;
+
+const JS: &str = r#"(function () {
+  'use strict';
+  var errors = window.handoutErrors || [];
+  var $ = function (id) { return document.getElementById(id); };
+  var all = function (root, sel) { return Array.prototype.slice.call(root.querySelectorAll(sel)); };
+  var stepWord = document.body.getAttribute('data-word-step');
+  var ofWord = document.body.getAttribute('data-word-of');
+  var plans = all(document, 'figure.plan').map(function (fig) {
+    return {
+      fig: fig,
+      n: +fig.getAttribute('data-steps'),
+      pos: +fig.getAttribute('data-pos'),
+      title: fig.getAttribute('data-title'),
+      log: fig.querySelector('ol.log'),
+      items: all(fig, '[data-step]').map(function (el) {
+        var u = el.getAttribute('data-until');
+        return { el: el, s: +el.getAttribute('data-step'), u: u === null ? Infinity : +u };
+      })
+    };
+  });
+  var sections = all(document, 'section.position');
+  var tabs = all(document, 'button.tab');
+  var frames = [];
+  plans.forEach(function (p, j) { for (var k = 1; k <= p.n; k++) frames.push({ j: j, k: k }); });
+  var g = -1, testing = /selftest/.test(location.hash);
+  var where = $('where'), counter = $('counter'), sentence = $('sentence');
+  var prevB = $('prev'), nextB = $('next'), firstB = $('first'), lastB = $('last');
+
+  function setPlan(p, c, active) {
+    p.items.forEach(function (it) {
+      it.el.classList.toggle('off', !(it.s <= c && c < it.u));
+      it.el.classList.toggle('now', active && it.s === c);
+    });
+    p.fig.classList.toggle('empty', c === 0);
+    p.fig.classList.toggle('active', active);
+  }
+  function showPos(pos) {
+    sections.forEach(function (s) { s.classList.toggle('current', +s.getAttribute('data-pos') === pos); });
+    tabs.forEach(function (t) { t.classList.toggle('current', +t.getAttribute('data-pos') === pos); });
+  }
+  // First and last frame of a position.
+  function span(pos) {
+    var a = -1, b = -1;
+    frames.forEach(function (f, i) { if (plans[f.j].pos === pos) { if (a < 0) a = i; b = i; } });
+    return [a, b];
+  }
+  function show(i) {
+    if (!frames.length) { showPos(1); return; }
+    i = Math.max(0, Math.min(frames.length - 1, i));
+    g = i;
+    var f = frames[i], P = plans[f.j];
+    plans.forEach(function (p, j) { setPlan(p, j < f.j ? p.n : j === f.j ? f.k : 0, j === f.j); });
+    showPos(P.pos);
+    var li = P.log.querySelector('li[data-step="' + f.k + '"]');
+    sentence.innerHTML = li ? li.innerHTML : '';
+    where.textContent = P.title + ' — ' + stepWord + ' ' + f.k + ' ' + ofWord + ' ' + P.n;
+    counter.textContent = (i + 1) + ' / ' + frames.length;
+    var s = span(P.pos);
+    prevB.disabled = i === 0;
+    nextB.disabled = i === frames.length - 1;
+    firstB.disabled = i === s[0];
+    lastB.disabled = i === s[1];
+    if (li) {
+      // The current sentence at the bottom of the list, the ones before above it.
+      var log = P.log, top = li.offsetTop, bottom = top + li.offsetHeight;
+      if (top < log.scrollTop || bottom > log.scrollTop + log.clientHeight) {
+        log.scrollTop = Math.max(0, Math.min(top, bottom - log.clientHeight));
+      }
+    }
+    if (!testing) { try { history.replaceState(null, '', '#step=' + (i + 1)); } catch (e) { /* file: URLs may refuse */ } }
+  }
+  function fromHash() {
+    var q = {};
+    location.hash.replace(/^#/, '').split('&').forEach(function (kv) {
+      var a = kv.split('='); if (a[0]) q[a[0]] = a.length > 1 ? decodeURIComponent(a[1]) : '';
+    });
+    if (q.pos) {
+      var s = span(+q.pos);
+      if (s[0] >= 0) return q.step === 'end' ? s[1] : Math.min(s[1], s[0] + Math.max(0, (+q.step || 1) - 1));
+    }
+    if (q.step === 'end') return frames.length - 1;
+    if (q.step) return (+q.step || 1) - 1;
+    return 0;
+  }
+  prevB.addEventListener('click', function () { show(g - 1); });
+  nextB.addEventListener('click', function () { show(g + 1); });
+  firstB.addEventListener('click', function () { if (frames.length) show(span(plans[frames[g].j].pos)[0]); });
+  lastB.addEventListener('click', function () { if (frames.length) show(span(plans[frames[g].j].pos)[1]); });
+  tabs.forEach(function (t) {
+    t.addEventListener('click', function () { var s = span(+t.getAttribute('data-pos')); if (s[0] >= 0) show(s[0]); else showPos(+t.getAttribute('data-pos')); });
+  });
+  document.addEventListener('keydown', function (e) {
+    if (e.altKey || e.ctrlKey || e.metaKey || !frames.length) return;
+    var d = { ArrowRight: 1, PageDown: 1, ArrowLeft: -1, PageUp: -1 }[e.key];
+    if (d) { e.preventDefault(); show(g + d); }
+    else if (e.key === 'Home') { e.preventDefault(); firstB.click(); }
+    else if (e.key === 'End') { e.preventDefault(); lastB.click(); }
+  });
+  window.addEventListener('hashchange', function () { if (!testing) show(fromHash()); });
+
+  // Shown on the page: no ancestor with display none (checkVisibility()
+  // cannot be used: Chromium reports a hidden SVG <g> as visible).
+  function visible(el) {
+    if (getComputedStyle(el).visibility === 'hidden') return false;
+    for (var e = el; e && e.nodeType === 1; e = e.parentNode) {
+      if (getComputedStyle(e).display === 'none') return false;
+    }
+    return true;
+  }
+  function key(e) { document.dispatchEvent(new KeyboardEvent('keydown', { key: e, bubbles: true })); }
+  // Step through the whole handout with Next; check each step shows its
+  // own elements (and no later ones) and its sentence; then Previous, keys, tabs.
+  function selftest() {
+    var fails = [], checked = 0, drawn = 0, before = null;
+    var fail = function (m) { if (fails.length < 12) fails.push(m); };
+    show(0);
+    for (var i = 0; i < frames.length; i++) {
+      if (i > 0) nextB.click();
+      var f = frames[i], P = plans[f.j], at = P.fig.id + ' step ' + f.k;
+      if (g !== i) { fail('Next did not reach ' + at); break; }
+      var li = P.log.querySelector('li[data-step="' + f.k + '"]');
+      var s = sentence.innerHTML;
+      if (!li || !s || s !== li.innerHTML) fail('sentence of ' + at + ' not shown');
+      if (s === before) fail('sentence unchanged at ' + at);
+      before = s;
+      if (!P.fig.classList.contains('active') || !visible(P.fig)) fail(at + ': plan not shown');
+      var own = 0, svg = 0;
+      P.items.forEach(function (it) {
+        var want = it.s <= f.k && f.k < it.u;
+        if (visible(it.el) !== want) fail(at + ': element of step ' + it.s + (want ? ' hidden' : ' shown'));
+        if (it.s === f.k && want) {
+          own++; checked++;
+          if (it.el.closest('svg')) svg++;
+          if (!it.el.classList.contains('now')) fail(at + ': own element not marked');
+        }
+      });
+      if (!own) fail(at + ': revealed nothing');
+      if (svg) drawn++;
+    }
+    if (frames.length > 1) {
+      var last = frames.length - 1, L = frames[last], LP = plans[L.j];
+      show(last); prevB.click();
+      if (g !== last - 1) fail('Previous did not go back');
+      if (frames[g].j === L.j) {
+        LP.items.forEach(function (it) { if (it.s === L.k && visible(it.el)) fail('Previous left step ' + L.k + ' shown'); });
+      }
+      key('ArrowRight'); if (g !== last) fail('ArrowRight did not advance');
+      key('ArrowLeft'); if (g !== last - 1) fail('ArrowLeft did not go back');
+      key('Home'); if (g !== span(plans[frames[g].j].pos)[0]) fail('Home did not go to the start of the position');
+      key('End'); if (g !== span(plans[frames[g].j].pos)[1]) fail('End did not show the whole position');
+      if (tabs.length > 1) {
+        tabs[1].click();
+        var cur = all(document, 'section.position.current');
+        if (cur.length !== 1 || cur[0].getAttribute('data-pos') !== tabs[1].getAttribute('data-pos')) fail('tab did not switch the position');
+      }
+    }
+    var ok = !fails.length && !errors.length;
+    var res = (ok ? 'SELFTEST PASS' : 'SELFTEST FAIL') + ' steps=' + frames.length + ' plans=' + plans.length +
+      ' elements=' + checked + ' drawing-steps=' + drawn +
+      (fails.length ? ' failures: ' + fails.join(' | ') : '') + (errors.length ? ' errors: ' + errors.join(' | ') : '');
+    document.title = res;
+    var pre = $('selftest'); pre.textContent = res; pre.hidden = false;
+  }
+  try {
+    if (testing) selftest(); else show(fromHash());
+  } catch (e) {
+    errors.push(String(e && e.stack || e));
+    if (testing) { document.title = 'SELFTEST FAIL errors: ' + errors.join(' | '); }
+    throw e;
+  }
+})();
+"#;

@@ -1,0 +1,572 @@
+//! Results as the contract's JSON (`shared/spec/scene-format.md`, result
+//! section; additions in `docs/scene-format.md`) and as a terminal table.
+
+use crate::geom::wrap_pi;
+use crate::kinematics::analytic::Order;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::model::scene::InputSpec;
+use serde_json::{Map, Value, json};
+use std::fmt::Write as _;
+
+/// Round-trip-exact but tidy: integers print as integers, no `-0`.
+fn num(x: f64) -> Value {
+    let x = if x == 0.0 { 0.0 } else { x };
+    json!(x)
+}
+
+fn vec2(v: kurbo::Vec2) -> Value {
+    json!([num(v.x), num(v.y)])
+}
+
+fn deg(a: f64) -> f64 {
+    wrap_pi(a).to_degrees()
+}
+
+/// The result document for `mechplan solve --format json`.
+pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
+    let mut doc = json_head(an);
+    doc.insert(
+        "positions".into(),
+        Value::Array(solved.iter().map(|s| position_json(an, s)).collect()),
+    );
+    Value::Object(doc)
+}
+
+/// The result document's fields before `positions`.
+fn json_head(an: &Analysis) -> Map<String, Value> {
+    let m = &an.mech;
+    let groups: Vec<Value> = an
+        .structure
+        .groups
+        .iter()
+        .map(|g| {
+            let mut o = Map::new();
+            o.insert("class".into(), json!(g.class()));
+            o.insert("kind".into(), json!(g.kind()));
+            if let crate::model::structure::AssurGroup::Dyad(d) = g {
+                o.insert("number".into(), json!(d.kind.number()));
+            }
+            o.insert(
+                "links".into(),
+                json!(g.links().iter().map(|&l| m.link_id(l)).collect::<Vec<_>>()),
+            );
+            Value::Object(o)
+        })
+        .collect();
+    let mut doc = Map::new();
+    doc.insert("mechplan".into(), json!(1));
+    if !m.scene.title.is_empty() {
+        doc.insert("title".into(), json!(m.scene.title));
+    }
+    doc.insert("mu_l".into(), num(an.mu_l));
+    doc.insert(
+        "structure".into(),
+        json!({ "dof": an.structure.dof, "formula": an.structure.formula(m), "groups": groups }),
+    );
+    doc
+}
+
+/// One position of the result document.
+pub fn position_json(an: &Analysis, s: &Solved) -> Value {
+    let m = &an.mech;
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    let mut o = Map::new();
+    o.insert(
+        "input".into(),
+        match m.scene.input {
+            InputSpec::Crank { .. } => json!({ "angle": num(s.q.to_degrees()), "omega": num(s.rate), "epsilon": num(s.rate2) }),
+            InputSpec::Slider { .. } => json!({ "s": num(s.q), "v": num(s.rate), "a": num(s.rate2) }),
+        },
+    );
+    let mut pts = Map::new();
+    for &p in &an.points {
+        let ps = s.point(an, p);
+        let (at, st, an_) = (ps.at, ps.rates, ps.analogue);
+        let mut e = Map::new();
+        e.insert("p".into(), json!([num(at.x), num(at.y)]));
+        if vel {
+            let (v, a) = st.unwrap();
+            let (vq, aq) = an_.unwrap();
+            e.insert("v".into(), vec2(v));
+            if acc {
+                e.insert("a".into(), vec2(a));
+            }
+            e.insert("v_q".into(), vec2(vq));
+            if acc {
+                e.insert("a_q".into(), vec2(aq));
+            }
+        }
+        pts.insert(m.point_name(p).to_string(), Value::Object(e));
+    }
+    o.insert("points".into(), Value::Object(pts));
+    let mut links = Map::new();
+    for l in 0..m.links.len() {
+        if !an.include[l] {
+            continue;
+        }
+        let mut e = Map::new();
+        // The local x-axis runs from the link's first point to its
+        // second (a one-point slider: along its guide), as the
+        // contract defines a link's angle.
+        e.insert("angle".into(), num(deg(s.config.pose(l).angle)));
+        if vel {
+            let mo = s.motion[l].unwrap();
+            let aq = s.analogue[l].unwrap();
+            e.insert("omega".into(), num(mo.omega));
+            if acc {
+                e.insert("epsilon".into(), num(mo.epsilon));
+            }
+            e.insert("phi_q".into(), num(aq.omega));
+            if acc {
+                e.insert("phi_qq".into(), num(aq.epsilon));
+            }
+        }
+        links.insert(m.link_id(l).to_string(), Value::Object(e));
+    }
+    o.insert("links".into(), Value::Object(links));
+    let slides: Vec<Value> = s
+        .slides(an)
+        .iter()
+        .map(|sl| {
+            let pr = &m.prismatics[sl.pair];
+            let mut e = Map::new();
+            e.insert("slider".into(), json!(m.link_id(pr.slider)));
+            e.insert("guide".into(), json!(m.link_id(pr.guide)));
+            e.insert("point".into(), json!(m.point_name(pr.point)));
+            e.insert("s".into(), num(sl.s));
+            if vel {
+                e.insert("v".into(), num(sl.v));
+                e.insert("s_q".into(), num(sl.s_q));
+            }
+            if acc {
+                e.insert("a".into(), num(sl.a));
+                e.insert("s_qq".into(), num(sl.s_qq));
+                if pr.guide != m.frame() {
+                    e.insert("coriolis".into(), vec2(sl.coriolis));
+                }
+            }
+            Value::Object(e)
+        })
+        .collect();
+    if !slides.is_empty() {
+        o.insert("sliders".into(), Value::Array(slides));
+    }
+    if let Some(plans) = &s.plans {
+        let mut pl = Map::new();
+        pl.insert("velocity".into(), plan_json(&plans.velocity));
+        if let Some(a) = &plans.acceleration {
+            pl.insert("acceleration".into(), plan_json(a));
+        }
+        o.insert("plans".into(), Value::Object(pl));
+    }
+    if let Some(c) = &s.check {
+        let mut check = json!({
+            "max_rel_diff": num(c.max_rel_diff),
+            "worst": c.worst,
+            "conditioning": num(c.conditioning),
+            "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
+        });
+        if let Some(sens) = c.data_sensitivity {
+            check["data_sensitivity"] = num(sens);
+        }
+        if let Some(b) = &c.bound {
+            let mut bound = json!({ "p": num(b.p), "angle": num(b.angle) });
+            if vel {
+                for (k, x) in [
+                    ("v", b.v),
+                    ("omega", b.omega),
+                    ("v_q", b.v_q),
+                    ("phi_q", b.phi_q),
+                ] {
+                    bound[k] = num(x);
+                }
+            }
+            if acc {
+                for (k, x) in [
+                    ("a", b.a),
+                    ("epsilon", b.epsilon),
+                    ("a_q", b.a_q),
+                    ("phi_qq", b.phi_qq),
+                ] {
+                    bound[k] = num(x);
+                }
+            }
+            check["bound"] = bound;
+        }
+        o.insert("crosscheck".into(), check);
+    }
+    Value::Object(o)
+}
+
+/// What `solve` prints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// [`to_table`].
+    Table,
+    /// [`to_json`], pretty-printed, with a final newline.
+    Json,
+    /// [`to_steps`].
+    Steps(crate::kinematics::construction::text::Lang),
+}
+
+/// The result text of `solve` a position at a time: this head, then
+/// [`text_position`] of every position in order, then [`text_tail`];
+/// together, byte for byte, the text of the whole result in `style`, so
+/// that a long sweep need be neither kept nor built as one document.
+pub fn text_head(an: &Analysis, style: Style) -> String {
+    match style {
+        Style::Table => table_head(an),
+        Style::Steps(_) => steps_head(an),
+        Style::Json => {
+            // The document with no positions ends `"positions": []\n}`:
+            // the head is everything before the brackets.
+            let mut doc = json_head(an);
+            doc.insert("positions".into(), Value::Array(Vec::new()));
+            let text =
+                serde_json::to_string_pretty(&Value::Object(doc)).expect("JSON of finite numbers");
+            text.strip_suffix("[]\n}")
+                .expect("positions come last")
+                .to_string()
+        }
+    }
+}
+
+/// The text of position `k` (from 0) of the result, after those before it.
+pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> String {
+    match style {
+        Style::Table => table_position(an, k, s),
+        Style::Steps(lang) => steps_position(an, k, s, lang),
+        Style::Json => {
+            // An element of the top-level array: pretty-printed two levels
+            // deep, so every line is indented by four spaces (strings
+            // escape their line breaks, so lines are the printer's own).
+            let text = serde_json::to_string_pretty(&position_json(an, s))
+                .expect("JSON of finite numbers");
+            let mut out = String::with_capacity(text.len() + text.len() / 8);
+            out.push_str(if k == 0 { "[\n" } else { ",\n" });
+            for (i, line) in text.split('\n').enumerate() {
+                if i > 0 {
+                    out.push('\n');
+                }
+                out.push_str("    ");
+                out.push_str(line);
+            }
+            out
+        }
+    }
+}
+
+/// The end of the result text, after `count` positions.
+pub fn text_tail(_an: &Analysis, style: Style, count: usize) -> String {
+    match style {
+        Style::Table | Style::Steps(_) => String::new(),
+        Style::Json if count == 0 => "[]\n}\n".into(),
+        Style::Json => "\n  ]\n}\n".into(),
+    }
+}
+
+/// The whole result text in `style` (as [`text_head`], [`text_position`]
+/// of each, [`text_tail`]).
+pub fn to_text(an: &Analysis, solved: &[Solved], style: Style) -> String {
+    let mut t = text_head(an, style);
+    for (k, s) in solved.iter().enumerate() {
+        t += &text_position(an, style, k, s);
+    }
+    t + &text_tail(an, style, solved.len())
+}
+
+/// A plan in the result: μ, the plan points in mm from the pole (named
+/// points by their lower-case names, construction points as documented in
+/// docs/scene-format.md), the worst intersection angle and the drafting
+/// bounds of what was measured.
+fn plan_json(plan: &crate::kinematics::construction::Plan) -> Value {
+    let mut points = Map::new();
+    for p in plan.points.iter().skip(1) {
+        points.insert(p.key.clone(), json!([num(p.at.x), num(p.at.y)]));
+    }
+    let measured: Vec<Value> = plan
+        .measured
+        .iter()
+        .map(|q| json!({ "quantity": q.quantity, "from": plan.points[q.from].key, "to": plan.points[q.to].key, "mm": num(q.mm), "value": num(q.value), "bound": num(q.bound) }))
+        .collect();
+    json!({
+        "mu": num(plan.mu),
+        "points": points,
+        "worst_angle": num(plan.worst_angle_deg()),
+        "delta": num(plan.delta),
+        "measured": measured,
+    })
+}
+
+/// The sense of rotation, "-" for a value that is zero up to rounding
+/// (`scale` is the largest value of its kind at that position).
+fn sense(x: f64, scale: f64) -> &'static str {
+    if x.abs() <= 1e-12 * scale {
+        "-"
+    } else if x > 0.0 {
+        "ccw"
+    } else if x < 0.0 {
+        "cw"
+    } else {
+        "-"
+    }
+}
+
+/// A table for the terminal: points with |v|, |a|; links with ω, ε and senses.
+pub fn to_table(an: &Analysis, solved: &[Solved]) -> String {
+    let mut t = table_head(an);
+    for (i, s) in solved.iter().enumerate() {
+        t += &table_position(an, i, s);
+    }
+    t
+}
+
+/// The table's title and structure lines.
+fn table_head(an: &Analysis) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    if !m.scene.title.is_empty() {
+        let _ = writeln!(t, "{}", m.scene.title);
+    }
+    let kinds: Vec<String> = an
+        .structure
+        .groups
+        .iter()
+        .map(|g| format!("{} {}", g.label(m), g.kind()))
+        .collect();
+    let _ = writeln!(
+        t,
+        "structure: W = {}, {}   [{}]",
+        an.structure.dof,
+        an.structure.formula(m),
+        kinds.join("; ")
+    );
+    t
+}
+
+/// The table of position `i` (from 0).
+fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    let _ = writeln!(t);
+    let input = match m.scene.input {
+        InputSpec::Crank { .. } => format!(
+            "φ1 = {:.3}°, ω1 = {} rad/s, ε1 = {} rad/s²",
+            s.q.to_degrees().rem_euclid(360.0),
+            fmt(s.rate),
+            fmt(s.rate2)
+        ),
+        InputSpec::Slider { .. } => format!(
+            "s = {} m, v = {} m/s, a = {} m/s²",
+            fmt(s.q),
+            fmt(s.rate),
+            fmt(s.rate2)
+        ),
+    };
+    let _ = writeln!(t, "position {}: {input}", i + 1);
+    let _ = write!(t, "  {:<6} {:>11} {:>11}", "point", "x [m]", "y [m]");
+    if vel {
+        let _ = write!(t, " {:>12} {:>8}", "|v| [m/s]", "∠v [°]");
+    }
+    if acc {
+        let _ = write!(t, " {:>12} {:>8}", "|a| [m/s²]", "∠a [°]");
+    }
+    let _ = writeln!(t);
+    for &p in &an.points {
+        let ps = s.point(an, p);
+        let (at, st) = (ps.at, ps.rates);
+        let _ = write!(t, "  {:<6} {:>11.6} {:>11.6}", m.point_name(p), at.x, at.y);
+        if let Some((v, a)) = st.filter(|_| vel) {
+            let _ = write!(
+                t,
+                " {:>12.6} {:>8.2}",
+                v.hypot(),
+                if v.hypot() > 0.0 {
+                    v.atan2().to_degrees()
+                } else {
+                    0.0
+                }
+            );
+            if acc {
+                let _ = write!(
+                    t,
+                    " {:>12.6} {:>8.2}",
+                    a.hypot(),
+                    if a.hypot() > 0.0 {
+                        a.atan2().to_degrees()
+                    } else {
+                        0.0
+                    }
+                );
+            }
+        }
+        let _ = writeln!(t);
+    }
+    let _ = write!(t, "  {:<6} {:>11}", "link", "angle [°]");
+    if vel {
+        let _ = write!(t, " {:>12} {:>5}", "ω [rad/s]", "");
+    }
+    if acc {
+        let _ = write!(t, " {:>12} {:>5}", "ε [rad/s²]", "");
+    }
+    let _ = writeln!(t);
+    let (w_scale, e_scale) = s
+        .motion
+        .iter()
+        .flatten()
+        .fold((0.0f64, 0.0f64), |(w, e), mo| {
+            (w.max(mo.omega.abs()), e.max(mo.epsilon.abs()))
+        });
+    for l in 0..m.links.len() {
+        if !an.include[l] || l == m.frame() {
+            continue;
+        }
+        let _ = write!(
+            t,
+            "  {:<6} {:>11.4}",
+            m.link_id(l),
+            deg(s.config.pose(l).angle)
+        );
+        if vel {
+            let mo = s.motion[l].unwrap();
+            let _ = write!(t, " {:>12.6} {:>5}", mo.omega, sense(mo.omega, w_scale));
+            if acc {
+                let _ = write!(t, " {:>12.6} {:>5}", mo.epsilon, sense(mo.epsilon, e_scale));
+            }
+        }
+        let _ = writeln!(t);
+    }
+    let slides = s.slides(an);
+    if vel && !slides.is_empty() {
+        for sl in &slides {
+            let pr = &m.prismatics[sl.pair];
+            let _ = write!(
+                t,
+                "  slide of {} on {} at {}: v_rel = {:.6} m/s",
+                m.link_id(pr.slider),
+                m.link_id(pr.guide),
+                m.point_name(pr.point),
+                sl.v
+            );
+            if acc {
+                let _ = write!(t, ", a_rel = {:.6} m/s²", sl.a);
+                if pr.guide != m.frame() {
+                    let _ = write!(t, ", |a_Coriolis| = {:.6} m/s²", sl.coriolis.hypot());
+                }
+            }
+            let _ = writeln!(t);
+        }
+    }
+    if let Some(c) = &s.check {
+        let _ = writeln!(
+            t,
+            "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
+            c.max_rel_diff,
+            c.worst,
+            c.contour_time * 1e6,
+            c.constraint_time * 1e6
+        );
+    }
+    t
+}
+
+fn fmt(x: f64) -> String {
+    let s = format!("{x:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}
+
+/// The constructions as numbered lecture-style steps (`solve --steps`).
+pub fn to_steps(
+    an: &Analysis,
+    solved: &[Solved],
+    lang: crate::kinematics::construction::text::Lang,
+) -> String {
+    let mut t = steps_head(an);
+    for (i, s) in solved.iter().enumerate() {
+        t += &steps_position(an, i, s, lang);
+    }
+    t
+}
+
+/// The steps' title line.
+fn steps_head(an: &Analysis) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    if !m.scene.title.is_empty() {
+        let _ = writeln!(t, "{}", m.scene.title);
+    }
+    t
+}
+
+/// The steps of position `i` (from 0).
+fn steps_position(
+    an: &Analysis,
+    i: usize,
+    s: &Solved,
+    lang: crate::kinematics::construction::text::Lang,
+) -> String {
+    use crate::kinematics::construction::text::{Lang, num, sentence};
+    let m = &an.mech;
+    let mut t = String::new();
+    let (title_v, title_a, worst, bound_word) = match lang {
+        Lang::En => (
+            "Plan of velocities",
+            "Plan of accelerations",
+            "worst intersection angle",
+            "drafting bound",
+        ),
+        Lang::Uk => (
+            "План швидкостей",
+            "План прискорень",
+            "найменший кут перетину",
+            "похибка побудови",
+        ),
+        Lang::Ru => (
+            "План скоростей",
+            "План ускорений",
+            "наименьший угол пересечения",
+            "погрешность построения",
+        ),
+    };
+    let Some(plans) = &s.plans else { return t };
+    let input = match m.scene.input {
+        InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
+        InputSpec::Slider { .. } => format!("s = {} m", num(s.q)),
+    };
+    for (title, plan) in [
+        (title_v, Some(&plans.velocity)),
+        (title_a, plans.acceleration.as_ref()),
+    ] {
+        let Some(plan) = plan else { continue };
+        let position = match lang {
+            Lang::En => "position",
+            Lang::Uk => "положення",
+            Lang::Ru => "положение",
+        };
+        let _ = writeln!(t, "\n{title}, {position} {}, {input}", i + 1);
+        for k in 0..plan.steps.len() {
+            let _ = writeln!(t, "{:>3}. {}", k + 1, sentence(plan, k, lang));
+        }
+        let mm = if lang == Lang::En { "mm" } else { "мм" };
+        let _ = writeln!(
+            t,
+            "     {worst}: {}°; δ = {} {mm}",
+            num(plan.worst_angle_deg()),
+            num(plan.delta)
+        );
+        for q in &plan.measured {
+            let _ = writeln!(
+                t,
+                "     {} = {} ± {} ({bound_word})",
+                q.quantity,
+                num(q.value),
+                num(q.bound)
+            );
+        }
+    }
+    t
+}

@@ -1,0 +1,360 @@
+//! Instant centres of velocity by Kennedy's theorem, as a construction.
+//!
+//! Every two links i, j of a mechanism have an instant centre P_ij: the
+//! point where their velocity fields agree. The primary centres come from
+//! the pairs: a revolute pair is the centre of its two links; a prismatic
+//! pair's centre lies at infinity, perpendicular to the guide. Kennedy's
+//! theorem (the three centres of any three links lie on one line) finds the
+//! rest: P_ij lies on the line P_ik P_kj for every third link k, so it is
+//! the intersection of two such lines. Points are homogeneous coordinates,
+//! so a centre at infinity (a link translating, at this instant, relative
+//! to another) is a direction, not an overflow.
+//!
+//! Only the positions are used: the centres are an independent check of
+//! the velocities (v_M = ω_j × (M − P_0j), and v_i(P_ij) = v_j(P_ij)).
+
+use crate::kinematics::positions::Configuration;
+use crate::kinematics::solve::Analysis;
+use crate::model::mechanism::Mechanism;
+use kurbo::{Point, Vec2};
+
+/// A homogeneous point `(x, y, w)` in units of the mechanism's size about
+/// its origin; `w = 0` is a point at infinity in the direction `(x, y)`.
+type H = [f64; 3];
+
+fn cross(a: &H, b: &H) -> H {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Where an instant centre is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Place {
+    /// A point of the plane (m).
+    At(Point),
+    /// At infinity in this direction (unit vector): the two links
+    /// translate relative to each other, perpendicular to it.
+    Infinity(Vec2),
+}
+
+/// How a centre was found.
+#[derive(Clone, Debug, PartialEq)]
+pub enum How {
+    /// A revolute pair at the named point.
+    Revolute(String),
+    /// A prismatic pair: at infinity perpendicular to the guide.
+    Prismatic,
+    /// Kennedy's theorem: the lines P_ik P_kj for the two third links k.
+    Kennedy([usize; 2]),
+}
+
+/// The instant centre of two links (indices into the mechanism's links,
+/// `links.0 < links.1`).
+#[derive(Clone, Debug)]
+pub struct Centre {
+    pub links: (usize, usize),
+    pub place: Place,
+    pub how: How,
+    /// Sine of the angle between the two Kennedy lines (1 for a pair):
+    /// the construction's reliability. The centre's error is about the
+    /// lines' error divided by it.
+    pub sin_angle: f64,
+}
+
+/// A centre Kennedy's theorem cannot place at this position: every pair of
+/// lines through it coincides (or fewer than two lines exist).
+#[derive(Clone, Debug)]
+pub struct Undetermined {
+    pub links: (usize, usize),
+    pub why: String,
+}
+
+/// All instant centres of the solved links at one position.
+#[derive(Clone, Debug)]
+pub struct Centres {
+    /// Links taking part (the frame and the solved links), ascending.
+    pub links: Vec<usize>,
+    pub found: Vec<Centre>,
+    pub undetermined: Vec<Undetermined>,
+}
+
+impl Centres {
+    /// The centre of links `a` and `b` (in either order), if found.
+    pub fn get(&self, a: usize, b: usize) -> Option<&Centre> {
+        let key = (a.min(b), a.max(b));
+        self.found.iter().find(|c| c.links == key)
+    }
+}
+
+/// Below this sine two Kennedy lines are taken as parallel.
+pub const PARALLEL_SIN: f64 = 1e-10;
+
+/// Kennedy's construction at the position `c` of the analysis `an`.
+pub fn find(an: &Analysis, c: &Configuration) -> Centres {
+    let m = &an.mech;
+    let links: Vec<usize> = (0..m.links.len())
+        .filter(|&l| l == m.frame() || an.include[l])
+        .collect();
+    let n = links.len();
+    let idx = |l: usize| links.iter().position(|&x| x == l);
+    let origin = m.links[m.frame()].sketch_pose.origin;
+    let size = m.size;
+    let to_h = |p: Point| -> H { [(p.x - origin.x) / size, (p.y - origin.y) / size, 1.0] };
+    let mut known: Vec<Option<(H, How, f64)>> = vec![None; n * n];
+    let slot = |i: usize, j: usize| i.min(j) * n + i.max(j);
+    // Primary centres: the pairs.
+    for r in &m.revolutes {
+        if let (Some(i), Some(j)) = (idx(r.a), idx(r.b)) {
+            let l = if an.include[r.a] { r.a } else { r.b };
+            let at = c.point(m, l, r.point);
+            known[slot(i, j)] = Some((to_h(at), How::Revolute(m.point_name(r.point).into()), 1.0));
+        }
+    }
+    for pr in &m.prismatics {
+        if let (Some(i), Some(j)) = (idx(pr.guide), idx(pr.slider)) {
+            let u = c.pose(pr.guide).dir(pr.line_dir);
+            let nrm = Vec2::new(-u.y, u.x);
+            known[slot(i, j)] = Some(([nrm.x, nrm.y, 0.0], How::Prismatic, 1.0));
+        }
+    }
+    // Kennedy's theorem, pass by pass: each pass places every centre that
+    // two lines through already known centres determine; the best pair of
+    // lines (the largest angle between them) is used.
+    let mut undetermined = Vec::new();
+    // `last`: no pass places anything more; the centres whose lines all
+    // coincide are then recorded as undetermined.
+    let mut last = false;
+    loop {
+        let mut placed = Vec::new();
+        for i in 0..n {
+            for j in i + 1..n {
+                if known[slot(i, j)].is_some() {
+                    continue;
+                }
+                // The lines P_ik P_kj with unit normals (a² + b² = 1).
+                let lines: Vec<(usize, H)> = (0..n)
+                    .filter(|&k| k != i && k != j)
+                    .filter_map(|k| {
+                        let a = &known[slot(i, k)].as_ref()?.0;
+                        let b = &known[slot(k, j)].as_ref()?.0;
+                        let l = cross(a, b);
+                        let h = l[0].hypot(l[1]);
+                        (h > 1e-12).then(|| (k, [l[0] / h, l[1] / h, l[2] / h]))
+                    })
+                    .collect();
+                let mut best: Option<(f64, usize, usize)> = None;
+                for (x, (_, la)) in lines.iter().enumerate() {
+                    for (y, (_, lb)) in lines.iter().enumerate().skip(x + 1) {
+                        let s = (la[0] * lb[1] - la[1] * lb[0]).abs();
+                        if best.is_none_or(|b| s > b.0) {
+                            best = Some((s, x, y));
+                        }
+                    }
+                }
+                let Some((s, x, y)) = best else { continue };
+                let (la, lb) = (&lines[x].1, &lines[y].1);
+                let p = cross(la, lb);
+                let via = [links[lines[x].0], links[lines[y].0]];
+                if s > PARALLEL_SIN {
+                    placed.push((slot(i, j), (p, How::Kennedy(via), s)));
+                } else {
+                    // Parallel lines: distinct ones meet at infinity (a
+                    // relative translation), coincident ones say nothing.
+                    let gap = (la[2] - lb[2] * (la[0] * lb[0] + la[1] * lb[1]).signum()).abs();
+                    if gap > 1e-9 {
+                        let d = [-la[1], la[0], 0.0];
+                        placed.push((slot(i, j), (d, How::Kennedy(via), s)));
+                    } else if !last {
+                        // Coincident: wait for more lines from later passes.
+                    } else {
+                        undetermined.push(Undetermined {
+                            links: (links[i], links[j]),
+                            why: format!(
+                                "the Kennedy lines through links {} and {} coincide: the centre of links {} and {} is anywhere on them at this position",
+                                m.link_id(via[0]),
+                                m.link_id(via[1]),
+                                m.link_id(links[i]),
+                                m.link_id(links[j])
+                            ),
+                        });
+                        placed.push((slot(i, j), ([0.0, 0.0, 0.0], How::Kennedy(via), 0.0)));
+                    }
+                }
+            }
+        }
+        if placed.is_empty() {
+            if last {
+                break;
+            }
+            last = true;
+            continue;
+        }
+        last = false;
+        for (k, v) in placed {
+            known[k] = Some(v);
+        }
+    }
+    let mut found = Vec::new();
+    for i in 0..n {
+        for j in i + 1..n {
+            let pair = (links[i], links[j]);
+            match known[slot(i, j)].clone() {
+                Some((h, how, s)) if h != [0.0, 0.0, 0.0] => {
+                    let place = if h[2] == 0.0 {
+                        let d = Vec2::new(h[0], h[1]);
+                        Place::Infinity(d / d.hypot())
+                    } else {
+                        Place::At(Point::new(
+                            origin.x + h[0] / h[2] * size,
+                            origin.y + h[1] / h[2] * size,
+                        ))
+                    };
+                    found.push(Centre {
+                        links: pair,
+                        place,
+                        how,
+                        sin_angle: s,
+                    });
+                }
+                Some(_) => {}
+                None => undetermined.push(Undetermined {
+                    links: pair,
+                    why: format!(
+                        "fewer than two Kennedy lines reach the centre of links {} and {}",
+                        m.link_id(pair.0),
+                        m.link_id(pair.1)
+                    ),
+                }),
+            }
+        }
+    }
+    Centres {
+        links,
+        found,
+        undetermined,
+    }
+}
+
+/// The name of a centre as the lecture writes it: P₁₃ is "P13", or
+/// "P1,13" when a link id has more than one character.
+pub fn name(m: &Mechanism, c: &Centre) -> (String, String) {
+    let (a, b) = (m.link_id(c.links.0), m.link_id(c.links.1));
+    let sub = if a.chars().count() == 1 && b.chars().count() == 1 {
+        format!("{a}{b}")
+    } else {
+        format!("{a},{b}")
+    };
+    ("P".into(), sub)
+}
+
+/// One centre as text: "(x, y) m", or "at infinity, direction (dx, dy)".
+fn place_text(p: &Place) -> String {
+    match p {
+        Place::At(p) => format!("({:.6}, {:.6}) m", p.x, p.y),
+        Place::Infinity(d) => format!("at infinity, direction ({:.6}, {:.6})", d.x, d.y),
+    }
+}
+
+fn how_text(m: &Mechanism, h: &How) -> String {
+    match h {
+        How::Revolute(p) => format!("revolute pair {p}"),
+        How::Prismatic => "prismatic pair: ⊥ the guide".into(),
+        How::Kennedy([a, b]) => format!(
+            "Kennedy: lines through links {} and {}",
+            m.link_id(*a),
+            m.link_id(*b)
+        ),
+    }
+}
+
+/// The centres of the chosen positions (`position`: from 1; all if `None`)
+/// as a table.
+pub fn to_table(
+    an: &Analysis,
+    solved: &[crate::kinematics::solve::Solved],
+    position: Option<usize>,
+) -> String {
+    let m = &an.mech;
+    let mut out = String::new();
+    for (k, s) in solved.iter().enumerate() {
+        if position.is_some_and(|p| p != k + 1) {
+            continue;
+        }
+        let cs = find(an, &s.config);
+        out += &format!(
+            "position {}: {}\n  centre   place                                        found by                                   sin θ\n",
+            k + 1,
+            crate::kinematics::positions::describe_input(m, s.q)
+        );
+        for c in &cs.found {
+            let (p, sub) = name(m, c);
+            out += &format!(
+                "  {:<8} {:<44} {:<42} {:.1e}\n",
+                format!("{p}{sub}"),
+                place_text(&c.place),
+                how_text(m, &c.how),
+                c.sin_angle
+            );
+        }
+        for u in &cs.undetermined {
+            out += &format!(
+                "  P{}{}: undetermined: {}\n",
+                m.link_id(u.links.0),
+                m.link_id(u.links.1),
+                u.why
+            );
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The centres as JSON: per position, `{"P13": {"at": [x, y]} | {"infinity":
+/// [dx, dy]}, "how", "sin_angle"}` and the undetermined ones with why.
+pub fn to_json(
+    an: &Analysis,
+    solved: &[crate::kinematics::solve::Solved],
+    position: Option<usize>,
+) -> serde_json::Value {
+    use serde_json::{Map, Value, json};
+    let m = &an.mech;
+    let mut list = Vec::new();
+    for (k, s) in solved.iter().enumerate() {
+        if position.is_some_and(|p| p != k + 1) {
+            continue;
+        }
+        let cs = find(an, &s.config);
+        let mut centres = Map::new();
+        for c in &cs.found {
+            let (p, sub) = name(m, c);
+            let mut e = match c.place {
+                Place::At(p) => json!({ "at": [p.x, p.y] }),
+                Place::Infinity(d) => json!({ "infinity": [d.x, d.y] }),
+            };
+            e["links"] = json!([m.link_id(c.links.0), m.link_id(c.links.1)]);
+            e["how"] = Value::String(how_text(m, &c.how));
+            e["sin_angle"] = json!(c.sin_angle);
+            centres.insert(format!("{p}{sub}"), e);
+        }
+        let undetermined: Vec<Value> = cs
+            .undetermined
+            .iter()
+            .map(|u| {
+                json!({
+                    "links": [m.link_id(u.links.0), m.link_id(u.links.1)],
+                    "why": u.why,
+                })
+            })
+            .collect();
+        list.push(json!({
+            "position": k + 1,
+            "q": s.q,
+            "centres": centres,
+            "undetermined": undetermined,
+        }));
+    }
+    json!({ "positions": list })
+}

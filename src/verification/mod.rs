@@ -1,0 +1,7 @@
+//! Verification: checking hand-drawn plans ([`check`]), the
+//! extended-precision reference ([`reference`]) and the work-precision
+//! report built on it ([`precision`]).
+
+pub mod check;
+pub mod precision;
+pub mod reference;

@@ -1,0 +1,957 @@
+//! An extended-precision reference for measuring errors (never used to
+//! answer a scene): positions, velocities and accelerations of every solved
+//! link to about 50 significant digits.
+//!
+//! The formulation is route (b)'s (`analytic::constraint`): every moving
+//! link a pose (x, y, θ), two equations per revolute pair, two per
+//! prismatic pair, one for the input; but every number is a binary float
+//! of [`BITS`] bits (`dashu-float`, correctly rounded `sqrt`, `sin`, `cos`,
+//! `atan2`, π). The links' rigid shapes are rebuilt in that precision from
+//! the scene's numbers, which are taken as the exact binary values they are
+//! (a value the file gave in degrees or millimetres is recovered as the
+//! shortest decimal that the scene's conversion maps onto the stored value,
+//! and converted with an extended π or an exact 10⁻³). Positions by Newton's
+//! method started from the f64 closed-form solution (so on the same branch)
+//! down to a correction of 1e-50 of the sketch size, then the velocity and
+//! acceleration systems Φ_q·q̇ = −Φ_t, Φ_q·q̈ = γ by Gaussian elimination
+//! with partial pivoting.
+
+use crate::error::{Error, Result};
+use crate::kinematics::positions::{Configuration, PositionSolver, describe_input};
+use crate::kinematics::solve::Analysis;
+use crate::model::scene::{Direction, InputSpec, Through};
+use crate::model::shape::Placement;
+use dashu_float::FBig;
+use dashu_float::round::mode::HalfEven;
+use kurbo::{Point, Vec2};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Working precision, bits (≈ 57 decimal digits).
+pub const BITS: usize = 192;
+
+/// A real number of [`BITS`] bits.
+#[derive(Clone, Debug, PartialEq, PartialOrd)]
+pub struct Real(FBig<HalfEven, 2>);
+
+impl Real {
+    /// The exact value of an f64 (every finite f64 is a dyadic rational).
+    pub fn from_f64(x: f64) -> Real {
+        let v = FBig::<HalfEven, 2>::try_from(x).expect("a finite number");
+        Real(v.with_precision(BITS).value())
+    }
+    pub fn zero() -> Real {
+        Real::from_f64(0.0)
+    }
+    pub fn one() -> Real {
+        Real::from_f64(1.0)
+    }
+    /// π to [`BITS`] bits.
+    pub fn pi() -> Real {
+        static PI: std::sync::OnceLock<Real> = std::sync::OnceLock::new();
+        PI.get_or_init(|| Real(FBig::<HalfEven, 2>::pi(BITS)))
+            .clone()
+    }
+    /// Degrees to radians with the extended π.
+    pub fn from_degrees(deg: &Real) -> Real {
+        deg * &Real::pi() / Real::from_f64(180.0)
+    }
+    /// A decimal numeral ("-12.5", "3.25e-3") to [`BITS`] bits.
+    pub fn from_decimal(s: &str) -> Option<Real> {
+        let s = s.trim();
+        let (mant, exp) = match s.find(['e', 'E']) {
+            Some(i) => (&s[..i], s[i + 1..].parse::<i32>().ok()?),
+            None => (s, 0),
+        };
+        let (neg, mant) = match mant.strip_prefix('-') {
+            Some(r) => (true, r),
+            None => (false, mant.strip_prefix('+').unwrap_or(mant)),
+        };
+        let mut v = Real::zero();
+        let mut frac = 0i32;
+        let mut seen_dot = false;
+        let ten = Real::from_f64(10.0);
+        let mut any = false;
+        for c in mant.chars() {
+            match c {
+                '.' if !seen_dot => seen_dot = true,
+                '0'..='9' => {
+                    any = true;
+                    v = v * &ten + Real::from_f64(f64::from(c as u8 - b'0'));
+                    if seen_dot {
+                        frac += 1;
+                    }
+                }
+                _ => return None,
+            }
+        }
+        if !any {
+            return None;
+        }
+        let k = exp - frac;
+        let mut p = Real::one();
+        for _ in 0..k.unsigned_abs() {
+            p = p * &ten;
+        }
+        let v = if k >= 0 { v * p } else { v / p };
+        Some(if neg { -v } else { v })
+    }
+    /// The nearest f64.
+    pub fn to_f64(&self) -> f64 {
+        self.0.to_f64().value()
+    }
+    pub fn sqrt(&self) -> Real {
+        Real(self.0.sqrt())
+    }
+    pub fn sin_cos(&self) -> (Real, Real) {
+        let (s, c) = self.0.sin_cos();
+        (Real(s), Real(c))
+    }
+    /// atan2(self, x).
+    pub fn atan2(&self, x: &Real) -> Real {
+        Real(self.0.atan2(&x.0))
+    }
+    pub fn abs(&self) -> Real {
+        if self.is_negative() {
+            -self
+        } else {
+            self.clone()
+        }
+    }
+    pub fn is_negative(&self) -> bool {
+        self.0 < FBig::<HalfEven, 2>::ZERO
+    }
+    pub fn max(self, o: Real) -> Real {
+        if o > self { o } else { self }
+    }
+    pub fn square(&self) -> Real {
+        self * self
+    }
+    /// The angle reduced to (−π, π] (approximately at the ends).
+    fn wrap(&self) -> Real {
+        let tau = Real::pi() * Real::from_f64(2.0);
+        let k = (self / &tau).0.round();
+        self - &(Real(k) * tau)
+    }
+}
+
+macro_rules! binop {
+    ($tr:ident, $f:ident) => {
+        impl $tr<&Real> for &Real {
+            type Output = Real;
+            fn $f(self, o: &Real) -> Real {
+                Real((&self.0).$f(&o.0))
+            }
+        }
+        impl $tr<Real> for Real {
+            type Output = Real;
+            fn $f(self, o: Real) -> Real {
+                Real(self.0.$f(o.0))
+            }
+        }
+        impl $tr<&Real> for Real {
+            type Output = Real;
+            fn $f(self, o: &Real) -> Real {
+                Real(self.0.$f(&o.0))
+            }
+        }
+        impl $tr<Real> for &Real {
+            type Output = Real;
+            fn $f(self, o: Real) -> Real {
+                Real((&self.0).$f(o.0))
+            }
+        }
+    };
+}
+binop!(Add, add);
+binop!(Sub, sub);
+binop!(Mul, mul);
+binop!(Div, div);
+
+impl Neg for Real {
+    type Output = Real;
+    fn neg(self) -> Real {
+        Real(-self.0)
+    }
+}
+impl Neg for &Real {
+    type Output = Real;
+    fn neg(self) -> Real {
+        Real(-self.0.clone())
+    }
+}
+
+/// A planar vector of [`Real`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct V2 {
+    pub x: Real,
+    pub y: Real,
+}
+
+impl V2 {
+    pub fn new(x: Real, y: Real) -> V2 {
+        V2 { x, y }
+    }
+    pub fn zero() -> V2 {
+        V2::new(Real::zero(), Real::zero())
+    }
+    pub fn from_point(p: Point) -> V2 {
+        V2::new(Real::from_f64(p.x), Real::from_f64(p.y))
+    }
+    pub fn to_vec2(&self) -> Vec2 {
+        Vec2::new(self.x.to_f64(), self.y.to_f64())
+    }
+    pub fn to_point(&self) -> Point {
+        Point::new(self.x.to_f64(), self.y.to_f64())
+    }
+    pub fn add(&self, o: &V2) -> V2 {
+        V2::new(&self.x + &o.x, &self.y + &o.y)
+    }
+    pub fn sub(&self, o: &V2) -> V2 {
+        V2::new(&self.x - &o.x, &self.y - &o.y)
+    }
+    pub fn scale(&self, k: &Real) -> V2 {
+        V2::new(&self.x * k, &self.y * k)
+    }
+    pub fn dot(&self, o: &V2) -> Real {
+        &self.x * &o.x + &self.y * &o.y
+    }
+    pub fn cross(&self, o: &V2) -> Real {
+        &self.x * &o.y - &self.y * &o.x
+    }
+    /// k × v: turned by +90°.
+    pub fn perp(&self) -> V2 {
+        V2::new(-&self.y, self.x.clone())
+    }
+    pub fn norm(&self) -> Real {
+        self.dot(self).sqrt()
+    }
+    pub fn atan2(&self) -> Real {
+        self.y.atan2(&self.x)
+    }
+    /// Rotated by the angle whose (sin, cos) are given.
+    pub fn rotate(&self, s: &Real, c: &Real) -> V2 {
+        V2::new(c * &self.x - s * &self.y, s * &self.x + c * &self.y)
+    }
+    /// |a − b| / scale as an f64, for an f64 `b`.
+    pub fn dist_f64(&self, b: Vec2) -> f64 {
+        self.sub(&V2::new(Real::from_f64(b.x), Real::from_f64(b.y)))
+            .norm()
+            .to_f64()
+    }
+}
+
+/// The exact values of some of the scene's numbers, by point name and
+/// length key ("A-B"), where the file can only hold their f64 roundings
+/// (√3 and the like): the reference is then that of the exact mechanism.
+#[derive(Clone, Debug, Default)]
+pub struct Exact {
+    pub points: Vec<(String, Real, Real)>,
+    pub lengths: Vec<(String, Real)>,
+}
+
+/// The motion of one link: its pose, and the velocity and acceleration of
+/// the material point at its frame's origin.
+#[derive(Clone, Debug)]
+pub struct RefMotion {
+    pub origin: V2,
+    pub angle: Real,
+    pub omega: Real,
+    pub epsilon: Real,
+    pub v_origin: V2,
+    pub a_origin: V2,
+}
+
+/// A point's place, velocity and acceleration.
+#[derive(Clone, Debug)]
+pub struct RefPoint {
+    pub at: V2,
+    pub v: V2,
+    pub a: V2,
+}
+
+impl RefPoint {
+    /// Rounded to f64: (place, velocity, acceleration).
+    pub fn to_f64(&self) -> (Point, Vec2, Vec2) {
+        (self.at.to_point(), self.v.to_vec2(), self.a.to_vec2())
+    }
+}
+
+/// One solved position.
+#[derive(Clone, Debug)]
+pub struct RefState {
+    pub q: Real,
+    /// Per link (scene order); `None` for links not solved.
+    pub links: Vec<Option<RefMotion>>,
+    /// Local coordinates of the links' points (parallel to the mechanism's).
+    local: Vec<Vec<V2>>,
+    points_of: Vec<Vec<usize>>,
+}
+
+impl RefState {
+    /// Point `p` as carried by solved link `l`.
+    pub fn point_on(&self, l: usize, p: usize) -> RefPoint {
+        let mo = self.links[l].as_ref().expect("link solved");
+        let i = self.points_of[l]
+            .iter()
+            .position(|&x| x == p)
+            .expect("point on link");
+        let (s, c) = mo.angle.sin_cos();
+        let r = self.local[l][i].rotate(&s, &c);
+        let w2 = mo.omega.square();
+        RefPoint {
+            at: mo.origin.add(&r),
+            v: mo.v_origin.add(&r.perp().scale(&mo.omega)),
+            a: mo
+                .a_origin
+                .add(&r.perp().scale(&mo.epsilon))
+                .sub(&r.scale(&w2)),
+        }
+    }
+    /// Point `p` on the link that reports it.
+    pub fn point(&self, an: &Analysis, p: usize) -> RefPoint {
+        self.point_on(an.carrier(p), p)
+    }
+}
+
+#[derive(Clone, Debug)]
+enum Con {
+    Revolute { point: usize, a: usize, b: usize },
+    Prismatic { k: usize },
+    Driver,
+}
+
+#[derive(Clone, Debug)]
+struct Prism {
+    slider: usize,
+    guide: usize,
+    slider_local: V2,
+    line_point: V2,
+    line_dir: V2,
+    delta: Real,
+}
+
+/// The extended-precision model of a scene, ready to solve positions.
+pub struct Reference<'a> {
+    an: &'a Analysis,
+    local: Vec<Vec<V2>>,
+    prism: Vec<Prism>,
+    cons: Vec<Con>,
+    links: Vec<usize>,
+    slot: Vec<Option<usize>>,
+    /// Crank: the angle of the crank's line in its own frame; slider: the
+    /// sketch reference point on the guide and the guide's direction.
+    crank_offset: Real,
+    slider_ref: Option<(V2, V2)>,
+    rate: Real,
+    rate2: Real,
+    size: Real,
+    ps: PositionSolver<'a>,
+}
+
+/// The shortest decimal that the scene's conversion (× `unit`) maps onto
+/// `x`, in extended precision times the exact unit; `x` itself when the
+/// unit is 1.
+fn recover(x: f64, unit: f64, exact_unit: impl Fn() -> Real) -> Real {
+    if unit == 1.0 || x == 0.0 {
+        return Real::from_f64(x);
+    }
+    let d = x / unit;
+    for digits in 1..=17 {
+        let s = format!("{:.*e}", digits - 1, d);
+        if s.parse::<f64>().map(|v| v * unit) == Ok(x)
+            && let Some(r) = Real::from_decimal(&s)
+        {
+            return r * exact_unit();
+        }
+    }
+    Real::from_f64(x)
+}
+
+impl<'a> Reference<'a> {
+    pub fn new(an: &'a Analysis) -> Result<Reference<'a>> {
+        Reference::with_exact(an, &Exact::default())
+    }
+
+    /// The model with some of the scene's numbers replaced by exact values.
+    pub fn with_exact(an: &'a Analysis, exact: &Exact) -> Result<Reference<'a>> {
+        let m = &an.mech;
+        let sc = &m.scene;
+        let lu = sc.length_unit;
+        let au = sc.angle_unit;
+        let len_unit = move || {
+            if lu == 1e-3 {
+                Real::one() / Real::from_f64(1000.0)
+            } else {
+                Real::from_f64(lu)
+            }
+        };
+        let ang_unit = move || {
+            if au == std::f64::consts::PI / 180.0 {
+                Real::pi() / Real::from_f64(180.0)
+            } else {
+                Real::from_f64(au)
+            }
+        };
+        let length = |x: f64| recover(x, lu, len_unit);
+        let angle = |x: f64| recover(x, au, ang_unit);
+        let sketch: Vec<V2> = sc
+            .points
+            .iter()
+            .map(|p| match exact.points.iter().find(|e| e.0 == p.name) {
+                Some((_, x, y)) => V2::new(x.clone(), y.clone()),
+                None => V2::new(length(p.sketch.x), length(p.sketch.y)),
+            })
+            .collect();
+        let given = |a: usize, b: usize| -> Option<Real> {
+            let l = sc
+                .lengths
+                .iter()
+                .find(|l| (l.a == a && l.b == b) || (l.a == b && l.b == a))?;
+            Some(match exact.lengths.iter().find(|e| e.0 == l.key) {
+                Some((_, v)) => v.clone(),
+                None => length(l.value),
+            })
+        };
+        let dist =
+            |a: usize, b: usize| given(a, b).unwrap_or_else(|| sketch[a].sub(&sketch[b]).norm());
+        let guide_dir = |k: usize| -> V2 {
+            match sc.sliders[k].line.direction {
+                Direction::Angle(a) => {
+                    let (s, c) = angle(a).sin_cos();
+                    V2::new(c, s)
+                }
+                Direction::Along(q, r) => {
+                    let v = sketch[r].sub(&sketch[q]);
+                    let n = v.norm();
+                    v.scale(&(Real::one() / n))
+                }
+            }
+        };
+        // Rigid shapes by the contract's rule (as mechanism.rs builds them).
+        let mut local: Vec<Vec<V2>> = Vec::new();
+        let mut sketch_angle: Vec<Real> = Vec::new();
+        for (l, link) in m.links.iter().enumerate() {
+            let pts = &link.points;
+            if l == m.frame() {
+                local.push(pts.iter().map(|&p| sketch[p].clone()).collect());
+                sketch_angle.push(Real::zero());
+                continue;
+            }
+            let mut loc = vec![V2::zero(); pts.len()];
+            if pts.len() == 1 {
+                let k = sc
+                    .sliders
+                    .iter()
+                    .position(|s| s.slider == l)
+                    .expect("a one-point link is a slider (checked)");
+                sketch_angle.push(guide_dir(k).atan2());
+                local.push(loc);
+                continue;
+            }
+            let axis = sketch[pts[1]].sub(&sketch[pts[0]]);
+            sketch_angle.push(axis.atan2());
+            loc[1] = V2::new(dist(pts[0], pts[1]), Real::zero());
+            let axis_len = axis.norm();
+            let (ca, sa) = (axis.x.clone() / &axis_len, axis.y.clone() / &axis_len);
+            for k in 2..pts.len() {
+                let p = pts[k];
+                // The placement mechanism.rs decided (crate::model::shape), in
+                // extended precision.
+                let (j1, j2, flat, side) = match m.placements[l][k] {
+                    Placement::Sketch => {
+                        // The sketch position in the link's frame.
+                        loc[k] = sketch[p].sub(&sketch[pts[0]]).rotate(&-&sa, &ca);
+                        continue;
+                    }
+                    Placement::OnLine { refs } => (refs.0, refs.1, true, 1.0),
+                    Placement::Triangle { refs, side } => (refs.0, refs.1, false, side),
+                    Placement::Origin | Placement::Base => unreachable!("first two points"),
+                };
+                let (r1, r2) = (dist(p, pts[j1]), dist(p, pts[j2]));
+                let (a, b) = (loc[j1].clone(), loc[j2].clone());
+                let ab = b.sub(&a);
+                let d = ab.norm();
+                let e = ab.scale(&(Real::one() / &d));
+                let x = (d.square() + r1.square() - r2.square()) / (Real::from_f64(2.0) * &d);
+                let h2 = r1.square() - x.square();
+                let foot = a.add(&e.scale(&x));
+                loc[k] = if flat || h2.is_negative() {
+                    foot
+                } else {
+                    let h = h2.sqrt() * Real::from_f64(side);
+                    foot.add(&e.perp().scale(&h))
+                };
+            }
+            local.push(loc);
+        }
+        let local_of = |l: usize, p: usize| -> V2 {
+            let i = m.links[l]
+                .points
+                .iter()
+                .position(|&x| x == p)
+                .expect("point on link");
+            local[l][i].clone()
+        };
+        let mut prism = Vec::new();
+        for (k, s) in sc.sliders.iter().enumerate() {
+            let ga = &sketch_angle[s.guide];
+            let (gs, gc) = ga.sin_cos();
+            let through = match s.line.through {
+                Through::Point(p) => local_of(s.guide, p),
+                Through::Coords(c) => V2::new(length(c.x), length(c.y)),
+            };
+            let dir = match s.line.direction {
+                Direction::Angle(_) => guide_dir(k).rotate(&-&gs, &gc),
+                Direction::Along(q, r) => {
+                    let v = local_of(s.guide, r).sub(&local_of(s.guide, q));
+                    let n = v.norm();
+                    v.scale(&(Real::one() / n))
+                }
+            };
+            let line_point = through.add(&dir.perp().scale(&length(s.line.offset)));
+            prism.push(Prism {
+                slider: s.slider,
+                guide: s.guide,
+                slider_local: local_of(s.slider, s.point),
+                line_point,
+                line_dir: dir,
+                delta: &sketch_angle[s.slider] - ga,
+            });
+        }
+        // Unknowns and equations as route (b) has them.
+        let frame = m.frame();
+        let links: Vec<usize> = (0..m.links.len())
+            .filter(|&l| l != frame && an.include[l])
+            .collect();
+        let mut slot = vec![None; m.links.len()];
+        for (i, &l) in links.iter().enumerate() {
+            slot[l] = Some(i);
+        }
+        let inside = |l: usize| l == frame || an.include[l];
+        let mut cons = Vec::new();
+        for p in 0..sc.points.len() {
+            let ls: Vec<usize> = m
+                .links_of_point(p)
+                .into_iter()
+                .filter(|&l| inside(l))
+                .collect();
+            for &b in ls.iter().skip(1) {
+                cons.push(Con::Revolute {
+                    point: p,
+                    a: ls[0],
+                    b,
+                });
+            }
+        }
+        for (k, pr) in prism.iter().enumerate() {
+            if inside(pr.slider) && inside(pr.guide) {
+                cons.push(Con::Prismatic { k });
+            }
+        }
+        cons.push(Con::Driver);
+        let (crank_offset, slider_ref, rate, rate2) = match sc.input {
+            InputSpec::Crank {
+                link,
+                pivot,
+                omega,
+                epsilon,
+                ..
+            } => {
+                let pts = &m.links[link].points;
+                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                let w = local_of(link, other).sub(&local_of(link, pivot));
+                (
+                    w.atan2(),
+                    None,
+                    Real::from_f64(omega),
+                    Real::from_f64(epsilon),
+                )
+            }
+            InputSpec::Slider { pair, v, a, .. } => {
+                let pr = &prism[pair];
+                // The guide of a driving slider is the frame: local = world.
+                let u = pr.line_dir.clone();
+                let p = sketch[m.prismatics[pair].point].clone();
+                let foot = pr.line_point.add(&u.scale(&p.sub(&pr.line_point).dot(&u)));
+                (Real::zero(), Some((foot, u)), length(v), length(a))
+            }
+        };
+        let ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
+        Ok(Reference {
+            an,
+            local,
+            prism,
+            cons,
+            links,
+            slot,
+            crank_offset,
+            slider_ref,
+            rate,
+            rate2,
+            size: Real::from_f64(m.size),
+            ps,
+        })
+    }
+
+    /// The input's rates (ω1, ε1) or (v, a) as the reference takes them.
+    pub fn rates(&self) -> (Real, Real) {
+        (self.rate.clone(), self.rate2.clone())
+    }
+
+    /// Solve at the input coordinate `q` (rad or m), an exact binary value.
+    pub fn solve_f64(&mut self, q: f64) -> Result<RefState> {
+        self.solve(&Real::from_f64(q))
+    }
+
+    /// Solve at the input coordinate `q` given in extended precision.
+    pub fn solve(&mut self, q: &Real) -> Result<RefState> {
+        let c = self.ps.solve(q.to_f64())?;
+        self.refine(q, &c)
+    }
+
+    /// The start of the reference at each of `qs`, in order: the double
+    /// precision positions, continued from one to the next on the branch
+    /// the sketch shows. Each then refines on its own ([`Reference::refine`]).
+    pub fn starts(&mut self, qs: &[f64]) -> Result<Vec<Configuration>> {
+        qs.iter().map(|&q| self.ps.solve(q)).collect()
+    }
+
+    /// Newton's method in extended precision from the double precision
+    /// position `c` at `q`, then velocities and accelerations. Independent
+    /// of any other position, so positions can be refined in parallel.
+    pub fn refine(&self, q: &Real, c: &Configuration) -> Result<RefState> {
+        let m = &self.an.mech;
+        let qf = q.to_f64();
+        let mut x: Vec<Real> = Vec::with_capacity(3 * self.links.len());
+        for &l in &self.links {
+            let p = c.pose(l);
+            x.push(Real::from_f64(p.origin.x));
+            x.push(Real::from_f64(p.origin.y));
+            x.push(Real::from_f64(p.angle));
+        }
+        let fail = |why: String| Error::Assembly {
+            group: "the mechanism (extended-precision reference)".into(),
+            at: describe_input(m, qf),
+            why,
+        };
+        let stop = &self.size * &Real::from_f64(1e-50);
+        let mut done = false;
+        for _ in 0..40 {
+            let poses = self.poses(&x);
+            let r = self.residual(&poses, q);
+            let j = self.jacobian(&poses);
+            let dx =
+                gauss(j, r).ok_or_else(|| fail("the constraint Jacobian is singular".into()))?;
+            let mut big = Real::zero();
+            for (i, d) in dx.iter().enumerate() {
+                let d = if i % 3 == 2 {
+                    d * &self.size
+                } else {
+                    d.clone()
+                };
+                big = big.max(d.abs());
+            }
+            for (xi, d) in x.iter_mut().zip(&dx) {
+                *xi = &*xi - d;
+            }
+            if !big.to_f64().is_finite() {
+                return Err(fail("Newton's method diverged".into()));
+            }
+            if big <= stop {
+                done = true;
+                break;
+            }
+        }
+        if !done {
+            return Err(fail("Newton's method did not converge to 1e-50".into()));
+        }
+        let poses = self.poses(&x);
+        let j = self.jacobian(&poses);
+        let n = j.len();
+        let mut b = vec![Real::zero(); n];
+        b[n - 1] = self.rate.clone();
+        let xd = gauss(j.clone(), b).ok_or_else(|| fail("singular Jacobian".into()))?;
+        let g = self.gamma(&poses, &xd);
+        let xdd = gauss(j, g).ok_or_else(|| fail("singular Jacobian".into()))?;
+        let mut links = vec![None; m.links.len()];
+        links[m.frame()] = Some(RefMotion {
+            origin: V2::zero(),
+            angle: Real::zero(),
+            omega: Real::zero(),
+            epsilon: Real::zero(),
+            v_origin: V2::zero(),
+            a_origin: V2::zero(),
+        });
+        for (i, &l) in self.links.iter().enumerate() {
+            links[l] = Some(RefMotion {
+                origin: V2::new(x[3 * i].clone(), x[3 * i + 1].clone()),
+                angle: x[3 * i + 2].clone(),
+                omega: xd[3 * i + 2].clone(),
+                epsilon: xdd[3 * i + 2].clone(),
+                v_origin: V2::new(xd[3 * i].clone(), xd[3 * i + 1].clone()),
+                a_origin: V2::new(xdd[3 * i].clone(), xdd[3 * i + 1].clone()),
+            });
+        }
+        Ok(RefState {
+            q: q.clone(),
+            links,
+            local: self.local.clone(),
+            points_of: m.links.iter().map(|l| l.points.clone()).collect(),
+        })
+    }
+
+    /// (origin, θ, sin θ, cos θ) of every link (frame: identity).
+    fn poses(&self, x: &[Real]) -> Vec<Pose> {
+        (0..self.an.mech.links.len())
+            .map(|l| match self.slot[l] {
+                Some(i) => {
+                    let (s, c) = x[3 * i + 2].sin_cos();
+                    Pose {
+                        o: V2::new(x[3 * i].clone(), x[3 * i + 1].clone()),
+                        s,
+                        c,
+                        theta: x[3 * i + 2].clone(),
+                    }
+                }
+                None => Pose {
+                    o: V2::zero(),
+                    s: Real::zero(),
+                    c: Real::one(),
+                    theta: Real::zero(),
+                },
+            })
+            .collect()
+    }
+
+    fn local_of(&self, l: usize, p: usize) -> &V2 {
+        let i = self.an.mech.links[l]
+            .points
+            .iter()
+            .position(|&x| x == p)
+            .expect("point on link");
+        &self.local[l][i]
+    }
+
+    fn rows(&self) -> usize {
+        self.cons
+            .iter()
+            .map(|c| if matches!(c, Con::Driver) { 1 } else { 2 })
+            .sum()
+    }
+
+    fn residual(&self, p: &[Pose], q: &Real) -> Vec<Real> {
+        let mut r = Vec::with_capacity(self.rows());
+        for c in &self.cons {
+            match *c {
+                Con::Revolute { point, a, b } => {
+                    let d = p[a]
+                        .apply(self.local_of(a, point))
+                        .sub(&p[b].apply(self.local_of(b, point)));
+                    r.push(d.x);
+                    r.push(d.y);
+                }
+                Con::Prismatic { k } => {
+                    let pr = &self.prism[k];
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    r.push((&ps.theta - &pg.theta - &pr.delta).wrap());
+                    let u = pg.dir(&pr.line_dir);
+                    let lp = pg.apply(&pr.line_point);
+                    r.push(u.cross(&ps.apply(&pr.slider_local).sub(&lp)));
+                }
+                Con::Driver => r.push(match &self.slider_ref {
+                    None => {
+                        let l = self.an.mech.scene.input.link();
+                        (&p[l].theta + &self.crank_offset - q).wrap()
+                    }
+                    Some((foot, u)) => {
+                        let InputSpec::Slider { link, pair, .. } = self.an.mech.scene.input else {
+                            unreachable!("a slider input");
+                        };
+                        let at = p[link].apply(&self.prism[pair].slider_local);
+                        u.dot(&at.sub(foot)) - q
+                    }
+                }),
+            }
+        }
+        r
+    }
+
+    fn jacobian(&self, p: &[Pose]) -> Vec<Vec<Real>> {
+        let n = 3 * self.links.len();
+        let mut j = vec![vec![Real::zero(); n]; self.rows()];
+        // Row += sign · w · d(world point r of link l)/d(pose).
+        let put = |j: &mut Vec<Vec<Real>>, row: usize, l: usize, r: &V2, neg: bool, w: &V2| {
+            if let Some(i) = self.slot[l] {
+                let t = [w.x.clone(), w.y.clone(), w.dot(&r.perp())];
+                for (k, t) in t.into_iter().enumerate() {
+                    let cell = &mut j[row][3 * i + k];
+                    *cell = if neg { &*cell - t } else { &*cell + t };
+                }
+            }
+        };
+        let ex = V2::new(Real::one(), Real::zero());
+        let ey = V2::new(Real::zero(), Real::one());
+        let mut row = 0;
+        for c in &self.cons {
+            match *c {
+                Con::Revolute { point, a, b } => {
+                    let ra = p[a].dir(self.local_of(a, point));
+                    let rb = p[b].dir(self.local_of(b, point));
+                    for (k, w) in [(0, &ex), (1, &ey)] {
+                        put(&mut j, row + k, a, &ra, false, w);
+                        put(&mut j, row + k, b, &rb, true, w);
+                    }
+                    row += 2;
+                }
+                Con::Prismatic { k } => {
+                    let pr = &self.prism[k];
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    if let Some(i) = self.slot[pr.slider] {
+                        j[row][3 * i + 2] = &j[row][3 * i + 2] + Real::one();
+                    }
+                    if let Some(i) = self.slot[pr.guide] {
+                        j[row][3 * i + 2] = &j[row][3 * i + 2] - Real::one();
+                    }
+                    let u = pg.dir(&pr.line_dir);
+                    let rs = ps.dir(&pr.slider_local);
+                    let rg = pg.dir(&pr.line_point);
+                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    let nn = u.perp();
+                    put(&mut j, row + 1, pr.slider, &rs, false, &nn);
+                    put(&mut j, row + 1, pr.guide, &rg, true, &nn);
+                    if let Some(i) = self.slot[pr.guide] {
+                        j[row + 1][3 * i + 2] = &j[row + 1][3 * i + 2] + u.perp().cross(&d);
+                    }
+                    row += 2;
+                }
+                Con::Driver => {
+                    match (&self.slider_ref, &self.an.mech.scene.input) {
+                        (None, InputSpec::Crank { link, .. }) => {
+                            let i = self.slot[*link].expect("input solved");
+                            j[row][3 * i + 2] = Real::one();
+                        }
+                        (Some((_, u)), InputSpec::Slider { link, pair, .. }) => {
+                            let r = p[*link].dir(&self.prism[*pair].slider_local);
+                            put(&mut j, row, *link, &r, false, u);
+                        }
+                        _ => unreachable!("driver matches the input"),
+                    }
+                    row += 1;
+                }
+            }
+        }
+        j
+    }
+
+    fn gamma(&self, p: &[Pose], xd: &[Real]) -> Vec<Real> {
+        let rate = |l: usize| self.slot[l].map_or(Real::zero(), |i| xd[3 * i + 2].clone());
+        let lin = |l: usize| {
+            self.slot[l].map_or(V2::zero(), |i| {
+                V2::new(xd[3 * i].clone(), xd[3 * i + 1].clone())
+            })
+        };
+        let mut g = Vec::with_capacity(self.rows());
+        for c in &self.cons {
+            match *c {
+                Con::Revolute { point, a, b } => {
+                    let ra = p[a].dir(self.local_of(a, point));
+                    let rb = p[b].dir(self.local_of(b, point));
+                    let t = ra
+                        .scale(&rate(a).square())
+                        .sub(&rb.scale(&rate(b).square()));
+                    g.push(t.x);
+                    g.push(t.y);
+                }
+                Con::Prismatic { k } => {
+                    let pr = &self.prism[k];
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    let u = pg.dir(&pr.line_dir);
+                    let (ws, wg) = (rate(pr.slider), rate(pr.guide));
+                    let rs = ps.dir(&pr.slider_local);
+                    let rg = pg.dir(&pr.line_point);
+                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    let dd = lin(pr.slider)
+                        .add(&rs.perp().scale(&ws))
+                        .sub(&lin(pr.guide).add(&rg.perp().scale(&wg)));
+                    let wg2 = wg.square();
+                    let quad = u.scale(&-&wg2).cross(&d)
+                        + Real::from_f64(2.0) * u.perp().scale(&wg).cross(&dd)
+                        + u.cross(&rs.scale(&-ws.square()).add(&rg.scale(&wg2)));
+                    g.push(Real::zero());
+                    g.push(-quad);
+                }
+                Con::Driver => g.push(match (&self.slider_ref, &self.an.mech.scene.input) {
+                    (Some((_, u)), InputSpec::Slider { link, pair, .. }) => {
+                        let r = p[*link].dir(&self.prism[*pair].slider_local);
+                        &self.rate2 + rate(*link).square() * u.dot(&r)
+                    }
+                    _ => self.rate2.clone(),
+                }),
+            }
+        }
+        g
+    }
+}
+
+/// A link's pose with its sine and cosine.
+struct Pose {
+    o: V2,
+    s: Real,
+    c: Real,
+    theta: Real,
+}
+
+impl Pose {
+    fn dir(&self, v: &V2) -> V2 {
+        v.rotate(&self.s, &self.c)
+    }
+    fn apply(&self, v: &V2) -> V2 {
+        self.o.add(&self.dir(v))
+    }
+}
+
+/// Solve A·x = b by Gaussian elimination with partial pivoting.
+pub fn gauss(mut a: Vec<Vec<Real>>, mut b: Vec<Real>) -> Option<Vec<Real>> {
+    let n = b.len();
+    for k in 0..n {
+        let piv = (k..n).max_by(|&i, &j| {
+            a[i][k]
+                .abs()
+                .partial_cmp(&a[j][k].abs())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })?;
+        if a[piv][k] == Real::zero() {
+            return None;
+        }
+        a.swap(k, piv);
+        b.swap(k, piv);
+        let pivot = a[k][k].clone();
+        for i in k + 1..n {
+            if a[i][k] == Real::zero() {
+                continue;
+            }
+            let f = &a[i][k] / &pivot;
+            #[allow(clippy::needless_range_loop)] // rows i and k of one matrix
+            for c in k..n {
+                let t = &f * &a[k][c];
+                a[i][c] = &a[i][c] - t;
+            }
+            let t = &f * &b[k];
+            b[i] = &b[i] - t;
+        }
+    }
+    let mut x = vec![Real::zero(); n];
+    for k in (0..n).rev() {
+        let mut s = b[k].clone();
+        for c in k + 1..n {
+            s = s - &a[k][c] * &x[c];
+        }
+        x[k] = s / &a[k][k];
+    }
+    Some(x)
+}
+
+/// The reference at one input coordinate (rad or m, an exact binary value).
+pub fn solve(an: &Analysis, q: f64) -> Result<RefState> {
+    Reference::new(an)?.solve_f64(q)
+}
