@@ -200,11 +200,10 @@ impl<'a> ConstraintSolver<'a> {
         let mut last = f64::INFINITY;
         for it in 0..s.max_iter {
             let r = self.residual(&self.q, x);
-            // At the rounding of the equations (their lengths and the
-            // coordinates' magnitudes) a nearly singular Jacobian turns the
-            // rounding into corrections that need not contract: the
-            // equations hold as well as they can, and κ bounds the rest.
-            let at_rounding = r.amax() <= 64.0 * f64::EPSILON * self.magnitude();
+            // At the rounding of the equations a nearly singular Jacobian
+            // turns the rounding into corrections that need not contract:
+            // the equations hold as well as they can, and κ bounds the rest.
+            let at_rounding = self.at_rounding(&r);
             let j = self.jacobian(&self.q);
             let Some(dq) = j.lu().solve(&r) else {
                 return Err("the constraint Jacobian is singular".into());
@@ -234,6 +233,27 @@ impl<'a> ConstraintSolver<'a> {
                 crate::presentation::quantity::format_quantity(r, "")
             ))
         }
+    }
+
+    /// Whether every residual is within 64 ε of the numbers its equation is
+    /// made of: the lengths and the coordinates ([`Self::magnitude`]), and
+    /// for a row of angles (a prismatic pair's relative angle, a crank's
+    /// angle) the angles too: a crank followed through many turns carries
+    /// an angle of many radians, rounded as coarsely.
+    fn at_rounding(&self, r: &DVector<f64>) -> bool {
+        let size = self.magnitude();
+        let angles = (0..self.eq.links.len())
+            .map(|i| self.q[3 * i + 2].abs())
+            .fold(size, f64::max);
+        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
+        let angle_rows = self.eq.cons.iter().flat_map(|c| match c {
+            Constraint::Revolute { .. } => [Some(false), Some(false)],
+            Constraint::Prismatic(_) => [Some(true), Some(false)],
+            Constraint::Driver => [Some(crank), None],
+        });
+        r.iter()
+            .zip(angle_rows.flatten())
+            .all(|(r, angle)| r.abs() <= 64.0 * f64::EPSILON * if angle { angles } else { size })
     }
 
     /// The size of the numbers in the equations: the largest link and the
@@ -306,7 +326,23 @@ impl<'a> ConstraintSolver<'a> {
         }
         self.walk(span).map_err(err)?;
         self.last_input = x;
+        self.turn_back();
         Ok(())
+    }
+
+    /// Turn back by whole turns a link that has turned more than a turn
+    /// beyond (−π, π]: the equations and the motion see its angle modulo a
+    /// turn, but an angle of many radians is rounded as coarsely (a crank
+    /// followed through hundreds of turns would lose the digits Newton's
+    /// method needs to converge).
+    fn turn_back(&mut self) {
+        use std::f64::consts::{PI, TAU};
+        for i in 0..self.eq.links.len() {
+            let a = self.q[3 * i + 2];
+            if a.abs() > 3.0 * PI {
+                self.q[3 * i + 2] = a - TAU * (a / TAU).round();
+            }
+        }
     }
 
     /// The input coordinate of the last solved position (the sketch's
