@@ -2,21 +2,24 @@
 //! answer a scene): positions, velocities and accelerations of every solved
 //! link to about 50 significant digits.
 //!
-//! The formulation is route (b)'s (`analytic::constraint`): every moving
-//! link a pose (x, y, θ), two equations per revolute pair, two per
-//! prismatic pair, one for the input; but every number is a binary float
-//! of [`BITS`] bits (`dashu-float`, correctly rounded `sqrt`, `sin`, `cos`,
-//! `atan2`, π). The links' rigid shapes are rebuilt in that precision from
-//! the scene's numbers, which are taken as the exact binary values they are
-//! (a value the file gave in degrees or millimetres is recovered as the
-//! shortest decimal that the scene's conversion maps onto the stored value,
-//! and converted with an extended π or an exact 10⁻³). Positions by Newton's
-//! method started from the f64 closed-form solution (so on the same branch)
-//! down to a correction of 1e-50 of the sketch size, then the velocity and
-//! acceleration systems Φ_q·q̇ = −Φ_t, Φ_q·q̈ = γ by Gaussian elimination
-//! with partial pivoting.
+//! The equations are route (b)'s, the very code
+//! ([`crate::kinematics::analytic::equations`], generic over the number
+//! type): every moving link a pose (x, y, θ), two equations per revolute
+//! pair, two per prismatic pair, one for the input; but every number is a
+//! binary float of [`BITS`] bits (`dashu-float`, correctly rounded `sqrt`,
+//! `sin`, `cos`, `atan2`, π). The reference's independence is its own
+//! positions and its precision: the links' rigid shapes are rebuilt in that
+//! precision from the scene's numbers, which are taken as the exact binary
+//! values they are (a value the file gave in degrees or millimetres is
+//! recovered as the shortest decimal that the scene's conversion maps onto
+//! the stored value, and converted with an extended π or an exact 10⁻³).
+//! Positions by Newton's method started from the f64 closed-form solution
+//! (so on the same branch) down to a correction of 1e-50 of the sketch
+//! size, then the velocity and acceleration systems Φ_q·q̇ = −Φ_t,
+//! Φ_q·q̈ = γ by Gaussian elimination with partial pivoting.
 
 use crate::error::{Error, Result};
+use crate::kinematics::analytic::equations::{Equations, Number, Pose, Prism, Vector};
 use crate::kinematics::positions::{Configuration, PositionSolver, describe_input};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::{Direction, InputSpec, Through};
@@ -180,20 +183,28 @@ impl Neg for &Real {
     }
 }
 
-/// A planar vector of [`Real`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub struct V2 {
-    pub x: Real,
-    pub y: Real,
+impl Number for Real {
+    fn from_f64(x: f64) -> Real {
+        Real::from_f64(x)
+    }
+    fn sqrt(&self) -> Real {
+        Real::sqrt(self)
+    }
+    fn sin_cos(&self) -> (Real, Real) {
+        Real::sin_cos(self)
+    }
+    fn atan2(&self, x: &Real) -> Real {
+        Real::atan2(self, x)
+    }
+    fn wrap_angle(&self) -> Real {
+        self.wrap()
+    }
 }
 
-impl V2 {
-    pub fn new(x: Real, y: Real) -> V2 {
-        V2 { x, y }
-    }
-    pub fn zero() -> V2 {
-        V2::new(Real::zero(), Real::zero())
-    }
+/// A planar vector of [`Real`]s.
+pub type V2 = Vector<Real>;
+
+impl Vector<Real> {
     pub fn from_point(p: Point) -> V2 {
         V2::new(Real::from_f64(p.x), Real::from_f64(p.y))
     }
@@ -203,36 +214,7 @@ impl V2 {
     pub fn to_point(&self) -> Point {
         Point::new(self.x.to_f64(), self.y.to_f64())
     }
-    pub fn add(&self, o: &V2) -> V2 {
-        V2::new(&self.x + &o.x, &self.y + &o.y)
-    }
-    pub fn sub(&self, o: &V2) -> V2 {
-        V2::new(&self.x - &o.x, &self.y - &o.y)
-    }
-    pub fn scale(&self, k: &Real) -> V2 {
-        V2::new(&self.x * k, &self.y * k)
-    }
-    pub fn dot(&self, o: &V2) -> Real {
-        &self.x * &o.x + &self.y * &o.y
-    }
-    pub fn cross(&self, o: &V2) -> Real {
-        &self.x * &o.y - &self.y * &o.x
-    }
-    /// k × v: turned by +90°.
-    pub fn perp(&self) -> V2 {
-        V2::new(-&self.y, self.x.clone())
-    }
-    pub fn norm(&self) -> Real {
-        self.dot(self).sqrt()
-    }
-    pub fn atan2(&self) -> Real {
-        self.y.atan2(&self.x)
-    }
-    /// Rotated by the angle whose (sin, cos) are given.
-    pub fn rotate(&self, s: &Real, c: &Real) -> V2 {
-        V2::new(c * &self.x - s * &self.y, s * &self.x + c * &self.y)
-    }
-    /// |a − b| / scale as an f64, for an f64 `b`.
+    /// |a − b| as an f64, for an f64 `b`.
     pub fn dist_f64(&self, b: Vec2) -> f64 {
         self.sub(&V2::new(Real::from_f64(b.x), Real::from_f64(b.y)))
             .norm()
@@ -313,35 +295,13 @@ impl RefState {
     }
 }
 
-#[derive(Clone, Debug)]
-enum Con {
-    Revolute { point: usize, a: usize, b: usize },
-    Prismatic { k: usize },
-    Driver,
-}
-
-#[derive(Clone, Debug)]
-struct Prism {
-    slider: usize,
-    guide: usize,
-    slider_local: V2,
-    line_point: V2,
-    line_dir: V2,
-    delta: Real,
-}
-
 /// The extended-precision model of a scene, ready to solve positions.
 pub struct Reference<'a> {
     an: &'a Analysis,
+    /// Local coordinates of the links' points (parallel to the mechanism's).
     local: Vec<Vec<V2>>,
-    prism: Vec<Prism>,
-    cons: Vec<Con>,
-    links: Vec<usize>,
-    slot: Vec<Option<usize>>,
-    /// Crank: the angle of the crank's line in its own frame; slider: the
-    /// sketch reference point on the guide and the guide's direction.
-    crank_offset: Real,
-    slider_ref: Option<(V2, V2)>,
+    /// Route (b)'s equations in extended precision.
+    eq: Equations<Real>,
     rate: Real,
     rate2: Real,
     size: Real,
@@ -519,73 +479,24 @@ impl<'a> Reference<'a> {
             });
         }
         // Unknowns and equations as route (b) has them.
-        let frame = m.frame();
-        let links: Vec<usize> = (0..m.links.len())
-            .filter(|&l| l != frame && an.include[l])
-            .collect();
-        let mut slot = vec![None; m.links.len()];
-        for (i, &l) in links.iter().enumerate() {
-            slot[l] = Some(i);
-        }
-        let inside = |l: usize| l == frame || an.include[l];
-        let mut cons = Vec::new();
-        for p in 0..sc.points.len() {
-            let ls: Vec<usize> = m
-                .links_of_point(p)
-                .into_iter()
-                .filter(|&l| inside(l))
-                .collect();
-            for &b in ls.iter().skip(1) {
-                cons.push(Con::Revolute {
-                    point: p,
-                    a: ls[0],
-                    b,
-                });
+        let eq = Equations::new(
+            m,
+            &an.include,
+            local_of,
+            |k| prism[k].clone(),
+            |p| sketch[p].clone(),
+        );
+        let (rate, rate2) = match sc.input {
+            InputSpec::Crank { omega, epsilon, .. } => {
+                (Real::from_f64(omega), Real::from_f64(epsilon))
             }
-        }
-        for (k, pr) in prism.iter().enumerate() {
-            if inside(pr.slider) && inside(pr.guide) {
-                cons.push(Con::Prismatic { k });
-            }
-        }
-        cons.push(Con::Driver);
-        let (crank_offset, slider_ref, rate, rate2) = match sc.input {
-            InputSpec::Crank {
-                link,
-                pivot,
-                omega,
-                epsilon,
-                ..
-            } => {
-                let pts = &m.links[link].points;
-                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
-                let w = local_of(link, other).sub(&local_of(link, pivot));
-                (
-                    w.atan2(),
-                    None,
-                    Real::from_f64(omega),
-                    Real::from_f64(epsilon),
-                )
-            }
-            InputSpec::Slider { pair, v, a, .. } => {
-                let pr = &prism[pair];
-                // The guide of a driving slider is the frame: local = world.
-                let u = pr.line_dir.clone();
-                let p = sketch[m.prismatics[pair].point].clone();
-                let foot = pr.line_point.add(&u.scale(&p.sub(&pr.line_point).dot(&u)));
-                (Real::zero(), Some((foot, u)), length(v), length(a))
-            }
+            InputSpec::Slider { v, a, .. } => (length(v), length(a)),
         };
         let ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
         Ok(Reference {
             an,
             local,
-            prism,
-            cons,
-            links,
-            slot,
-            crank_offset,
-            slider_ref,
+            eq,
             rate,
             rate2,
             size: Real::from_f64(m.size),
@@ -622,8 +533,8 @@ impl<'a> Reference<'a> {
     pub fn refine(&self, q: &Real, c: &Configuration) -> Result<RefState> {
         let m = &self.an.mech;
         let qf = q.to_f64();
-        let mut x: Vec<Real> = Vec::with_capacity(3 * self.links.len());
-        for &l in &self.links {
+        let mut x: Vec<Real> = Vec::with_capacity(3 * self.eq.links.len());
+        for &l in &self.eq.links {
             let p = c.pose(l);
             x.push(Real::from_f64(p.origin.x));
             x.push(Real::from_f64(p.origin.y));
@@ -637,8 +548,8 @@ impl<'a> Reference<'a> {
         let stop = &self.size * &Real::from_f64(1e-50);
         let mut done = false;
         for _ in 0..40 {
-            let poses = self.poses(&x);
-            let r = self.residual(&poses, q);
+            let poses = self.eq.poses(&x);
+            let r = self.eq.residual(&poses, q);
             let j = self.jacobian(&poses);
             let dx =
                 gauss(j, r).ok_or_else(|| fail("the constraint Jacobian is singular".into()))?;
@@ -665,13 +576,13 @@ impl<'a> Reference<'a> {
         if !done {
             return Err(fail("Newton's method did not converge to 1e-50".into()));
         }
-        let poses = self.poses(&x);
+        let poses = self.eq.poses(&x);
         let j = self.jacobian(&poses);
         let n = j.len();
         let mut b = vec![Real::zero(); n];
         b[n - 1] = self.rate.clone();
         let xd = gauss(j.clone(), b).ok_or_else(|| fail("singular Jacobian".into()))?;
-        let g = self.gamma(&poses, &xd);
+        let g = self.eq.gamma(&poses, &xd, &self.rate2);
         let xdd = gauss(j, g).ok_or_else(|| fail("singular Jacobian".into()))?;
         let mut links = vec![None; m.links.len()];
         links[m.frame()] = Some(RefMotion {
@@ -682,7 +593,7 @@ impl<'a> Reference<'a> {
             v_origin: V2::zero(),
             a_origin: V2::zero(),
         });
-        for (i, &l) in self.links.iter().enumerate() {
+        for (i, &l) in self.eq.links.iter().enumerate() {
             links[l] = Some(RefMotion {
                 origin: V2::new(x[3 * i].clone(), x[3 * i + 1].clone()),
                 angle: x[3 * i + 2].clone(),
@@ -700,213 +611,11 @@ impl<'a> Reference<'a> {
         })
     }
 
-    /// (origin, θ, sin θ, cos θ) of every link (frame: identity).
-    fn poses(&self, x: &[Real]) -> Vec<Pose> {
-        (0..self.an.mech.links.len())
-            .map(|l| match self.slot[l] {
-                Some(i) => {
-                    let (s, c) = x[3 * i + 2].sin_cos();
-                    Pose {
-                        o: V2::new(x[3 * i].clone(), x[3 * i + 1].clone()),
-                        s,
-                        c,
-                        theta: x[3 * i + 2].clone(),
-                    }
-                }
-                None => Pose {
-                    o: V2::zero(),
-                    s: Real::zero(),
-                    c: Real::one(),
-                    theta: Real::zero(),
-                },
-            })
-            .collect()
-    }
-
-    fn local_of(&self, l: usize, p: usize) -> &V2 {
-        let i = self.an.mech.links[l]
-            .points
-            .iter()
-            .position(|&x| x == p)
-            .expect("point on link");
-        &self.local[l][i]
-    }
-
-    fn rows(&self) -> usize {
-        self.cons
-            .iter()
-            .map(|c| if matches!(c, Con::Driver) { 1 } else { 2 })
-            .sum()
-    }
-
-    fn residual(&self, p: &[Pose], q: &Real) -> Vec<Real> {
-        let mut r = Vec::with_capacity(self.rows());
-        for c in &self.cons {
-            match *c {
-                Con::Revolute { point, a, b } => {
-                    let d = p[a]
-                        .apply(self.local_of(a, point))
-                        .sub(&p[b].apply(self.local_of(b, point)));
-                    r.push(d.x);
-                    r.push(d.y);
-                }
-                Con::Prismatic { k } => {
-                    let pr = &self.prism[k];
-                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
-                    r.push((&ps.theta - &pg.theta - &pr.delta).wrap());
-                    let u = pg.dir(&pr.line_dir);
-                    let lp = pg.apply(&pr.line_point);
-                    r.push(u.cross(&ps.apply(&pr.slider_local).sub(&lp)));
-                }
-                Con::Driver => r.push(match &self.slider_ref {
-                    None => {
-                        let l = self.an.mech.scene.input.link();
-                        (&p[l].theta + &self.crank_offset - q).wrap()
-                    }
-                    Some((foot, u)) => {
-                        let InputSpec::Slider { link, pair, .. } = self.an.mech.scene.input else {
-                            unreachable!("a slider input");
-                        };
-                        let at = p[link].apply(&self.prism[pair].slider_local);
-                        u.dot(&at.sub(foot)) - q
-                    }
-                }),
-            }
-        }
-        r
-    }
-
-    fn jacobian(&self, p: &[Pose]) -> Vec<Vec<Real>> {
-        let n = 3 * self.links.len();
-        let mut j = vec![vec![Real::zero(); n]; self.rows()];
-        // Row += sign · w · d(world point r of link l)/d(pose).
-        let put = |j: &mut Vec<Vec<Real>>, row: usize, l: usize, r: &V2, neg: bool, w: &V2| {
-            if let Some(i) = self.slot[l] {
-                let t = [w.x.clone(), w.y.clone(), w.dot(&r.perp())];
-                for (k, t) in t.into_iter().enumerate() {
-                    let cell = &mut j[row][3 * i + k];
-                    *cell = if neg { &*cell - t } else { &*cell + t };
-                }
-            }
-        };
-        let ex = V2::new(Real::one(), Real::zero());
-        let ey = V2::new(Real::zero(), Real::one());
-        let mut row = 0;
-        for c in &self.cons {
-            match *c {
-                Con::Revolute { point, a, b } => {
-                    let ra = p[a].dir(self.local_of(a, point));
-                    let rb = p[b].dir(self.local_of(b, point));
-                    for (k, w) in [(0, &ex), (1, &ey)] {
-                        put(&mut j, row + k, a, &ra, false, w);
-                        put(&mut j, row + k, b, &rb, true, w);
-                    }
-                    row += 2;
-                }
-                Con::Prismatic { k } => {
-                    let pr = &self.prism[k];
-                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
-                    if let Some(i) = self.slot[pr.slider] {
-                        j[row][3 * i + 2] = &j[row][3 * i + 2] + Real::one();
-                    }
-                    if let Some(i) = self.slot[pr.guide] {
-                        j[row][3 * i + 2] = &j[row][3 * i + 2] - Real::one();
-                    }
-                    let u = pg.dir(&pr.line_dir);
-                    let rs = ps.dir(&pr.slider_local);
-                    let rg = pg.dir(&pr.line_point);
-                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
-                    let nn = u.perp();
-                    put(&mut j, row + 1, pr.slider, &rs, false, &nn);
-                    put(&mut j, row + 1, pr.guide, &rg, true, &nn);
-                    if let Some(i) = self.slot[pr.guide] {
-                        j[row + 1][3 * i + 2] = &j[row + 1][3 * i + 2] + u.perp().cross(&d);
-                    }
-                    row += 2;
-                }
-                Con::Driver => {
-                    match (&self.slider_ref, &self.an.mech.scene.input) {
-                        (None, InputSpec::Crank { link, .. }) => {
-                            let i = self.slot[*link].expect("input solved");
-                            j[row][3 * i + 2] = Real::one();
-                        }
-                        (Some((_, u)), InputSpec::Slider { link, pair, .. }) => {
-                            let r = p[*link].dir(&self.prism[*pair].slider_local);
-                            put(&mut j, row, *link, &r, false, u);
-                        }
-                        _ => unreachable!("driver matches the input"),
-                    }
-                    row += 1;
-                }
-            }
-        }
+    /// The Jacobian Φ_q at the poses.
+    fn jacobian(&self, p: &[Pose<Real>]) -> Vec<Vec<Real>> {
+        let mut j = vec![vec![Real::zero(); 3 * self.eq.links.len()]; self.eq.rows()];
+        self.eq.jacobian(p, |r, c, v| j[r][c] = &j[r][c] + v);
         j
-    }
-
-    fn gamma(&self, p: &[Pose], xd: &[Real]) -> Vec<Real> {
-        let rate = |l: usize| self.slot[l].map_or(Real::zero(), |i| xd[3 * i + 2].clone());
-        let lin = |l: usize| {
-            self.slot[l].map_or(V2::zero(), |i| {
-                V2::new(xd[3 * i].clone(), xd[3 * i + 1].clone())
-            })
-        };
-        let mut g = Vec::with_capacity(self.rows());
-        for c in &self.cons {
-            match *c {
-                Con::Revolute { point, a, b } => {
-                    let ra = p[a].dir(self.local_of(a, point));
-                    let rb = p[b].dir(self.local_of(b, point));
-                    let t = ra
-                        .scale(&rate(a).square())
-                        .sub(&rb.scale(&rate(b).square()));
-                    g.push(t.x);
-                    g.push(t.y);
-                }
-                Con::Prismatic { k } => {
-                    let pr = &self.prism[k];
-                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
-                    let u = pg.dir(&pr.line_dir);
-                    let (ws, wg) = (rate(pr.slider), rate(pr.guide));
-                    let rs = ps.dir(&pr.slider_local);
-                    let rg = pg.dir(&pr.line_point);
-                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
-                    let dd = lin(pr.slider)
-                        .add(&rs.perp().scale(&ws))
-                        .sub(&lin(pr.guide).add(&rg.perp().scale(&wg)));
-                    let wg2 = wg.square();
-                    let quad = u.scale(&-&wg2).cross(&d)
-                        + Real::from_f64(2.0) * u.perp().scale(&wg).cross(&dd)
-                        + u.cross(&rs.scale(&-ws.square()).add(&rg.scale(&wg2)));
-                    g.push(Real::zero());
-                    g.push(-quad);
-                }
-                Con::Driver => g.push(match (&self.slider_ref, &self.an.mech.scene.input) {
-                    (Some((_, u)), InputSpec::Slider { link, pair, .. }) => {
-                        let r = p[*link].dir(&self.prism[*pair].slider_local);
-                        &self.rate2 + rate(*link).square() * u.dot(&r)
-                    }
-                    _ => self.rate2.clone(),
-                }),
-            }
-        }
-        g
-    }
-}
-
-/// A link's pose with its sine and cosine.
-struct Pose {
-    o: V2,
-    s: Real,
-    c: Real,
-    theta: Real,
-}
-
-impl Pose {
-    fn dir(&self, v: &V2) -> V2 {
-        v.rotate(&self.s, &self.c)
-    }
-    fn apply(&self, v: &V2) -> V2 {
-        self.o.add(&self.dir(v))
     }
 }
 

@@ -4,26 +4,19 @@
 //! each prismatic pair two (no relative rotation; the slider's point on the
 //! guide line), the input one. Positions by Newton's method from the
 //! previous solution, velocities and accelerations by linear solves with
-//! the constraint Jacobian, whose conditioning is checked by SVD.
+//! the constraint Jacobian, whose conditioning is checked by SVD. The
+//! equations themselves (Φ, Φ_q, γ) are [`super::equations`], written once
+//! for f64 and for the extended-precision reference.
 
+use super::equations::{Constraint, Equations, Prism, Vector};
 use super::{Motion, Order};
 use crate::error::{Error, Result};
-use crate::geom::{Pose, perp, rotate, wrap_pi};
-use crate::kinematics::positions::{describe_input, sketch_input, sketch_slider_ref};
+use crate::geom::{Pose, wrap_pi};
+use crate::kinematics::positions::{describe_input, sketch_input};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 use nalgebra::{DMatrix, DVector};
-
-#[derive(Clone, Debug)]
-enum Constraint {
-    /// Point `point` of links a and b coincide (2 rows).
-    Revolute { point: usize, a: usize, b: usize },
-    /// Prismatic pair k (2 rows).
-    Prismatic { k: usize },
-    /// The input coordinate (1 row).
-    Driver,
-}
 
 /// Newton's stopping rule and the limit of conditioning accepted.
 #[derive(Clone, Copy, Debug)]
@@ -56,14 +49,13 @@ const MAX_TURN: f64 = 0.035;
 #[derive(Clone, Debug)]
 pub struct ConstraintSolver<'a> {
     m: &'a Mechanism,
-    /// Moving links solved, in order; their unknowns are 3·i .. 3·i+3.
-    links: Vec<usize>,
-    slot: Vec<Option<usize>>,
-    cons: Vec<Constraint>,
+    /// The unknowns and equations ([`super::equations`], in f64).
+    eq: Equations<f64>,
     q: DVector<f64>,
     last_input: f64,
     settings: Settings,
-    /// Each solved link's own size ([`Mechanism::link_scale`]), parallel to `links`.
+    /// Each solved link's own size ([`Mechanism::link_scale`]), parallel to
+    /// the links solved.
     scale: Vec<f64>,
     /// σ_min/σ_max of the scaled Jacobian at the last solve.
     pub conditioning: f64,
@@ -74,49 +66,35 @@ pub struct ConstraintSolver<'a> {
 impl<'a> ConstraintSolver<'a> {
     /// `include[l]`: link l is solved (the frame is always fixed).
     pub fn new(m: &'a Mechanism, include: &[bool], settings: Settings) -> ConstraintSolver<'a> {
-        let frame = m.frame();
-        let links: Vec<usize> = (0..m.links.len())
-            .filter(|&l| l != frame && include[l])
-            .collect();
-        let mut slot = vec![None; m.links.len()];
-        for (i, &l) in links.iter().enumerate() {
-            slot[l] = Some(i);
-        }
-        let inside = |l: usize| l == frame || include[l];
-        let mut cons = Vec::new();
-        for p in 0..m.scene.points.len() {
-            let ls: Vec<usize> = m
-                .links_of_point(p)
-                .into_iter()
-                .filter(|&l| inside(l))
-                .collect();
-            for &b in ls.iter().skip(1) {
-                cons.push(Constraint::Revolute {
-                    point: p,
-                    a: ls[0],
-                    b,
-                });
-            }
-        }
-        for (k, pr) in m.prismatics.iter().enumerate() {
-            if inside(pr.slider) && inside(pr.guide) {
-                cons.push(Constraint::Prismatic { k });
-            }
-        }
-        cons.push(Constraint::Driver);
-        let mut q = DVector::zeros(3 * links.len());
-        for (i, &l) in links.iter().enumerate() {
+        let v = |v: Vec2| Vector::new(v.x, v.y);
+        let eq = Equations::new(
+            m,
+            include,
+            |l, p| v(m.local(l, p)),
+            |k| {
+                let pr = &m.prismatics[k];
+                Prism {
+                    slider: pr.slider,
+                    guide: pr.guide,
+                    slider_local: v(pr.slider_local),
+                    line_point: v(pr.line_point),
+                    line_dir: v(pr.line_dir),
+                    delta: pr.delta,
+                }
+            },
+            |p| v(m.scene.points[p].sketch.to_vec2()),
+        );
+        let mut q = DVector::zeros(3 * eq.links.len());
+        for (i, &l) in eq.links.iter().enumerate() {
             let p = m.links[l].sketch_pose;
             q[3 * i] = p.origin.x;
             q[3 * i + 1] = p.origin.y;
             q[3 * i + 2] = p.angle;
         }
-        let scale = links.iter().map(|&l| m.link_scale(l)).collect();
+        let scale = eq.links.iter().map(|&l| m.link_scale(l)).collect();
         ConstraintSolver {
             m,
-            links,
-            slot,
-            cons,
+            eq,
             q,
             last_input: f64::NAN,
             settings,
@@ -126,199 +104,27 @@ impl<'a> ConstraintSolver<'a> {
         }
     }
 
-    fn pose(&self, q: &DVector<f64>, l: usize) -> Pose {
-        match self.slot[l] {
-            Some(i) => Pose::new(Point::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]),
-            None => Pose::IDENTITY,
-        }
-    }
-
     fn rows(&self) -> usize {
-        self.cons
-            .iter()
-            .map(|c| {
-                if matches!(c, Constraint::Driver) {
-                    1
-                } else {
-                    2
-                }
-            })
-            .sum()
+        self.eq.rows()
     }
 
     /// Constraint residuals Φ(q) at input coordinate `x`.
     fn residual(&self, q: &DVector<f64>, x: f64) -> DVector<f64> {
-        let m = self.m;
-        let mut r = DVector::zeros(self.rows());
-        let mut row = 0;
-        for c in &self.cons {
-            match *c {
-                Constraint::Revolute { point, a, b } => {
-                    let d = self.pose(q, a).apply(m.local(a, point))
-                        - self.pose(q, b).apply(m.local(b, point));
-                    r[row] = d.x;
-                    r[row + 1] = d.y;
-                    row += 2;
-                }
-                Constraint::Prismatic { k } => {
-                    let pr = &m.prismatics[k];
-                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
-                    r[row] = wrap_pi(ps.angle - pg.angle - pr.delta);
-                    let line = pr.line(&pg);
-                    r[row + 1] = line.dir.cross(ps.apply(pr.slider_local) - line.point);
-                    row += 2;
-                }
-                Constraint::Driver => {
-                    let d = self.driver_value(q) - x;
-                    // A crank angle is defined modulo a turn.
-                    r[row] = match m.scene.input {
-                        InputSpec::Crank { .. } => wrap_pi(d),
-                        InputSpec::Slider { .. } => d,
-                    };
-                    row += 1;
-                }
-            }
-        }
-        r
-    }
-
-    fn driver_value(&self, q: &DVector<f64>) -> f64 {
-        let m = self.m;
-        match m.scene.input {
-            InputSpec::Crank { link, pivot, .. } => {
-                let pts = &m.links[link].points;
-                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
-                let w = m.local(link, other) - m.local(link, pivot);
-                self.pose(q, link).angle + w.atan2()
-            }
-            InputSpec::Slider { link, pair, .. } => {
-                let pr = &m.prismatics[pair];
-                let u = pr.line(&Pose::IDENTITY).dir;
-                u.dot(self.pose(q, link).apply(pr.slider_local) - sketch_slider_ref(m, pair))
-            }
-        }
+        DVector::from_vec(self.eq.residual(&self.eq.poses(q.as_slice()), &x))
     }
 
     /// The Jacobian ∂Φ/∂q (analytic).
     fn jacobian(&self, q: &DVector<f64>) -> DMatrix<f64> {
-        let m = self.m;
         let mut j = DMatrix::zeros(self.rows(), q.len());
-        // d(world point)/d(pose of l): [I | k×r].
-        let put_point =
-            |j: &mut DMatrix<f64>, row: usize, l: usize, r: Vec2, sign: f64, w: Vec2| {
-                // Row of w·(world point of l) with r = R(θ)·local.
-                if let Some(i) = self.slot[l] {
-                    j[(row, 3 * i)] += sign * w.x;
-                    j[(row, 3 * i + 1)] += sign * w.y;
-                    j[(row, 3 * i + 2)] += sign * w.dot(perp(r));
-                }
-            };
-        let mut row = 0;
-        for c in &self.cons {
-            match *c {
-                Constraint::Revolute { point, a, b } => {
-                    let ra = self.pose(q, a).dir(m.local(a, point));
-                    let rb = self.pose(q, b).dir(m.local(b, point));
-                    for (k, w) in [(0, Vec2::new(1.0, 0.0)), (1, Vec2::new(0.0, 1.0))] {
-                        put_point(&mut j, row + k, a, ra, 1.0, w);
-                        put_point(&mut j, row + k, b, rb, -1.0, w);
-                    }
-                    row += 2;
-                }
-                Constraint::Prismatic { k } => {
-                    let pr = &m.prismatics[k];
-                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
-                    if let Some(i) = self.slot[pr.slider] {
-                        j[(row, 3 * i + 2)] += 1.0;
-                    }
-                    if let Some(i) = self.slot[pr.guide] {
-                        j[(row, 3 * i + 2)] -= 1.0;
-                    }
-                    // f = u × (Q − P): u and P turn with the guide.
-                    let line = pr.line(&pg);
-                    let u = line.dir;
-                    let rs = ps.dir(pr.slider_local);
-                    let rg = pg.dir(pr.line_point);
-                    let d = ps.apply(pr.slider_local) - line.point;
-                    // cross(u, X) = (−u.y, u.x)·X
-                    let n = Vec2::new(-u.y, u.x);
-                    put_point(&mut j, row + 1, pr.slider, rs, 1.0, n);
-                    put_point(&mut j, row + 1, pr.guide, rg, -1.0, n);
-                    if let Some(i) = self.slot[pr.guide] {
-                        j[(row + 1, 3 * i + 2)] += perp(u).cross(d);
-                    }
-                    row += 2;
-                }
-                Constraint::Driver => {
-                    match m.scene.input {
-                        InputSpec::Crank { link, .. } => {
-                            let i = self.slot[link].expect("input is solved");
-                            j[(row, 3 * i + 2)] = 1.0;
-                        }
-                        InputSpec::Slider { link, pair, .. } => {
-                            let pr = &m.prismatics[pair];
-                            let u = pr.line(&Pose::IDENTITY).dir;
-                            let r = self.pose(q, link).dir(pr.slider_local);
-                            put_point(&mut j, row, link, r, 1.0, u);
-                        }
-                    }
-                    row += 1;
-                }
-            }
-        }
+        self.eq
+            .jacobian(&self.eq.poses(q.as_slice()), |r, c, v| j[(r, c)] += v);
         j
     }
 
     /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in q̇).
     fn gamma(&self, q: &DVector<f64>, qd: &DVector<f64>, input_acc: f64) -> DVector<f64> {
-        let m = self.m;
-        let mut g = DVector::zeros(self.rows());
-        let rate = |l: usize| self.slot[l].map_or(0.0, |i| qd[3 * i + 2]);
-        let lin =
-            |l: usize| self.slot[l].map_or(Vec2::ZERO, |i| Vec2::new(qd[3 * i], qd[3 * i + 1]));
-        let mut row = 0;
-        for c in &self.cons {
-            match *c {
-                Constraint::Revolute { point, a, b } => {
-                    let ra = self.pose(q, a).dir(m.local(a, point));
-                    let rb = self.pose(q, b).dir(m.local(b, point));
-                    let t = ra * rate(a).powi(2) - rb * rate(b).powi(2);
-                    g[row] = t.x;
-                    g[row + 1] = t.y;
-                    row += 2;
-                }
-                Constraint::Prismatic { k } => {
-                    let pr = &m.prismatics[k];
-                    let (ps, pg) = (self.pose(q, pr.slider), self.pose(q, pr.guide));
-                    let line = pr.line(&pg);
-                    let u = line.dir;
-                    let (ws, wg) = (rate(pr.slider), rate(pr.guide));
-                    let rs = ps.dir(pr.slider_local);
-                    let rg = pg.dir(pr.line_point);
-                    let d = ps.apply(pr.slider_local) - line.point;
-                    let dd = (lin(pr.slider) + perp(rs) * ws) - (lin(pr.guide) + perp(rg) * wg);
-                    // f̈ = ü×d + 2u̇×ḋ + u×d̈; move the q̈-free part to γ.
-                    let quad = (-u * wg * wg).cross(d)
-                        + 2.0 * (perp(u) * wg).cross(dd)
-                        + u.cross(-rs * ws * ws + rg * wg * wg);
-                    g[row + 1] = -quad;
-                    row += 2;
-                }
-                Constraint::Driver => {
-                    g[row] = match m.scene.input {
-                        InputSpec::Crank { .. } => input_acc,
-                        InputSpec::Slider { link, pair, .. } => {
-                            let pr = &m.prismatics[pair];
-                            let u = pr.line(&Pose::IDENTITY).dir;
-                            let r = self.pose(q, link).dir(pr.slider_local);
-                            input_acc + rate(link).powi(2) * u.dot(r)
-                        }
-                    };
-                    row += 1;
-                }
-            }
-        }
-        g
+        let p = self.eq.poses(q.as_slice());
+        DVector::from_vec(self.eq.gamma(&p, qd.as_slice(), &input_acc))
     }
 
     /// The scale of each row: a length for the rows that close points, a
@@ -326,13 +132,12 @@ impl<'a> ConstraintSolver<'a> {
     /// angle, a crank's angle).
     fn row_scales(&self) -> Vec<f64> {
         let m = self.m;
-        let size_of = |l: usize| self.slot[l].map_or(0.0, |i| self.scale[i]);
+        let size_of = |l: usize| self.eq.slot[l].map_or(0.0, |i| self.scale[i]);
         let mut out = Vec::with_capacity(self.rows());
-        for c in &self.cons {
-            match *c {
+        for c in &self.eq.cons {
+            match c {
                 Constraint::Revolute { .. } => out.extend([1.0, 1.0]),
-                Constraint::Prismatic { k } => {
-                    let pr = &m.prismatics[k];
+                Constraint::Prismatic(pr) => {
                     let l = size_of(pr.slider).max(size_of(pr.guide));
                     out.extend([l.max(f64::MIN_POSITIVE), 1.0]);
                 }
@@ -355,7 +160,7 @@ impl<'a> ConstraintSolver<'a> {
         for (r, sc) in self.row_scales().into_iter().enumerate() {
             js.row_mut(r).scale_mut(sc);
         }
-        for i in 0..self.links.len() {
+        for i in 0..self.eq.links.len() {
             js.column_mut(3 * i + 2).scale_mut(1.0 / self.scale[i]);
         }
         for c in 0..js.ncols() {
@@ -374,7 +179,7 @@ impl<'a> ConstraintSolver<'a> {
     /// against one radian.
     fn correction(&self, q: &DVector<f64>, dq: &DVector<f64>) -> f64 {
         let mut big = 0.0f64;
-        for i in 0..self.links.len() {
+        for i in 0..self.eq.links.len() {
             let l = self.scale[i];
             big = big
                 .max(dq[3 * i].abs() / (l + q[3 * i].abs()))
@@ -395,11 +200,10 @@ impl<'a> ConstraintSolver<'a> {
         let mut last = f64::INFINITY;
         for it in 0..s.max_iter {
             let r = self.residual(&self.q, x);
-            // At the rounding of the equations (their lengths and the
-            // coordinates' magnitudes) a nearly singular Jacobian turns the
-            // rounding into corrections that need not contract: the
-            // equations hold as well as they can, and κ bounds the rest.
-            let at_rounding = r.amax() <= 64.0 * f64::EPSILON * self.magnitude();
+            // At the rounding of the equations a nearly singular Jacobian
+            // turns the rounding into corrections that need not contract:
+            // the equations hold as well as they can, and κ bounds the rest.
+            let at_rounding = self.at_rounding(&r);
             let j = self.jacobian(&self.q);
             let Some(dq) = j.lu().solve(&r) else {
                 return Err("the constraint Jacobian is singular".into());
@@ -431,11 +235,32 @@ impl<'a> ConstraintSolver<'a> {
         }
     }
 
+    /// Whether every residual is within 64 ε of the numbers its equation is
+    /// made of: the lengths and the coordinates ([`Self::magnitude`]), and
+    /// for a row of angles (a prismatic pair's relative angle, a crank's
+    /// angle) the angles too: a crank followed through many turns carries
+    /// an angle of many radians, rounded as coarsely.
+    fn at_rounding(&self, r: &DVector<f64>) -> bool {
+        let size = self.magnitude();
+        let angles = (0..self.eq.links.len())
+            .map(|i| self.q[3 * i + 2].abs())
+            .fold(size, f64::max);
+        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
+        let angle_rows = self.eq.cons.iter().flat_map(|c| match c {
+            Constraint::Revolute { .. } => [Some(false), Some(false)],
+            Constraint::Prismatic(_) => [Some(true), Some(false)],
+            Constraint::Driver => [Some(crank), None],
+        });
+        r.iter()
+            .zip(angle_rows.flatten())
+            .all(|(r, angle)| r.abs() <= 64.0 * f64::EPSILON * if angle { angles } else { size })
+    }
+
     /// The size of the numbers in the equations: the largest link and the
     /// largest coordinate of a solved link.
     fn magnitude(&self) -> f64 {
         let mut x = 0.0f64;
-        for i in 0..self.links.len() {
+        for i in 0..self.eq.links.len() {
             x = x.max(self.scale[i] + self.q[3 * i].abs().max(self.q[3 * i + 1].abs()));
         }
         x
@@ -464,7 +289,7 @@ impl<'a> ConstraintSolver<'a> {
     /// to measure how the path turns.
     fn unit_direction(&self, t: &DVector<f64>, dx: f64) -> DVector<f64> {
         let mut d = DVector::zeros(t.len() + 1);
-        for i in 0..self.links.len() {
+        for i in 0..self.eq.links.len() {
             d[3 * i] = t[3 * i] / self.scale[i];
             d[3 * i + 1] = t[3 * i + 1] / self.scale[i];
             d[3 * i + 2] = t[3 * i + 2];
@@ -501,7 +326,23 @@ impl<'a> ConstraintSolver<'a> {
         }
         self.walk(span).map_err(err)?;
         self.last_input = x;
+        self.turn_back();
         Ok(())
+    }
+
+    /// Turn back by whole turns a link that has turned more than a turn
+    /// beyond (−π, π]: the equations and the motion see its angle modulo a
+    /// turn, but an angle of many radians is rounded as coarsely (a crank
+    /// followed through hundreds of turns would lose the digits Newton's
+    /// method needs to converge).
+    fn turn_back(&mut self) {
+        use std::f64::consts::{PI, TAU};
+        for i in 0..self.eq.links.len() {
+            let a = self.q[3 * i + 2];
+            if a.abs() > 3.0 * PI {
+                self.q[3 * i + 2] = a - TAU * (a / TAU).round();
+            }
+        }
     }
 
     /// The input coordinate of the last solved position (the sketch's
@@ -534,7 +375,7 @@ impl<'a> ConstraintSolver<'a> {
             1.0
         } else {
             let l = self.m.scene.input.link();
-            self.slot[l].map_or(self.m.size, |i| self.scale[i])
+            self.eq.slot[l].map_or(self.m.size, |i| self.scale[i])
         };
         let max_step = if crank {
             5f64.to_radians()
@@ -646,8 +487,11 @@ impl<'a> ConstraintSolver<'a> {
             0.0,
             0.0,
         ));
-        for (i, &l) in self.links.iter().enumerate() {
-            let pose = self.pose(&self.q, l);
+        for (i, &l) in self.eq.links.iter().enumerate() {
+            let pose = Pose::new(
+                Point::new(self.q[3 * i], self.q[3 * i + 1]),
+                self.q[3 * i + 2],
+            );
             let v = Vec2::new(qd[3 * i], qd[3 * i + 1]);
             let (a, eps) = match &qdd {
                 Some(a) => (Vec2::new(a[3 * i], a[3 * i + 1]), a[3 * i + 2]),
@@ -662,7 +506,6 @@ impl<'a> ConstraintSolver<'a> {
                 eps,
             ));
         }
-        let _ = rotate;
         Ok(out)
     }
 }

@@ -6,9 +6,12 @@
 //!   group written in its pair coordinates (route (a)).
 //! - [`constraint`]: all links at once as poses (x, y, θ) with a constraint
 //!   Jacobian, Newton for positions, linear solves for rates (route (b)).
+//! - [`equations`]: route (b)'s equations generic over the number type
+//!   (f64 here, extended precision in the reference).
 
 pub mod constraint;
 pub mod contour;
+pub mod equations;
 
 use crate::geom::{Pose, perp};
 use kurbo::{Point, Vec2};

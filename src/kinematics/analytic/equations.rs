@@ -1,0 +1,483 @@
+//! Route (b)'s equations written once, generic over the number type: every
+//! moving link a pose (x, y, θ); a revolute pair's point coincides on both
+//! links (2 rows), a prismatic pair lets no relative rotation and keeps the
+//! slider's point on the guide line (2 rows), the driver fixes the input
+//! (1 row). The residual Φ(q, x), the Jacobian Φ_q and γ of the
+//! acceleration equations Φ_q·q̈ = γ are evaluated in `f64` by route (b)
+//! ([`super::constraint`]) and in extended precision by the reference
+//! ([`crate::verification::reference`]), whose independence is its own
+//! positions and its precision, not a copy of the formulas.
+
+use crate::model::mechanism::Mechanism;
+use crate::model::scene::InputSpec;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// What the equations need of a number: a field with square root,
+/// trigonometry and the exact image of every `f64`.
+pub trait Number:
+    Clone
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// The number equal to `x` (every finite f64 is a dyadic rational).
+    fn from_f64(x: f64) -> Self;
+    fn zero() -> Self {
+        Self::from_f64(0.0)
+    }
+    fn one() -> Self {
+        Self::from_f64(1.0)
+    }
+    fn sqrt(&self) -> Self;
+    fn sin_cos(&self) -> (Self, Self);
+    /// atan2(self, x).
+    fn atan2(&self, x: &Self) -> Self;
+    /// The angle reduced to (−π, π].
+    fn wrap_angle(&self) -> Self;
+}
+
+impl Number for f64 {
+    #[inline]
+    fn from_f64(x: f64) -> f64 {
+        x
+    }
+    #[inline]
+    fn sqrt(&self) -> f64 {
+        f64::sqrt(*self)
+    }
+    #[inline]
+    fn sin_cos(&self) -> (f64, f64) {
+        f64::sin_cos(*self)
+    }
+    #[inline]
+    fn atan2(&self, x: &f64) -> f64 {
+        f64::atan2(*self, *x)
+    }
+    #[inline]
+    fn wrap_angle(&self) -> f64 {
+        crate::geom::wrap_pi(*self)
+    }
+}
+
+/// A planar vector (a place, a displacement, a rate).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vector<T> {
+    pub x: T,
+    pub y: T,
+}
+
+impl<T: Number> Vector<T> {
+    #[inline]
+    pub fn new(x: T, y: T) -> Self {
+        Vector { x, y }
+    }
+    pub fn zero() -> Self {
+        Vector::new(T::zero(), T::zero())
+    }
+    #[inline]
+    pub fn add(&self, o: &Self) -> Self {
+        Vector::new(self.x.clone() + o.x.clone(), self.y.clone() + o.y.clone())
+    }
+    #[inline]
+    pub fn sub(&self, o: &Self) -> Self {
+        Vector::new(self.x.clone() - o.x.clone(), self.y.clone() - o.y.clone())
+    }
+    #[inline]
+    pub fn scale(&self, k: &T) -> Self {
+        Vector::new(self.x.clone() * k.clone(), self.y.clone() * k.clone())
+    }
+    #[inline]
+    pub fn neg(&self) -> Self {
+        Vector::new(-self.x.clone(), -self.y.clone())
+    }
+    #[inline]
+    pub fn dot(&self, o: &Self) -> T {
+        self.x.clone() * o.x.clone() + self.y.clone() * o.y.clone()
+    }
+    #[inline]
+    pub fn cross(&self, o: &Self) -> T {
+        self.x.clone() * o.y.clone() - self.y.clone() * o.x.clone()
+    }
+    /// k × v: turned by +90°.
+    #[inline]
+    pub fn perp(&self) -> Self {
+        Vector::new(-self.y.clone(), self.x.clone())
+    }
+    pub fn norm(&self) -> T {
+        self.dot(self).sqrt()
+    }
+    pub fn atan2(&self) -> T {
+        self.y.atan2(&self.x)
+    }
+    /// Rotated by the angle whose (sin, cos) are given.
+    #[inline]
+    pub fn rotate(&self, s: &T, c: &T) -> Self {
+        Vector::new(
+            c.clone() * self.x.clone() - s.clone() * self.y.clone(),
+            s.clone() * self.x.clone() + c.clone() * self.y.clone(),
+        )
+    }
+}
+
+/// A link's pose with the sine and cosine of its angle (computed once):
+/// `world(p) = origin + R(angle)·p`.
+#[derive(Clone, Debug)]
+pub struct Pose<T> {
+    pub origin: Vector<T>,
+    pub angle: T,
+    pub sin: T,
+    pub cos: T,
+}
+
+impl<T: Number> Pose<T> {
+    pub fn new(origin: Vector<T>, angle: T) -> Self {
+        let (sin, cos) = angle.sin_cos();
+        Pose {
+            origin,
+            angle,
+            sin,
+            cos,
+        }
+    }
+    pub fn identity() -> Self {
+        Pose {
+            origin: Vector::zero(),
+            angle: T::zero(),
+            sin: T::zero(),
+            cos: T::one(),
+        }
+    }
+    /// World direction of a local direction.
+    #[inline]
+    pub fn dir(&self, local: &Vector<T>) -> Vector<T> {
+        local.rotate(&self.sin, &self.cos)
+    }
+    /// World place of a local point.
+    #[inline]
+    pub fn apply(&self, local: &Vector<T>) -> Vector<T> {
+        self.origin.add(&self.dir(local))
+    }
+}
+
+/// A prismatic pair in the frames of its links.
+#[derive(Clone, Debug)]
+pub struct Prism<T> {
+    pub slider: usize,
+    pub guide: usize,
+    /// The slider's point in the slider's frame.
+    pub slider_local: Vector<T>,
+    /// A point of the guide line and its unit direction, in the guide's frame.
+    pub line_point: Vector<T>,
+    pub line_dir: Vector<T>,
+    /// θ_slider − θ_guide.
+    pub delta: T,
+}
+
+/// One pair's equations.
+#[derive(Clone, Debug)]
+pub enum Constraint<T> {
+    /// The point at `on_a` on link a and at `on_b` on link b coincide (2 rows).
+    Revolute {
+        a: usize,
+        b: usize,
+        on_a: Vector<T>,
+        on_b: Vector<T>,
+    },
+    /// A prismatic pair (2 rows).
+    Prismatic(Prism<T>),
+    /// The input coordinate (1 row).
+    Driver,
+}
+
+/// The input coordinate as a function of the poses.
+#[derive(Clone, Debug)]
+pub enum Driver<T> {
+    /// A crank: its link's angle plus `offset`, the angle of the crank's
+    /// line in its own frame.
+    Crank { link: usize, offset: T },
+    /// A driving slider: its point `at` (slider's frame) along the guide's
+    /// direction `dir` from `foot`, both in the world (the guide is the
+    /// frame).
+    Slider {
+        link: usize,
+        at: Vector<T>,
+        foot: Vector<T>,
+        dir: Vector<T>,
+    },
+}
+
+/// The unknowns and equations of the links solved.
+#[derive(Clone, Debug)]
+pub struct Equations<T> {
+    /// Moving links solved, in order; their unknowns are 3·i .. 3·i+3.
+    pub links: Vec<usize>,
+    /// Each link's place in `links` (the frame and links not solved: none).
+    pub slot: Vec<Option<usize>>,
+    pub cons: Vec<Constraint<T>>,
+    pub driver: Driver<T>,
+    rows: usize,
+}
+
+impl<T: Number> Equations<T> {
+    /// The equations of the links `include` marks (the frame is always
+    /// fixed): a revolute pair per further link at a point, every prismatic
+    /// pair between links inside, the driver last. `local(l, p)`: point p
+    /// in link l's frame; `prism(k)`: prismatic pair k; `sketch(p)`: point
+    /// p in the sketch; all in `T`.
+    pub fn new(
+        m: &Mechanism,
+        include: &[bool],
+        local: impl Fn(usize, usize) -> Vector<T>,
+        prism: impl Fn(usize) -> Prism<T>,
+        sketch: impl FnOnce(usize) -> Vector<T>,
+    ) -> Self {
+        let frame = m.frame();
+        let links: Vec<usize> = (0..m.links.len())
+            .filter(|&l| l != frame && include[l])
+            .collect();
+        let mut slot = vec![None; m.links.len()];
+        for (i, &l) in links.iter().enumerate() {
+            slot[l] = Some(i);
+        }
+        let inside = |l: usize| l == frame || include[l];
+        let mut cons = Vec::new();
+        for p in 0..m.scene.points.len() {
+            let ls: Vec<usize> = m
+                .links_of_point(p)
+                .into_iter()
+                .filter(|&l| inside(l))
+                .collect();
+            for &b in ls.iter().skip(1) {
+                cons.push(Constraint::Revolute {
+                    a: ls[0],
+                    b,
+                    on_a: local(ls[0], p),
+                    on_b: local(b, p),
+                });
+            }
+        }
+        for (k, pr) in m.prismatics.iter().enumerate() {
+            if inside(pr.slider) && inside(pr.guide) {
+                cons.push(Constraint::Prismatic(prism(k)));
+            }
+        }
+        cons.push(Constraint::Driver);
+        let driver = match m.scene.input {
+            InputSpec::Crank { link, pivot, .. } => {
+                let pts = &m.links[link].points;
+                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                let offset = local(link, other).sub(&local(link, pivot)).atan2();
+                Driver::Crank { link, offset }
+            }
+            InputSpec::Slider { link, pair, .. } => {
+                // The sketch's point projected on the guide (the frame).
+                let pr = prism(pair);
+                let frame = Pose::identity();
+                let (o, dir) = (frame.apply(&pr.line_point), frame.dir(&pr.line_dir));
+                let along = sketch(m.prismatics[pair].point).sub(&o).dot(&dir);
+                Driver::Slider {
+                    link,
+                    at: pr.slider_local,
+                    foot: o.add(&dir.scale(&along)),
+                    dir,
+                }
+            }
+        };
+        let rows = 2 * cons.len() - 1;
+        Equations {
+            links,
+            slot,
+            cons,
+            driver,
+            rows,
+        }
+    }
+
+    /// Number of equations.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Every link's pose (the frame and links not solved: the identity).
+    pub fn poses(&self, q: &[T]) -> Vec<Pose<T>> {
+        self.slot
+            .iter()
+            .map(|s| match *s {
+                Some(i) => Pose::new(
+                    Vector::new(q[3 * i].clone(), q[3 * i + 1].clone()),
+                    q[3 * i + 2].clone(),
+                ),
+                None => Pose::identity(),
+            })
+            .collect()
+    }
+
+    /// The residual Φ(q, x) at input coordinate `x`, from the poses.
+    pub fn residual(&self, p: &[Pose<T>], x: &T) -> Vec<T> {
+        let mut r = Vec::with_capacity(self.rows);
+        for c in &self.cons {
+            match c {
+                Constraint::Revolute { a, b, on_a, on_b } => {
+                    let d = p[*a].apply(on_a).sub(&p[*b].apply(on_b));
+                    r.extend([d.x, d.y]);
+                }
+                Constraint::Prismatic(pr) => {
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    let turn = ps.angle.clone() - pg.angle.clone() - pr.delta.clone();
+                    r.push(turn.wrap_angle());
+                    let u = pg.dir(&pr.line_dir);
+                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    r.push(u.cross(&d));
+                }
+                Constraint::Driver => r.push(match &self.driver {
+                    // A crank angle is defined modulo a turn.
+                    Driver::Crank { link, offset } => {
+                        (p[*link].angle.clone() + offset.clone() - x.clone()).wrap_angle()
+                    }
+                    Driver::Slider {
+                        link,
+                        at,
+                        foot,
+                        dir,
+                    } => dir.dot(&p[*link].apply(at).sub(foot)) - x.clone(),
+                }),
+            }
+        }
+        r
+    }
+
+    /// Row `row` += ± w·∂(world point of link l)/∂(x, y, θ) = [w | w·(k×r)],
+    /// r the point's arm R(θ)·local; `add(row, column, value)` accumulates.
+    fn put_point(
+        &self,
+        add: &mut impl FnMut(usize, usize, T),
+        row: usize,
+        l: usize,
+        r: &Vector<T>,
+        negative: bool,
+        w: &Vector<T>,
+    ) {
+        if let Some(i) = self.slot[l] {
+            let t = [w.x.clone(), w.y.clone(), w.dot(&r.perp())];
+            for (k, t) in t.into_iter().enumerate() {
+                add(row, 3 * i + k, if negative { -t } else { t });
+            }
+        }
+    }
+
+    /// The Jacobian Φ_q at the poses, cell by cell into `add(row, column,
+    /// value)` (a cell may receive several values, to be summed in order,
+    /// onto a matrix of zeros).
+    pub fn jacobian(&self, p: &[Pose<T>], mut add: impl FnMut(usize, usize, T)) {
+        let add = &mut add;
+        let (ex, ey) = (
+            Vector::new(T::one(), T::zero()),
+            Vector::new(T::zero(), T::one()),
+        );
+        let mut row = 0;
+        for c in &self.cons {
+            match c {
+                Constraint::Revolute { a, b, on_a, on_b } => {
+                    let ra = p[*a].dir(on_a);
+                    let rb = p[*b].dir(on_b);
+                    for (k, w) in [(0, &ex), (1, &ey)] {
+                        self.put_point(add, row + k, *a, &ra, false, w);
+                        self.put_point(add, row + k, *b, &rb, true, w);
+                    }
+                    row += 2;
+                }
+                Constraint::Prismatic(pr) => {
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    if let Some(i) = self.slot[pr.slider] {
+                        add(row, 3 * i + 2, T::one());
+                    }
+                    if let Some(i) = self.slot[pr.guide] {
+                        add(row, 3 * i + 2, -T::one());
+                    }
+                    // f = u × (Q − P): u and P turn with the guide;
+                    // u × X = (k×u)·X.
+                    let u = pg.dir(&pr.line_dir);
+                    let rs = ps.dir(&pr.slider_local);
+                    let rg = pg.dir(&pr.line_point);
+                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    let n = u.perp();
+                    self.put_point(add, row + 1, pr.slider, &rs, false, &n);
+                    self.put_point(add, row + 1, pr.guide, &rg, true, &n);
+                    if let Some(i) = self.slot[pr.guide] {
+                        add(row + 1, 3 * i + 2, n.cross(&d));
+                    }
+                    row += 2;
+                }
+                Constraint::Driver => {
+                    match &self.driver {
+                        Driver::Crank { link, .. } => {
+                            let i = self.slot[*link].expect("the input is solved");
+                            add(row, 3 * i + 2, T::one());
+                        }
+                        Driver::Slider { link, at, dir, .. } => {
+                            let r = p[*link].dir(at);
+                            self.put_point(add, row, *link, &r, false, dir);
+                        }
+                    }
+                    row += 1;
+                }
+            }
+        }
+    }
+
+    /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in
+    /// q̇), at the poses, the rates `qd` and the input's acceleration.
+    pub fn gamma(&self, p: &[Pose<T>], qd: &[T], input_acc: &T) -> Vec<T> {
+        let rate = |l: usize| self.slot[l].map_or(T::zero(), |i| qd[3 * i + 2].clone());
+        let lin = |l: usize| {
+            self.slot[l].map_or(Vector::zero(), |i| {
+                Vector::new(qd[3 * i].clone(), qd[3 * i + 1].clone())
+            })
+        };
+        let square = |w: T| w.clone() * w;
+        let mut g = Vec::with_capacity(self.rows);
+        for c in &self.cons {
+            match c {
+                Constraint::Revolute { a, b, on_a, on_b } => {
+                    let ra = p[*a].dir(on_a);
+                    let rb = p[*b].dir(on_b);
+                    let t = ra
+                        .scale(&square(rate(*a)))
+                        .sub(&rb.scale(&square(rate(*b))));
+                    g.extend([t.x, t.y]);
+                }
+                Constraint::Prismatic(pr) => {
+                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
+                    let u = pg.dir(&pr.line_dir);
+                    let (ws, wg) = (rate(pr.slider), rate(pr.guide));
+                    let rs = ps.dir(&pr.slider_local);
+                    let rg = pg.dir(&pr.line_point);
+                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    let dd = lin(pr.slider)
+                        .add(&rs.perp().scale(&ws))
+                        .sub(&lin(pr.guide).add(&rg.perp().scale(&wg)));
+                    // f̈ = ü×d + 2u̇×ḋ + u×d̈; the q̈-free part goes to γ.
+                    let quad = u.neg().scale(&wg).scale(&wg).cross(&d)
+                        + T::from_f64(2.0) * u.perp().scale(&wg).cross(&dd)
+                        + u.cross(
+                            &rs.neg()
+                                .scale(&ws)
+                                .scale(&ws)
+                                .add(&rg.scale(&wg).scale(&wg)),
+                        );
+                    g.extend([T::zero(), -quad]);
+                }
+                Constraint::Driver => g.push(match &self.driver {
+                    Driver::Crank { .. } => input_acc.clone(),
+                    Driver::Slider { link, at, dir, .. } => {
+                        let r = p[*link].dir(at);
+                        input_acc.clone() + square(rate(*link)) * dir.dot(&r)
+                    }
+                }),
+            }
+        }
+        g
+    }
+}
