@@ -208,18 +208,10 @@ impl Builder<'_> {
             });
             self.step(Act::Equation(Eqn::Pair(a, b)));
         }
-        let mut lines = [None; 2];
-        for (line, side) in lines.iter_mut().zip(sides) {
-            *line = Some(match side {
-                Side::Rigid { link, from } => self.rigid(link, from, (x, xn)),
-                Side::Slide { kx, u, slide, .. } => {
-                    (self.slide(kx, u, slide, (x, Name::Point(p))), kx)
-                }
-            });
-        }
-        let [Some((mut la, ta)), Some((mut lb, tb))] = lines else {
-            unreachable!("two sides")
-        };
+        let [(mut la, ta), (mut lb, tb)] = sides.map(|side| match side {
+            Side::Rigid { link, from } => self.rigid(link, from, (x, xn)),
+            Side::Slide { kx, u, slide, .. } => (self.slide(kx, u, slide, (x, Name::Point(p))), kx),
+        });
         let out = match mistake {
             Some(Mistake::WrongPerpendicular) if self.making(Mistake::WrongPerpendicular) => {
                 // Each line ⊥ the other link of the group.
