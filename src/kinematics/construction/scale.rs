@@ -3,6 +3,49 @@
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
+/// Where a plan drawn at a standard scale must fit, mm: its longest vector
+/// and its whole extent. Which field is the caller's decision (the
+/// presentation's sheet); [`Field::default`] is the one the callers pass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Field {
+    /// The longest vector from the pole at most this long.
+    pub longest: f64,
+    /// The whole plan at most this wide …
+    pub width: f64,
+    /// … and this high.
+    pub height: f64,
+}
+
+impl Default for Field {
+    /// The longest vector at most 150 mm, the whole plan within
+    /// 240 × 130 mm: the free area of an A4 landscape sheet.
+    fn default() -> Self {
+        Field {
+            longest: 150.0,
+            width: 240.0,
+            height: 130.0,
+        }
+    }
+}
+
+impl Field {
+    /// The smallest standard μ at which a plan fits, from where its points
+    /// fall at unit scale (real values); 1 for a plan all at the pole
+    /// (everything at rest: any scale draws it).
+    pub fn scale(&self, points: impl Iterator<Item = kurbo::Vec2>) -> f64 {
+        let (mut largest, mut lo, mut hi) = (0.0f64, (f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
+        for p in points {
+            largest = largest.max(p.hypot());
+            lo = (lo.0.min(p.x), lo.1.min(p.y));
+            hi = (hi.0.max(p.x), hi.1.max(p.y));
+        }
+        let mu = standard_scale(largest, self.longest)
+            .max(standard_scale(hi.0 - lo.0, self.width))
+            .max(standard_scale(hi.1 - lo.1, self.height));
+        if mu > 0.0 { mu } else { 1.0 }
+    }
+}
+
 /// The smallest standard μ with which `largest` (a real value) is drawn no
 /// longer than `max_mm`. With the standard steps (at most ×2 apart) the
 /// largest segment then lies between `max_mm`/2 and `max_mm`.

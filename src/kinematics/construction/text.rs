@@ -1,6 +1,8 @@
 //! Lecture-style sentences for the construction steps, in English,
 //! Ukrainian and Russian. The mathematics (names of points, vectors,
-//! numbers) is the same in every language; only the words change.
+//! numbers) is the same in every language; only the words change: each
+//! language is one [`Catalogue`] of phrases with named blanks (`{pole}`),
+//! filled by one rendering path.
 
 use super::{Dir, Op, Plan, PlanKind, Why};
 
@@ -20,15 +22,132 @@ impl Lang {
             _ => None,
         }
     }
+    fn words(self) -> &'static Catalogue {
+        match self {
+            Lang::En => &EN,
+            Lang::Uk => &UK,
+            Lang::Ru => &RU,
+        }
+    }
 }
 
-fn pick(l: Lang, en: &str, uk: &str, ru: &str) -> String {
-    match l {
-        Lang::En => en,
-        Lang::Uk => uk,
-        Lang::Ru => ru,
+/// The phrases of one language. Blanks in braces are filled by [`fill`].
+struct Catalogue {
+    /// Units of the velocity and the acceleration plan: values, rates.
+    unit: [&'static str; 2],
+    rate_unit: [&'static str; 2],
+    /// Senses of a rate: positive, negative, zero.
+    sense: [&'static str; 3],
+    /// Directions: `{p}`, `{q}`; `{link}`; `{v}`, `{w}`; `{seg}`, `{w}`.
+    toward: &'static str,
+    guide: &'static str,
+    turned: &'static str,
+    perp_sense: &'static str,
+    /// Steps.
+    pole: &'static str,
+    lay_off: &'static str,
+    intersect: &'static str,
+    similar: &'static str,
+    divide: &'static str,
+    coincide: &'static str,
+    /// Why a point coincides: at the pole; `{link}` translates.
+    fixed: &'static str,
+    translates: &'static str,
+    measure: &'static str,
+    /// How a relative segment turns its link.
+    turns: &'static str,
+    same: &'static str,
+    equations: &'static str,
+}
+
+static EN: Catalogue = Catalogue {
+    unit: ["m/s", "m/s²"],
+    rate_unit: ["rad/s", "rad/s²"],
+    sense: ["counter-clockwise", "clockwise", "zero"],
+    toward: "∥ {p}{q}, from {p} toward {q}",
+    guide: "∥ the guide of link {link}",
+    turned: "{v} turned by 90° in the sense of {w}",
+    perp_sense: "⊥ {seg} in the sense of {w}",
+    pole: "Choose the pole {pole}: the points of the frame lie there{fixed}; {mu} = {scale} ({unit})/mm.",
+    lay_off: "From {from} lay off {from}{to} = {what}/{mu} = {value} / {scale} = {mm} mm, {dir}.",
+    intersect: "Through {a} draw a line {dir_a}; through {b} a line {dir_b}; they meet at {out} (at {angle}°).",
+    similar: "By the similarity theorem build on {a}{b} the triangle {plan_fig} similar to {fig} of link {link}, the letters in the same order: point {out}.",
+    divide: "Divide {a}{b} as {x} divides {f0}{f1} ({a}{out} = {ratio} · {a}{b}): point {out}.",
+    coincide: "Point {out} coincides with {with}: {why}.",
+    fixed: "a point of the frame lies at the pole",
+    translates: "link {link} translates",
+    measure: "Measure {seg} = {mm} mm: {quantity} = {seg}·{mu} = {value} {unit}",
+    turns: "segment {seg} carried to {x} turns {j}{x} about {j} {sense}",
+    same: "{what}{link} = {what}{from}: links {link} and {from} form a prismatic pair and turn together.",
+    equations: "Vector equations: {text}.",
+};
+
+static UK: Catalogue = Catalogue {
+    unit: ["м/с", "м/с²"],
+    rate_unit: ["рад/с", "рад/с²"],
+    sense: [
+        "проти годинникової стрілки",
+        "за годинниковою стрілкою",
+        "нуль",
+    ],
+    toward: "∥ {p}{q}, від {p} до {q}",
+    guide: "∥ напрямній ланки {link}",
+    turned: "{v}, повернутий на 90° у напрямку {w}",
+    perp_sense: "⊥ {seg} у напрямку {w}",
+    pole: "Обираємо полюс {pole}: у ньому лежать точки стояка{fixed}; {mu} = {scale} ({unit})/мм.",
+    lay_off: "Від {from} відкладаємо {from}{to} = {what}/{mu} = {value} / {scale} = {mm} мм, {dir}.",
+    intersect: "Через {a} проводимо пряму {dir_a}; через {b} — пряму {dir_b}; вони перетинаються в точці {out} (під кутом {angle}°).",
+    similar: "За теоремою подібності будуємо на {a}{b} трикутник {plan_fig}, подібний до {fig} ланки {link}, з тим самим порядком літер: точка {out}.",
+    divide: "Ділимо {a}{b} так, як {x} ділить {f0}{f1} ({a}{out} = {ratio} · {a}{b}): точка {out}.",
+    coincide: "Точка {out} збігається з {with}: {why}.",
+    fixed: "точки стояка лежать у полюсі",
+    translates: "ланка {link} рухається поступально",
+    measure: "Вимірюємо {seg} = {mm} мм: {quantity} = {seg}·{mu} = {value} {unit}",
+    turns: "відрізок {seg}, перенесений у точку {x}, повертає {j}{x} навколо {j} {sense}",
+    same: "{what}{link} = {what}{from}: ланки {link} і {from} утворюють поступальну пару й обертаються разом.",
+    equations: "Векторні рівняння: {text}.",
+};
+
+static RU: Catalogue = Catalogue {
+    unit: ["м/с", "м/с²"],
+    rate_unit: ["рад/с", "рад/с²"],
+    sense: ["против часовой стрелки", "по часовой стрелке", "ноль"],
+    toward: "∥ {p}{q}, от {p} к {q}",
+    guide: "∥ направляющей звена {link}",
+    turned: "{v}, повёрнутый на 90° в сторону {w}",
+    perp_sense: "⊥ {seg} в сторону {w}",
+    pole: "Выбираем полюс {pole}: в нём лежат точки стойки{fixed}; {mu} = {scale} ({unit})/мм.",
+    lay_off: "От {from} откладываем {from}{to} = {what}/{mu} = {value} / {scale} = {mm} мм, {dir}.",
+    intersect: "Через {a} проводим прямую {dir_a}; через {b} — прямую {dir_b}; они пересекаются в точке {out} (под углом {angle}°).",
+    similar: "По теореме подобия строим на {a}{b} треугольник {plan_fig}, подобный {fig} звена {link}, с тем же порядком букв: точка {out}.",
+    divide: "Делим {a}{b} так, как {x} делит {f0}{f1} ({a}{out} = {ratio} · {a}{b}): точка {out}.",
+    coincide: "Точка {out} совпадает с {with}: {why}.",
+    fixed: "точки стойки лежат в полюсе",
+    translates: "звено {link} движется поступательно",
+    measure: "Измеряем {seg} = {mm} мм: {quantity} = {seg}·{mu} = {value} {unit}",
+    turns: "отрезок {seg}, перенесённый в точку {x}, поворачивает {j}{x} вокруг {j} {sense}",
+    same: "{what}{link} = {what}{from}: звенья {link} и {from} образуют поступательную пару и вращаются вместе.",
+    equations: "Векторные уравнения: {text}.",
+};
+
+/// A phrase with its blanks filled: each `{name}` by the value named so
+/// in `args` (one pass: a value is never filled again).
+fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
+    let mut out = String::with_capacity(phrase.len() + 16 * args.len());
+    let mut rest = phrase;
+    while let Some(open) = rest.find('{') {
+        out.push_str(&rest[..open]);
+        let close = open + rest[open..].find('}').expect("a closed blank");
+        let name = &rest[open + 1..close];
+        let value = args
+            .iter()
+            .find(|(n, _)| *n == name)
+            .unwrap_or_else(|| panic!("no value for the blank {{{name}}}"));
+        out.push_str(value.1);
+        rest = &rest[close + 1..];
     }
-    .to_string()
+    out.push_str(rest);
+    out
 }
 
 /// Numbers as a student writes them: up to 4 significant digits.
@@ -46,89 +165,54 @@ pub fn num(x: f64) -> String {
     if s == "-0" { "0".into() } else { s }
 }
 
-fn dir(l: Lang, d: &Dir) -> String {
+fn dir(w: &Catalogue, d: &Dir) -> String {
     match d {
         Dir::Perp(seg) => format!("⊥ {seg}"),
         Dir::Along(seg) => format!("∥ {seg}"),
-        Dir::Toward(p, q) => match l {
-            Lang::En => format!("∥ {p}{q}, from {p} toward {q}"),
-            Lang::Uk => format!("∥ {p}{q}, від {p} до {q}"),
-            Lang::Ru => format!("∥ {p}{q}, от {p} к {q}"),
-        },
-        Dir::Guide(link) => match l {
-            Lang::En => format!("∥ the guide of link {link}"),
-            Lang::Uk => format!("∥ напрямній ланки {link}"),
-            Lang::Ru => format!("∥ направляющей звена {link}"),
-        },
-        Dir::Turned(v, w) => match l {
-            Lang::En => format!("{v} turned by 90° in the sense of {w}"),
-            Lang::Uk => format!("{v}, повернутий на 90° у напрямку {w}"),
-            Lang::Ru => format!("{v}, повёрнутый на 90° в сторону {w}"),
-        },
-        Dir::PerpSense(seg, w) => match l {
-            Lang::En => format!("⊥ {seg} in the sense of {w}"),
-            Lang::Uk => format!("⊥ {seg} у напрямку {w}"),
-            Lang::Ru => format!("⊥ {seg} в сторону {w}"),
-        },
+        Dir::Toward(p, q) => fill(w.toward, &[("p", p), ("q", q)]),
+        Dir::Guide(link) => fill(w.guide, &[("link", link)]),
+        Dir::Turned(v, r) => fill(w.turned, &[("v", v), ("w", r)]),
+        Dir::PerpSense(seg, r) => fill(w.perp_sense, &[("seg", seg), ("w", r)]),
     }
 }
 
-fn sense(l: Lang, x: f64) -> String {
+fn sense(w: &Catalogue, x: f64) -> &'static str {
     if x > 0.0 {
-        pick(
-            l,
-            "counter-clockwise",
-            "проти годинникової стрілки",
-            "против часовой стрелки",
-        )
+        w.sense[0]
     } else if x < 0.0 {
-        pick(
-            l,
-            "clockwise",
-            "за годинниковою стрілкою",
-            "по часовой стрелке",
-        )
+        w.sense[1]
     } else {
-        pick(l, "zero", "нуль", "ноль")
+        w.sense[2]
     }
 }
 
 /// The sentence of step `i` of `plan`.
 pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
+    let w = l.words();
     let p = |k: usize| plan.points[k].name();
-    let step = &plan.steps[i];
-    let unit = match (plan.kind, l) {
-        (PlanKind::Velocity, Lang::En) => "m/s",
-        (PlanKind::Acceleration, Lang::En) => "m/s²",
-        (PlanKind::Velocity, _) => "м/с",
-        (PlanKind::Acceleration, _) => "м/с²",
+    let (unit, rate_unit, mu) = match plan.kind {
+        PlanKind::Velocity => (w.unit[0], w.rate_unit[0], "μ_v"),
+        PlanKind::Acceleration => (w.unit[1], w.rate_unit[1], "μ_a"),
     };
-    let mu = match plan.kind {
-        PlanKind::Velocity => "μ_v",
-        PlanKind::Acceleration => "μ_a",
-    };
-    match &step.op {
+    let scale = num(plan.mu);
+    let between = |from: usize, to: usize| num((plan.points[to].at - plan.points[from].at).hypot());
+    match &plan.steps[i].op {
         Op::Pole { fixed } => {
-            let pole = p(0);
             let fixed = if fixed.is_empty() {
                 String::new()
             } else {
                 format!(" ({})", fixed.join(", "))
             };
-            match l {
-                Lang::En => format!(
-                    "Choose the pole {pole}: the points of the frame lie there{fixed}; {mu} = {} ({unit})/mm.",
-                    num(plan.mu)
-                ),
-                Lang::Uk => format!(
-                    "Обираємо полюс {pole}: у ньому лежать точки стояка{fixed}; {mu} = {} ({unit})/мм.",
-                    num(plan.mu)
-                ),
-                Lang::Ru => format!(
-                    "Выбираем полюс {pole}: в нём лежат точки стойки{fixed}; {mu} = {} ({unit})/мм.",
-                    num(plan.mu)
-                ),
-            }
+            fill(
+                w.pole,
+                &[
+                    ("pole", &p(0)),
+                    ("fixed", &fixed),
+                    ("mu", mu),
+                    ("scale", &scale),
+                    ("unit", unit),
+                ],
+            )
         }
         Op::LayOff {
             from,
@@ -136,41 +220,19 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             what,
             value,
             dir: d,
-        } => {
-            let mm = (plan.points[*to].at - plan.points[*from].at).hypot();
-            match l {
-                Lang::En => format!(
-                    "From {} lay off {}{} = {what}/{mu} = {} / {} = {} mm, {}.",
-                    p(*from),
-                    p(*from),
-                    p(*to),
-                    num(*value),
-                    num(plan.mu),
-                    num(mm),
-                    dir(l, d)
-                ),
-                Lang::Uk => format!(
-                    "Від {} відкладаємо {}{} = {what}/{mu} = {} / {} = {} мм, {}.",
-                    p(*from),
-                    p(*from),
-                    p(*to),
-                    num(*value),
-                    num(plan.mu),
-                    num(mm),
-                    dir(l, d)
-                ),
-                Lang::Ru => format!(
-                    "От {} откладываем {}{} = {what}/{mu} = {} / {} = {} мм, {}.",
-                    p(*from),
-                    p(*from),
-                    p(*to),
-                    num(*value),
-                    num(plan.mu),
-                    num(mm),
-                    dir(l, d)
-                ),
-            }
-        }
+        } => fill(
+            w.lay_off,
+            &[
+                ("from", &p(*from)),
+                ("to", &p(*to)),
+                ("what", what),
+                ("mu", mu),
+                ("value", &num(*value)),
+                ("scale", &scale),
+                ("mm", &between(*from, *to)),
+                ("dir", &dir(w, d)),
+            ],
+        ),
         Op::Intersect {
             lines,
             out,
@@ -178,35 +240,17 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
         } => {
             let ang = sin_angle.clamp(-1.0, 1.0).asin().to_degrees();
             let (a, b) = (&lines[0], &lines[1]);
-            match l {
-                Lang::En => format!(
-                    "Through {} draw a line {}; through {} a line {}; they meet at {} (at {}°).",
-                    p(a.through),
-                    dir(l, &a.dir),
-                    p(b.through),
-                    dir(l, &b.dir),
-                    p(*out),
-                    num(ang)
-                ),
-                Lang::Uk => format!(
-                    "Через {} проводимо пряму {}; через {} — пряму {}; вони перетинаються в точці {} (під кутом {}°).",
-                    p(a.through),
-                    dir(l, &a.dir),
-                    p(b.through),
-                    dir(l, &b.dir),
-                    p(*out),
-                    num(ang)
-                ),
-                Lang::Ru => format!(
-                    "Через {} проводим прямую {}; через {} — прямую {}; они пересекаются в точке {} (под углом {}°).",
-                    p(a.through),
-                    dir(l, &a.dir),
-                    p(b.through),
-                    dir(l, &b.dir),
-                    p(*out),
-                    num(ang)
-                ),
-            }
+            fill(
+                w.intersect,
+                &[
+                    ("a", &p(a.through)),
+                    ("dir_a", &dir(w, &a.dir)),
+                    ("b", &p(b.through)),
+                    ("dir_b", &dir(w, &b.dir)),
+                    ("out", &p(*out)),
+                    ("angle", &num(ang)),
+                ],
+            )
         }
         Op::Similar {
             a,
@@ -214,94 +258,44 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             out,
             figure,
             link,
-        } => {
-            let fig = format!("{}{}{}", figure[0], figure[1], figure[2]);
-            let plan_fig = format!("{}{}{}", p(*a), p(*b), p(*out));
-            match l {
-                Lang::En => format!(
-                    "By the similarity theorem build on {}{} the triangle {plan_fig} similar to {fig} of link {link}, the letters in the same order: point {}.",
-                    p(*a),
-                    p(*b),
-                    p(*out)
-                ),
-                Lang::Uk => format!(
-                    "За теоремою подібності будуємо на {}{} трикутник {plan_fig}, подібний до {fig} ланки {link}, з тим самим порядком літер: точка {}.",
-                    p(*a),
-                    p(*b),
-                    p(*out)
-                ),
-                Lang::Ru => format!(
-                    "По теореме подобия строим на {}{} треугольник {plan_fig}, подобный {fig} звена {link}, с тем же порядком букв: точка {}.",
-                    p(*a),
-                    p(*b),
-                    p(*out)
-                ),
-            }
-        }
+        } => fill(
+            w.similar,
+            &[
+                ("a", &p(*a)),
+                ("b", &p(*b)),
+                ("out", &p(*out)),
+                ("plan_fig", &format!("{}{}{}", p(*a), p(*b), p(*out))),
+                ("fig", &figure.concat()),
+                ("link", link),
+            ],
+        ),
         Op::Divide {
             a,
             b,
             out,
             figure,
             ratio,
-        } => match l {
-            Lang::En => format!(
-                "Divide {}{} as {} divides {}{} ({}{} = {} · {}{}): point {}.",
-                p(*a),
-                p(*b),
-                figure[2],
-                figure[0],
-                figure[1],
-                p(*a),
-                p(*out),
-                num(*ratio),
-                p(*a),
-                p(*b),
-                p(*out)
-            ),
-            Lang::Uk => format!(
-                "Ділимо {}{} так, як {} ділить {}{} ({}{} = {} · {}{}): точка {}.",
-                p(*a),
-                p(*b),
-                figure[2],
-                figure[0],
-                figure[1],
-                p(*a),
-                p(*out),
-                num(*ratio),
-                p(*a),
-                p(*b),
-                p(*out)
-            ),
-            Lang::Ru => format!(
-                "Делим {}{} так, как {} делит {}{} ({}{} = {} · {}{}): точка {}.",
-                p(*a),
-                p(*b),
-                figure[2],
-                figure[0],
-                figure[1],
-                p(*a),
-                p(*out),
-                num(*ratio),
-                p(*a),
-                p(*b),
-                p(*out)
-            ),
-        },
+        } => fill(
+            w.divide,
+            &[
+                ("a", &p(*a)),
+                ("b", &p(*b)),
+                ("out", &p(*out)),
+                ("x", &figure[2]),
+                ("f0", &figure[0]),
+                ("f1", &figure[1]),
+                ("ratio", &num(*ratio)),
+            ],
+        ),
         Op::Coincide { out, with, why } => {
-            let why = match (why, l) {
-                (Why::Fixed, Lang::En) => "a point of the frame lies at the pole".to_string(),
-                (Why::Fixed, Lang::Uk) => "точки стояка лежать у полюсі".to_string(),
-                (Why::Fixed, Lang::Ru) => "точки стойки лежат в полюсе".to_string(),
-                (Why::Translates(k), Lang::En) => format!("link {k} translates"),
-                (Why::Translates(k), Lang::Uk) => format!("ланка {k} рухається поступально"),
-                (Why::Translates(k), Lang::Ru) => format!("звено {k} движется поступательно"),
+            let why = match why {
+                Why::Fixed => w.fixed.to_string(),
+                Why::Translates(k) => fill(w.translates, &[("link", k)]),
             };
-            match l {
-                Lang::En => format!("Point {} coincides with {}: {why}.", p(*out), p(*with)),
-                Lang::Uk => format!("Точка {} збігається з {}: {why}.", p(*out), p(*with)),
-                Lang::Ru => format!("Точка {} совпадает с {}: {why}.", p(*out), p(*with)),
-            }
+            fill(
+                w.coincide,
+                &[("out", &p(*out)), ("with", &p(*with)), ("why", &why)],
+            )
         }
         Op::Measure {
             from,
@@ -311,80 +305,85 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             length,
             rate,
         } => {
-            let mm = (plan.points[*to].at - plan.points[*from].at).hypot();
             let seg = format!("{}{}", p(*from), p(*to));
-            let base = match l {
-                Lang::En => format!(
-                    "Measure {seg} = {} mm: {quantity} = {seg}·{mu} = {} {unit}",
-                    num(mm),
-                    num(*value)
-                ),
-                Lang::Uk => format!(
-                    "Вимірюємо {seg} = {} мм: {quantity} = {seg}·{mu} = {} {unit}",
-                    num(mm),
-                    num(*value)
-                ),
-                Lang::Ru => format!(
-                    "Измеряем {seg} = {} мм: {quantity} = {seg}·{mu} = {} {unit}",
-                    num(mm),
-                    num(*value)
-                ),
+            let base = fill(
+                w.measure,
+                &[
+                    ("seg", &seg),
+                    ("mm", &between(*from, *to)),
+                    ("quantity", quantity),
+                    ("mu", mu),
+                    ("value", &num(*value)),
+                    ("unit", unit),
+                ],
+            );
+            let (Some((name, r, (j, x))), Some(len)) = (rate, length) else {
+                return format!("{base}.");
             };
-            match (rate, length) {
-                (Some((name, w, (j, x))), Some(len)) => {
-                    let runit = match (plan.kind, l) {
-                        (PlanKind::Velocity, Lang::En) => "rad/s",
-                        (PlanKind::Acceleration, Lang::En) => "rad/s²",
-                        (PlanKind::Velocity, _) => "рад/с",
-                        (PlanKind::Acceleration, _) => "рад/с²",
-                    };
-                    let value = format!(
-                        "{base}; {name} = {quantity}/l_{j}{x} = {} / {} = {} {runit}",
-                        num(*value),
-                        num(*len),
-                        num(w.abs())
-                    );
-                    if *w == 0.0 {
-                        return format!("{value}.");
-                    }
-                    let why = match l {
-                        Lang::En => format!(
-                            "segment {seg} carried to {x} turns {j}{x} about {j} {}",
-                            sense(l, *w)
-                        ),
-                        Lang::Uk => format!(
-                            "відрізок {seg}, перенесений у точку {x}, повертає {j}{x} навколо {j} {}",
-                            sense(l, *w)
-                        ),
-                        Lang::Ru => format!(
-                            "отрезок {seg}, перенесённый в точку {x}, поворачивает {j}{x} вокруг {j} {}",
-                            sense(l, *w)
-                        ),
-                    };
-                    format!("{value}, {} ({why}).", sense(l, *w))
-                }
-                _ => format!("{base}."),
+            let value = format!(
+                "{base}; {name} = {quantity}/l_{j}{x} = {} / {} = {} {rate_unit}",
+                num(*value),
+                num(*len),
+                num(r.abs())
+            );
+            if *r == 0.0 {
+                return format!("{value}.");
             }
+            let args = [("seg", &*seg), ("x", x), ("j", j), ("sense", sense(w, *r))];
+            let why = fill(w.turns, &args);
+            format!("{value}, {} ({why}).", sense(w, *r))
         }
         Op::Same {
             link,
             from_link,
             what,
-        } => match l {
-            Lang::En => format!(
-                "{what}{link} = {what}{from_link}: links {link} and {from_link} form a prismatic pair and turn together."
-            ),
-            Lang::Uk => format!(
-                "{what}{link} = {what}{from_link}: ланки {link} і {from_link} утворюють поступальну пару й обертаються разом."
-            ),
-            Lang::Ru => format!(
-                "{what}{link} = {what}{from_link}: звенья {link} и {from_link} образуют поступательную пару и вращаются вместе."
-            ),
-        },
-        Op::Equation { text } => match l {
-            Lang::En => format!("Vector equations: {text}."),
-            Lang::Uk => format!("Векторні рівняння: {text}."),
-            Lang::Ru => format!("Векторные уравнения: {text}."),
-        },
+        } => fill(
+            w.same,
+            &[("what", what), ("link", link), ("from", from_link)],
+        ),
+        Op::Equation { text } => fill(w.equations, &[("text", text)]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every blank of every language's phrases is one the rendering fills.
+    #[test]
+    fn catalogues_fill() {
+        for c in [&EN, &UK, &RU] {
+            let phrases = [
+                c.toward,
+                c.guide,
+                c.turned,
+                c.perp_sense,
+                c.pole,
+                c.lay_off,
+                c.intersect,
+                c.similar,
+                c.divide,
+                c.coincide,
+                c.translates,
+                c.measure,
+                c.turns,
+                c.same,
+                c.equations,
+            ];
+            let names = [
+                "p", "q", "link", "v", "w", "seg", "pole", "fixed", "mu", "scale", "unit", "from",
+                "to", "what", "value", "mm", "dir", "a", "b", "dir_a", "dir_b", "out", "angle",
+                "plan_fig", "fig", "x", "f0", "f1", "ratio", "with", "why", "quantity", "j",
+                "sense", "text",
+            ];
+            let args: Vec<(&str, &str)> = names.iter().map(|n| (*n, "·")).collect();
+            for ph in phrases {
+                assert!(!fill(ph, &args).contains(['{', '}']), "{ph}");
+            }
+        }
+        assert_eq!(
+            fill("{a}{b} = {a}", &[("a", "{b}"), ("b", "x")]),
+            "{b}x = {b}"
+        );
     }
 }

@@ -1,0 +1,418 @@
+//! The builder's core: the drafting operations (lay off a vector, draw a
+//! line, intersect two lines, measure a segment), the points the plan
+//! knows on each link, the deliberate mistakes and the pencil, and the
+//! order of the construction (the pole, the input link, the groups in the
+//! order of attachment, the measured values).
+
+use super::plan::{
+    Known, Measured, Mistake, Plan, PlanKind, PlanPoint, PointId, Quantity, Setup, Variant,
+    non_rotating,
+};
+use super::record::{Act, Name, Product, Rate, Ray, Reading, Relation, Seg, Way, What, key_label};
+use crate::error::{Error, Result};
+use crate::geom::{Line, LineCut, perp};
+use crate::kinematics::positions::{Configuration, describe_input};
+use crate::model::mechanism::Mechanism;
+use crate::model::structure::AssurGroup;
+use kurbo::{Point, Vec2};
+use rand::rngs::StdRng;
+
+pub(super) struct Builder<'a> {
+    pub variant: Variant,
+    pub rng: Option<StdRng>,
+    pub st: &'a Setup<'a>,
+    pub c: &'a Configuration,
+    pub plan: Plan,
+    /// The construction's record, step by step, in ids.
+    pub acts: Vec<Act>,
+    /// The velocity plan, when building the acceleration plan.
+    pub vel: Option<&'a Plan>,
+    pub nr: Vec<bool>,
+    pub q: f64,
+    /// The first normal-component point laid off for each link (n₂ …).
+    pub normal_of: Vec<Option<usize>>,
+}
+
+impl<'a> Builder<'a> {
+    pub fn new(
+        st: &'a Setup<'a>,
+        c: &'a Configuration,
+        q: f64,
+        plan: Plan,
+        vel: Option<&'a Plan>,
+        variant: Variant,
+        rng: Option<StdRng>,
+    ) -> Builder<'a> {
+        let m = st.m;
+        Builder {
+            variant,
+            rng,
+            st,
+            c,
+            plan,
+            acts: Vec::new(),
+            vel,
+            nr: non_rotating(m),
+            q,
+            normal_of: vec![None; m.links.len()],
+        }
+    }
+    /// The same builder for a new construction at scale `mu`, its buffers
+    /// emptied and kept.
+    pub fn again(mut self, mu: f64, rng: Option<StdRng>) -> Builder<'a> {
+        self.plan = self.plan.cleared(mu);
+        self.acts.clear();
+        self.normal_of.fill(None);
+        self.rng = rng;
+        self
+    }
+    pub fn m(&self) -> &'a Mechanism {
+        self.st.m
+    }
+    pub fn vel_kind(&self) -> bool {
+        self.plan.kind == PlanKind::Velocity
+    }
+    pub fn step(&mut self, act: Act) {
+        self.acts.push(act);
+    }
+    pub fn world(&self, link: usize, p: usize) -> Point {
+        self.c.point(self.m(), link, p)
+    }
+    pub fn local(&self, link: usize, x: Point) -> Vec2 {
+        self.c.pose(link).local(x)
+    }
+    /// Remember the first normal-component point of `link`.
+    pub fn note_normal(&mut self, link: usize, idx: usize) {
+        self.normal_of[link].get_or_insert(idx);
+    }
+    /// ω of a link from the velocity plan (for the acceleration plan).
+    pub fn omega(&self, l: usize) -> f64 {
+        match self.vel {
+            Some(v) => v.rates[l].map(|r| r.0).unwrap_or(0.0),
+            None => self.plan.rates[l].map(|r| r.0).unwrap_or(0.0),
+        }
+    }
+    pub fn omega_err(&self, l: usize) -> f64 {
+        self.vel
+            .and_then(|v| v.rates[l].map(|r| r.1))
+            .unwrap_or(0.0)
+    }
+
+    pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
+        self.plan.points.push(PlanPoint {
+            id,
+            key: String::new(),
+            label: (String::new(), String::new()),
+            at,
+            err,
+            figure: String::new(),
+        });
+        self.plan.points.len() - 1
+    }
+
+    /// How close two places of one link are the same material point: a
+    /// billionth of the link's own size, above the rounding of the
+    /// coordinates (never a fraction of the whole sketch).
+    pub fn same_point(&self, link: usize, x: Point) -> f64 {
+        1e-9 * self.m().link_scale(link) + 64.0 * f64::EPSILON * x.to_vec2().hypot()
+    }
+
+    pub fn register(&mut self, link: usize, x: Point, idx: usize) {
+        let local = self.local(link, x);
+        let tol = self.same_point(link, x);
+        if self.plan.known_at(link, local, tol).is_none() {
+            self.plan.body.push(Known {
+                link,
+                local,
+                point: idx,
+            });
+        }
+    }
+
+    pub fn find(&self, link: usize, x: Point) -> Option<usize> {
+        let local = self.local(link, x);
+        let tol = self.same_point(link, x);
+        self.plan.known_at(link, local, tol)
+    }
+
+    /// Lay off the real vector `v` from plan point `from`: the new plan
+    /// point `id`.
+    pub fn lay_off(
+        &mut self,
+        from: usize,
+        v: Vec2,
+        what: What,
+        way: Way,
+        id: PointId,
+        value_err: f64,
+    ) -> usize {
+        let v = if self.making(Mistake::Slip) {
+            v * self.variant.factor
+        } else {
+            v
+        };
+        let at = self.plan.points[from].at + v / self.plan.mu + self.pencil();
+        let err = self.plan.points[from].err + self.plan.delta + value_err / self.plan.mu;
+        let to = self.add_point(id, at, err);
+        self.step(Act::LayOff {
+            from,
+            to,
+            what,
+            value: v.hypot(),
+            way,
+        });
+        to
+    }
+
+    /// Lay off `v`, the normal component of `link` at X about J
+    /// (`xj`) over its segment `seg`, the error of its magnitude `err`:
+    /// the link's point n.
+    pub fn normal(
+        &mut self,
+        from: usize,
+        v: Vec2,
+        link: usize,
+        xj: Seg,
+        seg: Seg,
+        err: f64,
+    ) -> usize {
+        let (x, j) = xj;
+        let is = Product::squared(Rate::Omega(link), seg);
+        let what = What::Component { sup: 'n', x, j, is };
+        let to = self.lay_off(
+            from,
+            v,
+            what,
+            Way::Toward(xj),
+            PointId::Normal { link },
+            err,
+        );
+        self.note_normal(link, to);
+        to
+    }
+
+    pub fn line(&mut self, through: usize, unit: Vec2, way: Way) -> Ray {
+        let shift = self.pencil().x;
+        Ray {
+            through,
+            unit: unit.normalize(),
+            way,
+            err: self.plan.points[through].err + self.plan.delta,
+            shift,
+        }
+    }
+
+    /// The pencil's error of one operation: a random displacement within δ
+    /// when emulating hand drafting, else zero.
+    pub fn pencil(&mut self) -> Vec2 {
+        use rand::Rng;
+        let delta = self.plan.delta;
+        match &mut self.rng {
+            None => Vec2::ZERO,
+            Some(r) => loop {
+                let v = Vec2::new(r.random_range(-1.0..=1.0), r.random_range(-1.0..=1.0));
+                if v.hypot2() <= 1.0 {
+                    break v * delta;
+                }
+            },
+        }
+    }
+
+    /// Is this mistake being made at this decision? Counts the decisions
+    /// of its kind and records the first step where it is made.
+    pub fn making(&mut self, m: Mistake) -> bool {
+        if self.variant.on.is_some_and(|k| k != self.plan.kind) {
+            return false;
+        }
+        if self.variant.also == Some(m) && self.variant.mistake != Some(m) {
+            // A second mistake combined with the first, made everywhere.
+            self.plan.mistake_step.get_or_insert(self.acts.len());
+            return true;
+        }
+        if self.variant.mistake != Some(m) {
+            return false;
+        }
+        let n = self.plan.decisions;
+        self.plan.decisions += 1;
+        if self.variant.at.is_some_and(|at| at != n) {
+            return false;
+        }
+        self.plan.mistake_step.get_or_insert(self.acts.len());
+        true
+    }
+
+    /// The new plan point `id` where lines `a` and `b` meet.
+    pub fn intersect(&mut self, a: Ray, b: Ray, id: PointId) -> Result<usize> {
+        let drawn = |r: &Ray| Line {
+            point: self.plan.points[r.through].at.to_point() + perp(r.unit) * r.shift,
+            dir: r.unit,
+        };
+        let LineCut::Point { at, sin_angle } =
+            crate::geom::intersect_lines(&drawn(&a), &drawn(&b), 1e-12)
+        else {
+            let (_, (letters, sub)) = key_label(id, self.plan.kind, self.m());
+            return Err(Error::Singular {
+                at: describe_input(self.m(), self.q),
+                why: format!(
+                    "on the {} plan the lines for {letters}{sub} are parallel: the position is a dead point of the group",
+                    self.kind_word(),
+                ),
+            });
+        };
+        let err = a.err.hypot(b.err) / sin_angle;
+        let out = self.add_point(id, at.to_vec2(), err);
+        self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
+        self.step(Act::Intersect {
+            lines: [a, b],
+            out,
+            sin_angle,
+        });
+        Ok(out)
+    }
+
+    fn kind_word(&self) -> &'static str {
+        if self.vel_kind() {
+            "velocity"
+        } else {
+            "acceleration"
+        }
+    }
+
+    /// Measure the relative segment from `from` to `to` (the tangential
+    /// part for accelerations) of `link` between J and X: its rate.
+    pub fn measure_rate(
+        &mut self,
+        link: usize,
+        from: usize,
+        to: usize,
+        (jw, j): (Point, Name),
+        (x, xn): (Point, Name),
+    ) {
+        let mu = self.plan.mu;
+        let rel = (self.plan.points[to].at - self.plan.points[from].at) * mu;
+        let r = x - jw;
+        let len = r.hypot();
+        let sign = r.cross(rel).signum();
+        let value = sign * rel.hypot() / len;
+        let err_mm = self.plan.points[to].err + self.plan.points[from].err + self.plan.delta;
+        let err = err_mm * mu / len;
+        // The sense is read from the side of the link's line the relative
+        // segment's end lies on: within the drafting error of that line it
+        // cannot be read (only a plan drawn wrong has it there), and the
+        // rate is known only in magnitude.
+        let sense_known = !(len > 0.0 && (r.cross(rel) / len).abs() / mu <= err_mm);
+        self.plan.rate_sense[link] = sense_known;
+        self.plan.rates[link] = Some((value, err));
+        self.plan.rate_len[link] = len;
+        self.plan.measured.push(Measured {
+            of: Quantity::Rate(link),
+            quantity: String::new(),
+            from,
+            to,
+            mm: rel.hypot() / mu,
+            value,
+            bound: err,
+        });
+        self.step(Act::Measure {
+            from,
+            to,
+            value: rel.hypot(),
+            reading: Reading::Relative {
+                link,
+                j,
+                x: xn,
+                length: len,
+                rate: value,
+            },
+        });
+    }
+
+    /// One vector equation of a group: X from a known point `base` through
+    /// a rigid link or a slide, rotating or not.
+    pub fn relation(&self, x: Name, base: Name, rigid: bool, link: usize) -> Relation {
+        Relation {
+            x,
+            base,
+            rigid,
+            rotating: !self.nr[link],
+        }
+    }
+
+    /// Links in a prismatic pair: `link` turns with `from`.
+    pub fn same_rate(&mut self, link: usize, from: usize) {
+        self.plan.rates[link] = self.plan.rates[from];
+        self.plan.rate_sense[link] = self.plan.rate_sense[from];
+        self.step(Act::Same {
+            link,
+            from_link: from,
+        });
+    }
+
+    pub fn run(&mut self, rates: (f64, f64)) -> Result<()> {
+        let m = self.m();
+        let frame = m.frame();
+        // The pole and the fixed points.
+        self.add_point(PointId::Pole, Vec2::ZERO, 0.0);
+        self.step(Act::Pole);
+        for &p in &m.links[frame].points {
+            let x = self.world(frame, p);
+            self.register(frame, x, 0);
+            if self.st.points.contains(&p) {
+                self.plan.of_point[p] = Some(0);
+            }
+        }
+        self.plan.rates[frame] = Some((0.0, 0.0));
+        self.input(rates)?;
+        for (gi, g) in self.st.s.groups.iter().enumerate() {
+            if !self.st.need[gi] {
+                continue;
+            }
+            match g {
+                AssurGroup::Dyad(d) => self.dyad(d)?,
+                AssurGroup::Triad(t) => self.triad(t)?,
+            }
+            // The reported points of the group's links.
+            for l in g.links() {
+                for &p in &m.links[l].points {
+                    if self.st.points.contains(&p)
+                        && self.plan.of_point[p].is_none()
+                        && self.carrier(p) == l
+                    {
+                        self.named(l, p);
+                    }
+                }
+            }
+        }
+        // Measured absolute values of the reported points.
+        for &p in self.st.points {
+            let Some(i) = self.plan.of_point[p].filter(|&i| i != 0) else {
+                continue;
+            };
+            let mm = self.plan.points[i].at.hypot();
+            self.plan.measured.push(Measured {
+                of: Quantity::Point(p),
+                quantity: String::new(),
+                from: 0,
+                to: i,
+                mm,
+                value: mm * self.plan.mu,
+                bound: (self.plan.points[i].err + self.plan.delta) * self.plan.mu,
+            });
+            self.step(Act::Measure {
+                from: 0,
+                to: i,
+                value: mm * self.plan.mu,
+                reading: Reading::Point(p),
+            });
+        }
+        Ok(())
+    }
+
+    /// The first included link carrying `p` (in scene order), else the frame.
+    fn carrier(&self, p: usize) -> usize {
+        let m = self.m();
+        (0..m.links.len())
+            .find(|&l| self.st.include[l] && m.links[l].points.contains(&p))
+            .unwrap_or(m.frame())
+    }
+}

@@ -1,0 +1,466 @@
+//! What the kernel hands out: a plan (its points, steps, measured values
+//! and rates), what it needs to build one ([`Setup`], [`Drafting`]) and
+//! the ways to build it besides the standard one ([`Variant`], [`Mistake`]).
+
+use crate::model::mechanism::Mechanism;
+use crate::model::structure::Structure;
+use kurbo::Vec2;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlanKind {
+    Velocity,
+    Acceleration,
+}
+
+/// What a plan point is, by the indices of the mechanism: the kernel finds
+/// and builds points by their ids; the names (`b`, `n_2`, `b_3` …) are
+/// given at the end, from the ids and the mechanism's names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointId {
+    /// The pole (plan point 0): p_v, p_a.
+    Pole,
+    /// A named point of the mechanism (its index): b, s2.
+    Named(usize),
+    /// A named point as a point of another link: b_3 is B of link 3.
+    Coincident { point: usize, link: usize },
+    /// The end of a normal component ω²·l of a link: n_2.
+    Normal { link: usize },
+    /// The end of a Coriolis acceleration of a link's sliding: k_3.
+    Coriolis { link: usize },
+    /// The special point of a class III group on its base link: s_4.
+    Special { base: usize },
+}
+
+impl PointId {
+    /// A point of the construction only (the pole, the ends of normal and
+    /// Coriolis components): it has no name on the mechanism's figure.
+    pub fn is_construction(self) -> bool {
+        matches!(
+            self,
+            PointId::Pole | PointId::Normal { .. } | PointId::Coriolis { .. }
+        )
+    }
+}
+
+/// A point of a plan: `key` is its name in result files (`b`, `s2`, and
+/// for construction points `n_2`, `k_3`, `b_3` …), `label` its letters and
+/// subscript for drawings. Numbers-only builds leave the names empty.
+#[derive(Clone, Debug)]
+pub struct PlanPoint {
+    pub id: PointId,
+    pub key: String,
+    pub label: (String, String),
+    /// Millimetres from the pole.
+    pub at: Vec2,
+    /// First-order drafting error radius, mm.
+    pub err: f64,
+    /// The point's name on the mechanism's figure (`B`, `S2`, `B3` for B
+    /// as a point of link 3); empty for construction points.
+    pub figure: String,
+}
+
+impl PlanPoint {
+    /// "b", "s2", "n2" …: letters and subscript run together, for text.
+    pub fn name(&self) -> String {
+        if self.id == PointId::Pole {
+            // The pole keeps its subscript visible: p_v, p_a.
+            return self.key.clone();
+        }
+        format!("{}{}", self.label.0, self.label.1)
+    }
+}
+
+/// A direction as the method describes it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Dir {
+    /// Perpendicular to the segment of the mechanism (`"BC"`).
+    Perp(String),
+    /// Parallel to a segment of the mechanism.
+    Along(String),
+    /// Parallel to a segment, from its first point toward its second.
+    Toward(String, String),
+    /// Parallel to the guide of a link.
+    Guide(String),
+    /// A vector turned by 90° in the sense of an angular velocity.
+    Turned(String, String),
+    /// Perpendicular to a segment in the sense of an angular rate.
+    PerpSense(String, String),
+}
+
+/// A line drawn on the plan: through a plan point, in a direction.
+#[derive(Clone, Debug)]
+pub struct PlanLine {
+    pub through: usize,
+    pub unit: Vec2,
+    pub dir: Dir,
+    /// Offset error of the drawn line, mm.
+    pub err: f64,
+    /// Where the pencil actually drew it: shifted by this much to the left
+    /// of `unit` (zero unless the plan emulates hand drafting).
+    pub shift: f64,
+}
+
+/// Why a plan point coincides with another.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Why {
+    /// A point of the frame: at the pole.
+    Fixed,
+    /// A point of a translating link (its id).
+    Translates(String),
+}
+
+/// One drafting operation.
+#[derive(Clone, Debug)]
+pub enum Op {
+    /// The pole (plan point 0) and the frame points that lie there.
+    Pole { fixed: Vec<String> },
+    /// Lay off a known vector `what` (real value `value`) from `from`.
+    LayOff {
+        from: usize,
+        to: usize,
+        what: String,
+        value: f64,
+        dir: Dir,
+    },
+    /// Two lines and their intersection.
+    Intersect {
+        lines: [PlanLine; 2],
+        out: usize,
+        sin_angle: f64,
+    },
+    /// The similarity theorem: a triangle on `a b` similar to the link's.
+    Similar {
+        a: usize,
+        b: usize,
+        out: usize,
+        figure: [String; 3],
+        link: String,
+    },
+    /// A point of a link on the line of two others: divide the segment.
+    Divide {
+        a: usize,
+        b: usize,
+        out: usize,
+        figure: [String; 3],
+        ratio: f64,
+    },
+    /// A point coinciding with another (a translating link, or the pole).
+    Coincide { out: usize, with: usize, why: Why },
+    /// Measure a segment: `quantity` = length × μ; for a relative segment
+    /// also the link's angular rate (name, signed value, link segment).
+    Measure {
+        from: usize,
+        to: usize,
+        quantity: String,
+        value: f64,
+        length: Option<f64>,
+        rate: Option<(String, f64, (String, String))>,
+    },
+    /// Links in a prismatic pair share ω (ε).
+    Same {
+        link: String,
+        from_link: String,
+        what: String,
+    },
+    /// The vector equations of a group, as the lecture writes them.
+    Equation { text: String },
+}
+
+#[derive(Clone, Debug)]
+pub struct Step {
+    pub op: Op,
+}
+
+/// What a measured value is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// The angular rate of a link (ω on the velocity plan, ε on the
+    /// acceleration plan).
+    Rate(usize),
+    /// The velocity (acceleration) of a named point.
+    Point(usize),
+}
+
+/// A measured quantity with its drafting-error bound.
+#[derive(Clone, Debug)]
+pub struct Measured {
+    pub of: Quantity,
+    /// Its name (`ω2`, `v_B`); empty in numbers-only builds.
+    pub quantity: String,
+    pub from: usize,
+    pub to: usize,
+    pub mm: f64,
+    pub value: f64,
+    /// First-order bound of the drafting error of `value` (real units).
+    pub bound: f64,
+}
+
+/// A plan point known on a link: the link, the point's local coordinates
+/// on it, and the plan point (one flat list for the whole plan).
+#[derive(Clone, Copy, Debug)]
+pub struct Known {
+    pub link: usize,
+    pub local: Vec2,
+    pub point: usize,
+}
+
+/// A plan: the replayable list of steps and the named plan points.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    pub kind: PlanKind,
+    /// Scale coefficient: real value per mm.
+    pub mu: f64,
+    /// Pencil precision δ used for the error model, mm.
+    pub delta: f64,
+    pub points: Vec<PlanPoint>,
+    /// The steps in words (empty in numbers-only builds).
+    pub steps: Vec<Step>,
+    /// Angular velocity (velocity plan) or acceleration (acceleration plan)
+    /// of every constructed link, as measured; and its error bound.
+    pub rates: Vec<Option<(f64, f64)>>,
+    /// The length each rate was measured over (the relative segment's
+    /// link length, m; 0 where a rate is taken over from another link).
+    pub rate_len: Vec<f64>,
+    /// Whether the sense of each rate can be read off the plan: the end of
+    /// its relative segment clear of the link's line by more than its
+    /// drafting error (only a plan drawn wrong has it on the line; then
+    /// the rate is known in magnitude only).
+    pub rate_sense: Vec<bool>,
+    pub measured: Vec<Measured>,
+    /// Smallest sine of an intersection angle (1 when none).
+    pub worst_sin: f64,
+    /// The plan points known on the links, in the order they were found.
+    pub body: Vec<Known>,
+    /// The plan point of each named point of the mechanism.
+    pub of_point: Vec<Option<usize>>,
+    /// With a deliberate mistake: the step where it was made.
+    pub mistake_step: Option<usize>,
+    /// With a deliberate mistake: how many decisions of its kind the
+    /// construction took (whether made wrong or not).
+    pub decisions: usize,
+}
+
+impl Plan {
+    /// An empty plan for `m` at scale `mu`.
+    pub(super) fn empty(kind: PlanKind, mu: f64, delta: f64, m: &Mechanism) -> Plan {
+        Plan {
+            kind,
+            mu,
+            delta,
+            points: Vec::new(),
+            steps: Vec::new(),
+            rates: vec![None; m.links.len()],
+            rate_len: vec![0.0; m.links.len()],
+            rate_sense: vec![true; m.links.len()],
+            measured: Vec::new(),
+            worst_sin: 1.0,
+            body: Vec::new(),
+            of_point: vec![None; m.scene.points.len()],
+            mistake_step: None,
+            decisions: 0,
+        }
+    }
+    /// The same plan emptied, at scale `mu` (its buffers kept).
+    pub(super) fn cleared(mut self, mu: f64) -> Plan {
+        self.mu = mu;
+        self.points.clear();
+        self.steps.clear();
+        self.measured.clear();
+        self.body.clear();
+        self.rates.fill(None);
+        self.rate_len.fill(0.0);
+        self.rate_sense.fill(true);
+        self.of_point.fill(None);
+        self.worst_sin = 1.0;
+        self.mistake_step = None;
+        self.decisions = 0;
+        self
+    }
+    /// The plan point of the material point of `link` at `local`.
+    pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
+        self.body
+            .iter()
+            .find(|k| k.link == link && (k.local - local).hypot() <= tol)
+            .map(|k| k.point)
+    }
+    /// The step that draws plan point `idx` (its index in `steps`).
+    pub fn step_of(&self, idx: usize) -> Option<usize> {
+        self.steps.iter().position(|s| match &s.op {
+            Op::LayOff { to, .. } => *to == idx,
+            Op::Intersect { out, .. }
+            | Op::Similar { out, .. }
+            | Op::Divide { out, .. }
+            | Op::Coincide { out, .. } => *out == idx,
+            Op::Pole { .. } => idx == 0,
+            _ => false,
+        })
+    }
+    pub fn point(&self, key: &str) -> Option<&PlanPoint> {
+        self.points.iter().find(|p| p.key == key)
+    }
+    /// The real vector of a named point (velocity or acceleration).
+    pub fn value_of(&self, point: usize) -> Option<Vec2> {
+        self.of_point[point].map(|i| self.points[i].at * self.mu)
+    }
+    /// Worst intersection angle, degrees.
+    pub fn worst_angle_deg(&self) -> f64 {
+        self.worst_sin.clamp(0.0, 1.0).asin().to_degrees()
+    }
+}
+
+/// Both plans at one position, as `want.plans` asks.
+#[derive(Clone, Debug)]
+pub struct Plans {
+    pub velocity: Plan,
+    pub acceleration: Option<Plan>,
+}
+
+/// What the kernel needs to know: the mechanism, its positions, the groups
+/// to build and the points to report.
+pub struct Setup<'a> {
+    pub m: &'a Mechanism,
+    pub s: &'a Structure,
+    pub need: &'a [bool],
+    pub points: &'a [usize],
+    pub include: &'a [bool],
+}
+
+/// Links whose angle cannot change (the frame, and links joined to a
+/// non-rotating link by a prismatic pair): no normal components, no
+/// Coriolis acceleration on them.
+pub fn non_rotating(m: &Mechanism) -> Vec<bool> {
+    let mut nr = vec![false; m.links.len()];
+    nr[m.frame()] = true;
+    loop {
+        let mut changed = false;
+        for pr in &m.prismatics {
+            if nr[pr.slider] != nr[pr.guide] {
+                nr[pr.slider] = true;
+                nr[pr.guide] = true;
+                changed = true;
+            }
+        }
+        if !changed {
+            return nr;
+        }
+    }
+}
+
+/// A typical student's mistake, built into the construction on purpose so
+/// that a hand-drawn plan can be diagnosed by the mistake that explains it.
+/// Each kind is a decision the construction takes at certain steps (every
+/// normal component, every similar figure …); [`Variant::at`] makes it at
+/// one of them only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Mistake {
+    /// The Coriolis acceleration turned the wrong way (against ω).
+    CoriolisReversed,
+    /// The Coriolis acceleration left out on a rotating guide.
+    CoriolisForgotten,
+    /// The Coriolis acceleration as ω·v_rel, without the factor 2.
+    CoriolisFactorOne,
+    /// A normal component laid off from the centre instead of toward it.
+    NormalFromCentre,
+    /// A normal component ω²·l left out.
+    NormalForgotten,
+    /// A similar figure built mirrored (letters in the wrong order).
+    MirroredFigure,
+    /// In an RRR group, each line drawn ⊥ the other link of the group.
+    WrongPerpendicular,
+    /// A relative (tangential) component drawn ∥ the link instead of ⊥ it.
+    TangentialParallel,
+    /// A point taken on the wrong link: on a rocking guide, the guide's
+    /// coincident point b₃ taken as the slider's point b₂ (the relative
+    /// sliding ignored).
+    WrongLink,
+    /// ε1 ≠ 0 but the tangential component of the crank's point left out.
+    Epsilon1Forgotten,
+    /// ε1 = 0 but a tangential component ε1·l added, taking ε1 = ω1².
+    Epsilon1Added,
+    /// Normal components computed with the input's ω1 instead of the link's ω.
+    OmegaWrongLink,
+    /// The crank's velocity laid off against the sense of ω1.
+    OmegaWrongSense,
+    /// One vector laid off with a wrong length (an arithmetic or measuring
+    /// slip): its length times [`Variant::factor`].
+    Slip,
+}
+
+/// How to build a plan besides the standard way: with a mistake, or with
+/// every drafting operation perturbed by the pencil (a hand drawing).
+#[derive(Clone, Copy, Debug)]
+pub struct Variant {
+    pub mistake: Option<Mistake>,
+    /// Which of the mistake's decisions is taken wrong, counted from 0 in
+    /// the order of the construction ([`Plan::decisions`] counts them);
+    /// `None`: every one (the mistake repeated wherever it can be made).
+    pub at: Option<usize>,
+    /// The plan the mistake is made on (`None`: both).
+    pub on: Option<PlanKind>,
+    /// For [`Mistake::Slip`]: the wrong length over the right one.
+    pub factor: f64,
+    /// A second mistake made together with the first, everywhere it can
+    /// be (students combine some: a Coriolis acceleration reversed and the
+    /// normals from the centre).
+    pub also: Option<Mistake>,
+    /// Seed of the pencil noise: each laid-off point, each line and each
+    /// constructed point moves by at most δ.
+    pub jitter: Option<u64>,
+}
+
+impl Default for Variant {
+    fn default() -> Self {
+        Variant {
+            mistake: None,
+            at: None,
+            on: None,
+            factor: 1.0,
+            also: None,
+            jitter: None,
+        }
+    }
+}
+
+impl Variant {
+    /// The mistake `m` at every decision of its kind, on both plans.
+    pub fn everywhere(m: Mistake) -> Variant {
+        Variant {
+            mistake: Some(m),
+            ..Variant::default()
+        }
+    }
+}
+
+/// Fixed scales, the pencil precision and the variant for
+/// [`build_plans`](super::build_plans). A scale left `None` is the
+/// standard one at which the plan fits the [`Field`](super::scale::Field)
+/// the caller gives (its default with the functions that take none).
+#[derive(Clone, Copy, Debug)]
+pub struct Drafting {
+    pub mu_v: Option<f64>,
+    pub mu_a: Option<f64>,
+    /// Pencil precision δ, mm.
+    pub delta: f64,
+    pub variant: Variant,
+}
+
+impl Default for Drafting {
+    fn default() -> Self {
+        Drafting {
+            mu_v: None,
+            mu_a: None,
+            delta: 0.5,
+            variant: Variant::default(),
+        }
+    }
+}
+
+impl Drafting {
+    /// The fixed scale of a plan of `kind`, if any.
+    pub(super) fn mu(&self, kind: PlanKind) -> Option<f64> {
+        match kind {
+            PlanKind::Velocity => self.mu_v,
+            PlanKind::Acceleration => self.mu_a,
+        }
+    }
+}

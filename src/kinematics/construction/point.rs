@@ -1,0 +1,298 @@
+//! Placing a point of a link from what the plan knows of the link: the
+//! pole for the frame, the same plan point for a translating link, the
+//! similar figure on two known points, or the relative vector of the
+//! link's measured rates from one — whichever comes out best conditioned.
+
+use super::builder::Builder;
+use super::plan::{Mistake, PointId};
+use super::record::{Act, By, Name, Product, Rate, Way, What};
+use crate::geom::perp;
+use kurbo::{Point, Vec2};
+
+/// How a point of a link is placed ([`Builder::best_construction`]).
+#[derive(Clone, Copy, Debug)]
+enum Construction {
+    /// The figure similar to the link's on known points `a`, `b` (indices
+    /// in the list of the link's known points), the new point at
+    /// a + ρ·(b − a) with the complex ratio ρ.
+    Figure {
+        a: usize,
+        b: usize,
+        ratio: Vec2,
+        err: FigureErr,
+    },
+    /// From known point `a` by the relative vector of the link's rates.
+    Relation { a: usize },
+}
+
+/// The way a similar figure is drawn, and the new point's error radius.
+#[derive(Clone, Copy, Debug)]
+enum FigureErr {
+    /// Proportional division of the segment (the point on or a hair off
+    /// the line of the two).
+    Divide(f64),
+    /// Two arcs meeting at an angle of sine `.1`.
+    Arcs(f64, f64),
+}
+
+impl Builder<'_> {
+    /// The named point `p` carried by `link` (registering it on every link
+    /// carrying it that the plan knows).
+    pub(super) fn named(&mut self, link: usize, p: usize) -> usize {
+        let x = self.world(link, p);
+        let i = match self.find(link, x) {
+            Some(i) => i,
+            None => self.point_on(link, x, PointId::Named(p), Name::Point(p)),
+        };
+        self.plan.of_point[p].get_or_insert(i);
+        i
+    }
+
+    /// The coincident point of `link` at world `x` (named after point `p`
+    /// with the link's number as subscript: b₃ is B as a point of link 3).
+    pub(super) fn coincident(&mut self, link: usize, x: Point, p: usize) -> usize {
+        if let Some(i) = self.find(link, x) {
+            return i;
+        }
+        self.point_on(
+            link,
+            x,
+            PointId::Coincident { point: p, link },
+            Name::On(p, link),
+        )
+    }
+
+    /// The name of a known point of `link` (its local place and plan
+    /// point): the mechanism's point there, else the plan point's figure
+    /// (B3).
+    fn known_name(&self, link: usize, (local, idx): (Vec2, usize)) -> Name {
+        let m = self.m();
+        m.links[link]
+            .points
+            .iter()
+            .find(|&&p| (m.local(link, p) - local).hypot() <= 1e-9 * m.link_scale(link))
+            .map_or(Name::Figure(idx), |&p| Name::Point(p))
+    }
+
+    /// The plan point `id` of the material point of `link` now at `x`,
+    /// built from what the plan knows of that link: the pole for the
+    /// frame, the same point for a translating link, the similarity
+    /// theorem from two known points, or, from one known point, the
+    /// relative vector of the link's measured rates. `figure` is the
+    /// point's name on the mechanism.
+    fn point_on(&mut self, link: usize, x: Point, id: PointId, figure: Name) -> usize {
+        if let Some(i) = self.find(link, x) {
+            return i;
+        }
+        let m = self.m();
+        let known: Vec<(Vec2, usize)> = self
+            .plan
+            .body
+            .iter()
+            .filter(|k| k.link == link)
+            .map(|k| (k.local, k.point))
+            .collect();
+        if link == m.frame() {
+            let out = self.add_point(id, Vec2::ZERO, 0.0);
+            self.step(Act::Coincide {
+                out,
+                with: 0,
+                translates: None,
+            });
+            self.register(link, x, out);
+            return out;
+        }
+        let local = self.local(link, x);
+        if let (true, Some(&(_, with))) = (self.nr[link], known.first()) {
+            // A translating link: all its points share one plan point.
+            let (at, err) = (self.plan.points[with].at, self.plan.points[with].err);
+            let out = self.add_point(id, at, err);
+            self.step(Act::Coincide {
+                out,
+                with,
+                translates: Some(link),
+            });
+            self.register(link, x, out);
+            return out;
+        }
+        assert!(
+            !known.is_empty(),
+            "a link is constructed only after one of its points"
+        );
+        let out = match self.best_construction(link, local, x, &known) {
+            Construction::Figure { a, b, ratio, err } => {
+                let ((la, pa), (lb, pb)) = (known[a], known[b]);
+                let mut ratio = ratio;
+                let collinear = matches!(err, FigureErr::Divide(_));
+                if !collinear && ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
+                    ratio.y = -ratio.y;
+                }
+                let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
+                let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
+                let fig = [
+                    self.known_name(link, (la, pa)),
+                    self.known_name(link, (lb, pb)),
+                    figure,
+                ];
+                let (e, by) = match err {
+                    FigureErr::Divide(e) => (e, By::Divide { ratio: ratio.x }),
+                    FigureErr::Arcs(e, s) => {
+                        if s < 1.0 {
+                            self.plan.worst_sin = self.plan.worst_sin.min(s.max(0.0));
+                        }
+                        (e, By::Similar { link })
+                    }
+                };
+                let out = self.add_point(id, at, e);
+                self.step(Act::Figure {
+                    a: pa,
+                    b: pb,
+                    out,
+                    figure: fig,
+                    by,
+                });
+                out
+            }
+            Construction::Relation { a } => self.by_rates(link, x, id, figure, known[a]),
+        };
+        self.register(link, x, out);
+        out
+    }
+
+    /// From one known point A of `link` (local place, plan point) and the
+    /// link's rates: v_X = v_A + ω×AX, a_X = a_A + ε×AX − ω²·AX.
+    fn by_rates(
+        &mut self,
+        link: usize,
+        x: Point,
+        id: PointId,
+        figure: Name,
+        (la, pa): (Vec2, usize),
+    ) -> usize {
+        let r = x - self.c.pose(link).apply(la);
+        let an = self.known_name(link, (la, pa));
+        let w = self.omega(link);
+        let seg = (an, figure);
+        let (rate, rate_err) = self.plan.rates[link].unwrap_or((0.0, 0.0));
+        let mut from = pa;
+        let rate_sym = if self.vel_kind() {
+            Rate::Omega(link)
+        } else {
+            if w != 0.0 && !self.making(Mistake::NormalForgotten) {
+                let normal = What::Product(Product::squared(Rate::Omega(link), seg));
+                let err = 2.0 * w.abs() * self.omega_err(link) * r.hypot();
+                let n = PointId::Normal { link };
+                from = self.lay_off(pa, -r * (w * w), normal, Way::Toward((figure, an)), n, err);
+                self.note_normal(link, from);
+            }
+            Rate::Epsilon(link)
+        };
+        // ω×AX on the velocity plan, ε×AX on the acceleration plan: the
+        // rate this plan measured.
+        let what = What::Product(Product::new(rate_sym, seg));
+        let way = Way::PerpSense(seg, rate_sym);
+        self.lay_off(from, perp(r) * rate, what, way, id, rate_err * r.hypot())
+    }
+
+    /// The best-conditioned way a careful draftsman places the material
+    /// point of `link` at `local` (world `x`) from what the plan knows of
+    /// the link (`known`: local place and plan point): the similar figure
+    /// on any pair of its known points — by proportional division when the
+    /// point is (nearly) on their line, by two arcs otherwise — or, from
+    /// one known point, the relative vector of the link's measured rates.
+    /// Each way's first-order error radius: the similar figure moves with
+    /// its base as a + ρ·(b − a) does (|1 − ρ|·e_a + |ρ|·e_b: an extension
+    /// beyond b grows it by its ratio), plus the pencil's δ for a division
+    /// and the point's offset from the line the division ignores, or √2·δ
+    /// over the sine of the arcs' angle; the relative vector adds δ per
+    /// vector laid off and the rate's error times the distance. The least
+    /// wins, so a point a hair off a rod is divided, not found by two
+    /// nearly tangent arcs.
+    fn best_construction(
+        &self,
+        link: usize,
+        local: Vec2,
+        x: Point,
+        known: &[(Vec2, usize)],
+    ) -> Construction {
+        let delta = self.plan.delta;
+        let mu = self.plan.mu;
+        let pts = &self.plan.points;
+        let mut best: Option<(f64, Construction)> = None;
+        let consider = |e: f64, c: Construction, best: &mut Option<(f64, Construction)>| {
+            if best.as_ref().is_none_or(|b| e < b.0) {
+                *best = Some((e, c));
+            }
+        };
+        for a in 0..known.len() {
+            for b in a + 1..known.len() {
+                let ((la, pa), (lb, pb)) = (known[a], known[b]);
+                let ab = lb - la;
+                if ab.hypot2() == 0.0 {
+                    continue;
+                }
+                let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+                let (ea, eb) = (pts[pa].err, pts[pb].err);
+                let moved = (Vec2::new(1.0, 0.0) - ratio).hypot() * ea + ratio.hypot() * eb;
+                let (a_at, b_at) = (pts[pa].at, pts[pb].at);
+                let plan_ab = (b_at - a_at).hypot();
+                // Division: the offset from the line is not drawn.
+                let divide = moved + delta + ratio.y.abs() * plan_ab;
+                let by_division = Construction::Figure {
+                    a,
+                    b,
+                    ratio,
+                    err: FigureErr::Divide(divide),
+                };
+                if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
+                    consider(divide, by_division, &mut best);
+                } else {
+                    // Two arcs from a and b, meeting at the angle of the
+                    // figure's sides at the new point.
+                    let at = a_at + (b_at - a_at).rotate_scale(ratio);
+                    let (ca, cb) = (at - a_at, at - b_at);
+                    let s = if ca.hypot() * cb.hypot() > 0.0 {
+                        (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
+                    } else {
+                        1.0
+                    };
+                    let arcs = moved + std::f64::consts::SQRT_2 * delta / s.max(1e-300);
+                    // A triangle is drawn by arcs (the lecture's way); a
+                    // point a hair off the line by division, where the
+                    // arcs would meet at too small an angle.
+                    if 2.0 * divide < arcs {
+                        consider(divide, by_division, &mut best);
+                    } else {
+                        let by_arcs = Construction::Figure {
+                            a,
+                            b,
+                            ratio,
+                            err: FigureErr::Arcs(arcs, s),
+                        };
+                        consider(arcs, by_arcs, &mut best);
+                    }
+                }
+            }
+        }
+        if let Some((_, rate_err)) = self.plan.rates[link] {
+            for (a, &(la, pa)) in known.iter().enumerate() {
+                let r = (x - self.c.pose(link).apply(la)).hypot();
+                let e = if self.vel_kind() {
+                    pts[pa].err + delta + rate_err * r / mu
+                } else {
+                    let w = self.omega(link);
+                    let normal = if w != 0.0 {
+                        delta + 2.0 * w.abs() * self.omega_err(link) * r / mu
+                    } else {
+                        0.0
+                    };
+                    pts[pa].err + normal + delta + rate_err * r / mu
+                };
+                // The similar figure is the lecture's way: the relative
+                // vector takes over only where it is clearly better.
+                consider(e * 2.0, Construction::Relation { a }, &mut best);
+            }
+        }
+        best.map(|b| b.1).unwrap_or(Construction::Relation { a: 0 })
+    }
+}
