@@ -1,7 +1,8 @@
 //! The kinematics: positions group by group ([`positions`]), velocities
 //! and accelerations by two independent analytic routes ([`analytic`]) and
 //! as the plans a draftsman draws ([`construction`]), and the analysis of a
-//! scene's positions with their cross-check ([`solve`]).
+//! scene's positions ([`solve`]; its cross-check is
+//! [`crate::verification::crosscheck`]).
 
 pub mod analytic;
 pub mod construction;

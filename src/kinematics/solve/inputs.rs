@@ -1,0 +1,190 @@
+//! The input values of the positions asked for, and the extreme position
+//! that begins the working stroke (`positions.count`).
+
+use super::Analysis;
+use crate::error::{Error, Result};
+use crate::geom::{Pose, wrap_pi};
+use crate::kinematics::analytic::{Drive, Motion, Order, contour};
+use crate::kinematics::positions::{Configuration, PositionSolver};
+use crate::model::scene::{InputSpec, PositionsSpec};
+
+impl Analysis {
+    /// Input coordinates of the positions asked for (rad or m).
+    pub fn input_values(&self) -> Result<Vec<f64>> {
+        let sc = &self.mech.scene;
+        Ok(match &sc.positions {
+            PositionsSpec::Single => vec![sc.input.coordinate()],
+            PositionsSpec::List(v) => v.clone(),
+            PositionsSpec::Count { count, output } => {
+                let out = output.unwrap_or_else(|| {
+                    *self
+                        .structure
+                        .groups
+                        .last()
+                        .map(|g| g.links())
+                        .unwrap_or_default()
+                        .last()
+                        .unwrap_or(&sc.input.link())
+                });
+                let start = self.working_stroke_start(out)?;
+                let (omega, _) = sc.input.rates();
+                let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+                (0..*count)
+                    .map(|k| {
+                        (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
+                            .rem_euclid(std::f64::consts::TAU)
+                    })
+                    .collect()
+            }
+        })
+    }
+
+    /// The output coordinate of link `out` and its first transfer function:
+    /// the slide along a frame guide for a slider, else the link's angle.
+    fn output_coordinate(
+        &self,
+        out: usize,
+        c: &Configuration,
+        an: &[Option<Motion>],
+    ) -> (f64, f64) {
+        let m = &self.mech;
+        if let Some(pr) = m
+            .prismatics
+            .iter()
+            .find(|p| p.slider == out && p.guide == m.frame())
+        {
+            let u = pr.line(&Pose::IDENTITY).dir;
+            let q = c.pose(out).apply(pr.slider_local);
+            let v = an[out].unwrap().velocity(q);
+            (u.dot(q.to_vec2()), u.dot(v))
+        } else {
+            (c.pose(out).angle, an[out].unwrap().omega)
+        }
+    }
+
+    /// The crank angle of the extreme position of `out` that begins the
+    /// working stroke (the stroke taking the larger crank angle), found as
+    /// a root of the output's transfer function to machine precision.
+    pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
+        let m = &self.mech;
+        let sc = &m.scene;
+        let InputSpec::Crank { omega, angle, .. } = sc.input else {
+            return Err(Error::scene(
+                "/positions/count",
+                "equal steps over a revolution need a crank input",
+            ));
+        };
+        let mut need = self.structure.needed_for(&[out]);
+        for (n, own) in need.iter_mut().zip(&self.need) {
+            *n |= *own;
+        }
+        let mut ps = PositionSolver::new(m, &self.structure, need.clone())?;
+        let eval = |ps: &mut PositionSolver, phi: f64, step: bool| -> Result<(f64, f64)> {
+            let c = if step {
+                ps.solve(phi)?
+            } else {
+                ps.solve_at(phi)?
+            };
+            let an = contour::solve(
+                m,
+                &self.structure,
+                &need,
+                &c,
+                Drive {
+                    q: phi,
+                    rate: 1.0,
+                    rate2: 0.0,
+                },
+                Order::Velocity,
+            )?;
+            Ok(self.output_coordinate(out, &c, &an))
+        };
+        let n = 720;
+        let mut samples = Vec::with_capacity(n + 1);
+        for k in 0..=n {
+            let phi = angle + std::f64::consts::TAU * k as f64 / n as f64;
+            let v = eval(&mut ps, phi, true).map_err(|e| match e {
+                Error::Assembly { group, at, why } => Error::Assembly {
+                    group,
+                    at,
+                    why: format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible"),
+                },
+                e => e,
+            })?;
+            samples.push((phi, v.0, v.1));
+        }
+        let angular = !m
+            .prismatics
+            .iter()
+            .any(|p| p.slider == out && p.guide == m.frame());
+        // Unwrap an angular output so that min/max compare.
+        let mut extremes: Vec<(f64, f64)> = Vec::new();
+        let mut offset = 0.0;
+        for k in 0..n {
+            let (p0, _, d0) = samples[k];
+            let (p1, _, d1) = samples[k + 1];
+            if d0 == 0.0 || d0.signum() != d1.signum() {
+                ps.solve(p0)?;
+                // Bisection on the transfer function, then polish to the last ulp.
+                let (mut a, mut b, mut fa) = (p0, p1, d0);
+                for _ in 0..200 {
+                    let mid = 0.5 * (a + b);
+                    if mid <= a || mid >= b {
+                        break;
+                    }
+                    let (_, fm) = eval(&mut ps, mid, false)?;
+                    if fm == 0.0 {
+                        a = mid;
+                        b = mid;
+                        break;
+                    }
+                    if fm.signum() == fa.signum() {
+                        a = mid;
+                        fa = fm;
+                    } else {
+                        b = mid;
+                    }
+                }
+                let root = 0.5 * (a + b);
+                let (x, _) = eval(&mut ps, root, false)?;
+                let x = if angular {
+                    let base = samples[0].1;
+                    offset = base + wrap_pi(x - base);
+                    offset
+                } else {
+                    x
+                };
+                extremes.push((root, x));
+            }
+        }
+        let _ = offset;
+        if extremes.len() < 2 {
+            // No extreme positions: the output turns fully; start at the input.
+            return Ok(angle);
+        }
+        let lo =
+            extremes.iter().copied().fold(
+                (0.0, f64::INFINITY),
+                |acc, e| if e.1 < acc.1 { e } else { acc },
+            );
+        let hi = extremes
+            .iter()
+            .copied()
+            .fold(
+                (0.0, f64::NEG_INFINITY),
+                |acc, e| if e.1 > acc.1 { e } else { acc },
+            );
+        let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+        // Crank angle of the stroke lo → hi in the sense of rotation.
+        let d_lo_hi = (dir * (hi.0 - lo.0)).rem_euclid(std::f64::consts::TAU);
+        let d_hi_lo = std::f64::consts::TAU - d_lo_hi;
+        // The larger stroke begins the working stroke; at a tie (180° each)
+        // the extreme with the smallest output coordinate.
+        let start = if d_lo_hi >= d_hi_lo - 1e-9 {
+            lo.0
+        } else {
+            hi.0
+        };
+        Ok(start.rem_euclid(std::f64::consts::TAU))
+    }
+}

@@ -1,0 +1,231 @@
+//! Solving every position asked for: the positions found in order by both
+//! routes, then each one's rates, plans and cross-check.
+
+use super::{Analysis, RUN_CHUNK, Solved};
+use crate::error::{Error, Result};
+use crate::geom::wrap_pi;
+use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
+use crate::kinematics::analytic::{Drive, Order, contour};
+use crate::kinematics::construction::build_plans;
+use crate::kinematics::positions::{Configuration, PositionSolver};
+use crate::model::scene::InputSpec;
+use crate::verification::crosscheck::{ChangedData, Costs};
+use std::time::Instant as Clock;
+
+/// A position found in order by both routes, before its rates.
+struct Placed<'a> {
+    q: f64,
+    /// The rounding of q as the file writes it (rad or m).
+    q_rounding: f64,
+    config: Configuration,
+    /// Route (b) at this position (its state continues from the last).
+    constraint: ConstraintSolver<'a>,
+    /// Time of finding the position, seconds, by route (a) and route (b).
+    contour_time: f64,
+    constraint_time: f64,
+}
+
+impl Analysis {
+    /// Solve every position asked for, both routes, with the cross-check.
+    ///
+    /// The positions are found in order (both routes continue from one
+    /// position to the next, which keeps them on the sketch's branch);
+    /// then each position's velocities, accelerations, plans and checks are
+    /// independent, and long sweeps do them in parallel
+    /// ([`crate::progress::map_on`], a chunk at a time). The result, and
+    /// the first error in the order of the positions, are those of a
+    /// sequential run.
+    pub fn run(&self) -> Result<Vec<Solved>> {
+        let mut out = Vec::new();
+        self.run_each(|s| {
+            out.push(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// As [`Analysis::run`], each solved position handed to `f` in order
+    /// instead of kept: the positions are found and finished
+    /// [`RUN_CHUNK`] at a time, so that memory does not grow with their
+    /// number. The positions before the first error are handed over; an
+    /// error of `f` stops the run and is returned.
+    pub fn run_each(&self, mut f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        let values = self.input_values()?;
+        let m = &self.mech;
+        let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
+        let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
+        let changed = self.changed_data();
+        let bar = crate::progress::bar(values.len(), "positions");
+        // The rounding of each input value as written (none for `count`).
+        let rounding = if m.scene.input_rounding.len() == values.len() {
+            m.scene.input_rounding.clone()
+        } else {
+            vec![0.0; values.len()]
+        };
+        let done = values
+            .chunks(RUN_CHUNK)
+            .zip(rounding.chunks(RUN_CHUNK))
+            .try_for_each(|(chunk, rounding)| {
+                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, &bar, &mut f)
+            });
+        bar.finish_and_clear();
+        done
+    }
+
+    /// One chunk of [`Analysis::run_each`]: its positions found in order,
+    /// then finished (in parallel when long) and handed to `f` in order.
+    #[allow(clippy::too_many_arguments)]
+    fn run_chunk<'a>(
+        &'a self,
+        values: &[f64],
+        rounding: &[f64],
+        ps: &mut PositionSolver,
+        cs: &mut ConstraintSolver<'a>,
+        changed: &ChangedData,
+        bar: &indicatif::ProgressBar,
+        f: &mut impl FnMut(Solved) -> Result<()>,
+    ) -> Result<()> {
+        let mut placed = Vec::with_capacity(values.len());
+        let mut stop = None;
+        for (&q, &q_rounding) in values.iter().zip(rounding) {
+            let t0 = Clock::now();
+            let config = match ps.solve(q) {
+                Ok(c) => c,
+                Err(e) => {
+                    stop = Some(e);
+                    break;
+                }
+            };
+            let contour_time = t0.elapsed().as_secs_f64();
+            let t1 = Clock::now();
+            let span = self.path_span(ps, cs.last_input(), q);
+            if let Err(e) = cs.solve_positions_by(q, span) {
+                // Route (a)'s rates come first at a position: its error,
+                // if it has one here, is the one a sequential run reports.
+                stop = Some(self.contour_error(q, &config).unwrap_or(e));
+                break;
+            }
+            let constraint_time = t1.elapsed().as_secs_f64();
+            placed.push(Placed {
+                q,
+                q_rounding,
+                config,
+                constraint: cs.clone(),
+                contour_time,
+                constraint_time,
+            });
+        }
+        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, changed)) {
+            f(s?)?;
+        }
+        match stop {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+
+    /// Which way the input goes from `from` to `to`: a slider straight; a
+    /// crank the short way round, unless the mechanism does not assemble
+    /// on it (a crank that only rocks) and does the other way. Route (a)'s
+    /// closed forms, tried every 5°, tell; route (b) then continues along
+    /// that way, so a valid sequence of a rocking crank is never refused.
+    fn path_span(&self, ps: &PositionSolver, from: f64, to: f64) -> f64 {
+        let InputSpec::Crank { .. } = self.mech.scene.input else {
+            return to - from;
+        };
+        let short = wrap_pi(to - from);
+        let assembles = |span: f64| {
+            let mut probe = ps.clone();
+            let n = (span.abs() / 5f64.to_radians()).ceil().max(1.0) as usize;
+            (1..n).all(|i| probe.solve_at(from + span * i as f64 / n as f64).is_ok())
+        };
+        if short == 0.0 || assembles(short) {
+            return short;
+        }
+        let long = short - std::f64::consts::TAU.copysign(short);
+        if assembles(long) { long } else { short }
+    }
+
+    /// Route (a)'s error at a position, if its contours are singular there.
+    fn contour_error(&self, q: f64, config: &Configuration) -> Option<Error> {
+        let order = self.order?;
+        let (rate, rate2) = self.mech.scene.input.rates();
+        contour::solve(
+            &self.mech,
+            &self.structure,
+            &self.need,
+            config,
+            Drive { q, rate, rate2 },
+            order,
+        )
+        .err()
+    }
+
+    /// One placed position: both routes' rates, the plans, the cross-check.
+    fn finish(&self, p: &Placed, changed: &ChangedData) -> Result<Solved> {
+        let m = &self.mech;
+        let (rate, rate2) = m.scene.input.rates();
+        let (q, config) = (p.q, p.config.clone());
+        let mut cs = p.constraint.clone();
+        let t0 = Clock::now();
+        let (motion, analogue) = match self.order {
+            Some(order) => (
+                contour::solve(
+                    m,
+                    &self.structure,
+                    &self.need,
+                    &config,
+                    Drive { q, rate, rate2 },
+                    order,
+                )?,
+                contour::solve(
+                    m,
+                    &self.structure,
+                    &self.need,
+                    &config,
+                    Drive {
+                        q,
+                        rate: 1.0,
+                        rate2: 0.0,
+                    },
+                    order,
+                )?,
+            ),
+            None => (vec![None; m.links.len()], vec![None; m.links.len()]),
+        };
+        let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
+        let t1 = Clock::now();
+        let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
+        let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
+        let t2 = Clock::now();
+        let plans = match self.order {
+            Some(order) => Some(build_plans(
+                &self.setup(),
+                &config,
+                Drive { q, rate, rate2 },
+                order,
+                self.drafting,
+            )?),
+            None => None,
+        };
+        let plan_time = t2.elapsed().as_secs_f64();
+        let mut solved = Solved {
+            q,
+            rate,
+            rate2,
+            config,
+            motion,
+            analogue,
+            plans,
+            check: None,
+        };
+        let costs = Costs {
+            contour_time,
+            constraint_time,
+            plan_time,
+            conditioning: cs.conditioning,
+        };
+        solved.check = Some(self.cross_check(&solved, &other, costs, p.q_rounding, changed)?);
+        Ok(solved)
+    }
+}

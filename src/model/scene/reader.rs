@@ -1,0 +1,209 @@
+//! The reader: the file's top level and units, and the getters every
+//! section uses (objects, allowed keys, strings, references to points and
+//! links, coordinates).
+
+use super::{LinkSpec, NamedPoint, Scene};
+use crate::error::Issue;
+use crate::json::escape;
+use kurbo::Point;
+use serde_json::{Map, Value};
+
+/// Accumulates issues while reading; every getter returns `None` after
+/// recording what is wrong, so reading goes on and reports everything.
+#[derive(Default)]
+pub(super) struct Reader {
+    pub(super) issues: Vec<Issue>,
+    pub(super) len: f64,
+    pub(super) ang: f64,
+    /// [`Scene::input_rounding`], as the positions are read.
+    pub(super) rounding: Vec<f64>,
+}
+
+pub(super) fn ptr(base: &str, key: &str) -> String {
+    format!("{base}/{}", escape(key))
+}
+
+impl Reader {
+    pub(super) fn err(&mut self, pointer: impl Into<String>, message: impl Into<String>) {
+        self.issues.push(Issue {
+            pointer: pointer.into(),
+            message: message.into(),
+        });
+    }
+
+    pub(super) fn object<'a>(&mut self, v: &'a Value, at: &str) -> Option<&'a Map<String, Value>> {
+        let o = v.as_object();
+        if o.is_none() {
+            self.err(at, "expected an object");
+        }
+        o
+    }
+
+    pub(super) fn only_keys(&mut self, o: &Map<String, Value>, at: &str, allowed: &[&str]) {
+        for k in o.keys() {
+            if !allowed.contains(&k.as_str()) {
+                self.err(
+                    ptr(at, k),
+                    format!(
+                        "unknown field \"{k}\" (allowed here: {})",
+                        allowed.join(", ")
+                    ),
+                );
+            }
+        }
+    }
+
+    pub(super) fn string<'a>(&mut self, v: &'a Value, at: &str) -> Option<&'a str> {
+        let s = v.as_str();
+        if s.is_none() {
+            self.err(at, format!("expected a string, found {}", kind(v)));
+        }
+        s
+    }
+
+    /// A link id may be written as a string ("2") or an integer (2).
+    pub(super) fn link_ref(&mut self, v: &Value, at: &str, links: &[LinkSpec]) -> Option<usize> {
+        let id = match v {
+            Value::String(s) => s.clone(),
+            Value::Number(n) if n.is_u64() => n.to_string(),
+            _ => {
+                self.err(at, format!("expected a link id, found {}", kind(v)));
+                return None;
+            }
+        };
+        let i = links.iter().position(|l| l.id == id);
+        if i.is_none() {
+            self.err(at, format!("unknown link \"{id}\""));
+        }
+        i
+    }
+
+    pub(super) fn point_ref(
+        &mut self,
+        v: &Value,
+        at: &str,
+        points: &[NamedPoint],
+    ) -> Option<usize> {
+        let name = self.string(v, at)?;
+        let i = points.iter().position(|p| p.name == name);
+        if i.is_none() {
+            self.err(at, format!("unknown point \"{name}\""));
+        }
+        i
+    }
+
+    pub(super) fn coords(&mut self, v: &Value, at: &str) -> Option<Point> {
+        match v.as_array() {
+            Some(a) if a.len() == 2 => {
+                let x = self.number(&a[0], &format!("{at}/0"));
+                let y = self.number(&a[1], &format!("{at}/1"));
+                Some(Point::new(x? * self.len, y? * self.len))
+            }
+            _ => {
+                self.err(at, "expected coordinates [x, y]");
+                None
+            }
+        }
+    }
+
+    pub(super) fn scene(&mut self, v: &Value) -> Option<Scene> {
+        let top = self.object(v, "")?;
+        self.only_keys(
+            top,
+            "",
+            &[
+                "mechplan",
+                "title",
+                "source",
+                "notes",
+                "units",
+                "points",
+                "links",
+                "sliders",
+                "lengths",
+                "input",
+                "positions",
+                "want",
+            ],
+        );
+        match top.get("mechplan") {
+            None => self.err("/mechplan", "missing: the format version, 1"),
+            Some(v) if v.as_u64() == Some(1) => {}
+            Some(v) => self.err(
+                "/mechplan",
+                format!("unsupported format version {v}; this mechplan reads version 1"),
+            ),
+        }
+        let title = match top.get("title") {
+            Some(t) => self.string(t, "/title").unwrap_or("").to_owned(),
+            None => String::new(),
+        };
+        for k in ["source", "notes"] {
+            if let Some(t) = top.get(k) {
+                self.string(t, &format!("/{k}"));
+            }
+        }
+        self.units(top.get("units"));
+        let points = self.points(top.get("points"));
+        let links = self.links(top.get("links"), &points);
+        let frame = links.iter().position(|l| l.id == "0");
+        if frame.is_none() && top.get("links").is_some_and(|l| l.is_object()) {
+            self.err("/links", "the frame, link \"0\", is missing");
+        }
+        self.orphans(&points, &links);
+        let sliders = self.sliders(top.get("sliders"), &points, &links, frame);
+        let lengths = self.lengths(top.get("lengths"), &points, &links);
+        let input = self.input(top.get("input"), &points, &links, &sliders, frame);
+        let positions = self.positions(top.get("positions"), &links, input.as_ref());
+        let want = self.want(top.get("want"), &points);
+        Some(Scene {
+            title,
+            points,
+            links,
+            frame: frame?,
+            sliders,
+            lengths,
+            input: input?,
+            positions: positions?,
+            want: want?,
+            length_unit: self.len,
+            angle_unit: self.ang,
+            input_rounding: std::mem::take(&mut self.rounding),
+        })
+    }
+
+    fn units(&mut self, v: Option<&Value>) {
+        self.len = 1.0;
+        self.ang = std::f64::consts::PI / 180.0;
+        let Some(v) = v else { return };
+        let Some(o) = self.object(v, "/units") else {
+            return;
+        };
+        self.only_keys(o, "/units", &["length", "angle"]);
+        if let Some(l) = o.get("length") {
+            match l.as_str() {
+                Some("m") => self.len = 1.0,
+                Some("mm") => self.len = 1e-3,
+                _ => self.err("/units/length", "expected \"m\" or \"mm\""),
+            }
+        }
+        if let Some(a) = o.get("angle") {
+            match a.as_str() {
+                Some("deg") => {}
+                Some("rad") => self.ang = 1.0,
+                _ => self.err("/units/angle", "expected \"deg\" or \"rad\""),
+            }
+        }
+    }
+}
+
+pub(super) fn kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "a list",
+        Value::Object(_) => "an object",
+    }
+}

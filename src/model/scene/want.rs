@@ -1,0 +1,99 @@
+//! What is wanted: the plans, the points, the drawings, the scales, the
+//! language.
+
+use super::reader::Reader;
+use super::{NamedPoint, Scales, Want};
+use serde_json::Value;
+
+impl Reader {
+    pub(super) fn want(&mut self, v: Option<&Value>, points: &[NamedPoint]) -> Option<Want> {
+        let mut w = Want::default();
+        let Some(v) = v else { return Some(w) };
+        let o = self.object(v, "/want")?;
+        self.only_keys(
+            o,
+            "/want",
+            &["plans", "points", "drawings", "scales", "lang"],
+        );
+        let names = |r: &mut Self, key: &str, allowed: &[&str]| -> Vec<String> {
+            let at = format!("/want/{key}");
+            let mut out = Vec::new();
+            match o[key].as_array() {
+                Some(a) => {
+                    for (k, x) in a.iter().enumerate() {
+                        match x.as_str() {
+                            Some(s) if allowed.is_empty() || allowed.contains(&s) => {
+                                out.push(s.to_owned())
+                            }
+                            _ => r.err(
+                                format!("{at}/{k}"),
+                                format!("expected one of {}", allowed.join(", ")),
+                            ),
+                        }
+                    }
+                }
+                None => r.err(at, "expected a list"),
+            }
+            out
+        };
+        if o.contains_key("plans") {
+            let p = names(self, "plans", &["velocity", "acceleration"]);
+            w.velocity = p.iter().any(|x| x == "velocity");
+            w.acceleration = p.iter().any(|x| x == "acceleration");
+        }
+        if o.contains_key("drawings") {
+            w.drawings = names(
+                self,
+                "drawings",
+                &[
+                    "mechanism",
+                    "velocity",
+                    "acceleration",
+                    "positions",
+                    "diagrams",
+                ],
+            );
+        }
+        if let Some(pv) = o.get("points") {
+            let mut out = Vec::new();
+            match pv.as_array() {
+                Some(a) => {
+                    for (k, x) in a.iter().enumerate() {
+                        if let Some(i) = self.point_ref(x, &format!("/want/points/{k}"), points)
+                            && !out.contains(&i)
+                        {
+                            out.push(i);
+                        }
+                    }
+                }
+                None => self.err("/want/points", "expected a list of point names"),
+            }
+            w.points = Some(out);
+        }
+        if let Some(s) = o.get("scales")
+            && let Some(so) = self.object(s, "/want/scales")
+        {
+            self.only_keys(so, "/want/scales", &["mu_l", "mu_v", "mu_a"]);
+            let mut get = |key: &str| -> Option<f64> {
+                let x = self.number(so.get(key)?, &format!("/want/scales/{key}"))?;
+                if x <= 0.0 {
+                    self.err(format!("/want/scales/{key}"), "a scale must be positive");
+                    return None;
+                }
+                Some(x)
+            };
+            w.scales = Scales {
+                mu_l: get("mu_l"),
+                mu_v: get("mu_v"),
+                mu_a: get("mu_a"),
+            };
+        }
+        if let Some(l) = o.get("lang") {
+            match l.as_str() {
+                Some(s @ ("en" | "uk" | "ru")) => w.lang = s.to_owned(),
+                _ => self.err("/want/lang", "expected \"en\", \"uk\" or \"ru\""),
+            }
+        }
+        Some(w)
+    }
+}

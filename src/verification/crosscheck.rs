@@ -1,0 +1,443 @@
+//! The cross-check of the analysis at every position: route (a) against
+//! route (b), the plans against both routes, and the data sensitivity (the
+//! answer with the scene's data changed by a few units of rounding); from
+//! them the error [`Bounds`] of every reported number. A position where
+//! they disagree is refused.
+
+use crate::error::{Error, Result};
+use crate::geom::wrap_pi;
+use crate::kinematics::analytic::{Drive, Motion, Order, contour};
+use crate::kinematics::positions::{PositionSolver, describe_input};
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::model::mechanism::Mechanism;
+use kurbo::Point;
+
+/// (what, |difference|, |value|) of one kind of quantity.
+type Diffs = Vec<(String, f64, f64)>;
+
+/// Both routes' agreement at one position and what each cost.
+#[derive(Clone, Debug)]
+pub struct CrossCheck {
+    /// Largest difference between the routes, each quantity relative to
+    /// the largest magnitude of its kind at that position.
+    pub max_rel_diff: f64,
+    /// Which quantity it was ("v of B").
+    pub worst: String,
+    /// Wall time of route (a) (positions + contours), seconds.
+    pub contour_time: f64,
+    /// Wall time of route (b) (Newton + linear solves), seconds.
+    pub constraint_time: f64,
+    /// σ_min/σ_max of the scaled constraint Jacobian.
+    pub conditioning: f64,
+    /// Wall time of the plans' construction, seconds (0 without plans).
+    pub plan_time: f64,
+    /// How far the answer moves when the scene's data change by a few
+    /// units of rounding, relative as `max_rel_diff` (`None` only before
+    /// it is measured).
+    pub data_sensitivity: Option<f64>,
+    /// The error bound of every reported number of each kind, in SI
+    /// (`None` only before the data sensitivity is measured).
+    pub bound: Option<Bounds>,
+}
+
+/// The error bound of every number of one position that the routes report,
+/// by kind, in SI: each reported value lies within its kind's bound of the
+/// exact answer for the scene's data.
+///
+/// Each is (c·ε·κ + 4·d + 4·σ)·S: κ = 1/conditioning (the scaled
+/// Jacobian's σ_max/σ_min: how much rounding of the linear systems is
+/// amplified; c = 256 covers the few dozen roundings per equation and
+/// their accumulation through the groups), d the routes' disagreement (the
+/// part of their own arithmetic that κ misses near a dead point), σ the
+/// data sensitivity (the part the data's rounding decides, which both
+/// routes share); S the position's scale of that kind: the sketch's size
+/// for places, the largest |v| or |ω|·size for velocities, the largest
+/// |a|, |ε|·size or ω²·size for accelerations, the same at unit input rate
+/// for the transfer functions. Angles, ω, ε and their transfer functions:
+/// the same over the size.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Bounds {
+    pub p: f64,
+    pub v: f64,
+    pub a: f64,
+    pub v_q: f64,
+    pub a_q: f64,
+    pub angle: f64,
+    pub omega: f64,
+    pub epsilon: f64,
+    pub phi_q: f64,
+    pub phi_qq: f64,
+}
+
+/// The constant c of [`Bounds`].
+pub const BOUND_ROUNDINGS: f64 = 256.0;
+
+/// The largest data sensitivity accepted, as the routes' disagreement.
+pub const MAX_REL_DIFF: f64 = 1e-6;
+
+/// The change of the data for the sensitivity check: every length and
+/// sketch coordinate by this many units of rounding (relative).
+const DATA_PERTURBATION: f64 = 8.0 * f64::EPSILON;
+
+/// The scene with its data changed by a few units of rounding, both ways
+/// ([`Analysis::changed_data`]).
+pub(crate) type ChangedData = Vec<std::result::Result<Analysis, String>>;
+
+/// What one position's solutions cost, and the conditioning of route (b)
+/// there: measured by the analysis, reported with the cross-check.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Costs {
+    /// Route (a), route (b) and the plans' construction, seconds.
+    pub contour_time: f64,
+    pub constraint_time: f64,
+    pub plan_time: f64,
+    /// σ_min/σ_max of the scaled constraint Jacobian.
+    pub conditioning: f64,
+}
+
+impl Analysis {
+    /// The cross-check of a solved position: route (a) against route (b)
+    /// (`other`), the plans against both, and the data sensitivity; with
+    /// the costs of the position and its bounds. An error (a refusal) when
+    /// the routes disagree or the data's rounding decides the answer.
+    pub(crate) fn cross_check(
+        &self,
+        s: &Solved,
+        other: &[Option<Motion>],
+        costs: Costs,
+        q_rounding: f64,
+        changed: &ChangedData,
+    ) -> Result<CrossCheck> {
+        let m = &self.mech;
+        let (mut d, mut worst) = self.compare(s, other);
+        for (route, mo) in [("contour", &s.motion[..]), ("constraint", other)] {
+            let (dp, wp) = self.compare_plans(s, mo);
+            if dp > d || dp.is_nan() {
+                (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
+            }
+        }
+        if d.is_nan() || d > MAX_REL_DIFF {
+            return Err(Error::Singular {
+                at: describe_input(m, s.q),
+                why: format!(
+                    "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
+                ),
+            });
+        }
+        let sens = self
+            .data_sensitivity(s, q_rounding, changed)
+            .map_err(|why| Error::Singular {
+                at: describe_input(m, s.q),
+                why,
+            })?;
+        let bound = self.bounds(s, costs.conditioning, d, sens);
+        Ok(CrossCheck {
+            max_rel_diff: d,
+            worst,
+            contour_time: costs.contour_time,
+            constraint_time: costs.constraint_time,
+            conditioning: costs.conditioning,
+            plan_time: costs.plan_time,
+            data_sensitivity: Some(sens),
+            bound: Some(bound),
+        })
+    }
+
+    /// The bounds of a solved position ([`Bounds`]).
+    fn bounds(&self, s: &Solved, conditioning: f64, diff: f64, sens: f64) -> Bounds {
+        let m = &self.mech;
+        let size = m.size;
+        let rel = BOUND_ROUNDINGS * f64::EPSILON / conditioning + 4.0 * diff + 4.0 * sens;
+        // The scale of one kind: the points' magnitudes and the links'
+        // rates × size (and ω²·size for accelerations).
+        let scale = |mo: &[Option<Motion>], acc: bool| -> f64 {
+            let mut x = f64::MIN_POSITIVE;
+            for &p in &self.points {
+                let l = self.carrier(p);
+                if let Some(k) = mo[l] {
+                    let at = s.config.point(m, l, p);
+                    x = x.max(
+                        if acc {
+                            k.acceleration(at)
+                        } else {
+                            k.velocity(at)
+                        }
+                        .hypot(),
+                    );
+                }
+            }
+            for k in mo.iter().flatten() {
+                x = x.max(if acc { k.epsilon } else { k.omega }.abs() * size);
+                if acc {
+                    x = x.max(k.omega * k.omega * size);
+                }
+            }
+            x
+        };
+        let (sv, sa) = (scale(&s.motion, false), scale(&s.motion, true));
+        let (sq, sqq) = (scale(&s.analogue, false), scale(&s.analogue, true));
+        Bounds {
+            p: rel * size,
+            v: rel * sv,
+            a: rel * sa,
+            v_q: rel * sq,
+            a_q: rel * sqq,
+            angle: rel,
+            omega: rel * sv / size,
+            epsilon: rel * sa / size,
+            phi_q: rel * sq / size,
+            phi_qq: rel * sqq / size,
+        }
+    }
+
+    /// The scene with every datum (length, sketch coordinate, guide line)
+    /// changed by a few units of its own rounding, in a fixed alternating
+    /// pattern, both ways; built once per run, its shapes with this
+    /// mechanism's decisions (rounding must not change which rule places a
+    /// point). An error when such a change already makes the mechanism
+    /// another one (a structure decided by rounding).
+    pub(crate) fn changed_data(&self) -> ChangedData {
+        let m = &self.mech;
+        [1.0, -1.0]
+            .iter()
+            .map(|sign| {
+                let mut scene = m.scene.clone();
+                let k = sign * DATA_PERTURBATION;
+                let mut n = 0usize;
+                // Each datum relative to its own magnitude: a coordinate
+                // near the origin is known better than one far from it.
+                let mut moved = |x: &mut f64| {
+                    n += 1;
+                    *x *= 1.0 + if n.is_multiple_of(2) { k } else { -k };
+                };
+                for l in scene.lengths.iter_mut() {
+                    moved(&mut l.value);
+                }
+                for p in scene.points.iter_mut() {
+                    let (mut x, mut y) = (p.sketch.x, p.sketch.y);
+                    moved(&mut x);
+                    moved(&mut y);
+                    p.sketch = Point::new(x, y);
+                }
+                for sl in scene.sliders.iter_mut() {
+                    if let crate::model::scene::Through::Coords(c) = &mut sl.line.through {
+                        let (mut x, mut y) = (c.x, c.y);
+                        moved(&mut x);
+                        moved(&mut y);
+                        *c = Point::new(x, y);
+                    }
+                    if let crate::model::scene::Direction::Angle(a) = &mut sl.line.direction {
+                        moved(a);
+                    }
+                    moved(&mut sl.line.offset);
+                }
+                m.with_data(scene)
+                    .and_then(Analysis::of)
+                    .map_err(|e| e.to_string())
+            })
+            .collect()
+    }
+
+    /// How far the answer at a solved position moves with the data changed
+    /// by a few units of rounding ([`Analysis::changed_data`]): the largest
+    /// relative change, as the routes' comparison measures it, each scene's
+    /// points on its own shapes. Both routes start from the same rounded
+    /// data, so their agreement cannot show this. An error (a refusal) when
+    /// the data's rounding decides the answer: the changed mechanism does
+    /// not assemble here, or the answer moves by more than [`MAX_REL_DIFF`].
+    fn data_sensitivity(
+        &self,
+        s: &Solved,
+        q_rounding: f64,
+        changed: &ChangedData,
+    ) -> std::result::Result<f64, String> {
+        let order = self.order.unwrap_or(Order::Velocity);
+        let units = DATA_PERTURBATION / f64::EPSILON;
+        let mut worst = (0.0f64, String::new());
+        for (an, sign) in changed.iter().zip([1.0, -1.0]) {
+            // The input moves with the data, by as many units of its own
+            // rounding (exact reductions leave an ulp of the angle).
+            let q = s.q + sign * units * q_rounding;
+            let moved = an
+                .as_ref()
+                .map_err(|e| e.clone())
+                .and_then(|an| {
+                    let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())
+                        .map_err(|e| e.to_string())?;
+                    let c = ps.solve(q).map_err(|e| e.to_string())?;
+                    contour::solve(
+                        &an.mech,
+                        &an.structure,
+                        &an.need,
+                        &c,
+                        Drive {
+                            q,
+                            rate: s.rate,
+                            rate2: s.rate2,
+                        },
+                        order,
+                    )
+                    .map(|mo| (an, mo))
+                    .map_err(|e| e.to_string())
+                })
+                .map_err(|e| {
+                    format!(
+                        "the position is within rounding of a dead point: with the data changed by {units} units of rounding the mechanism has no answer here ({e})"
+                    )
+                })?;
+            let (d, what) = self.compare_with(s, &moved.1, &moved.0.mech);
+            if d > worst.0 || d.is_nan() {
+                worst = (d, what);
+            }
+        }
+        if worst.0.is_nan() || worst.0 > MAX_REL_DIFF {
+            return Err(format!(
+                "the answer is decided by the rounding of the data: a change of {units} units of rounding in the data moves {} by {:.2e} (relative); the position is too close to a dead point",
+                worst.1, worst.0
+            ));
+        }
+        Ok(worst.0)
+    }
+
+    /// Largest relative difference between the plans (measured values × μ)
+    /// and an analytic route.
+    fn compare_plans(&self, s: &Solved, mo: &[Option<Motion>]) -> (f64, String) {
+        let Some(plans) = &s.plans else {
+            return (0.0, String::new());
+        };
+        let m = &self.mech;
+        let mut worst = (0.0f64, String::new());
+        for (plan, acc) in [
+            (Some(&plans.velocity), false),
+            (plans.acceleration.as_ref(), true),
+        ] {
+            let Some(plan) = plan else { continue };
+            let mut items: Vec<(String, f64, f64)> = Vec::new();
+            for &p in &self.points {
+                let l = self.carrier(p);
+                let at = s.config.point(m, l, p);
+                let exact = if acc {
+                    mo[l].unwrap().acceleration(at)
+                } else {
+                    mo[l].unwrap().velocity(at)
+                };
+                if let Some(got) = plan.value_of(p) {
+                    items.push((
+                        format!("{} of {}", if acc { "a" } else { "v" }, m.point_name(p)),
+                        (got - exact).hypot(),
+                        exact.hypot(),
+                    ));
+                }
+            }
+            for (l, (rate, x)) in plan.rates.iter().zip(mo).enumerate() {
+                if let (Some((r, _)), Some(x)) = (rate, x) {
+                    let exact = if acc { x.epsilon } else { x.omega };
+                    items.push((
+                        format!("{} of link {}", if acc { "ε" } else { "ω" }, m.link_id(l)),
+                        (r - exact).abs() * m.size,
+                        exact.abs() * m.size,
+                    ));
+                }
+            }
+            let scale = items.iter().map(|e| e.2).fold(f64::MIN_POSITIVE, f64::max);
+            for (what, d, _) in items {
+                if d / scale > worst.0 || d.is_nan() {
+                    worst = (d / scale, what);
+                }
+            }
+        }
+        worst
+    }
+
+    /// Largest relative difference between route (a) and route (b).
+    fn compare(&self, s: &Solved, other: &[Option<Motion>]) -> (f64, String) {
+        self.compare_with(s, other, &self.mech)
+    }
+
+    /// As [`Analysis::compare`], the other motions belonging to mechanism
+    /// `om` (the same links and points, its own shapes: a scene with its
+    /// data changed).
+    fn compare_with(&self, s: &Solved, other: &[Option<Motion>], om: &Mechanism) -> (f64, String) {
+        let m = &self.mech;
+        let mut worst = (0.0f64, String::from("none"));
+        let mut note = |d: f64, what: String| {
+            if d > worst.0 || d.is_nan() {
+                worst = (d, what);
+            }
+        };
+        let pts: Vec<(usize, usize)> = self.points.iter().map(|&p| (p, self.carrier(p))).collect();
+        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
+        for &(p, l) in &pts {
+            let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
+            note(d, format!("position of {}", m.point_name(p)));
+        }
+        let links: Vec<usize> = (0..m.links.len()).filter(|&l| self.include[l]).collect();
+        for &l in &links {
+            let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
+            note(d, format!("angle of link {}", m.link_id(l)));
+        }
+        let Some(order) = self.order else {
+            return worst;
+        };
+        // Each motion at its own place of the point.
+        let a_of = |mo: &[Option<Motion>], l: usize, at: Point| {
+            (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at))
+        };
+        let mut kinds: Vec<(&str, Diffs)> = vec![("v", vec![]), ("ω", vec![])];
+        if order == Order::Acceleration {
+            kinds.push(("a", vec![]));
+            kinds.push(("ε", vec![]));
+        }
+        for &(p, l) in &pts {
+            let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
+            let (vb, ab) = a_of(other, l, place_b(p, l));
+            kinds[0]
+                .1
+                .push((m.point_name(p).to_string(), (va - vb).hypot(), va.hypot()));
+            if order == Order::Acceleration {
+                kinds[2]
+                    .1
+                    .push((m.point_name(p).to_string(), (aa - ab).hypot(), aa.hypot()));
+            }
+        }
+        for &l in &links {
+            let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
+            kinds[1].1.push((
+                format!("link {}", m.link_id(l)),
+                (ma.omega - mb.omega).abs(),
+                ma.omega.abs(),
+            ));
+            if order == Order::Acceleration {
+                kinds[3].1.push((
+                    format!("link {}", m.link_id(l)),
+                    (ma.epsilon - mb.epsilon).abs(),
+                    ma.epsilon.abs(),
+                ));
+            }
+        }
+        // Velocities and angular velocities share a scale (ω·size), as do
+        // accelerations and angular accelerations (ε·size).
+        let scale = |a: &[(String, f64, f64)], b: &[(String, f64, f64)]| {
+            let x = a.iter().map(|e| e.2).fold(0.0, f64::max);
+            let y = b.iter().map(|e| e.2 * m.size).fold(0.0, f64::max);
+            x.max(y).max(f64::MIN_POSITIVE)
+        };
+        let sv = scale(&kinds[0].1, &kinds[1].1);
+        for (name, d, _) in &kinds[0].1 {
+            note(d / sv, format!("v of {name}"));
+        }
+        for (name, d, _) in &kinds[1].1 {
+            note(d * m.size / sv, format!("ω of {name}"));
+        }
+        if order == Order::Acceleration {
+            let sa = scale(&kinds[2].1, &kinds[3].1);
+            for (name, d, _) in &kinds[2].1 {
+                note(d / sa, format!("a of {name}"));
+            }
+            for (name, d, _) in &kinds[3].1 {
+                note(d * m.size / sa, format!("ε of {name}"));
+            }
+        }
+        worst
+    }
+}
