@@ -14,7 +14,9 @@
 //! every step and reports in the page's title.
 //!
 //! The page's style and script are files beside this one (`handout.css`,
-//! `handout.js`, `handout-errors.js`), written into the page as they are.
+//! `handout.js`, `handout-errors.js`), written into the page as they are;
+//! its result tables are those of [`crate::presentation::tables`], as the
+//! terminal's.
 
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
@@ -23,6 +25,8 @@ use crate::kinematics::construction::text::{Lang, num, sentence};
 use crate::kinematics::construction::{Op, Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
+use crate::presentation::report::group_kinds;
+use crate::presentation::tables::{self, Cell, Kind, Table, unit};
 use kurbo::Point;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -37,14 +41,6 @@ struct Ui {
     of: &'static str,
     keys: &'static str,
     position: &'static str,
-    points: &'static str,
-    links: &'static str,
-    measured: &'static str,
-    point: &'static str,
-    link: &'static str,
-    segment: &'static str,
-    value: &'static str,
-    worst: &'static str,
     after: &'static str,
     no_plans: &'static str,
     results: &'static str,
@@ -63,14 +59,6 @@ fn ui(l: Lang) -> Ui {
             of: "of",
             keys: "keys ← →, Home, End",
             position: "Position",
-            points: "Points",
-            links: "Links",
-            measured: "Measured on the plans",
-            point: "point",
-            link: "link",
-            segment: "segment",
-            value: "value ± drafting bound",
-            worst: "worst intersection angle",
             after: "drawn after the plan of velocities",
             no_plans: "The scene asks for no plans of velocities or accelerations.",
             results: "Results",
@@ -86,14 +74,6 @@ fn ui(l: Lang) -> Ui {
             of: "з",
             keys: "клавіші ← →, Home, End",
             position: "Положення",
-            points: "Точки",
-            links: "Ланки",
-            measured: "Виміряно на планах",
-            point: "точка",
-            link: "ланка",
-            segment: "відрізок",
-            value: "величина ± похибка побудови",
-            worst: "найменший кут перетину",
             after: "будується після плану швидкостей",
             no_plans: "Сцена не вимагає планів швидкостей чи прискорень.",
             results: "Результати",
@@ -109,32 +89,12 @@ fn ui(l: Lang) -> Ui {
             of: "из",
             keys: "клавиши ← →, Home, End",
             position: "Положение",
-            points: "Точки",
-            links: "Звенья",
-            measured: "Измерено на планах",
-            point: "точка",
-            link: "звено",
-            segment: "отрезок",
-            value: "величина ± погрешность построения",
-            worst: "наименьший угол пересечения",
             after: "строится после плана скоростей",
             no_plans: "Сцена не требует планов скоростей и ускорений.",
             results: "Результаты",
             steps_title: "Построение",
             structure: "Строение",
         },
-    }
-}
-
-/// A unit in the language of the page.
-fn unit(u: &str, l: Lang) -> String {
-    match l {
-        Lang::En => u.to_string(),
-        _ => u
-            .replace("rad", "рад")
-            .replace("mm", "мм")
-            .replace('m', "м")
-            .replace('s', "с"),
     }
 }
 
@@ -490,126 +450,89 @@ fn rate_cell(x: f64, scale: f64) -> String {
 }
 
 /// The tables of a position: points, links, what was measured on the plans.
-fn tables(an: &Analysis, s: &Solved, l: Lang, w: &Ui) -> String {
-    let m = &an.mech;
-    let vel = an.order.is_some();
-    let acc = an.order == Some(crate::kinematics::analytic::Order::Acceleration);
-    let mut h = String::new();
-    h.push_str("<div class=\"tables\">\n");
-    if vel {
-        let _ = write!(
-            h,
-            "<table><caption>{}</caption><thead><tr><th>{}</th><th>|v|, {}</th>",
-            w.points,
-            w.point,
-            unit("m/s", l)
-        );
-        if acc {
-            let _ = write!(h, "<th>|a|, {}</th>", unit("m/s²", l));
-        }
-        h.push_str("</tr></thead><tbody>\n");
-        for &p in &an.points {
-            let Some((v, a)) = s.point(an, p).rates else {
-                continue;
-            };
-            let _ = write!(
-                h,
-                "<tr><td>{}</td><td>{}</td>",
-                rich(m.point_name(p)),
-                num(v.hypot())
-            );
-            if acc {
-                let _ = write!(h, "<td>{}</td>", num(a.hypot()));
-            }
-            h.push_str("</tr>\n");
-        }
-        h.push_str("</tbody></table>\n");
-        let (ws, es) = s
-            .motion
-            .iter()
-            .flatten()
-            .fold((0.0f64, 0.0f64), |(a, b), mo| {
-                (a.max(mo.omega.abs()), b.max(mo.epsilon.abs()))
-            });
-        let _ = write!(
-            h,
-            "<table><caption>{}</caption><thead><tr><th>{}</th><th>ω, {}</th>",
-            w.links,
-            w.link,
-            unit("rad/s", l)
-        );
-        if acc {
-            let _ = write!(h, "<th>ε, {}</th>", unit("rad/s²", l));
-        }
-        h.push_str("</tr></thead><tbody>\n");
-        for k in 0..m.links.len() {
-            if !an.include[k] || k == m.frame() {
-                continue;
-            }
-            let Some(mo) = s.motion[k] else { continue };
-            let _ = write!(
-                h,
-                "<tr><td>{}</td><td>{}</td>",
-                xml(m.link_id(k)),
-                rate_cell(mo.omega, ws)
-            );
-            if acc {
-                let _ = write!(h, "<td>{}</td>", rate_cell(mo.epsilon, es));
-            }
-            h.push_str("</tr>\n");
-        }
-        h.push_str("</tbody></table>\n");
-    }
+fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
+    let mut h = String::from("<div class=\"tables\">\n");
+    h += &table_html(&tables::points(an, s, l));
+    h += &table_html(&tables::links(an, s, l));
     if let Some(plans) = &s.plans {
-        let mm = unit("mm", l);
-        let _ = writeln!(
-            h,
-            "<table class=\"measured\"><caption>{}</caption><thead><tr><th></th><th>{}, {mm}</th><th>{}</th></tr></thead>",
-            w.measured, w.segment, w.value
-        );
         let titles = words(l);
-        for (title, plan) in [
-            (titles[1], Some(&plans.velocity)),
-            (titles[2], plans.acceleration.as_ref()),
-        ] {
-            let Some(plan) = plan else { continue };
-            let _ = writeln!(
-                h,
-                "<tbody><tr class=\"group\"><th colspan=\"3\">{title}: {} {}°, δ = {} {mm}</th></tr>",
-                w.worst,
-                num(plan.worst_angle_deg()),
-                num(plan.delta)
-            );
-            for q in &plan.measured {
-                let u = match (q.quantity.starts_with(['ω', 'ε']), plan.kind) {
-                    (true, PlanKind::Velocity) => "rad/s",
-                    (true, PlanKind::Acceleration) => "rad/s²",
-                    (false, PlanKind::Velocity) => "m/s",
-                    (false, PlanKind::Acceleration) => "m/s²",
-                };
-                let seg = format!("{}{}", plan.points[q.from].name(), plan.points[q.to].name());
-                // An angular rate as its magnitude and sense, as in the links' table.
-                let value = if u.starts_with("rad") {
-                    rate_cell(q.value, q.value.abs())
-                } else {
-                    num(q.value)
-                };
-                let _ = writeln!(
-                    h,
-                    "<tr><td>{}</td><td>{} = {}</td><td>{value} ± {} {}</td></tr>",
-                    rich(&q.quantity),
-                    rich(&seg),
-                    num(q.mm),
-                    num(q.bound),
-                    unit(u, l)
-                );
-            }
-            h.push_str("</tbody>\n");
-        }
-        h.push_str("</table>\n");
+        h += &table_html(&tables::measured(plans, [titles[1], titles[2]], l));
     }
-    h.push_str("</div>\n");
-    h
+    h + "</div>\n"
+}
+
+/// A table of results as HTML: the columns the handout shows (not where
+/// the points are, nor which way they move: its drawings show that), the
+/// rows complete in them, a group's title on a row of its own; nothing for
+/// a table left with names alone.
+fn table_html(t: &Table) -> String {
+    let shown = |k: Kind| !matches!(k, Kind::Coordinate | Kind::Direction | Kind::Angle);
+    let columns: Vec<usize> = (0..t.columns.len())
+        .filter(|&i| shown(t.columns[i].kind))
+        .collect();
+    if columns.iter().all(|&i| t.columns[i].kind == Kind::Name) {
+        return String::new();
+    }
+    let class = t
+        .class
+        .map(|c| format!(" class=\"{c}\""))
+        .unwrap_or_default();
+    let mut h = format!("<table{class}><caption>{}</caption><thead><tr>", t.caption);
+    for &i in &columns {
+        let c = &t.columns[i];
+        let _ = match &c.unit {
+            Some(u) => write!(h, "<th>{}, {u}</th>", c.head),
+            None => write!(h, "<th>{}</th>", c.head),
+        };
+    }
+    h.push_str("</tr></thead>");
+    // Titled groups stand on lines of their own.
+    let nl = if t.groups.iter().any(|g| g.title.is_some()) {
+        "\n"
+    } else {
+        ""
+    };
+    h.push_str(nl);
+    for g in &t.groups {
+        h.push_str("<tbody>");
+        if let Some(title) = &g.title {
+            let _ = write!(
+                h,
+                "<tr class=\"group\"><th colspan=\"{}\">{title}</th></tr>",
+                columns.len()
+            );
+        }
+        h.push('\n');
+        for row in &g.rows {
+            if columns.iter().any(|&i| matches!(row[i], Cell::Missing)) {
+                continue;
+            }
+            h.push_str("<tr>");
+            for &i in &columns {
+                let _ = write!(h, "<td>{}</td>", cell_html(&row[i]));
+            }
+            h.push_str("</tr>\n");
+        }
+        h.push_str("</tbody>");
+        h.push_str(nl);
+    }
+    h + "</table>\n"
+}
+
+/// A cell as HTML: names in the lecture's notation, numbers as the
+/// sentences write them, a rate as its magnitude and sense.
+fn cell_html(c: &Cell) -> String {
+    match c {
+        Cell::Notation(s) => rich(s),
+        Cell::Plain(s) => xml(s),
+        Cell::Number(x) => num(*x),
+        Cell::Rate { value, scale } => rate_cell(*value, *scale),
+        Cell::Segment { name, mm } => format!("{} = {}", rich(name), num(*mm)),
+        Cell::Measured { value, bound, unit } => {
+            format!("{} ± {} {unit}", cell_html(value), num(*bound))
+        }
+        Cell::Missing => String::new(),
+    }
 }
 
 /// The handout: every position's drawings and tables, the plans drawn step
@@ -628,18 +551,12 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         Lang::Uk => "uk",
         Lang::Ru => "ru",
     };
-    let kinds: Vec<String> = an
-        .structure
-        .groups
-        .iter()
-        .map(|g| format!("{} {}", g.label(m), g.kind()))
-        .collect();
     let structure = format!(
         "{}: W = {}, {} [{}]",
         w.structure,
         an.structure.dof,
         an.structure.formula(m).replace("->", "→"),
-        kinds.join("; ")
+        group_kinds(an)
     );
     let mut h = String::new();
     let _ = write!(
@@ -746,7 +663,7 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         }
         h.push_str("</div>\n");
         let _ = writeln!(h, "<h3>{}</h3>", w.results);
-        h.push_str(&tables(an, s, lang, &w));
+        h.push_str(&tables(an, s, lang));
         h.push_str("</section>\n");
     }
     h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
