@@ -26,6 +26,18 @@ fn deg(a: f64) -> f64 {
     wrap_pi(a).to_degrees()
 }
 
+/// A point's or a link's rates into its entry: each first-order rate
+/// (`v`, then its analogue `v_q`) followed by its second-order one (`a`,
+/// `a_q`) when the analysis has accelerations.
+fn insert_rates(e: &mut Map<String, Value>, acc: bool, rates: [[(&str, Value); 2]; 2]) {
+    for [(k1, x1), (k2, x2)] in rates {
+        e.insert(k1.into(), x1);
+        if acc {
+            e.insert(k2.into(), x2);
+        }
+    }
+}
+
 /// The result document for `mechplan solve --format json`.
 pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
     let mut doc = json_head(an);
@@ -92,14 +104,9 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         if vel {
             let (v, a) = st.unwrap();
             let (vq, aq) = an_.unwrap();
-            e.insert("v".into(), vec2(v));
-            if acc {
-                e.insert("a".into(), vec2(a));
-            }
-            e.insert("v_q".into(), vec2(vq));
-            if acc {
-                e.insert("a_q".into(), vec2(aq));
-            }
+            let rates = [("v", vec2(v)), ("a", vec2(a))];
+            let analogues = [("v_q", vec2(vq)), ("a_q", vec2(aq))];
+            insert_rates(&mut e, acc, [rates, analogues]);
         }
         pts.insert(m.point_name(p).to_string(), Value::Object(e));
     }
@@ -117,14 +124,9 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         if vel {
             let mo = s.motion[l].unwrap();
             let aq = s.analogue[l].unwrap();
-            e.insert("omega".into(), num(mo.omega));
-            if acc {
-                e.insert("epsilon".into(), num(mo.epsilon));
-            }
-            e.insert("phi_q".into(), num(aq.omega));
-            if acc {
-                e.insert("phi_qq".into(), num(aq.epsilon));
-            }
+            let rates = [("omega", num(mo.omega)), ("epsilon", num(mo.epsilon))];
+            let analogues = [("phi_q", num(aq.omega)), ("phi_qq", num(aq.epsilon))];
+            insert_rates(&mut e, acc, [rates, analogues]);
         }
         links.insert(m.link_id(l).to_string(), Value::Object(e));
     }
@@ -175,28 +177,20 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
             check["data_sensitivity"] = num(sens);
         }
         if let Some(b) = &c.bound {
-            let mut bound = json!({ "p": num(b.p), "angle": num(b.angle) });
+            let mut fields = vec![("p", b.p), ("angle", b.angle)];
             if vel {
-                for (k, x) in [
-                    ("v", b.v),
-                    ("omega", b.omega),
-                    ("v_q", b.v_q),
-                    ("phi_q", b.phi_q),
-                ] {
-                    bound[k] = num(x);
-                }
+                fields.extend([("v", b.v), ("omega", b.omega)]);
+                fields.extend([("v_q", b.v_q), ("phi_q", b.phi_q)]);
             }
             if acc {
-                for (k, x) in [
-                    ("a", b.a),
-                    ("epsilon", b.epsilon),
-                    ("a_q", b.a_q),
-                    ("phi_qq", b.phi_qq),
-                ] {
-                    bound[k] = num(x);
-                }
+                fields.extend([("a", b.a), ("epsilon", b.epsilon)]);
+                fields.extend([("a_q", b.a_q), ("phi_qq", b.phi_qq)]);
             }
-            check["bound"] = bound;
+            let bound: Map<String, Value> = fields
+                .into_iter()
+                .map(|(k, x)| (k.to_string(), num(x)))
+                .collect();
+            check["bound"] = Value::Object(bound);
         }
         o.insert("crosscheck".into(), check);
     }
