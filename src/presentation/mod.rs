@@ -1,6 +1,9 @@
-//! Presentation: the result file and tables ([`report`]), the sheets and
-//! the handout ([`drawing`]), quantities in messages ([`quantity`]).
+//! Presentation: the result file and the terminal's table ([`report`]),
+//! the tables of results as data, for the terminal and the handout alike
+//! ([`tables`]), the sheets and the handout ([`drawing`]), quantities in
+//! messages ([`quantity`]).
 
 pub mod drawing;
 pub mod quantity;
 pub mod report;
+pub mod tables;

@@ -1,8 +1,12 @@
 //! Results as the contract's JSON (`shared/spec/scene-format.md`, result
-//! section; additions in `docs/scene-format.md`) and as a terminal table.
+//! section; additions in `docs/scene-format.md`), as a terminal table (the
+//! tables of [`super::tables`], the handout's too, written as text) and
+//! as the construction's steps.
 
+use super::tables::{self, Cell, Kind, Table};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use serde_json::{Map, Value, json};
@@ -20,6 +24,18 @@ fn vec2(v: kurbo::Vec2) -> Value {
 
 fn deg(a: f64) -> f64 {
     wrap_pi(a).to_degrees()
+}
+
+/// A point's or a link's rates into its entry: each first-order rate
+/// (`v`, then its analogue `v_q`) followed by its second-order one (`a`,
+/// `a_q`) when the analysis has accelerations.
+fn insert_rates(e: &mut Map<String, Value>, acc: bool, rates: [[(&str, Value); 2]; 2]) {
+    for [(k1, x1), (k2, x2)] in rates {
+        e.insert(k1.into(), x1);
+        if acc {
+            e.insert(k2.into(), x2);
+        }
+    }
 }
 
 /// The result document for `mechplan solve --format json`.
@@ -88,14 +104,9 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         if vel {
             let (v, a) = st.unwrap();
             let (vq, aq) = an_.unwrap();
-            e.insert("v".into(), vec2(v));
-            if acc {
-                e.insert("a".into(), vec2(a));
-            }
-            e.insert("v_q".into(), vec2(vq));
-            if acc {
-                e.insert("a_q".into(), vec2(aq));
-            }
+            let rates = [("v", vec2(v)), ("a", vec2(a))];
+            let analogues = [("v_q", vec2(vq)), ("a_q", vec2(aq))];
+            insert_rates(&mut e, acc, [rates, analogues]);
         }
         pts.insert(m.point_name(p).to_string(), Value::Object(e));
     }
@@ -113,14 +124,9 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         if vel {
             let mo = s.motion[l].unwrap();
             let aq = s.analogue[l].unwrap();
-            e.insert("omega".into(), num(mo.omega));
-            if acc {
-                e.insert("epsilon".into(), num(mo.epsilon));
-            }
-            e.insert("phi_q".into(), num(aq.omega));
-            if acc {
-                e.insert("phi_qq".into(), num(aq.epsilon));
-            }
+            let rates = [("omega", num(mo.omega)), ("epsilon", num(mo.epsilon))];
+            let analogues = [("phi_q", num(aq.omega)), ("phi_qq", num(aq.epsilon))];
+            insert_rates(&mut e, acc, [rates, analogues]);
         }
         links.insert(m.link_id(l).to_string(), Value::Object(e));
     }
@@ -171,28 +177,20 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
             check["data_sensitivity"] = num(sens);
         }
         if let Some(b) = &c.bound {
-            let mut bound = json!({ "p": num(b.p), "angle": num(b.angle) });
+            let mut fields = vec![("p", b.p), ("angle", b.angle)];
             if vel {
-                for (k, x) in [
-                    ("v", b.v),
-                    ("omega", b.omega),
-                    ("v_q", b.v_q),
-                    ("phi_q", b.phi_q),
-                ] {
-                    bound[k] = num(x);
-                }
+                fields.extend([("v", b.v), ("omega", b.omega)]);
+                fields.extend([("v_q", b.v_q), ("phi_q", b.phi_q)]);
             }
             if acc {
-                for (k, x) in [
-                    ("a", b.a),
-                    ("epsilon", b.epsilon),
-                    ("a_q", b.a_q),
-                    ("phi_qq", b.phi_qq),
-                ] {
-                    bound[k] = num(x);
-                }
+                fields.extend([("a", b.a), ("epsilon", b.epsilon)]);
+                fields.extend([("a_q", b.a_q), ("phi_qq", b.phi_qq)]);
             }
-            check["bound"] = bound;
+            let bound: Map<String, Value> = fields
+                .into_iter()
+                .map(|(k, x)| (k.to_string(), num(x)))
+                .collect();
+            check["bound"] = Value::Object(bound);
         }
         o.insert("crosscheck".into(), check);
     }
@@ -207,7 +205,7 @@ pub enum Style {
     /// [`to_json`], pretty-printed, with a final newline.
     Json,
     /// [`to_steps`].
-    Steps(crate::kinematics::construction::text::Lang),
+    Steps(Lang),
 }
 
 /// The result text of `solve` a position at a time: this head, then
@@ -329,19 +327,79 @@ fn table_head(an: &Analysis) -> String {
     if !m.scene.title.is_empty() {
         let _ = writeln!(t, "{}", m.scene.title);
     }
+    let _ = writeln!(
+        t,
+        "structure: W = {}, {}   [{}]",
+        an.structure.dof,
+        an.structure.formula(m),
+        group_kinds(an)
+    );
+    t
+}
+
+/// The Assur groups in order of attachment with their kinds:
+/// "II(2,3) RRR; II(4,5) RRP".
+pub(crate) fn group_kinds(an: &Analysis) -> String {
+    let m = &an.mech;
     let kinds: Vec<String> = an
         .structure
         .groups
         .iter()
         .map(|g| format!("{} {}", g.label(m), g.kind()))
         .collect();
-    let _ = writeln!(
-        t,
-        "structure: W = {}, {}   [{}]",
-        an.structure.dof,
-        an.structure.formula(m),
-        kinds.join("; ")
-    );
+    kinds.join("; ")
+}
+
+/// A table of results for the terminal: a line per row, the columns the
+/// terminal has room for (every number; not the measured segments, which
+/// `solve --steps` gives) aligned under their headings, numbers to fixed
+/// decimals, a rate followed by its sense.
+fn table_text(table: &Table) -> String {
+    // Width and decimals of the terminal's column of a kind.
+    let form = |k: Kind| match k {
+        Kind::Name => Some((6, 0)),
+        Kind::Coordinate => Some((11, 6)),
+        Kind::Magnitude | Kind::Rate => Some((12, 6)),
+        Kind::Direction => Some((8, 2)),
+        Kind::Angle => Some((11, 4)),
+        Kind::Segment | Kind::Measured => None,
+    };
+    let columns: Vec<(usize, usize, usize)> = (0..table.columns.len())
+        .filter_map(|i| form(table.columns[i].kind).map(|(w, d)| (i, w, d)))
+        .collect();
+    let mut t = String::from("  ");
+    for (n, &(i, w, _)) in columns.iter().enumerate() {
+        let c = &table.columns[i];
+        let head = match &c.unit {
+            Some(u) => format!("{} [{u}]", c.head),
+            None => c.head.clone(),
+        };
+        let sep = if n > 0 { " " } else { "" };
+        let _ = match c.kind {
+            Kind::Name => write!(t, "{sep}{head:<w$}"),
+            Kind::Rate => write!(t, "{sep}{head:>w$} {:>5}", ""),
+            _ => write!(t, "{sep}{head:>w$}"),
+        };
+    }
+    t.push('\n');
+    for row in table.groups.iter().flat_map(|g| &g.rows) {
+        t.push_str("  ");
+        for (n, &(i, w, d)) in columns.iter().enumerate() {
+            let sep = if n > 0 { " " } else { "" };
+            let _ = match &row[i] {
+                Cell::Notation(s) | Cell::Plain(s) => write!(t, "{sep}{s:<w$}"),
+                Cell::Number(x) => write!(t, "{sep}{x:>w$.d$}"),
+                Cell::Rate { value, scale } => {
+                    write!(t, "{sep}{value:>w$.d$} {:>5}", sense(*value, *scale))
+                }
+                // Not known: nothing, nor anything after it.
+                Cell::Missing => Ok(()),
+                // Not among the terminal's columns.
+                Cell::Segment { .. } | Cell::Measured { .. } => Ok(()),
+            };
+        }
+        t.push('\n');
+    }
     t
 }
 
@@ -367,78 +425,8 @@ fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
         ),
     };
     let _ = writeln!(t, "position {}: {input}", i + 1);
-    let _ = write!(t, "  {:<6} {:>11} {:>11}", "point", "x [m]", "y [m]");
-    if vel {
-        let _ = write!(t, " {:>12} {:>8}", "|v| [m/s]", "∠v [°]");
-    }
-    if acc {
-        let _ = write!(t, " {:>12} {:>8}", "|a| [m/s²]", "∠a [°]");
-    }
-    let _ = writeln!(t);
-    for &p in &an.points {
-        let ps = s.point(an, p);
-        let (at, st) = (ps.at, ps.rates);
-        let _ = write!(t, "  {:<6} {:>11.6} {:>11.6}", m.point_name(p), at.x, at.y);
-        if let Some((v, a)) = st.filter(|_| vel) {
-            let _ = write!(
-                t,
-                " {:>12.6} {:>8.2}",
-                v.hypot(),
-                if v.hypot() > 0.0 {
-                    v.atan2().to_degrees()
-                } else {
-                    0.0
-                }
-            );
-            if acc {
-                let _ = write!(
-                    t,
-                    " {:>12.6} {:>8.2}",
-                    a.hypot(),
-                    if a.hypot() > 0.0 {
-                        a.atan2().to_degrees()
-                    } else {
-                        0.0
-                    }
-                );
-            }
-        }
-        let _ = writeln!(t);
-    }
-    let _ = write!(t, "  {:<6} {:>11}", "link", "angle [°]");
-    if vel {
-        let _ = write!(t, " {:>12} {:>5}", "ω [rad/s]", "");
-    }
-    if acc {
-        let _ = write!(t, " {:>12} {:>5}", "ε [rad/s²]", "");
-    }
-    let _ = writeln!(t);
-    let (w_scale, e_scale) = s
-        .motion
-        .iter()
-        .flatten()
-        .fold((0.0f64, 0.0f64), |(w, e), mo| {
-            (w.max(mo.omega.abs()), e.max(mo.epsilon.abs()))
-        });
-    for l in 0..m.links.len() {
-        if !an.include[l] || l == m.frame() {
-            continue;
-        }
-        let _ = write!(
-            t,
-            "  {:<6} {:>11.4}",
-            m.link_id(l),
-            deg(s.config.pose(l).angle)
-        );
-        if vel {
-            let mo = s.motion[l].unwrap();
-            let _ = write!(t, " {:>12.6} {:>5}", mo.omega, sense(mo.omega, w_scale));
-            if acc {
-                let _ = write!(t, " {:>12.6} {:>5}", mo.epsilon, sense(mo.epsilon, e_scale));
-            }
-        }
-        let _ = writeln!(t);
-    }
+    t += &table_text(&tables::points(an, s, Lang::En));
+    t += &table_text(&tables::links(an, s, Lang::En));
     let slides = s.slides(an);
     if vel && !slides.is_empty() {
         for sl in &slides {
@@ -480,11 +468,7 @@ fn fmt(x: f64) -> String {
 }
 
 /// The constructions as numbered lecture-style steps (`solve --steps`).
-pub fn to_steps(
-    an: &Analysis,
-    solved: &[Solved],
-    lang: crate::kinematics::construction::text::Lang,
-) -> String {
+pub fn to_steps(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
     let mut t = steps_head(an);
     for (i, s) in solved.iter().enumerate() {
         t += &steps_position(an, i, s, lang);
@@ -503,13 +487,8 @@ fn steps_head(an: &Analysis) -> String {
 }
 
 /// The steps of position `i` (from 0).
-fn steps_position(
-    an: &Analysis,
-    i: usize,
-    s: &Solved,
-    lang: crate::kinematics::construction::text::Lang,
-) -> String {
-    use crate::kinematics::construction::text::{Lang, num, sentence};
+fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
+    use crate::kinematics::construction::text::{num, sentence};
     let m = &an.mech;
     let mut t = String::new();
     let (title_v, title_a, worst, bound_word) = match lang {

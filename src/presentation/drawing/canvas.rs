@@ -375,10 +375,7 @@ impl Canvas {
                     } else {
                         "black"
                     };
-                    let id = id
-                        .as_ref()
-                        .map(|i| format!(r#" id="{i}""#))
-                        .unwrap_or_default();
+                    let id = id_attr(id);
                     let _ = writeln!(
                         out,
                         r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="{color}" stroke-width="{}" stroke-linecap="round"/>"#,
@@ -391,11 +388,7 @@ impl Canvas {
                 }
                 Prim::Poly { pts, fill, stroke } => {
                     let d: Vec<String> = pts.iter().map(|q| px(*q)).collect();
-                    let stroke = if *stroke > 0.0 {
-                        format!(r#" stroke="black" stroke-width="{}""#, fmt(*stroke))
-                    } else {
-                        String::new()
-                    };
+                    let stroke = stroke_attr(*stroke);
                     let _ = writeln!(
                         out,
                         r#"<polygon points="{}" fill="{fill}"{stroke}/>"#,
@@ -409,15 +402,8 @@ impl Canvas {
                     stroke,
                     id,
                 } => {
-                    let id = id
-                        .as_ref()
-                        .map(|i| format!(r#" id="{i}""#))
-                        .unwrap_or_default();
-                    let stroke = if *stroke > 0.0 {
-                        format!(r#" stroke="black" stroke-width="{}""#, fmt(*stroke))
-                    } else {
-                        String::new()
-                    };
+                    let id = id_attr(id);
+                    let stroke = stroke_attr(*stroke);
                     let _ = writeln!(
                         out,
                         r#"<circle{id} cx="{}" cy="{}" r="{}" fill="{fill}"{stroke}/>"#,
@@ -465,21 +451,10 @@ impl Canvas {
                     id,
                     class,
                 } => {
-                    let id = id
-                        .as_ref()
-                        .map(|i| format!(r#" id="{i}""#))
-                        .unwrap_or_default();
-                    let sub = if label.sub.is_empty() {
-                        String::new()
-                    } else {
-                        format!(
-                            r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
-                            fmt(size * 0.7),
-                            xml(&label.sub)
-                        )
-                    };
-                    let sub_tspan = |b: &str, s: &str| {
-                        let s = if s.is_empty() {
+                    let id = id_attr(id);
+                    // A subscript, when there is one.
+                    let sub = |s: &str| {
+                        if s.is_empty() {
                             String::new()
                         } else {
                             format!(
@@ -487,10 +462,14 @@ impl Canvas {
                                 fmt(size * 0.7),
                                 xml(s)
                             )
-                        };
-                        format!("<tspan>, {}</tspan>{s}", xml(b))
+                        }
                     };
-                    let more: String = label.more.iter().map(|(b, s)| sub_tspan(b, s)).collect();
+                    let more: String = label
+                        .more
+                        .iter()
+                        .map(|(b, s)| format!("<tspan>, {}</tspan>{}", xml(b), sub(s)))
+                        .collect();
+                    let sub = sub(&label.sub);
                     let tail = if label.tail.is_empty() {
                         String::new()
                     } else {
@@ -512,6 +491,22 @@ impl Canvas {
                 }
             }
         }
+    }
+}
+
+/// ` id="…"` of an element that has an id, else nothing.
+fn id_attr(id: &Option<String>) -> String {
+    id.as_ref()
+        .map(|i| format!(r#" id="{i}""#))
+        .unwrap_or_default()
+}
+
+/// ` stroke="black" stroke-width="…"` of an outlined shape, else nothing.
+fn stroke_attr(stroke: f64) -> String {
+    if stroke > 0.0 {
+        format!(r#" stroke="black" stroke-width="{}""#, fmt(stroke))
+    } else {
+        String::new()
     }
 }
 

@@ -12,6 +12,11 @@
 //! own step only. `#step=N` opens the N-th step of the whole handout,
 //! `#pos=P` (and `#pos=P&step=K`) a position, `#selftest` steps through
 //! every step and reports in the page's title.
+//!
+//! The page's style and script are files beside this one (`handout.css`,
+//! `handout.js`, `handout-errors.js`), written into the page as they are;
+//! its result tables are those of [`crate::presentation::tables`], as the
+//! terminal's.
 
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
@@ -20,6 +25,8 @@ use crate::kinematics::construction::text::{Lang, num, sentence};
 use crate::kinematics::construction::{Op, Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
+use crate::presentation::report::group_kinds;
+use crate::presentation::tables::{self, Cell, Kind, Table, unit};
 use kurbo::Point;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -34,14 +41,6 @@ struct Ui {
     of: &'static str,
     keys: &'static str,
     position: &'static str,
-    points: &'static str,
-    links: &'static str,
-    measured: &'static str,
-    point: &'static str,
-    link: &'static str,
-    segment: &'static str,
-    value: &'static str,
-    worst: &'static str,
     after: &'static str,
     no_plans: &'static str,
     results: &'static str,
@@ -60,14 +59,6 @@ fn ui(l: Lang) -> Ui {
             of: "of",
             keys: "keys ← →, Home, End",
             position: "Position",
-            points: "Points",
-            links: "Links",
-            measured: "Measured on the plans",
-            point: "point",
-            link: "link",
-            segment: "segment",
-            value: "value ± drafting bound",
-            worst: "worst intersection angle",
             after: "drawn after the plan of velocities",
             no_plans: "The scene asks for no plans of velocities or accelerations.",
             results: "Results",
@@ -83,14 +74,6 @@ fn ui(l: Lang) -> Ui {
             of: "з",
             keys: "клавіші ← →, Home, End",
             position: "Положення",
-            points: "Точки",
-            links: "Ланки",
-            measured: "Виміряно на планах",
-            point: "точка",
-            link: "ланка",
-            segment: "відрізок",
-            value: "величина ± похибка побудови",
-            worst: "найменший кут перетину",
             after: "будується після плану швидкостей",
             no_plans: "Сцена не вимагає планів швидкостей чи прискорень.",
             results: "Результати",
@@ -106,32 +89,12 @@ fn ui(l: Lang) -> Ui {
             of: "из",
             keys: "клавиши ← →, Home, End",
             position: "Положение",
-            points: "Точки",
-            links: "Звенья",
-            measured: "Измерено на планах",
-            point: "точка",
-            link: "звено",
-            segment: "отрезок",
-            value: "величина ± погрешность построения",
-            worst: "наименьший угол пересечения",
             after: "строится после плана скоростей",
             no_plans: "Сцена не требует планов скоростей и ускорений.",
             results: "Результаты",
             steps_title: "Построение",
             structure: "Строение",
         },
-    }
-}
-
-/// A unit in the language of the page.
-fn unit(u: &str, l: Lang) -> String {
-    match l {
-        Lang::En => u.to_string(),
-        _ => u
-            .replace("rad", "рад")
-            .replace("mm", "мм")
-            .replace('m', "м")
-            .replace('s', "с"),
     }
 }
 
@@ -487,126 +450,89 @@ fn rate_cell(x: f64, scale: f64) -> String {
 }
 
 /// The tables of a position: points, links, what was measured on the plans.
-fn tables(an: &Analysis, s: &Solved, l: Lang, w: &Ui) -> String {
-    let m = &an.mech;
-    let vel = an.order.is_some();
-    let acc = an.order == Some(crate::kinematics::analytic::Order::Acceleration);
-    let mut h = String::new();
-    h.push_str("<div class=\"tables\">\n");
-    if vel {
-        let _ = write!(
-            h,
-            "<table><caption>{}</caption><thead><tr><th>{}</th><th>|v|, {}</th>",
-            w.points,
-            w.point,
-            unit("m/s", l)
-        );
-        if acc {
-            let _ = write!(h, "<th>|a|, {}</th>", unit("m/s²", l));
-        }
-        h.push_str("</tr></thead><tbody>\n");
-        for &p in &an.points {
-            let Some((v, a)) = s.point(an, p).rates else {
-                continue;
-            };
-            let _ = write!(
-                h,
-                "<tr><td>{}</td><td>{}</td>",
-                rich(m.point_name(p)),
-                num(v.hypot())
-            );
-            if acc {
-                let _ = write!(h, "<td>{}</td>", num(a.hypot()));
-            }
-            h.push_str("</tr>\n");
-        }
-        h.push_str("</tbody></table>\n");
-        let (ws, es) = s
-            .motion
-            .iter()
-            .flatten()
-            .fold((0.0f64, 0.0f64), |(a, b), mo| {
-                (a.max(mo.omega.abs()), b.max(mo.epsilon.abs()))
-            });
-        let _ = write!(
-            h,
-            "<table><caption>{}</caption><thead><tr><th>{}</th><th>ω, {}</th>",
-            w.links,
-            w.link,
-            unit("rad/s", l)
-        );
-        if acc {
-            let _ = write!(h, "<th>ε, {}</th>", unit("rad/s²", l));
-        }
-        h.push_str("</tr></thead><tbody>\n");
-        for k in 0..m.links.len() {
-            if !an.include[k] || k == m.frame() {
-                continue;
-            }
-            let Some(mo) = s.motion[k] else { continue };
-            let _ = write!(
-                h,
-                "<tr><td>{}</td><td>{}</td>",
-                xml(m.link_id(k)),
-                rate_cell(mo.omega, ws)
-            );
-            if acc {
-                let _ = write!(h, "<td>{}</td>", rate_cell(mo.epsilon, es));
-            }
-            h.push_str("</tr>\n");
-        }
-        h.push_str("</tbody></table>\n");
-    }
+fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
+    let mut h = String::from("<div class=\"tables\">\n");
+    h += &table_html(&tables::points(an, s, l));
+    h += &table_html(&tables::links(an, s, l));
     if let Some(plans) = &s.plans {
-        let mm = unit("mm", l);
-        let _ = writeln!(
-            h,
-            "<table class=\"measured\"><caption>{}</caption><thead><tr><th></th><th>{}, {mm}</th><th>{}</th></tr></thead>",
-            w.measured, w.segment, w.value
-        );
         let titles = words(l);
-        for (title, plan) in [
-            (titles[1], Some(&plans.velocity)),
-            (titles[2], plans.acceleration.as_ref()),
-        ] {
-            let Some(plan) = plan else { continue };
-            let _ = writeln!(
-                h,
-                "<tbody><tr class=\"group\"><th colspan=\"3\">{title}: {} {}°, δ = {} {mm}</th></tr>",
-                w.worst,
-                num(plan.worst_angle_deg()),
-                num(plan.delta)
-            );
-            for q in &plan.measured {
-                let u = match (q.quantity.starts_with(['ω', 'ε']), plan.kind) {
-                    (true, PlanKind::Velocity) => "rad/s",
-                    (true, PlanKind::Acceleration) => "rad/s²",
-                    (false, PlanKind::Velocity) => "m/s",
-                    (false, PlanKind::Acceleration) => "m/s²",
-                };
-                let seg = format!("{}{}", plan.points[q.from].name(), plan.points[q.to].name());
-                // An angular rate as its magnitude and sense, as in the links' table.
-                let value = if u.starts_with("rad") {
-                    rate_cell(q.value, q.value.abs())
-                } else {
-                    num(q.value)
-                };
-                let _ = writeln!(
-                    h,
-                    "<tr><td>{}</td><td>{} = {}</td><td>{value} ± {} {}</td></tr>",
-                    rich(&q.quantity),
-                    rich(&seg),
-                    num(q.mm),
-                    num(q.bound),
-                    unit(u, l)
-                );
-            }
-            h.push_str("</tbody>\n");
-        }
-        h.push_str("</table>\n");
+        h += &table_html(&tables::measured(plans, [titles[1], titles[2]], l));
     }
-    h.push_str("</div>\n");
-    h
+    h + "</div>\n"
+}
+
+/// A table of results as HTML: the columns the handout shows (not where
+/// the points are, nor which way they move: its drawings show that), the
+/// rows complete in them, a group's title on a row of its own; nothing for
+/// a table left with names alone.
+fn table_html(t: &Table) -> String {
+    let shown = |k: Kind| !matches!(k, Kind::Coordinate | Kind::Direction | Kind::Angle);
+    let columns: Vec<usize> = (0..t.columns.len())
+        .filter(|&i| shown(t.columns[i].kind))
+        .collect();
+    if columns.iter().all(|&i| t.columns[i].kind == Kind::Name) {
+        return String::new();
+    }
+    let class = t
+        .class
+        .map(|c| format!(" class=\"{c}\""))
+        .unwrap_or_default();
+    let mut h = format!("<table{class}><caption>{}</caption><thead><tr>", t.caption);
+    for &i in &columns {
+        let c = &t.columns[i];
+        let _ = match &c.unit {
+            Some(u) => write!(h, "<th>{}, {u}</th>", c.head),
+            None => write!(h, "<th>{}</th>", c.head),
+        };
+    }
+    h.push_str("</tr></thead>");
+    // Titled groups stand on lines of their own.
+    let nl = if t.groups.iter().any(|g| g.title.is_some()) {
+        "\n"
+    } else {
+        ""
+    };
+    h.push_str(nl);
+    for g in &t.groups {
+        h.push_str("<tbody>");
+        if let Some(title) = &g.title {
+            let _ = write!(
+                h,
+                "<tr class=\"group\"><th colspan=\"{}\">{title}</th></tr>",
+                columns.len()
+            );
+        }
+        h.push('\n');
+        for row in &g.rows {
+            if columns.iter().any(|&i| matches!(row[i], Cell::Missing)) {
+                continue;
+            }
+            h.push_str("<tr>");
+            for &i in &columns {
+                let _ = write!(h, "<td>{}</td>", cell_html(&row[i]));
+            }
+            h.push_str("</tr>\n");
+        }
+        h.push_str("</tbody>");
+        h.push_str(nl);
+    }
+    h + "</table>\n"
+}
+
+/// A cell as HTML: names in the lecture's notation, numbers as the
+/// sentences write them, a rate as its magnitude and sense.
+fn cell_html(c: &Cell) -> String {
+    match c {
+        Cell::Notation(s) => rich(s),
+        Cell::Plain(s) => xml(s),
+        Cell::Number(x) => num(*x),
+        Cell::Rate { value, scale } => rate_cell(*value, *scale),
+        Cell::Segment { name, mm } => format!("{} = {}", rich(name), num(*mm)),
+        Cell::Measured { value, bound, unit } => {
+            format!("{} ± {} {unit}", cell_html(value), num(*bound))
+        }
+        Cell::Missing => String::new(),
+    }
 }
 
 /// The handout: every position's drawings and tables, the plans drawn step
@@ -625,18 +551,12 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         Lang::Uk => "uk",
         Lang::Ru => "ru",
     };
-    let kinds: Vec<String> = an
-        .structure
-        .groups
-        .iter()
-        .map(|g| format!("{} {}", g.label(m), g.kind()))
-        .collect();
     let structure = format!(
         "{}: W = {}, {} [{}]",
         w.structure,
         an.structure.dof,
         an.structure.formula(m).replace("->", "→"),
-        kinds.join("; ")
+        group_kinds(an)
     );
     let mut h = String::new();
     let _ = write!(
@@ -743,7 +663,7 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         }
         h.push_str("</div>\n");
         let _ = writeln!(h, "<h3>{}</h3>", w.results);
-        h.push_str(&tables(an, s, lang, &w));
+        h.push_str(&tables(an, s, lang));
         h.push_str("</section>\n");
     }
     h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
@@ -760,260 +680,13 @@ pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -
     Ok(path)
 }
 
-/// Errors of the page's script, collected for `#selftest`.
-const ERRORS_JS: &str = r#"window.handoutErrors = [];
-window.addEventListener('error', function (e) { window.handoutErrors.push(String(e.message || e)); });
-window.addEventListener('unhandledrejection', function (e) { window.handoutErrors.push(String(e.reason)); });
-"#;
+/// Errors of the page's script, collected for `#selftest` (in the head,
+/// before anything else runs).
+const ERRORS_JS: &str = include_str!("handout-errors.js");
 
-const CSS: &str = r#":root {
-  --ink: #1d1d1f; --muted: #6b6b70; --paper: #ffffff; --desk: #eceae4;
-  --board: #27423c; --chalk: #f3f0e6; --new: #c62828; --line: #d6d3cb;
-}
-* { box-sizing: border-box; }
-html { background: var(--desk); }
-body { margin: 0; color: var(--ink); font: 15px/1.45 "DejaVu Sans", "Segoe UI", Arial, sans-serif; }
-sub, sup { font-size: 0.72em; line-height: 0; }
-header.top { padding: 12px 24px 6px; display: flex; flex-wrap: wrap; align-items: baseline; gap: 4px 18px; }
-header.top h1 { font: 600 17px/1.3 "DejaVu Serif", Georgia, serif; margin: 0; flex: 1 1 560px; }
-header.top .meta { margin: 0; color: var(--muted); font-size: 13px; }
-nav.tabs { flex: 1 0 100%; display: flex; flex-wrap: wrap; gap: 4px; margin-top: 6px; }
-nav.tabs .tab { font: 12px/1.2 "DejaVu Sans", sans-serif; padding: 4px 8px; border: 1px solid var(--line); background: #f7f6f2; color: var(--ink); border-radius: 3px; cursor: pointer; }
-nav.tabs .tab.current { background: var(--board); color: var(--chalk); border-color: var(--board); }
-.board { position: sticky; top: 0; z-index: 5; margin: 6px 24px 10px; padding: 10px 18px 10px; background: var(--board); color: var(--chalk); border-radius: 4px; box-shadow: 0 2px 6px rgba(0,0,0,.25); }
-.board .where { display: flex; justify-content: space-between; font-size: 12px; letter-spacing: .04em; text-transform: uppercase; opacity: .75; }
-.board .sentence { font: 19px/1.45 "DejaVu Serif", Georgia, serif; min-height: 2.9em; margin: 4px 0 8px; }
-.board .controls { display: flex; align-items: center; gap: 8px; flex-wrap: wrap; }
-.board button { font: 13px/1 "DejaVu Sans", sans-serif; padding: 6px 12px; border-radius: 3px; border: 1px solid rgba(255,255,255,.35); background: transparent; color: var(--chalk); cursor: pointer; }
-.board button.primary { background: var(--chalk); color: var(--board); border-color: var(--chalk); font-weight: 600; }
-.board button:disabled { opacity: .35; cursor: default; }
-.board .hint { margin-left: auto; font-size: 12px; opacity: .6; }
-main { padding: 0 24px 24px; }
-section.position { display: none; }
-section.position.current { display: block; }
-section.position h2 { font: 600 15px/1.3 "DejaVu Serif", Georgia, serif; margin: 4px 0 8px; color: var(--muted); }
-section.position h3 { font: 600 14px/1.3 "DejaVu Serif", Georgia, serif; margin: 16px 0 6px; }
-.figs { display: grid; grid-template-columns: minmax(0, 6fr) minmax(0, 7fr); grid-template-rows: auto 1fr; grid-template-areas: "mech big" "side big"; gap: 12px 16px; align-items: start; }
-.fig { margin: 0; background: var(--paper); border: 1px solid var(--line); box-shadow: 0 1px 3px rgba(0,0,0,.08); padding: 6px 10px 8px; }
-.fig figcaption { font-size: 13px; color: var(--muted); margin-bottom: 2px; }
-.fig figcaption b { color: var(--ink); font-weight: 600; }
-.fig figcaption .scale { margin-left: 10px; }
-.fig.mech { grid-area: mech; }
-.fig.plan { grid-area: side; }
-.fig.plan.active { grid-area: big; }
-.figs .fig.plan:not(.active) ~ .fig.plan:not(.active) { grid-area: auto; grid-column: 1; }
-.paper { position: relative; }
-svg.sheet { display: block; width: 100%; height: auto; max-height: 34vh; }
-.fig.plan.active svg.sheet { max-height: 50vh; }
-.placeholder { display: none; margin: 0; padding: 28px 0; text-align: center; color: var(--muted); font-style: italic; }
-.fig.plan.empty .placeholder { display: block; }
-.fig.plan.empty svg.sheet { display: none; }
-@media screen { .off { display: none; } }
-.now line { stroke: var(--new); }
-.now polygon.arrow, .now circle { fill: var(--new); }
-.now polygon:not(.arrow) { fill: #f3c7c4; stroke: var(--new); stroke-width: .25; }
-.now text { fill: var(--new); }
-.mark line { stroke: var(--new); stroke-width: 2.4; stroke-opacity: .35; stroke-linecap: round; }
-.mark circle { fill: none; stroke: var(--new); stroke-width: .5; }
-.fig.plan:not(.active) .mark { display: none; }
-details.steps { display: none; margin-top: 6px; border-top: 1px solid var(--line); }
-.fig.plan.active details.steps { display: block; }
-details.steps summary { font-size: 12px; color: var(--muted); cursor: pointer; padding: 4px 0; }
-ol.log { position: relative; margin: 0; padding: 0 0 0 2.2em; max-height: 7.6em; overflow: auto; font: 13.5px/1.5 "DejaVu Serif", Georgia, serif; }
-ol.log li { padding: 1px 4px; }
-ol.log li.now { background: #fbe9e7; color: #7f1d1d; }
-.tables { display: flex; flex-wrap: wrap; gap: 14px; align-items: flex-start; }
-table { border-collapse: collapse; background: var(--paper); border: 1px solid var(--line); font-size: 13px; }
-caption { text-align: left; font-weight: 600; padding: 0 0 3px; font-size: 13px; }
-th, td { padding: 3px 10px; border-bottom: 1px solid #eeeae2; text-align: right; white-space: nowrap; }
-th:first-child, td:first-child { text-align: left; }
-thead th { background: #f4f2ec; font-weight: 600; }
-tr.group th { text-align: left; background: #faf9f6; color: var(--muted); font-weight: 600; }
-.sense { color: var(--muted); }
-p.none { margin: 0 24px; }
-#selftest { margin: 0 24px 24px; padding: 8px; background: #fff; border: 1px solid var(--line); white-space: pre-wrap; }
-@media (max-width: 900px) {
-  .figs { grid-template-columns: 1fr; grid-template-areas: "big" "mech" "side"; }
-}
-@media print {
-  html { background: #fff; }
-  .board, nav.tabs { display: none; }
-  section.position { display: block; break-after: page; }
-  .mark, .placeholder { display: none !important; }
-  details.steps { display: block; }
-  ol.log { max-height: none; overflow: visible; }
-}
-"#;
+/// The page's style: the board, the figures, the tables, print.
+const CSS: &str = include_str!("handout.css");
 
-const JS: &str = r#"(function () {
-  'use strict';
-  var errors = window.handoutErrors || [];
-  var $ = function (id) { return document.getElementById(id); };
-  var all = function (root, sel) { return Array.prototype.slice.call(root.querySelectorAll(sel)); };
-  var stepWord = document.body.getAttribute('data-word-step');
-  var ofWord = document.body.getAttribute('data-word-of');
-  var plans = all(document, 'figure.plan').map(function (fig) {
-    return {
-      fig: fig,
-      n: +fig.getAttribute('data-steps'),
-      pos: +fig.getAttribute('data-pos'),
-      title: fig.getAttribute('data-title'),
-      log: fig.querySelector('ol.log'),
-      items: all(fig, '[data-step]').map(function (el) {
-        var u = el.getAttribute('data-until');
-        return { el: el, s: +el.getAttribute('data-step'), u: u === null ? Infinity : +u };
-      })
-    };
-  });
-  var sections = all(document, 'section.position');
-  var tabs = all(document, 'button.tab');
-  var frames = [];
-  plans.forEach(function (p, j) { for (var k = 1; k <= p.n; k++) frames.push({ j: j, k: k }); });
-  var g = -1, testing = /selftest/.test(location.hash);
-  var where = $('where'), counter = $('counter'), sentence = $('sentence');
-  var prevB = $('prev'), nextB = $('next'), firstB = $('first'), lastB = $('last');
-
-  function setPlan(p, c, active) {
-    p.items.forEach(function (it) {
-      it.el.classList.toggle('off', !(it.s <= c && c < it.u));
-      it.el.classList.toggle('now', active && it.s === c);
-    });
-    p.fig.classList.toggle('empty', c === 0);
-    p.fig.classList.toggle('active', active);
-  }
-  function showPos(pos) {
-    sections.forEach(function (s) { s.classList.toggle('current', +s.getAttribute('data-pos') === pos); });
-    tabs.forEach(function (t) { t.classList.toggle('current', +t.getAttribute('data-pos') === pos); });
-  }
-  // First and last frame of a position.
-  function span(pos) {
-    var a = -1, b = -1;
-    frames.forEach(function (f, i) { if (plans[f.j].pos === pos) { if (a < 0) a = i; b = i; } });
-    return [a, b];
-  }
-  function show(i) {
-    if (!frames.length) { showPos(1); return; }
-    i = Math.max(0, Math.min(frames.length - 1, i));
-    g = i;
-    var f = frames[i], P = plans[f.j];
-    plans.forEach(function (p, j) { setPlan(p, j < f.j ? p.n : j === f.j ? f.k : 0, j === f.j); });
-    showPos(P.pos);
-    var li = P.log.querySelector('li[data-step="' + f.k + '"]');
-    sentence.innerHTML = li ? li.innerHTML : '';
-    where.textContent = P.title + ' — ' + stepWord + ' ' + f.k + ' ' + ofWord + ' ' + P.n;
-    counter.textContent = (i + 1) + ' / ' + frames.length;
-    var s = span(P.pos);
-    prevB.disabled = i === 0;
-    nextB.disabled = i === frames.length - 1;
-    firstB.disabled = i === s[0];
-    lastB.disabled = i === s[1];
-    if (li) {
-      // The current sentence at the bottom of the list, the ones before above it.
-      var log = P.log, top = li.offsetTop, bottom = top + li.offsetHeight;
-      if (top < log.scrollTop || bottom > log.scrollTop + log.clientHeight) {
-        log.scrollTop = Math.max(0, Math.min(top, bottom - log.clientHeight));
-      }
-    }
-    if (!testing) { try { history.replaceState(null, '', '#step=' + (i + 1)); } catch (e) { /* file: URLs may refuse */ } }
-  }
-  function fromHash() {
-    var q = {};
-    location.hash.replace(/^#/, '').split('&').forEach(function (kv) {
-      var a = kv.split('='); if (a[0]) q[a[0]] = a.length > 1 ? decodeURIComponent(a[1]) : '';
-    });
-    if (q.pos) {
-      var s = span(+q.pos);
-      if (s[0] >= 0) return q.step === 'end' ? s[1] : Math.min(s[1], s[0] + Math.max(0, (+q.step || 1) - 1));
-    }
-    if (q.step === 'end') return frames.length - 1;
-    if (q.step) return (+q.step || 1) - 1;
-    return 0;
-  }
-  prevB.addEventListener('click', function () { show(g - 1); });
-  nextB.addEventListener('click', function () { show(g + 1); });
-  firstB.addEventListener('click', function () { if (frames.length) show(span(plans[frames[g].j].pos)[0]); });
-  lastB.addEventListener('click', function () { if (frames.length) show(span(plans[frames[g].j].pos)[1]); });
-  tabs.forEach(function (t) {
-    t.addEventListener('click', function () { var s = span(+t.getAttribute('data-pos')); if (s[0] >= 0) show(s[0]); else showPos(+t.getAttribute('data-pos')); });
-  });
-  document.addEventListener('keydown', function (e) {
-    if (e.altKey || e.ctrlKey || e.metaKey || !frames.length) return;
-    var d = { ArrowRight: 1, PageDown: 1, ArrowLeft: -1, PageUp: -1 }[e.key];
-    if (d) { e.preventDefault(); show(g + d); }
-    else if (e.key === 'Home') { e.preventDefault(); firstB.click(); }
-    else if (e.key === 'End') { e.preventDefault(); lastB.click(); }
-  });
-  window.addEventListener('hashchange', function () { if (!testing) show(fromHash()); });
-
-  // Shown on the page: no ancestor with display none (checkVisibility()
-  // cannot be used: Chromium reports a hidden SVG <g> as visible).
-  function visible(el) {
-    if (getComputedStyle(el).visibility === 'hidden') return false;
-    for (var e = el; e && e.nodeType === 1; e = e.parentNode) {
-      if (getComputedStyle(e).display === 'none') return false;
-    }
-    return true;
-  }
-  function key(e) { document.dispatchEvent(new KeyboardEvent('keydown', { key: e, bubbles: true })); }
-  // Step through the whole handout with Next; check each step shows its
-  // own elements (and no later ones) and its sentence; then Previous, keys, tabs.
-  function selftest() {
-    var fails = [], checked = 0, drawn = 0, before = null;
-    var fail = function (m) { if (fails.length < 12) fails.push(m); };
-    show(0);
-    for (var i = 0; i < frames.length; i++) {
-      if (i > 0) nextB.click();
-      var f = frames[i], P = plans[f.j], at = P.fig.id + ' step ' + f.k;
-      if (g !== i) { fail('Next did not reach ' + at); break; }
-      var li = P.log.querySelector('li[data-step="' + f.k + '"]');
-      var s = sentence.innerHTML;
-      if (!li || !s || s !== li.innerHTML) fail('sentence of ' + at + ' not shown');
-      if (s === before) fail('sentence unchanged at ' + at);
-      before = s;
-      if (!P.fig.classList.contains('active') || !visible(P.fig)) fail(at + ': plan not shown');
-      var own = 0, svg = 0;
-      P.items.forEach(function (it) {
-        var want = it.s <= f.k && f.k < it.u;
-        if (visible(it.el) !== want) fail(at + ': element of step ' + it.s + (want ? ' hidden' : ' shown'));
-        if (it.s === f.k && want) {
-          own++; checked++;
-          if (it.el.closest('svg')) svg++;
-          if (!it.el.classList.contains('now')) fail(at + ': own element not marked');
-        }
-      });
-      if (!own) fail(at + ': revealed nothing');
-      if (svg) drawn++;
-    }
-    if (frames.length > 1) {
-      var last = frames.length - 1, L = frames[last], LP = plans[L.j];
-      show(last); prevB.click();
-      if (g !== last - 1) fail('Previous did not go back');
-      if (frames[g].j === L.j) {
-        LP.items.forEach(function (it) { if (it.s === L.k && visible(it.el)) fail('Previous left step ' + L.k + ' shown'); });
-      }
-      key('ArrowRight'); if (g !== last) fail('ArrowRight did not advance');
-      key('ArrowLeft'); if (g !== last - 1) fail('ArrowLeft did not go back');
-      key('Home'); if (g !== span(plans[frames[g].j].pos)[0]) fail('Home did not go to the start of the position');
-      key('End'); if (g !== span(plans[frames[g].j].pos)[1]) fail('End did not show the whole position');
-      if (tabs.length > 1) {
-        tabs[1].click();
-        var cur = all(document, 'section.position.current');
-        if (cur.length !== 1 || cur[0].getAttribute('data-pos') !== tabs[1].getAttribute('data-pos')) fail('tab did not switch the position');
-      }
-    }
-    var ok = !fails.length && !errors.length;
-    var res = (ok ? 'SELFTEST PASS' : 'SELFTEST FAIL') + ' steps=' + frames.length + ' plans=' + plans.length +
-      ' elements=' + checked + ' drawing-steps=' + drawn +
-      (fails.length ? ' failures: ' + fails.join(' | ') : '') + (errors.length ? ' errors: ' + errors.join(' | ') : '');
-    document.title = res;
-    var pre = $('selftest'); pre.textContent = res; pre.hidden = false;
-  }
-  try {
-    if (testing) selftest(); else show(fromHash());
-  } catch (e) {
-    errors.push(String(e && e.stack || e));
-    if (testing) { document.title = 'SELFTEST FAIL errors: ' + errors.join(' | '); }
-    throw e;
-  }
-})();
-"#;
+/// The page's script: the steps shown one by one, the keys and tabs,
+/// `#step=`/`#pos=` and `#selftest`.
+const JS: &str = include_str!("handout.js");

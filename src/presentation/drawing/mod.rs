@@ -506,9 +506,8 @@ fn page(
         for q in &plan.measured {
             y -= 4.0;
             let row = format!(
-                "{}{} = {} → {} = {}",
-                plan.points[q.from].name(),
-                plan.points[q.to].name(),
+                "{} = {} → {} = {}",
+                crate::presentation::tables::segment(plan, q),
                 num(q.mm),
                 q.quantity,
                 num(q.value)
