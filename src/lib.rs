@@ -14,6 +14,7 @@ pub mod presentation;
 pub mod studies;
 pub mod verification;
 
+pub mod accuracy;
 pub mod error;
 pub mod geom;
 pub mod json;

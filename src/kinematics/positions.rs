@@ -4,6 +4,7 @@
 //! solved by a one-dimensional root search in its base angle, tracked
 //! continuously from the sketch.
 
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::{
     LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
@@ -181,7 +182,7 @@ impl Branches {
         // Relative to the group's own lengths (`dyad_sign` is a sine or a
         // cosine), not to the sketch's size: a far point of some other link
         // must not make a group in general position look like a dead point.
-        let tol = 1e-9;
+        let tol = ACCURACY.branch_dead_band;
         let mut sign = Vec::new();
         let mut triad_pose = Vec::new();
         for g in &s.groups {
@@ -411,9 +412,11 @@ fn solve_dyad(
     // meet there: the group's lengths and the coordinates of its joints,
     // never a fraction of the sketch's size.
     let rounding = |lens: f64, at: &[Point]| {
-        64.0 * f64::EPSILON * (lens + at.iter().map(|p| p.to_vec2().hypot()).sum::<f64>())
+        ACCURACY.tangency_roundings
+            * f64::EPSILON
+            * (lens + at.iter().map(|p| p.to_vec2().hypot()).sum::<f64>())
     };
-    let min_sin = 1e-12;
+    let min_sin = ACCURACY.min_line_sine;
     match d.kind {
         DyadKind::Rrr => {
             let (pb, pc, pd) = (

@@ -10,11 +10,12 @@ use crate::model::shape::Placement;
 use kurbo::{Point, Vec2};
 
 /// Relative tolerance for a length between two frame points against their
-/// coordinates (the contract's 1e-9: frame points are exact).
-pub const LENGTH_REL_TOL: f64 = 1e-9;
+/// coordinates ([`crate::accuracy::Accuracy::frame_length`]).
+pub const LENGTH_REL_TOL: f64 = crate::accuracy::ACCURACY.frame_length;
 /// How far off its guide a slider's point may be drawn in the sketch,
-/// relative to the links that carry it: the sketch is a drawing.
-pub const SKETCH_REL_TOL: f64 = 1e-3;
+/// relative to the links that carry it
+/// ([`crate::accuracy::Accuracy::sketch_off_guide`]).
+pub const SKETCH_REL_TOL: f64 = crate::accuracy::ACCURACY.sketch_off_guide;
 
 /// A rigid link: its points in its own frame.
 #[derive(Clone, Debug)]

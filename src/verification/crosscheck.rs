@@ -4,6 +4,7 @@
 //! them the error [`Bounds`] of every reported number. A position where
 //! they disagree is refused.
 
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::{Drive, Motion, Order, contour};
@@ -70,14 +71,14 @@ pub struct Bounds {
 }
 
 /// The constant c of [`Bounds`].
-pub const BOUND_ROUNDINGS: f64 = 256.0;
+pub const BOUND_ROUNDINGS: f64 = ACCURACY.bound_roundings;
 
 /// The largest data sensitivity accepted, as the routes' disagreement.
-pub const MAX_REL_DIFF: f64 = 1e-6;
+pub const MAX_REL_DIFF: f64 = ACCURACY.max_rel_diff;
 
 /// The change of the data for the sensitivity check: every length and
 /// sketch coordinate by this many units of rounding (relative).
-const DATA_PERTURBATION: f64 = 8.0 * f64::EPSILON;
+const DATA_PERTURBATION: f64 = ACCURACY.data_roundings * f64::EPSILON;
 
 /// The scene with its data changed by a few units of rounding, both ways
 /// ([`Analysis::changed_data`]).

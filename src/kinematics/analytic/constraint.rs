@@ -10,6 +10,7 @@
 
 use super::equations::{Constraint, Equations, Prism, Vector};
 use super::{Motion, Order};
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
 use crate::kinematics::positions::{describe_input, sketch_input};
@@ -34,7 +35,7 @@ impl Default for Settings {
         Settings {
             tol: 1e-15,
             max_iter: 60,
-            min_conditioning: 1e-13,
+            min_conditioning: ACCURACY.min_conditioning,
         }
     }
 }
@@ -43,7 +44,7 @@ impl Default for Settings {
 /// the links' own lengths): small enough that the predictor stays closer
 /// to its assembly than to any other (at a neck of width δ the radius of
 /// the path is about δ, so a step is a few hundredths of δ).
-const MAX_TURN: f64 = 0.035;
+const MAX_TURN: f64 = ACCURACY.max_path_turn;
 
 /// The solver over a subset of links (those the wanted output needs).
 #[derive(Clone, Debug)]
@@ -378,9 +379,9 @@ impl<'a> ConstraintSolver<'a> {
             self.eq.slot[l].map_or(self.m.size, |i| self.scale[i])
         };
         let max_step = if crank {
-            5f64.to_radians()
+            ACCURACY.max_path_step.to_radians()
         } else {
-            0.05 * input_scale
+            0.01 * ACCURACY.max_path_step * input_scale
         };
         let start = self.last_input;
         let end = start + span;

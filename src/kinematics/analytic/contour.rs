@@ -13,6 +13,7 @@
 //! closed form), a three-leash group two contours (6×6).
 
 use super::{Drive, Motion, Order};
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::perp;
 use crate::kinematics::positions::{Configuration, describe_input};
@@ -385,7 +386,7 @@ impl<const N: usize> Inverse<N> {
 /// when it is singular relative to the scale of its columns.
 fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
     let (an, scale) = scaled(a);
-    if an.determinant().abs() < 1e-12 {
+    if an.determinant().abs() < ACCURACY.min_contour_determinant {
         return None;
     }
     Some(Inverse {
@@ -399,7 +400,7 @@ fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
 fn invert_lu(a: &SMatrix<f64, 6, 6>) -> Option<Inverse<6>> {
     let (an, scale) = scaled(a);
     let lu = an.lu();
-    if lu.determinant().abs() < 1e-12 {
+    if lu.determinant().abs() < ACCURACY.min_contour_determinant {
         return None;
     }
     Some(Inverse {

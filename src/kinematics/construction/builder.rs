@@ -9,6 +9,7 @@ use super::plan::{
     non_rotating,
 };
 use super::record::{Act, Name, Product, Rate, Ray, Reading, Relation, Seg, Way, What, key_label};
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::{Line, LineCut, perp};
 use crate::kinematics::positions::{Configuration, describe_input};
@@ -114,7 +115,8 @@ impl<'a> Builder<'a> {
     /// billionth of the link's own size, above the rounding of the
     /// coordinates (never a fraction of the whole sketch).
     pub fn same_point(&self, link: usize, x: Point) -> f64 {
-        1e-9 * self.m().link_scale(link) + 64.0 * f64::EPSILON * x.to_vec2().hypot()
+        ACCURACY.same_point * self.m().link_scale(link)
+            + ACCURACY.tangency_roundings * f64::EPSILON * x.to_vec2().hypot()
     }
 
     pub fn register(&mut self, link: usize, x: Point, idx: usize) {
@@ -248,7 +250,7 @@ impl<'a> Builder<'a> {
             dir: r.unit,
         };
         let LineCut::Point { at, sin_angle } =
-            crate::geom::intersect_lines(&drawn(&a), &drawn(&b), 1e-12)
+            crate::geom::intersect_lines(&drawn(&a), &drawn(&b), ACCURACY.min_line_sine)
         else {
             let (_, (letters, sub)) = key_label(id, self.plan.kind, self.m());
             return Err(Error::Singular {

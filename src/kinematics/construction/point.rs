@@ -6,6 +6,7 @@
 use super::builder::Builder;
 use super::plan::{Mistake, PointId};
 use super::record::{Act, By, Name, Product, Rate, Way, What};
+use crate::accuracy::ACCURACY;
 use crate::geom::perp;
 use kurbo::{Point, Vec2};
 
@@ -70,7 +71,9 @@ impl Builder<'_> {
         m.links[link]
             .points
             .iter()
-            .find(|&&p| (m.local(link, p) - local).hypot() <= 1e-9 * m.link_scale(link))
+            .find(|&&p| {
+                (m.local(link, p) - local).hypot() <= ACCURACY.same_point * m.link_scale(link)
+            })
             .map_or(Name::Figure(idx), |&p| Name::Point(p))
     }
 
@@ -244,7 +247,7 @@ impl Builder<'_> {
                     ratio,
                     err: FigureErr::Divide(divide),
                 };
-                if ratio.y.abs() <= 1e-12 * ratio.hypot().max(1.0) {
+                if ratio.y.abs() <= ACCURACY.collinear_ratio * ratio.hypot().max(1.0) {
                     consider(divide, by_division, &mut best);
                 } else {
                     // Two arcs from a and b, meeting at the angle of the
@@ -260,7 +263,7 @@ impl Builder<'_> {
                     // A triangle is drawn by arcs (the lecture's way); a
                     // point a hair off the line by division, where the
                     // arcs would meet at too small an angle.
-                    if 2.0 * divide < arcs {
+                    if ACCURACY.division_over_arcs * divide < arcs {
                         consider(divide, by_division, &mut best);
                     } else {
                         let by_arcs = Construction::Figure {
@@ -290,7 +293,11 @@ impl Builder<'_> {
                 };
                 // The similar figure is the lecture's way: the relative
                 // vector takes over only where it is clearly better.
-                consider(e * 2.0, Construction::Relation { a }, &mut best);
+                consider(
+                    e * ACCURACY.relation_over_figure,
+                    Construction::Relation { a },
+                    &mut best,
+                );
             }
         }
         best.map(|b| b.1).unwrap_or(Construction::Relation { a: 0 })

@@ -4,6 +4,7 @@ use super::builder::Builder;
 use super::dyad::{At, Side};
 use super::plan::PointId;
 use super::record::{Act, Eqn, Name, Ray, Way};
+use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::{Line, LineCut, perp};
 use crate::kinematics::positions::describe_input;
@@ -90,7 +91,8 @@ impl Builder<'_> {
                 })
                 .unwrap()
         });
-        let LineCut::Point { at: sw, .. } = crate::geom::intersect_lines(&axis(i), &axis(j), 1e-12)
+        let LineCut::Point { at: sw, .. } =
+            crate::geom::intersect_lines(&axis(i), &axis(j), ACCURACY.min_line_sine)
         else {
             return Err(Error::Singular {
                 at: describe_input(m, self.q),
@@ -103,7 +105,7 @@ impl Builder<'_> {
             .chain([&t.base])
             .map(|&l| m.link_scale(l))
             .fold(0.0, f64::max);
-        if (sw - jw[k]).hypot() <= 1e-9 * group_size {
+        if (sw - jw[k]).hypot() <= ACCURACY.same_point * group_size {
             return Err(Error::Singular {
                 at: describe_input(m, self.q),
                 why:

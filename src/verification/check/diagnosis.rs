@@ -5,6 +5,7 @@
 use super::candidates::{Builds, Candidate, Fit, expectations, mistake_sentence};
 use super::items::Expected;
 use super::{Diagnosis, Report};
+use crate::accuracy::ACCURACY;
 use crate::kinematics::construction::text::{Lang, sentence};
 use crate::kinematics::construction::{Mistake, Variant};
 
@@ -46,7 +47,9 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
         // Explanations of another kind that fit about as well.
         let mut alternatives: Vec<String> = explaining[1..]
             .iter()
-            .filter(|(f, m)| *m <= 2.0 * misfit.max(1e-12) && !same_kind(f.c, best.c))
+            .filter(|(f, m)| {
+                *m <= ACCURACY.distinct_misfit * misfit.max(1e-12) && !same_kind(f.c, best.c)
+            })
             .map(|(f, _)| sentence_of(f))
             .collect();
         alternatives.dedup();
@@ -102,7 +105,7 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
     if let Some((best, misfit)) = pairs.first() {
         let others = pairs[1..]
             .iter()
-            .filter(|p| p.1 <= 2.0 * misfit.max(1e-12))
+            .filter(|p| p.1 <= ACCURACY.distinct_misfit * misfit.max(1e-12))
             .count();
         let name = mistake_sentence(best.c, r.mu, &what_of(best));
         return Diagnosis {

@@ -102,4 +102,4 @@ impl Report {
 /// The fraction of the plan's size beyond which a tolerance judges
 /// nothing: an item whose tolerance exceeds a fifth of the plan cannot be
 /// told from a point elsewhere on it.
-pub const MAX_TOLERANCE_OF_PLAN: f64 = 0.2;
+pub const MAX_TOLERANCE_OF_PLAN: f64 = crate::accuracy::ACCURACY.max_tolerance_of_plan;
