@@ -1,7 +1,6 @@
-//! Errors. User errors (a bad scene, a mechanism that cannot be assembled or
-//! is singular) carry enough context to fix the input; they map to exit
-//! status 2 in the binary. A result that could not be written
-//! ([`Error::Write`]) maps to exit status 3.
+//! Errors, by kind ([`Error`]): bad input ([`Input`]: what to fix and
+//! where), a mechanism that cannot be solved at an input value
+//! ([`Unsolvable`]), files, and mechplan's own failures.
 
 use std::fmt;
 
@@ -22,8 +21,19 @@ impl fmt::Display for Issue {
     }
 }
 
+/// Everything that can go wrong, in four kinds: bad input (the scene or
+/// answer file, or a parameter — each problem where it is), a mechanism
+/// that cannot be solved at an input value, reading or writing a file, and
+/// mechplan's own failures. The binary maps them to exit statuses: 2 bad
+/// input and cannot solve, 3 a write, 5 internal.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
+    /// Bad input: what to fix, and where.
+    #[error(transparent)]
+    Input(#[from] Input),
+    /// The mechanism cannot be solved at an input value.
+    #[error(transparent)]
+    Unsolvable(#[from] Unsolvable),
     /// An input file could not be read.
     #[error("{path}: {source}")]
     Io {
@@ -37,23 +47,42 @@ pub enum Error {
         path: String,
         source: std::io::Error,
     },
+    /// A failure of mechplan's own (an encoder that fails, a drawing that
+    /// is not valid SVG): a bug to report, not the user's to fix.
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+/// Bad input: each problem with where it is — a JSON pointer into the
+/// scene or answer (`/links/2/points/1`), or a parameter's name (`output`,
+/// `position`, `sheet`) that the command line shows as its option.
+#[derive(Debug, thiserror::Error)]
+pub enum Input {
     /// Not JSON, or JSON with repeated names.
     #[error("{}", .0.join("\n"))]
     Json(Vec<String>),
-    /// Every problem found in the scene, each with its JSON pointer.
+    /// Every problem found in the fields, each with its place.
     #[error("{}", list(.0))]
-    Scene(Vec<Issue>),
-    /// Mobility ≠ 1, or the links do not decompose into Assur groups.
+    Fields(Vec<Issue>),
+    /// The mechanism's structure: a mobility other than the number of
+    /// inputs, links that make no Assur groups, a sketch at a dead point.
     #[error("{0}")]
     Structure(String),
-    /// A group does not close at some input position.
+}
+
+/// A mechanism that cannot be solved at an input value (`at`: "φ = 30°",
+/// "s = 0.05 m").
+#[derive(Debug, thiserror::Error)]
+pub enum Unsolvable {
+    /// A group does not close there.
     #[error("{group} cannot be assembled at {at}: {why}")]
     Assembly {
         group: String,
         at: String,
         why: String,
     },
-    /// A singular position: the kinematic equations have no unique solution.
+    /// A singular position: the kinematic equations have no unique
+    /// solution there, or one the data's rounding decides.
     #[error("singular position at {at}: {why}")]
     Singular { at: String, why: String },
 }
@@ -66,11 +95,50 @@ fn list(v: &[Issue]) -> String {
 }
 
 impl Error {
+    /// One problem of the input, at `pointer`.
     pub fn scene(pointer: impl Into<String>, message: impl Into<String>) -> Error {
-        Error::Scene(vec![Issue {
+        Error::fields(vec![Issue {
             pointer: pointer.into(),
             message: message.into(),
         }])
+    }
+    /// Problems of the input, each at its place.
+    pub fn fields(issues: Vec<Issue>) -> Error {
+        Error::Input(Input::Fields(issues))
+    }
+    /// A file that is not JSON.
+    pub fn json(lines: Vec<String>) -> Error {
+        Error::Input(Input::Json(lines))
+    }
+    /// A structure that is not a mechanism mechplan solves.
+    pub fn structure(message: impl Into<String>) -> Error {
+        Error::Input(Input::Structure(message.into()))
+    }
+    /// A group that does not close at `at`.
+    pub fn assembly(
+        group: impl Into<String>,
+        at: impl Into<String>,
+        why: impl Into<String>,
+    ) -> Error {
+        Error::Unsolvable(Unsolvable::Assembly {
+            group: group.into(),
+            at: at.into(),
+            why: why.into(),
+        })
+    }
+    /// A singular position at `at`.
+    pub fn singular(at: impl Into<String>, why: impl Into<String>) -> Error {
+        Error::Unsolvable(Unsolvable::Singular {
+            at: at.into(),
+            why: why.into(),
+        })
+    }
+    /// The problems of the input, if it is that kind of error.
+    pub fn issues_mut(&mut self) -> Option<&mut Vec<Issue>> {
+        match self {
+            Error::Input(Input::Fields(v)) => Some(v),
+            _ => None,
+        }
     }
 }
 

@@ -356,7 +356,17 @@ fn main() -> ExitCode {
 fn finish(result: Result<u8, Error>) -> ExitCode {
     match result {
         Ok(status) => ExitCode::from(status),
-        Err(e) => {
+        Err(mut e) => {
+            // The library names its parameters; here they are options.
+            if let Some(issues) = e.issues_mut() {
+                for i in issues {
+                    if ["output", "point", "sheet", "position", "tolerance"]
+                        .contains(&i.pointer.as_str())
+                    {
+                        i.pointer = format!("--{}", i.pointer);
+                    }
+                }
+            }
             // Standard error may fail too; the status still tells.
             let _ = writeln!(
                 std::io::stderr(),
@@ -365,6 +375,7 @@ fn finish(result: Result<u8, Error>) -> ExitCode {
             );
             ExitCode::from(match e {
                 Error::Write { .. } => 3,
+                Error::Internal(_) => 5,
                 _ => 2,
             })
         }
@@ -393,11 +404,11 @@ fn check(a: CheckArgs) -> Result<u8, Error> {
     };
     let scene_text = read(&a.scene)?;
     let in_answer = |e: Error| match e {
-        Error::Scene(mut v) => {
+        Error::Input(mechplan::error::Input::Fields(mut v)) => {
             for i in &mut v {
                 i.message = format!("{} (in {})", i.message, a.answer.display());
             }
-            Error::Scene(v)
+            Error::fields(v)
         }
         e => e,
     };
@@ -529,11 +540,11 @@ fn parse_lang(l: &Option<String>) -> Result<Option<Lang>, Error> {
 
 fn with_file_name(name: &str) -> impl Fn(Error) -> Error + '_ {
     move |e| match e {
-        Error::Scene(mut v) => {
+        Error::Input(mechplan::error::Input::Fields(mut v)) => {
             for i in &mut v {
                 i.message = format!("{} (in {name})", i.message);
             }
-            Error::Scene(v)
+            Error::fields(v)
         }
         e => e,
     }
@@ -604,11 +615,11 @@ fn wrote(paths: &[PathBuf]) -> String {
 
 fn run(text: &str, name: &str, opt: Options) -> Result<(), Error> {
     let prefix = |e: Error| match e {
-        Error::Scene(mut v) => {
+        Error::Input(mechplan::error::Input::Fields(mut v)) => {
             for i in &mut v {
                 i.message = format!("{} (in {name})", i.message);
             }
-            Error::Scene(v)
+            Error::fields(v)
         }
         e => e,
     };

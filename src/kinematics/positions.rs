@@ -193,7 +193,7 @@ impl Branches {
             };
             let sg_tol = sign_tol(sg, tol);
             if sg_tol == 0.0 && sg.is_finite() && needs_sign(g) {
-                return Err(Error::Structure(format!(
+                return Err(Error::structure(format!(
                     "the sketch shows group {} at a dead point (its branch cannot be read off the drawing); draw it in a general position",
                     g.label(m)
                 )));
@@ -365,25 +365,20 @@ impl<'a> PositionSolver<'a> {
                 AssurGroup::Dyad(d) => solve_dyad(m, d, sign, &mut c).map_err(|why| {
                     let group = format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name());
                     match why.strip_prefix(SINGULAR) {
-                        Some(why) => Error::Singular {
-                            at: describe_input(m, q),
-                            why: format!("{group}: {why}"),
-                        },
-                        None => Error::Assembly {
-                            group,
-                            at: describe_input(m, q),
-                            why,
-                        },
+                        Some(why) => {
+                            Error::singular(describe_input(m, q), format!("{group}: {why}"))
+                        }
+                        None => Error::assembly(group, describe_input(m, q), why),
                     }
                 })?,
                 AssurGroup::Triad(t) => {
                     let pose =
                         solve_triad(m, t, self.branches.triad_pose[gi], &mut c).map_err(|why| {
-                            Error::Assembly {
-                                group: format!("group {} (class III)", self.s.groups[gi].label(m)),
-                                at: describe_input(m, q),
+                            Error::assembly(
+                                format!("group {} (class III)", self.s.groups[gi].label(m)),
+                                describe_input(m, q),
                                 why,
-                            }
+                            )
                         })?;
                     self.branches.triad_pose[gi] = pose;
                 }

@@ -143,7 +143,7 @@ impl Mechanism {
             }
         }
         if !issues.is_empty() {
-            return Err(Error::Scene(issues));
+            return Err(Error::fields(issues));
         }
         Ok(Mechanism {
             scene,

@@ -345,7 +345,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
         } else {
             "the mechanism needs more than one input to move definitely"
         };
-        return Err(Error::Structure(format!(
+        return Err(Error::structure(format!(
             "/links: mobility W = 3n - 2p5 = 3*{} - 2*{} = {dof}, but mechplan takes one input: {why}",
             nl - 1,
             m.revolutes.len() + m.prismatics.len()
@@ -367,7 +367,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
         InputSpec::Slider { pair, .. } => c.len() == 1 && c[0].joint == Joint::P(*pair),
     };
     if !ok {
-        return Err(Error::Structure(format!(
+        return Err(Error::structure(format!(
             "/input/link: the input link \"{}\" must be joined to the frame by exactly its driving pair",
             m.link_id(input)
         )));
@@ -414,7 +414,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
         }
         let Some(g) = found else {
             let ids: Vec<&str> = unknown.iter().map(|&l| m.link_id(l)).collect();
-            return Err(Error::Structure(format!(
+            return Err(Error::structure(format!(
                 "/links: links {} do not decompose into Assur groups of class II (dyads) or III (three-leash groups) attached to {}",
                 ids.join(", "),
                 (0..nl)
@@ -430,7 +430,7 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
                 .chain(t.int.iter())
                 .any(|c| matches!(c.joint, Joint::P(_)))
         {
-            return Err(Error::Structure(format!(
+            return Err(Error::structure(format!(
                 "{} is a class III group with prismatic pairs; mechplan solves class III groups of revolute pairs only",
                 g.label(m)
             )));

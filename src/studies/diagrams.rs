@@ -199,7 +199,7 @@ impl Diagrams {
         }
         if !slide && (s[n] - s[0]).abs() > 1.0 {
             return Err(Error::scene(
-                "--output",
+                "output",
                 "the output link turns fully: choose a rocking link or a slider",
             ));
         }
@@ -237,7 +237,7 @@ impl Diagrams {
         let range = s.iter().fold(0.0f64, |a, &x| a.max(x.abs()));
         if range.is_nan() || range <= 1e-12 * m.size {
             return Err(Error::scene(
-                if path { "--point" } else { "--output" },
+                if path { "point" } else { "output" },
                 "it does not move over the revolution: there is no diagram to draw",
             ));
         }

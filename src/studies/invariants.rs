@@ -187,7 +187,7 @@ impl<'a> Output<'a> {
             ));
         }
         if out == m.frame() || out >= m.links.len() {
-            return Err(Error::scene("--output", "the output must be a moving link"));
+            return Err(Error::scene("output", "the output must be a moving link"));
         }
         let mut need = an.structure.needed_for(&[out]);
         for (n, own) in need.iter_mut().zip(&an.need) {
@@ -225,7 +225,7 @@ impl<'a> Output<'a> {
             .links_of_point(p)
             .into_iter()
             .find(|&l| l != m.frame())
-            .ok_or_else(|| Error::scene("--point", "a point of the frame does not move"))?;
+            .ok_or_else(|| Error::scene("point", "a point of the frame does not move"))?;
         let mut out = Output::new(an, carrier)?;
         out.slide = None;
         out.point = Some((p, if omega < 0.0 { -1.0 } else { 1.0 }));
@@ -309,7 +309,7 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     let mut s = sample(&mut out, start)?;
     if turning && (s[n] - s[0]).abs() > 1.0 {
         return Err(Error::scene(
-            "--output",
+            "output",
             "the output link turns fully: it has no recess and approach (choose a rocking link or a slider)",
         ));
     }
@@ -336,7 +336,7 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
         .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
     let total = hi - lo;
     if total <= 1e-12 * m.size.max(1.0) {
-        return Err(Error::scene("--output", "the output does not move"));
+        return Err(Error::scene("output", "the output does not move"));
     }
     let e = set.tolerance * total;
     let h = TAU / n as f64;
@@ -462,10 +462,10 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
         };
         let pk = peaks(&law, (n / 4).max(64));
         if !(pk.b.is_finite() && pk.c.is_finite() && pk.d.is_finite()) {
-            return Err(Error::Singular {
-                at: crate::kinematics::positions::describe_input(m, p0),
-                why: format!("the {} phase could not be evaluated", kind.name()),
-            });
+            return Err(Error::singular(
+                crate::kinematics::positions::describe_input(m, p0),
+                format!("the {} phase could not be evaluated", kind.name()),
+            ));
         }
         list.push(Phase {
             kind,

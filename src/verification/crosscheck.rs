@@ -118,19 +118,16 @@ impl Analysis {
             }
         }
         if d.is_nan() || d > MAX_REL_DIFF {
-            return Err(Error::Singular {
-                at: describe_input(m, s.q),
-                why: format!(
+            return Err(Error::singular(
+                describe_input(m, s.q),
+                format!(
                     "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
                 ),
-            });
+            ));
         }
         let sens = self
             .data_sensitivity(s, q_rounding, changed)
-            .map_err(|why| Error::Singular {
-                at: describe_input(m, s.q),
-                why,
-            })?;
+            .map_err(|why| Error::singular(describe_input(m, s.q), why))?;
         let bound = self.bounds(s, costs.conditioning, d, sens);
         Ok(CrossCheck {
             max_rel_diff: d,

@@ -540,10 +540,12 @@ impl<'a> Reference<'a> {
             x.push(Real::from_f64(p.origin.y));
             x.push(Real::from_f64(p.angle));
         }
-        let fail = |why: String| Error::Assembly {
-            group: "the mechanism (extended-precision reference)".into(),
-            at: describe_input(m, qf),
-            why,
+        let fail = |why: String| {
+            Error::assembly(
+                "the mechanism (extended-precision reference)",
+                describe_input(m, qf),
+                why,
+            )
         };
         let stop = &self.size * &Real::from_f64(1e-50);
         let mut done = false;

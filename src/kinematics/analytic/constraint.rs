@@ -315,10 +315,12 @@ impl<'a> ConstraintSolver<'a> {
     /// by turning the input through `span` (which way round a rocking
     /// crank goes is the caller's: the way the mechanism assembles).
     pub fn solve_positions_by(&mut self, x: f64, span: f64) -> Result<()> {
-        let err = |why: String| Error::Assembly {
-            group: "the mechanism (constraint solver)".into(),
-            at: describe_input(self.m, x),
-            why,
+        let err = |why: String| {
+            Error::assembly(
+                "the mechanism (constraint solver)",
+                describe_input(self.m, x),
+                why,
+            )
         };
         if self.last_input.is_nan() {
             let x0 = sketch_input(self.m);
@@ -458,13 +460,13 @@ impl<'a> ConstraintSolver<'a> {
         let j = self.jacobian(&self.q);
         self.conditioning = self.scaled_conditioning(&j);
         if self.conditioning < self.settings.min_conditioning {
-            return Err(Error::Singular {
-                at: describe_input(self.m, self.last_input),
-                why: format!(
+            return Err(Error::singular(
+                describe_input(self.m, self.last_input),
+                format!(
                     "the constraint Jacobian is ill-conditioned (σ_min/σ_max = {:.2e})",
                     self.conditioning
                 ),
-            });
+            ));
         }
         let lu = j.lu();
         let mut b = DVector::zeros(self.rows());

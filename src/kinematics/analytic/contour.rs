@@ -150,12 +150,14 @@ pub fn solve(
         if !need[gi] {
             continue;
         }
-        let singular = || Error::Singular {
-            at: describe_input(m, drive.q),
-            why: format!(
-                "the velocity contour of group {} is singular (a dead point)",
-                g.label(m)
-            ),
+        let singular = || {
+            Error::singular(
+                describe_input(m, drive.q),
+                format!(
+                    "the velocity contour of group {} is singular (a dead point)",
+                    g.label(m)
+                ),
+            )
         };
         // The pairs of the group, in contour order: each contour is a list
         // of (pair index, sign) from a known link to a known link.

@@ -253,13 +253,13 @@ impl<'a> Builder<'a> {
             crate::geom::intersect_lines(&drawn(&a), &drawn(&b), ACCURACY.min_line_sine)
         else {
             let (_, (letters, sub)) = key_label(id, self.plan.kind, self.m());
-            return Err(Error::Singular {
-                at: describe_input(self.m(), self.q),
-                why: format!(
+            return Err(Error::singular(
+                describe_input(self.m(), self.q),
+                format!(
                     "on the {} plan the lines for {letters}{sub} are parallel: the position is a dead point of the group",
                     self.kind_word(),
                 ),
-            });
+            ));
         };
         let err = a.err.hypot(b.err) / sin_angle;
         let out = self.add_point(id, at.to_vec2(), err);

@@ -94,10 +94,10 @@ impl Builder<'_> {
         let LineCut::Point { at: sw, .. } =
             crate::geom::intersect_lines(&axis(i), &axis(j), ACCURACY.min_line_sine)
         else {
-            return Err(Error::Singular {
-                at: describe_input(m, self.q),
-                why: "all three leashes of the class III group are parallel".into(),
-            });
+            return Err(Error::singular(
+                describe_input(m, self.q),
+                "all three leashes of the class III group are parallel",
+            ));
         };
         let group_size = t
             .leashes
@@ -106,12 +106,10 @@ impl Builder<'_> {
             .map(|&l| m.link_scale(l))
             .fold(0.0, f64::max);
         if (sw - jw[k]).hypot() <= ACCURACY.same_point * group_size {
-            return Err(Error::Singular {
-                at: describe_input(m, self.q),
-                why:
-                    "the three leashes' axes meet in one point: a dead point of the class III group"
-                        .into(),
-            });
+            return Err(Error::singular(
+                describe_input(m, self.q),
+                "the three leashes' axes meet in one point: a dead point of the class III group",
+            ));
         }
         let sname = Name::Special(t.base);
         self.step(Act::Equation(Eqn::Special {

@@ -104,11 +104,7 @@ impl Analysis {
         for k in 0..=n {
             let phi = angle + std::f64::consts::TAU * k as f64 / n as f64;
             let v = eval(&mut ps, phi, true).map_err(|e| match e {
-                Error::Assembly { group, at, why } => Error::Assembly {
-                    group,
-                    at,
-                    why: format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible"),
-                },
+                Error::Unsolvable(crate::error::Unsolvable::Assembly { group, at, why }) => Error::assembly(group, at, format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible")),
                 e => e,
             })?;
             samples.push((phi, v.0, v.1));

@@ -226,12 +226,12 @@ impl Scene {
             ));
         }
         let value = parse_strict(text.strip_prefix('\u{feff}').unwrap_or(text))
-            .map_err(|e| Error::Json(locate_bad_numbers(text).unwrap_or(e)))?;
+            .map_err(|e| Error::json(locate_bad_numbers(text).unwrap_or(e)))?;
         let mut r = Reader::default();
         let scene = r.scene(&value);
         match scene {
             Some(s) if r.issues.is_empty() => Ok(s),
-            _ => Err(Error::Scene(r.issues)),
+            _ => Err(Error::fields(r.issues)),
         }
     }
 

@@ -318,7 +318,7 @@ fn misfit(
     let pointer = if given || sizes.len() > 1 {
         "/want/scales/mu_l"
     } else {
-        "--sheet"
+        "sheet"
     };
     Error::scene(pointer, msg)
 }
@@ -570,7 +570,7 @@ fn options() -> usvg::Options<'static> {
 /// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
 pub fn tree(svg: &str) -> Result<usvg::Tree> {
     usvg::Tree::from_str(svg, &options())
-        .map_err(|e| Error::Structure(format!("internal error: the drawing is not valid SVG: {e}")))
+        .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
 }
 
 /// Render a sheet to PNG at `dpi`.
@@ -584,7 +584,7 @@ pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
         (size.height() * k).ceil() as u32,
     );
     let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
-        .ok_or_else(|| Error::Structure("the sheet is too large to render".into()))?;
+        .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
     resvg::render(
         &tree,
         tiny_skia::Transform::from_scale(k, k),
@@ -592,7 +592,7 @@ pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
     );
     pixmap
         .encode_png()
-        .map_err(|e| Error::Structure(format!("PNG encoding failed: {e}")))
+        .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
 }
 
 /// Convert a sheet to PDF.
@@ -603,7 +603,7 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
         svg2pdf::ConversionOptions::default(),
         svg2pdf::PageOptions::default(),
     )
-    .map_err(|e| Error::Structure(format!("PDF conversion failed: {e}")))
+    .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
 }
 
 /// Write every sheet into `dir` in `format`, all or nothing: every sheet is

@@ -64,7 +64,7 @@ pub const MAX_ANSWER_BYTES: usize = 8 << 20;
 /// The refusal of an answer of `bytes` bytes, if it is too large.
 pub fn check_size(bytes: u64) -> Result<()> {
     if bytes > MAX_ANSWER_BYTES as u64 {
-        return Err(Error::Scene(vec![issue(
+        return Err(Error::fields(vec![issue(
             "",
             format!(
                 "the answer file has {bytes} bytes; an answer may have at most {MAX_ANSWER_BYTES} (8 MiB)"
@@ -148,10 +148,10 @@ fn number(v: &Value, at: &str, issues: &mut Vec<Issue>) -> Option<f64> {
 /// file's own shape: known fields, numbers, positive lengths, μ present.
 pub fn from_json(text: &str) -> Result<Answer> {
     check_size(text.len() as u64)?;
-    let v = parse_strict(text).map_err(Error::Json)?;
+    let v = parse_strict(text).map_err(Error::json)?;
     let mut issues = Vec::new();
     let Some(o) = v.as_object() else {
-        return Err(Error::Scene(vec![issue("", "an answer is a JSON object")]));
+        return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
     };
     for k in o.keys() {
         if ![
@@ -409,7 +409,7 @@ pub fn from_json(text: &str) -> Result<Answer> {
         ));
     }
     if !issues.is_empty() {
-        return Err(Error::Scene(issues));
+        return Err(Error::fields(issues));
     }
     Ok(Answer {
         plan: plan.unwrap(),

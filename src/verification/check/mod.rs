@@ -75,7 +75,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         }
     }
     if !issues.is_empty() {
-        return Err(Error::Scene(issues));
+        return Err(Error::fields(issues));
     }
     let candidates = candidates(&b, &plan, &exp);
     // The plan's size: the farthest of its points from the pole.

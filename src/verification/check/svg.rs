@@ -154,7 +154,7 @@ pub fn from_svg(
     position: usize,
 ) -> Result<Answer> {
     let bad = |m: String| {
-        Error::Scene(vec![Issue {
+        Error::fields(vec![Issue {
             pointer: "svg".into(),
             message: m,
         }])
