@@ -113,7 +113,7 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
     o.insert("points".into(), Value::Object(pts));
     let mut links = Map::new();
     for l in 0..m.links.len() {
-        if !an.include[l] {
+        if !an.link(l) {
             continue;
         }
         let mut e = Map::new();

@@ -235,7 +235,7 @@ pub fn links(an: &Analysis, s: &Solved, l: Lang) -> Table {
     ];
     let (ws, es) = rate_scales(s);
     let rows = (0..m.links.len())
-        .filter(|&k| an.include[k] && k != m.frame())
+        .filter(|&k| an.link(k) && k != m.frame())
         .map(|k| {
             let angle = crate::geom::wrap_pi(s.config.pose(k).angle).to_degrees();
             let mut row = vec![Cell::Plain(m.link_id(k).to_string()), Cell::Number(angle)];

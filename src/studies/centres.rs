@@ -96,7 +96,7 @@ pub const PARALLEL_SIN: f64 = 1e-10;
 pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     let m = &an.mech;
     let links: Vec<usize> = (0..m.links.len())
-        .filter(|&l| l == m.frame() || an.include[l])
+        .filter(|&l| l == m.frame() || an.link(l))
         .collect();
     let n = links.len();
     let idx = |l: usize| links.iter().position(|&x| x == l);
@@ -108,7 +108,7 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     // Primary centres: the pairs.
     for r in &m.revolutes {
         if let (Some(i), Some(j)) = (idx(r.a), idx(r.b)) {
-            let l = if an.include[r.a] { r.a } else { r.b };
+            let l = if an.link(r.a) { r.a } else { r.b };
             let at = c.point(m, l, r.point);
             known[slot(i, j)] = Some((to_h(at), How::Revolute(m.point_name(r.point).into()), 1.0));
         }

@@ -369,7 +369,7 @@ impl Analysis {
             let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
             note(d, format!("position of {}", m.point_name(p)));
         }
-        let links: Vec<usize> = (0..m.links.len()).filter(|&l| self.include[l]).collect();
+        let links: Vec<usize> = (0..m.links.len()).filter(|&l| self.link(l)).collect();
         for &l in &links {
             let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
             note(d, format!("angle of link {}", m.link_id(l)));

@@ -12,6 +12,7 @@ use crate::geom::perp;
 use crate::kinematics::analytic::{Motion, Order};
 use crate::kinematics::construction::{Drafting, Plans, Setup};
 use crate::kinematics::positions::Configuration;
+use crate::model::demand::Demand;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::Scene;
 use crate::model::structure::{Structure, analyse};
@@ -20,16 +21,15 @@ use kurbo::{Point, Vec2};
 pub use crate::verification::crosscheck::{BOUND_ROUNDINGS, Bounds, CrossCheck, MAX_REL_DIFF};
 
 /// A scene made ready: mechanism, structure, and what is to be computed.
+///
+/// The demand's fields (`need`, `include`, `points`) read through the
+/// analysis (`an.points`), as the first layout had them.
 #[derive(Clone, Debug)]
 pub struct Analysis {
     pub mech: Mechanism,
     pub structure: Structure,
-    /// Groups to solve.
-    pub need: Vec<bool>,
-    /// Links solved (frame, input and the needed groups' links).
-    pub include: Vec<bool>,
-    /// Points reported, in scene order.
-    pub points: Vec<usize>,
+    /// The groups, links and points the scene wants.
+    pub demand: Demand,
     /// None: positions only (no plans wanted).
     pub order: Option<Order>,
     /// Fixed scales and the pencil precision of the plans.
@@ -37,6 +37,13 @@ pub struct Analysis {
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
     /// the standard value that draws the sketch's extent within 200 mm.
     pub mu_l: f64,
+}
+
+impl std::ops::Deref for Analysis {
+    type Target = Demand;
+    fn deref(&self) -> &Demand {
+        &self.demand
+    }
 }
 
 /// Positions found and finished at a time by [`Analysis::run_each`]:
@@ -70,31 +77,8 @@ impl Analysis {
     /// The analysis of a mechanism already built.
     pub(crate) fn of(mech: Mechanism) -> Result<Analysis> {
         let structure = analyse(&mech)?;
+        let demand = Demand::of(&mech, &structure);
         let sc = &mech.scene;
-        let points: Vec<usize> = match &sc.want.points {
-            Some(p) => {
-                let mut p = p.clone();
-                p.sort_unstable();
-                p
-            }
-            None => (0..sc.points.len()).collect(),
-        };
-        let carriers: Vec<usize> = points.iter().map(|&p| mech.links_of_point(p)[0]).collect();
-        let need = if sc.want.points.is_some() {
-            structure.needed_for(&carriers)
-        } else {
-            vec![true; structure.groups.len()]
-        };
-        let mut include = vec![false; mech.links.len()];
-        include[mech.frame()] = true;
-        include[sc.input.link()] = true;
-        for (g, grp) in structure.groups.iter().enumerate() {
-            if need[g] {
-                for l in grp.links() {
-                    include[l] = true;
-                }
-            }
-        }
         let order = match (sc.want.velocity, sc.want.acceleration) {
             (_, true) => Some(Order::Acceleration),
             (true, false) => Some(Order::Velocity),
@@ -111,9 +95,7 @@ impl Analysis {
         Ok(Analysis {
             mech,
             structure,
-            need,
-            include,
-            points,
+            demand,
             order,
             drafting,
             mu_l,
@@ -122,11 +104,7 @@ impl Analysis {
 
     /// The link that reports point `p`: the first solved link carrying it.
     pub fn carrier(&self, p: usize) -> usize {
-        self.mech
-            .links_of_point(p)
-            .into_iter()
-            .find(|&l| self.include[l])
-            .expect("reported points are carried by solved links")
+        self.demand.carrier(&self.mech, p)
     }
 
     /// What the construction kernel builds the plans from: this
@@ -173,7 +151,7 @@ impl Solved {
         let m = &an.mech;
         let mut out = Vec::new();
         for (k, pr) in m.prismatics.iter().enumerate() {
-            if !(an.include[pr.slider] && an.include[pr.guide]) {
+            if !(an.link(pr.slider) && an.link(pr.guide)) {
                 continue;
             }
             let (ps, pg) = (self.config.pose(pr.slider), self.config.pose(pr.guide));

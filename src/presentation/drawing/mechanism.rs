@@ -59,7 +59,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         let l = m
             .links_of_point(p)
             .into_iter()
-            .find(|&l| an.include[l])
+            .find(|&l| an.link(l))
             .unwrap_or(frame);
         place(l, p)
     };
@@ -68,7 +68,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         .collect();
     let is_mass = |p: usize| !joints[p] && m.point_name(p).starts_with('S');
     let shown: Vec<Point> = (0..m.scene.points.len())
-        .filter(|&p| m.links_of_point(p).iter().any(|&l| an.include[l]))
+        .filter(|&p| m.links_of_point(p).iter().any(|&l| an.link(l)))
         .map(at_point)
         .collect();
     let centre = Point::new(
@@ -77,7 +77,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
     );
     // Guides first (under the links): the frame's guides with hatching.
     for pr in &m.prismatics {
-        if !an.include[pr.slider] || !an.include[pr.guide] {
+        if !an.link(pr.slider) || !an.link(pr.guide) {
             continue;
         }
         let q = place(pr.slider, pr.point);
@@ -90,7 +90,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             for &l in m
                 .links_of_point(pr.point)
                 .iter()
-                .filter(|&&l| l != pr.slider && an.include[l])
+                .filter(|&&l| l != pr.slider && an.link(l))
             {
                 for &o in m.links[l].points.iter().filter(|&&o| o != pr.point) {
                     toward += place(l, o) - q;
@@ -123,7 +123,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
     }
     // Links.
     for (l, link) in m.links.iter().enumerate() {
-        if l == frame || !an.include[l] {
+        if l == frame || !an.link(l) {
             continue;
         }
         let pts: Vec<usize> = link
@@ -178,7 +178,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
     // Pairs and points.
     for (p, &joint) in joints.iter().enumerate() {
         let ls = m.links_of_point(p);
-        let moving = ls.iter().any(|&l| an.include[l] && l != frame);
+        let moving = ls.iter().any(|&l| an.link(l) && l != frame);
         if !(moving || ls.contains(&frame) && joint) {
             continue;
         }
@@ -187,7 +187,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             // The base stands on the side away from the links at the pivot,
             // snapped to a multiple of 45° so it looks drawn, not computed.
             let mut away = Vec2::ZERO;
-            for &l in ls.iter().filter(|&&l| l != frame && an.include[l]) {
+            for &l in ls.iter().filter(|&&l| l != frame && an.link(l)) {
                 for &q in m.links[l].points.iter().filter(|&&q| q != p) {
                     let d = place(l, q) - at;
                     if d.hypot() > 0.0 {

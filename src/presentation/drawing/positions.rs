@@ -24,7 +24,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     for (k, s) in solved.iter().enumerate() {
         if k > 0 {
             for (l, link) in m.links.iter().enumerate() {
-                if l == m.frame() || !an.include[l] || link.points.len() < 2 {
+                if l == m.frame() || !an.link(l) || link.points.len() < 2 {
                     continue;
                 }
                 let xy: Vec<Point> = link
@@ -51,7 +51,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     }
     // Guides on the frame long enough for the whole stroke.
     for pr in &m.prismatics {
-        if pr.guide != m.frame() || !an.include[pr.slider] {
+        if pr.guide != m.frame() || !an.link(pr.slider) {
             continue;
         }
         let u = pr.line(&crate::geom::Pose::IDENTITY).dir;
@@ -79,7 +79,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     let tracked: Vec<(usize, usize)> = (0..m.scene.points.len())
         .filter_map(|p| {
             let ls = m.links_of_point(p);
-            let l = *ls.iter().find(|&&l| an.include[l])?;
+            let l = *ls.iter().find(|&&l| an.link(l))?;
             let pivoted = |l: usize| {
                 l == m.frame()
                     || m.links[l]

@@ -304,7 +304,7 @@ pub(super) fn candidates(b: &Builds, plan: &Plan, exp: &[Expected]) -> Vec<Fit> 
             AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
             AssurGroup::Triad(_) => false,
         };
-        if !an.need[g] || !has_branch {
+        if !an.group(g) || !has_branch {
             continue;
         }
         let Ok(mut ps) = PositionSolver::new(&an.mech, &an.structure, an.need.clone()) else {

@@ -133,7 +133,7 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     }
     let (rate, rate2) = m.scene.input.rates();
     let links: Vec<usize> = (0..m.links.len())
-        .filter(|&l| an.include[l] && l != m.frame())
+        .filter(|&l| an.link(l) && l != m.frame())
         .collect();
     // The reference at every evaluation position: the starts in order (on
     // the sketch's branch), then each refined on its own, in parallel.

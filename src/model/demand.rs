@@ -1,0 +1,78 @@
+//! What a scene asks to be computed, decided once: the groups to solve,
+//! the links they solve, the points to report (`want.points`: only these
+//! and the groups they hang on; else everything). Every part of mechplan
+//! asks this type, instead of re-deciding from `want`.
+
+use crate::model::mechanism::Mechanism;
+use crate::model::structure::Structure;
+
+/// The groups, links and points a scene wants (see the module's comment).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Demand {
+    /// Groups to solve, parallel to `Structure::groups`.
+    pub need: Vec<bool>,
+    /// Links solved (the frame, the input and the needed groups' links),
+    /// parallel to the mechanism's links.
+    pub include: Vec<bool>,
+    /// Points reported, in scene order.
+    pub points: Vec<usize>,
+}
+
+impl Demand {
+    /// What `mech`'s scene wants, on its `structure`.
+    pub fn of(mech: &Mechanism, structure: &Structure) -> Demand {
+        let sc = &mech.scene;
+        let points: Vec<usize> = match &sc.want.points {
+            Some(p) => {
+                let mut p = p.clone();
+                p.sort_unstable();
+                p
+            }
+            None => (0..sc.points.len()).collect(),
+        };
+        let carriers: Vec<usize> = points.iter().map(|&p| mech.links_of_point(p)[0]).collect();
+        let need = if sc.want.points.is_some() {
+            structure.needed_for(&carriers)
+        } else {
+            vec![true; structure.groups.len()]
+        };
+        let mut include = vec![false; mech.links.len()];
+        include[mech.frame()] = true;
+        include[sc.input.link()] = true;
+        for (g, grp) in structure.groups.iter().enumerate() {
+            if need[g] {
+                for l in grp.links() {
+                    include[l] = true;
+                }
+            }
+        }
+        Demand {
+            need,
+            include,
+            points,
+        }
+    }
+
+    /// Is group `g` solved?
+    pub fn group(&self, g: usize) -> bool {
+        self.need[g]
+    }
+
+    /// Is link `l` solved?
+    pub fn link(&self, l: usize) -> bool {
+        self.include[l]
+    }
+
+    /// Is point `p` reported?
+    pub fn reports(&self, p: usize) -> bool {
+        self.points.binary_search(&p).is_ok()
+    }
+
+    /// The link that reports point `p`: the first solved link carrying it.
+    pub fn carrier(&self, mech: &Mechanism, p: usize) -> usize {
+        mech.links_of_point(p)
+            .into_iter()
+            .find(|&l| self.include[l])
+            .expect("reported points are carried by solved links")
+    }
+}
