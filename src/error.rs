@@ -7,7 +7,10 @@ use std::fmt;
 /// One problem in a scene file, located by its JSON pointer.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Issue {
+    /// Where: a JSON pointer (`/links/2/points/1`), a parameter's name
+    /// (`output`), or empty for the file as a whole.
     pub pointer: String,
+    /// What is wrong, and how to fix it.
     pub message: String,
 }
 
@@ -37,14 +40,18 @@ pub enum Error {
     /// An input file could not be read.
     #[error("{path}: {source}")]
     Io {
+        /// The file.
         path: String,
+        /// Why it could not be read.
         source: std::io::Error,
     },
     /// A result could not be written (a full disk, a file-size limit, a
     /// closed pipe): `path` is the file or "standard output".
     #[error("cannot write {path}: {source}")]
     Write {
+        /// The file, or "standard output".
         path: String,
+        /// Why it could not be written.
         source: std::io::Error,
     },
     /// A failure of mechplan's own (an encoder that fails, a drawing that
@@ -77,14 +84,22 @@ pub enum Unsolvable {
     /// A group does not close there.
     #[error("{group} cannot be assembled at {at}: {why}")]
     Assembly {
+        /// The group ("group II(2,3) (RRR)") or route that does not close.
         group: String,
+        /// The input value ("φ = 30°").
         at: String,
+        /// Why: the circles that do not meet, and by how much.
         why: String,
     },
     /// A singular position: the kinematic equations have no unique
     /// solution there, or one the data's rounding decides.
     #[error("singular position at {at}: {why}")]
-    Singular { at: String, why: String },
+    Singular {
+        /// The input value.
+        at: String,
+        /// Why: the dead point, the routes' disagreement, the data's rounding.
+        why: String,
+    },
 }
 
 fn list(v: &[Issue]) -> String {
@@ -142,4 +157,5 @@ impl Error {
     }
 }
 
+/// mechplan's result type.
 pub type Result<T> = std::result::Result<T, Error>;

@@ -1,3 +1,4 @@
+#![warn(missing_docs)]
 //! mechplan: graphoanalytic kinematic analysis of planar linkages.
 //!
 //! The modules follow the data flow of the method of a TMM course
@@ -8,18 +9,31 @@
 //! hand-drawn plans, the extended-precision reference) → [`presentation`]
 //! (result files, tables, sheets).
 
+// The library's internals, by the data flow (docs/architecture.md):
+// public for the tests, benches and fuzz targets, hidden from the API.
+#[doc(hidden)]
 pub mod kinematics;
+#[doc(hidden)]
 pub mod model;
+#[doc(hidden)]
 pub mod presentation;
+#[doc(hidden)]
 pub mod studies;
+#[doc(hidden)]
 pub mod verification;
+
+#[doc(hidden)]
+pub mod geom;
+#[doc(hidden)]
+pub mod json;
+#[doc(hidden)]
+pub mod output;
+#[doc(hidden)]
+pub mod progress;
 
 pub mod accuracy;
 pub mod error;
-pub mod geom;
-pub mod json;
-pub mod output;
-pub mod progress;
+pub mod study;
 
 // The paths of the first, flat layout, kept: tests, benches and fuzz
 // targets reach the internals by them.
@@ -37,6 +51,7 @@ pub use verification::{check, precision, reference};
 pub use error::{Error, Issue, Result};
 pub use scene::Scene;
 pub use solve::{Analysis, Solved};
+pub use study::{DrawRequest, Results, Solution, Study};
 
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
 pub const DEFAULT_SCENE: &str = include_str!("../fixtures/six_link_fig2_10.json");

@@ -45,6 +45,30 @@ pub fn write_error(name: &str, source: std::io::Error) -> Error {
     }
 }
 
+/// An error for the user on standard error, every line "mechplan: …";
+/// if standard error fails too, the exit status still tells.
+pub fn error(text: &str) {
+    let _ = writeln!(
+        std::io::stderr(),
+        "mechplan: {}",
+        text.replace('\n', "\nmechplan: ")
+    );
+}
+
+/// A note for the user on standard error ("mechplan: note: …"); a note
+/// that cannot be written is lost, the result is not.
+pub fn note(text: &str) {
+    let _ = writeln!(std::io::stderr(), "mechplan: note: {text}");
+}
+
+/// "wrote PATH" lines for the files written.
+pub fn wrote(paths: &[PathBuf]) -> String {
+    paths
+        .iter()
+        .map(|p| format!("wrote {}\n", p.display()))
+        .collect()
+}
+
 /// Print `text` on standard output, checked and flushed.
 pub fn stdout(text: &str) -> Result<()> {
     let mut o = std::io::stdout().lock();

@@ -1,7 +1,7 @@
 //! Lecture-style sentences for the construction steps, in English,
 //! Ukrainian and Russian. The mathematics (names of points, vectors,
 //! numbers) is the same in every language; only the words change: each
-//! language is one [`Catalogue`] of phrases with named blanks (`{pole}`),
+//! language is one `Catalogue` of phrases with named blanks (`{pole}`),
 //! filled by one rendering path.
 
 use super::{Dir, Op, Plan, PlanKind, Why};

@@ -3,11 +3,11 @@
 //! problem reported with its JSON pointer. All numbers are converted to SI
 //! (m, rad) here, so nothing downstream knows about units.
 //!
-//! The types are here; the reader, by section of the file: [`reader`] (the
-//! top level, the units and the getters every section uses), [`numbers`]
+//! The types are here; the reader, by section of the file: `reader` (the
+//! top level, the units and the getters every section uses), `numbers`
 //! (numbers, angles and their rounding, non-finite numbers located),
-//! [`links`] (points and links), [`sliders`] (prismatic pairs and their
-//! guide lines), [`lengths`], [`input`], [`positions`], [`want`].
+//! `links` (points and links), `sliders` (prismatic pairs and their
+//! guide lines), `lengths`, `input`, `positions`, `want`.
 
 mod input;
 mod lengths;

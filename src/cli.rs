@@ -1,0 +1,218 @@
+//! The `mechplan` command's arguments (a module of the binary, not of the
+//! library): the commands and their options, as clap parses them.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use mechplan::construction::PlanKind;
+use mechplan::construction::text::Lang;
+use mechplan::drawing::{self, SheetSize};
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(
+    name = "mechplan",
+    version,
+    about = "Kinematic analysis of planar linkages by the graphoanalytic method of a TMM course"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Solve positions, velocities and accelerations of a scene (two analytic routes, cross-checked).
+    Solve {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
+        /// Write to this file (atomically) instead of standard output.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Print the construction of the plans as numbered lecture-style steps.
+        #[arg(long)]
+        steps: bool,
+        /// Language of the steps: en, uk or ru (default: the scene's want.lang).
+        #[arg(long, value_parser = lang)]
+        lang: Option<Lang>,
+    },
+    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input, 3 output not written.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+        /// The student's answer: JSON (docs/check.md) or an SVG drawn in a vector editor.
+        answer: PathBuf,
+        #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
+        format: CheckFormat,
+        /// Write an SVG overlaying the student's points on the correct plan.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        /// Pencil precision δ in mm (default: the answer's, else 0.5).
+        #[arg(long)]
+        delta: Option<f64>,
+        /// For an SVG answer: the scale μ, if the drawing does not state it.
+        #[arg(long)]
+        mu: Option<f64>,
+        /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
+        #[arg(long, value_parser = plan)]
+        plan: Option<PlanKind>,
+        /// Which of the scene's positions, from 1 (default: the answer file's, else 1).
+        #[arg(long)]
+        position: Option<usize>,
+    },
+    /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
+    Draw {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Folder to write the sheets into.
+        #[arg(short, long, default_value = "mechplan-out")]
+        output: PathBuf,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+        /// Sheet size: A4, A3 or A1, landscape (default: the smallest whose field holds
+        /// the mechanism's drawings at the scene's μ_l, A4 when it does).
+        #[arg(long, value_parser = sheet)]
+        sheet: Option<SheetSize>,
+        /// Add a title block to every sheet.
+        #[arg(long)]
+        title_block: bool,
+        /// Add the table of measured segments to the plans.
+        #[arg(long)]
+        table: bool,
+        /// Resolution of PNG sheets, dots per inch.
+        #[arg(long, default_value_t = 150.0)]
+        dpi: f64,
+        /// Language of the annotations: en, uk or ru (default: the scene's want.lang).
+        #[arg(long, value_parser = lang)]
+        lang: Option<Lang>,
+        /// Write DIR/handout.html instead of the sheets: one offline page with every
+        /// position's drawings, the plans drawn step by step (Next/Previous, ← →) with
+        /// their lecture-style sentences, and the result tables.
+        #[arg(long, conflicts_with_all = ["format", "dpi", "sheet", "title_block", "table"])]
+        html: bool,
+        /// Mark the instant centres (Kennedy's theorem) on the plans of the mechanism.
+        #[arg(long, conflicts_with = "html")]
+        centres: bool,
+    },
+    /// Work-precision report: each method's error against an extended-precision reference, and its run time.
+    Precision {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Folder to write NAME.md, NAME.svg and NAME.png into (default: print the table).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Monte Carlo seeds of the emulated hand drafting.
+        #[arg(long, default_value_t = 200)]
+        seeds: u64,
+        /// Compare at this many positions of a revolution (default: the scene's, or 36).
+        #[arg(long)]
+        positions: Option<usize>,
+        /// Least wall time of one timing batch, seconds.
+        #[arg(long, default_value_t = 0.1)]
+        min_time: f64,
+    },
+    /// Instant centres of velocity of every two links (Kennedy's theorem), per position.
+    Centres {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// Only this position (from 1).
+        #[arg(long)]
+        position: Option<usize>,
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
+    },
+    /// Motion-law invariants of an output (paper 003): phases, and the peak constants B, C, D.
+    Invariants {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// The output link (id): a slider on a frame guide, or a rocking link (default: the last group's last link).
+        #[arg(long)]
+        output: Option<String>,
+        /// Dwell tolerance E, relative to the whole stroke.
+        #[arg(long, default_value_t = 1e-3)]
+        tolerance: f64,
+        /// Shortest dwell reported, degrees of the crank.
+        #[arg(long, default_value_t = 10.0)]
+        min_dwell: f64,
+        /// Grid steps over a revolution.
+        #[arg(long, default_value_t = 1440)]
+        n: usize,
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
+    },
+    /// Kinematic diagrams of an output by the chord method of the lecture, with their errors.
+    Diagram {
+        /// The scene file (JSON, see docs/scene-format.md).
+        scene: PathBuf,
+        /// The output link (id): a slider on a frame guide, or a rocking link (default: the last group's last link).
+        #[arg(long, conflicts_with = "point")]
+        output: Option<String>,
+        /// A point instead: its displacement along its path (arc length), speed and tangential acceleration.
+        #[arg(long)]
+        point: Option<String>,
+        /// Intervals per revolution.
+        #[arg(short, default_value_t = 12)]
+        n: usize,
+        /// Write the sheet into this folder instead of printing the table.
+        #[arg(short, long)]
+        output_dir: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+    },
+    /// Families of link positions in the Frenet trihedron (paper 001, Figs 2, 3, 5) as sheets.
+    Frenet {
+        /// Folder to write the sheets into.
+        #[arg(short, long, default_value = "mechplan-out")]
+        output: PathBuf,
+        #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
+        format: DrawFormat,
+        /// Segments per revolution of the guide circle.
+        #[arg(long, default_value_t = 36)]
+        count: usize,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub enum DrawFormat {
+    Svg,
+    Png,
+    Pdf,
+}
+
+impl From<DrawFormat> for drawing::Format {
+    fn from(f: DrawFormat) -> drawing::Format {
+        match f {
+            DrawFormat::Svg => drawing::Format::Svg,
+            DrawFormat::Png => drawing::Format::Png,
+            DrawFormat::Pdf => drawing::Format::Pdf,
+        }
+    }
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Clone, Copy, PartialEq, ValueEnum)]
+pub enum Format {
+    Table,
+    Json,
+}
+
+pub fn lang(s: &str) -> Result<Lang, String> {
+    Lang::parse(s).ok_or_else(|| format!("unknown language \"{s}\": use en, uk or ru"))
+}
+
+pub fn sheet(s: &str) -> Result<SheetSize, String> {
+    SheetSize::parse(s).ok_or_else(|| format!("unknown sheet \"{s}\": use A4, A3 or A1"))
+}
+
+pub fn plan(s: &str) -> Result<PlanKind, String> {
+    match s {
+        "velocity" => Ok(PlanKind::Velocity),
+        "acceleration" => Ok(PlanKind::Acceleration),
+        _ => Err(format!("unknown plan \"{s}\": velocity or acceleration")),
+    }
+}
