@@ -24,8 +24,13 @@ pub(super) struct Builder<'a> {
     pub st: &'a Setup<'a>,
     pub c: &'a Configuration,
     pub plan: Plan,
-    /// The construction's record, step by step, in ids.
+    /// The construction's record, step by step, in ids (kept only when
+    /// `record`).
     pub acts: Vec<Act>,
+    /// Keep the record (a build that is narrated).
+    pub record: bool,
+    /// Steps taken so far, recorded or not.
+    pub taken: usize,
     /// The velocity plan, when building the acceleration plan.
     pub vel: Option<&'a Plan>,
     pub nr: Vec<bool>,
@@ -52,6 +57,8 @@ impl<'a> Builder<'a> {
             c,
             plan,
             acts: Vec::new(),
+            record: false,
+            taken: 0,
             vel,
             nr: non_rotating(m),
             q,
@@ -63,6 +70,7 @@ impl<'a> Builder<'a> {
     pub fn again(mut self, mu: f64, rng: Option<StdRng>) -> Builder<'a> {
         self.plan = self.plan.cleared(mu);
         self.acts.clear();
+        self.taken = 0;
         self.normal_of.fill(None);
         self.rng = rng;
         self
@@ -73,8 +81,14 @@ impl<'a> Builder<'a> {
     pub fn vel_kind(&self) -> bool {
         self.plan.kind == PlanKind::Velocity
     }
+    /// Take a step: counted always, recorded for the naming pass only
+    /// when the build narrates (a probe or a numbers-only build would only
+    /// pay for the record).
     pub fn step(&mut self, act: Act) {
-        self.acts.push(act);
+        self.taken += 1;
+        if self.record {
+            self.acts.push(act);
+        }
     }
     pub fn world(&self, link: usize, p: usize) -> Point {
         self.c.point(self.m(), link, p)
@@ -228,7 +242,7 @@ impl<'a> Builder<'a> {
         }
         if self.variant.also == Some(m) && self.variant.mistake != Some(m) {
             // A second mistake combined with the first, made everywhere.
-            self.plan.mistake_step.get_or_insert(self.acts.len());
+            self.plan.mistake_step.get_or_insert(self.taken);
             return true;
         }
         if self.variant.mistake != Some(m) {
@@ -239,7 +253,7 @@ impl<'a> Builder<'a> {
         if self.variant.at.is_some_and(|at| at != n) {
             return false;
         }
-        self.plan.mistake_step.get_or_insert(self.acts.len());
+        self.plan.mistake_step.get_or_insert(self.taken);
         true
     }
 

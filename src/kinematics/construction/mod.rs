@@ -53,6 +53,7 @@ use record::Act;
 /// acceleration plan): its numbers, and the record of its steps. A scale
 /// `d` leaves open is the standard one at which the plan fits `field`,
 /// found by a first construction at unit scale.
+#[allow(clippy::too_many_arguments)]
 fn construct(
     st: &Setup,
     c: &Configuration,
@@ -61,6 +62,7 @@ fn construct(
     vel: Option<&Plan>,
     d: &Drafting,
     field: &Field,
+    naming: Naming,
 ) -> Result<(Plan, Vec<Act>)> {
     use rand::SeedableRng;
     let rates = (drive.rate, drive.rate2);
@@ -81,6 +83,7 @@ fn construct(
     // The real construction at that scale (the steps' numbers are in mm),
     // in the first one's buffers.
     let mut b = b.again(mu, rng(2));
+    b.record = naming == Naming::Full;
     b.run(rates)?;
     Ok((b.plan, b.acts))
 }
@@ -108,7 +111,7 @@ pub fn build_plans_in(
     naming: Naming,
 ) -> Result<Plans> {
     let build = |kind, vel| -> Result<Plan> {
-        let (mut plan, acts) = construct(st, c, drive, kind, vel, &d, field)?;
+        let (mut plan, acts) = construct(st, c, drive, kind, vel, &d, field, naming)?;
         if naming == Naming::Full {
             record::narrate(&mut plan, &acts, st);
         }
@@ -149,7 +152,7 @@ pub fn build_acceleration(
 ) -> Result<Plan> {
     let field = Field::default();
     let kind = PlanKind::Acceleration;
-    let (mut plan, acts) = construct(st, c, drive, kind, Some(vel), &d, &field)?;
+    let (mut plan, acts) = construct(st, c, drive, kind, Some(vel), &d, &field, Naming::Full)?;
     record::narrate(&mut plan, &acts, st);
     Ok(plan)
 }
