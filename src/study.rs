@@ -272,9 +272,11 @@ impl Study {
         let an = &self.analysis;
         let solved = an.run()?;
         Ok(if json {
-            pretty(&crate::studies::centres::to_json(an, &solved, position))
+            pretty(&crate::presentation::studies::centres_json(
+                an, &solved, position,
+            ))
         } else {
-            crate::studies::centres::to_table(an, &solved, position)
+            crate::presentation::studies::centres_table(an, &solved, position)
         })
     }
 
@@ -310,9 +312,11 @@ impl Study {
         };
         let list = invariants::phases(an, &set)?;
         Ok(if json {
-            pretty(&invariants::to_json(an, &set, &list))
+            pretty(&crate::presentation::studies::invariants_json(
+                an, &set, &list,
+            ))
         } else {
-            invariants::to_table(an, &set, &list)
+            crate::presentation::studies::invariants_table(an, &set, &list)
         })
     }
 
@@ -326,7 +330,7 @@ impl Study {
         n: usize,
         dir: Option<(&Path, drawing::Format)>,
     ) -> Result<Diagram> {
-        use crate::studies::diagrams::{Diagrams, to_table};
+        use crate::studies::diagrams::Diagrams;
         if !(4..=3600).contains(&n) {
             return Err(Error::scene("n", "must be from 4 to 3600 intervals"));
         }
@@ -342,7 +346,9 @@ impl Study {
             None => Diagrams::build(an, out, n, drawing::diagram::LENGTH)?,
         };
         let Some((dir, format)) = dir else {
-            return Ok(Diagram::Table(to_table(an, &d)));
+            return Ok(Diagram::Table(
+                crate::presentation::studies::diagrams_table(an, &d),
+            ));
         };
         let sheet = drawing::diagram::sheet(an, &d, &DrawOptions::default());
         Ok(Diagram::Written(drawing::write_sheets(

@@ -6,4 +6,5 @@
 pub mod drawing;
 pub mod quantity;
 pub mod report;
+pub mod studies;
 pub mod tables;
