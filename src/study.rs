@@ -178,8 +178,27 @@ impl Study {
     pub fn solve(&self) -> Result<Solution<'_>> {
         Ok(Solution {
             study: self,
-            positions: self.analysis.run()?,
+            positions: self.solved()?,
         })
+    }
+
+    /// Every position solved, a progress bar on a terminal for a long
+    /// sweep (the solver only advances the bar it is given).
+    fn solved(&self) -> Result<Vec<Solved>> {
+        let mut out = Vec::new();
+        self.each(|s| {
+            out.push(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// Each position as it is solved, in order, with the bar.
+    fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        let bar = crate::progress::bar(self.position_count()?, "positions");
+        let done = self.analysis.run_each_with(&bar, f);
+        bar.finish_and_clear();
+        done
     }
 
     /// Write the results of every position in `style` to `out` (a file,
@@ -197,7 +216,7 @@ impl Study {
         let write = |out: &mut dyn FnMut(&str) -> Result<()>| -> Result<()> {
             out(&report::text_head(an, style))?;
             let mut count = 0;
-            an.run_each(|s| {
+            self.each(|s| {
                 out(&report::text_position(an, style, count, &s))?;
                 count += 1;
                 Ok(())
@@ -226,7 +245,7 @@ impl Study {
         }
         let an = &self.analysis;
         let lang = req.lang.unwrap_or_else(|| self.lang());
-        let solved = an.run()?;
+        let solved = self.solved()?;
         if req.html {
             return Ok(vec![drawing::html::write_handout(
                 an, &solved, lang, &req.dir,
@@ -259,7 +278,7 @@ impl Study {
 
     /// Check a student's answer (read by [`check::answer::read`]).
     pub fn check(&self, answer: &check::answer::Answer) -> Result<check::Report> {
-        let solved = self.analysis.run()?;
+        let solved = self.solved()?;
         check::check(&self.analysis, &solved, answer)
     }
 
@@ -270,7 +289,7 @@ impl Study {
             self.position_in_range("position", p)?;
         }
         let an = &self.analysis;
-        let solved = an.run()?;
+        let solved = self.solved()?;
         Ok(if json {
             pretty(&crate::presentation::studies::centres_json(
                 an, &solved, position,

@@ -71,8 +71,9 @@ pub struct Drive {
     pub rate2: f64,
 }
 
-/// What the caller wants computed: velocities only, or accelerations too.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What the caller wants computed: velocities only, or accelerations too
+/// (and, as [`crate::kinematics::construction::PlanKind`], which plan).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Order {
     Velocity,
     Acceleration,

@@ -6,11 +6,10 @@ use crate::model::mechanism::Mechanism;
 use crate::model::structure::Structure;
 use kurbo::Vec2;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PlanKind {
-    Velocity,
-    Acceleration,
-}
+/// A plan of velocities or of accelerations: the same idea as the order of
+/// the motion a route computes ([`crate::kinematics::analytic::Order`]),
+/// one type under its two names.
+pub use crate::kinematics::analytic::Order as PlanKind;
 
 /// What a plan point is, by the indices of the mechanism: the kernel finds
 /// and builds points by their ids; the names (`b`, `n_2`, `b_3` …) are

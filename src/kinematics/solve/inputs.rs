@@ -27,8 +27,7 @@ impl Analysis {
                         .unwrap_or(&sc.input.link())
                 });
                 let start = self.working_stroke_start(out)?;
-                let (omega, _) = sc.input.rates();
-                let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+                let dir = sc.input.sense();
                 (0..*count)
                     .map(|k| {
                         (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
@@ -68,7 +67,7 @@ impl Analysis {
     pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
         let m = &self.mech;
         let sc = &m.scene;
-        let InputSpec::Crank { omega, angle, .. } = sc.input else {
+        let InputSpec::Crank { angle, .. } = sc.input else {
             return Err(Error::scene(
                 "/positions/count",
                 "equal steps over a revolution need a crank input",
@@ -170,7 +169,7 @@ impl Analysis {
                 (0.0, f64::NEG_INFINITY),
                 |acc, e| if e.1 > acc.1 { e } else { acc },
             );
-        let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+        let dir = sc.input.sense();
         // Crank angle of the stroke lo → hi in the sense of rotation.
         let d_lo_hi = (dir * (hi.0 - lo.0)).rem_euclid(std::f64::consts::TAU);
         let d_hi_lo = std::f64::consts::TAU - d_lo_hi;

@@ -49,13 +49,22 @@ impl Analysis {
     /// [`RUN_CHUNK`] at a time, so that memory does not grow with their
     /// number. The positions before the first error are handed over; an
     /// error of `f` stops the run and is returned.
-    pub fn run_each(&self, mut f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+    pub fn run_each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        self.run_each_with(&indicatif::ProgressBar::hidden(), f)
+    }
+
+    /// As [`Analysis::run_each`], advancing `bar` a position at a time
+    /// (the caller's: a terminal's bar, or a hidden one).
+    pub fn run_each_with(
+        &self,
+        bar: &indicatif::ProgressBar,
+        mut f: impl FnMut(Solved) -> Result<()>,
+    ) -> Result<()> {
         let values = self.input_values()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
         let changed = self.changed_data();
-        let bar = crate::progress::bar(values.len(), "positions");
         // The rounding of each input value as written (none for `count`).
         let rounding = if m.scene.input_rounding.len() == values.len() {
             m.scene.input_rounding.clone()
@@ -66,9 +75,8 @@ impl Analysis {
             .chunks(RUN_CHUNK)
             .zip(rounding.chunks(RUN_CHUNK))
             .try_for_each(|(chunk, rounding)| {
-                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, &bar, &mut f)
+                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, bar, &mut f)
             });
-        bar.finish_and_clear();
         done
     }
 

@@ -121,6 +121,11 @@ impl InputSpec {
             InputSpec::Slider { v, a, .. } => (*v, *a),
         }
     }
+    /// The sense of the input's motion: +1 counter-clockwise (a slider:
+    /// along its guide), −1 against; a standing input counts as +1.
+    pub fn sense(&self) -> f64 {
+        if self.rates().0 < 0.0 { -1.0 } else { 1.0 }
+    }
 }
 
 #[derive(Clone, Debug)]

@@ -97,7 +97,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     if full_turn && let Ok(mut ps) = PositionSolver::new(m, &an.structure, an.need.clone()) {
         {
             let q0 = solved[0].q;
-            let dir = if solved[0].rate < 0.0 { -1.0 } else { 1.0 };
+            let dir = m.scene.input.sense();
             let mut ok = true;
             let mut samples: Vec<Vec<Point>> = vec![Vec::new(); tracked.len()];
             for k in 0..=72 {
