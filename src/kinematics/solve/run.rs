@@ -71,13 +71,12 @@ impl Analysis {
         } else {
             vec![0.0; values.len()]
         };
-        let done = values
+        values
             .chunks(RUN_CHUNK)
             .zip(rounding.chunks(RUN_CHUNK))
             .try_for_each(|(chunk, rounding)| {
                 self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, bar, &mut f)
-            });
-        done
+            })
     }
 
     /// One chunk of [`Analysis::run_each`]: its positions found in order,
