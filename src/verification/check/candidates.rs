@@ -16,18 +16,27 @@ use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::structure::{AssurGroup, DyadKind};
 
-/// A way the plan may have been built wrong.
+/// A way the plan may have been built wrong: what a diagnosis names
+/// (typed; its sentence is [`super::Diagnosis::mistake`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Candidate {
-    /// A mistake at one decision (`Some(n)`) or every one, on the checked
-    /// plan or on both plans.
+pub enum Candidate {
+    /// A mistake at one decision (`at: Some(n)`, counted in the order of
+    /// the construction) or every one, on the checked plan or on both.
     Mistake {
+        /// The mistake.
         m: Mistake,
+        /// Which of its decisions; `None`: every one.
         at: Option<usize>,
+        /// Made on the velocity plan too (an acceleration answer).
         both: bool,
     },
     /// One vector laid off with a wrong length: the n-th, times `factor`.
-    Slip { at: usize, factor: f64 },
+    Slip {
+        /// Which laid-off vector, in the order of the construction.
+        at: usize,
+        /// Its length over the right one.
+        factor: f64,
+    },
     /// Two mistakes together, each everywhere on the checked plan.
     Pair(Mistake, Mistake),
     /// The other assembly branch of group g.

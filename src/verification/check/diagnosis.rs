@@ -58,6 +58,7 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
             alternatives.insert(0, name);
         }
         return Diagnosis {
+            explanation: mistake.is_some().then_some(best.c),
             mistake,
             step: step_of(best),
             explained: n,
@@ -109,6 +110,7 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
             .count();
         let name = mistake_sentence(best.c, r.mu, &what_of(best));
         return Diagnosis {
+            explanation: (others == 0).then_some(best.c),
             mistake: (others == 0).then(|| name.clone()),
             step: step_of(best),
             explained: n,
@@ -144,6 +146,7 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
     }
     if let Some((f, _)) = best {
         return Diagnosis {
+            explanation: Some(f.c),
             mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f))),
             step: step_of(&f),
             explained: n,
@@ -152,6 +155,7 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
     }
     Diagnosis {
         mistake: None,
+        explanation: None,
         step: None,
         explained: 0,
         alternatives: Vec::new(),

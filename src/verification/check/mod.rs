@@ -22,6 +22,7 @@ mod report;
 pub mod svg;
 mod verdict;
 
+pub use candidates::Candidate as Explanation;
 pub use items::resolve;
 pub use report::{overlay, to_json, to_text};
 pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};

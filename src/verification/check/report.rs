@@ -135,6 +135,7 @@ pub fn to_json(r: &Report) -> serde_json::Value {
         "status": r.status(),
         "diagnosis": r.diagnosis.as_ref().map(|d| serde_json::json!({
             "mistake": d.mistake, "recognised": d.mistake.is_some(),
+            "explanation": d.explanation.map(explanation_json),
             "alternatives": d.alternatives,
             "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
         })),
@@ -203,4 +204,20 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
         &crate::presentation::drawing::DrawOptions::default(),
     )
     .svg
+}
+
+/// A typed explanation as JSON: its kind, and which element or factor.
+fn explanation_json(e: super::Explanation) -> serde_json::Value {
+    use super::Explanation as E;
+    match e {
+        E::Mistake { m, at, both } => {
+            serde_json::json!({ "kind": format!("{m:?}"), "at": at, "both_plans": both })
+        }
+        E::Slip { at, factor } => serde_json::json!({ "kind": "Slip", "at": at, "factor": factor }),
+        E::Pair(a, b) => {
+            serde_json::json!({ "kind": "Pair", "mistakes": [format!("{a:?}"), format!("{b:?}")] })
+        }
+        E::Branch(g) => serde_json::json!({ "kind": "Branch", "group": g + 1 }),
+        E::Scale(f) => serde_json::json!({ "kind": "Scale", "factor": f }),
+    }
 }

@@ -48,6 +48,8 @@ impl Verdict {
 pub struct Diagnosis {
     /// One sentence naming the mistake; `None`: not recognised.
     pub mistake: Option<String>,
+    /// The mistake, typed; `None`: not recognised.
+    pub explanation: Option<super::candidates::Candidate>,
     /// The step of the construction where it enters, and its sentence.
     pub step: Option<(usize, String)>,
     /// How many items the mistaken construction explains.
