@@ -87,6 +87,19 @@ impl Pose {
         )
     }
 
+    /// This pose followed by `rel` (a pose in this pose's frame): the
+    /// world pose of a frame placed at `rel` in this one.
+    pub fn then(&self, rel: &Pose) -> Pose {
+        Pose::new(self.apply(rel.origin.to_vec2()), self.angle + rel.angle)
+    }
+
+    /// The inverse pose: this pose's frame placed in the frame it is given in.
+    pub fn inverse(&self) -> Pose {
+        let angle = -self.angle;
+        let turned = Pose::new(Point::ORIGIN, angle);
+        Pose::new(Point::ORIGIN - turned.dir(self.origin.to_vec2()), angle)
+    }
+
     /// The pose that puts local point `local` at world point `at`, turned by `angle`.
     pub fn through(at: Point, local: Vec2, angle: f64) -> Pose {
         let (sin, cos) = angle.sin_cos();

@@ -22,6 +22,7 @@ fuzz_target!(|data: &[u8]| {
     };
     match &mut scene.positions {
         PositionsSpec::List(v) => v.truncate(MAX_FUZZ_POSITIONS),
+        PositionsSpec::Values(v) => v.truncate(MAX_FUZZ_POSITIONS),
         PositionsSpec::Count { count, .. } => *count = (*count).min(MAX_FUZZ_POSITIONS),
         PositionsSpec::Single => {}
     }

@@ -9,9 +9,12 @@ use crate::error::{Error, Result};
 use crate::geom::{
     LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
 };
+use crate::kinematics::analytic::Coords;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
-use crate::model::structure::{AssurGroup, Conn, Dyad, DyadKind, Joint, Structure, Triad};
+use crate::model::structure::{
+    AssurGroup, Conn, Cylinder, Dyad, DyadKind, InputRole, Joint, Stage, Structure, Triad,
+};
 use crate::presentation::quantity::format_quantity as quantity;
 use kurbo::{Point, Vec2};
 
@@ -40,14 +43,23 @@ pub struct Branches {
     pub triad_pose: Vec<Pose>,
 }
 
-/// Describe an input value for messages: "φ = 123.4°" or "s = 0.05 m",
+/// Describe the input values for messages: "φ = 123.4°" or "s = 0.05 m",
 /// in the shortest decimal that is the value (near a limit, positions a
-/// nano-degree apart must read apart).
-pub fn describe_input(m: &Mechanism, q: f64) -> String {
-    match m.scene.input {
-        InputSpec::Crank { .. } => format!("φ = {}°", q.to_degrees()),
-        InputSpec::Slider { .. } => format!("s = {q} m"),
-    }
+/// nano-degree apart must read apart); several inputs each with its link's
+/// id: "φ1 = 30°, φ4 = 120°".
+pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
+    let several = m.scene.several_inputs();
+    q.iter()
+        .zip(m.scene.inputs())
+        .map(|(&q, spec)| {
+            let id = if several { m.link_id(spec.link()) } else { "" };
+            match spec {
+                InputSpec::Crank { .. } => format!("φ{id} = {}°", q.to_degrees()),
+                InputSpec::Slider { .. } => format!("s{id} = {q} m"),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn sketch(m: &Mechanism, p: usize) -> Point {
@@ -238,9 +250,10 @@ fn dyad_sign(m: &Mechanism, d: &Dyad) -> f64 {
     }
 }
 
-/// Place the input link exactly at its coordinate `q` (rad or m).
-pub fn place_input(m: &Mechanism, q: f64) -> Pose {
-    match m.scene.input {
+/// Place input `i`'s link exactly at its coordinate `q` (rad or m): a
+/// crank about its pivot, a slider on a guide of the frame.
+pub fn place_input(m: &Mechanism, i: usize, q: f64) -> Pose {
+    match *m.scene.input_at(i) {
         InputSpec::Crank { link, pivot, .. } => {
             let pts = &m.links[link].points;
             let other = if pts[0] == pivot { pts[1] } else { pts[0] };
@@ -268,16 +281,83 @@ pub fn sketch_slider_ref(m: &Mechanism, pair: usize) -> Point {
     line.point + line.dir * (p - line.point).dot(line.dir)
 }
 
-/// The input coordinate the sketch itself shows.
-pub fn sketch_input(m: &Mechanism) -> f64 {
-    match m.scene.input {
-        InputSpec::Crank { link, pivot, .. } => {
-            let pts = &m.links[link].points;
-            let other = if pts[0] == pivot { pts[1] } else { pts[0] };
-            (sketch(m, other) - sketch(m, pivot)).atan2()
-        }
-        InputSpec::Slider { .. } => 0.0,
+/// Where the sketch has the slider's point of pair `k` along its guide
+/// line, from the line's point, in the guide's frame: the zero of the
+/// pair's slide.
+pub fn slide_ref(m: &Mechanism, k: usize) -> f64 {
+    let pr = &m.prismatics[k];
+    let q0 = m.links[pr.guide].sketch_pose.local(sketch(m, pr.point));
+    pr.line_dir.dot(q0 - pr.line_point)
+}
+
+/// The slider's pose in its guide's frame when the slider's point of pair
+/// `k` has slid by `x` along the guide from where the sketch has it.
+pub fn slide_pose(m: &Mechanism, k: usize, x: f64) -> Pose {
+    let pr = &m.prismatics[k];
+    let at = pr.line_point + pr.line_dir * (slide_ref(m, k) + x);
+    Pose::through(at.to_point(), pr.slider_local, pr.delta)
+}
+
+/// The pose of the link a driving pair `k` places, its other link
+/// (`known`) at `known_pose` and the slide `x`.
+pub fn place_across(m: &Mechanism, k: usize, known: usize, known_pose: &Pose, x: f64) -> Pose {
+    let rel = slide_pose(m, k, x);
+    if m.prismatics[k].guide == known {
+        known_pose.then(&rel)
+    } else {
+        known_pose.then(&rel.inverse())
     }
+}
+
+/// The input coordinates the sketch itself shows.
+pub fn sketch_input(m: &Mechanism) -> Coords {
+    let q: Vec<f64> = m
+        .scene
+        .inputs()
+        .map(|spec| match *spec {
+            InputSpec::Crank { link, pivot, .. } => {
+                let pts = &m.links[link].points;
+                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                (sketch(m, other) - sketch(m, pivot)).atan2()
+            }
+            InputSpec::Slider { .. } => 0.0,
+        })
+        .collect();
+    Coords::new(&q)
+}
+
+/// The largest step of input `i` in which class III groups are tracked: 2°
+/// of a crank, a hundredth of the smallest class III group of a slider.
+fn triad_step(m: &Mechanism, s: &Structure, need: &[bool], i: usize) -> f64 {
+    match m.scene.input_at(i) {
+        InputSpec::Crank { .. } => 2f64.to_radians(),
+        // A hundredth of the smallest class III group: the groups'
+        // own size, not the sketch's.
+        InputSpec::Slider { .. } => {
+            0.01 * s
+                .groups
+                .iter()
+                .zip(need)
+                .filter_map(|(g, &n)| match g {
+                    AssurGroup::Triad(t) if n => Some(triad_geom(m, t).scale),
+                    _ => None,
+                })
+                .fold(f64::INFINITY, f64::min)
+        }
+    }
+}
+
+/// The change of the input coordinates from `from` to `to`: a crank the
+/// short way round, a slider straight.
+pub fn span(m: &Mechanism, from: &[f64], to: &[f64]) -> Coords {
+    let mut d = Coords::new(to);
+    for ((d, &a), spec) in d.iter_mut().zip(from).zip(m.scene.inputs()) {
+        *d = match spec {
+            InputSpec::Crank { .. } => wrap_pi(*d - a),
+            InputSpec::Slider { .. } => *d - a,
+        };
+    }
+    d
 }
 
 /// The position solver: closed forms per group with the sketch's branches.
@@ -288,8 +368,8 @@ pub struct PositionSolver<'a> {
     /// Which groups to solve (demand-driven).
     pub need: Vec<bool>,
     pub branches: Branches,
-    /// The input coordinate of the last solved position (for tracking).
-    pub last_q: f64,
+    /// The input coordinates of the last solved position (for tracking).
+    pub last_q: Coords,
 }
 
 impl<'a> PositionSolver<'a> {
@@ -311,72 +391,101 @@ impl<'a> PositionSolver<'a> {
             .any(|(g, &n)| n && matches!(g, AssurGroup::Triad(_)))
     }
 
-    /// Solve at input coordinate `q`, reached continuously from the last
-    /// solved position (from the sketch at first), the short way round.
+    /// Solve at input coordinate `q` (a single input), reached
+    /// continuously from the last solved position (from the sketch at
+    /// first), the short way round.
     pub fn solve(&mut self, q: f64) -> Result<Configuration> {
+        self.solve_coords(Coords::one(q))
+    }
+
+    /// Solve at the input coordinates `q`, reached continuously from the
+    /// last solved position (from the sketch at first), each crank the
+    /// short way round.
+    pub fn solve_coords(&mut self, q: Coords) -> Result<Configuration> {
         if self.has_triads() {
             // Track class III groups in small steps so they stay on their branch.
-            let span = match self.m.scene.input {
-                InputSpec::Crank { .. } => wrap_pi(q - self.last_q),
-                InputSpec::Slider { .. } => q - self.last_q,
-            };
-            let step = match self.m.scene.input {
-                InputSpec::Crank { .. } => 2f64.to_radians(),
-                // A hundredth of the smallest class III group: the groups'
-                // own size, not the sketch's.
-                InputSpec::Slider { .. } => {
-                    0.01 * self
-                        .s
-                        .groups
-                        .iter()
-                        .zip(&self.need)
-                        .filter_map(|(g, &n)| match g {
-                            AssurGroup::Triad(t) if n => Some(triad_geom(self.m, t).scale),
-                            _ => None,
-                        })
-                        .fold(f64::INFINITY, f64::min)
+            let span = span(self.m, &self.last_q, &q);
+            let n = span
+                .iter()
+                .enumerate()
+                .map(|(i, d)| (d.abs() / triad_step(self.m, self.s, &self.need, i)).ceil())
+                .fold(0.0, f64::max) as usize;
+            for k in 1..n {
+                let mut qk = self.last_q;
+                for (x, d) in qk.iter_mut().zip(span.iter()) {
+                    *x += d * k as f64 / n as f64;
                 }
-            };
-            let n = (span.abs() / step).ceil() as usize;
-            for i in 1..n {
-                let qi = self.last_q + span * i as f64 / n as f64;
-                self.solve_at(qi)?;
+                self.solve_at_coords(qk)?;
             }
         }
-        let c = self.solve_at(q)?;
+        let c = self.solve_at_coords(q)?;
         self.last_q = q;
         Ok(c)
     }
 
-    /// Solve at `q` from the current tracked state without stepping.
+    /// Solve at `q` (a single input) from the current tracked state
+    /// without stepping.
     pub fn solve_at(&mut self, q: f64) -> Result<Configuration> {
+        self.solve_at_coords(Coords::one(q))
+    }
+
+    /// Solve at the input coordinates `q` from the current tracked state
+    /// without stepping.
+    pub fn solve_at_coords(&mut self, q: Coords) -> Result<Configuration> {
         let m = self.m;
         let mut c = Configuration {
             poses: vec![None; m.links.len()],
         };
         c.poses[m.frame()] = Some(Pose::IDENTITY);
-        c.poses[m.scene.input.link()] = Some(place_input(m, q));
-        for gi in 0..self.s.groups.len() {
+        for &st in &self.s.stages {
+            let gi = match st {
+                Stage::Input(i) => {
+                    match self.s.roles[i] {
+                        InputRole::Frame => {
+                            c.poses[m.scene.input_at(i).link()] = Some(place_input(m, i, q[i]))
+                        }
+                        InputRole::Chained { known, pair } => {
+                            let pr = &m.prismatics[pair];
+                            let other = if pr.guide == known {
+                                pr.slider
+                            } else {
+                                pr.guide
+                            };
+                            let Some(kp) = c.poses[known] else {
+                                continue;
+                            };
+                            c.poses[other] = Some(place_across(m, pair, known, &kp, q[i]));
+                        }
+                        InputRole::InGroup { .. } => {}
+                    }
+                    continue;
+                }
+                Stage::Group(gi) => gi,
+            };
             if !self.need[gi] {
                 continue;
             }
             let sign = self.branches.sign[gi];
             match &self.s.groups[gi] {
-                AssurGroup::Dyad(d) => solve_dyad(m, d, sign, &mut c).map_err(|why| {
-                    let group = format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name());
-                    match why.strip_prefix(SINGULAR) {
-                        Some(why) => {
-                            Error::singular(describe_input(m, q), format!("{group}: {why}"))
+                AssurGroup::Dyad(d) => {
+                    let cyl = d.cylinder.map(|cy| (cy, q[cy.input]));
+                    solve_dyad(m, d, cyl, sign, &mut c).map_err(|why| {
+                        let group =
+                            format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name());
+                        match why.strip_prefix(SINGULAR) {
+                            Some(why) => {
+                                Error::singular(describe_input(m, &q), format!("{group}: {why}"))
+                            }
+                            None => Error::assembly(group, describe_input(m, &q), why),
                         }
-                        None => Error::assembly(group, describe_input(m, q), why),
-                    }
-                })?,
+                    })?
+                }
                 AssurGroup::Triad(t) => {
                     let pose =
                         solve_triad(m, t, self.branches.triad_pose[gi], &mut c).map_err(|why| {
                             Error::assembly(
                                 format!("group {} (class III)", self.s.groups[gi].label(m)),
-                                describe_input(m, q),
+                                describe_input(m, &q),
                                 why,
                             )
                         })?;
@@ -399,10 +508,41 @@ const SINGULAR: &str = "singular: ";
 fn solve_dyad(
     m: &Mechanism,
     d: &Dyad,
+    cyl: Option<(Cylinder, f64)>,
     sign: f64,
     c: &mut Configuration,
 ) -> std::result::Result<(), String> {
     let [l1, l2] = d.links;
+    // A cylinder is one link of variable length: the other of its two
+    // placed in the frame of the one in the dyad's slot, at the slide.
+    let rel = cyl.map(|(cy, x)| {
+        let own = d.links[cy.slot];
+        let sl = slide_pose(m, cy.pair, x);
+        (
+            cy,
+            if m.prismatics[cy.pair].guide == own {
+                sl
+            } else {
+                sl.inverse()
+            },
+        )
+    });
+    // Point p of the group's link in `slot`, carried by `carrier`, in the
+    // frame of the slot's link.
+    let unit_local = |slot: usize, carrier: usize, p: usize| -> Vec2 {
+        match rel {
+            Some((cy, r)) if cy.slot == slot && carrier == cy.other => {
+                r.apply(m.local(cy.other, p)).to_vec2()
+            }
+            _ => m.local(carrier, p),
+        }
+    };
+    // The cylinder's other link, once the slot's link is posed.
+    let place_other = |c: &mut Configuration| {
+        if let Some((cy, r)) = rel {
+            c.poses[cy.other] = Some(c.pose(d.links[cy.slot]).then(&r));
+        }
+    };
     // Tangency (a toggle) is accepted to the rounding of the numbers that
     // meet there: the group's lengths and the coordinates of its joints,
     // never a fraction of the sketch's size.
@@ -421,8 +561,10 @@ fn solve_dyad(
             );
             let b = known_point(m, c, &d.ext1, d.ext1.from);
             let dd = known_point(m, c, &d.ext2, d.ext2.to);
-            let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
-            let r2 = (m.local(l2, pc) - m.local(l2, pd)).hypot();
+            let (b1, c1) = (unit_local(0, l1, pb), unit_local(0, d.mid.from, pc));
+            let (d2, c2) = (unit_local(1, l2, pd), unit_local(1, d.mid.to, pc));
+            let r1 = (c1 - b1).hypot();
+            let r2 = (c2 - d2).hypot();
             let tol = rounding(r1 + r2, &[b, dd]);
             let x = circle_circle(b, r1, dd, r2, sign, tol).ok_or_else(|| {
                 format!(
@@ -436,8 +578,9 @@ fn solve_dyad(
                     quantity(b.distance(dd), "m")
                 )
             })?;
-            set_by_two(m, c, l1, pb, b, pc, x);
-            set_by_two(m, c, l2, pd, dd, pc, x);
+            set_by_two_local(c, l1, b1, b, c1, x);
+            set_by_two_local(c, l2, d2, dd, c2, x);
+            place_other(c);
         }
         DyadKind::Rrp => {
             let (pb, pc) = (point_of(d.ext1.joint), point_of(d.mid.joint));
@@ -446,7 +589,8 @@ fn solve_dyad(
             let b = known_point(m, c, &d.ext1, d.ext1.from);
             let th2 = angle_across(m, k, k2, c.pose(k2).angle);
             let line = slide_line(m, k, k2, &c.pose(k2), th2, m.local(l2, pc));
-            let r1 = (m.local(l1, pc) - m.local(l1, pb)).hypot();
+            let (b1, c1) = (unit_local(0, l1, pb), unit_local(0, d.mid.from, pc));
+            let r1 = (c1 - b1).hypot();
             let tol = rounding(r1, &[b, line.point]);
             let x = circle_line(b, r1, &line, sign, tol).ok_or_else(|| {
                 format!(
@@ -456,7 +600,8 @@ fn solve_dyad(
                     quantity(line.signed_distance(b).abs(), "m")
                 )
             })?;
-            set_by_two(m, c, l1, pb, b, pc, x);
+            set_by_two_local(c, l1, b1, b, c1, x);
+            place_other(c);
             c.poses[l2] = Some(Pose::through(x, m.local(l2, pc), th2));
         }
         DyadKind::Rpr => {
@@ -546,7 +691,19 @@ fn set_by_two(
     q: usize,
     at_q: Point,
 ) {
-    let (lp, lq) = (m.local(link, p), m.local(link, q));
+    set_by_two_local(c, link, m.local(link, p), at_p, m.local(link, q), at_q);
+}
+
+/// Pose a link by two points at local places `lp`, `lq` at known world
+/// places.
+fn set_by_two_local(
+    c: &mut Configuration,
+    link: usize,
+    lp: Vec2,
+    at_p: Point,
+    lq: Vec2,
+    at_q: Point,
+) {
     let (w, l) = (at_q - at_p, lq - lp);
     let angle = w.atan2() - l.atan2();
     // The turn from l to w: its cosine and sine straight from the vectors.

@@ -4,14 +4,14 @@
 //! asks this type, instead of re-deciding from `want`.
 
 use crate::model::mechanism::Mechanism;
-use crate::model::structure::Structure;
+use crate::model::structure::{InputRole, Structure};
 
 /// The groups, links and points a scene wants (see the module's comment).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Demand {
     /// Groups to solve, parallel to `Structure::groups`.
     pub need: Vec<bool>,
-    /// Links solved (the frame, the input and the needed groups' links),
+    /// Links solved (the frame, the inputs and the needed groups' links),
     /// parallel to the mechanism's links.
     pub include: Vec<bool>,
     /// Points reported, in scene order.
@@ -31,14 +31,29 @@ impl Demand {
             None => (0..sc.points.len()).collect(),
         };
         let carriers: Vec<usize> = points.iter().map(|&p| mech.links_of_point(p)[0]).collect();
-        let need = if sc.want.points.is_some() {
+        let mut need = if sc.want.points.is_some() {
             structure.needed_for(&carriers)
         } else {
             vec![true; structure.groups.len()]
         };
         let mut include = vec![false; mech.links.len()];
         include[mech.frame()] = true;
-        include[sc.input.link()] = true;
+        // Every input placed before or between the groups is solved, with
+        // the groups a chained input is placed on.
+        for (i, role) in structure.roles.iter().enumerate() {
+            match *role {
+                InputRole::Frame => include[sc.input_at(i).link()] = true,
+                InputRole::Chained { known, pair } => {
+                    for (n, by) in need.iter_mut().zip(structure.needed_for(&[known])) {
+                        *n |= by;
+                    }
+                    let pr = &mech.prismatics[pair];
+                    include[pr.guide] = true;
+                    include[pr.slider] = true;
+                }
+                InputRole::InGroup { .. } => {}
+            }
+        }
         for (g, grp) in structure.groups.iter().enumerate() {
             if need[g] {
                 for l in grp.links() {

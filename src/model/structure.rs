@@ -1,6 +1,14 @@
 //! Structure: Chebyshev's mobility and the decomposition of the mechanism
-//! into the input mechanism and Assur groups in the order of attachment
+//! into the input mechanisms and Assur groups in the order of attachment
 //! (class II dyads of the five kinds, class III three-leash groups).
+//!
+//! Each input is a mechanism of class I: a crank or a slider on the frame
+//! (I(0,1)); a driving slider on a moving guide is the input pair of its
+//! guide and slider (I(2,3)), their relative slide given. When one of the
+//! two is known before, the pair places the other (a manipulator's
+//! telescopic arm on its crank). When neither is (a hydraulic cylinder
+//! pivoted at both ends), the two are one link of known, variable length
+//! at each instant ("2-3") and enter a class II group as that link.
 
 use crate::error::{Error, Result};
 use crate::model::mechanism::Mechanism;
@@ -84,6 +92,47 @@ pub struct Dyad {
     pub ext1: Conn,
     pub mid: Conn,
     pub ext2: Conn,
+    /// A cylinder standing in for one of the two links.
+    pub cylinder: Option<Cylinder>,
+}
+
+/// A hydraulic cylinder in a class II group: the guide and the slider of a
+/// driving slider, neither known before the group, one link of variable
+/// length (their slide is the input's). `links[slot]` of the dyad is the
+/// one of the two that carries the group's outer pair (ext1 for slot 0,
+/// ext2 for slot 1); `other` is the other one. The middle pair may be on
+/// either.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cylinder {
+    pub slot: usize,
+    pub other: usize,
+    /// The driving prismatic pair (index into `Mechanism::prismatics`).
+    pub pair: usize,
+    /// Which input drives it (in the scene's order of inputs).
+    pub input: usize,
+}
+
+/// How an input enters the structure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum InputRole {
+    /// A crank or a slider on a guide of the frame: a mechanism of class I
+    /// on the frame, known first.
+    Frame,
+    /// A slider on a moving guide: its pair's link `known` is known before
+    /// it, and the pair places the other link.
+    Chained { known: usize, pair: usize },
+    /// A cylinder: a slider on a moving guide whose two links are known
+    /// only through group `group` ([`Cylinder`]).
+    InGroup { group: usize, pair: usize },
+}
+
+/// One stage of the solution, in order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Stage {
+    /// Input i placed (a crank, a slider on the frame, a chained slider).
+    Input(usize),
+    /// Group g solved (a group with a cylinder places its input there).
+    Group(usize),
 }
 
 /// A class III three-leash group: a base link joined to three leashes, each
@@ -108,7 +157,11 @@ impl AssurGroup {
     /// Links in scene order, as the structure formula lists them.
     pub fn links(&self) -> Vec<usize> {
         let mut v = match self {
-            AssurGroup::Dyad(d) => d.links.to_vec(),
+            AssurGroup::Dyad(d) => {
+                let mut v = d.links.to_vec();
+                v.extend(d.cylinder.map(|c| c.other));
+                v
+            }
             AssurGroup::Triad(t) => {
                 let mut v = t.leashes.to_vec();
                 v.push(t.base);
@@ -117,6 +170,14 @@ impl AssurGroup {
         };
         v.sort_unstable();
         v
+    }
+    /// The two links of a cylinder in the group (in the dyad's slot, the
+    /// other).
+    pub fn cylinder(&self) -> Option<(usize, usize)> {
+        match self {
+            AssurGroup::Dyad(d) => d.cylinder.map(|c| (d.links[c.slot], c.other)),
+            AssurGroup::Triad(_) => None,
+        }
     }
     pub fn class(&self) -> u8 {
         match self {
@@ -144,9 +205,20 @@ impl AssurGroup {
             AssurGroup::Triad(t) => t.ext.iter().map(|c| c.from).collect(),
         }
     }
-    /// "II(2,3)" in the Artobolevsky numbering.
+    /// "II(2,3)" in the Artobolevsky numbering; a cylinder reads as one
+    /// link of its two: "II(1,2-3)".
     pub fn label(&self, m: &Mechanism) -> String {
-        let ids: Vec<&str> = self.links().iter().map(|&l| m.link_id(l)).collect();
+        let mut ids: Vec<String> = Vec::new();
+        let cyl = self.cylinder();
+        for l in self.links() {
+            match cyl {
+                Some((a, b)) if l == a.max(b) => continue,
+                Some((a, b)) if l == a.min(b) => {
+                    ids.push(format!("{}-{}", m.link_id(a.min(b)), m.link_id(a.max(b))))
+                }
+                _ => ids.push(m.link_id(l).to_string()),
+            }
+        }
         format!(
             "{}({})",
             if self.class() == 2 { "II" } else { "III" },
@@ -162,23 +234,59 @@ pub struct Structure {
     pub groups: Vec<AssurGroup>,
     /// For every link: the group that determines it (None: frame or input).
     pub owner: Vec<Option<usize>>,
+    /// How each input (in the scene's order) enters.
+    pub roles: Vec<InputRole>,
+    /// The inputs and groups in the order they are solved.
+    pub stages: Vec<Stage>,
+    /// (known link, link placed) of each chained input.
+    pub chained_links: Vec<(usize, usize)>,
 }
 
 impl Structure {
+    /// The structure formula: the mechanisms of class I (joined by "+"),
+    /// then the groups and chained inputs in the order of attachment:
+    /// `I(0,1) -> II(2,3) -> II(4,5)`, `I(0,1) + I(0,4) -> II(2,3)`,
+    /// `I(2,3) -> II(1,2-3)`.
     pub fn formula(&self, m: &Mechanism) -> String {
-        let mut parts = vec![format!(
-            "I({},{})",
-            m.link_id(m.frame()),
-            m.link_id(m.scene.input.link())
-        )];
-        parts.extend(self.groups.iter().map(|g| g.label(m)));
+        let class_one = |i: usize| {
+            let spec = m.scene.input_at(i);
+            let (a, b) = match (self.roles[i], spec) {
+                (InputRole::Frame, _) => (m.frame(), spec.link()),
+                (InputRole::Chained { pair, .. } | InputRole::InGroup { pair, .. }, _) => {
+                    (m.prismatics[pair].guide, m.prismatics[pair].slider)
+                }
+            };
+            format!("I({},{})", m.link_id(a), m.link_id(b))
+        };
+        let first: Vec<String> = (0..self.roles.len())
+            .filter(|&i| !matches!(self.roles[i], InputRole::Chained { .. }))
+            .map(class_one)
+            .collect();
+        let mut parts = vec![first.join(" + ")];
+        for st in &self.stages {
+            match *st {
+                Stage::Input(i) if matches!(self.roles[i], InputRole::Chained { .. }) => {
+                    parts.push(class_one(i))
+                }
+                Stage::Input(_) => {}
+                Stage::Group(g) => parts.push(self.groups[g].label(m)),
+            }
+        }
         parts.join(" -> ")
+    }
+
+    /// The input whose pair is `pair`, driving a cylinder or a chained
+    /// slider (None for the others).
+    pub fn input_of_pair(&self, pair: usize) -> Option<usize> {
+        self.roles.iter().position(|r| {
+            matches!(r, InputRole::Chained { pair: p, .. } | InputRole::InGroup { pair: p, .. } if *p == pair)
+        })
     }
 
     /// Groups needed to know the motion of `links` (with the groups they hang on), in order.
     pub fn needed_for(&self, links: &[usize]) -> Vec<bool> {
         let mut need = vec![false; self.groups.len()];
-        let mut stack: Vec<usize> = links.iter().filter_map(|&l| self.owner[l]).collect();
+        let mut stack: Vec<usize> = links.iter().flat_map(|&l| self.owners(l)).collect();
         while let Some(g) = stack.pop() {
             if !need[g] {
                 need[g] = true;
@@ -186,11 +294,24 @@ impl Structure {
                     self.groups[g]
                         .attachments()
                         .iter()
-                        .filter_map(|&l| self.owner[l]),
+                        .flat_map(|&l| self.owners(l)),
                 );
             }
         }
         need
+    }
+
+    /// The group that determines link `l`; for the link a chained input
+    /// places, the group of the link it is placed on (none for the frame
+    /// and the inputs on it).
+    fn owners(&self, l: usize) -> Option<usize> {
+        if let Some(g) = self.owner[l] {
+            return Some(g);
+        }
+        self.chained_links
+            .iter()
+            .find(|&&(_, placed)| placed == l)
+            .and_then(|&(known, _)| self.owners(known))
     }
 }
 
@@ -199,6 +320,16 @@ pub fn mobility(m: &Mechanism) -> i64 {
     let n = m.links.len() as i64 - 1;
     let p5 = (m.revolutes.len() + m.prismatics.len()) as i64;
     3 * n - 2 * p5
+}
+
+/// The pairs between a candidate set of links `g` and the known links: an
+/// external pair joins a known link to one of `g`, an internal pair two of `g`.
+/// The driving pairs of cylinders (`driven`) are not counted: their motion
+/// is given.
+fn connections_but(m: &Mechanism, g: &[usize], known: &[bool], driven: &[usize]) -> Vec<Conn> {
+    let mut c = connections(m, g, known);
+    c.retain(|c| !matches!(c.joint, Joint::P(k) if driven.contains(&k)));
+    c
 }
 
 /// The pairs between a candidate set of links `g` and the known links: an
@@ -245,14 +376,35 @@ fn connections(m: &Mechanism, g: &[usize], known: &[bool]) -> Vec<Conn> {
     out
 }
 
-fn as_dyad(a: usize, b: usize, conns: &[Conn], known: &[bool]) -> Option<Dyad> {
+/// A unit of the decomposition: one link, or a cylinder's two.
+#[derive(Clone, Copy, Debug)]
+struct Unit {
+    links: [usize; 2],
+    /// The cylinder's pair and input (None: one link, `links[0]`).
+    cylinder: Option<(usize, usize)>,
+}
+
+impl Unit {
+    fn contains(&self, l: usize) -> bool {
+        self.links[0] == l || (self.cylinder.is_some() && self.links[1] == l)
+    }
+    fn members(&self) -> &[usize] {
+        if self.cylinder.is_some() {
+            &self.links
+        } else {
+            &self.links[..1]
+        }
+    }
+}
+
+fn as_dyad(a: Unit, b: Unit, conns: &[Conn], known: &[bool]) -> Option<Dyad> {
     if conns.len() != 3 {
         return None;
     }
-    let ext_of = |l: usize| {
+    let ext_of = |u: Unit| {
         conns
             .iter()
-            .filter(|c| known[c.from] && c.to == l)
+            .filter(|c| known[c.from] && u.contains(c.to))
             .copied()
             .collect::<Vec<_>>()
     };
@@ -262,10 +414,17 @@ fn as_dyad(a: usize, b: usize, conns: &[Conn], known: &[bool]) -> Option<Dyad> {
         return None;
     }
     let mid = mids[0];
-    let mid = if mid.from == a { mid } else { mid.reversed() };
+    if !(a.contains(mid.from) && b.contains(mid.to) || b.contains(mid.from) && a.contains(mid.to)) {
+        return None;
+    }
+    let mid = if a.contains(mid.from) {
+        mid
+    } else {
+        mid.reversed()
+    };
     let mut ext1 = ea[0];
     let mut ext2 = eb[0].reversed();
-    let mut links = [a, b];
+    let mut units = [a, b];
     let mut mid = mid;
     let letters =
         |e1: &Conn, m: &Conn, e2: &Conn| [e1.joint.letter(), m.joint.letter(), e2.joint.letter()];
@@ -279,7 +438,7 @@ fn as_dyad(a: usize, b: usize, conns: &[Conn], known: &[bool]) -> Option<Dyad> {
             // Read the contour from the other end.
             (ext1, ext2) = (ext2.reversed(), ext1.reversed());
             mid = mid.reversed();
-            links = [b, a];
+            units = [b, a];
             if mid.joint.letter() == 'R' {
                 DyadKind::Rrp
             } else {
@@ -288,12 +447,27 @@ fn as_dyad(a: usize, b: usize, conns: &[Conn], known: &[bool]) -> Option<Dyad> {
         }
         _ => return None, // PPP: no definite position
     };
+    // A cylinder's slot link is the one of its two that carries the outer pair.
+    let links = [ext1.to, ext2.from];
+    let cylinder = units.iter().enumerate().find_map(|(slot, u)| {
+        u.cylinder.map(|(pair, input)| Cylinder {
+            slot,
+            other: if u.links[0] == links[slot] {
+                u.links[1]
+            } else {
+                u.links[0]
+            },
+            pair,
+            input,
+        })
+    });
     Some(Dyad {
         kind,
         links,
         ext1,
         mid,
         ext2,
+        cylinder,
     })
 }
 
@@ -334,59 +508,175 @@ fn as_triad(base: usize, leashes: [usize; 3], conns: &[Conn], known: &[bool]) ->
     })
 }
 
-/// Decompose the mechanism; fails with a clear message when W ≠ 1 or the
-/// links do not form class II / III groups.
+/// Decompose the mechanism; fails with a clear message when W is not the
+/// number of inputs or the links do not form class II / III groups.
 pub fn analyse(m: &Mechanism) -> Result<Structure> {
     let dof = mobility(m);
     let nl = m.links.len();
-    if dof != 1 {
-        let why = if dof <= 0 {
-            "the links cannot move (a structure, not a mechanism)"
-        } else {
-            "the mechanism needs more than one input to move definitely"
-        };
-        return Err(Error::structure(format!(
-            "/links: mobility W = 3n - 2p5 = 3*{} - 2*{} = {dof}, but mechplan takes one input: {why}",
+    let inputs: Vec<&InputSpec> = m.scene.inputs().collect();
+    let w = inputs.len() as i64;
+    if dof != w {
+        let count = format!(
+            "mobility W = 3n - 2p5 = 3*{} - 2*{} = {dof}",
             nl - 1,
             m.revolutes.len() + m.prismatics.len()
+        );
+        if w == 1 {
+            let why = if dof <= 0 {
+                "the links cannot move (a structure, not a mechanism)"
+            } else {
+                "the mechanism needs more than one input to move definitely"
+            };
+            return Err(Error::structure(format!(
+                "/links: {count}, but mechplan takes one input: {why}"
+            )));
+        }
+        let why = if dof <= 0 {
+            "the links cannot move (a structure, not a mechanism)".to_string()
+        } else if dof > w {
+            format!(
+                "{} more input(s) are needed to move the mechanism definitely",
+                dof - w
+            )
+        } else {
+            format!(
+                "{} input(s) too many: the mechanism cannot follow them all",
+                w - dof
+            )
+        };
+        return Err(Error::structure(format!(
+            "/input: the scene gives {w} inputs, but the {count}: {why}"
         )));
     }
     let mut known = vec![false; nl];
     let mut owner = vec![None; nl];
     known[m.frame()] = true;
-    let input = m.scene.input.link();
-    known[input] = true;
-    // The input must hang on the frame by one pair.
-    let c = connections(m, &[input], &{
+    let only_frame = {
         let mut k = vec![false; nl];
         k[m.frame()] = true;
         k
-    });
-    let ok = match &m.scene.input {
-        InputSpec::Crank { pivot, .. } => c.len() == 1 && c[0].joint == Joint::R(*pivot),
-        InputSpec::Slider { pair, .. } => c.len() == 1 && c[0].joint == Joint::P(*pair),
     };
-    if !ok {
-        return Err(Error::structure(format!(
-            "/input/link: the input link \"{}\" must be joined to the frame by exactly its driving pair",
-            m.link_id(input)
-        )));
+    let pointer = |i: usize| {
+        if w == 1 {
+            "/input".to_string()
+        } else {
+            format!("/input/{i}")
+        }
+    };
+    let mut roles = vec![InputRole::Frame; inputs.len()];
+    let mut stages = Vec::new();
+    // Driving pairs on moving guides, not yet placed: (input, pair).
+    let mut pending: Vec<(usize, usize)> = Vec::new();
+    let mut chained_links: Vec<(usize, usize)> = Vec::new();
+    for (i, spec) in inputs.iter().enumerate() {
+        let link = spec.link();
+        let on_frame = match spec {
+            InputSpec::Crank { .. } => true,
+            InputSpec::Slider { pair, .. } => m.prismatics[*pair].guide == m.frame(),
+        };
+        if !on_frame {
+            let InputSpec::Slider { pair, .. } = spec else {
+                unreachable!("a crank turns about the frame")
+            };
+            pending.push((i, *pair));
+            continue;
+        }
+        // The input must hang on the frame by one pair.
+        let c = connections(m, &[link], &only_frame);
+        let ok = match spec {
+            InputSpec::Crank { pivot, .. } => c.len() == 1 && c[0].joint == Joint::R(*pivot),
+            InputSpec::Slider { pair, .. } => c.len() == 1 && c[0].joint == Joint::P(*pair),
+        };
+        if !ok {
+            return Err(Error::structure(format!(
+                "{}/link: the input link \"{}\" must be joined to the frame by exactly its driving pair",
+                pointer(i),
+                m.link_id(link)
+            )));
+        }
+        known[link] = true;
+        stages.push(Stage::Input(i));
     }
     let mut groups: Vec<AssurGroup> = Vec::new();
     loop {
-        let unknown: Vec<usize> = (0..nl).filter(|&l| !known[l]).collect();
-        if unknown.is_empty() {
+        // A driving pair with one of its links known places the other.
+        let mut chained = false;
+        for k in 0..pending.len() {
+            let (i, pair) = pending[k];
+            let pr = &m.prismatics[pair];
+            let (g, sl) = (pr.guide, pr.slider);
+            match (known[g], known[sl]) {
+                (true, true) => {
+                    return Err(Error::structure(format!(
+                        "{}/link: the slider \"{}\" and its guide \"{}\" are both determined without this input: it cannot drive them",
+                        pointer(i),
+                        m.link_id(sl),
+                        m.link_id(g)
+                    )));
+                }
+                (true, false) | (false, true) => {
+                    let (kn, other) = if known[g] { (g, sl) } else { (sl, g) };
+                    roles[i] = InputRole::Chained { known: kn, pair };
+                    chained_links.push((kn, other));
+                    known[other] = true;
+                    stages.push(Stage::Input(i));
+                    pending.remove(k);
+                    chained = true;
+                    break;
+                }
+                (false, false) => {}
+            }
+        }
+        if chained {
+            continue;
+        }
+        let driven: Vec<usize> = pending.iter().map(|&(_, p)| p).collect();
+        // The units: single links, and the cylinders' two links as one, in
+        // the order of their first link.
+        let mut units: Vec<Unit> = Vec::new();
+        for l in (0..nl).filter(|&l| !known[l]) {
+            if units.iter().any(|u| u.contains(l)) {
+                continue;
+            }
+            let cyl = pending.iter().find(|&&(_, p)| {
+                let pr = &m.prismatics[p];
+                pr.guide == l || pr.slider == l
+            });
+            units.push(match cyl {
+                Some(&(i, p)) => {
+                    let pr = &m.prismatics[p];
+                    Unit {
+                        links: [l, if pr.guide == l { pr.slider } else { pr.guide }],
+                        cylinder: Some((p, i)),
+                    }
+                }
+                None => Unit {
+                    links: [l, l],
+                    cylinder: None,
+                },
+            });
+        }
+        if units.is_empty() {
             break;
         }
         let mut found = None;
-        'dyads: for (i, &a) in unknown.iter().enumerate() {
-            for &b in &unknown[i + 1..] {
-                if let Some(d) = as_dyad(a, b, &connections(m, &[a, b], &known), &known) {
+        'dyads: for (i, &a) in units.iter().enumerate() {
+            for &b in &units[i + 1..] {
+                if a.cylinder.is_some() && b.cylinder.is_some() {
+                    continue;
+                }
+                let set: Vec<usize> = a.members().iter().chain(b.members()).copied().collect();
+                if let Some(d) = as_dyad(a, b, &connections_but(m, &set, &known, &driven), &known) {
                     found = Some(AssurGroup::Dyad(d));
                     break 'dyads;
                 }
             }
         }
+        let unknown: Vec<usize> = units
+            .iter()
+            .filter(|u| u.cylinder.is_none())
+            .map(|u| u.links[0])
+            .collect();
         if found.is_none() {
             'triads: for &base in &unknown {
                 let adj: Vec<usize> = unknown
@@ -413,9 +703,28 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
             }
         }
         let Some(g) = found else {
-            let ids: Vec<&str> = unknown.iter().map(|&l| m.link_id(l)).collect();
+            let ids: Vec<&str> = (0..nl)
+                .filter(|&l| !known[l])
+                .map(|l| m.link_id(l))
+                .collect();
+            let cylinders = if pending.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " (a hydraulic cylinder — {} — enters a class II group as one link of variable length, joined to it by revolute pairs)",
+                    pending
+                        .iter()
+                        .map(|&(_, p)| format!(
+                            "links {} and {}",
+                            m.link_id(m.prismatics[p].guide),
+                            m.link_id(m.prismatics[p].slider)
+                        ))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            };
             return Err(Error::structure(format!(
-                "/links: links {} do not decompose into Assur groups of class II (dyads) or III (three-leash groups) attached to {}",
+                "/links: links {} do not decompose into Assur groups of class II (dyads) or III (three-leash groups) attached to {}{cylinders}",
                 ids.join(", "),
                 (0..nl)
                     .filter(|&l| known[l])
@@ -435,11 +744,39 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
                 g.label(m)
             )));
         }
+        if let AssurGroup::Dyad(d) = &g
+            && let Some(c) = d.cylinder
+        {
+            let by_revolutes = matches!((d.kind, c.slot), (DyadKind::Rrr, _) | (DyadKind::Rrp, 0));
+            if !by_revolutes {
+                return Err(Error::structure(format!(
+                    "{}/link: group {} ({}) holds the cylinder {}-{} joined to it by a prismatic pair; mechplan solves a cylinder joined to its group by revolute pairs (kinds RRR, RRP)",
+                    pointer(c.input),
+                    g.label(m),
+                    d.kind.name(),
+                    m.link_id(m.prismatics[c.pair].guide),
+                    m.link_id(m.prismatics[c.pair].slider)
+                )));
+            }
+            roles[c.input] = InputRole::InGroup {
+                group: groups.len(),
+                pair: c.pair,
+            };
+            pending.retain(|&(i, _)| i != c.input);
+        }
         for l in g.links() {
             known[l] = true;
             owner[l] = Some(groups.len());
         }
+        stages.push(Stage::Group(groups.len()));
         groups.push(g);
     }
-    Ok(Structure { dof, groups, owner })
+    Ok(Structure {
+        dof,
+        groups,
+        owner,
+        roles,
+        stages,
+        chained_links,
+    })
 }

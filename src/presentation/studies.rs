@@ -41,7 +41,7 @@ pub fn centres_table(an: &Analysis, solved: &[Solved], position: Option<usize>) 
         out += &format!(
             "position {}: {}\n  centre   place                                        found by                                   sin θ\n",
             k + 1,
-            crate::kinematics::positions::describe_input(m, s.q)
+            crate::kinematics::positions::describe_input(m, &s.drives.coords())
         );
         for c in &cs.found {
             let (p, sub) = name(m, c);

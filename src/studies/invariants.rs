@@ -180,6 +180,12 @@ pub struct Output<'a> {
 impl<'a> Output<'a> {
     pub fn new(an: &'a Analysis, out: usize) -> Result<Output<'a>> {
         let m = &an.mech;
+        if m.scene.several_inputs() {
+            return Err(Error::scene(
+                "/input",
+                "motion-law invariants and diagrams over a revolution are defined for a single crank input; this scene has several inputs",
+            ));
+        }
         if !matches!(m.scene.input, InputSpec::Crank { .. }) {
             return Err(Error::scene(
                 "/input",
@@ -463,7 +469,7 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
         let pk = peaks(&law, (n / 4).max(64));
         if !(pk.b.is_finite() && pk.c.is_finite() && pk.d.is_finite()) {
             return Err(Error::singular(
-                crate::kinematics::positions::describe_input(m, p0),
+                crate::kinematics::positions::describe_input(m, &[p0]),
                 format!("the {} phase could not be evaluated", kind.name()),
             ));
         }

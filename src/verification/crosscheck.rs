@@ -7,7 +7,7 @@
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
-use crate::kinematics::analytic::{Drive, Motion, Order, contour};
+use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::positions::{PositionSolver, describe_input};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::mechanism::Mechanism;
@@ -106,7 +106,7 @@ impl Analysis {
         s: &Solved,
         other: &[Option<Motion>],
         costs: Costs,
-        q_rounding: f64,
+        q_rounding: Coords,
         changed: &ChangedData,
     ) -> Result<CrossCheck> {
         let m = &self.mech;
@@ -119,7 +119,7 @@ impl Analysis {
         }
         if d.is_nan() || d > MAX_REL_DIFF {
             return Err(Error::singular(
-                describe_input(m, s.q),
+                describe_input(m, &s.drives.coords()),
                 format!(
                     "the two analytic routes disagree ({worst}: relative difference {d:.2e}); the position is too close to a singular one to trust either"
                 ),
@@ -127,7 +127,7 @@ impl Analysis {
         }
         let sens = self
             .data_sensitivity(s, q_rounding, changed)
-            .map_err(|why| Error::singular(describe_input(m, s.q), why))?;
+            .map_err(|why| Error::singular(describe_input(m, &s.drives.coords()), why))?;
         let bound = self.bounds(s, costs.conditioning, d, sens);
         Ok(CrossCheck {
             max_rel_diff: d,
@@ -173,7 +173,13 @@ impl Analysis {
             x
         };
         let (sv, sa) = (scale(&s.motion, false), scale(&s.motion, true));
-        let (sq, sqq) = (scale(&s.analogue, false), scale(&s.analogue, true));
+        // The transfer functions of every input (and the mixed runs).
+        let runs = std::iter::once(&s.analogue)
+            .chain(&s.more_analogues)
+            .chain(&s.mixed);
+        let (sq, sqq) = runs.fold((f64::MIN_POSITIVE, f64::MIN_POSITIVE), |(a, b), mo| {
+            (a.max(scale(mo, false)), b.max(scale(mo, true)))
+        });
         Bounds {
             p: rel * size,
             v: rel * sv,
@@ -246,7 +252,7 @@ impl Analysis {
     fn data_sensitivity(
         &self,
         s: &Solved,
-        q_rounding: f64,
+        q_rounding: Coords,
         changed: &ChangedData,
     ) -> std::result::Result<f64, String> {
         let order = self.order.unwrap_or(Order::Velocity);
@@ -255,26 +261,22 @@ impl Analysis {
         for (an, sign) in changed.iter().zip([1.0, -1.0]) {
             // The input moves with the data, by as many units of its own
             // rounding (exact reductions leave an ulp of the angle).
-            let q = s.q + sign * units * q_rounding;
+            let mut q = s.drives.coords();
+            for (q, r) in q.iter_mut().zip(q_rounding.iter()) {
+                *q += sign * units * r;
+            }
+            let mut drives = s.drives;
+            for (d, &q) in drives.iter_mut().zip(q.iter()) {
+                d.q = q;
+            }
             let moved = an
                 .as_ref()
                 .map_err(|e| e.clone())
                 .and_then(|an| {
                     let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())
                         .map_err(|e| e.to_string())?;
-                    let c = ps.solve(q).map_err(|e| e.to_string())?;
-                    contour::solve(
-                        &an.mech,
-                        &an.structure,
-                        &an.need,
-                        &c,
-                        Drive {
-                            q,
-                            rate: s.rate,
-                            rate2: s.rate2,
-                        },
-                        order,
-                    )
+                    let c = ps.solve_coords(q).map_err(|e| e.to_string())?;
+                    contour::solve(&an.mech, &an.structure, &an.need, &c, drives, order)
                     .map(|mo| (an, mo))
                     .map_err(|e| e.to_string())
                 })

@@ -19,7 +19,8 @@
 //! Φ_q·q̈ = γ by Gaussian elimination with partial pivoting.
 
 use crate::error::{Error, Result};
-use crate::kinematics::analytic::equations::{Equations, Number, Pose, Prism, Vector};
+use crate::kinematics::analytic::Coords;
+use crate::kinematics::analytic::equations::{Constraint, Equations, Number, Pose, Prism, Vector};
 use crate::kinematics::positions::{Configuration, PositionSolver, describe_input};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::{Direction, InputSpec, Through};
@@ -302,8 +303,8 @@ pub struct Reference<'a> {
     local: Vec<Vec<V2>>,
     /// Route (b)'s equations in extended precision.
     eq: Equations<Real>,
-    rate: Real,
-    rate2: Real,
+    /// Each input's (rate, rate of rate), in the scene's order.
+    rates: Vec<(Real, Real)>,
     size: Real,
     ps: PositionSolver<'a>,
 }
@@ -479,34 +480,45 @@ impl<'a> Reference<'a> {
             });
         }
         // Unknowns and equations as route (b) has them.
+        let sketch_pose = |l: usize| {
+            let origin = match m.links[l].points.first() {
+                Some(&p) if l != m.frame() => sketch[p].clone(),
+                _ => V2::zero(),
+            };
+            Pose::new(origin, sketch_angle[l].clone())
+        };
         let eq = Equations::new(
             m,
             &an.include,
             local_of,
             |k| prism[k].clone(),
             |p| sketch[p].clone(),
+            sketch_pose,
         );
-        let (rate, rate2) = match sc.input {
-            InputSpec::Crank { omega, epsilon, .. } => {
-                (Real::from_f64(omega), Real::from_f64(epsilon))
-            }
-            InputSpec::Slider { v, a, .. } => (length(v), length(a)),
-        };
+        let rates = sc
+            .inputs()
+            .map(|i| match *i {
+                InputSpec::Crank { omega, epsilon, .. } => {
+                    (Real::from_f64(omega), Real::from_f64(epsilon))
+                }
+                InputSpec::Slider { v, a, .. } => (length(v), length(a)),
+            })
+            .collect();
         let ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
         Ok(Reference {
             an,
             local,
             eq,
-            rate,
-            rate2,
+            rates,
             size: Real::from_f64(m.size),
             ps,
         })
     }
 
-    /// The input's rates (ω1, ε1) or (v, a) as the reference takes them.
+    /// The (first) input's rates (ω1, ε1) or (v, a) as the reference takes
+    /// them.
     pub fn rates(&self) -> (Real, Real) {
-        (self.rate.clone(), self.rate2.clone())
+        self.rates[0].clone()
     }
 
     /// Solve at the input coordinate `q` (rad or m), an exact binary value.
@@ -516,8 +528,15 @@ impl<'a> Reference<'a> {
 
     /// Solve at the input coordinate `q` given in extended precision.
     pub fn solve(&mut self, q: &Real) -> Result<RefState> {
-        let c = self.ps.solve(q.to_f64())?;
-        self.refine(q, &c)
+        self.solve_coords(std::slice::from_ref(q))
+    }
+
+    /// Solve at the input coordinates `q` (one per input) given in
+    /// extended precision.
+    pub fn solve_coords(&mut self, q: &[Real]) -> Result<RefState> {
+        let qf: Vec<f64> = q.iter().map(|x| x.to_f64()).collect();
+        let c = self.ps.solve_coords(Coords::new(&qf))?;
+        self.refine_coords(q, &c)
     }
 
     /// The start of the reference at each of `qs`, in order: the double
@@ -527,12 +546,22 @@ impl<'a> Reference<'a> {
         qs.iter().map(|&q| self.ps.solve(q)).collect()
     }
 
+    /// [`Reference::starts`] of several inputs.
+    pub fn starts_coords(&mut self, qs: &[Coords]) -> Result<Vec<Configuration>> {
+        qs.iter().map(|&q| self.ps.solve_coords(q)).collect()
+    }
+
     /// Newton's method in extended precision from the double precision
     /// position `c` at `q`, then velocities and accelerations. Independent
     /// of any other position, so positions can be refined in parallel.
     pub fn refine(&self, q: &Real, c: &Configuration) -> Result<RefState> {
+        self.refine_coords(std::slice::from_ref(q), c)
+    }
+
+    /// [`Reference::refine`] at the input coordinates `q` (one per input).
+    pub fn refine_coords(&self, q: &[Real], c: &Configuration) -> Result<RefState> {
         let m = &self.an.mech;
-        let qf = q.to_f64();
+        let qf: Vec<f64> = q.iter().map(|x| x.to_f64()).collect();
         let mut x: Vec<Real> = Vec::with_capacity(3 * self.eq.links.len());
         for &l in &self.eq.links {
             let p = c.pose(l);
@@ -543,7 +572,7 @@ impl<'a> Reference<'a> {
         let fail = |why: String| {
             Error::assembly(
                 "the mechanism (extended-precision reference)",
-                describe_input(m, qf),
+                describe_input(m, &qf),
                 why,
             )
         };
@@ -582,9 +611,19 @@ impl<'a> Reference<'a> {
         let j = self.jacobian(&poses);
         let n = j.len();
         let mut b = vec![Real::zero(); n];
-        b[n - 1] = self.rate.clone();
+        let mut row = 0;
+        for c in &self.eq.cons {
+            match c {
+                Constraint::Driver(i) => {
+                    b[row] = self.rates[*i].0.clone();
+                    row += 1;
+                }
+                _ => row += 2,
+            }
+        }
         let xd = gauss(j.clone(), b).ok_or_else(|| fail("singular Jacobian".into()))?;
-        let g = self.eq.gamma(&poses, &xd, &self.rate2);
+        let acc: Vec<Real> = self.rates.iter().map(|r| r.1.clone()).collect();
+        let g = self.eq.gamma(&poses, &xd, &acc);
         let xdd = gauss(j, g).ok_or_else(|| fail("singular Jacobian".into()))?;
         let mut links = vec![None; m.links.len()];
         links[m.frame()] = Some(RefMotion {
@@ -606,7 +645,7 @@ impl<'a> Reference<'a> {
             });
         }
         Ok(RefState {
-            q: q.clone(),
+            q: q[0].clone(),
             links,
             local: self.local.clone(),
             points_of: m.links.iter().map(|l| l.points.clone()).collect(),

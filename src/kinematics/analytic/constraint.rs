@@ -9,11 +9,11 @@
 //! for f64 and for the extended-precision reference.
 
 use super::equations::{Constraint, Equations, Prism, Vector};
-use super::{Motion, Order};
+use super::{Coords, Motion, Order};
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
-use crate::geom::{Pose, wrap_pi};
-use crate::kinematics::positions::{describe_input, sketch_input};
+use crate::geom::Pose;
+use crate::kinematics::positions::{describe_input, sketch_input, span as input_span};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
@@ -53,7 +53,11 @@ pub struct ConstraintSolver<'a> {
     /// The unknowns and equations ([`super::equations`], in f64).
     eq: Equations<f64>,
     q: DVector<f64>,
-    last_input: f64,
+    /// The input coordinates of the last solved position (None before
+    /// the first).
+    last_input: Option<Coords>,
+    /// (input, row) of each driver's equation.
+    driver_rows: Vec<(usize, usize)>,
     settings: Settings,
     /// Each solved link's own size ([`Mechanism::link_scale`]), parallel to
     /// the links solved.
@@ -84,6 +88,10 @@ impl<'a> ConstraintSolver<'a> {
                 }
             },
             |p| v(m.scene.points[p].sketch.to_vec2()),
+            |l| {
+                let p = m.links[l].sketch_pose;
+                super::equations::Pose::new(Vector::new(p.origin.x, p.origin.y), p.angle)
+            },
         );
         let mut q = DVector::zeros(3 * eq.links.len());
         for (i, &l) in eq.links.iter().enumerate() {
@@ -93,11 +101,23 @@ impl<'a> ConstraintSolver<'a> {
             q[3 * i + 2] = p.angle;
         }
         let scale = eq.links.iter().map(|&l| m.link_scale(l)).collect();
+        let mut driver_rows = Vec::new();
+        let mut row = 0;
+        for c in &eq.cons {
+            match c {
+                Constraint::Driver(i) => {
+                    driver_rows.push((*i, row));
+                    row += 1;
+                }
+                _ => row += 2,
+            }
+        }
         ConstraintSolver {
             m,
             eq,
             q,
-            last_input: f64::NAN,
+            last_input: None,
+            driver_rows,
             settings,
             scale,
             conditioning: 1.0,
@@ -109,9 +129,9 @@ impl<'a> ConstraintSolver<'a> {
         self.eq.rows()
     }
 
-    /// Constraint residuals Φ(q) at input coordinate `x`.
-    fn residual(&self, q: &DVector<f64>, x: f64) -> DVector<f64> {
-        DVector::from_vec(self.eq.residual(&self.eq.poses(q.as_slice()), &x))
+    /// Constraint residuals Φ(q) at input coordinates `x`.
+    fn residual(&self, q: &DVector<f64>, x: &[f64]) -> DVector<f64> {
+        DVector::from_vec(self.eq.residual(&self.eq.poses(q.as_slice()), x))
     }
 
     /// The Jacobian ∂Φ/∂q (analytic).
@@ -123,9 +143,9 @@ impl<'a> ConstraintSolver<'a> {
     }
 
     /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in q̇).
-    fn gamma(&self, q: &DVector<f64>, qd: &DVector<f64>, input_acc: f64) -> DVector<f64> {
+    fn gamma(&self, q: &DVector<f64>, qd: &DVector<f64>, input_acc: &[f64]) -> DVector<f64> {
         let p = self.eq.poses(q.as_slice());
-        DVector::from_vec(self.eq.gamma(&p, qd.as_slice(), &input_acc))
+        DVector::from_vec(self.eq.gamma(&p, qd.as_slice(), input_acc))
     }
 
     /// The scale of each row: a length for the rows that close points, a
@@ -142,7 +162,7 @@ impl<'a> ConstraintSolver<'a> {
                     let l = size_of(pr.slider).max(size_of(pr.guide));
                     out.extend([l.max(f64::MIN_POSITIVE), 1.0]);
                 }
-                Constraint::Driver => out.push(match m.scene.input {
+                Constraint::Driver(i) => out.push(match *m.scene.input_at(*i) {
                     InputSpec::Crank { link, .. } => size_of(link),
                     InputSpec::Slider { .. } => 1.0,
                 }),
@@ -195,7 +215,7 @@ impl<'a> ConstraintSolver<'a> {
     /// fails when the corrections stop contracting (`strict`: each at most
     /// half the one before, as the path follower demands of its corrector)
     /// or after `max_iter`.
-    fn newton(&mut self, x: f64, strict: bool) -> std::result::Result<usize, String> {
+    fn newton(&mut self, x: &[f64], strict: bool) -> std::result::Result<usize, String> {
         let s = self.settings;
         let floor = s.tol.max(4.0 * f64::EPSILON);
         let mut last = f64::INFINITY;
@@ -246,11 +266,11 @@ impl<'a> ConstraintSolver<'a> {
         let angles = (0..self.eq.links.len())
             .map(|i| self.q[3 * i + 2].abs())
             .fold(size, f64::max);
-        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
+        let sc = &self.m.scene;
         let angle_rows = self.eq.cons.iter().flat_map(|c| match c {
             Constraint::Revolute { .. } => [Some(false), Some(false)],
             Constraint::Prismatic(_) => [Some(true), Some(false)],
-            Constraint::Driver => [Some(crank), None],
+            Constraint::Driver(i) => [Some(sc.input_at(*i).is_crank()), None],
         });
         r.iter()
             .zip(angle_rows.flatten())
@@ -267,15 +287,17 @@ impl<'a> ConstraintSolver<'a> {
         x
     }
 
-    /// The tangent of the path, dq/dx from Φ_q·q' = −∂Φ/∂x (the driver's
-    /// row alone depends on x), and the sign of det Φ_q: the sign of the
-    /// assembly's orientation, which changes only where the path meets a
-    /// singular position (where two assemblies meet).
-    fn tangent(&self) -> Option<(DVector<f64>, f64)> {
+    /// The tangent of the path, dq/dx from Φ_q·q' = −∂Φ/∂x (the drivers'
+    /// rows alone depend on x: each by its input's rate along the path,
+    /// `dx`), and the sign of det Φ_q: the sign of the assembly's
+    /// orientation, which changes only where the path meets a singular
+    /// position (where two assemblies meet).
+    fn tangent(&self, dx: &[f64]) -> Option<(DVector<f64>, f64)> {
         let j = self.jacobian(&self.q);
         let mut b = DVector::zeros(self.rows());
-        let last = b.len() - 1;
-        b[last] = 1.0;
+        for &(i, row) in &self.driver_rows {
+            b[row] = dx[i];
+        }
         let lu = j.lu();
         let u = lu.u();
         let mut sign: f64 = lu.p().determinant();
@@ -286,49 +308,63 @@ impl<'a> ConstraintSolver<'a> {
     }
 
     /// A direction on the path in the links' own lengths (x, y over the
-    /// link's size, θ, and the input over its own scale), of unit length,
-    /// to measure how the path turns.
-    fn unit_direction(&self, t: &DVector<f64>, dx: f64) -> DVector<f64> {
-        let mut d = DVector::zeros(t.len() + 1);
+    /// link's size, θ, and each input over its own scale), of unit length,
+    /// to measure how the path turns: `t` the tangent, `dx` the inputs'
+    /// rates along the path over their scales.
+    fn unit_direction(&self, t: &DVector<f64>, dx: &[f64]) -> DVector<f64> {
+        let mut d = DVector::zeros(t.len() + dx.len());
         for i in 0..self.eq.links.len() {
             d[3 * i] = t[3 * i] / self.scale[i];
             d[3 * i + 1] = t[3 * i + 1] / self.scale[i];
             d[3 * i + 2] = t[3 * i + 2];
         }
-        d[t.len()] = dx;
+        for (k, x) in dx.iter().enumerate() {
+            d[t.len() + k] = *x;
+        }
         let n = d.norm();
         if n > 0.0 { d / n } else { d }
     }
 
-    /// Positions at input coordinate `x`, reached by continuation from the
-    /// previous solve (from the sketch at first), the short way round.
+    /// Positions at input coordinate `x` (a single input), reached by
+    /// continuation from the previous solve (from the sketch at first),
+    /// the short way round.
     pub fn solve_positions(&mut self, x: f64) -> Result<()> {
-        let last = self.last_input();
-        let span = match self.m.scene.input {
-            InputSpec::Crank { .. } => wrap_pi(x - last),
-            InputSpec::Slider { .. } => x - last,
-        };
-        self.solve_positions_by(x, span)
+        self.solve_positions_at(Coords::one(x))
     }
 
-    /// Positions at input coordinate `x`, reached from the previous solve
-    /// by turning the input through `span` (which way round a rocking
-    /// crank goes is the caller's: the way the mechanism assembles).
+    /// Positions at input coordinates `x`, reached by continuation from
+    /// the previous solve (from the sketch at first), each crank the short
+    /// way round.
+    pub fn solve_positions_at(&mut self, x: Coords) -> Result<()> {
+        let span = input_span(self.m, &self.last_inputs(), &x);
+        self.solve_positions_along(x, span)
+    }
+
+    /// Positions at input coordinate `x` (a single input), reached from
+    /// the previous solve by turning the input through `span` (which way
+    /// round a rocking crank goes is the caller's: the way the mechanism
+    /// assembles).
     pub fn solve_positions_by(&mut self, x: f64, span: f64) -> Result<()> {
+        self.solve_positions_along(Coords::one(x), Coords::one(span))
+    }
+
+    /// Positions at input coordinates `x`, reached from the previous solve
+    /// by moving the inputs through `span` (straight in the inputs).
+    pub fn solve_positions_along(&mut self, x: Coords, span: Coords) -> Result<()> {
         let err = |why: String| {
             Error::assembly(
                 "the mechanism (constraint solver)",
-                describe_input(self.m, x),
+                describe_input(self.m, &x),
                 why,
             )
         };
-        if self.last_input.is_nan() {
+        if self.last_input.is_none() {
             let x0 = sketch_input(self.m);
-            self.newton(x0, false).map_err(err)?;
-            self.last_input = x0;
+            self.newton(&x0, false).map_err(err)?;
+            self.last_input = Some(x0);
         }
-        self.walk(span).map_err(err)?;
-        self.last_input = x;
+        self.walk(&span).map_err(err)?;
+        self.last_input = Some(x);
         self.turn_back();
         Ok(())
     }
@@ -348,52 +384,111 @@ impl<'a> ConstraintSolver<'a> {
         }
     }
 
-    /// The input coordinate of the last solved position (the sketch's
-    /// before the first).
+    /// The first input's coordinate of the last solved position (the
+    /// sketch's before the first).
     pub fn last_input(&self) -> f64 {
-        if self.last_input.is_nan() {
-            sketch_input(self.m)
-        } else {
-            self.last_input
-        }
+        self.last_inputs().first()
     }
 
-    /// Follow the assembly along the input from the last solved coordinate
-    /// by `span`: a predictor along the path's tangent, Newton's corrector,
-    /// and step control. A step is halved when the path turns by more than
-    /// [`MAX_TURN`] over it, when the corrector does not contract (each
-    /// correction at most half the last), or when the Jacobian is singular
-    /// on the way; it grows again after easy steps. So a narrow neck (a
-    /// near-toggle, a change point passed at 1e-11) is passed on the same
-    /// assembly in steps as small as the neck, and open country in steps
-    /// up to 5° (or 5 % of the input link's size).
+    /// The input coordinates of the last solved position (the sketch's
+    /// before the first).
+    pub fn last_inputs(&self) -> Coords {
+        self.last_input.unwrap_or_else(|| sketch_input(self.m))
+    }
+
+    /// Follow the assembly along the inputs from the last solved
+    /// coordinates by `span`: a predictor along the path's tangent,
+    /// Newton's corrector, and step control. A step is halved when the
+    /// path turns by more than [`MAX_TURN`] over it, when the corrector
+    /// does not contract (each correction at most half the last), or when
+    /// the Jacobian is singular on the way; it grows again after easy
+    /// steps. So a narrow neck (a near-toggle, a change point passed at
+    /// 1e-11) is passed on the same assembly in steps as small as the
+    /// neck, and open country in steps up to 5° (or 5 % of the input
+    /// link's size).
     ///
     /// This is the same branch that route (a) takes by its sign rule: the
     /// orientation sign of a group (docs/analysis.md) changes only through
     /// a toggle, where the two assemblies meet; a path that never meets
     /// the other assembly keeps its sign.
-    fn walk(&mut self, span: f64) -> std::result::Result<(), String> {
-        let crank = matches!(self.m.scene.input, InputSpec::Crank { .. });
-        let input_scale = if crank {
-            1.0
-        } else {
-            let l = self.m.scene.input.link();
-            self.eq.slot[l].map_or(self.m.size, |i| self.scale[i])
+    ///
+    /// The path's parameter x: a single input's own coordinate; several
+    /// inputs move together, straight from the start to the end, as x goes
+    /// from 0 to 1.
+    fn walk(&mut self, span: &[f64]) -> std::result::Result<(), String> {
+        let m = self.m;
+        let from = self.last_inputs();
+        let several = span.len() > 1;
+        // Each input's own scale and largest step: a crank in radians, a
+        // slider in its link's size.
+        let scale_of = |i: usize| -> f64 {
+            let spec = m.scene.input_at(i);
+            if spec.is_crank() {
+                1.0
+            } else {
+                let l = spec.link();
+                self.eq.slot[l].map_or(m.size, |k| self.scale[k])
+            }
         };
-        let max_step = if crank {
-            ACCURACY.max_path_step.to_radians()
-        } else {
-            0.01 * ACCURACY.max_path_step * input_scale
+        let step_of = |i: usize| -> f64 {
+            if m.scene.input_at(i).is_crank() {
+                ACCURACY.max_path_step.to_radians()
+            } else {
+                0.01 * ACCURACY.max_path_step * scale_of(i)
+            }
         };
-        let start = self.last_input;
-        let end = start + span;
-        // The smallest step worth taking: the rounding of the input itself.
-        let min_step = 64.0 * f64::EPSILON * (start.abs().max(end.abs()) + input_scale);
+        // (start, end), the inputs' rates along x, the inputs at x.
+        let (start, end, rates) = if several {
+            (0.0, 1.0, Coords::new(span))
+        } else {
+            (from[0], from[0] + span[0], Coords::one(1.0))
+        };
+        let at = |x: f64| -> Coords {
+            if several {
+                let mut q = from;
+                for (q, d) in q.iter_mut().zip(span) {
+                    *q += x * d;
+                }
+                q
+            } else {
+                Coords::one(x)
+            }
+        };
+        let scaled: Vec<f64> = rates
+            .iter()
+            .enumerate()
+            .map(|(i, r)| r / scale_of(i))
+            .collect();
+        let (max_step, min_step) = if several {
+            let moving = (0..span.len()).filter(|&i| span[i] != 0.0);
+            let max = moving
+                .clone()
+                .map(|i| step_of(i) / span[i].abs())
+                .fold(1.0, f64::min);
+            // The smallest step worth taking: the rounding of the inputs.
+            let min = moving
+                .map(|i| {
+                    64.0 * f64::EPSILON
+                        * (from[i].abs().max((from[i] + span[i]).abs()) + scale_of(i))
+                        / span[i].abs()
+                })
+                .fold(64.0 * f64::EPSILON, f64::max);
+            (max, min)
+        } else {
+            (
+                step_of(0),
+                64.0 * f64::EPSILON * (start.abs().max(end.abs()) + scale_of(0)),
+            )
+        };
+        let (length, dir) = if several {
+            (1.0, 1.0)
+        } else {
+            (span[0].abs(), span[0].signum())
+        };
         let mut x = start;
-        let mut h = max_step.min(span.abs());
-        let dir = span.signum();
+        let mut h = max_step.min(length);
         self.steps = 0;
-        let Some((mut t, sign)) = self.tangent() else {
+        let Some((mut t, sign)) = self.tangent(&rates) else {
             return Err("the constraint Jacobian is singular at the start of the path".into());
         };
         while (end - x) * dir > 0.0 {
@@ -410,11 +505,11 @@ impl<'a> ConstraintSolver<'a> {
             // little over it, and the orientation keeps its sign: a step
             // over a narrow neck, whose ends may look alike, lands on the
             // other assembly, of the other sign.
-            let accepted = match self.newton(to, true) {
-                Ok(_) => match self.tangent() {
+            let accepted = match self.newton(&at(to), true) {
+                Ok(_) => match self.tangent(&rates) {
                     Some((t_new, sign_new)) => {
-                        let a = self.unit_direction(&t, 1.0 / input_scale);
-                        let b = self.unit_direction(&t_new, 1.0 / input_scale);
+                        let a = self.unit_direction(&t, &scaled);
+                        let b = self.unit_direction(&t_new, &scaled);
                         let turn = a.dot(&b).clamp(-1.0, 1.0).acos();
                         (turn <= MAX_TURN && sign_new == sign).then_some((t_new, turn))
                     }
@@ -435,13 +530,17 @@ impl<'a> ConstraintSolver<'a> {
                     self.q = saved;
                     h *= 0.5;
                     if h < min_step {
+                        let unit = if several {
+                            " of the way"
+                        } else if m.scene.input.is_crank() {
+                            " rad"
+                        } else {
+                            " m"
+                        };
                         return Err(format!(
-                            "the assembly cannot be followed past {} (steps down to {} do not converge on it)",
-                            describe_input(self.m, x),
-                            crate::presentation::quantity::format_quantity(
-                                h,
-                                if crank { "rad" } else { "m" }
-                            )
+                            "the assembly cannot be followed past {} (steps down to {}{unit} do not converge on it)",
+                            describe_input(m, &at(x)),
+                            crate::presentation::quantity::format_quantity(h, "")
                         ));
                     }
                 }
@@ -450,18 +549,30 @@ impl<'a> ConstraintSolver<'a> {
         Ok(())
     }
 
-    /// Velocities and (if asked) accelerations at the last solved position.
+    /// Velocities and (if asked) accelerations at the last solved
+    /// position, a single input's rate and rate of rate given.
     pub fn solve_rates(
         &mut self,
         rate: f64,
         rate2: f64,
         order: Order,
     ) -> Result<Vec<Option<Motion>>> {
+        self.solve_rates_of(&[(rate, rate2)], order)
+    }
+
+    /// Velocities and (if asked) accelerations at the last solved
+    /// position, each input's (rate, rate of rate) given in the scene's
+    /// order.
+    pub fn solve_rates_of(
+        &mut self,
+        rates: &[(f64, f64)],
+        order: Order,
+    ) -> Result<Vec<Option<Motion>>> {
         let j = self.jacobian(&self.q);
         self.conditioning = self.scaled_conditioning(&j);
         if self.conditioning < self.settings.min_conditioning {
             return Err(Error::singular(
-                describe_input(self.m, self.last_input),
+                describe_input(self.m, &self.last_inputs()),
                 format!(
                     "the constraint Jacobian is ill-conditioned (σ_min/σ_max = {:.2e})",
                     self.conditioning
@@ -470,12 +581,14 @@ impl<'a> ConstraintSolver<'a> {
         }
         let lu = j.lu();
         let mut b = DVector::zeros(self.rows());
-        let last = b.len() - 1;
-        b[last] = rate;
+        for &(i, row) in &self.driver_rows {
+            b[row] = rates[i].0;
+        }
         let qd = lu.solve(&b).expect("conditioning checked");
         let qdd = if order == Order::Acceleration {
+            let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
             Some(
-                lu.solve(&self.gamma(&self.q, &qd, rate2))
+                lu.solve(&self.gamma(&self.q, &qd, &acc))
                     .expect("conditioning checked"),
             )
         } else {

@@ -12,14 +12,14 @@
 //! brackets. A dyad gives one contour (3×3, inverted in
 //! closed form), a three-leash group two contours (6×6).
 
-use super::{Drive, Motion, Order};
+use super::{Drives, Motion, Order};
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::perp;
 use crate::kinematics::positions::{Configuration, describe_input};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
-use crate::model::structure::{AssurGroup, Conn, Joint, Structure};
+use crate::model::structure::{AssurGroup, Conn, Dyad, InputRole, Joint, Stage, Structure};
 use kurbo::{Point, Vec2};
 use nalgebra::{SMatrix, SVector};
 
@@ -105,11 +105,12 @@ fn unit_twist(m: &Mechanism, c: &Configuration, conn: &Conn, o: Point) -> Twist 
     }
 }
 
-/// Velocity and acceleration of the input link.
-pub fn input_motion(m: &Mechanism, c: &Configuration, rate: f64, rate2: f64) -> Motion {
-    let link = m.scene.input.link();
-    let pose = c.pose(link);
-    match m.scene.input {
+/// Velocity and acceleration of input `i`'s link: a crank about its
+/// pivot, a slider along a guide of the frame.
+pub fn input_motion(m: &Mechanism, c: &Configuration, i: usize, rate: f64, rate2: f64) -> Motion {
+    let spec = m.scene.input_at(i);
+    let pose = c.pose(spec.link());
+    match *spec {
         InputSpec::Crank { pivot, .. } => {
             let o = c.point(m, m.frame(), pivot);
             Motion::from_point(pose, o, Vec2::ZERO, Vec2::ZERO, rate, rate2)
@@ -121,16 +122,97 @@ pub fn input_motion(m: &Mechanism, c: &Configuration, rate: f64, rate2: f64) -> 
     }
 }
 
+/// The motion of the link that driving pair `k` places, its other link
+/// `known` moving as `known_mo`, the slide's rate and its rate `rate2`:
+/// the twist of the known link plus the relative slide, and its rate plus
+/// the slide's own and the bracket (the Coriolis term 2·ω·v_rel).
+pub fn across(
+    m: &Mechanism,
+    c: &Configuration,
+    k: usize,
+    known: usize,
+    known_mo: &Motion,
+    rate: f64,
+    rate2: f64,
+) -> Motion {
+    let pr = &m.prismatics[k];
+    let other = if pr.guide == known {
+        pr.slider
+    } else {
+        pr.guide
+    };
+    let o = c.point(m, pr.slider, pr.point);
+    let conn = Conn {
+        joint: Joint::P(k),
+        from: known,
+        to: other,
+    };
+    let xi = unit_twist(m, c, &conn, o);
+    let (v, dv) = state(known_mo, o);
+    let vel = v + xi * rate;
+    let acc = dv + xi * rate2 + bracket(v, xi) * rate;
+    Motion::from_point(
+        c.pose(other),
+        o,
+        vel.v,
+        acc.v + perp(vel.v) * vel.w,
+        vel.w,
+        acc.w,
+    )
+}
+
+/// The driving pair of a cylinder in a dyad, traversed along the dyad's
+/// contour (from the link in the cylinder's slot to the other for slot 0,
+/// back for slot 1), and whether the contour passes through it (the
+/// middle pair on the other link) or the other link only hangs on it.
+fn driven_pair(d: &Dyad) -> Option<(Conn, usize, bool)> {
+    let cy = d.cylinder?;
+    let own = d.links[cy.slot];
+    let (conn, on) = if cy.slot == 0 {
+        (
+            Conn {
+                joint: Joint::P(cy.pair),
+                from: own,
+                to: cy.other,
+            },
+            d.mid.from == cy.other,
+        )
+    } else {
+        (
+            Conn {
+                joint: Joint::P(cy.pair),
+                from: cy.other,
+                to: own,
+            },
+            d.mid.to == cy.other,
+        )
+    };
+    Some((conn, cy.input, on))
+}
+
+/// A pair whose rate is given (a cylinder's driving pair) in a group's
+/// contour: the pair, its rate and rate of rate, and the contour it lies
+/// on (None: off the contours, it only carries a link hanging on it).
+#[derive(Clone, Copy)]
+struct Driven {
+    conn: Conn,
+    rate: f64,
+    rate2: f64,
+    contour: Option<usize>,
+}
+
 /// Velocities (and accelerations when `order` asks) of every solved link.
-/// `rate`, `rate2`: ω1, ε1 of a crank (v, a of a driving slider).
+/// `drive`: each input's coordinate and rates (ω, ε of a crank; v, a of a
+/// driving slider).
 pub fn solve(
     m: &Mechanism,
     s: &Structure,
     need: &[bool],
     c: &Configuration,
-    drive: Drive,
+    drive: impl Into<Drives>,
     order: Order,
 ) -> Result<Vec<Option<Motion>>> {
+    let drives: Drives = drive.into();
     // The motions found so far; a group reads the twists of its known
     // links off them (`state`).
     let mut out: Vec<Option<Motion>> = vec![None; m.links.len()];
@@ -143,16 +225,40 @@ pub fn solve(
         0.0,
     );
     out[m.frame()] = Some(frame);
-    let input = input_motion(m, c, drive.rate, drive.rate2);
-    out[m.scene.input.link()] = Some(input);
     let mut motions: [(usize, Motion); 4] = [(0, frame); 4];
-    for (gi, g) in s.groups.iter().enumerate() {
+    for &st in &s.stages {
+        let gi = match st {
+            Stage::Input(i) => {
+                let d = drives[i];
+                match s.roles[i] {
+                    InputRole::Frame => {
+                        out[m.scene.input_at(i).link()] =
+                            Some(input_motion(m, c, i, d.rate, d.rate2));
+                    }
+                    InputRole::Chained { known, pair } => {
+                        if let Some(kmo) = out[known] {
+                            let pr = &m.prismatics[pair];
+                            let other = if pr.guide == known {
+                                pr.slider
+                            } else {
+                                pr.guide
+                            };
+                            out[other] = Some(across(m, c, pair, known, &kmo, d.rate, d.rate2));
+                        }
+                    }
+                    InputRole::InGroup { .. } => {}
+                }
+                continue;
+            }
+            Stage::Group(gi) => gi,
+        };
         if !need[gi] {
             continue;
         }
+        let g = &s.groups[gi];
         let singular = || {
             Error::singular(
-                describe_input(m, drive.q),
+                describe_input(m, &drives.coords()),
                 format!(
                     "the velocity contour of group {} is singular (a dead point)",
                     g.label(m)
@@ -162,18 +268,36 @@ pub fn solve(
         // The pairs of the group, in contour order: each contour is a list
         // of (pair index, sign) from a known link to a known link.
         let done = match g {
-            AssurGroup::Dyad(d) => group::<3>(
-                m,
-                c,
-                [d.ext1, d.mid, d.ext2],
-                &[&[(0, 1.0), (1, 1.0), (2, 1.0)]],
-                &[(d.ext1.from, d.ext2.to)],
-                &out,
-                order,
-                invert3,
-                &d.links,
-                &mut motions,
-            ),
+            AssurGroup::Dyad(d) => {
+                let driven = driven_pair(d).map(|(conn, input, on)| Driven {
+                    conn,
+                    rate: drives[input].rate,
+                    rate2: drives[input].rate2,
+                    contour: on.then_some(0),
+                });
+                let mut links = [0usize; 3];
+                links[..2].copy_from_slice(&d.links);
+                let n = match d.cylinder {
+                    Some(cy) => {
+                        links[2] = cy.other;
+                        3
+                    }
+                    None => 2,
+                };
+                group::<3>(
+                    m,
+                    c,
+                    [d.ext1, d.mid, d.ext2],
+                    &[&[(0, 1.0), (1, 1.0), (2, 1.0)]],
+                    &[(d.ext1.from, d.ext2.to)],
+                    &out,
+                    order,
+                    invert3,
+                    &links[..n],
+                    driven,
+                    &mut motions,
+                )
+            }
             AssurGroup::Triad(t) => group::<6>(
                 m,
                 c,
@@ -190,6 +314,7 @@ pub fn solve(
                 order,
                 invert_lu,
                 &[t.leashes[0], t.leashes[1], t.leashes[2], t.base],
+                None,
                 &mut motions,
             ),
         };
@@ -217,12 +342,26 @@ fn group<const N: usize>(
     order: Order,
     invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
     links: &[usize],
+    driven: Option<Driven>,
     motions: &mut [(usize, Motion); 4],
 ) -> Option<usize> {
     // The twists are taken about a point of the group (the pose of its
     // first link), so that the contour's numbers are the group's own size.
     let o = c.pose(links[0]).origin;
     let xi: [Twist; N] = conns.map(|cn| unit_twist(m, c, &cn, o));
+    // The driven pair: its unit twist, and the conns walked (the group's
+    // and the driven one last).
+    let xd = driven.map(|d| unit_twist(m, c, &d.conn, o));
+    let mut all = [conns[0]; 8];
+    all[..N].copy_from_slice(&conns);
+    let walked = match driven {
+        Some(d) => {
+            all[N] = d.conn;
+            N + 1
+        }
+        None => N,
+    };
+    let all = &all[..walked];
     // The contour's velocity rows in the group's own unit of length (its
     // joints' reach from o): a small group is as well conditioned as a
     // large one of the same shape, and its dead point is judged so.
@@ -249,8 +388,24 @@ fn group<const N: usize>(
     let state_of = |l: usize| known[l].map(|mo| state(&mo, o));
     let known = |l: usize| state_of(l).expect("attachment solved first");
     let inverse = invert(&a)?;
-    let qd = inverse.solve(&in_group_units(rhs::<N>(ends, |l| known(l).0)));
-    let (vel, nv) = walk(&conns, |j| xi[j] * qd[j], |l| state_of(l).map(|k| k.0));
+    let mut rhs_v = rhs::<N>(ends, |l| known(l).0);
+    // The given slide on a contour is a known term.
+    let on_contour = |d: &Driven, rhs: &mut SVector<f64, N>, t: Twist| {
+        if let Some(ci) = d.contour {
+            rhs[3 * ci] -= t.w;
+            rhs[3 * ci + 1] -= t.v.x;
+            rhs[3 * ci + 2] -= t.v.y;
+        }
+    };
+    if let (Some(d), Some(x)) = (driven, xd) {
+        on_contour(&d, &mut rhs_v, x * d.rate);
+    }
+    let qd = inverse.solve(&in_group_units(rhs_v));
+    let step_v = |j: usize| match (driven, xd) {
+        (Some(d), Some(x)) if j == N => x * d.rate,
+        _ => xi[j] * qd[j],
+    };
+    let (vel, nv) = walk(all, step_v, |l| state_of(l).map(|k| k.0));
     let vel_of = |l: usize| {
         state_of(l)
             .map(|k| k.0)
@@ -270,10 +425,25 @@ fn group<const N: usize>(
                 rhs[3 * ci + 2] -= sg * drift[j].v.y;
             }
         }
+        // The driven pair's given slide rate and its bracket (Coriolis).
+        let driven_acc = match (driven, xd) {
+            (Some(d), Some(x)) => {
+                let t = x * d.rate2 + bracket(vel_of(d.conn.from).unwrap(), x) * d.rate;
+                on_contour(&d, &mut rhs, t);
+                t
+            }
+            _ => Twist::default(),
+        };
         let qdd = inverse.solve(&in_group_units(rhs));
         (acc, na) = walk(
-            &conns,
-            |j| xi[j] * qdd[j] + drift[j],
+            all,
+            |j| {
+                if j == N {
+                    driven_acc
+                } else {
+                    xi[j] * qdd[j] + drift[j]
+                }
+            },
             |l| state_of(l).map(|k| k.1),
         );
     }
@@ -318,8 +488,8 @@ fn rhs<const N: usize>(ends: &[(usize, usize)], f: impl Fn(usize) -> Twist) -> S
 /// The twist of every link of a group: walk the pairs outward from the
 /// known links (`base`), in the pairs' order, each pass over the pairs
 /// still pending; `step(j)` is the relative twist across pair j.
-fn walk<const N: usize>(
-    conns: &[Conn; N],
+fn walk(
+    conns: &[Conn],
     step: impl Fn(usize) -> Twist,
     base: impl Fn(usize) -> Option<Twist>,
 ) -> ([(usize, Twist); 4], usize) {
@@ -328,11 +498,12 @@ fn walk<const N: usize>(
     let get = |found: &[(usize, Twist); 4], count: usize, l: usize| {
         base(l).or_else(|| found[..count].iter().find(|e| e.0 == l).map(|e| e.1))
     };
-    let mut pending = [true; N];
-    let mut left = N;
+    let n = conns.len();
+    let mut pending = [true; 8];
+    let mut left = n;
     while left > 0 {
         let before = left;
-        for j in 0..N {
+        for j in 0..n {
             if !pending[j] {
                 continue;
             }

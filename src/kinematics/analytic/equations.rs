@@ -1,8 +1,8 @@
 //! Route (b)'s equations written once, generic over the number type: every
 //! moving link a pose (x, y, θ); a revolute pair's point coincides on both
 //! links (2 rows), a prismatic pair lets no relative rotation and keeps the
-//! slider's point on the guide line (2 rows), the driver fixes the input
-//! (1 row). The residual Φ(q, x), the Jacobian Φ_q and γ of the
+//! slider's point on the guide line (2 rows), each driver fixes its input
+//! (1 row; the drivers last, in the scene's order of inputs). The residual Φ(q, x), the Jacobian Φ_q and γ of the
 //! acceleration equations Φ_q·q̈ = γ are evaluated in `f64` by route (b)
 //! ([`super::constraint`]) and in extended precision by the reference
 //! ([`crate::verification::reference`]), whose independence is its own
@@ -187,8 +187,8 @@ pub enum Constraint<T> {
     },
     /// A prismatic pair (2 rows).
     Prismatic(Prism<T>),
-    /// The input coordinate (1 row).
-    Driver,
+    /// Input i's coordinate (1 row).
+    Driver(usize),
 }
 
 /// The input coordinate as a function of the poses.
@@ -206,6 +206,18 @@ pub enum Driver<T> {
         foot: Vector<T>,
         dir: Vector<T>,
     },
+    /// A driving slider on a moving guide (a hydraulic cylinder): its
+    /// point `at` (slider's frame) along the guide line (`line_point`,
+    /// `line_dir` in the guide's frame) less `zero`, where the sketch has
+    /// it: the slide relative to the guide.
+    Slide {
+        slider: usize,
+        guide: usize,
+        at: Vector<T>,
+        line_point: Vector<T>,
+        line_dir: Vector<T>,
+        zero: T,
+    },
 }
 
 /// The unknowns and equations of the links solved.
@@ -216,22 +228,26 @@ pub struct Equations<T> {
     /// Each link's place in `links` (the frame and links not solved: none).
     pub slot: Vec<Option<usize>>,
     pub cons: Vec<Constraint<T>>,
-    pub driver: Driver<T>,
+    /// Each input's driver, in the scene's order (None: an input whose
+    /// link is not solved).
+    pub drivers: Vec<Option<Driver<T>>>,
     rows: usize,
 }
 
 impl<T: Number> Equations<T> {
     /// The equations of the links `include` marks (the frame is always
     /// fixed): a revolute pair per further link at a point, every prismatic
-    /// pair between links inside, the driver last. `local(l, p)`: point p
+    /// pair between links inside, the drivers last. `local(l, p)`: point p
     /// in link l's frame; `prism(k)`: prismatic pair k; `sketch(p)`: point
-    /// p in the sketch; all in `T`.
+    /// p in the sketch; `sketch_pose(l)`: link l's pose in the sketch; all
+    /// in `T`.
     pub fn new(
         m: &Mechanism,
         include: &[bool],
         local: impl Fn(usize, usize) -> Vector<T>,
         prism: impl Fn(usize) -> Prism<T>,
-        sketch: impl FnOnce(usize) -> Vector<T>,
+        sketch: impl Fn(usize) -> Vector<T>,
+        sketch_pose: impl Fn(usize) -> Pose<T>,
     ) -> Self {
         let frame = m.frame();
         let links: Vec<usize> = (0..m.links.len())
@@ -263,34 +279,59 @@ impl<T: Number> Equations<T> {
                 cons.push(Constraint::Prismatic(prism(k)));
             }
         }
-        cons.push(Constraint::Driver);
-        let driver = match m.scene.input {
-            InputSpec::Crank { link, pivot, .. } => {
-                let pts = &m.links[link].points;
-                let other = if pts[0] == pivot { pts[1] } else { pts[0] };
-                let offset = local(link, other).sub(&local(link, pivot)).atan2();
-                Driver::Crank { link, offset }
+        let pairs = cons.len();
+        let mut drivers = Vec::new();
+        for (i, spec) in m.scene.inputs().enumerate() {
+            if !inside(spec.link()) {
+                drivers.push(None);
+                continue;
             }
-            InputSpec::Slider { link, pair, .. } => {
-                // The sketch's point projected on the guide (the frame).
-                let pr = prism(pair);
-                let frame = Pose::identity();
-                let (o, dir) = (frame.apply(&pr.line_point), frame.dir(&pr.line_dir));
-                let along = sketch(m.prismatics[pair].point).sub(&o).dot(&dir);
-                Driver::Slider {
-                    link,
-                    at: pr.slider_local,
-                    foot: o.add(&dir.scale(&along)),
-                    dir,
+            cons.push(Constraint::Driver(i));
+            drivers.push(Some(match *spec {
+                InputSpec::Crank { link, pivot, .. } => {
+                    let pts = &m.links[link].points;
+                    let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+                    let offset = local(link, other).sub(&local(link, pivot)).atan2();
+                    Driver::Crank { link, offset }
                 }
-            }
-        };
-        let rows = 2 * cons.len() - 1;
+                InputSpec::Slider { link, pair, .. } if m.prismatics[pair].guide == frame => {
+                    // The sketch's point projected on the guide (the frame).
+                    let pr = prism(pair);
+                    let frame = Pose::identity();
+                    let (o, dir) = (frame.apply(&pr.line_point), frame.dir(&pr.line_dir));
+                    let along = sketch(m.prismatics[pair].point).sub(&o).dot(&dir);
+                    Driver::Slider {
+                        link,
+                        at: pr.slider_local,
+                        foot: o.add(&dir.scale(&along)),
+                        dir,
+                    }
+                }
+                InputSpec::Slider { pair, .. } => {
+                    // The sketch's point along the guide line, in the
+                    // guide's frame at its sketch pose.
+                    let pr = prism(pair);
+                    let gs = sketch_pose(pr.guide);
+                    let p = sketch(m.prismatics[pair].point).sub(&gs.origin);
+                    let local = p.rotate(&-gs.sin.clone(), &gs.cos);
+                    let zero = local.sub(&pr.line_point).dot(&pr.line_dir);
+                    Driver::Slide {
+                        slider: pr.slider,
+                        guide: pr.guide,
+                        at: pr.slider_local,
+                        line_point: pr.line_point,
+                        line_dir: pr.line_dir,
+                        zero,
+                    }
+                }
+            }));
+        }
+        let rows = 2 * pairs + drivers.iter().flatten().count();
         Equations {
             links,
             slot,
             cons,
-            driver,
+            drivers,
             rows,
         }
     }
@@ -314,8 +355,9 @@ impl<T: Number> Equations<T> {
             .collect()
     }
 
-    /// The residual Φ(q, x) at input coordinate `x`, from the poses.
-    pub fn residual(&self, p: &[Pose<T>], x: &T) -> Vec<T> {
+    /// The residual Φ(q, x) at input coordinates `x` (one per input in
+    /// the scene's order), from the poses.
+    pub fn residual(&self, p: &[Pose<T>], x: &[T]) -> Vec<T> {
         let mut r = Vec::with_capacity(self.rows);
         for c in &self.cons {
             match c {
@@ -331,18 +373,33 @@ impl<T: Number> Equations<T> {
                     let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
                     r.push(u.cross(&d));
                 }
-                Constraint::Driver => r.push(match &self.driver {
-                    // A crank angle is defined modulo a turn.
-                    Driver::Crank { link, offset } => {
-                        (p[*link].angle.clone() + offset.clone() - x.clone()).wrap_angle()
-                    }
-                    Driver::Slider {
-                        link,
-                        at,
-                        foot,
-                        dir,
-                    } => dir.dot(&p[*link].apply(at).sub(foot)) - x.clone(),
-                }),
+                Constraint::Driver(i) => {
+                    let x = x[*i].clone();
+                    r.push(match self.driver(*i) {
+                        // A crank angle is defined modulo a turn.
+                        Driver::Crank { link, offset } => {
+                            (p[*link].angle.clone() + offset.clone() - x).wrap_angle()
+                        }
+                        Driver::Slider {
+                            link,
+                            at,
+                            foot,
+                            dir,
+                        } => dir.dot(&p[*link].apply(at).sub(foot)) - x,
+                        Driver::Slide {
+                            slider,
+                            guide,
+                            at,
+                            line_point,
+                            line_dir,
+                            zero,
+                        } => {
+                            let (ps, pg) = (&p[*slider], &p[*guide]);
+                            let d = ps.apply(at).sub(&pg.apply(line_point));
+                            pg.dir(line_dir).dot(&d) - zero.clone() - x
+                        }
+                    })
+                }
             }
         }
         r
@@ -410,8 +467,8 @@ impl<T: Number> Equations<T> {
                     }
                     row += 2;
                 }
-                Constraint::Driver => {
-                    match &self.driver {
+                Constraint::Driver(k) => {
+                    match self.driver(*k) {
                         Driver::Crank { link, .. } => {
                             let i = self.slot[*link].expect("the input is solved");
                             add(row, 3 * i + 2, T::one());
@@ -420,6 +477,26 @@ impl<T: Number> Equations<T> {
                             let r = p[*link].dir(at);
                             self.put_point(add, row, *link, &r, false, dir);
                         }
+                        Driver::Slide {
+                            slider,
+                            guide,
+                            at,
+                            line_point,
+                            line_dir,
+                            ..
+                        } => {
+                            // f = u·(Q − P): u and P turn with the guide.
+                            let (ps, pg) = (&p[*slider], &p[*guide]);
+                            let u = pg.dir(line_dir);
+                            let rs = ps.dir(at);
+                            let rg = pg.dir(line_point);
+                            let d = ps.apply(at).sub(&pg.apply(line_point));
+                            self.put_point(add, row, *slider, &rs, false, &u);
+                            self.put_point(add, row, *guide, &rg, true, &u);
+                            if let Some(i) = self.slot[*guide] {
+                                add(row, 3 * i + 2, u.perp().dot(&d));
+                            }
+                        }
                     }
                     row += 1;
                 }
@@ -427,9 +504,17 @@ impl<T: Number> Equations<T> {
         }
     }
 
+    /// Driver of input `i`.
+    fn driver(&self, i: usize) -> &Driver<T> {
+        self.drivers[i]
+            .as_ref()
+            .expect("a driver of every input solved")
+    }
+
     /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in
-    /// q̇), at the poses, the rates `qd` and the input's acceleration.
-    pub fn gamma(&self, p: &[Pose<T>], qd: &[T], input_acc: &T) -> Vec<T> {
+    /// q̇), at the poses, the rates `qd` and the inputs' accelerations (one
+    /// per input in the scene's order).
+    pub fn gamma(&self, p: &[Pose<T>], qd: &[T], input_acc: &[T]) -> Vec<T> {
         let rate = |l: usize| self.slot[l].map_or(T::zero(), |i| qd[3 * i + 2].clone());
         let lin = |l: usize| {
             self.slot[l].map_or(Vector::zero(), |i| {
@@ -469,13 +554,40 @@ impl<T: Number> Equations<T> {
                         );
                     g.extend([T::zero(), -quad]);
                 }
-                Constraint::Driver => g.push(match &self.driver {
-                    Driver::Crank { .. } => input_acc.clone(),
-                    Driver::Slider { link, at, dir, .. } => {
-                        let r = p[*link].dir(at);
-                        input_acc.clone() + square(rate(*link)) * dir.dot(&r)
-                    }
-                }),
+                Constraint::Driver(i) => {
+                    let acc = input_acc[*i].clone();
+                    g.push(match self.driver(*i) {
+                        Driver::Crank { .. } => acc,
+                        Driver::Slider { link, at, dir, .. } => {
+                            let r = p[*link].dir(at);
+                            acc + square(rate(*link)) * dir.dot(&r)
+                        }
+                        Driver::Slide {
+                            slider,
+                            guide,
+                            at,
+                            line_point,
+                            line_dir,
+                            ..
+                        } => {
+                            // f̈ = ü·d + 2u̇·ḋ + u·d̈; the q̈-free part
+                            // leaves γ.
+                            let (ps, pg) = (&p[*slider], &p[*guide]);
+                            let u = pg.dir(line_dir);
+                            let (ws, wg) = (rate(*slider), rate(*guide));
+                            let rs = ps.dir(at);
+                            let rg = pg.dir(line_point);
+                            let d = ps.apply(at).sub(&pg.apply(line_point));
+                            let dd = lin(*slider)
+                                .add(&rs.perp().scale(&ws))
+                                .sub(&lin(*guide).add(&rg.perp().scale(&wg)));
+                            let quad = -(square(wg.clone()) * u.dot(&d))
+                                + T::from_f64(2.0) * wg.clone() * u.perp().dot(&dd)
+                                + u.dot(&rs.neg().scale(&square(ws)).add(&rg.scale(&square(wg))));
+                            acc - quad
+                        }
+                    })
+                }
             }
         }
         g

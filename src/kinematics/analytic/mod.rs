@@ -71,6 +71,134 @@ pub struct Drive {
     pub rate2: f64,
 }
 
+/// The most inputs a scene may have ([`crate::model::scene::MAX_INPUTS`]).
+pub const MAX_INPUTS: usize = crate::model::scene::MAX_INPUTS;
+
+/// The coordinates of every input at one position, in the scene's order of
+/// inputs (rad for a crank, m for a slider): a value, without allocation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Coords {
+    len: usize,
+    x: [f64; MAX_INPUTS],
+}
+
+impl Coords {
+    /// The coordinate of a single input.
+    pub fn one(q: f64) -> Coords {
+        Coords::new(&[q])
+    }
+    /// The coordinates listed (at most [`MAX_INPUTS`]).
+    pub fn new(q: &[f64]) -> Coords {
+        assert!(
+            !q.is_empty() && q.len() <= MAX_INPUTS,
+            "1 to {MAX_INPUTS} inputs"
+        );
+        let mut x = [0.0; MAX_INPUTS];
+        x[..q.len()].copy_from_slice(q);
+        Coords { len: q.len(), x }
+    }
+    /// The first input's coordinate.
+    pub fn first(&self) -> f64 {
+        self.x[0]
+    }
+}
+
+impl std::ops::Deref for Coords {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        &self.x[..self.len]
+    }
+}
+
+impl std::ops::DerefMut for Coords {
+    fn deref_mut(&mut self) -> &mut [f64] {
+        &mut self.x[..self.len]
+    }
+}
+
+/// Every input's coordinate and rates at one instant, in the scene's order
+/// of inputs (one [`Drive`] each). A single input's [`Drive`] converts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drives {
+    len: usize,
+    d: [Drive; MAX_INPUTS],
+}
+
+impl Drives {
+    /// The drives listed (at most [`MAX_INPUTS`]).
+    pub fn new(d: &[Drive]) -> Drives {
+        assert!(
+            !d.is_empty() && d.len() <= MAX_INPUTS,
+            "1 to {MAX_INPUTS} inputs"
+        );
+        let zero = Drive {
+            q: 0.0,
+            rate: 0.0,
+            rate2: 0.0,
+        };
+        let mut all = [zero; MAX_INPUTS];
+        all[..d.len()].copy_from_slice(d);
+        Drives {
+            len: d.len(),
+            d: all,
+        }
+    }
+    /// At coordinates `q` with the rates `rates` ((rate, rate of rate) of
+    /// each input).
+    pub fn at(q: &[f64], rates: &[(f64, f64)]) -> Drives {
+        let d: Vec<Drive> = q
+            .iter()
+            .zip(rates)
+            .map(|(&q, &(rate, rate2))| Drive { q, rate, rate2 })
+            .collect();
+        Drives::new(&d)
+    }
+    /// The same coordinates with every input standing but input `i`,
+    /// moving at unit rate (the transfer functions' run: ∂/∂q_i); with
+    /// `j` too, inputs `i` and `j` at unit rate (for the mixed second
+    /// derivatives).
+    pub fn unit(&self, i: usize, j: Option<usize>) -> Drives {
+        let mut out = *self;
+        for (k, d) in out.iter_mut().enumerate() {
+            let on = k == i || Some(k) == j;
+            d.rate = if on { 1.0 } else { 0.0 };
+            d.rate2 = 0.0;
+        }
+        out
+    }
+    /// The coordinates.
+    pub fn coords(&self) -> Coords {
+        let mut x = [0.0; MAX_INPUTS];
+        for (x, d) in x.iter_mut().zip(self.iter()) {
+            *x = d.q;
+        }
+        Coords { len: self.len, x }
+    }
+    /// The first input's drive.
+    pub fn first(&self) -> Drive {
+        self.d[0]
+    }
+}
+
+impl From<Drive> for Drives {
+    fn from(d: Drive) -> Drives {
+        Drives::new(&[d])
+    }
+}
+
+impl std::ops::Deref for Drives {
+    type Target = [Drive];
+    fn deref(&self) -> &[Drive] {
+        &self.d[..self.len]
+    }
+}
+
+impl std::ops::DerefMut for Drives {
+    fn deref_mut(&mut self) -> &mut [Drive] {
+        &mut self.d[..self.len]
+    }
+}
+
 /// What the caller wants computed: velocities only, or accelerations too
 /// (and, as [`crate::kinematics::construction::PlanKind`], which plan).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

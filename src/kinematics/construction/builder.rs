@@ -12,9 +12,10 @@ use super::record::{Act, Name, Product, Rate, Ray, Reading, Relation, Seg, Way, 
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::{Line, LineCut, perp};
+use crate::kinematics::analytic::Drives;
 use crate::kinematics::positions::{Configuration, describe_input};
 use crate::model::mechanism::Mechanism;
-use crate::model::structure::AssurGroup;
+use crate::model::structure::{AssurGroup, InputRole, Stage};
 use kurbo::{Point, Vec2};
 use rand::rngs::StdRng;
 
@@ -34,7 +35,8 @@ pub(super) struct Builder<'a> {
     /// The velocity plan, when building the acceleration plan.
     pub vel: Option<&'a Plan>,
     pub nr: Vec<bool>,
-    pub q: f64,
+    /// Every input's coordinate and rates.
+    pub drives: Drives,
     /// The first normal-component point laid off for each link (n₂ …).
     pub normal_of: Vec<Option<usize>>,
 }
@@ -43,7 +45,7 @@ impl<'a> Builder<'a> {
     pub fn new(
         st: &'a Setup<'a>,
         c: &'a Configuration,
-        q: f64,
+        drives: Drives,
         plan: Plan,
         vel: Option<&'a Plan>,
         variant: Variant,
@@ -61,7 +63,7 @@ impl<'a> Builder<'a> {
             taken: 0,
             vel,
             nr: non_rotating(m),
-            q,
+            drives,
             normal_of: vec![None; m.links.len()],
         }
     }
@@ -268,7 +270,7 @@ impl<'a> Builder<'a> {
         else {
             let (_, (letters, sub)) = key_label(id, self.plan.kind, self.m());
             return Err(Error::singular(
-                describe_input(self.m(), self.q),
+                describe_input(self.m(), &self.drives.coords()),
                 format!(
                     "on the {} plan the lines for {letters}{sub} are parallel: the position is a dead point of the group",
                     self.kind_word(),
@@ -351,6 +353,7 @@ impl<'a> Builder<'a> {
             base,
             rigid,
             rotating: !self.nr[link],
+            via: None,
         }
     }
 
@@ -364,7 +367,7 @@ impl<'a> Builder<'a> {
         });
     }
 
-    pub fn run(&mut self, rates: (f64, f64)) -> Result<()> {
+    pub fn run(&mut self) -> Result<()> {
         let m = self.m();
         let frame = m.frame();
         // The pole and the fixed points.
@@ -378,11 +381,25 @@ impl<'a> Builder<'a> {
             }
         }
         self.plan.rates[frame] = Some((0.0, 0.0));
-        self.input(rates)?;
-        for (gi, g) in self.st.s.groups.iter().enumerate() {
+        for &stage in &self.st.s.stages {
+            let gi = match stage {
+                Stage::Input(i) => {
+                    let d = self.drives[i];
+                    match self.st.s.roles[i] {
+                        InputRole::Frame => self.input(i, (d.rate, d.rate2))?,
+                        InputRole::Chained { known, pair } => {
+                            self.chained(pair, known, (d.rate, d.rate2))
+                        }
+                        InputRole::InGroup { .. } => {}
+                    }
+                    continue;
+                }
+                Stage::Group(gi) => gi,
+            };
             if !self.st.need[gi] {
                 continue;
             }
+            let g = &self.st.s.groups[gi];
             match g {
                 AssurGroup::Dyad(d) => self.dyad(d)?,
                 AssurGroup::Triad(t) => self.triad(t)?,

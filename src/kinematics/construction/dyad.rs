@@ -2,8 +2,10 @@
 //! point the one way the method has: two vector equations, one per side
 //! of the dyad — through a rigid link from a known joint (normal and
 //! tangential parts) or along a guide from the coincident point of the
-//! known link (Coriolis and relative parts) — drawn as two lines that meet
-//! at the point; then the links' rates are measured or taken over.
+//! known link (Coriolis and relative parts), or through a cylinder (the
+//! given relative velocity laid off first, then the rigid parts of the
+//! link that turns) — drawn as two lines that meet at the point; then the
+//! links' rates are measured or taken over.
 
 use super::builder::Builder;
 use super::plan::{Mistake, PointId};
@@ -12,6 +14,18 @@ use crate::error::Result;
 use crate::geom::perp;
 use crate::model::mechanism::Prismatic;
 use crate::model::structure::{Conn, Dyad, DyadKind, Joint};
+
+/// A cylinder's side in a dyad: the known joint J on the link `link` in
+/// the dyad's slot (the one that turns about it), the unknown point on
+/// the cylinder's other link `moving`, their driving pair and input.
+#[derive(Clone, Copy)]
+pub(super) struct Cyl {
+    pub link: usize,
+    pub from: At,
+    pub moving: usize,
+    pub pair: usize,
+    pub input: usize,
+}
 use kurbo::{Point, Vec2};
 
 /// A prismatic pair seen from a group: the link being found, the known
@@ -39,6 +53,9 @@ pub(super) enum Side {
         u: Vec2,
         slide: Slide,
     },
+    /// X on a cylinder's link that slides (as given) on the link that
+    /// turns about the known joint.
+    Cylinder(Cyl),
 }
 
 fn revolute(j: Joint) -> usize {
@@ -148,38 +165,8 @@ impl Builder<'_> {
             unreachable!("the velocity plan has both coincident points");
         };
         let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
-        if self.making(Mistake::CoriolisForgotten) {
-            return self.line(kx, u, way);
-        }
-        let sense = if self.making(Mistake::CoriolisReversed) {
-            -1.0
-        } else {
-            1.0
-        };
-        let factor = if self.making(Mistake::CoriolisFactorOne) {
-            1.0
-        } else {
-            2.0
-        };
-        let k_vec = perp(vrel) * (factor * w * sense);
         let verr = (vel.points[iu].err + vel.points[ik].err) * vel.mu;
-        let (unknown, known) = (s.unknown, s.known);
-        let k = self.lay_off(
-            kx,
-            k_vec,
-            What::Coriolis {
-                x: xn,
-                unknown,
-                known,
-            },
-            Way::Turned {
-                x: xn,
-                unknown,
-                known,
-            },
-            PointId::Coriolis { link: unknown },
-            2.0 * (w.abs() * verr + self.omega_err(known) * vrel.hypot()),
-        );
+        let k = self.coriolis(kx, vrel, w, (xn, s.unknown, s.known), verr);
         self.line(k, u, way)
     }
 
@@ -205,12 +192,18 @@ impl Builder<'_> {
             let [a, b] = order.map(|i| match sides[i] {
                 Side::Rigid { link, from } => self.relation(xn, from.2, true, link),
                 Side::Slide { kn, slide, .. } => self.relation(xn, kn, false, slide.known),
+                Side::Cylinder(c) => {
+                    let mut r = self.relation(xn, c.from.2, true, c.link);
+                    r.via = Some((c.moving, c.link));
+                    r
+                }
             });
             self.step(Act::Equation(Eqn::Pair(a, b)));
         }
         let [(mut la, ta), (mut lb, tb)] = sides.map(|side| match side {
             Side::Rigid { link, from } => self.rigid(link, from, (x, xn)),
             Side::Slide { kx, u, slide, .. } => (self.slide(kx, u, slide, (x, Name::Point(p))), kx),
+            Side::Cylinder(c) => self.cylinder_line(c, (x, p)),
         });
         let out = match mistake {
             Some(Mistake::WrongPerpendicular) if self.making(Mistake::WrongPerpendicular) => {
@@ -225,7 +218,7 @@ impl Builder<'_> {
                 .iter()
                 .find_map(|s| match s {
                     Side::Slide { kx, .. } => Some(*kx),
-                    Side::Rigid { .. } => None,
+                    Side::Rigid { .. } | Side::Cylinder(_) => None,
                 })
                 .expect("a slide"),
             _ => self.intersect(la, lb, id)?,
@@ -234,6 +227,7 @@ impl Builder<'_> {
             let link = match side {
                 Side::Rigid { link, .. } => link,
                 Side::Slide { slide, .. } => slide.unknown,
+                Side::Cylinder(c) => c.moving,
             };
             self.register(link, x, out);
         }
@@ -241,11 +235,123 @@ impl Builder<'_> {
             self.plan.of_point[p].get_or_insert(out);
         }
         for (side, t) in sides.into_iter().zip([ta, tb]) {
-            if let Side::Rigid { link, from } = side {
-                self.measure_rate(link, t, out, (from.1, from.2), (x, xn));
+            match side {
+                Side::Rigid { link, from } => {
+                    self.measure_rate(link, t, out, (from.1, from.2), (x, xn))
+                }
+                // The segment from the relative vector's end: ω×JX of the
+                // link that turns (X as its point).
+                Side::Cylinder(c) => self.measure_rate(
+                    c.link,
+                    t,
+                    out,
+                    (c.from.1, c.from.2),
+                    (x, Name::On(p, c.link)),
+                ),
+                Side::Slide { .. } => {}
             }
         }
         Ok(out)
+    }
+
+    /// The line of X of a cylinder's link `c.moving`, sliding as given on
+    /// the link `c.link` that turns about the known joint J:
+    /// v_X = v_J + v_rel (given, ∥ guide) + v_XJ (⊥ JX), and
+    /// a_X = a_J + a^n (toward J) + a^k (2·ω×v_rel) + a^r (given, ∥ guide)
+    /// plus a^t (⊥ JX). The known parts are laid off from j in that order
+    /// (the construction starts from the relative velocity along the
+    /// cylinder); returns the line and the plan point its part starts from.
+    fn cylinder_line(&mut self, c: Cyl, (x, p): (Point, usize)) -> (Ray, usize) {
+        let m = self.m();
+        let pr = &m.prismatics[c.pair];
+        let (j, jw, jn) = c.from;
+        let xu = Name::On(p, c.link);
+        let xn = Name::Point(p);
+        let seg = (jn, xu);
+        // The moving link's relative motion on the turning one.
+        let sense = if c.moving == pr.slider { 1.0 } else { -1.0 };
+        let ug = self.c.pose(pr.guide).dir(pr.line_dir) * sense;
+        let d = self.drives[c.input];
+        let given = What::Given {
+            x: xn,
+            moving: c.moving,
+            known: c.link,
+        };
+        let id = PointId::Relative { link: c.moving };
+        let u = if self.making(Mistake::TangentialParallel) {
+            x - jw
+        } else {
+            perp(x - jw)
+        };
+        let way = Way::Guide(pr.guide);
+        if self.vel_kind() {
+            let r = if d.rate != 0.0 {
+                self.lay_off(j, ug * d.rate, given, way, id, 0.0)
+            } else {
+                j
+            };
+            return (self.line(r, u, Way::Perp(seg)), r);
+        }
+        let w = self.omega(c.link);
+        let mut from = j;
+        let turns = !self.nr[c.link] && w != 0.0;
+        if turns && !self.making(Mistake::NormalForgotten) {
+            let toward = if self.making(Mistake::NormalFromCentre) {
+                1.0
+            } else {
+                -1.0
+            };
+            let r = x - jw;
+            let err = 2.0 * w.abs() * self.omega_err(c.link) * r.hypot();
+            from = self.normal(j, r * (toward * w * w), c.link, (xu, jn), seg, err);
+        }
+        if turns && d.rate != 0.0 {
+            from = self.coriolis(from, ug * d.rate, w, (xn, c.moving, c.link), 0.0);
+        }
+        if d.rate2 != 0.0 {
+            from = self.lay_off(from, ug * d.rate2, given, way, id, 0.0);
+        }
+        (self.line(from, u, Way::Perp(seg)), from)
+    }
+
+    /// The side of a dyad's link in `slot` (0: ext1's, 1: ext2's): a rigid
+    /// link from its known joint, or a cylinder whose other link carries
+    /// the middle joint.
+    fn group_side(&mut self, d: &Dyad, slot: usize) -> Side {
+        let (link, k, cn, carrier) = if slot == 0 {
+            (d.links[0], d.ext1.from, d.ext1, d.mid.from)
+        } else {
+            (d.links[1], d.ext2.to, d.ext2, d.mid.to)
+        };
+        match d.cylinder {
+            Some(cy) if cy.slot == slot && carrier == cy.other => {
+                let from = self.joint_on(k, &cn);
+                self.register(link, from.1, from.0);
+                Side::Cylinder(Cyl {
+                    link,
+                    from,
+                    moving: cy.other,
+                    pair: cy.pair,
+                    input: cy.input,
+                })
+            }
+            _ => self.rigid_side(link, k, &cn),
+        }
+    }
+
+    /// A cylinder's other link after its group: it turns with the link in
+    /// the slot; when it carries no joint of the group it hangs on that
+    /// link by the given slide.
+    fn cylinder_other(&mut self, d: &Dyad) {
+        let Some(cy) = d.cylinder else { return };
+        let own = d.links[cy.slot];
+        let carrier = if cy.slot == 0 { d.mid.from } else { d.mid.to };
+        if carrier == cy.other {
+            self.same_rate(cy.other, own);
+        } else {
+            let dr = self.drives[cy.input];
+            self.chained(cy.pair, own, (dr.rate, dr.rate2));
+        }
     }
 
     pub(super) fn dyad(&mut self, d: &Dyad) -> Result<()> {
@@ -254,21 +360,23 @@ impl Builder<'_> {
         let (ends, mid) = ([d.ext1.from, d.ext2.to], d.mid.joint);
         match d.kind {
             DyadKind::Rrr => {
-                let a = self.rigid_side(l1, ends[0], &d.ext1);
-                let b = self.rigid_side(l2, ends[1], &d.ext2);
+                let a = self.group_side(d, 0);
+                let b = self.group_side(d, 1);
                 let pc = revolute(mid);
-                let cw = self.world(l1, pc);
+                let cw = self.world(d.mid.from, pc);
                 let mistake = Some(Mistake::WrongPerpendicular);
                 self.meet(PointId::Named(pc), cw, [a, b], Some([0, 1]), mistake)?;
+                self.cylinder_other(d);
             }
             DyadKind::Rrp => {
-                let a = self.rigid_side(l1, ends[0], &d.ext1);
+                let a = self.group_side(d, 0);
                 let (pc, k2) = (revolute(mid), ends[1]);
-                let cw = self.world(l1, pc);
+                let cw = self.world(d.mid.from, pc);
                 let kc = (self.coincident(k2, cw, pc), Name::On(pc, k2));
                 let b = self.slide_side(kc, &m.prismatics[prismatic(d.ext2.joint)], l2, k2);
                 self.meet(PointId::Named(pc), cw, [a, b], Some([0, 1]), None)?;
                 self.same_rate(l2, k2);
+                self.cylinder_other(d);
             }
             DyadKind::Rpr => {
                 let pr = &m.prismatics[prismatic(mid)];

@@ -1,5 +1,7 @@
-//! The input link: a crank's point from ω1 (and ε1), or a driving
-//! slider's own velocity (acceleration) along its guide.
+//! The input links: a crank's point from ω1 (and ε1), a driving slider's
+//! own velocity (acceleration) along a guide of the frame, or the given
+//! relative velocity (and the Coriolis and relative accelerations) of a
+//! slider on a moving guide from the guide's coincident point.
 
 use super::builder::Builder;
 use super::plan::{Mistake, PointId};
@@ -9,9 +11,9 @@ use crate::geom::perp;
 use crate::model::scene::InputSpec;
 
 impl Builder<'_> {
-    pub(super) fn input(&mut self, (rate, rate2): (f64, f64)) -> Result<()> {
+    pub(super) fn input(&mut self, i: usize, (rate, rate2): (f64, f64)) -> Result<()> {
         let m = self.m();
-        match m.scene.input {
+        match *m.scene.input_at(i) {
             InputSpec::Crank { link, pivot, .. } => {
                 let pts = &m.links[link].points;
                 let other = if pts[0] == pivot { pts[1] } else { pts[0] };
@@ -97,5 +99,132 @@ impl Builder<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The link a driving pair `pair` places on its known link `known` (a
+    /// chained input, or a cylinder's link that hangs on its other): at
+    /// the slider's point X, v_X = v_Xk + v_rel (given, ∥ guide); a_X =
+    /// a_Xk + a^k (2·ω_k × v_rel, on a rotating guide) + a^r (given).
+    pub(super) fn chained(&mut self, pair: usize, known: usize, (rate, rate2): (f64, f64)) {
+        let m = self.m();
+        let pr = &m.prismatics[pair];
+        let placed = if pr.guide == known {
+            pr.slider
+        } else {
+            pr.guide
+        };
+        let p = pr.point;
+        let x = self.world(pr.slider, p);
+        // The two links' points at X: the slider's is the named point.
+        let id_of = |l: usize| {
+            if l == pr.slider {
+                PointId::Named(p)
+            } else {
+                PointId::Coincident { point: p, link: l }
+            }
+        };
+        let name_of = |l: usize| {
+            if l == pr.slider {
+                Name::Point(p)
+            } else {
+                Name::On(p, l)
+            }
+        };
+        let kx = if known == pr.slider {
+            self.named(known, p)
+        } else {
+            self.coincident(known, x, p)
+        };
+        // The relative motion of the placed link: the slider's along the
+        // guide, the guide's against it.
+        let sense = if placed == pr.slider { 1.0 } else { -1.0 };
+        let u = self.c.pose(pr.guide).dir(pr.line_dir) * sense;
+        let (xp, xk) = (name_of(placed), name_of(known));
+        self.step(Act::Equation(Eqn::Driven {
+            x: xp,
+            base: xk,
+            moving: placed,
+            known,
+            rotating: !self.nr[known],
+        }));
+        let given = What::Given {
+            x: xp,
+            moving: placed,
+            known,
+        };
+        let out = if self.vel_kind() {
+            self.lay_off(
+                kx,
+                u * rate,
+                given,
+                Way::Guide(pr.guide),
+                id_of(placed),
+                0.0,
+            )
+        } else {
+            let w = self.omega(known);
+            let mut from = kx;
+            if !self.nr[known] && w != 0.0 {
+                from = self.coriolis(kx, u * rate, w, (xp, placed, known), 0.0);
+            }
+            self.lay_off(
+                from,
+                u * rate2,
+                given,
+                Way::Guide(pr.guide),
+                id_of(placed),
+                0.0,
+            )
+        };
+        self.register(placed, x, out);
+        if let PointId::Named(p) = id_of(placed) {
+            self.plan.of_point[p].get_or_insert(out);
+        }
+        self.same_rate(placed, known);
+        // The reported points of the placed link.
+        for &q in &m.links[placed].points {
+            if self.st.points.contains(&q) && self.plan.of_point[q].is_none() {
+                let carrier = (0..m.links.len())
+                    .find(|&l| self.st.include[l] && m.links[l].points.contains(&q));
+                if carrier == Some(placed) {
+                    self.named(placed, q);
+                }
+            }
+        }
+    }
+
+    /// Lay off from `from` the Coriolis acceleration 2·ω×v_rel of X of
+    /// link `unknown` sliding on `known` (ω of `known`, `vrel` the relative
+    /// velocity, `verr` the error of its value): the point k.
+    pub(super) fn coriolis(
+        &mut self,
+        from: usize,
+        vrel: kurbo::Vec2,
+        w: f64,
+        (x, unknown, known): (Name, usize, usize),
+        verr: f64,
+    ) -> usize {
+        if self.making(Mistake::CoriolisForgotten) {
+            return from;
+        }
+        let sense = if self.making(Mistake::CoriolisReversed) {
+            -1.0
+        } else {
+            1.0
+        };
+        let factor = if self.making(Mistake::CoriolisFactorOne) {
+            1.0
+        } else {
+            2.0
+        };
+        let k_vec = perp(vrel) * (factor * w * sense);
+        self.lay_off(
+            from,
+            k_vec,
+            What::Coriolis { x, unknown, known },
+            Way::Turned { x, unknown, known },
+            PointId::Coriolis { link: unknown },
+            2.0 * (w.abs() * verr + self.omega_err(known) * vrel.hypot()),
+        )
     }
 }

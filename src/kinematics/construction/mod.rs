@@ -44,7 +44,7 @@ pub use plan::{
 pub use scale::Field;
 
 use crate::error::Result;
-use crate::kinematics::analytic::{Drive, Order};
+use crate::kinematics::analytic::{Drives, Order};
 use crate::kinematics::positions::Configuration;
 use builder::Builder;
 use record::Act;
@@ -57,7 +57,7 @@ use record::Act;
 fn construct(
     st: &Setup,
     c: &Configuration,
-    drive: Drive,
+    drive: Drives,
     kind: PlanKind,
     vel: Option<&Plan>,
     d: &Drafting,
@@ -65,18 +65,17 @@ fn construct(
     naming: Naming,
 ) -> Result<(Plan, Vec<Act>)> {
     use rand::SeedableRng;
-    let rates = (drive.rate, drive.rate2);
     let rng = |k: u64| {
         d.variant
             .jitter
             .map(|s| rand::rngs::StdRng::seed_from_u64(s ^ k))
     };
     let plan = Plan::empty(kind, 1.0, d.delta, st.m);
-    let mut b = Builder::new(st, c, drive.q, plan, vel, d.variant, rng(1));
+    let mut b = Builder::new(st, c, drive, plan, vel, d.variant, rng(1));
     let mu = match d.mu(kind) {
         Some(mu) => mu,
         None => {
-            b.run(rates)?;
+            b.run()?;
             field.scale(b.plan.points.iter().map(|p| p.at))
         }
     };
@@ -84,7 +83,7 @@ fn construct(
     // in the first one's buffers.
     let mut b = b.again(mu, rng(2));
     b.record = naming == Naming::Full;
-    b.run(rates)?;
+    b.run()?;
     Ok((b.plan, b.acts))
 }
 
@@ -105,7 +104,7 @@ pub enum Naming {
 pub fn build_plans_in(
     st: &Setup,
     c: &Configuration,
-    (drive, order): (Drive, Order),
+    (drive, order): (Drives, Order),
     d: Drafting,
     field: &Field,
     naming: Naming,
@@ -133,10 +132,11 @@ pub fn build_plans_in(
 pub fn build_plans(
     st: &Setup,
     c: &Configuration,
-    drive: Drive,
+    drive: impl Into<Drives>,
     order: Order,
     d: Drafting,
 ) -> Result<Plans> {
+    let drive = drive.into();
     build_plans_in(st, c, (drive, order), d, &Field::default(), Naming::Full)
 }
 
@@ -146,10 +146,11 @@ pub fn build_plans(
 pub fn build_acceleration(
     st: &Setup,
     c: &Configuration,
-    drive: Drive,
+    drive: impl Into<Drives>,
     vel: &Plan,
     d: Drafting,
 ) -> Result<Plan> {
+    let drive = drive.into();
     let field = Field::default();
     let kind = PlanKind::Acceleration;
     let (mut plan, acts) = construct(st, c, drive, kind, Some(vel), &d, &field, Naming::Full)?;
@@ -162,10 +163,11 @@ pub fn build_acceleration(
 pub fn build_plans_numbers(
     st: &Setup,
     c: &Configuration,
-    drive: Drive,
+    drive: impl Into<Drives>,
     order: Order,
     d: Drafting,
 ) -> Result<Plans> {
+    let drive = drive.into();
     let field = Field::default();
     build_plans_in(st, c, (drive, order), d, &field, Naming::NumbersOnly)
 }

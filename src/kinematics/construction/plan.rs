@@ -26,6 +26,9 @@ pub enum PointId {
     Normal { link: usize },
     /// The end of a Coriolis acceleration of a link's sliding: k_3.
     Coriolis { link: usize },
+    /// The end of the given relative velocity (relative acceleration) of
+    /// a link in a driving pair, laid off first on a cylinder's side: r_3.
+    Relative { link: usize },
     /// The special point of a class III group on its base link: s_4.
     Special { base: usize },
 }
@@ -36,7 +39,10 @@ impl PointId {
     pub fn is_construction(self) -> bool {
         matches!(
             self,
-            PointId::Pole | PointId::Normal { .. } | PointId::Coriolis { .. }
+            PointId::Pole
+                | PointId::Normal { .. }
+                | PointId::Coriolis { .. }
+                | PointId::Relative { .. }
         )
     }
 }

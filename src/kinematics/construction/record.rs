@@ -112,16 +112,27 @@ pub(super) enum What {
     },
     /// The driving slider's own velocity (acceleration): `v_B`.
     Drive(Name),
+    /// The given relative velocity (relative acceleration) of X of link
+    /// `moving` on link `known`, a driving pair's slide: `v_B3B2`
+    /// (`a^r_B3B2`).
+    Given {
+        x: Name,
+        moving: usize,
+        known: usize,
+    },
 }
 
 /// One vector equation: X from a known point through a rigid link (normal
-/// and tangential parts) or a slide (Coriolis and relative parts).
+/// and tangential parts) or a slide (Coriolis and relative parts); or
+/// through a cylinder (`via`: X of link `.0` whose pair with the rigid
+/// link `.1` slides as given), both.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Relation {
     pub x: Name,
     pub base: Name,
     pub rigid: bool,
     pub rotating: bool,
+    pub via: Option<(usize, usize)>,
 }
 
 /// The vector equations of a step.
@@ -138,6 +149,16 @@ pub(super) enum Eqn {
     /// A class III group's special point on its base from two leashes
     /// (each leash's outer joint and inner joint).
     Special { base: usize, leashes: [Seg; 2] },
+    /// X of link `moving` from the coincident point `base` of `known`
+    /// across a driving pair, every part known: v_X = v_Xk + v_rel;
+    /// a_X = a_Xk (+ a^k on a rotating guide) + a^r.
+    Driven {
+        x: Name,
+        base: Name,
+        moving: usize,
+        known: usize,
+        rotating: bool,
+    },
 }
 
 /// What a measurement reads.
@@ -254,6 +275,7 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
         }
         PointId::Normal { link } => by("n", link),
         PointId::Coriolis { link } => by("k", link),
+        PointId::Relative { link } => by("r", link),
         PointId::Special { base } => by("s", base),
     }
 }
@@ -360,6 +382,17 @@ impl Words<'_> {
                 format!("a^k_{x}{u}{x}{k} = 2·ω{k}·{v}")
             }
             What::Drive(x) => format!("{}_{}", self.v(), self.name(x)),
+            What::Given { x, moving, known } => self.given(x, moving, known),
+        }
+    }
+    /// The given relative vector of X of `moving` on `known`: v_XmXk on
+    /// the velocity plan, a^r_XmXk on the acceleration plan.
+    fn given(&self, x: Name, moving: usize, known: usize) -> String {
+        let v = self.relative(x, moving, known);
+        if self.vel() {
+            v
+        } else {
+            format!("a^r{}", &v[1..])
         }
     }
     fn dir(&self, w: Way) -> Dir {
@@ -384,6 +417,9 @@ impl Words<'_> {
         }
     }
     fn relation(&self, r: Relation) -> String {
+        if let Some((moving, rigid)) = r.via {
+            return self.cylinder(r, moving, rigid);
+        }
         let (x, base) = (self.name(r.x), self.name(r.base));
         if self.vel() {
             return format!(
@@ -400,8 +436,48 @@ impl Words<'_> {
         parts.push(direction_known(&format!("a^{across}_{x}{base}")));
         format!("a_{x} = {}", parts.join(" + "))
     }
+    /// X of link `moving` through a cylinder whose link `rigid` turns
+    /// about the known point: v_X = v_J + v_XmXr (given) + v_XrJ (⊥);
+    /// a_X = a_J + a^n_XrJ + a^k_XmXr + a^r_XmXr + a^t_XrJ (⊥).
+    fn cylinder(&self, r: Relation, moving: usize, rigid: usize) -> String {
+        let (x, base) = (self.name(r.x), self.name(r.base));
+        let xr = format!("{x}{}", self.link(rigid));
+        let rel = self.relative(r.x, moving, rigid);
+        if self.vel() {
+            return format!(
+                "v_{x} = {} + {} + {}",
+                known(&format!("v_{base}")),
+                known(&rel),
+                direction_known(&format!("v_{xr}{base}"))
+            );
+        }
+        let mut parts = vec![known(&format!("a_{base}"))];
+        if r.rotating {
+            parts.push(known(&format!("a^n_{xr}{base}")));
+            parts.push(known(&format!("a^k{}", &rel[1..])));
+        }
+        parts.push(known(&format!("a^r{}", &rel[1..])));
+        parts.push(direction_known(&format!("a^t_{xr}{base}")));
+        format!("a_{x} = {}", parts.join(" + "))
+    }
     fn equation(&self, e: Eqn) -> String {
         match e {
+            Eqn::Driven {
+                x,
+                base,
+                moving,
+                known: k,
+                rotating,
+            } => {
+                let (xn, bn) = (self.name(x), self.name(base));
+                let v = self.v();
+                let mut parts = vec![known(&format!("{v}_{bn}"))];
+                if !self.vel() && rotating {
+                    parts.push(known(&format!("a^k{}", &self.relative(x, moving, k)[1..])));
+                }
+                parts.push(known(&self.given(x, moving, k)));
+                format!("{v}_{xn} = {}", parts.join(" + "))
+            }
             Eqn::Pair(a, b) => format!("{}; {}", self.relation(a), self.relation(b)),
             Eqn::CrankVelocity { a, o, link } => {
                 let (an, seg) = (self.name(a), self.seg((o, a)));

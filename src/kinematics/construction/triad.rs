@@ -95,7 +95,7 @@ impl Builder<'_> {
             crate::geom::intersect_lines(&axis(i), &axis(j), ACCURACY.min_line_sine)
         else {
             return Err(Error::singular(
-                describe_input(m, self.q),
+                describe_input(m, &self.drives.coords()),
                 "all three leashes of the class III group are parallel",
             ));
         };
@@ -107,7 +107,7 @@ impl Builder<'_> {
             .fold(0.0, f64::max);
         if (sw - jw[k]).hypot() <= ACCURACY.same_point * group_size {
             return Err(Error::singular(
-                describe_input(m, self.q),
+                describe_input(m, &self.drives.coords()),
                 "the three leashes' axes meet in one point: a dead point of the class III group",
             ));
         }

@@ -4,17 +4,30 @@
 use super::Analysis;
 use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
-use crate::kinematics::analytic::{Drive, Motion, Order, contour};
+use crate::kinematics::analytic::{Coords, Drive, Motion, Order, contour};
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::{InputSpec, PositionsSpec};
 
 impl Analysis {
-    /// Input coordinates of the positions asked for (rad or m).
+    /// The first input's coordinates of the positions asked for (rad or
+    /// m): with one input, the positions' input values.
     pub fn input_values(&self) -> Result<Vec<f64>> {
+        Ok(self.input_coords()?.iter().map(|q| q.first()).collect())
+    }
+
+    /// Every input's coordinates at each position asked for (rad or m).
+    pub fn input_coords(&self) -> Result<Vec<Coords>> {
         let sc = &self.mech.scene;
+        if let PositionsSpec::Values(v) = &sc.positions {
+            return Ok(v.iter().map(|q| Coords::new(q)).collect());
+        }
+        if let PositionsSpec::Single = &sc.positions {
+            let q: Vec<f64> = sc.inputs().map(|i| i.coordinate()).collect();
+            return Ok(vec![Coords::new(&q)]);
+        }
         Ok(match &sc.positions {
-            PositionsSpec::Single => vec![sc.input.coordinate()],
-            PositionsSpec::List(v) => v.clone(),
+            PositionsSpec::Single | PositionsSpec::Values(_) => unreachable!("returned above"),
+            PositionsSpec::List(v) => v.iter().map(|&q| Coords::one(q)).collect(),
             PositionsSpec::Count { count, output } => {
                 let out = output.unwrap_or_else(|| {
                     *self
@@ -30,8 +43,10 @@ impl Analysis {
                 let dir = sc.input.sense();
                 (0..*count)
                     .map(|k| {
-                        (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
-                            .rem_euclid(std::f64::consts::TAU)
+                        Coords::one(
+                            (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
+                                .rem_euclid(std::f64::consts::TAU),
+                        )
                     })
                     .collect()
             }
@@ -67,6 +82,12 @@ impl Analysis {
     pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
         let m = &self.mech;
         let sc = &m.scene;
+        if sc.several_inputs() {
+            return Err(Error::scene(
+                "/input",
+                "the extreme positions of an output over a revolution of the crank are defined for a single crank input; this scene has several inputs",
+            ));
+        }
         let InputSpec::Crank { angle, .. } = sc.input else {
             return Err(Error::scene(
                 "/positions/count",

@@ -9,7 +9,7 @@ mod run;
 
 use crate::error::Result;
 use crate::geom::perp;
-use crate::kinematics::analytic::{Motion, Order};
+use crate::kinematics::analytic::{Drives, Motion, Order};
 use crate::kinematics::construction::{Drafting, Plans, Setup};
 use crate::kinematics::positions::Configuration;
 use crate::model::demand::Demand;
@@ -54,16 +54,28 @@ pub const RUN_CHUNK: usize = 512;
 /// One solved position.
 #[derive(Clone, Debug)]
 pub struct Solved {
-    /// The input coordinate (rad or m) and its rates.
+    /// The (first) input's coordinate (rad or m) and its rates.
     pub q: f64,
     pub rate: f64,
     pub rate2: f64,
+    /// Every input's coordinate and rates, in the scene's order.
+    pub drives: Drives,
     pub config: Configuration,
     /// Route (a) motions; `None` for links not solved.
     pub motion: Vec<Option<Motion>>,
     /// Route (a) with unit input rate and zero input acceleration: the
-    /// transfer functions (analogues of velocity and acceleration).
+    /// transfer functions (analogues of velocity and acceleration). With
+    /// several inputs: of the first, the others standing (∂/∂q1).
     pub analogue: Vec<Option<Motion>>,
+    /// With several inputs, the transfer functions of the others: route
+    /// (a) with input i (from the second) at unit rate, the others
+    /// standing: ∂/∂q_i and ∂²/∂q_i².
+    pub more_analogues: Vec<Vec<Option<Motion>>>,
+    /// With several inputs and accelerations: route (a) with inputs i and
+    /// j (i < j, in the order (0, 1), (0, 2) … (1, 2) …) at unit rate, the
+    /// others standing: its accelerations are ∂²/∂q_i² + ∂²/∂q_j² +
+    /// 2·∂²/∂q_i∂q_j, whence the mixed second derivatives.
+    pub mixed: Vec<Vec<Option<Motion>>>,
     /// The plans of velocities and accelerations, as constructions.
     pub plans: Option<Plans>,
     pub check: Option<CrossCheck>,
@@ -129,6 +141,15 @@ pub struct PointState {
     pub analogue: Option<(Vec2, Vec2)>,
 }
 
+/// The transfer functions of a quantity with several inputs: its first
+/// partial derivatives by each input, and (with accelerations) the second
+/// ones, rows and columns in the scene's order of inputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Partials<T> {
+    pub first: Vec<T>,
+    pub second: Option<Vec<Vec<T>>>,
+}
+
 /// A prismatic pair's relative motion at one position.
 #[derive(Clone, Debug)]
 pub struct Slide {
@@ -140,12 +161,49 @@ pub struct Slide {
     pub a: f64,
     /// Coriolis acceleration 2·ω_guide × v_rel (zero on a fixed guide).
     pub coriolis: Vec2,
-    /// Transfer functions s' and s''.
+    /// Transfer functions s' and s'' (of the first input).
     pub s_q: f64,
     pub s_qq: f64,
+    /// With several inputs: ∂s/∂q_i, and ∂²s/∂q_i∂q_j (rows i, columns j);
+    /// empty for one input.
+    pub s_qs: Vec<f64>,
+    pub s_qqs: Vec<Vec<f64>>,
 }
 
 impl Solved {
+    /// The transfer functions of input `i`: route (a) at unit rate of
+    /// input i, the others standing.
+    pub fn analogue_of(&self, i: usize) -> &[Option<Motion>] {
+        if i == 0 {
+            &self.analogue
+        } else {
+            &self.more_analogues[i - 1]
+        }
+    }
+
+    /// The second derivatives ∂²f/∂q_i∂q_j of a quantity `f` of the
+    /// accelerations of a route-(a) run (a point's acceleration, a link's
+    /// ε): from the runs of the transfer functions (and, for i ≠ j, the
+    /// mixed run: (f_ij − f_ii − f_jj)/2).
+    pub fn second<T>(
+        &self,
+        i: usize,
+        j: usize,
+        f: impl Fn(&[Option<Motion>]) -> Option<T>,
+    ) -> Option<T>
+    where
+        T: std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T>,
+    {
+        if i == j {
+            return f(self.analogue_of(i));
+        }
+        let (i, j) = (i.min(j), i.max(j));
+        let w = self.drives.len();
+        // Index of (i, j) in the order (0,1), (0,2) … (1,2) …
+        let k = (0..i).map(|a| w - 1 - a).sum::<usize>() + (j - i - 1);
+        Some((f(self.mixed.get(k)?)? - f(self.analogue_of(i))? - f(self.analogue_of(j))?) * 0.5)
+    }
+
     /// Relative motion in every prismatic pair between solved links.
     pub fn slides(&self, an: &Analysis) -> Vec<Slide> {
         let m = &an.mech;
@@ -171,6 +229,17 @@ impl Solved {
             };
             let (v, a, coriolis) = rel(&self.motion).unwrap_or((0.0, 0.0, Vec2::ZERO));
             let (s_q, s_qq, _) = rel(&self.analogue).unwrap_or((0.0, 0.0, Vec2::ZERO));
+            let w = self.drives.len();
+            let (mut s_qs, mut s_qqs) = (Vec::new(), Vec::new());
+            if w > 1 {
+                for i in 0..w {
+                    s_qs.push(rel(self.analogue_of(i)).map_or(0.0, |r| r.0));
+                    let row: Vec<f64> = (0..w)
+                        .map(|j| self.second(i, j, |mo| rel(mo).map(|r| r.1)).unwrap_or(0.0))
+                        .collect();
+                    s_qqs.push(row);
+                }
+            }
             out.push(Slide {
                 pair: k,
                 s,
@@ -179,9 +248,49 @@ impl Solved {
                 coriolis,
                 s_q,
                 s_qq,
+                s_qs,
+                s_qqs,
             });
         }
         out
+    }
+
+    /// The transfer functions of point `p` with several inputs: ∂P/∂q_i,
+    /// and ∂²P/∂q_i∂q_j (rows i, columns j); `None` without velocities.
+    pub fn point_partials(&self, an: &Analysis, p: usize) -> Option<Partials<Vec2>> {
+        let l = an.carrier(p);
+        let at = self.config.point(&an.mech, l, p);
+        self.partials(|mo| mo[l].map(|x| (x.velocity(at), x.acceleration(at))))
+    }
+
+    /// The transfer functions of link `l`'s angle with several inputs:
+    /// ∂φ/∂q_i and ∂²φ/∂q_i∂q_j.
+    pub fn link_partials(&self, l: usize) -> Option<Partials<f64>> {
+        self.partials(|mo| mo[l].map(|x| (x.omega, x.epsilon)))
+    }
+
+    /// First and second partial derivatives of a quantity whose (rate,
+    /// rate of rate) a route-(a) run gives by `f`.
+    fn partials<T>(&self, f: impl Fn(&[Option<Motion>]) -> Option<(T, T)>) -> Option<Partials<T>>
+    where
+        T: Copy + std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T>,
+    {
+        let w = self.drives.len();
+        let first: Vec<T> = (0..w)
+            .map(|i| f(self.analogue_of(i)).map(|x| x.0))
+            .collect::<Option<_>>()?;
+        let second = if w > 1 && self.mixed.len() == w * (w - 1) / 2 {
+            (0..w)
+                .map(|i| {
+                    (0..w)
+                        .map(|j| self.second(i, j, |mo| f(mo).map(|x| x.1)))
+                        .collect::<Option<Vec<T>>>()
+                })
+                .collect::<Option<Vec<Vec<T>>>>()
+        } else {
+            None
+        };
+        Some(Partials { first, second })
     }
 
     /// Place, velocity, acceleration of point `p` (route (a)).

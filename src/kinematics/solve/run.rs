@@ -5,7 +5,7 @@ use super::{Analysis, RUN_CHUNK, Solved};
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
-use crate::kinematics::analytic::{Drive, Order, contour};
+use crate::kinematics::analytic::{Coords, Drives, Order, contour};
 use crate::kinematics::construction::build_plans;
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::InputSpec;
@@ -14,9 +14,9 @@ use std::time::Instant as Clock;
 
 /// A position found in order by both routes, before its rates.
 struct Placed<'a> {
-    q: f64,
+    q: Coords,
     /// The rounding of q as the file writes it (rad or m).
-    q_rounding: f64,
+    q_rounding: Coords,
     config: Configuration,
     /// Route (b) at this position (its state continues from the last).
     constraint: ConstraintSolver<'a>,
@@ -60,16 +60,18 @@ impl Analysis {
         bar: &indicatif::ProgressBar,
         mut f: impl FnMut(Solved) -> Result<()>,
     ) -> Result<()> {
-        let values = self.input_values()?;
+        let values = self.input_coords()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
         let changed = self.changed_data();
-        // The rounding of each input value as written (none for `count`).
-        let rounding = if m.scene.input_rounding.len() == values.len() {
-            m.scene.input_rounding.clone()
+        // The rounding of each input value as written (none for `count`),
+        // position after position.
+        let w = m.scene.input_count();
+        let rounding: Vec<Coords> = if m.scene.input_rounding.len() == values.len() * w {
+            m.scene.input_rounding.chunks(w).map(Coords::new).collect()
         } else {
-            vec![0.0; values.len()]
+            vec![Coords::new(&vec![0.0; w]); values.len()]
         };
         values
             .chunks(RUN_CHUNK)
@@ -84,8 +86,8 @@ impl Analysis {
     #[allow(clippy::too_many_arguments)]
     fn run_chunk<'a>(
         &'a self,
-        values: &[f64],
-        rounding: &[f64],
+        values: &[Coords],
+        rounding: &[Coords],
         ps: &mut PositionSolver,
         cs: &mut ConstraintSolver<'a>,
         changed: &ChangedData,
@@ -96,7 +98,7 @@ impl Analysis {
         let mut stop = None;
         for (&q, &q_rounding) in values.iter().zip(rounding) {
             let t0 = Clock::now();
-            let config = match ps.solve(q) {
+            let config = match ps.solve_coords(q) {
                 Ok(c) => c,
                 Err(e) => {
                     stop = Some(e);
@@ -105,8 +107,8 @@ impl Analysis {
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
-            let span = self.path_span(ps, cs.last_input(), q);
-            if let Err(e) = cs.solve_positions_by(q, span) {
+            let span = self.path_span(ps, cs.last_inputs(), q);
+            if let Err(e) = cs.solve_positions_along(q, span) {
                 // Route (a)'s rates come first at a position: its error,
                 // if it has one here, is the one a sequential run reports.
                 stop = Some(self.contour_error(q, &config).unwrap_or(e));
@@ -131,12 +133,22 @@ impl Analysis {
         }
     }
 
-    /// Which way the input goes from `from` to `to`: a slider straight; a
-    /// crank the short way round, unless the mechanism does not assemble
-    /// on it (a crank that only rocks) and does the other way. Route (a)'s
-    /// closed forms, tried every 5°, tell; route (b) then continues along
-    /// that way, so a valid sequence of a rocking crank is never refused.
-    fn path_span(&self, ps: &PositionSolver, from: f64, to: f64) -> f64 {
+    /// Which way the inputs go from `from` to `to`: a slider straight; a
+    /// crank the short way round, unless (a single crank) the mechanism
+    /// does not assemble on it (a crank that only rocks) and does the
+    /// other way. Route (a)'s closed forms, tried every 5°, tell; route
+    /// (b) then continues along that way, so a valid sequence of a rocking
+    /// crank is never refused.
+    fn path_span(&self, ps: &PositionSolver, from: Coords, to: Coords) -> Coords {
+        if self.mech.scene.several_inputs() {
+            return crate::kinematics::positions::span(&self.mech, &from, &to);
+        }
+        let (from, to) = (from.first(), to.first());
+        Coords::one(self.path_span_one(ps, from, to))
+    }
+
+    /// [`Analysis::path_span`] of a single input.
+    fn path_span_one(&self, ps: &PositionSolver, from: f64, to: f64) -> f64 {
         let InputSpec::Crank { .. } = self.mech.scene.input else {
             return to - from;
         };
@@ -153,16 +165,25 @@ impl Analysis {
         if assembles(long) { long } else { short }
     }
 
+    /// Every input's (rate, rate of rate), in the scene's order.
+    pub fn input_rates(&self) -> Vec<(f64, f64)> {
+        self.mech.scene.inputs().map(|i| i.rates()).collect()
+    }
+
+    /// Every input's drive at the input coordinates `q`.
+    pub fn drives_at(&self, q: &[f64]) -> Drives {
+        Drives::at(q, &self.input_rates())
+    }
+
     /// Route (a)'s error at a position, if its contours are singular there.
-    fn contour_error(&self, q: f64, config: &Configuration) -> Option<Error> {
+    fn contour_error(&self, q: Coords, config: &Configuration) -> Option<Error> {
         let order = self.order?;
-        let (rate, rate2) = self.mech.scene.input.rates();
         contour::solve(
             &self.mech,
             &self.structure,
             &self.need,
             config,
-            Drive { q, rate, rate2 },
+            self.drives_at(&q),
             order,
         )
         .err()
@@ -171,58 +192,59 @@ impl Analysis {
     /// One placed position: both routes' rates, the plans, the cross-check.
     fn finish(&self, p: &Placed, changed: &ChangedData) -> Result<Solved> {
         let m = &self.mech;
-        let (rate, rate2) = m.scene.input.rates();
+        let rates = self.input_rates();
         let (q, config) = (p.q, p.config.clone());
+        let drives = self.drives_at(&q);
+        let w = drives.len();
         let mut cs = p.constraint.clone();
         let t0 = Clock::now();
-        let (motion, analogue) = match self.order {
-            Some(order) => (
-                contour::solve(
-                    m,
-                    &self.structure,
-                    &self.need,
-                    &config,
-                    Drive { q, rate, rate2 },
-                    order,
-                )?,
-                contour::solve(
-                    m,
-                    &self.structure,
-                    &self.need,
-                    &config,
-                    Drive {
-                        q,
-                        rate: 1.0,
-                        rate2: 0.0,
-                    },
-                    order,
-                )?,
-            ),
-            None => (vec![None; m.links.len()], vec![None; m.links.len()]),
+        let run = |d: Drives, order: Order| {
+            contour::solve(m, &self.structure, &self.need, &config, d, order)
         };
+        let none = || vec![None; m.links.len()];
+        let (mut motion, mut analogue) = (none(), none());
+        let (mut more_analogues, mut mixed) = (Vec::new(), Vec::new());
+        if let Some(order) = self.order {
+            motion = run(drives, order)?;
+            analogue = run(drives.unit(0, None), order)?;
+            for i in 1..w {
+                more_analogues.push(run(drives.unit(i, None), order)?);
+            }
+            if order == Order::Acceleration {
+                for i in 0..w {
+                    for j in i + 1..w {
+                        mixed.push(run(drives.unit(i, Some(j)), order)?);
+                    }
+                }
+            }
+        }
         let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
         let t1 = Clock::now();
-        let other = cs.solve_rates(rate, rate2, self.order.unwrap_or(Order::Velocity))?;
+        let other = cs.solve_rates_of(&rates, self.order.unwrap_or(Order::Velocity))?;
         let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
         let t2 = Clock::now();
         let plans = match self.order {
             Some(order) => Some(build_plans(
                 &self.setup(),
                 &config,
-                Drive { q, rate, rate2 },
+                drives,
                 order,
                 self.drafting,
             )?),
             None => None,
         };
         let plan_time = t2.elapsed().as_secs_f64();
+        let first = drives.first();
         let mut solved = Solved {
-            q,
-            rate,
-            rate2,
+            q: first.q,
+            rate: first.rate,
+            rate2: first.rate2,
+            drives,
             config,
             motion,
             analogue,
+            more_analogues,
+            mixed,
             plans,
             check: None,
         };

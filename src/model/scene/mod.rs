@@ -81,7 +81,10 @@ pub struct LengthSpec {
     pub value: f64,
 }
 
-/// The driving link and its motion.
+/// A driving link and its motion: a crank about a frame point, or a
+/// driving slider in a prismatic pair whose guide is the frame or any
+/// moving link (a hydraulic cylinder: the rod's slide relative to the
+/// cylinder is given).
 #[derive(Clone, Debug)]
 pub enum InputSpec {
     Crank {
@@ -114,6 +117,10 @@ impl InputSpec {
             InputSpec::Slider { s, .. } => *s,
         }
     }
+    /// Is it a crank (an angle), not a slider (a slide)?
+    pub fn is_crank(&self) -> bool {
+        matches!(self, InputSpec::Crank { .. })
+    }
     /// (rate, rate of rate): (ω, ε) or (v, a).
     pub fn rates(&self) -> (f64, f64) {
         match self {
@@ -134,6 +141,9 @@ pub enum PositionsSpec {
     Single,
     /// Explicit input values (rad for a crank, m for a slider).
     List(Vec<f64>),
+    /// Explicit values of several inputs: one list per position, one value
+    /// per input in the order of `input` (rad for a crank, m for a slider).
+    Values(Vec<Vec<f64>>),
     /// Equal steps over a revolution from the extreme position of `output`.
     Count { count: usize, output: Option<usize> },
 }
@@ -178,7 +188,11 @@ pub struct Scene {
     pub frame: usize,
     pub sliders: Vec<SliderSpec>,
     pub lengths: Vec<LengthSpec>,
+    /// The driving link (the first, when `input` lists several).
     pub input: InputSpec,
+    /// The further inputs, in the order `input` lists them (empty for one
+    /// input): [`Scene::inputs`] gives them all.
+    pub more_inputs: Vec<InputSpec>,
     pub positions: PositionsSpec,
     pub want: Want,
     /// Length unit of the file (m per unit), to echo inputs in their units.
@@ -186,7 +200,9 @@ pub struct Scene {
     /// Angle unit of the file (rad per unit).
     pub angle_unit: f64,
     /// The rounding of each listed input value as the file writes it (rad
-    /// or m; one value for the single `input` position, none for `count`):
+    /// or m; one value per input for the single `input` position, none for
+    /// `count`; with several inputs position after position, one value per
+    /// input):
     /// a few units of it move the input in the data check, as the data's
     /// own rounding does (an angle of a million turns in radians is known
     /// only to about 1e-9 rad).
@@ -205,7 +221,30 @@ pub const MAX_POSITIONS: usize = 100_000;
 /// larger inputs would overflow to infinity.
 pub const MAX_MAGNITUDE: f64 = 1e100;
 
+/// The most inputs a scene may have.
+pub const MAX_INPUTS: usize = 8;
+
 impl Scene {
+    /// Every input, in the order `input` lists them.
+    pub fn inputs(&self) -> impl Iterator<Item = &InputSpec> {
+        std::iter::once(&self.input).chain(&self.more_inputs)
+    }
+    /// Input `i` (0: the first).
+    pub fn input_at(&self, i: usize) -> &InputSpec {
+        if i == 0 {
+            &self.input
+        } else {
+            &self.more_inputs[i - 1]
+        }
+    }
+    /// How many inputs the scene has.
+    pub fn input_count(&self) -> usize {
+        1 + self.more_inputs.len()
+    }
+    /// Does the scene have several inputs?
+    pub fn several_inputs(&self) -> bool {
+        !self.more_inputs.is_empty()
+    }
     pub fn point_index(&self, name: &str) -> Option<usize> {
         self.points.iter().position(|p| p.name == name)
     }

@@ -1,5 +1,5 @@
-//! The positions asked for: the input's own, a list, or equal steps over a
-//! revolution.
+//! The positions asked for: the inputs' own, a list, equal steps over a
+//! revolution, or (several inputs) one list of values per position.
 
 use super::reader::Reader;
 use super::{InputSpec, LinkSpec, MAX_POSITIONS, PositionsSpec, U};
@@ -10,15 +10,21 @@ impl Reader {
         &mut self,
         v: Option<&Value>,
         links: &[LinkSpec],
-        input: Option<&InputSpec>,
+        inputs: Option<&[InputSpec]>,
     ) -> Option<PositionsSpec> {
         let Some(v) = v else {
             return Some(PositionsSpec::Single);
         };
         let o = self.object(v, "/positions")?;
-        self.only_keys(o, "/positions", &["angles", "s", "count", "output"]);
-        let crank = matches!(input, Some(InputSpec::Crank { .. }));
-        let slider = matches!(input, Some(InputSpec::Slider { .. }));
+        self.only_keys(
+            o,
+            "/positions",
+            &["angles", "s", "count", "output", "values"],
+        );
+        let several = inputs.is_some_and(|i| i.len() > 1);
+        let input = inputs.and_then(|i| i.first());
+        let crank = !several && matches!(input, Some(InputSpec::Crank { .. }));
+        let slider = !several && matches!(input, Some(InputSpec::Slider { .. }));
         let list = |r: &mut Self, key: &str, unit: f64| -> Option<Vec<f64>> {
             let at = format!("/positions/{key}");
             let a = o[key].as_array();
@@ -43,14 +49,36 @@ impl Reader {
                 }
             }
         };
-        let n = ["angles", "s", "count"]
+        let n = ["angles", "s", "count", "values"]
             .iter()
             .filter(|k| o.contains_key(**k))
             .count();
         if n != 1 {
             self.err(
                 "/positions",
-                "give exactly one of \"angles\", \"s\" or \"count\"",
+                "give exactly one of \"angles\", \"s\", \"count\" or \"values\"",
+            );
+            return None;
+        }
+        if o.contains_key("values") {
+            return self.values(&o["values"], inputs?);
+        }
+        if several {
+            let key = ["angles", "s", "count"]
+                .into_iter()
+                .find(|k| o.contains_key(*k))
+                .expect("one key");
+            self.err(
+                format!("/positions/{key}"),
+                format!(
+                    "the scene has {} inputs: give \"values\", one list [q1, q2, ...] per position with a value for each input in the order of /input{}",
+                    inputs.map_or(0, |i| i.len()),
+                    if key == "count" {
+                        " (equal steps over a revolution are defined for a single crank)"
+                    } else {
+                        ""
+                    }
+                ),
             );
             return None;
         }
@@ -113,5 +141,81 @@ impl Reader {
         };
         self.rounding.clear();
         Some(PositionsSpec::Count { count, output })
+    }
+
+    /// `values`: one list per position, one value per input (an angle for
+    /// a crank, a slide for a slider, in the file's units).
+    fn values(&mut self, v: &Value, inputs: &[InputSpec]) -> Option<PositionsSpec> {
+        let at = "/positions/values";
+        let Some(a) = v.as_array().filter(|a| !a.is_empty()) else {
+            self.err(
+                at,
+                "expected a non-empty list of positions, each a list of one value per input",
+            );
+            return None;
+        };
+        if a.len() > MAX_POSITIONS {
+            self.err(
+                at,
+                format!("{} positions; at most {MAX_POSITIONS}", a.len()),
+            );
+            return None;
+        }
+        let w = inputs.len();
+        let mut out = Vec::with_capacity(a.len());
+        let mut rounding = Vec::with_capacity(a.len() * w);
+        let mut ok = true;
+        for (k, row) in a.iter().enumerate() {
+            let here = format!("{at}/{k}");
+            let Some(row) = row.as_array() else {
+                self.err(
+                    &here,
+                    format!("expected a list of {w} values, one per input"),
+                );
+                ok = false;
+                continue;
+            };
+            if row.len() != w {
+                self.err(
+                    &here,
+                    format!(
+                        "{} value{}, but the scene has {w} input{}: one value per input, in the order of /input",
+                        row.len(),
+                        if row.len() == 1 { "" } else { "s" },
+                        if w == 1 { "" } else { "s" }
+                    ),
+                );
+                ok = false;
+                continue;
+            }
+            let mut q = Vec::with_capacity(w);
+            for (i, (x, spec)) in row.iter().zip(inputs).enumerate() {
+                let Some(x) = self.number(x, &format!("{here}/{i}")) else {
+                    ok = false;
+                    continue;
+                };
+                match spec {
+                    InputSpec::Crank { .. } => {
+                        rounding.push(self.angle_rounding(x));
+                        q.push(self.angle(x));
+                    }
+                    InputSpec::Slider { .. } => {
+                        let s = x * self.len;
+                        rounding.push(2.0 * U * s.abs());
+                        q.push(s);
+                    }
+                }
+            }
+            out.push(q);
+        }
+        if !ok {
+            return None;
+        }
+        self.rounding = rounding;
+        Some(if w == 1 {
+            PositionsSpec::List(out.into_iter().map(|q| q[0]).collect())
+        } else {
+            PositionsSpec::Values(out)
+        })
     }
 }

@@ -153,8 +153,8 @@ impl Reader {
         self.orphans(&points, &links);
         let sliders = self.sliders(top.get("sliders"), &points, &links, frame);
         let lengths = self.lengths(top.get("lengths"), &points, &links);
-        let input = self.input(top.get("input"), &points, &links, &sliders, frame);
-        let positions = self.positions(top.get("positions"), &links, input.as_ref());
+        let inputs = self.inputs(top.get("input"), &points, &links, &sliders, frame);
+        let positions = self.positions(top.get("positions"), &links, inputs.as_deref());
         let want = self.want(top.get("want"), &points);
         Some(Scene {
             title,
@@ -163,8 +163,9 @@ impl Reader {
             frame: frame?,
             sliders,
             lengths,
-            input: input?,
             positions: positions?,
+            input: inputs.as_ref()?[0].clone(),
+            more_inputs: inputs?[1..].to_vec(),
             want: want?,
             length_unit: self.len,
             angle_unit: self.ang,
