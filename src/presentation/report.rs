@@ -38,6 +38,18 @@ fn insert_rates(e: &mut Map<String, Value>, acc: bool, rates: [[(&str, Value); 2
     }
 }
 
+/// A matrix of second derivatives by rows (null where not computed).
+fn matrix<T: Copy>(m: Option<&[Vec<T>]>, f: impl Fn(T) -> Value) -> Value {
+    match m {
+        Some(rows) => Value::Array(
+            rows.iter()
+                .map(|r| Value::Array(r.iter().map(|x| f(*x)).collect()))
+                .collect(),
+        ),
+        None => Value::Null,
+    }
+}
+
 /// The result document for `mechplan solve --format json`.
 pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
     let mut doc = json_head(an);
@@ -51,24 +63,37 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
 /// The result document's fields before `positions`.
 fn json_head(an: &Analysis) -> Map<String, Value> {
     let m = &an.mech;
-    let groups: Vec<Value> = an
-        .structure
-        .groups
-        .iter()
-        .map(|g| {
-            let mut o = Map::new();
-            o.insert("class".into(), json!(g.class()));
-            o.insert("kind".into(), json!(g.kind()));
-            if let crate::model::structure::AssurGroup::Dyad(d) = g {
-                o.insert("number".into(), json!(d.kind.number()));
-            }
-            o.insert(
-                "links".into(),
-                json!(g.links().iter().map(|&l| m.link_id(l)).collect::<Vec<_>>()),
-            );
-            Value::Object(o)
-        })
-        .collect();
+    let groups: Vec<Value> =
+        an.structure
+            .groups
+            .iter()
+            .map(|g| {
+                let mut o = Map::new();
+                o.insert("class".into(), json!(g.class()));
+                o.insert("kind".into(), json!(g.kind()));
+                if let crate::model::structure::AssurGroup::Dyad(d) = g {
+                    o.insert("number".into(), json!(d.kind.number()));
+                }
+                if let Some((a, b)) = g.cylinder() {
+                    // The cylinder's two links: the guide, then the slider.
+                    let (guide, slider) = match m.prismatics.iter().find(|p| {
+                        (p.guide == a && p.slider == b) || (p.guide == b && p.slider == a)
+                    }) {
+                        Some(p) => (p.guide, p.slider),
+                        None => (a, b),
+                    };
+                    o.insert(
+                        "cylinder".into(),
+                        json!([m.link_id(guide), m.link_id(slider)]),
+                    );
+                }
+                o.insert(
+                    "links".into(),
+                    json!(g.links().iter().map(|&l| m.link_id(l)).collect::<Vec<_>>()),
+                );
+                Value::Object(o)
+            })
+            .collect();
     let mut doc = Map::new();
     doc.insert("mechplan".into(), json!(1));
     if !m.scene.title.is_empty() {
@@ -87,12 +112,23 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
     let m = &an.mech;
     let vel = an.order.is_some();
     let acc = an.order == Some(Order::Acceleration);
+    let several = m.scene.several_inputs();
     let mut o = Map::new();
+    let inputs: Vec<Value> = m
+        .scene
+        .inputs()
+        .zip(s.drives.iter())
+        .map(|(spec, d)| match spec {
+            InputSpec::Crank { .. } => json!({ "angle": num(d.q.to_degrees()), "omega": num(d.rate), "epsilon": num(d.rate2) }),
+            InputSpec::Slider { .. } => json!({ "s": num(d.q), "v": num(d.rate), "a": num(d.rate2) }),
+        })
+        .collect();
     o.insert(
         "input".into(),
-        match m.scene.input {
-            InputSpec::Crank { .. } => json!({ "angle": num(s.q.to_degrees()), "omega": num(s.rate), "epsilon": num(s.rate2) }),
-            InputSpec::Slider { .. } => json!({ "s": num(s.q), "v": num(s.rate), "a": num(s.rate2) }),
+        if several {
+            Value::Array(inputs)
+        } else {
+            inputs.into_iter().next().expect("one input")
         },
     );
     let mut pts = Map::new();
@@ -103,9 +139,19 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         e.insert("p".into(), json!([num(at.x), num(at.y)]));
         if vel {
             let (v, a) = st.unwrap();
-            let (vq, aq) = an_.unwrap();
+            let (vq, aq) = match s.point_partials(an, p).filter(|_| several) {
+                // Several inputs: ∂P/∂q_i, and ∂²P/∂q_i∂q_j by rows.
+                Some(pp) => (
+                    Value::Array(pp.first.iter().map(|x| vec2(*x)).collect()),
+                    matrix(pp.second.as_deref(), vec2),
+                ),
+                None => {
+                    let (vq, aq) = an_.unwrap();
+                    (vec2(vq), vec2(aq))
+                }
+            };
             let rates = [("v", vec2(v)), ("a", vec2(a))];
-            let analogues = [("v_q", vec2(vq)), ("a_q", vec2(aq))];
+            let analogues = [("v_q", vq), ("a_q", aq)];
             insert_rates(&mut e, acc, [rates, analogues]);
         }
         pts.insert(m.point_name(p).to_string(), Value::Object(e));
@@ -123,9 +169,18 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         e.insert("angle".into(), num(deg(s.config.pose(l).angle)));
         if vel {
             let mo = s.motion[l].unwrap();
-            let aq = s.analogue[l].unwrap();
+            let (pq, pqq) = match s.link_partials(l).filter(|_| several) {
+                Some(pp) => (
+                    Value::Array(pp.first.iter().map(|x| num(*x)).collect()),
+                    matrix(pp.second.as_deref(), num),
+                ),
+                None => {
+                    let aq = s.analogue[l].unwrap();
+                    (num(aq.omega), num(aq.epsilon))
+                }
+            };
             let rates = [("omega", num(mo.omega)), ("epsilon", num(mo.epsilon))];
-            let analogues = [("phi_q", num(aq.omega)), ("phi_qq", num(aq.epsilon))];
+            let analogues = [("phi_q", pq), ("phi_qq", pqq)];
             insert_rates(&mut e, acc, [rates, analogues]);
         }
         links.insert(m.link_id(l).to_string(), Value::Object(e));
@@ -141,13 +196,21 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
             e.insert("guide".into(), json!(m.link_id(pr.guide)));
             e.insert("point".into(), json!(m.point_name(pr.point)));
             e.insert("s".into(), num(sl.s));
+            let (s_q, s_qq) = if several {
+                (
+                    Value::Array(sl.s_qs.iter().map(|x| num(*x)).collect()),
+                    matrix(Some(&sl.s_qqs), num),
+                )
+            } else {
+                (num(sl.s_q), num(sl.s_qq))
+            };
             if vel {
                 e.insert("v".into(), num(sl.v));
-                e.insert("s_q".into(), num(sl.s_q));
+                e.insert("s_q".into(), s_q);
             }
             if acc {
                 e.insert("a".into(), num(sl.a));
-                e.insert("s_qq".into(), num(sl.s_qq));
+                e.insert("s_qq".into(), s_qq);
                 if pr.guide != m.frame() {
                     e.insert("coriolis".into(), vec2(sl.coriolis));
                 }
@@ -410,20 +473,35 @@ fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
     let vel = an.order.is_some();
     let acc = an.order == Some(Order::Acceleration);
     let _ = writeln!(t);
-    let input = match m.scene.input {
-        InputSpec::Crank { .. } => format!(
-            "φ1 = {:.3}°, ω1 = {} rad/s, ε1 = {} rad/s²",
-            s.q.to_degrees().rem_euclid(360.0),
-            fmt(s.rate),
-            fmt(s.rate2)
-        ),
-        InputSpec::Slider { .. } => format!(
-            "s = {} m, v = {} m/s, a = {} m/s²",
-            fmt(s.q),
-            fmt(s.rate),
-            fmt(s.rate2)
-        ),
-    };
+    let several = m.scene.several_inputs();
+    let input = m
+        .scene
+        .inputs()
+        .zip(s.drives.iter())
+        .map(|(spec, d)| {
+            // Several inputs carry their links' ids (φ1, φ4; s3, s6).
+            let id = m.link_id(spec.link());
+            let sub = if several { id } else { "" };
+            match spec {
+                InputSpec::Crank { .. } => {
+                    let k = if several { id } else { "1" };
+                    format!(
+                        "φ{k} = {:.3}°, ω{k} = {} rad/s, ε{k} = {} rad/s²",
+                        d.q.to_degrees().rem_euclid(360.0),
+                        fmt(d.rate),
+                        fmt(d.rate2)
+                    )
+                }
+                InputSpec::Slider { .. } => format!(
+                    "s{sub} = {} m, v{sub} = {} m/s, a{sub} = {} m/s²",
+                    fmt(d.q),
+                    fmt(d.rate),
+                    fmt(d.rate2)
+                ),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("; ");
     let _ = writeln!(t, "position {}: {input}", i + 1);
     t += &table_text(&tables::points(an, s, Lang::En));
     t += &table_text(&tables::links(an, s, Lang::En));
@@ -486,10 +564,65 @@ fn steps_head(an: &Analysis) -> String {
     t
 }
 
+/// The inputs of a position in short: "φ1 = 30°", "s = 0.1 m"; several
+/// with their links' ids: "φ1 = 30°, φ4 = 120°", "s3 = 0.1 m, s6 = 0 m".
+pub fn input_words(an: &Analysis, s: &Solved) -> String {
+    use crate::kinematics::construction::text::num;
+    let m = &an.mech;
+    let several = m.scene.several_inputs();
+    m.scene
+        .inputs()
+        .zip(s.drives.iter())
+        .map(|(spec, d)| {
+            let id = m.link_id(spec.link());
+            match spec {
+                InputSpec::Crank { .. } => format!(
+                    "φ{} = {}°",
+                    if several { id } else { "1" },
+                    num(d.q.to_degrees().rem_euclid(360.0))
+                ),
+                InputSpec::Slider { .. } => {
+                    format!("s{} = {} m", if several { id } else { "" }, num(d.q))
+                }
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The inputs' rates of a position in short: "ω1 = 10 rad/s, ε1 = 0
+/// rad/s²", several with their links' ids.
+pub fn drive_words(an: &Analysis, s: &Solved) -> String {
+    use crate::kinematics::construction::text::num;
+    let m = &an.mech;
+    let several = m.scene.several_inputs();
+    m.scene
+        .inputs()
+        .zip(s.drives.iter())
+        .map(|(spec, d)| {
+            let id = m.link_id(spec.link());
+            match spec {
+                InputSpec::Crank { .. } => {
+                    let k = if several { id } else { "1" };
+                    format!(
+                        "ω{k} = {} rad/s, ε{k} = {} rad/s²",
+                        num(d.rate),
+                        num(d.rate2)
+                    )
+                }
+                InputSpec::Slider { .. } => {
+                    let k = if several { id } else { "" };
+                    format!("v{k} = {} m/s, a{k} = {} m/s²", num(d.rate), num(d.rate2))
+                }
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 /// The steps of position `i` (from 0).
 fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
     use crate::kinematics::construction::text::{num, sentence};
-    let m = &an.mech;
     let mut t = String::new();
     let (title_v, title_a, worst, bound_word) = match lang {
         Lang::En => (
@@ -512,10 +645,7 @@ fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
         ),
     };
     let Some(plans) = &s.plans else { return t };
-    let input = match m.scene.input {
-        InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
-        InputSpec::Slider { .. } => format!("s = {} m", num(s.q)),
-    };
+    let input = input_words(an, s);
     for (title, plan) in [
         (title_v, Some(&plans.velocity)),
         (title_a, plans.acceleration.as_ref()),

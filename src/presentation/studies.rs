@@ -122,9 +122,27 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
     } else {
         (format!("φ{}", m.link_id(d.output)), "rad")
     };
+    let (x, x_unit) = if d.stroke {
+        let (a, b, unit) = d.abscissa(an);
+        (a + &b, unit)
+    } else {
+        ("φ".to_string(), "rad")
+    };
+    let start = if d.stroke {
+        format!(
+            "over the stroke {x} = {} … {} m of the driving slider",
+            crate::kinematics::construction::text::num(d.phi0),
+            crate::kinematics::construction::text::num(d.phi0 + d.h * d.n as f64)
+        )
+    } else {
+        format!(
+            "from φ1 = {:.3}° (the start of the working stroke)",
+            d.phi0.to_degrees().rem_euclid(360.0)
+        )
+    };
     let mut out = format!(
-        "kinematic diagrams of {} ({}), N = {}, from φ1 = {:.3}° (the start of the working stroke)\n\
-         scales: μ_{sym} = {} {unit}/mm, μ_φ = {:.6} rad/mm, H1 = {} mm, H2 = {} mm, μ_{sym}′ = μ_{sym}/(H1·μ_φ) = {:.6} {unit}/mm, μ_{sym}″ = μ_{sym}′/(H2·μ_φ) = {:.6} {unit}/mm\n\n",
+        "kinematic diagrams of {} ({}), N = {}, {start}\n\
+         scales: μ_{sym} = {} {unit}/mm, μ_{x} = {:.6} {x_unit}/mm, H1 = {} mm, H2 = {} mm, μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {:.6} {unit}/mm, μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {:.6} {unit}/mm\n\n",
         match d.point {
             Some(p) => format!("point {}", m.point_name(p)),
             None => format!("link {}", m.link_id(d.output)),
@@ -135,7 +153,6 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
             (None, false) => "its angle",
         },
         d.n,
-        d.phi0.to_degrees().rem_euclid(360.0),
         crate::kinematics::construction::text::num(d.mu_s),
         d.mu_phi,
         d.h1,
@@ -147,20 +164,31 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
     let chord_v = d.chord_velocity();
     let chord_a = d.chord_acceleration();
     out += &format!(
-        "  node   φ1 [°]   {sym:<12} {sym}′ exact    {sym}′ central  {sym}″ exact    {sym}″ chords   {sym}″ central\n"
+        "  node   {}   {sym:<12} {sym}′ exact    {sym}′ central  {sym}″ exact    {sym}″ chords   {sym}″ central\n",
+        if d.stroke {
+            format!("{:<8}", format!("{x} [m]"))
+        } else {
+            "φ1 [°]".to_string()
+        }
     );
     for k in 0..=d.n {
-        let phi = (d.phi0 + d.dir * d.h * k as f64)
-            .to_degrees()
-            .rem_euclid(360.0);
+        let x = if d.stroke {
+            d.phi0 + d.h * k as f64
+        } else {
+            (d.phi0 + d.dir * d.h * k as f64)
+                .to_degrees()
+                .rem_euclid(360.0)
+        };
+        let prec = if d.stroke { 4 } else { 2 };
+        // Over a stroke the chords of s″ end at node N − 1.
+        let chord = if d.stroke && k == d.n {
+            "–".to_string()
+        } else {
+            format!("{:.6}", chord_a[k % d.n])
+        };
         out += &format!(
-            "  {k:>4} {phi:>8.2}   {:<12.6} {:<12.6} {:<13.6} {:<12.6} {:<13.6} {:<12.6}\n",
-            d.s[k],
-            d.ds[k],
-            cv[k],
-            d.dds[k],
-            chord_a[k % d.n],
-            ca[k]
+            "  {k:>4} {x:>8.prec$}   {:<12.6} {:<12.6} {:<13.6} {:<12.6} {chord:<13} {:<12.6}\n",
+            d.s[k], d.ds[k], cv[k], d.dds[k], ca[k]
         );
     }
     out += &format!("\n  interval   {sym}′ exact at the midpoint   {sym}′ chords (ordinate × μ)\n");

@@ -21,6 +21,12 @@
 //! transfer functions). The diagrams are of analogues (per radian of the
 //! crank); with a constant ω1 the time diagrams follow by μ_t = μ_φ/ω1,
 //! v = ω1·s′, a = ω1²·s″.
+//!
+//! With a driving slider (a hydraulic cylinder) the abscissa is its slide
+//! s over the stroke the scene's positions span (from the least to the
+//! greatest), N intervals, and the analogues are per metre of the slide;
+//! the curves do not close, so the acceleration's chord at node 0 is the
+//! first chord of the velocity diagram (a one-sided difference).
 
 use crate::error::{Error, Result};
 use crate::kinematics::construction::scale::standard_scale;
@@ -63,11 +69,15 @@ pub struct Diagrams {
     pub slide: bool,
     pub n: usize,
     /// Crank angle of node 0 (the start of the working stroke) and the
-    /// sense of rotation (±1).
+    /// sense of rotation (±1); a driving slider: its slide at node 0 (the
+    /// start of the stroke), +1.
     pub phi0: f64,
     pub dir: f64,
-    /// Crank angle step, rad.
+    /// Crank angle step, rad (a driving slider: the slide's step, m).
     pub h: f64,
+    /// The abscissa is a driving slider's slide over its stroke (m), not
+    /// a crank's revolution: the curves do not close.
+    pub stroke: bool,
     /// Displacement from node 0 at the nodes, and the analytic s′, s″ there
     /// (per rad of the crank, in the sense of rotation).
     pub s: Vec<f64>,
@@ -130,7 +140,10 @@ impl Diagrams {
     /// abscissa `l` mm long for the revolution.
     pub fn build(an: &Analysis, output: usize, n: usize, l: f64) -> Result<Diagrams> {
         let out = Output::new(an, output)?;
-        let start = an.working_stroke_start(output)?;
+        let start = match stroke(an)? {
+            Some((lo, _)) => lo,
+            None => an.working_stroke_start(output)?,
+        };
         Diagrams::from_output(an, out, output, None, start, n, l)
     }
 
@@ -139,7 +152,10 @@ impl Diagrams {
     /// analogue and its tangential acceleration analogue.
     pub fn build_point(an: &Analysis, p: usize, n: usize, l: f64) -> Result<Diagrams> {
         let out = Output::point(an, p)?;
-        let start = an.working_stroke_start(crate::studies::invariants::default_output(an))?;
+        let start = match stroke(an)? {
+            Some((lo, _)) => lo,
+            None => an.working_stroke_start(crate::studies::invariants::default_output(an))?,
+        };
         let carrier = an.carrier(p);
         Diagrams::from_output(an, out, carrier, Some(p), start, n, l)
     }
@@ -154,22 +170,24 @@ impl Diagrams {
         l: f64,
     ) -> Result<Diagrams> {
         let m = &an.mech;
-        let InputSpec::Crank { omega, .. } = m.scene.input else {
-            return Err(Error::scene(
-                "/input",
-                "kinematic diagrams over a revolution need a crank input",
-            ));
-        };
         if n < 4 {
             return Err(Error::scene("-n", "a diagram needs at least 4 intervals"));
         }
-        let dir = if omega < 0.0 { -1.0 } else { 1.0 };
+        let stroke = stroke(an)?;
+        let dir = match (&m.scene.input, stroke) {
+            (_, Some(_)) => 1.0,
+            (InputSpec::Crank { omega, .. }, None) if *omega < 0.0 => -1.0,
+            _ => 1.0,
+        };
         let path = point.is_some();
         let slide = path
             || m.prismatics
                 .iter()
                 .any(|p| p.slider == output && p.guide == m.frame());
-        let h = TAU / n as f64;
+        let h = match stroke {
+            Some((lo, hi)) => (hi - lo) / n as f64,
+            None => TAU / n as f64,
+        };
         // A path's arc length: Gauss–Legendre over each step of |v|.
         let arc = |out: &mut Output, from: f64, step: f64| -> Result<f64> {
             let mut sum = 0.0;
@@ -197,7 +215,7 @@ impl Diagrams {
             ds.push(dir * v1);
             dds.push(v2);
         }
-        if !slide && (s[n] - s[0]).abs() > 1.0 {
+        if stroke.is_none() && !slide && (s[n] - s[0]).abs() > 1.0 {
             return Err(Error::scene(
                 "output",
                 "the output link turns fully: choose a rocking link or a slider",
@@ -231,9 +249,13 @@ impl Diagrams {
             near = v;
             dense.push((v - s0, dir * v1, v2));
         }
-        // Scales: the revolution over `l` mm; μ_s standard, the curve
-        // within 50 mm; the poles so that the derived curves fit 35 mm.
-        let mu_phi = TAU / l;
+        // Scales: the revolution (the stroke) over `l` mm; μ_s standard,
+        // the curve within 50 mm; the poles so that the derived curves fit
+        // 35 mm.
+        let mu_phi = match stroke {
+            Some((lo, hi)) => (hi - lo) / l,
+            None => TAU / l,
+        };
         let range = s.iter().fold(0.0f64, |a, &x| a.max(x.abs()));
         if range.is_nan() || range <= 1e-12 * m.size {
             return Err(Error::scene(
@@ -254,14 +276,15 @@ impl Diagrams {
             .collect();
         let mu_v = mu_s / (h1 * mu_phi);
         // Chords of the velocity diagram: between the midpoints k − ½ and
-        // k + ½ (the cycle closes: the midpoint before node 0 is the last).
-        let slope2 = (0..n)
-            .map(|k| ((y1[k] - y1[(k + n - 1) % n]) / dx).abs())
-            .fold(0.0, f64::max);
+        // k + ½ (the cycle closes: the midpoint before node 0 is the last;
+        // over a stroke node 0 takes the first chord).
+        let chord = |k: usize| match stroke {
+            Some(_) => y1[k.max(1)] - y1[k.max(1) - 1],
+            None => y1[k] - y1[(k + n - 1) % n],
+        };
+        let slope2 = (0..n).map(|k| (chord(k) / dx).abs()).fold(0.0, f64::max);
         let h2 = pole_distance(slope2, HEIGHT_DERIVED);
-        let y2: Vec<f64> = (0..n)
-            .map(|k| ray_ordinate(h2, dx, y1[k] - y1[(k + n - 1) % n]))
-            .collect();
+        let y2: Vec<f64> = (0..n).map(|k| ray_ordinate(h2, dx, chord(k))).collect();
         let mu_a = mu_v / (h2 * mu_phi);
         Ok(Diagrams {
             output,
@@ -271,6 +294,7 @@ impl Diagrams {
             phi0,
             dir,
             h,
+            stroke: stroke.is_some(),
             s,
             ds,
             dds,
@@ -285,6 +309,17 @@ impl Diagrams {
             y1,
             y2,
         })
+    }
+
+    /// The abscissa's symbol (letters, subscript) and unit: φ1 in rad, or
+    /// a driving slider's slide in m, subscript its link's id (s3).
+    pub fn abscissa(&self, an: &Analysis) -> (String, String, &'static str) {
+        if self.stroke {
+            let id = an.mech.link_id(an.mech.scene.input.link());
+            ("s".into(), id.into(), "m")
+        } else {
+            ("φ".into(), "1".into(), "rad")
+        }
     }
 
     /// s′ by chords at the interval midpoints (ordinate × μ_s′).
@@ -362,6 +397,38 @@ impl Diagrams {
             trapezoid_s: worst(&trapezoid(&self.ds, self.h), &self.s),
         }
     }
+}
+
+/// The stroke of a hydraulic cylinder input over which its diagrams are
+/// drawn: from the least to the greatest slide of the scene's positions
+/// (None for a crank). An error when the positions do not span a stroke,
+/// and for a driving slider on a guide of the frame.
+fn stroke(an: &Analysis) -> Result<Option<(f64, f64)>> {
+    let m = &an.mech;
+    let InputSpec::Slider { pair, .. } = m.scene.input else {
+        return Ok(None);
+    };
+    if m.prismatics[pair].guide == m.frame() {
+        // (Diagrams against a slide on a guide of the frame are not yet
+        // offered: tests/diagrams.rs pins the refusal.)
+        return Err(Error::scene(
+            "/input",
+            "kinematic diagrams need a crank input (over a revolution) or a hydraulic cylinder (a driving slider on a moving guide, over its stroke)",
+        ));
+    }
+    let s = an.input_values()?;
+    let (lo, hi) = s
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+        return Err(Error::scene(
+            "/positions",
+            "diagrams against a driving slider's slide are drawn over the stroke its positions span: give positions.s with at least two different slides",
+        ));
+    }
+    Ok(Some((lo, hi)))
 }
 
 /// The largest magnitude of a list (at least the smallest positive number).

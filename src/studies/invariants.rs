@@ -183,13 +183,7 @@ impl<'a> Output<'a> {
         if m.scene.several_inputs() {
             return Err(Error::scene(
                 "/input",
-                "motion-law invariants and diagrams over a revolution are defined for a single crank input; this scene has several inputs",
-            ));
-        }
-        if !matches!(m.scene.input, InputSpec::Crank { .. }) {
-            return Err(Error::scene(
-                "/input",
-                "motion-law invariants need a crank input (phases over a revolution)",
+                "motion-law invariants and kinematic diagrams are functions of one input (a crank's angle or a slider's slide); this scene has several inputs",
             ));
         }
         if out == m.frame() || out >= m.links.len() {
@@ -221,12 +215,7 @@ impl<'a> Output<'a> {
     /// itself (NaN here) is the integral of |v|.
     pub fn point(an: &'a Analysis, p: usize) -> Result<Output<'a>> {
         let m = &an.mech;
-        let InputSpec::Crank { omega, .. } = m.scene.input else {
-            return Err(Error::scene(
-                "/input",
-                "diagrams over a revolution need a crank input",
-            ));
-        };
+        let omega = m.scene.input.rates().0;
         let carrier = m
             .links_of_point(p)
             .into_iter()
@@ -286,7 +275,10 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     let m = &an.mech;
     let mut out = Output::new(an, set.output)?;
     let InputSpec::Crank { omega, .. } = m.scene.input else {
-        unreachable!("Output::new refuses other inputs")
+        return Err(Error::scene(
+            "/input",
+            "motion-law invariants need a crank input (phases over a revolution)",
+        ));
     };
     let dir = if omega < 0.0 { -1.0 } else { 1.0 };
     let n = set.n.max(36);

@@ -55,7 +55,13 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
         let left = pole.map(|(h, _)| -h).unwrap_or(0.0) - 4.0;
         c.seg(Point::new(left, oy), Point::new(l + 8.0, oy), Class::Thin);
         c.arrow(Point::new(l + 8.0, oy), Vec2::new(1.0, 0.0));
-        c.label(Point::new(l + 8.0, oy), Label::new("φ", "1"), SMALL, None);
+        let (x_name, x_sub, _) = d.abscissa(an);
+        c.label(
+            Point::new(l + 8.0, oy),
+            Label::new(x_name, x_sub),
+            SMALL,
+            None,
+        );
         let step = n.div_ceil(12);
         for k in 0..=n {
             let p = Point::new(x(k as f64), oy);
@@ -153,19 +159,25 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
     curve(&mut c, &graphical, Class::Main);
     curve(&mut c, &dense_pts(&|p| p.2 / d.mu_a, oy_a), Class::Thin);
     // The scales, as the lecture writes them.
+    let (x, per, span) = if d.stroke {
+        let (a, b, _) = d.abscissa(an);
+        (a + &b, "m", num(d.h * n as f64))
+    } else {
+        ("φ".to_string(), "rad", "2π".to_string())
+    };
     let lines = [
         format!(
-            "μ_{sym} = {} {unit}/mm,  μ_φ = 2π/{} = {} rad/mm",
+            "μ_{sym} = {} {unit}/mm,  μ_{x} = {span}/{} = {} {per}/mm",
             num(d.mu_s),
             num(l),
             num(d.mu_phi)
         ),
         format!(
-            "μ_{sym}′ = μ_{sym}/(H1·μ_φ) = {} ({unit}/rad)/mm",
+            "μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {} ({unit}/{per})/mm",
             num(d.mu_v)
         ),
         format!(
-            "μ_{sym}″ = μ_{sym}′/(H2·μ_φ) = {} ({unit}/rad²)/mm",
+            "μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {} ({unit}/{per}²)/mm",
             num(d.mu_a)
         ),
     ];

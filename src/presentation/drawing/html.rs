@@ -411,6 +411,9 @@ fn label_versions(
 
 /// "φ1 = 235.8°" or "s = 0.1 m".
 fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
+    if an.mech.scene.several_inputs() {
+        return crate::presentation::report::input_words(an, s);
+    }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
         InputSpec::Slider { .. } => format!("s = {} {}", num(s.q), unit("m", l)),
@@ -419,6 +422,9 @@ fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
 
 /// The drive at a position: "ω1 = −10 rad/s, ε1 = 0 rad/s²".
 fn drive_text(an: &Analysis, s: &Solved, l: Lang) -> String {
+    if an.mech.scene.several_inputs() {
+        return crate::presentation::report::drive_words(an, s);
+    }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!(
             "ω1 = {} {}, ε1 = {} {}",

@@ -76,8 +76,9 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         shown.iter().map(|p| p.y).sum::<f64>() / shown.len().max(1) as f64,
     );
     // Guides first (under the links): the frame's guides with hatching.
-    for pr in &m.prismatics {
-        if !an.link(pr.slider) || !an.link(pr.guide) {
+    let cylinders = super::cylinder::pairs(an);
+    for (k, pr) in m.prismatics.iter().enumerate() {
+        if !an.link(pr.slider) || !an.link(pr.guide) || cylinders.contains(&k) {
             continue;
         }
         let q = place(pr.slider, pr.point);
@@ -148,8 +149,14 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
                 }
             }
         }
-        // A slider block.
-        if let Some(pr) = m.prismatics.iter().find(|pr| pr.slider == l) {
+        // A slider block (a cylinder's rod: the cylinder's symbol).
+        if let Some(pr) = m
+            .prismatics
+            .iter()
+            .enumerate()
+            .find(|(k, pr)| pr.slider == l && !cylinders.contains(k))
+            .map(|(_, pr)| pr)
+        {
             let q = place(l, pr.point);
             let u = s.config.pose(pr.guide).dir(pr.line_dir);
             let n = perp(u);
@@ -175,6 +182,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             Some(format!("link-{}", link.id)),
         );
     }
+    super::cylinder::draw(an, s, c, mu_l);
     // Pairs and points.
     for (p, &joint) in joints.iter().enumerate() {
         let ls = m.links_of_point(p);
@@ -223,12 +231,15 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             );
         }
     }
-    // The input's motion: ω1 (and ε1) as arcs about the crank's pivot.
-    if let InputSpec::Crank {
-        link, pivot: pv, ..
-    } = m.scene.input
-    {
-        let (w, e) = (s.rate, s.rate2);
+    // The inputs' motion: ω1 (and ε1) as arcs about each crank's pivot.
+    for (i, spec) in m.scene.inputs().enumerate() {
+        let InputSpec::Crank {
+            link, pivot: pv, ..
+        } = *spec
+        else {
+            continue;
+        };
+        let (w, e) = (s.drives[i].rate, s.drives[i].rate2);
         let o = at_point(pv);
         let other = m.links[link]
             .points
@@ -256,7 +267,11 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
                 o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 1.0),
                 Label::new(name, m.link_id(link)),
                 FONT,
-                Some(format!("input-{name}")),
+                Some(if i == 0 {
+                    format!("input-{name}")
+                } else {
+                    format!("input-{name}{}", m.link_id(link))
+                }),
             );
         }
     }

@@ -6,6 +6,7 @@
 
 pub mod canvas;
 pub mod centres;
+pub mod cylinder;
 pub mod diagram;
 pub mod frenet;
 pub mod html;
@@ -395,6 +396,10 @@ fn compose(
 
 fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
     let w = words(lang);
+    if an.mech.scene.several_inputs() {
+        let inputs = crate::presentation::report::input_words(an, s);
+        return format!("{} {}, {inputs}", w[4], k + 1);
+    }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!(
             "{} {}, φ1 = {}°",

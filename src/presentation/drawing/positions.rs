@@ -74,7 +74,9 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     }
     // Trajectories of points not fixed to the frame nor turning about a
     // fixed pivot, through 72 positions per revolution (or the solved ones).
-    let full_turn = matches!(m.scene.input, InputSpec::Crank { .. }) && solved.len() >= 12;
+    let full_turn = matches!(m.scene.input, InputSpec::Crank { .. })
+        && !m.scene.several_inputs()
+        && solved.len() >= 12;
     let mut paths: Vec<Vec<Point>> = Vec::new();
     let tracked: Vec<(usize, usize)> = (0..m.scene.points.len())
         .filter_map(|p| {

@@ -7,7 +7,7 @@ use super::MAX_TOLERANCE_OF_PLAN;
 use super::answer::{Answer, Given};
 use super::items::{Expected, expect};
 use crate::error::Result;
-use crate::kinematics::analytic::{Drive, Order};
+use crate::kinematics::analytic::{Drives, Order};
 use crate::kinematics::construction::text::num;
 use crate::kinematics::construction::{
     Drafting, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
@@ -118,12 +118,8 @@ pub(super) struct Builds<'a> {
 }
 
 impl Builds<'_> {
-    fn drive(&self) -> Drive {
-        Drive {
-            q: self.s.q,
-            rate: self.s.rate,
-            rate2: self.s.rate2,
-        }
+    fn drive(&self) -> Drives {
+        self.s.drives
     }
 
     /// The answer's plan built on configuration `c` with `variant`: a
@@ -323,7 +319,9 @@ pub(super) fn candidates(b: &Builds, plan: &Plan, exp: &[Expected]) -> Vec<Fit> 
             continue;
         }
         ps.branches.sign[g] = -ps.branches.sign[g];
-        let Ok(c) = ps.solve_at(s.q) else { continue };
+        let Ok(c) = ps.solve_at_coords(s.drives.coords()) else {
+            continue;
+        };
         if let Ok(p) = b.plan(&c, Variant::default())
             && let Some(f) = fit(Candidate::Branch(g), p, 1.0)
         {

@@ -123,6 +123,12 @@ fn time_per_call(min_time: f64, mut f: impl FnMut() -> Result<()>) -> Result<f64
 /// Run every method on the scene.
 pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     let m = &an.mech;
+    if m.scene.several_inputs() {
+        return Err(Error::scene(
+            "/input",
+            "the precision report measures its methods along one input (finite differences and sweeps in its coordinate); this scene has several inputs",
+        ));
+    }
     let crank = matches!(m.scene.input, InputSpec::Crank { .. });
     let qs = eval_positions(an, set)?;
     if qs.is_empty() {
