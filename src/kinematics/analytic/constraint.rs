@@ -459,6 +459,14 @@ impl<'a> ConstraintSolver<'a> {
             .enumerate()
             .map(|(i, r)| r / scale_of(i))
             .collect();
+        // Inputs standing to their rounding: no path, only the corrector.
+        let rounding = |i: usize| {
+            64.0 * f64::EPSILON * (from[i].abs() + (from[i] + span[i]).abs() + scale_of(i))
+        };
+        if several && (0..span.len()).all(|i| span[i].abs() <= rounding(i)) {
+            self.steps = 0;
+            return self.newton(&at(end), false).map(|_| ());
+        }
         let (max_step, min_step) = if several {
             let moving = (0..span.len()).filter(|&i| span[i] != 0.0);
             let max = moving
