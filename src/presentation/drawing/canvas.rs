@@ -128,17 +128,113 @@ pub enum Prim {
     },
 }
 
+/// Segments (or label boxes) kept in cells of a grid, so that asking which
+/// meet a small rectangle looks at a few cells, not at all of them: label
+/// placement stays linear in the size of the drawing (a positions sheet
+/// of 2 000 positions has some 100 000 segments).
+#[derive(Default, Clone)]
+pub struct Grid {
+    items: Vec<(Point, Point)>,
+    cells: std::collections::HashMap<(i64, i64), Vec<u32>>,
+    /// Per item, the last query that met it (to count each once).
+    stamp: std::cell::RefCell<(u32, Vec<u32>)>,
+}
+
+/// The side of a grid's cell, mm.
+const CELL: f64 = 8.0;
+
+fn cell_of(p: Point) -> (i64, i64) {
+    ((p.x / CELL).floor() as i64, (p.y / CELL).floor() as i64)
+}
+
+impl Grid {
+    /// Every item, in the order added.
+    pub fn iter(&self) -> impl Iterator<Item = &(Point, Point)> {
+        self.items.iter()
+    }
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+    pub fn push(&mut self, seg: (Point, Point)) {
+        let k = self.items.len() as u32;
+        self.items.push(seg);
+        let (a, b) = seg;
+        // The cells along the segment, a half cell at a time.
+        let n = ((b - a).hypot() / (0.5 * CELL)).ceil().max(1.0) as usize;
+        let mut last = None;
+        for i in 0..=n {
+            let c = cell_of(a + (b - a) * (i as f64 / n as f64));
+            // Crossing a corner diagonally can skip a cell: add the
+            // neighbours along the way too.
+            for d in [(0, 0), (1, 0), (-1, 0), (0, 1), (0, -1)] {
+                let cc = (c.0 + d.0, c.1 + d.1);
+                if last != Some(cc) {
+                    let v = self.cells.entry(cc).or_default();
+                    if v.last() != Some(&k) {
+                        v.push(k);
+                    }
+                }
+            }
+            last = Some(c);
+        }
+    }
+    /// A rectangle (a label's box), kept as its two corners in every cell
+    /// it covers.
+    pub fn push_rect(&mut self, r: Rect) {
+        let k = self.items.len() as u32;
+        self.items.push((Point::new(r.x0, r.y0), Point::new(r.x1, r.y1)));
+        let (c0, c1) = (cell_of(Point::new(r.x0, r.y0)), cell_of(Point::new(r.x1, r.y1)));
+        for x in c0.0..=c1.0 {
+            for y in c0.1..=c1.1 {
+                self.cells.entry((x, y)).or_default().push(k);
+            }
+        }
+    }
+    /// How many items meet `test` among those near `r`.
+    pub fn count(&self, r: &Rect, test: impl Fn(&(Point, Point)) -> bool) -> usize {
+        let mut st = self.stamp.borrow_mut();
+        st.0 = st.0.wrapping_add(1);
+        let q = st.0;
+        if st.1.len() < self.items.len() {
+            st.1.resize(self.items.len(), 0);
+        }
+        let (c0, c1) = (cell_of(Point::new(r.x0, r.y0)), cell_of(Point::new(r.x1, r.y1)));
+        let mut n = 0;
+        for x in c0.0..=c1.0 {
+            for y in c0.1..=c1.1 {
+                let Some(v) = self.cells.get(&(x, y)) else {
+                    continue;
+                };
+                for &k in v {
+                    if st.1[k as usize] == q {
+                        continue;
+                    }
+                    st.1[k as usize] = q;
+                    if test(&self.items[k as usize]) {
+                        n += 1;
+                    }
+                }
+            }
+        }
+        n
+    }
+}
+
 /// The sheet: what is drawn, the boxes of the placed labels (drawing
 /// coordinates) and the segments labels must avoid.
 #[derive(Default)]
 pub struct Canvas {
     pub prims: Vec<Prim>,
-    pub boxes: Vec<Rect>,
+    /// The placed labels' boxes, as their two corners.
+    pub boxes: Grid,
     /// Main lines, outlines of symbols, arrowheads: labels keep off them.
-    pub avoid: Vec<(Point, Point)>,
+    pub avoid: Grid,
     /// Thin lines (hatching, construction lines): labels keep off them
     /// where they can.
-    pub avoid_thin: Vec<(Point, Point)>,
+    pub avoid_thin: Grid,
     /// Labels waiting to be placed once everything else is drawn.
     pub pending: Vec<(Point, Label, f64, Option<String>)>,
 }
@@ -274,21 +370,16 @@ impl Canvas {
                 let x0 = anchor.x + d.x + if d.x < 0.0 { -w } else { 0.0 };
                 let y0 = anchor.y + d.y + if d.y < 0.0 { -h } else { 0.0 };
                 let r = Rect::new(x0, y0, x0 + w, y0 + h);
+                let (r3, r2) = (r.inflate(0.3, 0.3), r.inflate(0.2, 0.2));
                 let labels = self
                     .boxes
-                    .iter()
-                    .filter(|b| b.intersect(r.inflate(0.3, 0.3)).area() > 0.0)
-                    .count();
+                    .count(&r3, |(a, b)| Rect::from_points(*a, *b).intersect(r3).area() > 0.0);
                 let lines = self
                     .avoid
-                    .iter()
-                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.3, 0.3)))
-                    .count();
+                    .count(&r3, |(a, b)| seg_hits_rect(*a, *b, &r3));
                 let thin = self
                     .avoid_thin
-                    .iter()
-                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.2, 0.2)))
-                    .count();
+                    .count(&r2, |(a, b)| seg_hits_rect(*a, *b, &r2));
                 let score = (labels, lines, thin);
                 if best.as_ref().is_none_or(|(s0, _)| score < *s0) {
                     best = Some((score, r));
@@ -299,7 +390,7 @@ impl Canvas {
             }
         }
         let (_, r) = best.expect("candidates exist");
-        self.boxes.push(r);
+        self.boxes.push_rect(r);
         self.prims.push(Prim::Text {
             // The baseline sits 0.35 em above the box's bottom.
             at: Point::new(r.x0, r.y0 + 0.35 * size),
@@ -318,7 +409,7 @@ impl Canvas {
             at.x + label.width(size),
             at.y + size * 0.8,
         );
-        self.boxes.push(r);
+        self.boxes.push_rect(r);
         self.prims.push(Prim::Text {
             at,
             label,
