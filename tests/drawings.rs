@@ -250,9 +250,18 @@ fn rendered_sheets_pass_the_layout_checks() {
                         .map(|l| kurbo::Point::new(attr(l, "cx").unwrap(), attr(l, "cy").unwrap()))
                 };
                 let pole = find(&plan.points[0].key).expect("the pole is drawn");
+                // The sheet's plan is built at its own scale: the solver's
+                // plan points scaled by the ratio of the scales.
+                let key = if s.name.starts_with("velocity") {
+                    "mu_v"
+                } else {
+                    "mu_a"
+                };
+                let mu = s.scales.iter().find(|(k, _)| *k == key).unwrap().1;
+                let k = plan.mu / mu;
                 for &p in &an.points {
                     let i = plan.of_point[p].unwrap();
-                    let want = plan.points[i].at;
+                    let want = plan.points[i].at * k;
                     // Points sharing a place share one dot: find the dot there.
                     let expected = kurbo::Point::new(pole.x + want.x, pole.y - want.y);
                     let near = lines
