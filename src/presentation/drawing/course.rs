@@ -12,12 +12,14 @@
 //! (a bisection on one zoom factor), so the sheet is as full as standard
 //! scales allow.
 
-use super::canvas::{Canvas, Line, SMALL};
+use super::canvas::{Canvas, SMALL};
 use super::sheet::{self, Page};
 use super::table::{self, Ruled, number, unit};
-use super::{DrawOptions, Sheet, SheetSize, fill, lower_scale, positions, scale_text, words};
+use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::scale::{standard_above, standard_scale};
+use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::PositionsSpec;
@@ -177,25 +179,32 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     }
     let field = field_of(size);
     let block = sheet::block(size);
-    let mut cache: HashMap<(usize, u64), Figure> = HashMap::new();
-    // The figures at zoom `z`, and whether they pack.
-    let mut attempt = |z: f64| -> Option<Vec<(Figure, Point)>> {
+    let cx = Ctx {
+        an,
+        solved,
+        lang,
+        field,
+    };
+    let mut cache = HashMap::new();
+    // The figures at zooms `z` (one per figure; a figure's target area is
+    // its share of the field times z²), and where they go if they pack.
+    let mut attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
         let mut figs: Vec<Figure> = Vec::new();
         for (i, (src, share)) in sources.iter().enumerate() {
-            let area = *share * z * z * field.area();
-            let f = figure(an, solved, src, area, field, lang, &mut cache, i)?;
-            figs.push(f);
+            let area = *share * z[i] * z[i] * field.area();
+            figs.push(figure(&cx, src, area, &mut cache, i)?);
         }
         let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
         let at = pack(&rects, field, block)?;
         Some(figs.into_iter().zip(at).collect())
     };
-    // Grow the shares together while everything packs.
-    let (mut lo, mut hi) = (0.3, 1.6);
+    // Grow the shares together while everything packs …
+    let n = sources.len();
+    let (mut lo, mut hi) = (0.2, 1.8);
     let mut best = None;
     for _ in 0..12 {
         let z = 0.5 * (lo + hi);
-        match attempt(z) {
+        match attempt(&vec![z; n]) {
             Some(p) => {
                 best = Some(p);
                 lo = z;
@@ -203,14 +212,29 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             None => hi = z,
         }
     }
-    let placed = match best {
-        Some(p) => p,
-        None => attempt(lo).ok_or_else(|| {
-            crate::Error::Internal(format!(
-                "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
-            ))
-        })?,
-    };
+    // … then each figure by itself, the largest share first, one standard
+    // step (×1.25 and more) at a time, while the rest still packs.
+    let mut zs = vec![lo; n];
+    let mut order: Vec<usize> = (0..n).filter(|&i| sources[i].1 > 0.0).collect();
+    order.sort_by(|&a, &b| sources[b].1.total_cmp(&sources[a].1));
+    for &i in &order {
+        for _ in 0..6 {
+            let mut z = zs.clone();
+            z[i] *= 1.25;
+            match attempt(&z) {
+                Some(p) => {
+                    best = Some(p);
+                    zs = z;
+                }
+                None => break,
+            }
+        }
+    }
+    let placed = best.ok_or_else(|| {
+        crate::Error::Internal(format!(
+            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
+        ))
+    })?;
     let mut page = Page::new(size);
     for (f, at) in &placed {
         let (fw, _) = f.size();
@@ -252,142 +276,156 @@ fn field_of(size: SheetSize) -> Rect {
     f.inset(-sheet::PAD)
 }
 
-/// Figure `i` from its source at target area `area` (mm²), cached by
-/// the scale it comes to.
-#[allow(clippy::too_many_arguments)]
+/// What the figures need to be drawn.
+struct Ctx<'a> {
+    an: &'a Analysis,
+    solved: &'a [Solved],
+    lang: Lang,
+    field: Rect,
+}
+
+/// Figure `i` from its source at target area `area` (mm²): drawn at the
+/// smallest standard scale at which it fits a box of that area in its own
+/// proportions; every drawing made is kept in `cache` by figure and scale.
 fn figure(
-    an: &Analysis,
-    solved: &[Solved],
+    cx: &Ctx,
     src: &Source,
     area: f64,
-    field: Rect,
-    lang: crate::kinematics::construction::text::Lang,
-    cache: &mut HashMap<(usize, u64), Figure>,
+    cache: &mut HashMap<(usize, u64), Option<Figure>>,
     i: usize,
 ) -> Option<Figure> {
-    let w = words(lang);
-    // A target box of `area` in the proportions `aspect` (w/h), no larger
-    // than the field.
-    let boxed = |aspect: f64| {
-        let bw = (area * aspect).sqrt().min(field.width());
-        let bh = (area / aspect).sqrt().min(field.height());
-        (bw, bh - CAPTION * 2.0)
-    };
+    if let Source::Fixed(f) = src {
+        return Some((*f).clone());
+    }
+    let (aspect, lower_w, lower_h) = natural(cx, src)?;
+    let bw = (area * aspect).sqrt().min(cx.field.width());
+    let bh = (area / aspect).sqrt().min(cx.field.height());
+    let mut mu = standard_scale(lower_scale(lower_w, lower_h, (bw, bh)), 1.0);
+    // A box smaller than the figure's lettering allows: the smallest
+    // drawing there is (the packer then judges it).
+    let mut smallest: Option<(f64, Figure)> = None;
+    for _ in 0..16 {
+        let f = cache
+            .entry((i, mu.to_bits()))
+            .or_insert_with(|| draw(cx, src, mu))
+            .as_ref()?;
+        let (w, h) = f.size();
+        if w <= bw && h <= bh {
+            return Some(f.clone());
+        }
+        if smallest.as_ref().is_none_or(|(a, _)| w * h < *a) {
+            smallest = Some((w * h, f.clone()));
+        }
+        mu = standard_above(mu);
+    }
+    smallest.map(|(_, f)| f)
+}
+
+/// A source's proportions (w/h) and its real extent (w, h: m, m/s, m/s²;
+/// the extent of one cell for a grid of plans, times its columns and rows).
+fn natural(cx: &Ctx, src: &Source) -> Option<(f64, f64, f64)> {
     match src {
-        Source::Fixed(f) => Some((*f).clone()),
-        Source::Positions(t) => {
-            let e = super::mechanism_extent(an, solved);
+        Source::Fixed(_) => None,
+        Source::Positions(_) => {
+            let e = super::mechanism_extent(cx.an, cx.solved);
             let aspect = (e.width() / e.height().max(1e-12)).clamp(0.5, 3.0);
-            let b = boxed(aspect);
-            let draw = |mu: f64| {
-                let mut c = Canvas::default();
-                positions::draw(an, solved, t, &mut c, mu);
-                Some(c)
-            };
-            let lower = lower_scale(e.width(), e.height(), b);
-            // The scale first (cheap drawings are not cheaper: the cache
-            // holds what was drawn at each scale).
-            let mut found = None;
-            let mut mu = crate::kinematics::construction::scale::standard_scale(lower, 1.0);
-            for _ in 0..40 {
-                let key = (i, mu.to_bits());
-                let c = match cache.get(&key) {
-                    Some(f) => f.canvas.clone(),
-                    None => {
-                        let c = draw(mu)?;
-                        cache.insert(
-                            key,
-                            Figure {
-                                id: "positions".into(),
-                                caption: vec![format!(
-                                    "{}, {}",
-                                    w.positions,
-                                    scale_text("l", mu, "m", lang)
-                                )],
-                                canvas: c.clone(),
-                                scales: vec![("mu_l", mu)],
-                            },
-                        );
-                        c
-                    }
-                };
-                let r = c.bounds();
-                if r.width() <= b.0 && r.height() <= b.1 {
-                    found = Some(mu);
-                    break;
-                }
-                mu = crate::kinematics::construction::scale::standard_above(mu);
-            }
-            cache.get(&(i, found?.to_bits())).cloned()
+            Some((aspect, e.width(), e.height()))
         }
         Source::Velocities(at) => {
-            let n = at.len().max(1);
-            // Columns and rows of the grid of plans: as square as the
-            // field's proportions make it.
-            let cols = ((n as f64 * 1.6).sqrt().ceil() as usize).clamp(1, n);
-            let rows = n.div_ceil(cols);
-            let b = boxed(1.6 * cols as f64 / rows as f64 / 1.6);
-            let cell = (b.0 / cols as f64 - GAP, b.1 / rows as f64 - CAPTION - GAP);
-            if cell.0 <= 0.0 || cell.1 <= 0.0 {
-                return None;
-            }
-            let plans0: Vec<&Plan> = at
-                .iter()
-                .filter_map(|&k| solved.get(k - 1)?.plans.as_ref().map(|p| &p.velocity))
-                .collect();
+            let (cols, rows) = grid(at.len());
             let (mut ew, mut eh) = (0.0f64, 0.0f64);
-            for p in &plans0 {
+            for &k in at {
+                let p = &cx.solved.get(k - 1)?.plans.as_ref()?.velocity;
                 let e = extent(p);
                 ew = ew.max(e.width() * p.mu);
                 eh = eh.max(e.height() * p.mu);
             }
-            let lower = lower_scale(ew, eh, cell);
-            let draw = |mu: f64| -> Option<Vec<Canvas>> {
-                at.iter()
-                    .map(|&k| {
-                        let s = solved.get(k - 1)?;
-                        let p = an
-                            .plans_at_scales(s, Order::Velocity, Some(mu), None)
-                            .ok()?;
-                        let mut c = Canvas::default();
-                        super::plan::draw(&p.velocity, &mut c, &an.points);
-                        Some(c)
-                    })
-                    .collect()
-            };
-            let biggest = |cs: &Vec<Canvas>| {
-                let (w, h) = cs.iter().fold((0.0f64, 0.0f64), |(w, h), c| {
-                    let b = c.bounds();
-                    (w.max(b.width()), h.max(b.height()))
-                });
-                Rect::new(0.0, 0.0, w, h)
-            };
-            let (mu, cs) = fill(lower, cell, draw, biggest)?;
-            let cb = biggest(&cs);
-            let (cw, ch) = (cb.width() + GAP, cb.height() + CAPTION + GAP);
-            let mut grid = Canvas::default();
+            let (w, h) = (ew * cols as f64, eh * rows as f64);
+            Some(((w / h.max(1e-12)).clamp(0.5, 3.0), w, h))
+        }
+        Source::Acceleration(k) => {
+            let p = cx
+                .solved
+                .get(k - 1)?
+                .plans
+                .as_ref()?
+                .acceleration
+                .as_ref()?;
+            let e = extent(p);
+            let aspect = (e.width() / e.height().max(1e-9)).clamp(0.4, 2.5);
+            Some((aspect, e.width() * p.mu, e.height() * p.mu))
+        }
+    }
+}
+
+/// Columns and rows of a grid of `n` plans, wider than high.
+fn grid(n: usize) -> (usize, usize) {
+    let n = n.max(1);
+    let cols = ((n as f64 * 1.6).sqrt().ceil() as usize).clamp(1, n);
+    (cols, n.div_ceil(cols))
+}
+
+/// A source drawn at scale `mu`.
+fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
+    let (an, solved, lang) = (cx.an, cx.solved, cx.lang);
+    let w = words(lang);
+    match src {
+        Source::Fixed(f) => Some((*f).clone()),
+        Source::Positions(t) => {
+            let mut c = Canvas::default();
+            positions::draw(an, solved, t, &mut c, mu);
+            Some(Figure {
+                id: "positions".into(),
+                caption: vec![format!(
+                    "{}, {}",
+                    w.positions,
+                    scale_text("l", mu, "m", lang)
+                )],
+                canvas: c,
+                scales: vec![("mu_l", mu)],
+            })
+        }
+        Source::Velocities(at) => {
+            let (cols, _) = grid(at.len());
+            let cs: Vec<Canvas> = at
+                .iter()
+                .map(|&k| {
+                    let s = solved.get(k - 1)?;
+                    let p = an
+                        .plans_at_scales(s, Order::Velocity, Some(mu), None)
+                        .ok()?;
+                    let mut c = Canvas::default();
+                    super::plan::draw(&p.velocity, &mut c, &an.points);
+                    Some(c)
+                })
+                .collect::<Option<_>>()?;
+            // Columns as wide as their widest plan, rows as high as their
+            // highest; each plan centred in its cell under its number.
+            let rows = cs.len().div_ceil(cols);
+            let mut cw = vec![0.0f64; cols];
+            let mut ch = vec![0.0f64; rows];
+            for (j, c) in cs.iter().enumerate() {
+                let b = c.bounds();
+                cw[j % cols] = cw[j % cols].max(b.width() + GAP);
+                ch[j / cols] = ch[j / cols].max(b.height() + CAPTION + GAP);
+            }
+            let xs: Vec<f64> = (0..cols).map(|i| cw[..i].iter().sum()).collect();
+            let ys: Vec<f64> = (0..rows).map(|i| -ch[..i].iter().sum::<f64>()).collect();
+            let mut g = Canvas::default();
             for (j, (c, &k)) in cs.iter().zip(at).enumerate() {
                 let (col, row) = (j % cols, j / cols);
-                let x0 = col as f64 * cw;
-                let y0 = -(row as f64) * ch;
+                let (x0, y0, w_, h_) = (xs[col], ys[row], cw[col], ch[row]);
                 let b = c.bounds();
-                // The plan centred in its cell, its number above it.
-                let ox = x0 + (cw - b.width()) / 2.0 - b.x0;
-                let oy = y0 - CAPTION - (ch - CAPTION - b.height()) / 2.0 - b.y1;
-                grid.append(c, ox, oy);
-                grid.rich(
-                    Point::new(x0 + cw / 2.0, y0 - CAPTION + 1.5),
+                let ox = x0 + (w_ - b.width()) / 2.0 - b.x0;
+                let oy = y0 - CAPTION - (h_ - CAPTION - b.height()) / 2.0 - b.y1;
+                g.append(c, ox, oy);
+                g.rich(
+                    Point::new(x0 + w_ / 2.0, y0 - CAPTION + 1.5),
                     &format!("{} {k}", w.position),
                     SMALL,
                     "caption",
                     "middle",
                 );
-            }
-            // Thin rules between the cells, so each plan reads as its own.
-            let gh = rows as f64 * ch;
-            for c in 1..cols {
-                let x = c as f64 * cw;
-                grid.path(vec![Point::new(x, 0.0), Point::new(x, -gh)], Line::Thin);
             }
             Some(Figure {
                 id: "velocity".into(),
@@ -396,26 +434,17 @@ fn figure(
                     plural_velocities(lang),
                     scale_text("v", mu, "m/s", lang)
                 )],
-                canvas: grid,
+                canvas: g,
                 scales: vec![("mu_v", mu)],
             })
         }
         Source::Acceleration(k) => {
             let s = solved.get(k - 1)?;
-            let p0 = s.plans.as_ref()?.acceleration.as_ref()?;
-            let e = extent(p0);
-            let aspect = (e.width() / e.height().max(1e-9)).clamp(0.4, 2.5);
-            let b = boxed(aspect);
-            let lower = lower_scale(e.width() * p0.mu, e.height() * p0.mu, b);
-            let draw = |mu: f64| -> Option<Canvas> {
-                let p = an
-                    .plans_at_scales(s, Order::Acceleration, None, Some(mu))
-                    .ok()?;
-                let mut c = Canvas::default();
-                super::plan::draw(p.acceleration.as_ref()?, &mut c, &an.points);
-                Some(c)
-            };
-            let (mu, c) = fill(lower, b, draw, |c| c.bounds())?;
+            let p = an
+                .plans_at_scales(s, Order::Acceleration, None, Some(mu))
+                .ok()?;
+            let mut c = Canvas::default();
+            super::plan::draw(p.acceleration.as_ref()?, &mut c, &an.points);
             Some(Figure {
                 id: format!("acceleration-{k}"),
                 caption: vec![
@@ -430,8 +459,7 @@ fn figure(
 }
 
 /// "Plans of velocities", localised.
-fn plural_velocities(l: crate::kinematics::construction::text::Lang) -> &'static str {
-    use crate::kinematics::construction::text::Lang;
+fn plural_velocities(l: Lang) -> &'static str {
     match l {
         Lang::En => "Plans of velocities",
         Lang::Uk => "Плани швидкостей",
@@ -450,13 +478,7 @@ fn extent(p: &Plan) -> Rect {
 /// The table of the results of the positions `at` (from 1): a row per
 /// quantity the plans give (its unit in the first column), a column per
 /// position.
-fn results(
-    an: &Analysis,
-    solved: &[Solved],
-    at: &[usize],
-    kind: PlanKind,
-    lang: crate::kinematics::construction::text::Lang,
-) -> Ruled {
+fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang: Lang) -> Ruled {
     let plan_of = |k: usize| -> Option<&Plan> {
         let p = solved.get(k - 1)?.plans.as_ref()?;
         match kind {
@@ -481,9 +503,9 @@ fn results(
         values.push(m);
     }
     let head_q = match lang {
-        crate::kinematics::construction::text::Lang::En => "quantity, unit",
-        crate::kinematics::construction::text::Lang::Uk => "величина, од.",
-        crate::kinematics::construction::text::Lang::Ru => "величина, ед.",
+        Lang::En => "quantity, unit",
+        Lang::Uk => "величина, од.",
+        Lang::Ru => "величина, ед.",
     };
     let mut head = vec![head_q.to_string()];
     head.extend(at.iter().map(|k| k.to_string()));
@@ -520,18 +542,40 @@ fn round3(x: f64) -> f64 {
 /// highest and then leftmost (a skyline packer): their top left corners,
 /// or `None` when one does not fit.
 pub fn pack(sizes: &[(f64, f64)], field: Rect, block: Rect) -> Option<Vec<Point>> {
-    let mut order: Vec<usize> = (0..sizes.len()).collect();
-    order.sort_by(|&a, &b| {
-        let (wa, ha) = sizes[a];
-        let (wb, hb) = sizes[b];
-        (wb * hb).total_cmp(&(wa * ha))
-    });
+    // Largest first, by area, by height, by width: the first order that
+    // packs.
+    // Of those that pack, the one whose figures end highest: it leaves the
+    // most room to grow.
+    let keys: [fn((f64, f64)) -> f64; 3] = [|(w, h)| w * h, |(_, h)| h, |(w, _)| w];
+    keys.iter()
+        .filter_map(|key| {
+            let mut order: Vec<usize> = (0..sizes.len()).collect();
+            order.sort_by(|&a, &b| key(sizes[b]).total_cmp(&key(sizes[a])));
+            let at = pack_in_order(sizes, &order, field, block)?;
+            let bottom = at
+                .iter()
+                .zip(sizes)
+                .map(|(p, (_, h))| p.y + h)
+                .fold(f64::MIN, f64::max);
+            Some((bottom, at))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, at)| at)
+}
+
+/// [`pack`] in one order.
+fn pack_in_order(
+    sizes: &[(f64, f64)],
+    order: &[usize],
+    field: Rect,
+    block: Rect,
+) -> Option<Vec<Point>> {
     // The skyline: x-intervals with the depth filled so far.
     let mut sky: Vec<(f64, f64, f64)> = vec![(field.x0, field.x1, field.y0)];
     let mut placed: Vec<Rect> = Vec::new();
     let mut out = vec![Point::ZERO; sizes.len()];
     let block = block.inset(GAP / 2.0);
-    for i in order {
+    for &i in order {
         let (w, h) = (sizes[i].0 + GAP, sizes[i].1 + GAP);
         let mut xs: Vec<f64> = sky.iter().map(|s| s.0).collect();
         xs.extend(sky.iter().map(|s| s.1 - w));

@@ -195,14 +195,19 @@ pub fn write_sheets(
     let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
     crate::output::write_files_atomically(&refs)?;
     let written: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
-    for old in before {
-        let p = dir.join(&old);
-        if !written.contains(&p) && p.is_file() && std::fs::remove_file(&p).is_ok() {
-            crate::output::note(&format!(
-                "removed {}: a sheet of an earlier run that this one does not draw",
-                p.display()
-            ));
-        }
+    let removed: Vec<String> = before
+        .into_iter()
+        .map(|old| dir.join(old))
+        .filter(|p| !written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    if !removed.is_empty() {
+        crate::output::note(&format!(
+            "removed {} sheet file(s) of an earlier run in {} that this run does not draw: {}",
+            removed.len(),
+            dir.display(),
+            abbreviate(&removed)
+        ));
     }
     // Sheets by the names this program gives, neither written now nor
     // listed by a manifest (an older version's): said, left alone.
@@ -211,19 +216,28 @@ pub fn write_sheets(
             .filter_map(|e| e.ok())
             .map(|e| e.path())
             .filter(|p| p.is_file() && !written.contains(p) && looks_like_a_sheet(p))
-            .map(|p| p.display().to_string())
+            .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
             .collect();
         stale.sort();
         if !stale.is_empty() {
             crate::output::note(&format!(
-                "{} older sheet file(s) not from this run left in {}: {}",
+                "{} sheet file(s) in {} are not from this run (no manifest lists them; left as they are): {}",
                 stale.len(),
                 dir.display(),
-                stale.join(", ")
+                abbreviate(&stale)
             ));
         }
     }
     Ok(written)
+}
+
+/// The first names of a list and how many more.
+fn abbreviate(names: &[String]) -> String {
+    if names.len() <= 6 {
+        names.join(", ")
+    } else {
+        format!("{} and {} more", names[..5].join(", "), names.len() - 5)
+    }
 }
 
 /// Whether a file is named as this program names its sheets.

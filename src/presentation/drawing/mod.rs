@@ -629,13 +629,7 @@ pub(crate) fn title_block(
     title: &str,
     number: (usize, usize),
 ) -> TitleBlock {
-    let sc = &an.mech.scene;
-    let name = if sc.title.is_empty() {
-        title
-    } else {
-        &sc.title
-    };
-    TitleBlock::new(&sc.sheet, name, opt.lang, number)
+    TitleBlock::new(&an.mech.scene.sheet, title, opt.lang, number)
 }
 
 /// "position 1, φ1 = 30°" (the input link's own number), localised.

@@ -183,8 +183,7 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
             } => push(
                 &mut rows,
                 Row {
-                    // The symbol, without the formula that follows it.
-                    quantity: symbol(what),
+                    quantity: laid_off(plan, what, *from, *to),
                     segment: seg(*from, *to),
                     mm: Some(len(*from, *to)),
                     value: *value,
@@ -270,6 +269,22 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
         }
     }
     rows
+}
+
+/// The symbol of a vector laid off from `from` to `to`: its own ("a^n_BA"
+/// of "a^n_BA = ω1²·l_AB", "v_B" of a driving slider's), or for a bare
+/// product ("ω1·l_O1A") the velocity of the point it reaches, the
+/// tangential acceleration on the acceleration plan.
+fn laid_off(plan: &Plan, what: &str, from: usize, to: usize) -> String {
+    if what.contains(" = ") || what.starts_with("v_") || what.starts_with("a_") {
+        return symbol(what);
+    }
+    let up = |i: usize| plan.points[i].name().to_uppercase();
+    match plan.kind {
+        PlanKind::Velocity if from == 0 => format!("v_{}", up(to)),
+        PlanKind::Velocity => format!("v_{}{}", up(to), up(from)),
+        PlanKind::Acceleration => format!("a^t_{}", up(to)),
+    }
 }
 
 /// A laid-off vector's symbol: "a^n_BA" of "a^n_BA = ω1²·l_AB".
