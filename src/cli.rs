@@ -69,8 +69,8 @@ pub enum Command {
         output: PathBuf,
         #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
         format: DrawFormat,
-        /// Sheet size: A4, A3 or A1, landscape (default: the smallest whose field holds
-        /// the mechanism's drawings at the scene's μ_l, A4 when it does).
+        /// Sheet size: A4, A3, A2 or A1, landscape (default A4, every figure at the scale
+        /// that fills it; with want.scales.mu_l, the smallest sheet that holds the mechanism).
         #[arg(long, value_parser = sheet)]
         sheet: Option<SheetSize>,
         /// Add a title block to every sheet.
@@ -93,6 +93,10 @@ pub enum Command {
         /// Mark the instant centres (Kennedy's theorem) on the plans of the mechanism.
         #[arg(long, conflicts_with = "html")]
         centres: bool,
+        /// Also compose the course sheet (course.svg): the kinematic analysis sheet of a
+        /// course project on A1 (A2 with --sheet A2), with the ГОСТ 2.104 title block.
+        #[arg(long, conflicts_with = "html")]
+        course: bool,
     },
     /// Work-precision report: each method's error against an extended-precision reference, and its run time.
     Precision {
@@ -206,7 +210,7 @@ pub fn lang(s: &str) -> Result<Lang, String> {
 }
 
 pub fn sheet(s: &str) -> Result<SheetSize, String> {
-    SheetSize::parse(s).ok_or_else(|| format!("unknown sheet \"{s}\": use A4, A3 or A1"))
+    SheetSize::parse(s).ok_or_else(|| format!("unknown sheet \"{s}\": use A4, A3, A2 or A1"))
 }
 
 pub fn plan(s: &str) -> Result<PlanKind, String> {

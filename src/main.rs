@@ -55,6 +55,7 @@ fn command(c: Command) -> Result<u8, Error> {
             lang,
             html,
             centres,
+            course,
         } => {
             let req = DrawRequest {
                 dir: output,
@@ -66,6 +67,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 table,
                 centres,
                 html,
+                course,
             };
             stdout(&wrote(&Study::from_path(&scene)?.draw(&req)?))?;
         }

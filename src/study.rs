@@ -68,8 +68,8 @@ pub struct DrawRequest {
     pub format: drawing::Format,
     /// Resolution of PNG sheets, dots per inch (10 to 1200).
     pub dpi: f64,
-    /// The sheet size asked for; `None`: the smallest of A4, A3, A1 that
-    /// holds the mechanism at the scene's μ_l.
+    /// The sheet size asked for; `None`: A4 (for a μ_l the scene fixes,
+    /// the smallest of A4, A3, A2, A1 that holds the mechanism at it).
     pub sheet: Option<SheetSize>,
     /// The language of the annotations (default: the scene's).
     pub lang: Option<Lang>,
@@ -81,6 +81,9 @@ pub struct DrawRequest {
     pub centres: bool,
     /// The step-by-step HTML handout instead of the sheets.
     pub html: bool,
+    /// The course sheet (A1, or A2 with `sheet`), besides the sheets the
+    /// scene asks for.
+    pub course: bool,
 }
 
 impl Default for DrawRequest {
@@ -95,6 +98,7 @@ impl Default for DrawRequest {
             table: false,
             centres: false,
             html: false,
+            course: false,
         }
     }
 }
@@ -251,11 +255,12 @@ impl Study {
                 an, &solved, lang, &req.dir,
             )?]);
         }
-        // A sheet asked for is the only one tried; else the smallest that
-        // holds the drawings at the scene's μ_l (never changed to fit).
+        // A sheet asked for is the only one tried; else A4, the scales
+        // filling it, or (for a μ_l the scene fixes) the smallest sheet
+        // that holds the mechanism's drawings at it.
         let sizes = match req.sheet {
             Some(s) => vec![s],
-            None => vec![SheetSize::A4, SheetSize::A3, SheetSize::A1],
+            None => SheetSize::ALL.to_vec(),
         };
         let opt = DrawOptions {
             sheet: sizes[0],
@@ -263,16 +268,16 @@ impl Study {
             title_block: req.title_block,
             table: req.table,
             centres: req.centres,
+            course: req.course,
         };
-        let (mut sheets, sheet) = drawing::sheets_at_scene_scale(an, &solved, &opt, &sizes)?;
+        let (sheets, sheet) = drawing::sheets_on(an, &solved, &opt, &sizes)?;
         if sheet != sizes[0] {
             crate::output::note(&format!(
-                "the drawing of the mechanism at μ_l = {} m/mm does not fit sheet {:?}: drawn on {sheet:?}",
-                an.mu_l, sizes[0]
+                "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {:?}: drawn on {sheet:?}",
+                an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
+                sizes[0]
             ));
         }
-        let opt = DrawOptions { sheet, ..opt };
-        sheets.extend(drawing::diagram::wanted(an, &opt)?);
         drawing::write_sheets(&sheets, &req.dir, req.format, req.dpi)
     }
 

@@ -113,3 +113,54 @@ fn cannot_be_judged_has_its_own_status() {
     assert_eq!(r["items"][0]["judgement"], "cannot be judged");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A plan drawn large (a fine μ_a) and a student's point far off: the
+/// overlay still lies on its sheet, inside the frame, heading included
+/// (a larger sheet, or the drawing reduced and saying so).
+#[test]
+fn the_overlay_stays_on_its_sheet() {
+    let (s, _, _) = files("big-solve", &serde_json::json!({}));
+    let (code, out, _) = run(&["solve", &s, "--format", "json"]);
+    assert_eq!(code, 0);
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let plan = &doc["positions"][0]["plans"]["acceleration"];
+    let k = 8.0;
+    let mu = plan["mu"].as_f64().unwrap() / k;
+    let at = |key: &str| {
+        let p = &plan["points"][key];
+        serde_json::json!([p[0].as_f64().unwrap() * k, p[1].as_f64().unwrap() * k])
+    };
+    let d = at("d");
+    let far = serde_json::json!([d[0].as_f64().unwrap() + 700.0, d[1]]);
+    let answer = serde_json::json!({ "plan": "acceleration", "mu": mu, "points": { "d": far, "b_3": at("b_3") } });
+    let (s, a, o) = files("big", &answer);
+    let (code, out, err) = run(&["check", &s, &a, "--svg", &o]);
+    assert_eq!(code, 1, "{out}{err}");
+    let svg = std::fs::read_to_string(&o).unwrap();
+    let tree = mechplan::drawing::tree(&svg).unwrap();
+    let (w, h) = (tree.size().width() as f64, tree.size().height() as f64);
+    let px = 96.0 / 25.4;
+    let frame = kurbo::Rect::new(20.0 * px, 5.0 * px, w - 5.0 * px, h - 5.0 * px);
+    fn walk(g: &usvg::Group, frame: kurbo::Rect, n: &mut usize) {
+        for c in g.children() {
+            match c {
+                usvg::Node::Group(g) => walk(g, frame, n),
+                _ => {
+                    let b = c.abs_stroke_bounding_box();
+                    let inside = b.left() as f64 >= frame.x0 - 1.0
+                        && b.top() as f64 >= frame.y0 - 1.0
+                        && b.right() as f64 <= frame.x1 + 1.0
+                        && b.bottom() as f64 <= frame.y1 + 1.0;
+                    // The frame itself and the white page are the frame.
+                    if !inside && (b.width() as f64) < frame.width() {
+                        *n += 1;
+                    }
+                }
+            }
+        }
+    }
+    let mut outside = 0;
+    walk(tree.root(), frame, &mut outside);
+    assert_eq!(outside, 0, "{outside} elements leave the frame");
+    assert!(svg.contains("student-d"), "the student's point is drawn");
+}

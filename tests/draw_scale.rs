@@ -1,8 +1,9 @@
-//! The scale of the plan of the mechanism, μ_l, is the scene's: the value
-//! `solve` reports (`want.scales.mu_l`, else the default) is the value
-//! `draw` draws at. A drawing that does not fit the sheet asked for is
-//! refused with the reason; without `--sheet`, the smallest sheet that
-//! holds it is used.
+//! The scale of the plan of the mechanism, μ_l: a scene that fixes it
+//! (`want.scales.mu_l`) is drawn at it, and a drawing that does not fit
+//! the sheet asked for is refused with the reason (without `--sheet`, the
+//! smallest sheet that holds it is used); a scene that leaves it open is
+//! drawn at the scale that fills the sheet, stated on the sheet and in the
+//! manifest.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -53,8 +54,21 @@ fn scene_with_mu_l(tag: &str, mu_l: f64) -> String {
     p.display().to_string()
 }
 
+/// The scales the manifest gives for a sheet file.
+fn manifest_scale(dir: &std::path::Path, file: &str, key: &str) -> f64 {
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sheets.json")).unwrap()).unwrap();
+    m["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["file"] == file)
+        .and_then(|s| s["scales"][key].as_f64())
+        .unwrap_or_else(|| panic!("no {key} for {file} in the manifest"))
+}
+
 #[test]
-fn solve_and_draw_report_the_same_mu_l_for_every_fixture() {
+fn an_open_mu_l_fills_the_sheet_and_is_stated() {
     for entry in std::fs::read_dir(format!("{}/fixtures", env!("CARGO_MANIFEST_DIR"))).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_none_or(|e| e != "json") {
@@ -65,7 +79,12 @@ fn solve_and_draw_report_the_same_mu_l_for_every_fixture() {
         let o = run(&["draw", &scene, "-o", out.to_str().unwrap()]);
         assert!(o.status.success(), "{scene}: {}", stderr(&o));
         let svg = std::fs::read_to_string(out.join("mechanism_1.svg")).unwrap();
-        assert_eq!(drawn_mu_l(&svg), solve_mu_l(&scene), "{scene}");
+        assert!(svg.contains(r#"width="297mm""#), "{scene}: drawn on A4");
+        assert_eq!(
+            drawn_mu_l(&svg),
+            manifest_scale(&out, "mechanism_1.svg", "mu_l"),
+            "{scene}"
+        );
     }
 }
 
@@ -114,21 +133,21 @@ fn a_mu_l_that_does_not_fit_is_refused_with_the_reason() {
             "nothing is drawn"
         );
     }
-    // The default μ_l of a scene that does not fit A4: refused on A4 (the
-    // message offers A3), drawn on A3 when no sheet is asked for.
-    let rrp = fixture_path("rrp_rotating_guide_002");
-    let out = dir("rrp");
-    let o = run(&["draw", &rrp, "-o", out.to_str().unwrap(), "--sheet", "A4"]);
+    // A fixed μ_l that does not fit A4: refused on A4 (the message offers
+    // A3), drawn on A3 with a note when no sheet is asked for.
+    let scene = scene_with_mu_l("a3", 0.003);
+    let out = dir("a3-out");
+    let o = run(&["draw", &scene, "-o", out.to_str().unwrap(), "--sheet", "A4"]);
     let err = stderr(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
         err.contains("--sheet") && err.contains("or draw on --sheet A3"),
         "{err}"
     );
-    let o = run(&["draw", &rrp, "-o", out.to_str().unwrap()]);
+    let o = run(&["draw", &scene, "-o", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stderr(&o).contains("drawn on A3"), "{}", stderr(&o));
     let svg = std::fs::read_to_string(out.join("mechanism_1.svg")).unwrap();
     assert!(svg.contains(r#"width="420mm""#));
-    assert_eq!(drawn_mu_l(&svg), solve_mu_l(&rrp));
+    assert_eq!(drawn_mu_l(&svg), 0.003);
 }

@@ -250,9 +250,18 @@ fn rendered_sheets_pass_the_layout_checks() {
                         .map(|l| kurbo::Point::new(attr(l, "cx").unwrap(), attr(l, "cy").unwrap()))
                 };
                 let pole = find(&plan.points[0].key).expect("the pole is drawn");
+                // The sheet's plan is built at its own scale: the solver's
+                // plan points scaled by the ratio of the scales.
+                let key = if s.name.starts_with("velocity") {
+                    "mu_v"
+                } else {
+                    "mu_a"
+                };
+                let mu = s.scales.iter().find(|(k, _)| *k == key).unwrap().1;
+                let k = plan.mu / mu;
                 for &p in &an.points {
                     let i = plan.of_point[p].unwrap();
-                    let want = plan.points[i].at;
+                    let want = plan.points[i].at * k;
                     // Points sharing a place share one dot: find the dot there.
                     let expected = kurbo::Point::new(pole.x + want.x, pole.y - want.y);
                     let near = lines
@@ -307,4 +316,38 @@ fn only_wanted_drawings_and_marks() {
         all.iter().all(|s| !s.svg.contains("k_")),
         "no Coriolis point without a moving guide"
     );
+}
+
+/// Plan labels that cannot be misread: the Coriolis point is k₃ unless a
+/// scene point K makes it read as K on link 3 (then κ₃); Assur's special
+/// point is σ₃, never s₃ (a centre of mass); a repeated point's prime
+/// follows its letter (n′₃), not the subscript. The keys do not change.
+#[test]
+fn plan_point_labels_read_unambiguously() {
+    let label = |plans: &mechplan::construction::Plan, key: &str| {
+        let p = plans
+            .points
+            .iter()
+            .find(|p| p.key == key)
+            .unwrap_or_else(|| panic!("no plan point {key}"));
+        (p.label.0.clone(), p.label.1.clone())
+    };
+    let acc = |v: Value| {
+        let (_, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
+        s[0].plans.as_ref().unwrap().acceleration.clone().unwrap()
+    };
+    // The shaper has a point K.
+    let shaper = fixture("shaper_fig2_11");
+    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("κ".into(), "3".into()));
+    // Without it the Coriolis point is the lecture's k.
+    let renamed = shaper
+        .to_string()
+        .replace("\"K\"", "\"Q\"")
+        .replace("\"K-M\"", "\"Q-M\"");
+    let renamed: Value = serde_json::from_str(&renamed).unwrap();
+    assert_eq!(label(&acc(renamed), "k_3"), ("k".into(), "3".into()));
+    let class3 = acc(fixture("class3_004"));
+    assert_eq!(label(&class3, "s_3"), ("σ".into(), "3".into()));
+    assert_eq!(label(&class3, "n_3'"), ("n′".into(), "3".into()));
+    assert_eq!(label(&class3, "n_3''"), ("n′′".into(), "3".into()));
 }

@@ -232,7 +232,7 @@ fn rates_are_derivatives_of_the_positions() {
                         m.point_name(p),
                         jac[i]
                     );
-                    for j in 0..w {
+                    for (j, hij) in hes[i].iter().enumerate() {
                         let (hi, hj) = (h(i, 1e-4), h(j, 1e-4));
                         let f = |ps: &mut PositionSolver, a: f64, b: f64| {
                             at(ps, &[(i, a * hi), (j, b * hj)])[k].to_vec2()
@@ -246,10 +246,9 @@ fn rates_are_derivatives_of_the_positions() {
                                 / (4.0 * hi * hj)
                         };
                         assert!(
-                            (d2 - hes[i][j]).hypot() <= 1e-4 * scale2,
-                            "{name} {}: d2P/dq{i}dq{j} {d2:?} vs {:?}",
+                            (d2 - *hij).hypot() <= 1e-4 * scale2,
+                            "{name} {}: d2P/dq{i}dq{j} {d2:?} vs {hij:?}",
                             m.point_name(p),
-                            hes[i][j]
                         );
                     }
                 }
@@ -464,8 +463,9 @@ fn the_cylinder_in_the_steps() {
         "v_B = v̳_̳C̳ + v̳_̳B̳3̳B̳2̳ + v̲_̲B̲2̲C̲",
         "From p_v lay off p_vr3 = v_B3B2/μ_v",
         "through r3 a line ⊥ CB2",
-        "n2k3 = a^k_B3B2 = 2·ω2·v_B3B2/μ_a",
-        "k3r3 = a^r_B3B2/μ_a",
+        // The boom has a point K (plan point k): the Coriolis points are κ.
+        "n2κ3 = a^k_B3B2 = 2·ω2·v_B3B2/μ_a",
+        "κ3r3 = a^r_B3B2/μ_a",
         "ω3 = ω2: links 3 and 2 form a prismatic pair",
     ] {
         assert!(text.contains(want), "missing {want:?} in\n{text}");

@@ -4,6 +4,7 @@
 //! messages ([`quantity`]).
 
 pub mod drawing;
+pub mod notation;
 pub mod quantity;
 pub mod report;
 pub mod studies;

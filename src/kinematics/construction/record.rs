@@ -274,10 +274,30 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
             )
         }
         PointId::Normal { link } => by("n", link),
-        PointId::Coriolis { link } => by("k", link),
+        PointId::Coriolis { link } => {
+            let (key, (_, sub)) = by("k", link);
+            (key, (coriolis_letter(m).to_string(), sub))
+        }
         PointId::Relative { link } => by("r", link),
-        PointId::Special { base } => by("s", base),
+        PointId::Special { base } => {
+            let (key, (_, sub)) = by("s", base);
+            (key, (SPECIAL.to_string(), sub))
+        }
     }
+}
+
+/// The letter of Assur's special point on the plans (σ₃ for the base link
+/// 3): not s, which reads as a centre of mass (S3, s₃), nor any point's
+/// letter. Its name in the steps is the capital, Σ3.
+const SPECIAL: &str = "σ";
+
+/// The letter of the Coriolis points on the plans: k (k₃ for link 3), as
+/// the lecture writes it, unless the scene has a point K (K, K1 …), whose
+/// plan point is k and whose point of link 3 would read k₃ too; then κ
+/// (kappa), which no point's name gives.
+fn coriolis_letter(m: &Mechanism) -> &'static str {
+    let taken = (0..m.scene.points.len()).any(|p| lower_label(m.point_name(p)).0 == "k");
+    if taken { "κ" } else { "k" }
 }
 
 /// The words of a plan: puts the record `acts` of its construction into
@@ -288,9 +308,10 @@ pub(super) fn narrate(plan: &mut Plan, acts: &[Act], st: &Setup) {
     for p in &mut plan.points {
         let (mut key, mut label) = key_label(p.id, plan.kind, m);
         while seen.contains(&key) {
-            // A second n₂ on one plan is n₂′ (then n₂″).
+            // A second n₂ on one plan is n′₂ (then n″₂): the prime marks
+            // the letter, as the subscript still names the link.
             key.push('\'');
-            label.1.push('′');
+            label.0.push('′');
         }
         seen.insert(key.clone());
         if !p.id.is_construction() {
@@ -329,7 +350,7 @@ impl Words<'_> {
         match n {
             Name::Point(p) => m.point_name(p).to_string(),
             Name::On(p, l) => format!("{}{}", m.point_name(p), m.link_id(l)),
-            Name::Special(b) => format!("S{}", m.link_id(b)),
+            Name::Special(b) => format!("{}{}", SPECIAL.to_uppercase(), m.link_id(b)),
             Name::Figure(i) => self.plan.points[i].figure.clone(),
         }
     }

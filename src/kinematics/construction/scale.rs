@@ -68,6 +68,11 @@ pub fn standard_scale(largest: f64, max_mm: f64) -> f64 {
     }
 }
 
+/// The next standard value above `mu` (a standard value or not).
+pub fn standard_above(mu: f64) -> f64 {
+    standard_scale(mu * (1.0 + 1e-9), 1.0)
+}
+
 /// Round to 12 significant digits so that 2.5e-3 prints as 0.0025.
 fn round_sig(x: f64) -> f64 {
     let p = 10f64.powi(11 - x.abs().log10().floor() as i32);

@@ -29,16 +29,7 @@ impl Analysis {
             PositionsSpec::Single | PositionsSpec::Values(_) => unreachable!("returned above"),
             PositionsSpec::List(v) => v.iter().map(|&q| Coords::one(q)).collect(),
             PositionsSpec::Count { count, output } => {
-                let out = output.unwrap_or_else(|| {
-                    *self
-                        .structure
-                        .groups
-                        .last()
-                        .map(|g| g.links())
-                        .unwrap_or_default()
-                        .last()
-                        .unwrap_or(&sc.input.link())
-                });
+                let out = output.unwrap_or_else(|| self.default_output());
                 let start = self.working_stroke_start(out)?;
                 let dir = sc.input.sense();
                 (0..*count)
@@ -51,6 +42,19 @@ impl Analysis {
                     .collect()
             }
         })
+    }
+
+    /// The output whose extreme position starts `positions.count`: the
+    /// last link of the last group.
+    pub fn default_output(&self) -> usize {
+        *self
+            .structure
+            .groups
+            .last()
+            .map(|g| g.links())
+            .unwrap_or_default()
+            .last()
+            .unwrap_or(&self.mech.scene.input.link())
     }
 
     /// The output coordinate of link `out` and its first transfer function:
@@ -80,6 +84,13 @@ impl Analysis {
     /// working stroke (the stroke taking the larger crank angle), found as
     /// a root of the output's transfer function to machine precision.
     pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
+        Ok(self.working_stroke(out)?.0)
+    }
+
+    /// The crank angle at which the working stroke of `out` begins (as
+    /// [`Analysis::working_stroke_start`]) and the crank angle it takes
+    /// (a full turn for an output without extreme positions).
+    pub fn working_stroke(&self, out: usize) -> Result<(f64, f64)> {
         let m = &self.mech;
         let sc = &m.scene;
         if sc.several_inputs() {
@@ -176,7 +187,7 @@ impl Analysis {
         let _ = offset;
         if extremes.len() < 2 {
             // No extreme positions: the output turns fully; start at the input.
-            return Ok(angle);
+            return Ok((angle, std::f64::consts::TAU));
         }
         let lo =
             extremes.iter().copied().fold(
@@ -201,6 +212,9 @@ impl Analysis {
         } else {
             hi.0
         };
-        Ok(start.rem_euclid(std::f64::consts::TAU))
+        Ok((
+            start.rem_euclid(std::f64::consts::TAU),
+            d_lo_hi.max(d_hi_lo),
+        ))
     }
 }

@@ -121,6 +121,24 @@ impl Analysis {
 
     /// What the construction kernel builds the plans from: this
     /// analysis's mechanism, structure, groups, points and links.
+    /// The plans of solved position `s` built again at the scales `mu_v`,
+    /// `mu_a` (a sheet's own, where the scene fixes none): a new
+    /// construction on the same configuration, up to the plan of `order`.
+    pub fn plans_at_scales(
+        &self,
+        s: &Solved,
+        order: Order,
+        mu_v: Option<f64>,
+        mu_a: Option<f64>,
+    ) -> Result<crate::kinematics::construction::Plans> {
+        let d = Drafting {
+            mu_v: self.drafting.mu_v.or(mu_v),
+            mu_a: self.drafting.mu_a.or(mu_a),
+            ..self.drafting
+        };
+        crate::kinematics::construction::build_plans(&self.setup(), &s.config, s.drives, order, d)
+    }
+
     pub fn setup(&self) -> Setup<'_> {
         Setup {
             m: &self.mech,

@@ -15,6 +15,7 @@ mod links;
 mod numbers;
 mod positions;
 mod reader;
+mod sheet;
 mod sliders;
 mod want;
 
@@ -148,6 +149,32 @@ pub enum PositionsSpec {
     Count { count: usize, output: Option<usize> },
 }
 
+/// What the main title block says (the scene's `sheet` object); every
+/// field optional, an absent one left blank on the sheet.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SheetInfo {
+    /// The document's designation (ГОСТ 2.104 field 2), e.g. "ТММ.КП.01.00.001".
+    pub designation: Option<String>,
+    /// The name of the drawing (field 1); else the scene's title.
+    pub title: Option<String>,
+    /// Who drew it ("Разраб.").
+    pub author: Option<String>,
+    /// Who checked it ("Пров.").
+    pub checker: Option<String>,
+    /// The organisation, group (field 9).
+    pub organisation: Option<String>,
+    /// The scale field (6); else a dash, the figures stating their μ.
+    pub scale: Option<String>,
+}
+
+/// Which positions' plans the course sheet shows (`want.plans_at`, from
+/// 1); `None`: the default.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PlansAt {
+    pub velocity: Option<Vec<usize>>,
+    pub acceleration: Option<Vec<usize>>,
+}
+
 #[derive(Clone, Debug, Default)]
 pub struct Scales {
     pub mu_l: Option<f64>,
@@ -164,6 +191,8 @@ pub struct Want {
     pub drawings: Vec<String>,
     pub scales: Scales,
     pub lang: String,
+    /// The positions whose plans the course sheet shows.
+    pub plans_at: PlansAt,
 }
 
 impl Default for Want {
@@ -175,6 +204,7 @@ impl Default for Want {
             drawings: Vec::new(),
             scales: Scales::default(),
             lang: "en".into(),
+            plans_at: PlansAt::default(),
         }
     }
 }
@@ -182,6 +212,8 @@ impl Default for Want {
 #[derive(Clone, Debug)]
 pub struct Scene {
     pub title: String,
+    /// What the title block says (`sheet`).
+    pub sheet: SheetInfo,
     pub points: Vec<NamedPoint>,
     pub links: Vec<LinkSpec>,
     /// Index of link "0".

@@ -2,7 +2,7 @@
 //! section uses (objects, allowed keys, strings, references to points and
 //! links, coordinates).
 
-use super::{LinkSpec, NamedPoint, Scene};
+use super::{LinkSpec, NamedPoint, PositionsSpec, Scene};
 use crate::error::Issue;
 use crate::json::escape;
 use kurbo::Point;
@@ -124,6 +124,7 @@ impl Reader {
                 "input",
                 "positions",
                 "want",
+                "sheet",
             ],
         );
         match top.get("mechplan") {
@@ -155,9 +156,24 @@ impl Reader {
         let lengths = self.lengths(top.get("lengths"), &points, &links);
         let inputs = self.inputs(top.get("input"), &points, &links, &sliders, frame);
         let positions = self.positions(top.get("positions"), &links, inputs.as_deref());
-        let want = self.want(top.get("want"), &points);
+        let mut want = self.want(top.get("want"), &points);
+        let sheet = self.sheet_info(top.get("sheet"));
+        if let (Some(w), Some(p), Some(at)) = (
+            want.as_mut(),
+            positions.as_ref(),
+            top.get("want").and_then(|w| w.get("plans_at")),
+        ) {
+            let n = match p {
+                PositionsSpec::Single => 1,
+                PositionsSpec::List(v) => v.len(),
+                PositionsSpec::Values(v) => v.len(),
+                PositionsSpec::Count { count, .. } => *count,
+            };
+            w.plans_at = self.plans_at(at, n);
+        }
         Some(Scene {
             title,
+            sheet,
             points,
             links,
             frame: frame?,

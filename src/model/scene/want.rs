@@ -13,7 +13,7 @@ impl Reader {
         self.only_keys(
             o,
             "/want",
-            &["plans", "points", "drawings", "scales", "lang"],
+            &["plans", "points", "drawings", "scales", "lang", "plans_at"],
         );
         let names = |r: &mut Self, key: &str, allowed: &[&str]| -> Vec<String> {
             let at = format!("/want/{key}");
@@ -51,6 +51,7 @@ impl Reader {
                     "acceleration",
                     "positions",
                     "diagrams",
+                    "course",
                 ],
             );
         }

@@ -3,6 +3,7 @@
 //! overlap neither each other nor the drawn lines, then written as SVG with
 //! one number formatter so the output is byte-stable.
 
+use crate::presentation::notation::{Pos, Run, runs};
 use kurbo::{Point, Rect, Vec2};
 use std::fmt::Write as _;
 
@@ -36,6 +37,95 @@ fn char_width(c: char) -> f64 {
     }
 }
 
+/// Estimated width in mm of runs of text at font size `size`: a
+/// superscript and the subscript right after it stand one above the
+/// other, so the wider of the two counts.
+pub fn runs_width(rs: &[Run], size: f64) -> f64 {
+    let w = |s: &str| s.chars().map(char_width).sum::<f64>();
+    let mut total = 0.0;
+    let mut i = 0;
+    while i < rs.len() {
+        let (p, t) = &rs[i];
+        match p {
+            Pos::Base => total += size * w(t),
+            Pos::Sub => total += 0.7 * size * w(t),
+            Pos::Sup => {
+                let mut x = 0.7 * size * w(t);
+                if let Some((Pos::Sub, u)) = rs.get(i + 1) {
+                    x = x.max(0.7 * size * w(u));
+                    i += 1;
+                }
+                total += x;
+            }
+        }
+        i += 1;
+    }
+    total
+}
+
+/// How far a subscript sinks and a superscript rises, in font sizes:
+/// apart enough that a superscript stands clear above the subscript under
+/// it (a^k over B3B2).
+const SUB_SHIFT: f64 = 0.24;
+const SUP_SHIFT: f64 = 0.48;
+
+/// Runs of text as SVG tspans: a subscript right after a superscript
+/// moves back under it, and what follows starts after the wider of them.
+fn runs_svg(rs: &[Run], size: f64) -> String {
+    let small = 0.7 * size;
+    let w = |s: &str| small * s.chars().map(char_width).sum::<f64>();
+    let mut out = String::new();
+    let mut pending_dx = 0.0;
+    let mut i = 0;
+    while i < rs.len() {
+        let (p, t) = &rs[i];
+        let dx = if pending_dx > 0.0 {
+            format!(r#" dx="{}""#, fmt(pending_dx))
+        } else {
+            String::new()
+        };
+        pending_dx = 0.0;
+        match p {
+            Pos::Base => {
+                let _ = write!(out, "<tspan{dx}>{}</tspan>", xml(t));
+            }
+            Pos::Sub => {
+                let _ = write!(
+                    out,
+                    r#"<tspan{dx} baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                    fmt(-SUB_SHIFT * size),
+                    fmt(small),
+                    xml(t)
+                );
+            }
+            Pos::Sup => {
+                let _ = write!(
+                    out,
+                    r#"<tspan{dx} baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                    fmt(SUP_SHIFT * size),
+                    fmt(small),
+                    xml(t)
+                );
+                if let Some((Pos::Sub, u)) = rs.get(i + 1) {
+                    let (ws, wu) = (w(t), w(u));
+                    let _ = write!(
+                        out,
+                        r#"<tspan dx="{}" baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                        fmt(-ws),
+                        fmt(-SUB_SHIFT * size),
+                        fmt(small),
+                        xml(u)
+                    );
+                    pending_dx = (ws - wu).max(0.0);
+                    i += 1;
+                }
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
 /// What a drawn segment is, for its weight and for the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Class {
@@ -45,6 +135,68 @@ pub enum Class {
     Vector,
     /// A construction line, hatching, a dimension: thin line.
     Thin,
+}
+
+/// Line types after ГОСТ 2.303, for the lines drawn as paths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Line {
+    /// Solid main line (S): links in the main position.
+    Main,
+    /// Solid thin line (S/2): the mechanism in its other positions.
+    Thin,
+    /// Dashed thin line (штриховая): construction lines of the plans.
+    Dashed,
+    /// Thin dash-dot line (штрихпунктирная тонкая): axes, centre lines,
+    /// trajectories of points.
+    DashDot,
+    /// Thin dash-dot-dot line (штрихпунктирная с двумя точками): extreme
+    /// positions of moving links.
+    DashDotDot,
+}
+
+impl Line {
+    fn width(self) -> f64 {
+        if self == Line::Main { MAIN } else { THIN }
+    }
+    /// The CSS class of the SVG element, for the checks.
+    fn class(self) -> &'static str {
+        match self {
+            Line::Main => "main",
+            Line::Thin => "thin",
+            Line::Dashed => "dashed",
+            Line::DashDot => "dash-dot",
+            Line::DashDotDot => "dash-dot-dot",
+        }
+    }
+    /// The pattern (mm): a dash first, then gaps and dots, within the
+    /// ranges ГОСТ 2.303 gives (dash 2–8 and gap 1–2 for a dashed line,
+    /// dash 5–30 and gap 3–5 (4–6) for dash-dot (dash-dot-dot) lines).
+    fn pattern(self) -> &'static [f64] {
+        match self {
+            Line::Main | Line::Thin => &[],
+            Line::Dashed => &[4.0, 1.5],
+            Line::DashDot => &[12.0, 1.5, 0.6, 1.5],
+            Line::DashDotDot => &[12.0, 1.5, 0.6, 1.2, 0.6, 1.5],
+        }
+    }
+    /// The dash array for a line of length `len`, stretched or shrunk (by
+    /// at most a third of a period) so that the line begins and ends with
+    /// a dash, as ГОСТ 2.303 asks; empty for a solid line. A line shorter
+    /// than one dash and period is drawn solid (a short centre line is
+    /// drawn solid thin).
+    pub fn dash_array(self, len: f64) -> Vec<f64> {
+        let pat = self.pattern();
+        if pat.is_empty() {
+            return Vec::new();
+        }
+        let period: f64 = pat.iter().sum();
+        let n = ((len - pat[0]) / period).round();
+        if n < 1.0 {
+            return Vec::new();
+        }
+        let k = len / (n * period + pat[0]);
+        pat.iter().map(|x| x * k).collect()
+    }
 }
 
 /// A label: letters and a subscript.
@@ -109,6 +261,9 @@ pub enum Prim {
         stroke: f64,
         id: Option<String>,
     },
+    /// An open polyline of one line type: a trajectory, a position of
+    /// the mechanism, an axis (one element however many its vertices).
+    Path { pts: Vec<Point>, line: Line },
     /// A filled arrowhead with its tip at `tip`, pointing along `dir`.
     Arrow { tip: Point, dir: Vec2 },
     /// A circular arc about `c` of radius `r` from angle `a0` swept by `sweep` (rad, CCW positive).
@@ -117,6 +272,15 @@ pub enum Prim {
         r: f64,
         a0: f64,
         sweep: f64,
+    },
+    /// Text in the lecture's notation (subscripts, superscripts) with its
+    /// baseline's left end at `at`; `anchor` "start", "middle" or "end".
+    Rich {
+        at: Point,
+        runs: Vec<Run>,
+        size: f64,
+        class: &'static str,
+        anchor: &'static str,
     },
     /// Text whose box's lower-left corner is `at` (drawing coordinates).
     Text {
@@ -128,17 +292,120 @@ pub enum Prim {
     },
 }
 
+/// Segments (or label boxes) kept in cells of a grid, so that asking which
+/// meet a small rectangle looks at a few cells, not at all of them: label
+/// placement stays linear in the size of the drawing (a positions sheet
+/// of 2 000 positions has some 100 000 segments).
+#[derive(Default, Clone)]
+pub struct Grid {
+    items: Vec<(Point, Point)>,
+    cells: std::collections::HashMap<(i64, i64), Vec<u32>>,
+    /// Per item, the last query that met it (to count each once).
+    stamp: std::cell::RefCell<(u32, Vec<u32>)>,
+}
+
+/// The side of a grid's cell, mm.
+const CELL: f64 = 8.0;
+
+fn cell_of(p: Point) -> (i64, i64) {
+    ((p.x / CELL).floor() as i64, (p.y / CELL).floor() as i64)
+}
+
+impl Grid {
+    /// Every item, in the order added.
+    pub fn iter(&self) -> impl Iterator<Item = &(Point, Point)> {
+        self.items.iter()
+    }
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+    pub fn push(&mut self, seg: (Point, Point)) {
+        let k = self.items.len() as u32;
+        self.items.push(seg);
+        let (a, b) = seg;
+        // The cells along the segment, a half cell at a time.
+        let n = ((b - a).hypot() / (0.5 * CELL)).ceil().max(1.0) as usize;
+        let mut last = None;
+        for i in 0..=n {
+            let c = cell_of(a + (b - a) * (i as f64 / n as f64));
+            // Crossing a corner diagonally can skip a cell: add the
+            // neighbours along the way too.
+            for d in [(0, 0), (1, 0), (-1, 0), (0, 1), (0, -1)] {
+                let cc = (c.0 + d.0, c.1 + d.1);
+                if last != Some(cc) {
+                    let v = self.cells.entry(cc).or_default();
+                    if v.last() != Some(&k) {
+                        v.push(k);
+                    }
+                }
+            }
+            last = Some(c);
+        }
+    }
+    /// A rectangle (a label's box), kept as its two corners in every cell
+    /// it covers.
+    pub fn push_rect(&mut self, r: Rect) {
+        let k = self.items.len() as u32;
+        self.items
+            .push((Point::new(r.x0, r.y0), Point::new(r.x1, r.y1)));
+        let (c0, c1) = (
+            cell_of(Point::new(r.x0, r.y0)),
+            cell_of(Point::new(r.x1, r.y1)),
+        );
+        for x in c0.0..=c1.0 {
+            for y in c0.1..=c1.1 {
+                self.cells.entry((x, y)).or_default().push(k);
+            }
+        }
+    }
+    /// How many items meet `test` among those near `r`.
+    pub fn count(&self, r: &Rect, test: impl Fn(&(Point, Point)) -> bool) -> usize {
+        let mut st = self.stamp.borrow_mut();
+        st.0 = st.0.wrapping_add(1);
+        let q = st.0;
+        if st.1.len() < self.items.len() {
+            st.1.resize(self.items.len(), 0);
+        }
+        let (c0, c1) = (
+            cell_of(Point::new(r.x0, r.y0)),
+            cell_of(Point::new(r.x1, r.y1)),
+        );
+        let mut n = 0;
+        for x in c0.0..=c1.0 {
+            for y in c0.1..=c1.1 {
+                let Some(v) = self.cells.get(&(x, y)) else {
+                    continue;
+                };
+                for &k in v {
+                    if st.1[k as usize] == q {
+                        continue;
+                    }
+                    st.1[k as usize] = q;
+                    if test(&self.items[k as usize]) {
+                        n += 1;
+                    }
+                }
+            }
+        }
+        n
+    }
+}
+
 /// The sheet: what is drawn, the boxes of the placed labels (drawing
 /// coordinates) and the segments labels must avoid.
-#[derive(Default)]
+#[derive(Default, Clone)]
 pub struct Canvas {
     pub prims: Vec<Prim>,
-    pub boxes: Vec<Rect>,
+    /// The placed labels' boxes, as their two corners.
+    pub boxes: Grid,
     /// Main lines, outlines of symbols, arrowheads: labels keep off them.
-    pub avoid: Vec<(Point, Point)>,
+    pub avoid: Grid,
     /// Thin lines (hatching, construction lines): labels keep off them
     /// where they can.
-    pub avoid_thin: Vec<(Point, Point)>,
+    pub avoid_thin: Grid,
     /// Labels waiting to be placed once everything else is drawn.
     pub pending: Vec<(Point, Label, f64, Option<String>)>,
 }
@@ -185,6 +452,23 @@ impl Canvas {
         } else {
             self.avoid_thin.push((a, b));
         }
+    }
+
+    /// An open polyline of line type `line`; labels keep off it (off a
+    /// thin one where they can).
+    pub fn path(&mut self, pts: Vec<Point>, line: Line) {
+        if pts.len() < 2 {
+            return;
+        }
+        let grid = if line == Line::Main {
+            &mut self.avoid
+        } else {
+            &mut self.avoid_thin
+        };
+        for w in pts.windows(2) {
+            grid.push((w[0], w[1]));
+        }
+        self.prims.push(Prim::Path { pts, line });
     }
 
     /// A filled polygon; its outline is kept clear of labels.
@@ -274,21 +558,14 @@ impl Canvas {
                 let x0 = anchor.x + d.x + if d.x < 0.0 { -w } else { 0.0 };
                 let y0 = anchor.y + d.y + if d.y < 0.0 { -h } else { 0.0 };
                 let r = Rect::new(x0, y0, x0 + w, y0 + h);
-                let labels = self
-                    .boxes
-                    .iter()
-                    .filter(|b| b.intersect(r.inflate(0.3, 0.3)).area() > 0.0)
-                    .count();
-                let lines = self
-                    .avoid
-                    .iter()
-                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.3, 0.3)))
-                    .count();
+                let (r3, r2) = (r.inflate(0.3, 0.3), r.inflate(0.2, 0.2));
+                let labels = self.boxes.count(&r3, |(a, b)| {
+                    Rect::from_points(*a, *b).intersect(r3).area() > 0.0
+                });
+                let lines = self.avoid.count(&r3, |(a, b)| seg_hits_rect(*a, *b, &r3));
                 let thin = self
                     .avoid_thin
-                    .iter()
-                    .filter(|(a, b)| seg_hits_rect(*a, *b, &r.inflate(0.2, 0.2)))
-                    .count();
+                    .count(&r2, |(a, b)| seg_hits_rect(*a, *b, &r2));
                 let score = (labels, lines, thin);
                 if best.as_ref().is_none_or(|(s0, _)| score < *s0) {
                     best = Some((score, r));
@@ -299,7 +576,7 @@ impl Canvas {
             }
         }
         let (_, r) = best.expect("candidates exist");
-        self.boxes.push(r);
+        self.boxes.push_rect(r);
         self.prims.push(Prim::Text {
             // The baseline sits 0.35 em above the box's bottom.
             at: Point::new(r.x0, r.y0 + 0.35 * size),
@@ -318,7 +595,7 @@ impl Canvas {
             at.x + label.width(size),
             at.y + size * 0.8,
         );
-        self.boxes.push(r);
+        self.boxes.push_rect(r);
         self.prims.push(Prim::Text {
             at,
             label,
@@ -326,6 +603,184 @@ impl Canvas {
             id: None,
             class,
         });
+    }
+
+    /// Text in the lecture's notation ([`runs`]) at `at` (the baseline's
+    /// start, middle or end by `anchor`); its box keeps labels off.
+    pub fn rich(
+        &mut self,
+        at: Point,
+        text: &str,
+        size: f64,
+        class: &'static str,
+        anchor: &'static str,
+    ) {
+        let rs = runs(text);
+        let w = runs_width(&rs, size);
+        let x0 = match anchor {
+            "middle" => at.x - w / 2.0,
+            "end" => at.x - w,
+            _ => at.x,
+        };
+        self.boxes
+            .push_rect(Rect::new(x0, at.y - 0.35 * size, x0 + w, at.y + size * 0.8));
+        self.prims.push(Prim::Rich {
+            at,
+            runs: rs,
+            size,
+            class,
+            anchor,
+        });
+    }
+
+    /// The drawing reduced (or enlarged) `k` times about the origin: its
+    /// geometry only; text, arrowheads and symbols keep their size, as
+    /// a reduced drawing keeps its lettering.
+    pub fn scaled(&self, k: f64) -> Canvas {
+        let p = |q: &Point| Point::new(q.x * k, q.y * k);
+        let prims = self
+            .prims
+            .iter()
+            .map(|prim| match prim.clone() {
+                Prim::Seg { a, b, class, id } => Prim::Seg {
+                    a: p(&a),
+                    b: p(&b),
+                    class,
+                    id,
+                },
+                Prim::Poly { pts, fill, stroke } => Prim::Poly {
+                    pts: pts.iter().map(p).collect(),
+                    fill,
+                    stroke,
+                },
+                Prim::Path { pts, line } => Prim::Path {
+                    pts: pts.iter().map(p).collect(),
+                    line,
+                },
+                Prim::Circle {
+                    c,
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                } => Prim::Circle {
+                    c: p(&c),
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                },
+                Prim::Arrow { tip, dir } => Prim::Arrow { tip: p(&tip), dir },
+                Prim::Arc { c, r, a0, sweep } => Prim::Arc {
+                    c: p(&c),
+                    r,
+                    a0,
+                    sweep,
+                },
+                Prim::Rich {
+                    at,
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                } => Prim::Rich {
+                    at: p(&at),
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                },
+                Prim::Text {
+                    at,
+                    label,
+                    size,
+                    id,
+                    class,
+                } => Prim::Text {
+                    at: p(&at),
+                    label,
+                    size,
+                    id,
+                    class,
+                },
+            })
+            .collect();
+        Canvas {
+            prims,
+            ..Canvas::default()
+        }
+    }
+
+    /// Everything drawn on `other`, moved by (`dx`, `dy`), drawn here too
+    /// (a figure of figures: the course sheet's grid of plans).
+    pub fn append(&mut self, other: &Canvas, dx: f64, dy: f64) {
+        let moved = other.scaled(1.0);
+        let d = Vec2::new(dx, dy);
+        for prim in moved.prims {
+            self.prims.push(match prim {
+                Prim::Seg { a, b, class, id } => Prim::Seg {
+                    a: a + d,
+                    b: b + d,
+                    class,
+                    id,
+                },
+                Prim::Poly { pts, fill, stroke } => Prim::Poly {
+                    pts: pts.iter().map(|q| *q + d).collect(),
+                    fill,
+                    stroke,
+                },
+                Prim::Path { pts, line } => Prim::Path {
+                    pts: pts.iter().map(|q| *q + d).collect(),
+                    line,
+                },
+                Prim::Circle {
+                    c,
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                } => Prim::Circle {
+                    c: c + d,
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                },
+                Prim::Arrow { tip, dir } => Prim::Arrow { tip: tip + d, dir },
+                Prim::Arc { c, r, a0, sweep } => Prim::Arc {
+                    c: c + d,
+                    r,
+                    a0,
+                    sweep,
+                },
+                Prim::Rich {
+                    at,
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                } => Prim::Rich {
+                    at: at + d,
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                },
+                Prim::Text {
+                    at,
+                    label,
+                    size,
+                    id,
+                    class,
+                } => Prim::Text {
+                    at: at + d,
+                    label,
+                    size,
+                    id,
+                    class,
+                },
+            });
+        }
     }
 
     /// Bounding box of everything drawn (drawing coordinates).
@@ -342,9 +797,26 @@ impl Canvas {
                     add(*b, 0.5);
                 }
                 Prim::Poly { pts, .. } => pts.iter().for_each(|q| add(*q, 0.3)),
+                Prim::Path { pts, .. } => pts.iter().for_each(|q| add(*q, 0.3)),
                 Prim::Circle { c, r, .. } => add(*c, *r + 0.3),
                 Prim::Arrow { tip, .. } => add(*tip, 3.0),
                 Prim::Arc { c, r, .. } => add(*c, *r + 1.5),
+                Prim::Rich {
+                    at,
+                    runs,
+                    size,
+                    anchor,
+                    ..
+                } => {
+                    let w = runs_width(runs, *size);
+                    let x0 = match *anchor {
+                        "middle" => at.x - w / 2.0,
+                        "end" => at.x - w,
+                        _ => at.x,
+                    };
+                    add(Point::new(x0, at.y - 0.35 * size), 0.2);
+                    add(Point::new(x0 + w, at.y + size), 0.2);
+                }
                 Prim::Text {
                     at, label, size, ..
                 } => {
@@ -412,6 +884,27 @@ impl Canvas {
                         fmt(*r)
                     );
                 }
+                Prim::Path { pts, line } => {
+                    let mut d = String::new();
+                    for (i, q) in pts.iter().enumerate() {
+                        d += if i == 0 { "M" } else { " L" };
+                        d += &px(*q);
+                    }
+                    let len: f64 = pts.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+                    let dash = line.dash_array(len);
+                    let dash = if dash.is_empty() {
+                        String::new()
+                    } else {
+                        let v: Vec<String> = dash.iter().map(|x| fmt(*x)).collect();
+                        format!(r#" stroke-dasharray="{}""#, v.join(" "))
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<path class="{}" d="{d}" fill="none" stroke="black" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
+                        line.class(),
+                        fmt(line.width())
+                    );
+                }
                 Prim::Arrow { tip, dir } => {
                     let (len, half) = (3.0, 0.7);
                     let back = *tip - *dir * len;
@@ -442,6 +935,27 @@ impl Canvas {
                         fmt(*r),
                         px(p1),
                         fmt(THIN)
+                    );
+                }
+                Prim::Rich {
+                    at,
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                } => {
+                    let anchor = if *anchor == "start" {
+                        String::new()
+                    } else {
+                        format!(r#" text-anchor="{anchor}""#)
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<text class="{class}" x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
+                        fmt(ox + at.x),
+                        fmt(oy - at.y),
+                        fmt(*size),
+                        runs_svg(runs, *size)
                     );
                 }
                 Prim::Text {

@@ -7,8 +7,9 @@
 //! the nodes (acceleration) and joined; the analytic curve thin beside.
 
 use super::canvas::{Canvas, Class, Label, SMALL};
+use super::table::{number, unit};
 use super::{DrawOptions, Sheet, page_svg};
-use crate::kinematics::construction::text::num;
+use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::studies::diagrams::{DENSE, Diagrams};
 use kurbo::{Point, Vec2};
@@ -18,8 +19,48 @@ const GAP: f64 = 14.0;
 
 /// The diagrams' sheet.
 pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
+    let c = figure(an, d, opt.lang);
+    page_svg("diagrams".into(), title(an, d, opt.lang), &c, None, opt)
+}
+
+/// The sheet's heading: what the diagrams are of, localised.
+pub fn title(an: &Analysis, d: &Diagrams, lang: Lang) -> String {
+    let m = &an.mech;
+    let sym = symbol(an, d);
+    let n = d.n;
+    let what = match (lang, d.point, d.slide) {
+        (Lang::En, Some(p), _) => format!("point {} along its path", m.point_name(p)),
+        (Lang::En, None, true) => format!("slider {}", m.link_id(d.output)),
+        (Lang::En, None, false) => format!("link {}", m.link_id(d.output)),
+        (Lang::Uk, Some(p), _) => format!("точки {} уздовж її траєкторії", m.point_name(p)),
+        (Lang::Uk, None, true) => format!("повзуна {}", m.link_id(d.output)),
+        (Lang::Uk, None, false) => format!("ланки {}", m.link_id(d.output)),
+        (Lang::Ru, Some(p), _) => format!("точки {} вдоль её траектории", m.point_name(p)),
+        (Lang::Ru, None, true) => format!("ползуна {}", m.link_id(d.output)),
+        (Lang::Ru, None, false) => format!("звена {}", m.link_id(d.output)),
+    };
+    let (head, chords) = match lang {
+        Lang::En => ("Kinematic diagrams of", "chords"),
+        Lang::Uk => ("Кінематичні діаграми", "хорди"),
+        Lang::Ru => ("Кинематические диаграммы", "хорды"),
+    };
+    format!("{head} {what}: {sym}, {sym}′, {sym}″ (N = {n}, {chords})")
+}
+
+/// The coordinate's symbol: s for a slide, φ with the link's number.
+fn symbol(an: &Analysis, d: &Diagrams) -> String {
+    if d.slide {
+        "s".to_string()
+    } else {
+        format!("φ{}", an.mech.link_id(d.output))
+    }
+}
+
+/// The three diagrams on one canvas, their scales under them.
+pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
     let m = &an.mech;
     let mut c = Canvas::default();
+    let mm = unit("mm", lang);
     let dx = d.h / d.mu_phi;
     let n = d.n;
     let l = dx * n as f64;
@@ -46,11 +87,9 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
     let oy_s = 0.0;
     let oy_v = oy_s + es.0 - GAP - ev.1;
     let oy_a = oy_v + ev.0 - GAP - ea.1;
-    let (sym, unit) = if d.slide {
-        ("s".to_string(), "m")
-    } else {
-        (format!("φ{}", m.link_id(d.output)), "rad")
-    };
+    let sym = symbol(an, d);
+    let unit_ = unit(if d.slide { "m" } else { "rad" }, lang);
+    let _ = m;
     let divisions = |c: &mut Canvas, oy: f64, pole: Option<(f64, &str)>, name: &str| {
         let left = pole.map(|(h, _)| -h).unwrap_or(0.0) - 4.0;
         c.seg(Point::new(left, oy), Point::new(l + 8.0, oy), Class::Thin);
@@ -91,7 +130,7 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
             );
             c.text(
                 Point::new(-h - 1.0, oy - 9.0),
-                Label::new("H", &pname[1..]).with_tail(format!(" = {} mm", num(h))),
+                Label::new("H", &pname[1..]).with_tail(format!(" = {} {mm}", number(h, lang))),
                 SMALL,
                 "",
             );
@@ -161,48 +200,39 @@ pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
     // The scales, as the lecture writes them.
     let (x, per, span) = if d.stroke {
         let (a, b, _) = d.abscissa(an);
-        (a + &b, "m", num(d.h * n as f64))
+        (a + &b, "m", number(d.h * n as f64, lang))
     } else {
         ("φ".to_string(), "rad", "2π".to_string())
     };
     let lines = [
         format!(
-            "μ_{sym} = {} {unit}/mm,  μ_{x} = {span}/{} = {} {per}/mm",
-            num(d.mu_s),
-            num(l),
-            num(d.mu_phi)
+            "μ_{sym} = {} {unit_}/{mm},  μ_{x} = {span}/{} = {} {}/{mm}",
+            number(d.mu_s, lang),
+            number(l, lang),
+            number(d.mu_phi, lang),
+            unit(per, lang)
         ),
         format!(
-            "μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {} ({unit}/{per})/mm",
-            num(d.mu_v)
+            "μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {} ({unit_}/{})/{mm}",
+            number(d.mu_v, lang),
+            unit(per, lang)
         ),
         format!(
-            "μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {} ({unit}/{per}²)/mm",
-            num(d.mu_a)
+            "μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {} ({unit_}/{}²)/{mm}",
+            number(d.mu_a, lang),
+            unit(per, lang)
         ),
     ];
     for (i, t) in lines.iter().enumerate() {
-        c.text(
+        c.rich(
             Point::new(0.0, bottom - 8.0 - 5.0 * i as f64),
-            Label::new(t.clone(), ""),
+            t,
             SMALL,
             "",
+            "start",
         );
     }
-    let what = if let Some(p) = d.point {
-        format!("point {} along its path", m.point_name(p))
-    } else if d.slide {
-        format!("slider {}", m.link_id(d.output))
-    } else {
-        format!("link {}", m.link_id(d.output))
-    };
-    page_svg(
-        "diagrams".into(),
-        format!("Kinematic diagrams of {what}: {sym}, {sym}′, {sym}″ (N = {n}, chords)"),
-        &c,
-        None,
-        opt,
-    )
+    c
 }
 
 /// The diagrams sheet a scene asks for (`want.drawings` has "diagrams"):

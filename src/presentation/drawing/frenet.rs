@@ -188,7 +188,7 @@ pub fn sheets(count: usize, opt: &DrawOptions) -> Vec<Sheet> {
                 f.name.into(),
                 f.title,
                 &c,
-                Some(super::scale_label("l", mu, "m", opt.lang)),
+                Some(super::scale_text("l", mu, "m", opt.lang)),
                 opt,
             )
         })

@@ -105,63 +105,15 @@ fn ui(l: Lang) -> Ui {
 /// dropped (with a combining underline right after them); the rest of the
 /// text is kept, escaped.
 pub fn rich(s: &str) -> String {
-    let cs: Vec<char> = s.chars().collect();
-    let mark = |c: char| ('\u{300}'..='\u{36f}').contains(&c);
-    let esc = |v: &[char]| xml(&v.iter().collect::<String>());
-    // The last character that is not a combining mark, before `i`.
-    let base_before = |i: usize| cs[..i].iter().rev().find(|c| !mark(**c)).copied();
-    let mut out = String::new();
-    let mut i = 0;
-    while i < cs.len() {
-        let c = cs[i];
-        let skip_marks = |mut j: usize| {
-            while j < cs.len() && mark(cs[j]) {
-                j += 1;
-            }
-            j
-        };
-        if c == '^' || c == '_' {
-            let start = skip_marks(i + 1);
-            let mut j = start;
-            let pole = c == '_'
-                && base_before(i) == Some('p')
-                && i >= 1
-                && cs[..i - 1]
-                    .iter()
-                    .rev()
-                    .find(|c| !mark(**c))
-                    .is_none_or(|c| !c.is_alphanumeric())
-                && matches!(cs.get(start), Some('v' | 'a'));
-            if pole {
-                j = skip_marks(start + 1);
-            } else if c == '^' {
-                while j < cs.len() && (cs[j].is_alphabetic() || mark(cs[j])) {
-                    j += 1;
-                }
-            } else {
-                while j < cs.len() && (cs[j].is_alphanumeric() || mark(cs[j])) {
-                    j += 1;
-                }
-            }
-            if j > start {
-                let tag = if c == '^' { "sup" } else { "sub" };
-                let _ = write!(out, "<{tag}>{}</{tag}>", esc(&cs[start..j]));
-                i = j;
-                continue;
-            }
-        } else if c.is_ascii_digit() && base_before(i).is_some_and(|b| b.is_alphabetic()) {
-            let mut j = i;
-            while j < cs.len() && (cs[j].is_ascii_digit() || mark(cs[j])) {
-                j += 1;
-            }
-            let _ = write!(out, "<sub>{}</sub>", esc(&cs[i..j]));
-            i = j;
-            continue;
-        }
-        out.push_str(&xml(&c.to_string()));
-        i += 1;
-    }
-    out
+    use crate::presentation::notation::{Pos, runs};
+    runs(s)
+        .into_iter()
+        .map(|(p, t)| match p {
+            Pos::Base => xml(&t),
+            Pos::Sub => format!("<sub>{}</sub>", xml(&t)),
+            Pos::Sup => format!("<sup>{}</sup>", xml(&t)),
+        })
+        .collect()
 }
 
 /// A label (letters, subscript, more names, tail) as HTML.
@@ -462,7 +414,11 @@ fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
     h += &table_html(&tables::links(an, s, l));
     if let Some(plans) = &s.plans {
         let titles = words(l);
-        h += &table_html(&tables::measured(plans, [titles[1], titles[2]], l));
+        h += &table_html(&tables::measured(
+            plans,
+            [titles.velocities, titles.accelerations],
+            l,
+        ));
     }
     h + "</div>\n"
 }
@@ -626,14 +582,19 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         let _ = write!(
             h,
             "<figure class=\"fig mech\"><figcaption><b>{}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}</div></figure>\n",
-            sheet_words[0],
+            sheet_words.mechanism,
             label_html(&mu_l),
-            mechanism_svg(&mechs[k], &frame, &format!("p{pos}m-"), sheet_words[0])
+            mechanism_svg(
+                &mechs[k],
+                &frame,
+                &format!("p{pos}m-"),
+                sheet_words.mechanism
+            )
         );
         if let Some(plans) = &s.plans {
             for (kind, title, plan) in [
-                ("v", sheet_words[1], Some(&plans.velocity)),
-                ("a", sheet_words[2], plans.acceleration.as_ref()),
+                ("v", sheet_words.velocities, Some(&plans.velocity)),
+                ("a", sheet_words.accelerations, plans.acceleration.as_ref()),
             ] {
                 let Some(plan) = plan else { continue };
                 let (sym, u) = match plan.kind {

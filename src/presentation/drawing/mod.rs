@@ -1,33 +1,49 @@
 //! Lecture-style drawings: the plan of the mechanism, the plans of
-//! velocities and accelerations, and the positions sheet, as SVG sheets
-//! (A4 landscape by default) with a ГОСТ 2.301 frame, exported to PNG
-//! (resvg) and PDF (svg2pdf). The drawing code only reads the analysis:
-//! the kernel knows nothing of SVG.
+//! velocities and accelerations, the positions sheet and the course sheet,
+//! as SVG sheets with the ГОСТ 2.104 frame (and title block), exported to
+//! PNG (resvg) and PDF (svg2pdf). The drawing code only reads the
+//! analysis: the kernel knows nothing of SVG.
+//!
+//! Every figure is drawn at the scale that fills its field: the smallest
+//! standard μ (1, 2, 2.5, 4, 5 × 10^k, ГОСТ 2.302) at which the drawing,
+//! labels and symbols included, fits; a scale the scene fixes
+//! (`want.scales`) is kept. The plans are built again at their sheet's
+//! scale: a new construction, not the solver's plan enlarged.
 
 pub mod canvas;
 pub mod centres;
+pub mod course;
 pub mod cylinder;
 pub mod diagram;
+pub mod export;
 pub mod frenet;
 pub mod html;
 pub mod mechanism;
 pub mod plan;
 pub mod positions;
+pub mod sheet;
+pub mod table;
+
+pub use export::{pdf, pdf_book, png, tree, write_sheets};
 
 use crate::error::{Error, Result};
-use crate::kinematics::construction::text::{Lang, num};
+use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::scale::{standard_above, standard_scale};
+use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
-use canvas::{Canvas, FONT, Label, SMALL, fmt, xml};
-use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use canvas::{Canvas, Label};
+use kurbo::{Point, Rect};
+use sheet::{Page, TitleBlock};
+use table::number;
 
 /// Sheet formats, landscape (ГОСТ 2.301).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SheetSize {
     A4,
     A3,
+    A2,
     A1,
 }
 
@@ -36,6 +52,7 @@ impl SheetSize {
         match self {
             SheetSize::A4 => (297.0, 210.0),
             SheetSize::A3 => (420.0, 297.0),
+            SheetSize::A2 => (594.0, 420.0),
             SheetSize::A1 => (841.0, 594.0),
         }
     }
@@ -43,21 +60,28 @@ impl SheetSize {
         match s.to_ascii_uppercase().as_str() {
             "A4" => Some(SheetSize::A4),
             "A3" => Some(SheetSize::A3),
+            "A2" => Some(SheetSize::A2),
             "A1" => Some(SheetSize::A1),
             _ => None,
         }
     }
+    /// Every size, smallest first.
+    pub const ALL: [SheetSize; 4] = [SheetSize::A4, SheetSize::A3, SheetSize::A2, SheetSize::A1];
 }
 
 #[derive(Clone, Copy, Debug)]
 pub struct DrawOptions {
     pub sheet: SheetSize,
     pub lang: Lang,
+    /// The main title block (ГОСТ 2.104 form 1) on every sheet; always on
+    /// the course sheet.
     pub title_block: bool,
-    /// Add the table of measured segments to plan sheets.
+    /// Add the table of measured quantities to plan sheets.
     pub table: bool,
     /// Mark the instant centres on the plans of the mechanism.
     pub centres: bool,
+    /// Compose the course sheet (besides what `want.drawings` asks).
+    pub course: bool,
 }
 
 impl Default for DrawOptions {
@@ -68,15 +92,19 @@ impl Default for DrawOptions {
             title_block: false,
             table: false,
             centres: false,
+            course: false,
         }
     }
 }
 
-/// One sheet: its file stem (`velocity_1`) and SVG text.
+/// One sheet: its file stem (`velocity_1`), title, size, the scales its
+/// figures are drawn at (`mu_l`, `mu_v`, `mu_a`) and SVG text.
 #[derive(Clone, Debug)]
 pub struct Sheet {
     pub name: String,
     pub title: String,
+    pub size: SheetSize,
+    pub scales: Vec<(&'static str, f64)>,
     pub svg: String,
 }
 
@@ -88,32 +116,46 @@ pub enum Format {
     Pdf,
 }
 
-fn words(lang: Lang) -> [&'static str; 6] {
+/// The words of the sheets' headings.
+pub(crate) struct Words {
+    pub mechanism: &'static str,
+    pub velocities: &'static str,
+    pub accelerations: &'static str,
+    pub positions: &'static str,
+    pub position: &'static str,
+    pub course: &'static str,
+    pub table: &'static str,
+}
+
+pub(crate) fn words(lang: Lang) -> Words {
     match lang {
-        Lang::En => [
-            "Plan of the mechanism",
-            "Plan of velocities",
-            "Plan of accelerations",
-            "Positions of the mechanism",
-            "position",
-            "mm",
-        ],
-        Lang::Uk => [
-            "План механізму",
-            "План швидкостей",
-            "План прискорень",
-            "Положення механізму",
-            "положення",
-            "мм",
-        ],
-        Lang::Ru => [
-            "План механизма",
-            "План скоростей",
-            "План ускорений",
-            "Положения механизма",
-            "положение",
-            "мм",
-        ],
+        Lang::En => Words {
+            mechanism: "Plan of the mechanism",
+            velocities: "Plan of velocities",
+            accelerations: "Plan of accelerations",
+            positions: "Positions of the mechanism",
+            position: "position",
+            course: "Kinematic analysis of the mechanism",
+            table: "Results",
+        },
+        Lang::Uk => Words {
+            mechanism: "План механізму",
+            velocities: "План швидкостей",
+            accelerations: "План прискорень",
+            positions: "Положення механізму",
+            position: "положення",
+            course: "Кінематичний аналіз механізму",
+            table: "Результати",
+        },
+        Lang::Ru => Words {
+            mechanism: "План механизма",
+            velocities: "План скоростей",
+            accelerations: "План ускорений",
+            positions: "Положения механизма",
+            position: "положение",
+            course: "Кинематический анализ механизма",
+            table: "Результаты",
+        },
     }
 }
 
@@ -140,119 +182,180 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
     }
 }
 
-/// The drawings of the mechanism at one scale: one per position (the plan
-/// of the mechanism) and the positions sheet, those asked for.
-struct MechanismDrawings {
-    mu_l: f64,
-    mech: Vec<Canvas>,
-    positions: Option<Canvas>,
+/// The smallest standard μ, not below `lower`, at which `draw(μ)` fits
+/// `field` (w × h, mm), with its drawing; `None` when nothing up to a
+/// million times `lower` fits. A drawing at a smaller μ is larger (a
+/// drawing's size never shrinks with its scale but for its labels, which
+/// keep their size), so the first that fits fills its field best: at the
+/// one before it, the drawing overflowed, and standard values are at most
+/// ×2 apart, so it spans at least half the field one way.
+pub fn fill<T>(
+    lower: f64,
+    field: (f64, f64),
+    mut draw: impl FnMut(f64) -> Option<T>,
+    extent: impl Fn(&T) -> Rect,
+) -> Option<(f64, T)> {
+    let mut mu = standard_scale(lower.max(1e-12), 1.0);
+    let top = mu * 1e6;
+    while mu <= top {
+        if let Some(t) = draw(mu)
+            && fits(extent(&t), field)
+        {
+            return Some((mu, t));
+        }
+        mu = standard_above(mu);
+    }
+    None
 }
 
-impl MechanismDrawings {
-    fn new(an: &Analysis, solved: &[Solved], opt: &DrawOptions, mu_l: f64) -> MechanismDrawings {
-        let mech = if asked(an, solved, "mechanism") {
-            solved
-                .iter()
-                .map(|s| {
-                    let mut c = Canvas::default();
-                    mechanism::draw(an, s, &mut c, mu_l, true);
-                    if opt.centres {
-                        centres::draw(an, s, &mut c, mu_l);
-                    }
-                    c.place_pending();
-                    c
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
-        let positions = asked(an, solved, "positions").then(|| {
-            let mut c = Canvas::default();
-            positions::draw(an, solved, &mut c, mu_l);
-            c
-        });
-        MechanismDrawings {
-            mu_l,
-            mech,
-            positions,
-        }
-    }
-
-    /// The union of every drawing's extent, mm (None: nothing drawn).
-    fn extent(&self) -> Option<kurbo::Rect> {
-        self.mech
-            .iter()
-            .chain(self.positions.iter())
-            .map(|c| c.bounds())
-            .reduce(|a, b| a.union(b))
-    }
+/// The scale `lower` to start [`fill`] from: the smallest at which a real
+/// extent `w` × `h` (m, or m/s …) is drawn within the field; the drawing,
+/// with its labels, is never smaller.
+pub fn lower_scale(w: f64, h: f64, field: (f64, f64)) -> f64 {
+    (w / field.0).max(h / field.1).max(1e-12)
 }
 
 /// Whether an extent fits a field (mm).
-fn fits(u: kurbo::Rect, (aw, ah): (f64, f64)) -> bool {
-    !(u.width() > aw || u.height() > ah)
+fn fits(u: Rect, (aw, ah): (f64, f64)) -> bool {
+    u.width() <= aw && u.height() <= ah
 }
 
-/// The drawings a scene asks for (`want.drawings`; by default the plan of
-/// the mechanism and the plans wanted, plus the positions sheet when there
-/// are several positions), one sheet per drawing and position.
-///
-/// The mechanism's sheets share one scale and one place on the page, so
-/// that flipping through them the mechanism does not jump. Here the scale
-/// is the scene's μ_l (`want.scales.mu_l`, else the default that `solve`
-/// reports) when the drawings fit the sheet, else it grows to the next
-/// standard value until they do (the sheets say which). `mechplan draw`
-/// uses [`sheets_at_scene_scale`] instead, which never changes μ_l.
-pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
-    let area = free_area(opt, false);
-    let mut d = MechanismDrawings::new(an, solved, opt, an.mu_l);
-    loop {
-        match d.extent() {
-            Some(u) if !fits(u, area) && d.mu_l < 1e6 => {
-                let f = (u.width() / area.0).max(u.height() / area.1);
-                let mu_l = crate::kinematics::construction::scale::standard_scale(
-                    d.mu_l * f * 1.0001,
-                    1.0,
-                );
-                d = MechanismDrawings::new(an, solved, opt, mu_l);
+/// The real extent of the mechanism's shown points over `solved` (m).
+fn mechanism_extent(an: &Analysis, solved: &[Solved]) -> Rect {
+    let m = &an.mech;
+    let mut r: Option<Rect> = None;
+    for s in solved {
+        for p in 0..m.scene.points.len() {
+            if let Some(&l) = m.links_of_point(p).iter().find(|&&l| an.link(l)) {
+                let q = s.config.point(m, l, p);
+                let b = Rect::from_points(q, q);
+                r = Some(r.map_or(b, |x| x.union(b)));
             }
-            _ => break,
         }
     }
-    compose(an, solved, opt, d)
+    r.unwrap_or(Rect::ZERO)
 }
 
-/// The sheets at the scene's μ_l (`an.mu_l`: `want.scales.mu_l`, else the
-/// default, the value `solve` reports), on the first of `sizes` whose
-/// field holds the drawings of the mechanism; with it, the size used.
-/// When none does: a refusal with the reason (the drawing's size at that
-/// μ_l, the field's size, the smallest standard μ_l that fits the first
-/// of `sizes`, and the smallest sheet that would hold it).
-pub fn sheets_at_scene_scale(
+/// The plans of the mechanism, one canvas per position, at `mu_l`.
+fn mechanism_canvases(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    mu_l: f64,
+) -> Vec<Canvas> {
+    solved
+        .iter()
+        .map(|s| {
+            let mut c = Canvas::default();
+            mechanism::draw(an, s, &mut c, mu_l, true);
+            if opt.centres {
+                centres::draw(an, s, &mut c, mu_l);
+            }
+            c.place_pending();
+            c
+        })
+        .collect()
+}
+
+fn union(cs: &[Canvas]) -> Rect {
+    cs.iter()
+        .map(|c| c.bounds())
+        .reduce(|a, b| a.union(b))
+        .unwrap_or(Rect::ZERO)
+}
+
+/// The field (w × h) of a single-figure sheet.
+fn field_size(opt: &DrawOptions, right: f64) -> (f64, f64) {
+    let f = sheet::field(opt.sheet, opt.title_block, right);
+    (f.width(), f.height())
+}
+
+/// A figure waiting for its page: the drawing, the box to centre (the
+/// union of a series, so that flipping through the series the mechanism
+/// does not jump), the heading, the scale, a table beside it.
+struct Pending {
+    name: String,
+    title: String,
+    scale: Option<String>,
+    scales: Vec<(&'static str, f64)>,
+    canvas: Canvas,
+    centre_on: Option<Rect>,
+    table: Option<table::Ruled>,
+}
+
+/// The drawings a scene asks for (`want.drawings`; by default the plan
+/// of the mechanism and the plans wanted, plus the positions sheet when
+/// there are several positions), one sheet per drawing and position, on
+/// `opt.sheet`, each figure at the scale that fills its field; a μ_l the
+/// scene fixes that does not fit is replaced by the one that fills (the
+/// sheets say which). `mechplan draw` uses [`sheets_on`], which refuses
+/// instead.
+pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
+    match sheets_on(an, solved, opt, &[opt.sheet]) {
+        Ok((s, _)) => s,
+        Err(_) => compose(an, solved, opt, Scale::Fill).unwrap_or_default(),
+    }
+}
+
+/// How the mechanism's scale is chosen.
+#[derive(Clone, Copy, PartialEq)]
+enum Scale {
+    /// The scene's μ_l (`want.scales.mu_l`) when it gives one.
+    Scene,
+    /// Chosen to fill, whatever the scene says.
+    Fill,
+}
+
+/// The sheets, on the first of `sizes` whose field holds the mechanism's
+/// drawings at the μ_l the scene fixes (without one, the first size: the
+/// scale then fills it); with it, the size used. When a fixed μ_l fits
+/// none: a refusal with the reason (the drawing's size at that μ_l, the
+/// field's size, the smallest standard μ_l that fits the first of
+/// `sizes`, and the smallest sheet that would hold it).
+pub fn sheets_on(
     an: &Analysis,
     solved: &[Solved],
     opt: &DrawOptions,
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
-    let d = MechanismDrawings::new(an, solved, opt, an.mu_l);
-    let Some(u) = d.extent() else {
-        let size = sizes.first().copied().unwrap_or(opt.sheet);
+    let first = sizes.first().copied().unwrap_or(opt.sheet);
+    let Some(mu_l) = an.mech.scene.want.scales.mu_l else {
         let opt = DrawOptions {
-            sheet: size,
+            sheet: first,
             ..*opt
         };
-        return Ok((compose(an, solved, &opt, d), size));
+        return Ok((compose(an, solved, &opt, Scale::Scene)?, first));
     };
+    let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
+    let u = mechanism_union(an, solved, opt, mu_l, t.as_ref());
     for &size in sizes {
         let opt = DrawOptions {
             sheet: size,
             ..*opt
         };
-        if fits(u, free_area(&opt, false)) {
-            return Ok((compose(an, solved, &opt, d), size));
+        if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
+            return Ok((compose(an, solved, &opt, Scale::Scene)?, size));
         }
     }
-    Err(misfit(an, solved, opt, sizes, u))
+    Err(misfit(an, solved, opt, sizes, u, mu_l, t.as_ref()))
+}
+
+/// The extent of the mechanism's drawings at `mu_l`: every position's
+/// plan of the mechanism and, with trajectories `t`, the positions sheet.
+fn mechanism_union(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    mu_l: f64,
+    t: Option<&positions::Trajectories>,
+) -> Rect {
+    let mut u = union(&mechanism_canvases(an, solved, opt, mu_l));
+    if let Some(t) = t {
+        let mut c = Canvas::default();
+        positions::draw(an, solved, t, &mut c, mu_l);
+        u = u.union(c.bounds());
+    }
+    u
 }
 
 /// Why the mechanism's drawings at the scene's μ_l do not fit any of
@@ -262,37 +365,29 @@ fn misfit(
     solved: &[Solved],
     opt: &DrawOptions,
     sizes: &[SheetSize],
-    u: kurbo::Rect,
+    u: Rect,
+    mu_l: f64,
+    t: Option<&positions::Trajectories>,
 ) -> Error {
-    use crate::kinematics::construction::scale::standard_scale;
     use crate::presentation::quantity::format_quantity as q;
     let first = sizes.first().copied().unwrap_or(opt.sheet);
     let last = sizes.last().copied().unwrap_or(opt.sheet);
-    let area_of = |sheet| free_area(&DrawOptions { sheet, ..*opt }, false);
+    let area_of = |sheet| field_size(&DrawOptions { sheet, ..*opt }, 0.0);
     let (aw, ah) = area_of(first);
-    // The smallest standard μ_l that fits the first sheet: from the one
-    // that would if the drawing's size were all geometry (labels and
-    // symbols keep their size), up one standard value at a time.
-    let f = (u.width() / aw).max(u.height() / ah);
-    let mut mu = standard_scale(an.mu_l * f, 1.0);
-    while mu < 1e6 {
-        let e = MechanismDrawings::new(an, solved, opt, mu).extent();
-        if e.is_none_or(|e| fits(e, (aw, ah))) {
-            break;
-        }
-        mu = standard_scale(mu * 1.0001, 1.0);
-    }
+    let e = mechanism_extent(an, solved);
+    let mu = fill(
+        lower_scale(e.width(), e.height(), (aw, ah)),
+        (aw, ah),
+        |mu| Some(mechanism_union(an, solved, opt, mu, t)),
+        |r| *r,
+    )
+    .map(|(mu, _)| mu)
+    .unwrap_or(f64::NAN);
     // The smallest sheet holding it at this μ_l, beyond those tried.
-    let bigger = [SheetSize::A4, SheetSize::A3, SheetSize::A1]
+    let bigger = SheetSize::ALL
         .into_iter()
         .filter(|s| !sizes.contains(s))
         .find(|&s| s.mm().0 > last.mm().0 && fits(u, area_of(s)));
-    let given = an.mech.scene.want.scales.mu_l.is_some();
-    let whose = if given {
-        "want.scales.mu_l"
-    } else {
-        "the scene's default, as solve reports it; want.scales.mu_l sets another"
-    };
     let field = if sizes.len() > 1 {
         let (w, h) = area_of(last);
         format!(
@@ -308,333 +403,341 @@ fn misfit(
         )
     };
     let mut msg = format!(
-        "the drawing of the mechanism at μ_l = {} m/mm ({whose}) is {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
-        an.mu_l,
+        "the drawing of the mechanism at μ_l = {mu_l} m/mm (want.scales.mu_l) is {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
         q(u.width(), "mm"),
         q(u.height(), "mm"),
     );
     if let Some(s) = bigger {
         msg += &format!(", or draw on --sheet {s:?}");
     }
-    let pointer = if given || sizes.len() > 1 {
-        "/want/scales/mu_l"
-    } else {
-        "sheet"
-    };
-    Error::scene(pointer, msg)
+    msg += ", or leave μ_l to mechplan (it fills the sheet)";
+    Error::scene("/want/scales/mu_l", msg)
 }
 
-/// Compose the sheets from the mechanism's drawings and the plans.
-fn compose(
-    an: &Analysis,
-    solved: &[Solved],
-    opt: &DrawOptions,
-    d: MechanismDrawings,
-) -> Vec<Sheet> {
+/// Compose the sheets on `opt.sheet`: the positions sheet, and per
+/// position the plan of the mechanism and the plans asked for; the course
+/// sheet when asked; the diagrams sheet when asked.
+fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
     let w = words(opt.lang);
-    let mut out = Vec::new();
-    let MechanismDrawings {
-        mu_l,
-        mech,
-        positions: pos_canvas,
-    } = d;
-    let union = mech.iter().map(|c| c.bounds()).reduce(|a, b| a.union(b));
-    if let Some(c) = &pos_canvas {
-        let scale = scale_label("l", mu_l, "m", opt.lang);
-        out.push(page(
-            "positions".into(),
-            w[3].into(),
-            c,
-            Some(scale),
-            opt,
-            None,
-            None,
-        ));
+    let fixed_l = match how {
+        Scale::Scene => an.mech.scene.want.scales.mu_l,
+        Scale::Fill => None,
+    };
+    let mut out: Vec<Pending> = Vec::new();
+    let field = field_size(opt, 0.0);
+    let extent = mechanism_extent(an, solved);
+    let lower = lower_scale(extent.width(), extent.height(), field);
+    if asked(an, solved, "positions") && !solved.is_empty() {
+        let t = positions::trajectories(an, solved);
+        let draw = |mu: f64| {
+            let mut c = Canvas::default();
+            positions::draw(an, solved, &t, &mut c, mu);
+            Some(c)
+        };
+        let (mu, c) = match fixed_l {
+            Some(mu) => (mu, draw(mu).unwrap_or_default()),
+            None => fill(lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
+        };
+        out.push(Pending {
+            name: "positions".into(),
+            title: w.positions.into(),
+            scale: Some(scale_text("l", mu, "m", opt.lang)),
+            scales: vec![("mu_l", mu)],
+            canvas: c,
+            centre_on: None,
+            table: None,
+        });
     }
+    let mech = if asked(an, solved, "mechanism") && !solved.is_empty() {
+        let draw = |mu: f64| Some(mechanism_canvases(an, solved, opt, mu));
+        Some(match fixed_l {
+            Some(mu) => (mu, mechanism_canvases(an, solved, opt, mu)),
+            None => fill(lower, field, draw, |cs| union(cs)).ok_or_else(too_large)?,
+        })
+    } else {
+        None
+    };
+    let (mu_l, mut mech) = mech.map_or((0.0, Vec::new()), |(mu, cs)| (mu, cs));
+    let centre_on = (!mech.is_empty()).then(|| union(&mech));
     for (k, s) in solved.iter().enumerate() {
         let pos = position_text(an, s, k, opt.lang);
-        if let Some(c) = mech.get(k) {
-            out.push(page(
-                format!("mechanism_{}", k + 1),
-                format!("{}, {pos}", w[0]),
-                c,
-                Some(scale_label("l", mu_l, "m", opt.lang)),
-                opt,
-                None,
-                union,
-            ));
+        if k < mech.len() {
+            out.push(Pending {
+                name: format!("mechanism_{}", k + 1),
+                title: format!("{}, {pos}", w.mechanism),
+                scale: Some(scale_text("l", mu_l, "m", opt.lang)),
+                scales: vec![("mu_l", mu_l)],
+                canvas: std::mem::take(&mut mech[k]),
+                centre_on,
+                table: None,
+            });
         }
         let Some(plans) = &s.plans else { continue };
-        for (name, title, plan) in [
-            ("velocity", w[1], Some(&plans.velocity)),
-            ("acceleration", w[2], plans.acceleration.as_ref()),
-        ] {
-            let Some(plan) = plan else { continue };
-            if !asked(an, solved, name) {
+        for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+            let (name, title) = match kind {
+                PlanKind::Velocity => ("velocity", w.velocities),
+                PlanKind::Acceleration => ("acceleration", w.accelerations),
+            };
+            if !asked(an, solved, name)
+                || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
+            {
                 continue;
             }
-            let mut c = Canvas::default();
-            plan::draw(plan, &mut c, &an.points);
-            let (sym, unit) = match plan.kind {
-                PlanKind::Velocity => ("v", "m/s"),
-                PlanKind::Acceleration => ("a", "m/s²"),
+            let (plan, c, t) = plan_figure(an, s, kind, opt, |plan| {
+                let t = opt.table.then(|| table::plan_table(plan, opt.lang));
+                let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
+                field_size(opt, right)
+            });
+            let (sym, unit, key) = match kind {
+                PlanKind::Velocity => ("v", "m/s", "mu_v"),
+                PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
             };
-            let table = if opt.table { Some(plan) } else { None };
-            out.push(page(
-                format!("{name}_{}", k + 1),
-                format!("{title}, {pos}"),
-                &c,
-                Some(scale_label(sym, plan.mu, unit, opt.lang)),
-                opt,
-                table,
-                None,
-            ));
+            out.push(Pending {
+                name: format!("{name}_{}", k + 1),
+                title: format!("{title}, {pos}"),
+                scale: Some(scale_text(sym, plan.mu, unit, opt.lang)),
+                scales: vec![(key, plan.mu)],
+                canvas: c,
+                centre_on: None,
+                table: t,
+            });
         }
     }
-    out
+    let mut sheets = Vec::new();
+    if opt.course || asked(an, solved, "course") {
+        sheets.push(course::sheet(an, solved, opt)?);
+    }
+    let n = out.len();
+    let lead = sheets.len();
+    for (i, p) in out.into_iter().enumerate() {
+        sheets.push(render(an, opt, p, (lead + i + 1, lead + n)));
+    }
+    if let Some(d) = diagram::wanted(an, opt)? {
+        sheets.push(d);
+    }
+    Ok(sheets)
 }
 
-fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
+fn too_large() -> Error {
+    Error::Internal("no standard scale up to a million times the first fits the sheet".into())
+}
+
+/// A plan of position `s` at the scale that fills the field `field(plan)`
+/// gives for it (the scene's scale where it fixes one): the plan, its
+/// drawing and the table for it.
+fn plan_figure(
+    an: &Analysis,
+    s: &Solved,
+    kind: PlanKind,
+    opt: &DrawOptions,
+    field: impl Fn(&Plan) -> (f64, f64),
+) -> (Plan, Canvas, Option<table::Ruled>) {
+    let solved_plan = || {
+        let p = s.plans.as_ref().expect("a plan asked for");
+        match kind {
+            PlanKind::Velocity => p.velocity.clone(),
+            PlanKind::Acceleration => p.acceleration.clone().expect("an acceleration plan"),
+        }
+    };
+    let draw = |plan: &Plan| {
+        let mut c = Canvas::default();
+        plan::draw(plan, &mut c, &an.points);
+        c
+    };
+    let table = |plan: &Plan| opt.table.then(|| table::plan_table(plan, opt.lang));
+    let fixed = match kind {
+        PlanKind::Velocity => an.drafting.mu_v,
+        PlanKind::Acceleration => an.drafting.mu_a,
+    };
+    let p0 = solved_plan();
+    if fixed.is_some() {
+        let c = draw(&p0);
+        let t = table(&p0);
+        return (p0, c, t);
+    }
+    let f = field(&p0);
+    let (lo, hi) = p0.points.iter().fold(
+        (Point::new(0.0, 0.0), Point::new(0.0, 0.0)),
+        |(lo, hi), q| {
+            let a = q.at.to_point();
+            (
+                Point::new(lo.x.min(a.x), lo.y.min(a.y)),
+                Point::new(hi.x.max(a.x), hi.y.max(a.y)),
+            )
+        },
+    );
+    let lower = lower_scale((hi.x - lo.x) * p0.mu, (hi.y - lo.y) * p0.mu, f);
+    let rebuild = |mu: f64| -> Option<(Plan, Canvas)> {
+        let (order, mv, ma) = match kind {
+            PlanKind::Velocity => (Order::Velocity, Some(mu), None),
+            PlanKind::Acceleration => (Order::Acceleration, None, Some(mu)),
+        };
+        let p = an.plans_at_scales(s, order, mv, ma).ok()?;
+        let plan = match kind {
+            PlanKind::Velocity => p.velocity,
+            PlanKind::Acceleration => p.acceleration?,
+        };
+        let c = draw(&plan);
+        Some((plan, c))
+    };
+    match fill(lower, f, rebuild, |(_, c)| c.bounds()) {
+        Some((_, (plan, c))) => {
+            let t = table(&plan);
+            (plan, c, t)
+        }
+        // A plan all at the pole (everything at rest) or one that cannot
+        // be built again: the solver's own.
+        None => {
+            let c = draw(&p0);
+            let t = table(&p0);
+            (p0, c, t)
+        }
+    }
+}
+
+/// A single-figure sheet from its pending figure: frame, heading, the
+/// figure centred in its field, the table beside it, the title block.
+fn render(an: &Analysis, opt: &DrawOptions, p: Pending, number: (usize, usize)) -> Sheet {
+    let right = p.table.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
+    let mut page = Page::new(opt.sheet);
+    page.heading(&p.title, p.scale.as_deref());
+    let f = sheet::field(opt.sheet, opt.title_block, right);
+    page.place(&p.canvas, f, p.centre_on);
+    if let Some(t) = &p.table {
+        let (tw, _) = t.size();
+        let fr = sheet::frame(opt.sheet);
+        page.place_at(
+            &t.draw(),
+            Point::new(fr.x1 - sheet::PAD - tw, fr.y0 + sheet::HEADING),
+        );
+    }
+    if opt.title_block {
+        page.title_block(&title_block(an, opt, &p.title, number));
+    }
+    Sheet {
+        name: p.name,
+        title: p.title,
+        size: opt.sheet,
+        scales: p.scales,
+        svg: page.finish(),
+    }
+}
+
+/// The title block of a sheet of this scene.
+pub(crate) fn title_block(
+    an: &Analysis,
+    opt: &DrawOptions,
+    title: &str,
+    number: (usize, usize),
+) -> TitleBlock {
+    TitleBlock::new(&an.mech.scene.sheet, title, opt.lang, number)
+}
+
+/// "position 1, φ1 = 30°" (the input link's own number), localised.
+pub(crate) fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
     let w = words(lang);
-    if an.mech.scene.several_inputs() {
-        let inputs = crate::presentation::report::input_words(an, s);
-        return format!("{} {}, {inputs}", w[4], k + 1);
+    let m = &an.mech;
+    if m.scene.several_inputs() {
+        // Every input with its link's id: "φ1 = 60°, φ4 = 120°", "s3 = 0,1 м".
+        let inputs: Vec<String> = m
+            .scene
+            .inputs()
+            .zip(s.drives.iter())
+            .map(|(spec, d)| {
+                let id = m.link_id(spec.link());
+                match spec {
+                    InputSpec::Crank { .. } => format!(
+                        "φ{id} = {}°",
+                        number(d.q.to_degrees().rem_euclid(360.0), lang)
+                    ),
+                    InputSpec::Slider { .. } => {
+                        format!("s{id} = {} {}", number(d.q, lang), table::unit("m", lang))
+                    }
+                }
+            })
+            .collect();
+        return format!("{} {}, {}", w.position, k + 1, inputs.join(", "));
     }
-    match an.mech.scene.input {
-        InputSpec::Crank { .. } => format!(
-            "{} {}, φ1 = {}°",
-            w[4],
+    match m.scene.input {
+        InputSpec::Crank { link, .. } => format!(
+            "{} {}, φ{} = {}°",
+            w.position,
             k + 1,
-            num(s.q.to_degrees().rem_euclid(360.0))
+            m.link_id(link),
+            number(s.q.to_degrees().rem_euclid(360.0), lang)
         ),
-        InputSpec::Slider { .. } => format!("{} {}, s = {} m", w[4], k + 1, num(s.q)),
+        InputSpec::Slider { .. } => format!(
+            "{} {}, s = {} {}",
+            w.position,
+            k + 1,
+            number(s.q, lang),
+            table::unit("m", lang)
+        ),
     }
 }
 
-/// "μ_v = 0.01 (m/s)/mm", localised.
-pub(crate) fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
-    let (unit, mm) = match lang {
-        Lang::En => (unit.to_string(), "mm"),
-        _ => (unit.replace('m', "м").replace('s', "с"), "мм"),
-    };
-    let unit = if unit.contains('/') {
-        format!("({unit})")
-    } else {
-        unit
-    };
-    Label::new("μ", sym).with_tail(format!(" = {} {unit}/{mm}", num(mu)))
+/// "μ_v = 0.01 (m/s)/mm" in the notation of the sheets, localised.
+pub(crate) fn scale_text(sym: &str, mu: f64, unit: &str, lang: Lang) -> String {
+    let u = table::unit(unit, lang);
+    let u = if u.contains('/') { format!("({u})") } else { u };
+    format!(
+        "μ_{sym} = {} {u}/{}",
+        number(mu, lang),
+        table::unit("mm", lang)
+    )
 }
 
-/// A single sheet from a canvas (used by `check --svg`).
+/// "μ_v = 0.01 (m/s)/mm", localised, as a label (the handout's).
+pub(crate) fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
+    let t = scale_text(sym, mu, unit, lang);
+    let tail = t.split_once(' ').map(|x| x.1).unwrap_or("");
+    Label::new("μ", sym).with_tail(format!(" {tail}"))
+}
+
+/// A single sheet from a canvas (the diagrams, the Frenet families, the
+/// `check --svg` overlay): on the first of `opt.sheet` and the larger
+/// sizes whose field holds it; a drawing larger than A1's field is drawn
+/// reduced (its heading says by how much).
 pub fn page_svg(
     name: String,
     title: String,
     c: &Canvas,
-    scale: Option<Label>,
+    scale: Option<String>,
     opt: &DrawOptions,
 ) -> Sheet {
-    page(name, title, c, scale, opt, None, None)
-}
-
-/// The free area of a sheet for the drawing (mm): inside the frame, below
-/// the heading, beside the table and above the title block.
-fn free_area(opt: &DrawOptions, table: bool) -> (f64, f64) {
-    let (w, h) = opt.sheet.mm();
-    let title_h = if opt.title_block { 20.0 } else { 0.0 };
-    let table_w = if table { 70.0 } else { 0.0 };
-    (
-        w - 20.0 - 5.0 - 12.0 - table_w,
-        h - 10.0 - 16.0 - 6.0 - title_h,
-    )
-}
-
-/// Compose a sheet: frame, heading, the drawing centred in the free area,
-/// optional title block and table of measured segments.
-fn page(
-    name: String,
-    title: String,
-    c: &Canvas,
-    scale: Option<Label>,
-    opt: &DrawOptions,
-    table: Option<&Plan>,
-    centre_on: Option<kurbo::Rect>,
-) -> Sheet {
-    let (w, h) = opt.sheet.mm();
-    let (left, margin) = (20.0, 5.0);
-    let title_h = if opt.title_block { 20.0 } else { 0.0 };
-    let table_w = if table.is_some() { 70.0 } else { 0.0 };
-    // Free area for the drawing: inside the frame, below the heading.
-    let (ax0, ax1) = (left + 6.0, w - margin - 6.0 - table_w);
-    let (ay0, ay1) = (margin + 16.0, h - margin - 6.0 - title_h);
-    let b = centre_on.unwrap_or_else(|| c.bounds());
-    let ox = (ax0 + ax1) / 2.0 - (b.x0 + b.x1) / 2.0;
-    let oy = (ay0 + ay1) / 2.0 + (b.y0 + b.y1) / 2.0;
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, sans-serif">"#
-    );
-    let _ = writeln!(svg, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
-    let _ = writeln!(
-        svg,
-        r#"<rect class="frame" x="{left}" y="{margin}" width="{}" height="{}" fill="none" stroke="black" stroke-width="0.7"/>"#,
-        fmt(w - left - margin),
-        fmt(h - 2.0 * margin)
-    );
-    let mut head = Canvas::default();
-    head.text(
-        kurbo::Point::new(0.0, 0.0),
-        Label::new(title.clone(), ""),
-        5.0,
-        "heading",
-    );
-    if let Some(s) = scale {
-        head.text(kurbo::Point::new(0.0, -7.0), s, FONT, "scale");
-    }
-    head.write(&mut svg, left + 6.0, margin + 9.0);
-    c.write(&mut svg, ox, oy);
-    if let Some(plan) = table {
-        let mut t = Canvas::default();
-        let x0 = w - margin - table_w + 2.0;
-        let mut y = 0.0;
-        let head = match opt.lang {
-            Lang::En => "segment, mm → value",
-            Lang::Uk => "відрізок, мм → величина",
-            Lang::Ru => "отрезок, мм → величина",
-        };
-        t.text(
-            kurbo::Point::new(0.0, y),
-            Label::new(head, ""),
-            SMALL,
-            "table",
-        );
-        for q in &plan.measured {
-            y -= 4.0;
-            let row = format!(
-                "{} = {} → {} = {}",
-                crate::presentation::tables::segment(plan, q),
-                num(q.mm),
-                q.quantity,
-                num(q.value)
-            );
-            t.text(
-                kurbo::Point::new(0.0, y),
-                Label::new(row, ""),
-                SMALL,
-                "table",
-            );
-        }
-        t.write(&mut svg, x0, margin + 24.0);
-    }
-    if opt.title_block {
-        let (bw, bx, by) = (130.0, w - margin - 130.0, h - margin - title_h);
-        let _ = writeln!(
-            svg,
-            r#"<rect class="title-block" x="{}" y="{}" width="{bw}" height="{title_h}" fill="none" stroke="black" stroke-width="0.7"/>"#,
-            fmt(bx),
-            fmt(by)
-        );
-        let _ = writeln!(
-            svg,
-            r#"<text class="title-block" x="{}" y="{}" font-size="3.5">{}</text>"#,
-            fmt(bx + 3.0),
-            fmt(by + 8.0),
-            xml(&truncate(&an_title(&title), 60))
-        );
-        let _ = writeln!(
-            svg,
-            r#"<text class="title-block" x="{}" y="{}" font-size="2.5">mechplan</text>"#,
-            fmt(bx + 3.0),
-            fmt(by + 15.0)
-        );
-    }
-    svg.push_str("</svg>\n");
-    Sheet { name, title, svg }
-}
-
-fn an_title(t: &str) -> String {
-    t.to_string()
-}
-
-fn truncate(s: &str, n: usize) -> String {
-    if s.chars().count() <= n {
-        s.to_string()
+    let b = c.bounds();
+    let size = SheetSize::ALL
+        .into_iter()
+        .filter(|s| s.mm().0 >= opt.sheet.mm().0)
+        .find(|&s| fits(b, field_size(&DrawOptions { sheet: s, ..*opt }, 0.0)))
+        .unwrap_or(SheetSize::A1);
+    let opt = DrawOptions {
+        sheet: size,
+        ..*opt
+    };
+    let f = sheet::field(size, opt.title_block, 0.0);
+    let k = (f.width() / b.width())
+        .min(f.height() / b.height())
+        .min(1.0);
+    let mut page = Page::new(size);
+    let title = if k < 1.0 {
+        // The largest "1:n" reduction with n from the standard values.
+        let n = standard_scale(1.0 / k, 1.0);
+        let c2 = c.scaled(1.0 / n);
+        let t = format!("{title} (1:{})", number(n, opt.lang));
+        page.heading(&t, scale.as_deref());
+        page.place(&c2, f, None);
+        t
     } else {
-        s.chars().take(n - 1).collect::<String>() + "…"
+        page.heading(&title, scale.as_deref());
+        page.place(c, f, None);
+        title
+    };
+    Sheet {
+        name,
+        title,
+        size,
+        scales: Vec::new(),
+        svg: page.finish(),
     }
-}
-
-/// A font database with the system's fonts (DejaVu on the project's machines).
-fn options() -> usvg::Options<'static> {
-    let mut o = usvg::Options::default();
-    o.fontdb_mut().load_system_fonts();
-    o.font_family = "DejaVu Sans".into();
-    o
-}
-
-/// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
-pub fn tree(svg: &str) -> Result<usvg::Tree> {
-    usvg::Tree::from_str(svg, &options())
-        .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
-}
-
-/// Render a sheet to PNG at `dpi`.
-pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    let size = tree.size();
-    // usvg sizes the sheet in CSS pixels (96 per inch).
-    let k = (dpi / 96.0) as f32;
-    let (pw, ph) = (
-        (size.width() * k).ceil() as u32,
-        (size.height() * k).ceil() as u32,
-    );
-    let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
-        .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
-    resvg::render(
-        &tree,
-        tiny_skia::Transform::from_scale(k, k),
-        &mut pixmap.as_mut(),
-    );
-    pixmap
-        .encode_png()
-        .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
-}
-
-/// Convert a sheet to PDF.
-pub fn pdf(svg: &str) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    svg2pdf::to_pdf(
-        &tree,
-        svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions::default(),
-    )
-    .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
-}
-
-/// Write every sheet into `dir` in `format`, all or nothing: every sheet is
-/// rendered, then written to a temporary file beside its place, and only
-/// when all are written are they renamed into place; a failure removes
-/// every temporary of this run ([`crate::output::write_files_atomically`]).
-/// Returns the paths written.
-pub fn write_sheets(
-    sheets: &[Sheet],
-    dir: &Path,
-    format: Format,
-    dpi: f64,
-) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    // Render everything first, so that a failure writes nothing.
-    let mut files = Vec::new();
-    for s in sheets {
-        let (ext, bytes) = match format {
-            Format::Svg => ("svg", s.svg.clone().into_bytes()),
-            Format::Png => ("png", png(&s.svg, dpi)?),
-            Format::Pdf => ("pdf", pdf(&s.svg)?),
-        };
-        files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
-    }
-    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
-    crate::output::write_files_atomically(&refs)?;
-    Ok(files.into_iter().map(|(p, _)| p).collect())
 }

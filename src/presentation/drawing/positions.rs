@@ -2,13 +2,23 @@
 //! position, numbered from 1, the first in main lines, with the
 //! trajectories of the coupler points drawn through many more positions.
 
-use super::canvas::{Canvas, Class, Label, SMALL};
+use super::canvas::{Canvas, Class, Label, Line, SMALL};
 use crate::kinematics::positions::PositionSolver;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use kurbo::Point;
 
-pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
+/// The trajectories of the coupler points (m), computed once for every
+/// scale the sheet is tried at, and the crank's circle.
+pub struct Trajectories {
+    paths: Vec<Vec<Point>>,
+    /// The crank's pivot and radius, m, when it turns fully.
+    circle: Option<(Point, f64)>,
+}
+
+/// The positions sheet's drawing of `solved` at `mu_l`, with the
+/// trajectories `t` ([`trajectories`]).
+pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, mu_l: f64) {
     let m = &an.mech;
     if solved.is_empty() {
         return;
@@ -21,8 +31,11 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
         .iter()
         .copied()
         .find(|&p| !m.links_of_point(p).contains(&m.frame()));
+    let every = numbering_step(solved.len());
     for (k, s) in solved.iter().enumerate() {
         if k > 0 {
+            // Each link in one thin path: a position is a handful of
+            // elements, and the sheet grows linearly with the positions.
             for (l, link) in m.links.iter().enumerate() {
                 if l == m.frame() || !an.link(l) || link.points.len() < 2 {
                     continue;
@@ -32,13 +45,13 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
                     .iter()
                     .map(|&p| to(s.config.point(m, l, p)))
                     .collect();
-                for i in 1..xy.len() {
-                    c.seg(xy[i - 1], xy[i], Class::Thin);
-                }
+                c.path(xy, Line::Thin);
             }
         }
-        // Number every position, from 1, at the input's moving point.
-        if let Some(p) = tip {
+        // Number the positions, from 1, at the input's moving point.
+        if let Some(p) = tip
+            && k % every == 0
+        {
             let at = to(s.config.point(m, input, p));
             c.circle(at, 0.4, "black", 0.0);
             c.label_later(
@@ -72,8 +85,38 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
             c.circle(*p, 0.5, "black", 0.0);
         }
     }
-    // Trajectories of points not fixed to the frame nor turning about a
-    // fixed pivot, through 72 positions per revolution (or the solved ones).
+    for path in &t.paths {
+        c.path(path.iter().map(|&p| to(p)).collect(), Line::DashDot);
+    }
+    // The crank's circle, on which the positions are marked.
+    if let Some((o, r)) = t.circle {
+        let circle = (0..=96)
+            .map(|k| to(o + kurbo::Vec2::from_angle(std::f64::consts::TAU * k as f64 / 96.0) * r))
+            .collect();
+        c.path(circle, Line::DashDot);
+    }
+    c.place_pending();
+}
+
+/// Which positions get their number: every one up to 36 positions (the
+/// course's 12 or 24 are all numbered), else every k-th so that some 24
+/// numbers stand around the crank's circle, readable.
+fn numbering_step(n: usize) -> usize {
+    if n <= 36 { 1 } else { n.div_ceil(24) }
+}
+
+/// The trajectories of the points that are neither on the frame, nor on
+/// a link turning about a fixed pivot, nor on a slider of a frame guide:
+/// through 72 positions per revolution of a crank turning fully, else
+/// through the solved ones.
+pub fn trajectories(an: &Analysis, solved: &[Solved]) -> Trajectories {
+    let m = &an.mech;
+    if solved.is_empty() {
+        return Trajectories {
+            paths: Vec::new(),
+            circle: None,
+        };
+    }
     let full_turn = matches!(m.scene.input, InputSpec::Crank { .. })
         && !m.scene.several_inputs()
         && solved.len() >= 12;
@@ -106,7 +149,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
                 match ps.solve(q0 + dir * std::f64::consts::TAU * k as f64 / 72.0) {
                     Ok(cfg) => {
                         for (i, &(p, l)) in tracked.iter().enumerate() {
-                            samples[i].push(to(cfg.point(m, l, p)));
+                            samples[i].push(cfg.point(m, l, p));
                         }
                     }
                     Err(_) => {
@@ -123,13 +166,21 @@ pub fn draw(an: &Analysis, solved: &[Solved], c: &mut Canvas, mu_l: f64) {
     if paths.is_empty() {
         paths = tracked
             .iter()
-            .map(|&(p, l)| solved.iter().map(|s| to(s.config.point(m, l, p))).collect())
+            .map(|&(p, l)| solved.iter().map(|s| s.config.point(m, l, p)).collect())
             .collect();
     }
-    for path in paths {
-        for w in path.windows(2) {
-            c.seg(w[0], w[1], Class::Thin);
+    let input = m.scene.input.link();
+    let tip = m.links[input]
+        .points
+        .iter()
+        .copied()
+        .find(|&p| !m.links_of_point(p).contains(&m.frame()));
+    let circle = match (&m.scene.input, tip) {
+        (InputSpec::Crank { pivot, .. }, Some(p)) if full_turn => {
+            let o = solved[0].config.point(m, m.frame(), *pivot);
+            Some((o, (solved[0].config.point(m, input, p) - o).hypot()))
         }
-    }
-    c.place_pending();
+        _ => None,
+    };
+    Trajectories { paths, circle }
 }

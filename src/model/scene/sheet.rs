@@ -1,0 +1,93 @@
+//! The `sheet` object: what the main title block of a drawing says
+//! (ГОСТ 2.104 form 1), and `want.plans_at`, the positions whose plans go
+//! on the course sheet.
+
+use super::reader::Reader;
+use super::{PlansAt, SheetInfo};
+use serde_json::Value;
+
+impl Reader {
+    pub(super) fn sheet_info(&mut self, v: Option<&Value>) -> SheetInfo {
+        let mut s = SheetInfo::default();
+        let Some(v) = v else { return s };
+        let Some(o) = self.object(v, "/sheet") else {
+            return s;
+        };
+        let keys = [
+            "designation",
+            "title",
+            "author",
+            "checker",
+            "organisation",
+            "scale",
+        ];
+        self.only_keys(o, "/sheet", &keys);
+        for k in keys {
+            let Some(x) = o.get(k) else { continue };
+            let at = format!("/sheet/{k}");
+            let Some(t) = self.string(x, &at) else {
+                continue;
+            };
+            // A cell of the title block holds one line.
+            if t.chars().count() > 120 || t.contains('\n') {
+                self.err(at, "expected one line of at most 120 characters");
+                continue;
+            }
+            let t = Some(t.to_owned());
+            match k {
+                "designation" => s.designation = t,
+                "title" => s.title = t,
+                "author" => s.author = t,
+                "checker" => s.checker = t,
+                "organisation" => s.organisation = t,
+                _ => s.scale = t,
+            }
+        }
+        s
+    }
+
+    /// `want.plans_at`: a list of positions (from 1) whose acceleration
+    /// plans go on the course sheet, or `{ "velocity": [...] | "all",
+    /// "acceleration": [...] }`; checked against the number of positions.
+    pub(super) fn plans_at(&mut self, v: &Value, positions: usize) -> PlansAt {
+        let list = |r: &mut Self, v: &Value, at: &str| -> Vec<usize> {
+            let Some(a) = v.as_array() else {
+                r.err(at, "expected a list of position numbers (from 1)");
+                return Vec::new();
+            };
+            let mut out = Vec::new();
+            for (k, x) in a.iter().enumerate() {
+                match x.as_u64() {
+                    Some(n) if n >= 1 && n as usize <= positions => {
+                        if !out.contains(&(n as usize)) {
+                            out.push(n as usize)
+                        }
+                    }
+                    _ => r.err(
+                        format!("{at}/{k}"),
+                        format!("expected a position number from 1 to {positions}"),
+                    ),
+                }
+            }
+            out
+        };
+        let mut p = PlansAt::default();
+        if v.is_array() {
+            p.acceleration = Some(list(self, v, "/want/plans_at"));
+            return p;
+        }
+        let Some(o) = self.object(v, "/want/plans_at") else {
+            return p;
+        };
+        self.only_keys(o, "/want/plans_at", &["velocity", "acceleration"]);
+        if let Some(x) = o.get("velocity")
+            && x.as_str() != Some("all")
+        {
+            p.velocity = Some(list(self, x, "/want/plans_at/velocity"));
+        }
+        if let Some(x) = o.get("acceleration") {
+            p.acceleration = Some(list(self, x, "/want/plans_at/acceleration"));
+        }
+        p
+    }
+}

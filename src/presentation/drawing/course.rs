@@ -1,0 +1,628 @@
+//! The course sheet: the kinematic analysis sheet of a TMM course project
+//! (A1, or A2), composed of the mechanism in all its positions with the
+//! trajectories, the plans of velocities of the positions (one scale for
+//! all), the plans of accelerations of the chosen positions, the kinematic
+//! diagrams of the output, the tables of results and the main title block.
+//!
+//! The layout is found, not fixed: every figure is drawn at the scale that
+//! fills a target box (its share of the field, in its own proportions),
+//! and the figures are packed into the field by a skyline packer (each
+//! placed where its bottom stays highest, then leftmost) around the title
+//! block. The shares are grown together while everything still packs
+//! (a bisection on one zoom factor), so the sheet is as full as standard
+//! scales allow.
+
+use super::canvas::{Canvas, SMALL};
+use super::sheet::{self, Page};
+use super::table::{self, Ruled, number, unit};
+use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
+use crate::error::Result;
+use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::scale::{standard_above, standard_scale};
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::construction::{Plan, PlanKind};
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::model::scene::PositionsSpec;
+use kurbo::{Point, Rect};
+use std::collections::HashMap;
+
+/// The space between figures, and between a caption and its figure, mm.
+const GAP: f64 = 8.0;
+/// The caption's line height, mm.
+const CAPTION: f64 = 6.0;
+/// Caption font size, mm.
+const CAPTION_FONT: f64 = 3.5;
+
+/// The sheet size of the course sheet: A2 when asked, else A1.
+pub fn size(opt: &DrawOptions) -> SheetSize {
+    if opt.sheet == SheetSize::A2 {
+        SheetSize::A2
+    } else {
+        SheetSize::A1
+    }
+}
+
+/// Which positions' plans the sheet shows (numbers from 1): the velocity
+/// plans of every position (of every k-th beyond 24 positions) unless
+/// `want.plans_at` says; the acceleration plans of `want.plans_at`, by
+/// default the first position (the start of the working stroke) and the
+/// one in the middle of the working stroke.
+pub fn chosen(an: &Analysis, solved: &[Solved]) -> (Vec<usize>, Vec<usize>) {
+    let n = solved.len();
+    let at = &an.mech.scene.want.plans_at;
+    let velocity = at.velocity.clone().unwrap_or_else(|| {
+        let step = if n <= 24 { 1 } else { n.div_ceil(12) };
+        (1..=n).step_by(step).collect()
+    });
+    let acceleration = at.acceleration.clone().unwrap_or_else(|| {
+        let middle = match &an.mech.scene.positions {
+            PositionsSpec::Count { count, output } => {
+                let out = output.unwrap_or_else(|| an.default_output());
+                an.working_stroke(out).ok().map(|(_, stroke)| {
+                    let step = std::f64::consts::TAU / *count as f64;
+                    1 + ((stroke / 2.0) / step).round() as usize
+                })
+            }
+            _ => Some(n / 2 + 1),
+        };
+        let mut v = vec![1];
+        if let Some(k) = middle.filter(|&k| k > 1 && k <= n) {
+            v.push(k);
+        }
+        v
+    });
+    (velocity, acceleration)
+}
+
+/// A figure of the sheet: a caption over a drawing, and the scales it is
+/// drawn at.
+#[derive(Clone)]
+struct Figure {
+    id: String,
+    caption: Vec<String>,
+    canvas: Canvas,
+    scales: Vec<(&'static str, f64)>,
+}
+
+impl Figure {
+    /// Width and height with the caption, mm.
+    fn size(&self) -> (f64, f64) {
+        let b = self.canvas.bounds();
+        let cw = self
+            .caption
+            .iter()
+            .map(|c| {
+                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
+            })
+            .fold(0.0, f64::max);
+        (
+            b.width().max(cw),
+            b.height() + CAPTION * self.caption.len() as f64 + 2.0,
+        )
+    }
+}
+
+/// What each figure draws at a scale (or at its only size).
+enum Source<'a> {
+    Positions(positions::Trajectories),
+    /// The velocity plans of these positions (from 1) at one μ_v.
+    Velocities(Vec<usize>),
+    /// The acceleration plan of a position.
+    Acceleration(usize),
+    /// Drawn once, at its own size (the diagrams, a table).
+    Fixed(&'a Figure),
+}
+
+/// The course sheet of `solved` (every position of the scene).
+pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
+    let size = size(opt);
+    let lang = opt.lang;
+    let w = words(lang);
+    let (vel_at, acc_at) = chosen(an, solved);
+    let has_plans = solved.first().is_some_and(|s| s.plans.is_some());
+    let has_acc = solved
+        .first()
+        .and_then(|s| s.plans.as_ref())
+        .is_some_and(|p| p.acceleration.is_some());
+    // The figures at their own size: the diagrams (when the crank turns
+    // fully) and the tables.
+    let mut fixed: Vec<Figure> = Vec::new();
+    if matches!(an.mech.scene.positions, PositionsSpec::Count { .. })
+        && let Ok(d) = crate::studies::diagrams::Diagrams::build(
+            an,
+            crate::studies::invariants::default_output(an),
+            12,
+            match size {
+                SheetSize::A1 => 180.0,
+                _ => 120.0,
+            },
+        )
+    {
+        fixed.push(Figure {
+            id: "diagrams".into(),
+            caption: vec![super::diagram::title(an, &d, lang)],
+            canvas: super::diagram::figure(an, &d, lang),
+            scales: Vec::new(),
+        });
+    }
+    if has_plans {
+        let t = results(an, solved, &vel_at, PlanKind::Velocity, lang);
+        fixed.push(Figure {
+            id: "table-velocity".into(),
+            caption: vec![format!("{}: {}", w.table, w.velocities.to_lowercase())],
+            canvas: t.draw(),
+            scales: Vec::new(),
+        });
+    }
+    if has_acc && !acc_at.is_empty() {
+        let t = results(an, solved, &acc_at, PlanKind::Acceleration, lang);
+        fixed.push(Figure {
+            id: "table-acceleration".into(),
+            caption: vec![format!("{}: {}", w.table, w.accelerations.to_lowercase())],
+            canvas: t.draw(),
+            scales: Vec::new(),
+        });
+    }
+    // The figures drawn at a scale, with their share of the field.
+    let mut sources: Vec<(Source, f64)> =
+        vec![(Source::Positions(positions::trajectories(an, solved)), 0.34)];
+    if has_plans {
+        sources.push((Source::Velocities(vel_at.clone()), 0.22));
+    }
+    if has_acc {
+        for &k in &acc_at {
+            sources.push((Source::Acceleration(k), 0.2 / acc_at.len() as f64));
+        }
+    }
+    for f in &fixed {
+        sources.push((Source::Fixed(f), 0.0));
+    }
+    let field = field_of(size);
+    let block = sheet::block(size);
+    let cx = Ctx {
+        an,
+        solved,
+        lang,
+        field,
+    };
+    let mut cache = HashMap::new();
+    // The figures at zooms `z` (one per figure; a figure's target area is
+    // its share of the field times z²), and where they go if they pack.
+    let mut attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
+        let mut figs: Vec<Figure> = Vec::new();
+        for (i, (src, share)) in sources.iter().enumerate() {
+            let area = *share * z[i] * z[i] * field.area();
+            figs.push(figure(&cx, src, area, &mut cache, i)?);
+        }
+        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
+        let at = pack(&rects, field, block)?;
+        Some(figs.into_iter().zip(at).collect())
+    };
+    // Grow the shares together while everything packs …
+    let n = sources.len();
+    let (mut lo, mut hi) = (0.2, 1.8);
+    let mut best = None;
+    for _ in 0..12 {
+        let z = 0.5 * (lo + hi);
+        match attempt(&vec![z; n]) {
+            Some(p) => {
+                best = Some(p);
+                lo = z;
+            }
+            None => hi = z,
+        }
+    }
+    // … then each figure by itself, the largest share first, one standard
+    // step (×1.25 and more) at a time, while the rest still packs.
+    let mut zs = vec![lo; n];
+    let mut order: Vec<usize> = (0..n).filter(|&i| sources[i].1 > 0.0).collect();
+    order.sort_by(|&a, &b| sources[b].1.total_cmp(&sources[a].1));
+    for &i in &order {
+        for _ in 0..6 {
+            let mut z = zs.clone();
+            z[i] *= 1.25;
+            match attempt(&z) {
+                Some(p) => {
+                    best = Some(p);
+                    zs = z;
+                }
+                None => break,
+            }
+        }
+    }
+    let placed = best.ok_or_else(|| {
+        crate::Error::Internal(format!(
+            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
+        ))
+    })?;
+    let mut page = Page::new(size);
+    for (f, at) in &placed {
+        let (fw, _) = f.size();
+        let b = f.canvas.bounds();
+        page.push(&format!("<g class=\"figure\" id=\"fig-{}\">\n", f.id));
+        let mut cap = Canvas::default();
+        for (i, t) in f.caption.iter().enumerate() {
+            cap.rich(
+                Point::new(fw / 2.0, -CAPTION * (i as f64 + 1.0) + 1.5),
+                t,
+                CAPTION_FONT,
+                "caption",
+                "middle",
+            );
+        }
+        page.write_canvas(&cap, at.x, at.y);
+        // The drawing under its caption, centred across the figure's width.
+        let top = at.y + CAPTION * f.caption.len() as f64 + 2.0;
+        let ox = at.x + (fw - b.width()) / 2.0 - b.x0;
+        page.write_canvas(&f.canvas, ox, top + b.y1);
+        page.push("</g>\n");
+    }
+    let title = w.course.to_string();
+    page.title_block(&super::title_block(an, opt, &title, (1, 1)));
+    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
+    Ok(Sheet {
+        name: "course".into(),
+        title,
+        size,
+        scales,
+        svg: page.finish(),
+    })
+}
+
+/// The field of the course sheet: inside the frame, with no heading band
+/// (the sheet's name is in the title block).
+fn field_of(size: SheetSize) -> Rect {
+    let f = sheet::frame(size);
+    f.inset(-sheet::PAD)
+}
+
+/// What the figures need to be drawn.
+struct Ctx<'a> {
+    an: &'a Analysis,
+    solved: &'a [Solved],
+    lang: Lang,
+    field: Rect,
+}
+
+/// Figure `i` from its source at target area `area` (mm²): drawn at the
+/// smallest standard scale at which it fits a box of that area in its own
+/// proportions; every drawing made is kept in `cache` by figure and scale.
+fn figure(
+    cx: &Ctx,
+    src: &Source,
+    area: f64,
+    cache: &mut HashMap<(usize, u64), Option<Figure>>,
+    i: usize,
+) -> Option<Figure> {
+    if let Source::Fixed(f) = src {
+        return Some((*f).clone());
+    }
+    let (aspect, lower_w, lower_h) = natural(cx, src)?;
+    let bw = (area * aspect).sqrt().min(cx.field.width());
+    let bh = (area / aspect).sqrt().min(cx.field.height());
+    let mut mu = standard_scale(lower_scale(lower_w, lower_h, (bw, bh)), 1.0);
+    // A box smaller than the figure's lettering allows: the smallest
+    // drawing there is (the packer then judges it).
+    let mut smallest: Option<(f64, Figure)> = None;
+    for _ in 0..16 {
+        let f = cache
+            .entry((i, mu.to_bits()))
+            .or_insert_with(|| draw(cx, src, mu))
+            .as_ref()?;
+        let (w, h) = f.size();
+        if w <= bw && h <= bh {
+            return Some(f.clone());
+        }
+        if smallest.as_ref().is_none_or(|(a, _)| w * h < *a) {
+            smallest = Some((w * h, f.clone()));
+        }
+        mu = standard_above(mu);
+    }
+    smallest.map(|(_, f)| f)
+}
+
+/// A source's proportions (w/h) and its real extent (w, h: m, m/s, m/s²;
+/// the extent of one cell for a grid of plans, times its columns and rows).
+fn natural(cx: &Ctx, src: &Source) -> Option<(f64, f64, f64)> {
+    match src {
+        Source::Fixed(_) => None,
+        Source::Positions(_) => {
+            let e = super::mechanism_extent(cx.an, cx.solved);
+            let aspect = (e.width() / e.height().max(1e-12)).clamp(0.5, 3.0);
+            Some((aspect, e.width(), e.height()))
+        }
+        Source::Velocities(at) => {
+            let (cols, rows) = grid(at.len());
+            let (mut ew, mut eh) = (0.0f64, 0.0f64);
+            for &k in at {
+                let p = &cx.solved.get(k - 1)?.plans.as_ref()?.velocity;
+                let e = extent(p);
+                ew = ew.max(e.width() * p.mu);
+                eh = eh.max(e.height() * p.mu);
+            }
+            let (w, h) = (ew * cols as f64, eh * rows as f64);
+            Some(((w / h.max(1e-12)).clamp(0.5, 3.0), w, h))
+        }
+        Source::Acceleration(k) => {
+            let p = cx
+                .solved
+                .get(k - 1)?
+                .plans
+                .as_ref()?
+                .acceleration
+                .as_ref()?;
+            let e = extent(p);
+            let aspect = (e.width() / e.height().max(1e-9)).clamp(0.4, 2.5);
+            Some((aspect, e.width() * p.mu, e.height() * p.mu))
+        }
+    }
+}
+
+/// Columns and rows of a grid of `n` plans, wider than high.
+fn grid(n: usize) -> (usize, usize) {
+    let n = n.max(1);
+    let cols = ((n as f64 * 1.6).sqrt().ceil() as usize).clamp(1, n);
+    (cols, n.div_ceil(cols))
+}
+
+/// A source drawn at scale `mu`.
+fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
+    let (an, solved, lang) = (cx.an, cx.solved, cx.lang);
+    let w = words(lang);
+    match src {
+        Source::Fixed(f) => Some((*f).clone()),
+        Source::Positions(t) => {
+            let mut c = Canvas::default();
+            positions::draw(an, solved, t, &mut c, mu);
+            Some(Figure {
+                id: "positions".into(),
+                caption: vec![format!(
+                    "{}, {}",
+                    w.positions,
+                    scale_text("l", mu, "m", lang)
+                )],
+                canvas: c,
+                scales: vec![("mu_l", mu)],
+            })
+        }
+        Source::Velocities(at) => {
+            let (cols, _) = grid(at.len());
+            let cs: Vec<Canvas> = at
+                .iter()
+                .map(|&k| {
+                    let s = solved.get(k - 1)?;
+                    let p = an
+                        .plans_at_scales(s, Order::Velocity, Some(mu), None)
+                        .ok()?;
+                    let mut c = Canvas::default();
+                    super::plan::draw(&p.velocity, &mut c, &an.points);
+                    Some(c)
+                })
+                .collect::<Option<_>>()?;
+            // Columns as wide as their widest plan, rows as high as their
+            // highest; each plan centred in its cell under its number.
+            let rows = cs.len().div_ceil(cols);
+            let mut cw = vec![0.0f64; cols];
+            let mut ch = vec![0.0f64; rows];
+            for (j, c) in cs.iter().enumerate() {
+                let b = c.bounds();
+                cw[j % cols] = cw[j % cols].max(b.width() + GAP);
+                ch[j / cols] = ch[j / cols].max(b.height() + CAPTION + GAP);
+            }
+            let xs: Vec<f64> = (0..cols).map(|i| cw[..i].iter().sum()).collect();
+            let ys: Vec<f64> = (0..rows).map(|i| -ch[..i].iter().sum::<f64>()).collect();
+            let mut g = Canvas::default();
+            for (j, (c, &k)) in cs.iter().zip(at).enumerate() {
+                let (col, row) = (j % cols, j / cols);
+                let (x0, y0, w_, h_) = (xs[col], ys[row], cw[col], ch[row]);
+                let b = c.bounds();
+                let ox = x0 + (w_ - b.width()) / 2.0 - b.x0;
+                let oy = y0 - CAPTION - (h_ - CAPTION - b.height()) / 2.0 - b.y1;
+                g.append(c, ox, oy);
+                g.rich(
+                    Point::new(x0 + w_ / 2.0, y0 - CAPTION + 1.5),
+                    &format!("{} {k}", w.position),
+                    SMALL,
+                    "caption",
+                    "middle",
+                );
+            }
+            Some(Figure {
+                id: "velocity".into(),
+                caption: vec![format!(
+                    "{}, {}",
+                    plural_velocities(lang),
+                    scale_text("v", mu, "m/s", lang)
+                )],
+                canvas: g,
+                scales: vec![("mu_v", mu)],
+            })
+        }
+        Source::Acceleration(k) => {
+            let s = solved.get(k - 1)?;
+            let p = an
+                .plans_at_scales(s, Order::Acceleration, None, Some(mu))
+                .ok()?;
+            let mut c = Canvas::default();
+            super::plan::draw(p.acceleration.as_ref()?, &mut c, &an.points);
+            Some(Figure {
+                id: format!("acceleration-{k}"),
+                caption: vec![
+                    format!("{}, {} {k}", w.accelerations, w.position),
+                    scale_text("a", mu, "m/s²", lang),
+                ],
+                canvas: c,
+                scales: vec![("mu_a", mu)],
+            })
+        }
+    }
+}
+
+/// "Plans of velocities", localised.
+fn plural_velocities(l: Lang) -> &'static str {
+    match l {
+        Lang::En => "Plans of velocities",
+        Lang::Uk => "Плани швидкостей",
+        Lang::Ru => "Планы скоростей",
+    }
+}
+
+/// A plan's extent in its own mm, the pole included.
+fn extent(p: &Plan) -> Rect {
+    p.points.iter().fold(Rect::ZERO, |r, q| {
+        let a = q.at.to_point();
+        r.union(Rect::from_points(a, a))
+    })
+}
+
+/// The table of the results of the positions `at` (from 1): a row per
+/// quantity the plans give (its unit in the first column), a column per
+/// position.
+fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang: Lang) -> Ruled {
+    let plan_of = |k: usize| -> Option<&Plan> {
+        let p = solved.get(k - 1)?.plans.as_ref()?;
+        match kind {
+            PlanKind::Velocity => Some(&p.velocity),
+            PlanKind::Acceleration => p.acceleration.as_ref(),
+        }
+    };
+    let _ = an;
+    // Every quantity of any of the positions, in the order first met.
+    let mut names: Vec<(String, &'static str, bool)> = Vec::new();
+    let mut values: Vec<HashMap<String, f64>> = Vec::new();
+    for &k in at {
+        let mut m = HashMap::new();
+        if let Some(p) = plan_of(k) {
+            for r in table::plan_rows(p) {
+                if !names.iter().any(|n| n.0 == r.quantity) {
+                    names.push((r.quantity.clone(), r.unit, r.rate));
+                }
+                m.insert(r.quantity, r.value);
+            }
+        }
+        values.push(m);
+    }
+    let head_q = match lang {
+        Lang::En => "quantity, unit",
+        Lang::Uk => "величина, од.",
+        Lang::Ru => "величина, ед.",
+    };
+    let mut head = vec![head_q.to_string()];
+    head.extend(at.iter().map(|k| k.to_string()));
+    let rows = names
+        .iter()
+        .map(|(q, u, rate)| {
+            let mut r = vec![format!("{q}, {}", unit(u, lang))];
+            for m in &values {
+                r.push(match m.get(q) {
+                    Some(v) if *rate => {
+                        format!("{}{}", number(round3(v.abs()), lang), table::sense(*v))
+                    }
+                    Some(v) => number(round3(*v), lang),
+                    None => "—".into(),
+                });
+            }
+            r
+        })
+        .collect();
+    Ruled { head, rows }
+}
+
+/// Three significant digits, as a table of a course project gives them.
+fn round3(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let p = 10f64.powi(2 - x.abs().log10().floor() as i32);
+    (x * p).round() / p
+}
+
+/// Place rectangles `sizes` (w × h, mm) in `field` (page coordinates,
+/// y down) clear of `block`, largest first, each where its bottom stays
+/// highest and then leftmost (a skyline packer): their top left corners,
+/// or `None` when one does not fit.
+pub fn pack(sizes: &[(f64, f64)], field: Rect, block: Rect) -> Option<Vec<Point>> {
+    // Largest first, by area, by height, by width: the first order that
+    // packs.
+    // Of those that pack, the one whose figures end highest: it leaves the
+    // most room to grow.
+    let keys: [fn((f64, f64)) -> f64; 3] = [|(w, h)| w * h, |(_, h)| h, |(w, _)| w];
+    keys.iter()
+        .filter_map(|key| {
+            let mut order: Vec<usize> = (0..sizes.len()).collect();
+            order.sort_by(|&a, &b| key(sizes[b]).total_cmp(&key(sizes[a])));
+            let at = pack_in_order(sizes, &order, field, block)?;
+            let bottom = at
+                .iter()
+                .zip(sizes)
+                .map(|(p, (_, h))| p.y + h)
+                .fold(f64::MIN, f64::max);
+            Some((bottom, at))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, at)| at)
+}
+
+/// [`pack`] in one order.
+fn pack_in_order(
+    sizes: &[(f64, f64)],
+    order: &[usize],
+    field: Rect,
+    block: Rect,
+) -> Option<Vec<Point>> {
+    // The skyline: x-intervals with the depth filled so far.
+    let mut sky: Vec<(f64, f64, f64)> = vec![(field.x0, field.x1, field.y0)];
+    let mut placed: Vec<Rect> = Vec::new();
+    let mut out = vec![Point::ZERO; sizes.len()];
+    let block = block.inset(GAP / 2.0);
+    for &i in order {
+        let (w, h) = (sizes[i].0 + GAP, sizes[i].1 + GAP);
+        let mut xs: Vec<f64> = sky.iter().map(|s| s.0).collect();
+        xs.extend(sky.iter().map(|s| s.1 - w));
+        xs.push(field.x1 - w);
+        xs.push(block.x0 - w);
+        let mut best: Option<(f64, f64, f64)> = None;
+        for x in xs {
+            if x < field.x0 - 1e-9 || x + w > field.x1 + 1e-9 {
+                continue;
+            }
+            let y = sky
+                .iter()
+                .filter(|s| s.1 > x + 1e-9 && s.0 < x + w - 1e-9)
+                .map(|s| s.2)
+                .fold(field.y0, f64::max);
+            let r = Rect::new(x, y, x + w, y + h);
+            if r.y1 > field.y1 + 1e-9 || r.intersect(block).area() > 0.0 {
+                continue;
+            }
+            if placed.iter().any(|p| p.intersect(r).area() > 1e-9) {
+                continue;
+            }
+            if best.is_none_or(|(bx, by, _)| (y + h, x) < (by, bx)) {
+                best = Some((x, y + h, y));
+            }
+        }
+        let (x, _, y) = best?;
+        let r = Rect::new(x, y, x + w, y + h);
+        placed.push(r);
+        out[i] = Point::new(x + GAP / 2.0, y + GAP / 2.0);
+        // Raise the skyline under the new rectangle.
+        let mut next = Vec::new();
+        for &(a, b, d) in &sky {
+            if b <= r.x0 || a >= r.x1 {
+                next.push((a, b, d));
+                continue;
+            }
+            if a < r.x0 {
+                next.push((a, r.x0, d));
+            }
+            if b > r.x1 {
+                next.push((r.x1, b, d));
+            }
+        }
+        next.push((r.x0, r.x1, r.y1));
+        next.sort_by(|p, q| p.0.total_cmp(&q.0));
+        sky = next;
+    }
+    Some(out)
+}

@@ -1,0 +1,421 @@
+//! A sheet of paper: the format (ГОСТ 2.301, landscape), the frame
+//! (ГОСТ 2.104: 20 mm on the left for binding, 5 mm elsewhere), the
+//! heading, the main title block (ГОСТ 2.104 form 1, 185 × 55 mm in the
+//! bottom right corner) and the fields where figures go. Page coordinates
+//! are millimetres from the top left corner, y down; a [`Canvas`] (y up)
+//! is placed by the page position of its origin.
+
+use super::SheetSize;
+use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, xml};
+use crate::kinematics::construction::text::Lang;
+use crate::model::scene::SheetInfo;
+use kurbo::{Point, Rect};
+use std::fmt::Write as _;
+
+/// The frame's margins, mm: the binding edge and the others.
+pub const LEFT: f64 = 20.0;
+pub const MARGIN: f64 = 5.0;
+/// The main title block, form 1 (ГОСТ 2.104), mm.
+pub const BLOCK_W: f64 = 185.0;
+pub const BLOCK_H: f64 = 55.0;
+/// The band under the frame's top edge that holds a sheet's heading and
+/// scale, mm.
+pub const HEADING: f64 = 16.0;
+/// The clearance between the frame (or a neighbour) and a figure, mm.
+pub const PAD: f64 = 6.0;
+
+/// The frame's line: the main line S of ГОСТ 2.303.
+const FRAME: f64 = 0.7;
+
+/// A page being composed.
+pub struct Page {
+    pub size: SheetSize,
+    body: String,
+}
+
+impl Page {
+    pub fn new(size: SheetSize) -> Page {
+        let (w, h) = size.mm();
+        let mut body = String::new();
+        let _ = writeln!(
+            body,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, sans-serif">"#
+        );
+        let _ = writeln!(body, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+        let f = frame(size);
+        let _ = writeln!(
+            body,
+            r#"<rect class="frame" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="black" stroke-width="{FRAME}"/>"#,
+            fmt(f.x0),
+            fmt(f.y0),
+            fmt(f.width()),
+            fmt(f.height())
+        );
+        Page { size, body }
+    }
+
+    /// Raw SVG into the page.
+    pub fn push(&mut self, svg: &str) {
+        self.body.push_str(svg);
+    }
+
+    /// Draw canvas `c` with its box `b` (drawing coordinates; the canvas'
+    /// own bounds if `None`) centred in the page rectangle `into`.
+    pub fn place(&mut self, c: &Canvas, into: Rect, b: Option<Rect>) {
+        let b = b.unwrap_or_else(|| c.bounds());
+        let ox = into.center().x - b.center().x;
+        // Page y = oy − drawing y: the box's centre goes to the rect's.
+        let oy = into.center().y + b.center().y;
+        c.write(&mut self.body, ox, oy);
+    }
+
+    /// Draw canvas `c` with its origin at page point (`ox`, `oy`).
+    pub fn write_canvas(&mut self, c: &Canvas, ox: f64, oy: f64) {
+        c.write(&mut self.body, ox, oy);
+    }
+
+    /// Draw canvas `c` with the top left corner of its bounds at `at`.
+    pub fn place_at(&mut self, c: &Canvas, at: Point) {
+        let b = c.bounds();
+        c.write(&mut self.body, at.x - b.x0, at.y + b.y1);
+    }
+
+    /// The heading in the band under the frame's top: the title, wrapped
+    /// to the band's width, and the scale line under it.
+    pub fn heading(&mut self, title: &str, scale: Option<&str>) {
+        let f = frame(self.size);
+        let mut c = Canvas::default();
+        let width = f.width() - 2.0 * PAD;
+        // One line if it fits at 5 mm, else a smaller font.
+        let size = [5.0, FONT, SMALL]
+            .into_iter()
+            .find(|&s| {
+                super::canvas::runs_width(&crate::presentation::notation::runs(title), s) <= width
+            })
+            .unwrap_or(SMALL);
+        c.rich(Point::new(0.0, 0.0), title, size, "heading", "start");
+        if let Some(s) = scale {
+            c.rich(Point::new(0.0, -7.0), s, FONT, "scale", "start");
+        }
+        c.write(&mut self.body, f.x0 + PAD, f.y0 + 9.0);
+    }
+
+    /// The main title block, form 1, in the frame's bottom right corner.
+    pub fn title_block(&mut self, t: &TitleBlock) {
+        let f = frame(self.size);
+        let (x1, y1) = (f.x1, f.y1);
+        // Form 1 is given from the block's bottom right corner: `x` to the
+        // left, `y` up.
+        let p = |x: f64, y: f64| (fmt(x1 - x), fmt(y1 - y));
+        let mut s = String::new();
+        let mut line = |x0: f64, y0: f64, x1_: f64, y1_: f64, w: f64| {
+            let (a, b) = p(x0, y0);
+            let (c, d) = p(x1_, y1_);
+            let _ = writeln!(
+                s,
+                r#"<line class="title-block" x1="{a}" y1="{b}" x2="{c}" y2="{d}" stroke="black" stroke-width="{}"/>"#,
+                fmt(w)
+            );
+        };
+        let main = FRAME;
+        // Main lines.
+        line(BLOCK_W, 55.0, 0.0, 55.0, main);
+        line(BLOCK_W, 55.0, BLOCK_W, 0.0, main);
+        line(120.0, 40.0, 0.0, 40.0, main);
+        line(BLOCK_W, 35.0, 120.0, 35.0, main);
+        line(50.0, 35.0, 0.0, 35.0, main);
+        line(BLOCK_W, 30.0, 120.0, 30.0, main);
+        line(50.0, 20.0, 0.0, 20.0, main);
+        line(120.0, 15.0, 0.0, 15.0, main);
+        line(178.0, 55.0, 178.0, 30.0, main);
+        for x in [168.0, 145.0, 130.0, 120.0] {
+            line(x, 55.0, x, 0.0, main);
+        }
+        line(50.0, 40.0, 50.0, 0.0, main);
+        line(35.0, 40.0, 35.0, 20.0, main);
+        line(18.0, 40.0, 18.0, 20.0, main);
+        line(30.0, 20.0, 30.0, 15.0, main);
+        // Thin lines: the rows of the left part, the cells of the letter.
+        for y in [50.0, 45.0, 40.0, 25.0, 20.0, 15.0, 10.0, 5.0] {
+            line(BLOCK_W, y, 120.0, y, THIN);
+        }
+        line(45.0, 35.0, 45.0, 20.0, THIN);
+        line(40.0, 35.0, 40.0, 20.0, THIN);
+        let w = words(t.lang);
+        let mut text = |x: f64, y: f64, size: f64, anchor: &str, what: &str, class: &str| {
+            if what.is_empty() {
+                return;
+            }
+            let (a, b) = p(x, y);
+            let anchor = if anchor == "start" {
+                String::new()
+            } else {
+                format!(r#" text-anchor="{anchor}""#)
+            };
+            let _ = writeln!(
+                s,
+                r#"<text class="{class}" x="{a}" y="{b}" font-size="{}"{anchor}>{}</text>"#,
+                fmt(size),
+                xml(what)
+            );
+        };
+        // Headings of the columns (baselines 1.5 mm above a 5 mm row's
+        // bottom, centred in their cells).
+        let heads = [
+            (181.5, w.change),
+            (173.0, w.sheet),
+            (156.5, w.document),
+            (137.5, w.signature),
+            (125.0, w.date),
+        ];
+        for (x, h) in heads {
+            text(x, 31.3, 2.0, "middle", h, "title-block");
+        }
+        let roles = [
+            (26.3, w.author, t.author.as_deref()),
+            (21.3, w.checker, t.checker.as_deref()),
+            (16.3, w.technical, None),
+            (6.3, w.norm, None),
+            (1.3, w.approved, None),
+        ];
+        for (y, role, who) in roles {
+            text(184.0, y, 2.0, "start", role, "title-block");
+            if let Some(n) = who {
+                text(167.0, y, 2.5, "start", &fit(n, 18), "title-block-field");
+            }
+        }
+        text(42.5, 36.3, 2.0, "middle", w.letter, "title-block");
+        text(26.5, 36.3, 2.0, "middle", w.mass, "title-block");
+        text(9.0, 36.3, 2.0, "middle", w.scale, "title-block");
+        text(
+            49.0,
+            16.3,
+            2.0,
+            "start",
+            &format!("{} {}", w.sheet, t.sheet.0),
+            "title-block",
+        );
+        text(
+            29.0,
+            16.3,
+            2.0,
+            "start",
+            &format!("{} {}", w.sheets, t.sheet.1),
+            "title-block",
+        );
+        // The fields.
+        text(
+            60.0,
+            45.5,
+            5.0,
+            "middle",
+            &fit(&t.designation, 30),
+            "designation",
+        );
+        let title = wrap(&t.title, 24, 3);
+        for (i, l) in title.iter().enumerate() {
+            let n = title.len() as f64;
+            let y = 27.5 + 2.6 * (n - 1.0) - 5.2 * i as f64;
+            text(85.0, y, 3.5, "middle", l, "drawing-title");
+        }
+        text(
+            9.0,
+            26.3,
+            3.5,
+            "middle",
+            &fit(&t.scale, 8),
+            "title-block-field",
+        );
+        for (i, l) in wrap(&t.organisation, 22, 2).iter().enumerate() {
+            text(
+                25.0,
+                9.0 - 4.5 * i as f64,
+                3.5,
+                "middle",
+                l,
+                "title-block-field",
+            );
+        }
+        // Under the frame: the format, as ГОСТ 2.104 writes it there.
+        text(
+            40.0,
+            -3.8,
+            2.5,
+            "start",
+            &format!("{} {:?}", w.format, self.size),
+            "title-block",
+        );
+        self.body.push_str(&s);
+    }
+
+    pub fn finish(mut self) -> String {
+        self.body.push_str("</svg>\n");
+        self.body
+    }
+}
+
+/// The frame's rectangle on the page.
+pub fn frame(size: SheetSize) -> Rect {
+    let (w, h) = size.mm();
+    Rect::new(LEFT, MARGIN, w - MARGIN, h - MARGIN)
+}
+
+/// The main title block's rectangle on the page.
+pub fn block(size: SheetSize) -> Rect {
+    let f = frame(size);
+    Rect::new(f.x1 - BLOCK_W, f.y1 - BLOCK_H, f.x1, f.y1)
+}
+
+/// The field of a sheet with one figure: inside the frame, below the
+/// heading, less `right` mm on the right (a table) and, with a title
+/// block, the larger of the rectangles above it and beside it.
+pub fn field(size: SheetSize, title_block: bool, right: f64) -> Rect {
+    let f = frame(size);
+    let r = Rect::new(f.x0 + PAD, f.y0 + HEADING, f.x1 - PAD - right, f.y1 - PAD);
+    if !title_block {
+        return r;
+    }
+    let b = block(size);
+    let above = Rect::new(r.x0, r.y0, r.x1, r.y1.min(b.y0 - PAD));
+    let beside = Rect::new(r.x0, r.y0, r.x1.min(b.x0 - PAD), r.y1);
+    if above.area() >= beside.area() {
+        above
+    } else {
+        beside
+    }
+}
+
+/// What the title block says, ready to write.
+pub struct TitleBlock {
+    pub lang: Lang,
+    pub designation: String,
+    pub title: String,
+    pub author: Option<String>,
+    pub checker: Option<String>,
+    pub organisation: String,
+    pub scale: String,
+    /// This sheet's number and the number of sheets.
+    pub sheet: (usize, usize),
+}
+
+impl TitleBlock {
+    /// From the scene's `sheet` object; the drawing's name where it gives
+    /// none.
+    pub fn new(info: &SheetInfo, name: &str, lang: Lang, sheet: (usize, usize)) -> TitleBlock {
+        TitleBlock {
+            lang,
+            designation: info.designation.clone().unwrap_or_default(),
+            title: info.title.clone().unwrap_or_else(|| name.to_string()),
+            author: info.author.clone(),
+            checker: info.checker.clone(),
+            organisation: info.organisation.clone().unwrap_or_default(),
+            scale: info.scale.clone().unwrap_or_else(|| "—".into()),
+            sheet,
+        }
+    }
+}
+
+/// At most `n` characters, an ellipsis marking a cut.
+fn fit(s: &str, n: usize) -> String {
+    if s.chars().count() <= n {
+        s.to_string()
+    } else {
+        s.chars().take(n - 1).collect::<String>() + "…"
+    }
+}
+
+/// Words wrapped to lines of at most `width` characters, at most `lines`
+/// lines (the last cut with an ellipsis).
+fn wrap(s: &str, width: usize, lines: usize) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for w in s.split_whitespace() {
+        match out.last_mut() {
+            Some(l) if l.chars().count() + 1 + w.chars().count() <= width => {
+                l.push(' ');
+                l.push_str(w);
+            }
+            _ => out.push(w.to_string()),
+        }
+    }
+    if out.len() > lines {
+        let rest = out[lines - 1..].join(" ");
+        out.truncate(lines - 1);
+        out.push(fit(&rest, width));
+    }
+    out.into_iter().map(|l| fit(&l, width)).collect()
+}
+
+/// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian).
+struct Words {
+    change: &'static str,
+    sheet: &'static str,
+    sheets: &'static str,
+    document: &'static str,
+    signature: &'static str,
+    date: &'static str,
+    author: &'static str,
+    checker: &'static str,
+    technical: &'static str,
+    norm: &'static str,
+    approved: &'static str,
+    letter: &'static str,
+    mass: &'static str,
+    scale: &'static str,
+    format: &'static str,
+}
+
+fn words(l: Lang) -> Words {
+    match l {
+        Lang::Ru => Words {
+            change: "Изм.",
+            sheet: "Лист",
+            sheets: "Листов",
+            document: "№ докум.",
+            signature: "Подп.",
+            date: "Дата",
+            author: "Разраб.",
+            checker: "Пров.",
+            technical: "Т.контр.",
+            norm: "Н.контр.",
+            approved: "Утв.",
+            letter: "Лит.",
+            mass: "Масса",
+            scale: "Масштаб",
+            format: "Формат",
+        },
+        Lang::Uk => Words {
+            change: "Зм.",
+            sheet: "Арк.",
+            sheets: "Аркушів",
+            document: "№ докум.",
+            signature: "Підп.",
+            date: "Дата",
+            author: "Розроб.",
+            checker: "Перев.",
+            technical: "Т.контр.",
+            norm: "Н.контр.",
+            approved: "Затв.",
+            letter: "Літ.",
+            mass: "Маса",
+            scale: "Масштаб",
+            format: "Формат",
+        },
+        Lang::En => Words {
+            change: "Rev.",
+            sheet: "Sheet",
+            sheets: "Sheets",
+            document: "Doc. No.",
+            signature: "Sign.",
+            date: "Date",
+            author: "Drawn",
+            checker: "Checked",
+            technical: "Tech.",
+            norm: "Std. ctrl.",
+            approved: "Approved",
+            letter: "Letter",
+            mass: "Mass",
+            scale: "Scale",
+            format: "Format",
+        },
+    }
+}
