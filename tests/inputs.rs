@@ -760,3 +760,167 @@ fn mobility_other_than_the_number_of_inputs() {
     g["input"] = json!([]);
     reject("no_inputs", &g, &["/input", "empty list"]);
 }
+
+// ---- the course sheet and the handout -----------------------------------
+
+/// The rendered box of every figure of a course sheet (mm, page
+/// coordinates), by its id.
+fn course_figures(svg: &str) -> Vec<(String, kurbo::Rect)> {
+    fn walk(g: &usvg::Group, out: &mut Vec<(String, kurbo::Rect)>) {
+        let k = 25.4 / 96.0;
+        for n in g.children() {
+            if let usvg::Node::Group(g) = n {
+                if g.id().starts_with("fig-") {
+                    let b = n.abs_stroke_bounding_box();
+                    out.push((
+                        g.id().to_string(),
+                        kurbo::Rect::new(
+                            b.left() as f64 * k,
+                            b.top() as f64 * k,
+                            b.right() as f64 * k,
+                            b.bottom() as f64 * k,
+                        ),
+                    ));
+                } else {
+                    walk(g, out);
+                }
+            }
+        }
+    }
+    let t = mechplan::drawing::tree(svg).unwrap();
+    let mut out = Vec::new();
+    walk(t.root(), &mut out);
+    out
+}
+
+/// `mechplan draw SCENE --course`: the course sheet of the boom (one
+/// input, a cylinder on a moving guide) has its positions, velocity plans,
+/// acceleration plans, the diagrams of the boom over the cylinder's
+/// stroke and both tables; the two-input scenes' sheets have the same
+/// without the diagrams (they need one input). Every figure lies inside
+/// the frame, off the title block, apart from the others.
+#[test]
+fn the_course_sheet_of_every_new_fixture() {
+    for name in NEW {
+        let dir =
+            std::env::temp_dir().join(format!("mechplan-course-{name}-{}", std::process::id()));
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args([
+                "draw",
+                &format!("{}/fixtures/{name}.json", env!("CARGO_MANIFEST_DIR")),
+            ])
+            .arg("--course")
+            .arg("-o")
+            .arg(&dir)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert_eq!(o.status.code(), Some(0), "{name}: {stderr}");
+        let svg = std::fs::read_to_string(dir.join("course.svg")).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        let figs = course_figures(&svg);
+        let ids: Vec<&str> = figs.iter().map(|f| f.0.as_str()).collect();
+        let mut want = vec![
+            "fig-positions",
+            "fig-velocity",
+            "fig-acceleration-1",
+            "fig-table-velocity",
+            "fig-table-acceleration",
+        ];
+        if *name == "boom_cylinder" {
+            want.push("fig-diagrams");
+            assert!(
+                svg.contains("Kinematic diagrams of link 1"),
+                "{name}: the boom's diagrams"
+            );
+        } else {
+            assert!(
+                !ids.contains(&"fig-diagrams"),
+                "{name}: diagrams of several inputs"
+            );
+        }
+        for w in want {
+            assert!(ids.contains(&w), "{name}: no {w} in {ids:?}");
+        }
+        let (w, h) = mechplan::drawing::SheetSize::A1.mm();
+        let frame = kurbo::Rect::new(20.0, 5.0, w - 5.0, h - 5.0);
+        let block = kurbo::Rect::new(frame.x1 - 185.0, frame.y1 - 55.0, frame.x1, frame.y1);
+        for (i, (a, ra)) in figs.iter().enumerate() {
+            assert!(
+                frame.inset(-1.0).contains(ra.origin())
+                    && frame.inset(-1.0).contains(Point::new(ra.x1, ra.y1)),
+                "{name}: {a} {ra:?} leaves the frame"
+            );
+            assert!(
+                ra.intersect(block).area() == 0.0,
+                "{name}: {a} on the title block"
+            );
+            for (b, rb) in &figs[i + 1..] {
+                assert!(
+                    ra.intersect(*rb).area() == 0.0,
+                    "{name}: {a} and {b} overlap"
+                );
+            }
+        }
+    }
+}
+
+/// The boom's acceleration plan in a table names what the cylinder lays
+/// off: the given relative acceleration a^r_B3B2 (not a tangential part),
+/// and the points K of the cylinder and P of the rod from their links'
+/// rates: a^n_KC, a^t_KC, a^n_PB, a^t_PB.
+#[test]
+fn the_boom_plan_table_names_the_cylinder() {
+    let (_, solved) = solve(scene_with(fixture("boom_cylinder"), json!({ "s": [0.1] })));
+    let plan = solved[0]
+        .plans
+        .as_ref()
+        .unwrap()
+        .acceleration
+        .clone()
+        .unwrap();
+    let rows = mechplan::drawing::table::plan_rows(&plan);
+    let names: Vec<&str> = rows.iter().map(|r| r.quantity.as_str()).collect();
+    for want in [
+        "a^k_B3B2", "a^r_B3B2", "a^n_KC", "a^t_KC", "a^n_PB", "a^t_PB",
+    ] {
+        assert!(names.contains(&want), "no {want} in {names:?}");
+    }
+    let r = rows.iter().find(|r| r.quantity == "a^r_B3B2").unwrap();
+    assert!((r.value - 0.05).abs() < 1e-12, "a^r is the rod's given a");
+    assert!(
+        !names
+            .iter()
+            .any(|n| n.starts_with("a^t_R") || n.contains('′')),
+        "{names:?}"
+    );
+}
+
+/// The handout of the boom: one page, the cylinder's steps in it.
+#[test]
+fn the_boom_handout() {
+    let dir = std::env::temp_dir().join(format!("mechplan-handout-boom-{}", std::process::id()));
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args([
+            "draw",
+            &format!("{}/fixtures/boom_cylinder.json", env!("CARGO_MANIFEST_DIR")),
+        ])
+        .arg("--html")
+        .arg("-o")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let html = std::fs::read_to_string(dir.join("handout.html")).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(html.contains("I(2,3)"), "the cylinder as the input pair");
+    assert!(
+        html.contains("the guide of link 2"),
+        "the relative velocity along the cylinder"
+    );
+}

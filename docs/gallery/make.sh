@@ -46,6 +46,41 @@ cp "$tmp/diagrams/diagrams.png" "$out/diagrams_offset_slider_crank.png"
   echo "![001 Fig. 2 a](frenet_fig2a.png)"
   echo
 } >> "$index.tmp"
+# The boom's course sheet (A1) and its step-by-step handout: the handout's
+# page itself, and two of its steps as pictures (a headless Chromium, when
+# there is one).
+./target/release/mechplan draw fixtures/boom_cylinder.json --course -o "$tmp/boom" --format png --dpi 100 > /dev/null
+cp "$tmp/boom/course.png" "$out/course-boom_cylinder.png"
+./target/release/mechplan draw fixtures/boom_cylinder.json --html -o "$out/boom_cylinder" > /dev/null
+browser=$(command -v chromium || command -v chromium-browser || command -v google-chrome || true)
+if [ -n "$browser" ]; then
+  for shot in "velocity pos=6&step=4" "acceleration pos=6&step=21"; do
+    set -- $shot
+    "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1400,1000 \
+      --screenshot="$out/handout-boom_cylinder-$1.png" \
+      "file://$PWD/$out/boom_cylinder/handout.html#$2" > /dev/null 2>&1
+  done
+fi
+{
+  echo "## A boom lifted by a hydraulic cylinder: course sheet and handout"
+  echo
+  echo "The course sheet of \`fixtures/boom_cylinder.json\` (\`mechplan draw --course\`)"
+  echo "and its step-by-step handout ([boom_cylinder/handout.html](boom_cylinder/handout.html),"
+  echo "\`mechplan draw --html\`): the relative velocity of the rod laid off along the"
+  echo "cylinder, then the Coriolis and relative accelerations."
+  echo
+  echo "![course sheet of the boom](course-boom_cylinder.png)"
+  if [ -f "$out/handout-boom_cylinder-velocity.png" ]; then
+    echo "![handout of the boom, velocities](handout-boom_cylinder-velocity.png)"
+    echo "![handout of the boom, accelerations](handout-boom_cylinder-acceleration.png)"
+  fi
+  echo
+} >> "$index.tmp"
+# The fill table tests/sheet_fill.rs writes (UPDATE_GOLDEN=1) stays.
+if grep -q '^## How much of its field' "$index"; then
+  echo >> "$index.tmp"
+  sed -n '/^## How much of its field/,$p' "$index" >> "$index.tmp"
+fi
 mv "$index.tmp" "$index"
 rm -rf "$tmp"
 echo "gallery written to $out"

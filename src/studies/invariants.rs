@@ -491,14 +491,31 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     Ok(list)
 }
 
-/// The default output: the last link of the last group.
+/// The default output: the last link of the last group, passing over a
+/// hydraulic cylinder's barrel and rod (a driving slider on a moving
+/// guide: they are the input, the link they move is the output).
 pub fn default_output(an: &Analysis) -> usize {
-    an.structure
+    let m = &an.mech;
+    let cylinder = |l: usize| {
+        m.scene.inputs().any(|i| match *i {
+            InputSpec::Slider { pair, .. } => {
+                let pr = &m.prismatics[pair];
+                pr.guide != m.frame() && (pr.guide == l || pr.slider == l)
+            }
+            InputSpec::Crank { .. } => false,
+        })
+    };
+    let links = an
+        .structure
         .groups
         .last()
         .map(|g| g.links())
-        .unwrap_or_default()
-        .last()
+        .unwrap_or_default();
+    links
+        .iter()
+        .rev()
         .copied()
-        .unwrap_or(an.mech.scene.input.link())
+        .find(|&l| !cylinder(l))
+        .or(links.last().copied())
+        .unwrap_or(m.scene.input.link())
 }

@@ -125,9 +125,11 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
         .and_then(|s| s.plans.as_ref())
         .is_some_and(|p| p.acceleration.is_some());
     // The figures at their own size: the diagrams (when the crank turns
-    // fully) and the tables.
+    // fully, or over the stroke of a hydraulic cylinder, the one input)
+    // and the tables.
     let mut fixed: Vec<Figure> = Vec::new();
-    if matches!(an.mech.scene.positions, PositionsSpec::Count { .. })
+    let cylinder = !an.mech.scene.several_inputs() && !super::cylinder::pairs(an).is_empty();
+    if (matches!(an.mech.scene.positions, PositionsSpec::Count { .. }) || cylinder)
         && let Ok(d) = crate::studies::diagrams::Diagrams::build(
             an,
             crate::studies::invariants::default_output(an),

@@ -272,18 +272,50 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
 }
 
 /// The symbol of a vector laid off from `from` to `to`: its own ("a^n_BA"
-/// of "a^n_BA = ω1²·l_AB", "v_B" of a driving slider's), or for a bare
+/// of "a^n_BA = ω1²·l_AB", "v_B" of a driving slider's, "a^r_B3B2" of a
+/// cylinder's given relative acceleration), or for a bare
 /// product ("ω1·l_O1A") the velocity of the point it reaches, the
 /// tangential acceleration on the acceleration plan.
 fn laid_off(plan: &Plan, what: &str, from: usize, to: usize) -> String {
-    if what.contains(" = ") || what.starts_with("v_") || what.starts_with("a_") {
+    // A symbol of its own: a component with its product, a driving
+    // slider's v_B, a cylinder's given slide v_B3B2 and a^r_B3B2.
+    if what.contains(" = ")
+        || what.starts_with("v_")
+        || what.starts_with("a_")
+        || what.starts_with("a^")
+    {
         return symbol(what);
     }
     let up = |i: usize| plan.points[i].name().to_uppercase();
     match plan.kind {
         PlanKind::Velocity if from == 0 => format!("v_{}", up(to)),
         PlanKind::Velocity => format!("v_{}{}", up(to), up(from)),
-        PlanKind::Acceleration => format!("a^t_{}", up(to)),
+        PlanKind::Acceleration => {
+            // ω²·l_JX lays off the normal acceleration of X about J, ε·l_JX
+            // the tangential one; X is the point the tangential part
+            // reaches (from the normal part's end, on the same segment).
+            let seg = |w: &str| w.split("·l_").nth(1).map(str::to_string);
+            let sup = if what.contains('²') { "n" } else { "t" };
+            let x = if sup == "t" {
+                Some(up(to))
+            } else {
+                plan.steps.iter().find_map(|s| match &s.op {
+                    Op::LayOff {
+                        from: f,
+                        to: t,
+                        what: w,
+                        ..
+                    } if *f == to && seg(w).is_some() && seg(w) == seg(what) => Some(up(*t)),
+                    _ => None,
+                })
+            };
+            match (seg(what), x) {
+                (Some(l), Some(x)) if l.len() > x.len() && l.ends_with(&x) => {
+                    format!("a^{sup}_{x}{}", &l[..l.len() - x.len()])
+                }
+                _ => format!("a^t_{}", up(to)),
+            }
+        }
     }
 }
 
