@@ -523,12 +523,12 @@ pub fn analyse(m: &Mechanism) -> Result<Structure> {
         );
         if w == 1 {
             let why = if dof <= 0 {
-                "the links cannot move (a structure, not a mechanism)"
+                "the links cannot move (a structure, not a mechanism)".to_string()
             } else {
-                "the mechanism needs more than one input to move definitely"
+                format!("the mechanism needs {dof} inputs to move definitely: list them in /input")
             };
             return Err(Error::structure(format!(
-                "/links: {count}, but mechplan takes one input: {why}"
+                "/links: {count}, but the scene gives one input: {why}"
             )));
         }
         let why = if dof <= 0 {
