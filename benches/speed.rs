@@ -15,6 +15,9 @@
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
+//! - `positions_sheet/six_link_{200,2000}`: `drawing::sheets` of the
+//!   positions sheet alone (the mechanism in every position, trajectories,
+//!   numbering), positions solved beforehand;
 //! - `sweep/six_link_3600/{1,2}_threads`: `Analysis::run` over 3600
 //!   positions of the six-link fixture on a rayon pool of one thread and of
 //!   two (the per-position work runs in parallel, `mechplan::progress`);
@@ -327,6 +330,27 @@ fn draw(cr: &mut Criterion) {
     g.finish();
 }
 
+/// The positions sheet (the mechanism in all its positions with the
+/// trajectories) of the six-link at 200 and at 2 000 positions: linear in
+/// the positions (issue 13 asks 2 000 within 15× of 200).
+fn positions_sheet(cr: &mut Criterion) {
+    let mut g = cr.benchmark_group("positions_sheet");
+    g.sample_size(10);
+    for n in [200usize, 2000] {
+        let mut v: serde_json::Value = serde_json::from_str(&text("six_link_fig2_10")).unwrap();
+        v["positions"] = serde_json::json!({ "count": n });
+        v["want"] = serde_json::json!({ "plans": [], "drawings": ["positions"] });
+        let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+        let solved = an.run().unwrap();
+        let opt = DrawOptions::default();
+        assert_eq!(drawing::sheets(&an, &solved, &opt).len(), 1);
+        g.bench_function(format!("six_link_{n}"), |b| {
+            b.iter(|| black_box(drawing::sheets(&an, &solved, &opt)))
+        });
+    }
+    g.finish();
+}
+
 fn sweep(cr: &mut Criterion) {
     let mut v: serde_json::Value = serde_json::from_str(&text("six_link_fig2_10")).unwrap();
     let a0 = v["input"]["angle"].as_f64().unwrap();
@@ -346,5 +370,5 @@ fn sweep(cr: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, per_position, draw, sweep);
+criterion_group!(benches, per_position, draw, positions_sheet, sweep);
 criterion_main!(benches);

@@ -46,11 +46,28 @@ cp "$tmp/diagrams/diagrams.png" "$out/diagrams_offset_slider_crank.png"
   echo "![001 Fig. 2 a](frenet_fig2a.png)"
   echo
 } >> "$index.tmp"
-# The boom's course sheet (A1) and its step-by-step handout: the handout's
-# page itself, and two of its steps as pictures (a headless Chromium, when
-# there is one).
-./target/release/mechplan draw fixtures/boom_cylinder.json --course -o "$tmp/boom" --format png --dpi 100 > /dev/null
-cp "$tmp/boom/course.png" "$out/course-boom_cylinder.png"
+# The course sheets (draw --course): the lecture's Figs 2.10 and 2.11 and
+# the compressor of Fig. 2.12; the shaper in Ukrainian with a title block
+# filled from a `sheet` object, the compressor in Russian on A2.
+python3 - fixtures/shaper_fig2_11.json "$tmp/shaper_uk.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s["sheet"] = {"designation": "ТММ.КП.05.00.000", "title": "Кінематичний аналіз кулісного механізму",
+              "author": "Петренко О.", "checker": "Коваль І.", "organisation": "КПІ, гр. МТ-21"}
+s.setdefault("want", {})["lang"] = "uk"
+json.dump(s, open(sys.argv[2], "w"), ensure_ascii=False)
+PY
+./target/release/mechplan draw fixtures/six_link_fig2_10.json --course -o "$tmp/course6" --format png --dpi 100 > /dev/null
+./target/release/mechplan draw "$tmp/shaper_uk.json" --course -o "$tmp/course_shaper" --format png --dpi 100 > /dev/null
+./target/release/mechplan draw fixtures/compressor_fig2_12.json --course --sheet A2 --lang ru -o "$tmp/course_compressor" --format png --dpi 100 > /dev/null
+cp "$tmp/course6/course.png" "$out/course_six_link_fig2_10.png"
+cp "$tmp/course_shaper/course.png" "$out/course_shaper_fig2_11_uk.png"
+cp "$tmp/course_compressor/course.png" "$out/course_compressor_fig2_12_ru_A2.png"
+# The boom lifted by a hydraulic cylinder: its course sheet, and its
+# step-by-step handout (draw --html) with two of its steps as pictures
+# when a headless Chromium is at hand.
+./target/release/mechplan draw fixtures/boom_cylinder.json --course -o "$tmp/course_boom" --format png --dpi 100 > /dev/null
+cp "$tmp/course_boom/course.png" "$out/course_boom_cylinder.png"
 ./target/release/mechplan draw fixtures/boom_cylinder.json --html -o "$out/boom_cylinder" > /dev/null
 browser=$(command -v chromium || command -v chromium-browser || command -v google-chrome || true)
 if [ -n "$browser" ]; then
@@ -62,25 +79,43 @@ if [ -n "$browser" ]; then
   done
 fi
 {
-  echo "## A boom lifted by a hydraulic cylinder: course sheet and handout"
+  echo "## Course sheets"
   echo
-  echo "The course sheet of \`fixtures/boom_cylinder.json\` (\`mechplan draw --course\`)"
-  echo "and its step-by-step handout ([boom_cylinder/handout.html](boom_cylinder/handout.html),"
-  echo "\`mechplan draw --html\`): the relative velocity of the rod laid off along the"
-  echo "cylinder, then the Coriolis and relative accelerations."
+  echo "The kinematic analysis sheet of a course project (\`draw --course\`, A1;"
+  echo "[docs/sheets.md](../sheets.md)): the six-link of Fig. 2.10, the shaper of"
+  echo "Fig. 2.11 in Ukrainian with its title block filled from the scene's"
+  echo "\`sheet\` object, the compressor of Fig. 2.12 in Russian on A2."
   echo
-  echo "![course sheet of the boom](course-boom_cylinder.png)"
+  echo "![course sheet, six-link](course_six_link_fig2_10.png)"
+  echo "![course sheet, shaper, uk](course_shaper_fig2_11_uk.png)"
+  echo "![course sheet, compressor, ru, A2](course_compressor_fig2_12_ru_A2.png)"
+  echo
+  echo "A boom lifted by a hydraulic cylinder (\`fixtures/boom_cylinder.json\`): its"
+  echo "course sheet, with the diagrams of the boom over the cylinder's stroke, and"
+  echo "its step-by-step handout ([boom_cylinder/handout.html](boom_cylinder/handout.html),"
+  echo "\`draw --html\`): the rod's relative velocity laid off along the cylinder,"
+  echo "then the Coriolis and relative accelerations."
+  echo
+  echo "![course sheet, boom with a hydraulic cylinder](course_boom_cylinder.png)"
   if [ -f "$out/handout-boom_cylinder-velocity.png" ]; then
     echo "![handout of the boom, velocities](handout-boom_cylinder-velocity.png)"
     echo "![handout of the boom, accelerations](handout-boom_cylinder-acceleration.png)"
   fi
   echo
 } >> "$index.tmp"
-# The fill table tests/sheet_fill.rs writes (UPDATE_GOLDEN=1) stays.
-if grep -q '^## How much of its field' "$index"; then
-  echo >> "$index.tmp"
-  sed -n '/^## How much of its field/,$p' "$index" >> "$index.tmp"
-fi
+# The fill table (tests/sheet_fill.rs writes it between its markers).
+{
+  echo "## How much of its field a drawing spans"
+  echo
+  echo "Measured on the rendered sheets by \`tests/sheet_fill.rs\` (every position's"
+  echo "plan of the mechanism, of velocities and of accelerations; the span is the"
+  echo "larger of the drawing's width and height as a share of the field's):"
+  echo "least / median per fixture and sheet size."
+  echo
+  echo "<!-- fill -->"
+  echo "<!-- /fill -->"
+} >> "$index.tmp"
 mv "$index.tmp" "$index"
+UPDATE_GOLDEN=1 cargo test --release -q --test sheet_fill > /dev/null
 rm -rf "$tmp"
 echo "gallery written to $out"

@@ -126,6 +126,11 @@ fn runs_svg(rs: &[Run], size: f64) -> String {
     out
 }
 
+/// The length of an arrowhead (mm), ГОСТ-like 3 mm on a plan.
+pub const HEAD: f64 = 3.0;
+/// Half the width of an arrowhead as a share of its length.
+const ARROW_WIDTH: f64 = 0.7 / 3.0;
+
 /// What a drawn segment is, for its weight and for the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Class {
@@ -133,8 +138,11 @@ pub enum Class {
     Main,
     /// A relative vector or a laid-off component: main line too.
     Vector,
-    /// A construction line, hatching, a dimension: thin line.
+    /// A construction line, a dimension: thin line.
     Thin,
+    /// The hatching of a fixed base or guide: thin line, told apart so
+    /// that the layout checks can keep symbols off it.
+    Hatch,
 }
 
 /// Line types after ГОСТ 2.303, for the lines drawn as paths.
@@ -264,7 +272,8 @@ pub enum Prim {
     /// An open polyline of one line type: a trajectory, a position of
     /// the mechanism, an axis (one element however many its vertices).
     Path { pts: Vec<Point>, line: Line },
-    /// A filled arrowhead with its tip at `tip`, pointing along `dir`.
+    /// A filled arrowhead with its tip at `tip`, pointing along `dir`, as
+    /// long as `dir` (shorter than [`HEAD`] on a short vector).
     Arrow { tip: Point, dir: Vec2 },
     /// A circular arc about `c` of radius `r` from angle `a0` swept by `sweep` (rad, CCW positive).
     Arc {
@@ -447,7 +456,7 @@ impl Canvas {
             class,
             id: None,
         });
-        if class != Class::Thin {
+        if !matches!(class, Class::Thin | Class::Hatch) {
             self.avoid.push((a, b));
         } else {
             self.avoid_thin.push((a, b));
@@ -497,13 +506,35 @@ impl Canvas {
         }
         self.prims.push(Prim::Seg { a, b, class, id });
         self.avoid.push((a, b));
-        self.arrow(b, (b - a).normalize());
+        // A head no longer than 0.4 of its vector: a short vector keeps its
+        // line visible instead of becoming a blob; a very short one (under
+        // a millimetre) is a line and its end point's dot.
+        let len = (b - a).hypot();
+        let head = HEAD.min(0.4 * len);
+        if head >= 0.4 {
+            self.arrow_of(b, (b - a) / len * head);
+        }
     }
 
-    /// An arrowhead; its sides are kept clear of labels.
+    /// A thin circular arc (the input's ω1, ε1), kept clear of labels.
+    pub fn arc(&mut self, c: Point, r: f64, a0: f64, sweep: f64) {
+        let n = 12;
+        let at = |k: usize| c + Vec2::from_angle(a0 + sweep * k as f64 / n as f64) * r;
+        for k in 0..n {
+            self.avoid_thin.push((at(k), at(k + 1)));
+        }
+        self.prims.push(Prim::Arc { c, r, a0, sweep });
+    }
+
+    /// An arrowhead of the usual size; its sides are kept clear of labels.
     pub fn arrow(&mut self, tip: Point, dir: Vec2) {
-        let back = tip - dir * 3.0;
-        let n = Vec2::new(-dir.y, dir.x) * 0.7;
+        self.arrow_of(tip, dir.normalize() * HEAD);
+    }
+
+    /// An arrowhead whose length is that of `dir`.
+    fn arrow_of(&mut self, tip: Point, dir: Vec2) {
+        let back = tip - dir;
+        let n = Vec2::new(-dir.y, dir.x) * ARROW_WIDTH;
         self.avoid.push((tip, back + n));
         self.avoid.push((tip, back - n));
         self.prims.push(Prim::Arrow { tip, dir });
@@ -799,7 +830,7 @@ impl Canvas {
                 Prim::Poly { pts, .. } => pts.iter().for_each(|q| add(*q, 0.3)),
                 Prim::Path { pts, .. } => pts.iter().for_each(|q| add(*q, 0.3)),
                 Prim::Circle { c, r, .. } => add(*c, *r + 0.3),
-                Prim::Arrow { tip, .. } => add(*tip, 3.0),
+                Prim::Arrow { tip, dir } => add(*tip, dir.hypot()),
                 Prim::Arc { c, r, .. } => add(*c, *r + 1.5),
                 Prim::Rich {
                     at,
@@ -835,11 +866,16 @@ impl Canvas {
         for p in &self.prims {
             match p {
                 Prim::Seg { a, b, class, id } => {
-                    let w = if *class == Class::Thin { THIN } else { MAIN };
+                    let w = if matches!(class, Class::Thin | Class::Hatch) {
+                        THIN
+                    } else {
+                        MAIN
+                    };
                     let cls = match class {
                         Class::Main => "main",
                         Class::Vector => "vector",
                         Class::Thin => "thin",
+                        Class::Hatch => "hatch",
                     };
                     // A student's marks (check --svg) in red.
                     let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
@@ -906,9 +942,8 @@ impl Canvas {
                     );
                 }
                 Prim::Arrow { tip, dir } => {
-                    let (len, half) = (3.0, 0.7);
-                    let back = *tip - *dir * len;
-                    let n = Vec2::new(-dir.y, dir.x) * half;
+                    let back = *tip - *dir;
+                    let n = Vec2::new(-dir.y, dir.x) * ARROW_WIDTH;
                     let _ = writeln!(
                         out,
                         r#"<polygon class="arrow" points="{} {} {}" fill="black"/>"#,
@@ -929,7 +964,7 @@ impl Canvas {
                     let flag = if *sweep > 0.0 { 0 } else { 1 };
                     let _ = writeln!(
                         out,
-                        r#"<path d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
+                        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
                         px(p0),
                         fmt(*r),
                         fmt(*r),

@@ -9,6 +9,7 @@ use crate::geom::perp;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
 /// Hatching under a fixed base: a base line of width `w` perpendicular to
 /// `down` at `at`, with short strokes at 45° on the far side.
@@ -20,7 +21,7 @@ pub fn hatch(c: &mut Canvas, at: Point, down: Vec2, w: f64) {
     let n = (w / 1.5).floor() as usize;
     for k in 0..=n {
         let p = a + (b - a) * (k as f64 / n.max(1) as f64);
-        c.seg(p, p + (down - along) * 1.6, Class::Thin);
+        c.seg(p, p + (down - along) * 1.6, Class::Hatch);
     }
 }
 
@@ -75,51 +76,168 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         shown.iter().map(|p| p.x).sum::<f64>() / shown.len().max(1) as f64,
         shown.iter().map(|p| p.y).sum::<f64>() / shown.len().max(1) as f64,
     );
-    // Guides first (under the links): the frame's guides with hatching.
+    // The slots of guides on moving links (a kulisa), under the links; a
+    // hydraulic cylinder (a driving slider on a moving guide) is drawn by
+    // its own symbol instead.
     let cylinders = super::cylinder::pairs(an);
+    let mut bodies: Vec<(Point, Point)> = Vec::new();
     for (k, pr) in m.prismatics.iter().enumerate() {
-        if !an.link(pr.slider) || !an.link(pr.guide) || cylinders.contains(&k) {
+        if !an.link(pr.slider) || !an.link(pr.guide) || pr.guide == frame || cylinders.contains(&k)
+        {
             continue;
         }
         let q = place(pr.slider, pr.point);
         let u = s.config.pose(pr.guide).dir(pr.line_dir);
-        if pr.guide == frame {
-            let half = 18.0;
-            c.seg(q - u * half, q + u * half, Class::Main);
-            // Hatch on the side away from the links that reach the slider.
-            let mut toward = Vec2::ZERO;
-            for &l in m
-                .links_of_point(pr.point)
+        // A one-point link carrying a slot (a sliding yoke) is drawn as the
+        // slot itself, reaching its own point, so that the slot and the
+        // yoke read as one link.
+        let (mut lo, mut hi) = (-10.0f64, 10.0f64);
+        if m.links[pr.guide].points.len() == 1 {
+            let t = (place(pr.guide, m.links[pr.guide].points[0]) - q).dot(u);
+            lo = lo.min(t - 3.0);
+            hi = hi.max(t + 3.0);
+        }
+        c.seg(q + u * lo, q + u * hi, Class::Main);
+        bodies.push((q + u * lo, q + u * hi));
+    }
+    // The links' lines, known before the fixed guides are hatched, so that
+    // a guide's hatching goes to the side fewer of them cross.
+    for (l, link) in m.links.iter().enumerate() {
+        if l == frame || !an.link(l) {
+            continue;
+        }
+        let xy: Vec<Point> = link
+            .points
+            .iter()
+            .filter(|&&p| !is_mass(p))
+            .map(|&p| place(l, p))
+            .collect();
+        for i in 0..xy.len() {
+            for j in i + 1..xy.len() {
+                bodies.push((xy[i], xy[j]));
+            }
+        }
+    }
+    // Slider blocks: those on the frame's guides first; a block at the
+    // point of one already drawn (the two blocks of a PRP group, pinned
+    // together) nests inside it, smaller, instead of crossing it. Known
+    // before the walls are hatched, drawn over the links.
+    let mut order: Vec<&crate::model::mechanism::Prismatic> = m
+        .prismatics
+        .iter()
+        .enumerate()
+        .filter(|(k, pr)| an.link(pr.slider) && an.link(pr.guide) && !cylinders.contains(k))
+        .map(|(_, pr)| pr)
+        .collect();
+    order.sort_by_key(|pr| pr.guide != frame);
+    let mut blocks: Vec<(usize, Point, [Point; 4])> = Vec::new();
+    for pr in order {
+        let q = place(pr.slider, pr.point);
+        let u = s.config.pose(pr.guide).dir(pr.line_dir);
+        let n = perp(u);
+        let inner = blocks.iter().filter(|b| (b.1 - q).hypot() < 1e-6).count();
+        let k = 0.55f64.powi(inner as i32);
+        let (a, b) = (BLOCK.0 * k, BLOCK.1 * k);
+        let corners = [
+            q - u * a - n * b,
+            q + u * a - n * b,
+            q + u * a + n * b,
+            q - u * a + n * b,
+        ];
+        blocks.push((pr.slider, q, corners));
+    }
+    // The frame's guides: one line and one hatched wall for all the
+    // sliders on one line (two pistons in one cylinder share their wall).
+    let mut walls: Vec<Wall> = Vec::new();
+    for pr in &m.prismatics {
+        if !an.link(pr.slider) || pr.guide != frame {
+            continue;
+        }
+        let q = place(pr.slider, pr.point);
+        let u = s.config.pose(pr.guide).dir(pr.line_dir);
+        match walls
+            .iter_mut()
+            .find(|w| w.1.cross(u).abs() < 1e-9 && w.1.cross(q - w.0).abs() < 1e-6)
+        {
+            Some(w) => w.2.push((pr.slider, q)),
+            None => walls.push((q, u, vec![(pr.slider, q)])),
+        }
+    }
+    for (o, u, on) in walls {
+        let ts = on.iter().map(|&(_, q)| (q - o).dot(u));
+        let (lo, hi) = ts.fold((f64::MAX, f64::MIN), |(a, b), t| (a.min(t), b.max(t)));
+        let (lo, hi) = (lo - GUIDE_HALF, hi + GUIDE_HALF);
+        c.seg(o + u * lo, o + u * hi, Class::Main);
+        // The wall beyond its own blocks, on the side fewer lines and
+        // other blocks cross; they pass the wall through gaps in it.
+        let n = perp(u);
+        let gaps = |side: f64| {
+            let (near, far) = (side * WALL, side * (WALL + HATCH));
+            let (b0, b1) = (o + u * lo + n * near, o + u * hi + n * near);
+            let mut gaps: Vec<(f64, f64)> = bodies
                 .iter()
-                .filter(|&&l| l != pr.slider && an.link(l))
-            {
-                for &o in m.links[l].points.iter().filter(|&&o| o != pr.point) {
-                    toward += place(l, o) - q;
+                .filter_map(|&(p, q)| {
+                    let t0 = crossing_at(p, q, b0, b1);
+                    let t1 = crossing_at(p, q, b0 + n * (far - near), b1 + n * (far - near));
+                    t0.or(t1).map(|t| lo + t * (hi - lo))
+                })
+                .map(|t| (t - 1.2, t + 1.2))
+                .collect();
+            for (l, _, b) in &blocks {
+                if on.iter().any(|&(sl, _)| sl == *l) {
+                    continue;
                 }
+                // Across the wall's band: the block's extent across and along.
+                let across = b.iter().map(|&p| (p - o).dot(n));
+                let (a0, a1) = across.fold((f64::MAX, f64::MIN), |(x, y), v| (x.min(v), y.max(v)));
+                if a1 < near.min(far) - 0.3 || a0 > near.max(far) + 0.3 {
+                    continue;
+                }
+                let along = b.iter().map(|&p| (p - o).dot(u));
+                let (t0, t1) = along.fold((f64::MAX, f64::MIN), |(x, y), v| (x.min(v), y.max(v)));
+                gaps.push((t0 - 0.6, t1 + 0.6));
             }
-            if toward.hypot() < 1e-9 {
-                toward = centre - q;
-            }
-            let n = perp(u);
-            let n = if n.dot(toward) > 0.0 { n } else { -n };
-            let (b0, b1) = (q - u * half - n * 3.2, q + u * half - n * 3.2);
-            c.seg(b0, b1, Class::Thin);
-            for k in 0..=12 {
-                let p = b0 + (b1 - b0) * (k as f64 / 12.0);
-                c.seg(p, p - (u + n) * 1.4, Class::Thin);
-            }
+            gaps
+        };
+        let (above, below) = (gaps(1.0), gaps(-1.0));
+        let cut = |g: &[(f64, f64)]| g.iter().map(|g| g.1 - g.0).sum::<f64>();
+        let toward_centre = (centre - o).dot(n);
+        let side = if (cut(&above) - cut(&below)).abs() > 1e-9 {
+            if cut(&above) < cut(&below) { 1.0 } else { -1.0 }
+        } else if toward_centre > 0.0 {
+            -1.0
         } else {
-            // A guide on a moving link (a kulisa): its slot through the
-            // slider. A one-point link carrying a slot (a sliding yoke) is
-            // drawn as the slot itself, reaching its own point, so that the
-            // slot and the yoke read as one link.
-            let (mut lo, mut hi) = (-10.0f64, 10.0f64);
-            if m.links[pr.guide].points.len() == 1 {
-                let t = (place(pr.guide, m.links[pr.guide].points[0]) - q).dot(u);
-                lo = lo.min(t - 3.0);
-                hi = hi.max(t + 3.0);
+            1.0
+        };
+        let gaps = if side > 0.0 { above } else { below };
+        let free = |t: f64| !gaps.iter().any(|g| (g.0..=g.1).contains(&t));
+        // The wall's line, in pieces between the gaps.
+        let at = |t: f64| o + u * t + n * side * WALL;
+        let steps = ((hi - lo) / 0.25).ceil() as usize;
+        let mut start: Option<f64> = None;
+        for k in 0..=steps {
+            let t = lo + (hi - lo) * k as f64 / steps as f64;
+            match (free(t), start) {
+                (true, None) => start = Some(t),
+                (false, Some(t0)) => {
+                    c.seg(at(t0), at(t - (hi - lo) / steps as f64), Class::Hatch);
+                    start = None;
+                }
+                _ => {}
             }
-            c.seg(q + u * lo, q + u * hi, Class::Main);
+        }
+        if let Some(t0) = start {
+            c.seg(at(t0), at(hi), Class::Hatch);
+        }
+        let count = ((hi - lo) / 3.0).round().max(1.0) as usize;
+        for k in 0..=count {
+            let t = lo + (hi - lo) * k as f64 / count as f64;
+            // The stroke leans back along the wall: its foot must be free.
+            if !free(t) || !free(t - HATCH) {
+                continue;
+            }
+            let p = at(t);
+            c.seg(p, p + (n * side - u) * HATCH, Class::Hatch);
         }
     }
     // Links.
@@ -149,26 +267,6 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
                 }
             }
         }
-        // A slider block (a cylinder's rod: the cylinder's symbol).
-        if let Some(pr) = m
-            .prismatics
-            .iter()
-            .enumerate()
-            .find(|(k, pr)| pr.slider == l && !cylinders.contains(k))
-            .map(|(_, pr)| pr)
-        {
-            let q = place(l, pr.point);
-            let u = s.config.pose(pr.guide).dir(pr.line_dir);
-            let n = perp(u);
-            let (a, b) = (5.0, 3.0);
-            let corners = vec![
-                q - u * a - n * b,
-                q + u * a - n * b,
-                q + u * a + n * b,
-                q - u * a + n * b,
-            ];
-            c.poly(corners, "white", MAIN);
-        }
         // Link number beside the middle of its first segment.
         let mid = if xy.len() >= 2 {
             xy[0].midpoint(xy[1])
@@ -182,6 +280,9 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             Some(format!("link-{}", link.id)),
         );
     }
+    for (_, _, corners) in &blocks {
+        c.poly(corners.to_vec(), "white", MAIN);
+    }
     super::cylinder::draw(an, s, c, mu_l);
     // Pairs and points.
     for (p, &joint) in joints.iter().enumerate() {
@@ -192,25 +293,16 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         }
         let at = at_point(p);
         if ls.contains(&frame) && joint {
-            // The base stands on the side away from the links at the pivot,
-            // snapped to a multiple of 45° so it looks drawn, not computed.
-            let mut away = Vec2::ZERO;
-            for &l in ls.iter().filter(|&&l| l != frame && an.link(l)) {
-                for &q in m.links[l].points.iter().filter(|&&q| q != p) {
-                    let d = place(l, q) - at;
-                    if d.hypot() > 0.0 {
-                        away -= d.normalize();
-                    }
-                }
-            }
-            let down = if away.hypot() < 1e-9 {
-                Vec2::new(0.0, -1.0)
-            } else {
-                away
-            };
-            let snapped =
-                (down.atan2() / std::f64::consts::FRAC_PI_4).round() * std::f64::consts::FRAC_PI_4;
-            pivot(c, at, Vec2::from_angle(snapped));
+            let dirs: Vec<Vec2> = ls
+                .iter()
+                .filter(|&&l| l != frame && an.link(l))
+                .flat_map(|&l| m.links[l].points.iter().map(move |&q| (l, q)))
+                .filter(|&(_, q)| q != p)
+                .map(|(l, q)| place(l, q) - at)
+                .filter(|d| d.hypot() > 1e-9)
+                .map(|d| d.normalize())
+                .collect();
+            pivot(c, at, base_direction(&dirs, at, &bodies));
         } else if joint {
             c.circle(at, 1.2, "white", MAIN);
         } else if is_mass(p) {
@@ -247,24 +339,48 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             .copied()
             .find(|&p| p != pv)
             .unwrap();
-        let dir = (place(link, other) - o).atan2();
+        let crank = (place(link, other) - o).atan2();
+        // The arcs go where nothing else is about the pivot: clear of the
+        // links there and of the support and its hatching.
+        let mut busy: Vec<(f64, f64)> = m
+            .links_of_point(pv)
+            .into_iter()
+            .filter(|&l| l != frame && an.link(l))
+            .flat_map(|l| m.links[l].points.iter().map(move |&q| (l, q)))
+            .filter(|&(_, q)| q != pv)
+            .map(|(l, q)| ((place(l, q) - o).atan2(), 0.35))
+            .collect();
+        if m.links_of_point(pv).contains(&frame) {
+            let dirs: Vec<Vec2> = busy.iter().map(|&(a, _)| Vec2::from_angle(a)).collect();
+            busy.push((base_direction(&dirs, o, &bodies).atan2(), 0.95));
+        }
+        // Other lines passing where the arcs would go.
+        for &(p, q) in &bodies {
+            for k in 0..=48 {
+                let x = p + (q - p) * (k as f64 / 48.0);
+                let r = (x - o).hypot();
+                if (4.0..=11.0).contains(&r) {
+                    busy.push(((x - o).atan2(), 0.2));
+                }
+            }
+        }
+        let (mid, room) = free_arc(&busy, crank + std::f64::consts::PI);
         for (k, (val, name)) in [(w, "ω"), (e, "ε")].into_iter().enumerate() {
             if val == 0.0 {
                 continue;
             }
-            // On the far side of the pivot from the crank, as textbooks draw it.
+            // On the far side of the pivot from the crank, as textbooks
+            // draw it, when that side is free.
             let r = 6.0 + 3.5 * k as f64;
-            let sweep = 1.6 * val.signum();
-            let a0 = dir + std::f64::consts::PI - sweep / 2.0;
-            c.prims
-                .push(super::canvas::Prim::Arc { c: o, r, a0, sweep });
+            let sweep = room.min(1.6) * val.signum();
+            let a0 = mid - sweep / 2.0;
+            c.arc(o, r, a0, sweep);
             let end = a0 + sweep;
             let tip = o + Vec2::from_angle(end) * r;
             let tangent = perp(Vec2::from_angle(end)) * val.signum();
-            c.prims
-                .push(super::canvas::Prim::Arrow { tip, dir: tangent });
+            c.arrow(tip, tangent);
             c.label_later(
-                o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 1.0),
+                o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 2.0),
                 Label::new(name, m.link_id(link)),
                 FONT,
                 Some(if i == 0 {
@@ -275,4 +391,145 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
             );
         }
     }
+}
+
+/// A fixed guide's wall: a point of its line, its direction, and the
+/// sliders on it with their points.
+type Wall = (Point, Vec2, Vec<(usize, Point)>);
+
+/// Half the length of a fixed guide's line beyond its sliders (mm).
+const GUIDE_HALF: f64 = 18.0;
+/// A slider block's half length and half width (mm).
+const BLOCK: (f64, f64) = (5.0, 3.0);
+/// How far a fixed guide's wall lies from its line: beyond the blocks.
+const WALL: f64 = BLOCK.1 + 1.2;
+/// The depth of a wall's hatching (mm).
+const HATCH: f64 = 1.6;
+
+/// Where segment `p`–`q` crosses segment `a`–`b`, as a share of `a`–`b`.
+fn crossing_at(p: Point, q: Point, a: Point, b: Point) -> Option<f64> {
+    let (r, s) = (q - p, b - a);
+    let den = r.cross(s);
+    if den.abs() < 1e-12 {
+        return None;
+    }
+    let t = (a - p).cross(s) / den;
+    let v = (a - p).cross(r) / den;
+    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&v)).then_some(v)
+}
+
+/// Which way a fixed pivot's base stands, given the unit directions of the
+/// links leaving it and the lines drawn near (`bodies`): down, upright as
+/// on the board, unless a link leaves within 50° of down or a line crosses
+/// the base; then the one of left, right, up (or down) that no line
+/// crosses, farthest from every link.
+pub fn base_direction(links: &[Vec2], at: Point, bodies: &[(Point, Point)]) -> Vec2 {
+    let clearance = |d: Vec2| {
+        links
+            .iter()
+            .map(|l| l.dot(d).clamp(-1.0, 1.0).acos())
+            .fold(std::f64::consts::PI, f64::min)
+    };
+    // The lines crossing the base's place (its triangle's foot and the
+    // hatching), in the direction `d`.
+    let hits = |d: Vec2| {
+        let side = perp(d) * 4.5;
+        let (a, b) = (at + d * 2.0, at + d * 6.0);
+        let edges = [
+            (a - side, b - side),
+            (b - side, b + side),
+            (b + side, a + side),
+            (a + side, a - side),
+        ];
+        bodies
+            .iter()
+            .filter(|&&(p, q)| {
+                edges
+                    .iter()
+                    .any(|&(e0, e1)| crossing_at(p, q, e0, e1).is_some())
+            })
+            .count()
+    };
+    let down = Vec2::new(0.0, -1.0);
+    if clearance(down) >= 50f64.to_radians() && hits(down) == 0 {
+        return down;
+    }
+    // Upright or on its side first; tilted by 45° only when every upright
+    // place is crossed.
+    let best = |ds: &mut dyn Iterator<Item = Vec2>| {
+        ds.map(|d| (d, hits(d), clearance(d)))
+            .fold((down, usize::MAX, -1.0), |best, (d, h, c)| {
+                if h < best.1 || h == best.1 && c > best.2 + 1e-9 {
+                    (d, h, c)
+                } else {
+                    best
+                }
+            })
+    };
+    let square = best(&mut (0..4).map(|k| Vec2::from_angle(-FRAC_PI_2 + k as f64 * FRAC_PI_2)));
+    if square.1 == 0 {
+        return square.0;
+    }
+    let slant = best(&mut (0..4).map(|k| Vec2::from_angle(-FRAC_PI_4 + k as f64 * FRAC_PI_2)));
+    if slant.1 < square.1 {
+        slant.0
+    } else {
+        square.0
+    }
+}
+
+/// The free direction for the input's arcs about a pivot: `busy` holds
+/// directions taken (by a link, by the support) with their half-widths
+/// (rad). Returns the arc's middle, as near `wish` as the largest free
+/// gap allows, and the sweep that fits there.
+fn free_arc(busy: &[(f64, f64)], wish: f64) -> (f64, f64) {
+    use std::f64::consts::TAU;
+    if busy.is_empty() {
+        return (wish, TAU);
+    }
+    // Taken intervals as [start, end) on the circle, from the first start.
+    let mut taken: Vec<(f64, f64)> = busy
+        .iter()
+        .map(|&(a, w)| ((a - w).rem_euclid(TAU), 2.0 * w))
+        .collect();
+    taken.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // The gaps between consecutive taken intervals (merging overlaps).
+    let mut gaps: Vec<(f64, f64)> = Vec::new();
+    let origin = taken[0].0;
+    let mut end = origin + taken[0].1;
+    for &(a, w) in &taken[1..] {
+        let a = if a < origin { a + TAU } else { a };
+        if a > end {
+            gaps.push((end, a));
+        }
+        end = end.max(a + w);
+    }
+    if origin + TAU > end {
+        gaps.push((end, origin + TAU));
+    }
+    let Some(&(g0, g1)) = gaps
+        .iter()
+        .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)))
+    else {
+        // Everything taken: where it was wished, small.
+        return (wish, 0.6);
+    };
+    let margin = 0.1;
+    let room = (g1 - g0 - 2.0 * margin).max(0.3);
+    let half = room.min(1.6) / 2.0;
+    let (lo, hi) = (g0 + half + margin, g1 - half - margin);
+    if lo > hi {
+        return ((g0 + g1) / 2.0, room);
+    }
+    // The wish on the gap's turn of the circle, kept inside the gap (at
+    // the nearer end when it lies outside).
+    let w = g0 + (wish - g0).rem_euclid(TAU);
+    let mid = if w <= g1 {
+        w.clamp(lo, hi)
+    } else if w - g1 < g0 + TAU - w {
+        hi
+    } else {
+        lo
+    };
+    (mid, room)
 }

@@ -5,7 +5,7 @@
 //! intersection, as a draftsman draws them), similar figures shaded and
 //! outlined, every plan point labelled.
 
-use super::canvas::{Canvas, Class, FONT, Label};
+use super::canvas::{Canvas, Class, FONT, Label, Line};
 use crate::kinematics::construction::{Dir, Op, Plan};
 use kurbo::Point;
 
@@ -61,7 +61,7 @@ pub fn draw_steps(plan: &Plan, c: &mut Canvas, reported: &[usize]) -> Vec<usize>
                     } else {
                         l.unit
                     };
-                    c.seg(a - d * 3.0, x + d * OVERSHOOT, Class::Thin);
+                    c.path(vec![a - d * 3.0, x + d * OVERSHOOT], Line::Dashed);
                     used[l.through] = true;
                 }
                 used[*out] = true;
@@ -133,6 +133,20 @@ pub fn draw_steps(plan: &Plan, c: &mut Canvas, reported: &[usize]) -> Vec<usize>
             } => vector(c, 0, *to, Class::Main, &mut used),
             Op::Divide { out, .. } | Op::Coincide { out, .. } => used[*out] = true,
             _ => {}
+        }
+        tag(c, k);
+    }
+    // The segments divided by similarity (ab for s₂ on AB): on an
+    // acceleration plan no vector joins a and b, and s₂ would float.
+    for (k, step) in plan.steps.iter().enumerate() {
+        if let Op::Divide { a, b, .. } = step.op {
+            let joined = drawn.contains(&(a, b)) || drawn.contains(&(b, a));
+            if !joined && (at(a) - at(b)).hypot() > 1e-6 {
+                c.seg(at(a), at(b), Class::Thin);
+                drawn.push((a, b));
+                used[a] = true;
+                used[b] = true;
+            }
         }
         tag(c, k);
     }
