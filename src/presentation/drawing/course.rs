@@ -517,9 +517,7 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
             let mut r = vec![format!("{q}, {}", unit(u, lang))];
             for m in &values {
                 r.push(match m.get(q) {
-                    Some(v) if *rate => {
-                        format!("{}{}", number(round3(v.abs()), lang), table::sense(*v))
-                    }
+                    Some(v) if *rate => table::rate(round3(*v), lang),
                     Some(v) => number(round3(*v), lang),
                     None => "—".into(),
                 });

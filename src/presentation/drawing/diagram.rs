@@ -110,29 +110,28 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
                 Class::Thin,
             );
             if k % step == 0 {
+                // 0 left of the ordinate axis, which runs through it.
+                let dx = if k == 0 { -3.0 } else { -1.0 };
                 c.text(
-                    p + Vec2::new(-1.0, -4.5),
+                    p + Vec2::new(dx, -4.5),
                     Label::new(k.to_string(), ""),
                     SMALL,
                     "",
                 );
             }
         }
-        c.text(Point::new(1.5, oy + 1.5), Label::new(name, ""), SMALL, "");
+        // The curve's name, the pole and its distance H are placed after
+        // the rays and projection lines are drawn, where none crosses them.
+        c.label_later(Point::new(0.0, oy), Label::new(name, ""), SMALL, None);
         if let Some((h, pname)) = pole {
             let p = Point::new(-h, oy);
             c.dot(p, pname.to_string());
-            c.text(
-                p + Vec2::new(-2.5, -4.5),
-                Label::new("P", &pname[1..]),
-                SMALL,
-                "",
-            );
-            c.text(
-                Point::new(-h - 1.0, oy - 9.0),
+            c.label_later(p, Label::new("P", &pname[1..]), SMALL, None);
+            c.label_later(
+                Point::new(-h / 2.0, oy),
                 Label::new("H", &pname[1..]).with_tail(format!(" = {} {mm}", number(h, lang))),
                 SMALL,
-                "",
+                None,
             );
         }
     };
@@ -232,6 +231,7 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
             "start",
         );
     }
+    c.place_pending();
     c
 }
 

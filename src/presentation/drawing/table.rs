@@ -108,7 +108,8 @@ impl Ruled {
 /// A number as the language writes it: a decimal comma in Ukrainian and
 /// Russian (the lecture writes 0,001 м/мм).
 pub fn number(x: f64, l: Lang) -> String {
-    let s = num(x);
+    // The minus sign of typesetting (−), not the hyphen.
+    let s = num(x).replace('-', "\u{2212}");
     match l {
         Lang::En => s,
         _ => s.replace('.', ","),
@@ -126,6 +127,17 @@ fn heads(l: Lang) -> [&'static str; 4] {
         Lang::En => ["quantity", "segment", "length, mm", "value"],
         Lang::Uk => ["величина", "відрізок", "довжина, мм", "значення"],
         Lang::Ru => ["величина", "отрезок", "длина, мм", "значение"],
+    }
+}
+
+/// An angular rate's magnitude as printed, with its sense (none when it
+/// prints as zero: a rounding residue has no sense to show).
+pub fn rate(x: f64, l: Lang) -> String {
+    let n = number(x.abs(), l);
+    if n.chars().any(|c| ('1'..='9').contains(&c)) {
+        format!("{n}{}", sense(x))
+    } else {
+        n
     }
 }
 
@@ -333,12 +345,11 @@ pub fn plan_table(plan: &Plan, l: Lang) -> Ruled {
             .into_iter()
             .map(|r| {
                 let v = if r.rate {
-                    format!(
-                        "{} {}{}",
-                        number(r.value.abs(), l),
-                        unit(r.unit, l),
-                        sense(r.value)
-                    )
+                    let v = rate(r.value, l);
+                    match v.split_once(' ') {
+                        Some((n, s)) => format!("{n} {} {s}", unit(r.unit, l)),
+                        None => format!("{v} {}", unit(r.unit, l)),
+                    }
                 } else {
                     format!("{} {}", number(r.value, l), unit(r.unit, l))
                 };
