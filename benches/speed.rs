@@ -28,6 +28,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
 use mechplan::analytic::{Drive, Order, contour};
+use mechplan::compiled::Program;
 use mechplan::construction::{Setup, build_plans, build_plans_numbers};
 use mechplan::drawing::{self, DrawOptions};
 use mechplan::positions::{Configuration, PositionSolver};
@@ -255,6 +256,19 @@ fn per_position(cr: &mut Criterion) {
                 )
                 .unwrap();
                 black_box((c, mo))
+            })
+        });
+
+        let prog = Program::new(m, &an.structure, &an.need).unwrap();
+        let mut st = prog.state();
+        let mut k = 0;
+        cr.bench_function(&format!("compiled/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                let q = qs[k];
+                prog.solve(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
+                    .unwrap();
+                black_box(&st.motion);
             })
         });
 

@@ -38,7 +38,7 @@ pub mod study;
 // The paths of the first, flat layout, kept: tests, benches and fuzz
 // targets reach the internals by them.
 #[doc(hidden)]
-pub use kinematics::{analytic, construction, positions, solve};
+pub use kinematics::{analytic, compiled, construction, positions, solve};
 #[doc(hidden)]
 pub use model::{mechanism, scene, shape, structure};
 #[doc(hidden)]

@@ -25,10 +25,12 @@ pub struct Configuration {
 }
 
 impl Configuration {
+    #[inline]
     pub fn pose(&self, link: usize) -> Pose {
         self.poses[link].expect("link solved before use")
     }
     /// World position of `point` as carried by `link`.
+    #[inline]
     pub fn point(&self, m: &Mechanism, link: usize, point: usize) -> Point {
         self.pose(link).apply(m.local(link, point))
     }
@@ -66,14 +68,14 @@ fn sketch(m: &Mechanism, p: usize) -> Point {
     m.scene.points[p].sketch
 }
 
-fn point_of(j: Joint) -> usize {
+pub(crate) fn point_of(j: Joint) -> usize {
     match j {
         Joint::R(p) => p,
         Joint::P(_) => unreachable!("a revolute pair was expected"),
     }
 }
 
-fn pair_of(j: Joint) -> usize {
+pub(crate) fn pair_of(j: Joint) -> usize {
     match j {
         Joint::P(k) => k,
         Joint::R(_) => unreachable!("a prismatic pair was expected"),
@@ -81,7 +83,7 @@ fn pair_of(j: Joint) -> usize {
 }
 
 /// Angle of `moving` given the angle of `known` across prismatic pair `k`.
-fn angle_across(m: &Mechanism, k: usize, known: usize, known_angle: f64) -> f64 {
+pub(crate) fn angle_across(m: &Mechanism, k: usize, known: usize, known_angle: f64) -> f64 {
     let pr = &m.prismatics[k];
     if pr.guide == known {
         known_angle + pr.delta
@@ -122,17 +124,17 @@ fn sketch_guide_dir(m: &Mechanism, k: usize) -> Vec2 {
 
 /// The constant h and the pins for the rocking-guide (RPR) closed form:
 /// cross(u(ψ), J_S − J_G) = h, with ψ the guide link's angle.
-struct RockingGuide {
-    guide: usize,
-    slider: usize,
-    pin_guide: usize,
-    pin_slider: usize,
-    h: f64,
-    alpha: f64,
-    delta: f64,
+pub(crate) struct RockingGuide {
+    pub guide: usize,
+    pub slider: usize,
+    pub pin_guide: usize,
+    pub pin_slider: usize,
+    pub h: f64,
+    pub alpha: f64,
+    pub delta: f64,
 }
 
-fn rocking_guide(m: &Mechanism, d: &Dyad) -> RockingGuide {
+pub(crate) fn rocking_guide(m: &Mechanism, d: &Dyad) -> RockingGuide {
     let k = pair_of(d.mid.joint);
     let pr = &m.prismatics[k];
     let (b, dd) = (point_of(d.ext1.joint), point_of(d.ext2.joint));
@@ -328,7 +330,7 @@ pub fn sketch_input(m: &Mechanism) -> Coords {
 
 /// The largest step of input `i` in which class III groups are tracked: 2°
 /// of a crank, a hundredth of the smallest class III group of a slider.
-fn triad_step(m: &Mechanism, s: &Structure, need: &[bool], i: usize) -> f64 {
+pub(crate) fn triad_step(m: &Mechanism, s: &Structure, need: &[bool], i: usize) -> f64 {
     match m.scene.input_at(i) {
         InputSpec::Crank { .. } => 2f64.to_radians(),
         // A hundredth of the smallest class III group: the groups'
@@ -469,32 +471,48 @@ impl<'a> PositionSolver<'a> {
             match &self.s.groups[gi] {
                 AssurGroup::Dyad(d) => {
                     let cyl = d.cylinder.map(|cy| (cy, q[cy.input]));
-                    solve_dyad(m, d, cyl, sign, &mut c).map_err(|why| {
-                        let group =
-                            format!("group {} ({})", self.s.groups[gi].label(m), d.kind.name());
-                        match why.strip_prefix(SINGULAR) {
-                            Some(why) => {
-                                Error::singular(describe_input(m, &q), format!("{group}: {why}"))
-                            }
-                            None => Error::assembly(group, describe_input(m, &q), why),
-                        }
-                    })?
+                    solve_dyad(m, d, cyl, sign, &mut c)
+                        .map_err(|why| dyad_error(m, self.s, gi, &q, why))?
                 }
                 AssurGroup::Triad(t) => {
-                    let pose =
-                        solve_triad(m, t, self.branches.triad_pose[gi], &mut c).map_err(|why| {
-                            Error::assembly(
-                                format!("group {} (class III)", self.s.groups[gi].label(m)),
-                                describe_input(m, &q),
-                                why,
-                            )
-                        })?;
+                    let pose = solve_triad(m, t, self.branches.triad_pose[gi], &mut c)
+                        .map_err(|why| triad_error(m, self.s, gi, &q, why))?;
                     self.branches.triad_pose[gi] = pose;
                 }
             }
         }
         Ok(c)
     }
+}
+
+/// The error of dyad `gi` that failed at `q` for the reason `why` (a
+/// singular position when `why` is marked so, else a failure to assemble).
+pub(crate) fn dyad_error(m: &Mechanism, s: &Structure, gi: usize, q: &[f64], why: String) -> Error {
+    let g = &s.groups[gi];
+    let kind = match g {
+        AssurGroup::Dyad(d) => d.kind.name(),
+        AssurGroup::Triad(_) => "class III",
+    };
+    let group = format!("group {} ({kind})", g.label(m));
+    match why.strip_prefix(SINGULAR) {
+        Some(why) => Error::singular(describe_input(m, q), format!("{group}: {why}")),
+        None => Error::assembly(group, describe_input(m, q), why),
+    }
+}
+
+/// The error of class III group `gi` that failed at `q` for the reason `why`.
+pub(crate) fn triad_error(
+    m: &Mechanism,
+    s: &Structure,
+    gi: usize,
+    q: &[f64],
+    why: String,
+) -> Error {
+    Error::assembly(
+        format!("group {} (class III)", s.groups[gi].label(m)),
+        describe_input(m, q),
+        why,
+    )
 }
 
 fn known_point(m: &Mechanism, c: &Configuration, conn: &Conn, known_side: usize) -> Point {
@@ -505,7 +523,7 @@ fn known_point(m: &Mechanism, c: &Configuration, conn: &Conn, known_side: usize)
 /// failure to assemble.
 const SINGULAR: &str = "singular: ";
 
-fn solve_dyad(
+pub(crate) fn solve_dyad(
     m: &Mechanism,
     d: &Dyad,
     cyl: Option<(Cylinder, f64)>,
@@ -717,7 +735,7 @@ fn set_by_two_local(
 /// previous solution, or the sketch). The branch is the one continuous
 /// from the sketch; a dead point of the group (the three leashes' axes
 /// through one point) shows as a singular 3×3 system.
-fn solve_triad(
+pub(crate) fn solve_triad(
     m: &Mechanism,
     t: &Triad,
     start: Pose,

@@ -25,13 +25,14 @@ use nalgebra::{SMatrix, SVector};
 
 /// A planar twist: angular rate and the velocity of the point at the origin.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-struct Twist {
-    w: f64,
-    v: Vec2,
+pub(crate) struct Twist {
+    pub w: f64,
+    pub v: Vec2,
 }
 
 impl std::ops::Add for Twist {
     type Output = Twist;
+    #[inline]
     fn add(self, o: Twist) -> Twist {
         Twist {
             w: self.w + o.w,
@@ -41,6 +42,7 @@ impl std::ops::Add for Twist {
 }
 impl std::ops::Sub for Twist {
     type Output = Twist;
+    #[inline]
     fn sub(self, o: Twist) -> Twist {
         Twist {
             w: self.w - o.w,
@@ -50,6 +52,7 @@ impl std::ops::Sub for Twist {
 }
 impl std::ops::Mul<f64> for Twist {
     type Output = Twist;
+    #[inline]
     fn mul(self, k: f64) -> Twist {
         Twist {
             w: self.w * k,
@@ -60,7 +63,8 @@ impl std::ops::Mul<f64> for Twist {
 
 /// The Lie bracket [a, b] of planar twists: how b, carried by a body
 /// moving with a, changes in time.
-fn bracket(a: Twist, b: Twist) -> Twist {
+#[inline]
+pub(crate) fn bracket(a: Twist, b: Twist) -> Twist {
     Twist {
         w: 0.0,
         v: perp(b.v) * a.w - perp(a.v) * b.w,
@@ -71,7 +75,8 @@ fn bracket(a: Twist, b: Twist) -> Twist {
 /// velocity of the link's material point at `o`, and the rate of that
 /// spatial twist. The rate of the spatial velocity v_o is not the
 /// acceleration of the material point at o: a_o = v̇_o + ω×v_o.
-fn state(mo: &Motion, o: Point) -> (Twist, Twist) {
+#[inline]
+pub(crate) fn state(mo: &Motion, o: Point) -> (Twist, Twist) {
     let v = mo.velocity(o);
     (
         Twist { w: mo.omega, v },
@@ -165,7 +170,7 @@ pub fn across(
 /// contour (from the link in the cylinder's slot to the other for slot 0,
 /// back for slot 1), and whether the contour passes through it (the
 /// middle pair on the other link) or the other link only hangs on it.
-fn driven_pair(d: &Dyad) -> Option<(Conn, usize, bool)> {
+pub(crate) fn driven_pair(d: &Dyad) -> Option<(Conn, usize, bool)> {
     let cy = d.cylinder?;
     let own = d.links[cy.slot];
     let (conn, on) = if cy.slot == 0 {
@@ -256,15 +261,7 @@ pub fn solve(
             continue;
         }
         let g = &s.groups[gi];
-        let singular = || {
-            Error::singular(
-                describe_input(m, &drives.coords()),
-                format!(
-                    "the velocity contour of group {} is singular (a dead point)",
-                    g.label(m)
-                ),
-            )
-        };
+        let singular = || singular(m, g, &drives);
         // The pairs of the group, in contour order: each contour is a list
         // of (pair index, sign) from a known link to a known link.
         let done = match g {
@@ -324,6 +321,17 @@ pub fn solve(
         }
     }
     Ok(out)
+}
+
+/// The error of a group whose velocity contour is singular at `drives`.
+pub(crate) fn singular(m: &Mechanism, g: &AssurGroup, drives: &Drives) -> Error {
+    Error::singular(
+        describe_input(m, &drives.coords()),
+        format!(
+            "the velocity contour of group {} is singular (a dead point)",
+            g.label(m)
+        ),
+    )
 }
 
 /// One group's contours: the rates in its pairs, then the motion of each
@@ -474,7 +482,10 @@ fn group<const N: usize>(
 
 /// The known side of the contours: the twist (or twist rate) of each
 /// contour's end link less that of its start link.
-fn rhs<const N: usize>(ends: &[(usize, usize)], f: impl Fn(usize) -> Twist) -> SVector<f64, N> {
+pub(crate) fn rhs<const N: usize>(
+    ends: &[(usize, usize)],
+    f: impl Fn(usize) -> Twist,
+) -> SVector<f64, N> {
     let mut r = SVector::<f64, N>::zeros();
     for (ci, &(k1, k2)) in ends.iter().enumerate() {
         let t = f(k2) - f(k1);
@@ -541,7 +552,7 @@ fn scaled<const N: usize>(a: &SMatrix<f64, N, N>) -> (SMatrix<f64, N, N>, [f64; 
 
 /// The inverse of a group's contour matrix, once per position: the
 /// velocity and the acceleration contours share it.
-struct Inverse<const N: usize> {
+pub(crate) struct Inverse<const N: usize> {
     /// Inverse of the matrix with dimensionless columns.
     inv: SMatrix<f64, N, N>,
     /// The columns' scales.
@@ -549,7 +560,8 @@ struct Inverse<const N: usize> {
 }
 
 impl<const N: usize> Inverse<N> {
-    fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
+    #[inline]
+    pub(crate) fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
         let x = self.inv * b;
         SVector::<f64, N>::from_fn(|j, _| x[j] / self.scale[j])
     }
@@ -557,7 +569,7 @@ impl<const N: usize> Inverse<N> {
 
 /// A dyad's 3×3 contour matrix inverted in closed form (cofactors); `None`
 /// when it is singular relative to the scale of its columns.
-fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
+pub(crate) fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
     let (an, scale) = scaled(a);
     if an.determinant().abs() < ACCURACY.min_contour_determinant {
         return None;
@@ -570,7 +582,7 @@ fn invert3(a: &SMatrix<f64, 3, 3>) -> Option<Inverse<3>> {
 
 /// A three-leash group's 6×6 matrix (two contours) by LU; `None` when it
 /// is singular relative to the scale of its columns.
-fn invert_lu(a: &SMatrix<f64, 6, 6>) -> Option<Inverse<6>> {
+pub(crate) fn invert_lu(a: &SMatrix<f64, 6, 6>) -> Option<Inverse<6>> {
     let (an, scale) = scaled(a);
     let lu = an.lu();
     if lu.determinant().abs() < ACCURACY.min_contour_determinant {

@@ -40,16 +40,19 @@ pub struct Motion {
 
 impl Motion {
     /// Velocity of the link's material point now at `p`.
+    #[inline]
     pub fn velocity(&self, p: Point) -> Vec2 {
         self.v_at + perp(p - self.at) * self.omega
     }
     /// Acceleration of the link's material point now at `p`:
     /// a_P = a_O + ε×OP − ω²·OP.
+    #[inline]
     pub fn acceleration(&self, p: Point) -> Vec2 {
         let r = p - self.at;
         self.a_at + perp(r) * self.epsilon - r * (self.omega * self.omega)
     }
     /// Rigid motion from the state of one material point `p`.
+    #[inline]
     pub fn from_point(pose: Pose, p: Point, v: Vec2, a: Vec2, omega: f64, epsilon: f64) -> Motion {
         Motion {
             pose,
@@ -84,10 +87,12 @@ pub struct Coords {
 
 impl Coords {
     /// The coordinate of a single input.
+    #[inline]
     pub fn one(q: f64) -> Coords {
         Coords::new(&[q])
     }
     /// The coordinates listed (at most [`MAX_INPUTS`]).
+    #[inline]
     pub fn new(q: &[f64]) -> Coords {
         assert!(
             !q.is_empty() && q.len() <= MAX_INPUTS,
@@ -98,6 +103,7 @@ impl Coords {
         Coords { len: q.len(), x }
     }
     /// The first input's coordinate.
+    #[inline]
     pub fn first(&self) -> f64 {
         self.x[0]
     }
@@ -105,6 +111,7 @@ impl Coords {
 
 impl std::ops::Deref for Coords {
     type Target = [f64];
+    #[inline]
     fn deref(&self) -> &[f64] {
         &self.x[..self.len]
     }
@@ -126,6 +133,7 @@ pub struct Drives {
 
 impl Drives {
     /// The drives listed (at most [`MAX_INPUTS`]).
+    #[inline]
     pub fn new(d: &[Drive]) -> Drives {
         assert!(
             !d.is_empty() && d.len() <= MAX_INPUTS,
@@ -167,6 +175,7 @@ impl Drives {
         out
     }
     /// The coordinates.
+    #[inline]
     pub fn coords(&self) -> Coords {
         let mut x = [0.0; MAX_INPUTS];
         for (x, d) in x.iter_mut().zip(self.iter()) {
@@ -175,12 +184,14 @@ impl Drives {
         Coords { len: self.len, x }
     }
     /// The first input's drive.
+    #[inline]
     pub fn first(&self) -> Drive {
         self.d[0]
     }
 }
 
 impl From<Drive> for Drives {
+    #[inline]
     fn from(d: Drive) -> Drives {
         Drives::new(&[d])
     }
@@ -188,6 +199,7 @@ impl From<Drive> for Drives {
 
 impl std::ops::Deref for Drives {
     type Target = [Drive];
+    #[inline]
     fn deref(&self) -> &[Drive] {
         &self.d[..self.len]
     }
