@@ -23,7 +23,16 @@
 //!   two (the per-position work runs in parallel, `mechplan::progress`);
 //! - `limit/four_bar`: a minimal closed-form four-bar (positions,
 //!   velocities, accelerations of the same quantities, no allocation),
-//!   the practical limit for the four-bar fixture.
+//!   the practical limit for the four-bar fixture;
+//! - `compiled/*`: positions and route (a) by the program compiled for the
+//!   mechanism (`mechplan::compiled::Program`), the same numbers to the bit.
+//!
+//! At the end the bench prints the ratios to the limit on the four-bar
+//! (issue 16's targets: route (a) within 2×, the numbers-only kernel
+//! within 10×) twice: from criterion's medians of this run, and from its
+//! own interleaved rounds (limit, route (a), kernel, each over a full turn,
+//! one after the other, the median of the rounds' ratios: a load that
+//! comes and goes during the run slows all three alike).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
@@ -219,7 +228,11 @@ fn check_limit(an: &Analysis, fb: &FourBar) {
     }
 }
 
+/// When this run started: criterion's medians written since are this run's.
+static STARTED: std::sync::OnceLock<std::time::SystemTime> = std::sync::OnceLock::new();
+
 fn per_position(cr: &mut Criterion) {
+    STARTED.get_or_init(std::time::SystemTime::now);
     let fb = FourBar::from_fixture();
     {
         let an = analysis("four_bar");
@@ -384,5 +397,187 @@ fn sweep(cr: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, per_position, draw, positions_sheet, sweep);
+/// Criterion's median of bench `id` (ns), if this run measured it.
+fn criterion_median(id: &str) -> Option<f64> {
+    let home = std::env::var_os("CRITERION_HOME")
+        .map(std::path::PathBuf::from)
+        .or_else(|| {
+            std::env::var_os("CARGO_TARGET_DIR")
+                .map(|t| std::path::PathBuf::from(t).join("criterion"))
+        })
+        .unwrap_or_else(|| {
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion")
+        });
+    let path = home.join(id.replace('/', "_")).join("new/estimates.json");
+    let written = std::fs::metadata(&path).ok()?.modified().ok()?;
+    if written < *STARTED.get()? {
+        return None;
+    }
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    v["median"]["point_estimate"].as_f64()
+}
+
+/// The ratios to the limit on the four-bar, printed by the bench itself.
+fn summary(_: &mut Criterion) {
+    STARTED.get_or_init(std::time::SystemTime::now);
+    let load = std::fs::read_to_string("/proc/loadavg")
+        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
+        .unwrap_or_else(|_| "unknown".into());
+    let fb = FourBar::from_fixture();
+    let an = analysis("four_bar");
+    let m = &an.mech;
+    let qs = turn(&an);
+    let (rate, rate2) = m.scene.input.rates();
+    let prog = Program::new(m, &an.structure, &an.need).unwrap();
+    let mut st = prog.state();
+    let mut ps = PositionSolver::new(m, &an.structure, an.need.clone()).unwrap();
+    let configs: Vec<Configuration> = qs.iter().map(|&q| ps.solve(q).unwrap()).collect();
+    let setup = Setup {
+        m,
+        s: &an.structure,
+        need: &an.need,
+        points: &an.points,
+        include: &an.include,
+    };
+    let mut ps = PositionSolver::new(m, &an.structure, an.need.clone()).unwrap();
+    // Seconds per position of one full turn.
+    let time = |f: &mut dyn FnMut(usize)| {
+        let t = std::time::Instant::now();
+        for k in 0..qs.len() {
+            f(k);
+        }
+        t.elapsed().as_secs_f64() / qs.len() as f64
+    };
+    let mut limit = |k: usize| {
+        black_box(fb.solve(black_box(qs[k])));
+    };
+    let mut compiled = |k: usize| {
+        let q = qs[k];
+        prog.solve(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
+            .unwrap();
+        black_box(&st.motion);
+    };
+    let mut interpreted = |k: usize| {
+        let q = qs[k];
+        let c = ps.solve(q).unwrap();
+        let mo = contour::solve(
+            m,
+            &an.structure,
+            &an.need,
+            &c,
+            Drive { q, rate, rate2 },
+            Order::Acceleration,
+        )
+        .unwrap();
+        black_box((c, mo));
+    };
+    let mut kernel = |k: usize| {
+        let q = qs[k];
+        black_box(
+            build_plans_numbers(
+                &setup,
+                &configs[k],
+                Drive { q, rate, rate2 },
+                Order::Acceleration,
+                an.drafting,
+            )
+            .unwrap(),
+        );
+    };
+    const ROUNDS: usize = 201;
+    let mut rounds: Vec<[f64; 4]> = Vec::with_capacity(ROUNDS);
+    for r in 0..=ROUNDS {
+        let t = [
+            time(&mut limit),
+            time(&mut compiled),
+            time(&mut interpreted),
+            time(&mut kernel),
+        ];
+        if r > 0 {
+            // (The first round warms up.)
+            rounds.push(t);
+        }
+    }
+    let median = |f: &dyn Fn(&[f64; 4]) -> f64| {
+        let mut v: Vec<f64> = rounds.iter().map(f).collect();
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let per = |i: usize| median(&|t| t[i]) * 1e9;
+    let ratio = |i: usize| median(&|t| t[i] / t[0]);
+    let verdict = |r: f64, target: f64| {
+        if r <= target {
+            format!("target ≤ {target}×: met")
+        } else {
+            format!("target ≤ {target}×: missed")
+        }
+    };
+    let ns = |x: f64| {
+        if x >= 1000.0 {
+            format!("{:.2} µs", x / 1000.0)
+        } else {
+            format!("{x:.1} ns")
+        }
+    };
+    println!();
+    println!(
+        "Summary: the four-bar, one position with velocities and accelerations (load average {load})"
+    );
+    let ids = [
+        "limit/four_bar",
+        "compiled/four_bar",
+        "contour/four_bar",
+        "construction_numbers/four_bar",
+    ];
+    match ids.map(criterion_median) {
+        [Some(l), Some(c), Some(i), Some(k)] => {
+            println!("  criterion's medians of this run:");
+            println!("    limit (closed form)          {}", ns(l));
+            println!(
+                "    route (a) compiled           {}  = {:.2}× the limit ({})",
+                ns(c),
+                c / l,
+                verdict(c / l, 2.0)
+            );
+            println!(
+                "    route (a) interpreted        {}  = {:.2}× the limit",
+                ns(i),
+                i / l
+            );
+            println!(
+                "    kernel, numbers only         {}  = {:.1}× the limit ({})",
+                ns(k),
+                k / l,
+                verdict(k / l, 10.0)
+            );
+        }
+        _ => println!(
+            "  (criterion did not measure all of {} in this run: no ratios of its medians)",
+            ids.join(", ")
+        ),
+    }
+    println!(
+        "  interleaved, {ROUNDS} rounds of a full turn each, medians (of the times; of the rounds' ratios):"
+    );
+    println!("    limit (closed form)          {}", ns(per(0)));
+    println!(
+        "    route (a) compiled           {}  = {:.2}× the limit ({})",
+        ns(per(1)),
+        ratio(1),
+        verdict(ratio(1), 2.0)
+    );
+    println!(
+        "    route (a) interpreted        {}  = {:.2}× the limit",
+        ns(per(2)),
+        ratio(2)
+    );
+    println!(
+        "    kernel, numbers only         {}  = {:.1}× the limit ({})",
+        ns(per(3)),
+        ratio(3),
+        verdict(ratio(3), 10.0)
+    );
+}
+
+criterion_group!(benches, per_position, draw, positions_sheet, sweep, summary);
 criterion_main!(benches);

@@ -33,6 +33,7 @@ pub struct Link {
 }
 
 impl Link {
+    #[inline]
     pub fn local_of(&self, point: usize) -> Option<Vec2> {
         self.points
             .iter()
@@ -165,6 +166,7 @@ impl Mechanism {
         self.scene.frame
     }
     /// Local coordinates of `point` on `link` (the point must be on it).
+    #[inline]
     pub fn local(&self, link: usize, point: usize) -> Vec2 {
         self.links[link]
             .local_of(point)
@@ -174,11 +176,18 @@ impl Mechanism {
     /// The size that scales a link's angle into a length (its extent; a
     /// one-point link: the largest of its neighbours'): tolerances and
     /// scalings about a link are relative to it, not to the whole sketch.
+    #[inline]
     pub fn link_scale(&self, l: usize) -> f64 {
         let own = self.links[l].extent;
         if own > 0.0 {
             return own;
         }
+        self.neighbours_scale(l)
+    }
+
+    /// [`Mechanism::link_scale`] of a one-point link.
+    #[cold]
+    fn neighbours_scale(&self, l: usize) -> f64 {
         // A one-point link: the links that share its point, its guides and
         // what slides on it, and theirs.
         let mut near: Vec<usize> = vec![l];

@@ -39,6 +39,8 @@ pub(super) struct Builder<'a> {
     pub drives: Drives,
     /// The first normal-component point laid off for each link (n₂ …).
     pub normal_of: Vec<Option<usize>>,
+    /// A scratch list of a link's known points (local place, plan point).
+    pub scratch: Vec<(Vec2, usize)>,
 }
 
 impl<'a> Builder<'a> {
@@ -65,36 +67,41 @@ impl<'a> Builder<'a> {
             nr: non_rotating(m),
             drives,
             normal_of: vec![None; m.links.len()],
+            scratch: Vec::new(),
         }
     }
     /// The same builder for a new construction at scale `mu`, its buffers
     /// emptied and kept.
-    pub fn again(mut self, mu: f64, rng: Option<StdRng>) -> Builder<'a> {
-        self.plan = self.plan.cleared(mu);
+    pub fn again(&mut self, mu: f64, rng: Option<StdRng>) {
+        self.plan.clear(mu);
         self.acts.clear();
         self.taken = 0;
         self.normal_of.fill(None);
         self.rng = rng;
-        self
     }
+    #[inline]
     pub fn m(&self) -> &'a Mechanism {
         self.st.m
     }
+    #[inline]
     pub fn vel_kind(&self) -> bool {
         self.plan.kind == PlanKind::Velocity
     }
     /// Take a step: counted always, recorded for the naming pass only
     /// when the build narrates (a probe or a numbers-only build would only
     /// pay for the record).
+    #[inline]
     pub fn step(&mut self, act: Act) {
         self.taken += 1;
         if self.record {
             self.acts.push(act);
         }
     }
+    #[inline]
     pub fn world(&self, link: usize, p: usize) -> Point {
         self.c.point(self.m(), link, p)
     }
+    #[inline]
     pub fn local(&self, link: usize, x: Point) -> Vec2 {
         self.c.pose(link).local(x)
     }
@@ -103,18 +110,21 @@ impl<'a> Builder<'a> {
         self.normal_of[link].get_or_insert(idx);
     }
     /// ω of a link from the velocity plan (for the acceleration plan).
+    #[inline]
     pub fn omega(&self, l: usize) -> f64 {
         match self.vel {
             Some(v) => v.rates[l].map(|r| r.0).unwrap_or(0.0),
             None => self.plan.rates[l].map(|r| r.0).unwrap_or(0.0),
         }
     }
+    #[inline]
     pub fn omega_err(&self, l: usize) -> f64 {
         self.vel
             .and_then(|v| v.rates[l].map(|r| r.1))
             .unwrap_or(0.0)
     }
 
+    #[inline]
     pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
         self.plan.points.push(PlanPoint {
             id,
@@ -130,6 +140,7 @@ impl<'a> Builder<'a> {
     /// How close two places of one link are the same material point: a
     /// billionth of the link's own size, above the rounding of the
     /// coordinates (never a fraction of the whole sketch).
+    #[inline]
     pub fn same_point(&self, link: usize, x: Point) -> f64 {
         ACCURACY.same_point * self.m().link_scale(link)
             + ACCURACY.tangency_roundings * f64::EPSILON * x.to_vec2().hypot()
@@ -222,6 +233,7 @@ impl<'a> Builder<'a> {
 
     /// The pencil's error of one operation: a random displacement within δ
     /// when emulating hand drafting, else zero.
+    #[inline]
     pub fn pencil(&mut self) -> Vec2 {
         use rand::Rng;
         let delta = self.plan.delta;
@@ -238,6 +250,7 @@ impl<'a> Builder<'a> {
 
     /// Is this mistake being made at this decision? Counts the decisions
     /// of its kind and records the first step where it is made.
+    #[inline]
     pub fn making(&mut self, m: Mistake) -> bool {
         if self.variant.on.is_some_and(|k| k != self.plan.kind) {
             return false;
@@ -404,8 +417,28 @@ impl<'a> Builder<'a> {
                 AssurGroup::Dyad(d) => self.dyad(d)?,
                 AssurGroup::Triad(t) => self.triad(t)?,
             }
-            // The reported points of the group's links.
-            for l in g.links() {
+            // The reported points of the group's links, in scene order
+            // (`AssurGroup::links`, without its allocation).
+            let mut links = [usize::MAX; 4];
+            let n = match g {
+                AssurGroup::Dyad(d) => {
+                    links[..2].copy_from_slice(&d.links);
+                    match d.cylinder {
+                        Some(c) => {
+                            links[2] = c.other;
+                            3
+                        }
+                        None => 2,
+                    }
+                }
+                AssurGroup::Triad(t) => {
+                    links[..3].copy_from_slice(&t.leashes);
+                    links[3] = t.base;
+                    4
+                }
+            };
+            links[..n].sort_unstable();
+            for &l in &links[..n] {
                 for &p in &m.links[l].points {
                     if self.st.points.contains(&p)
                         && self.plan.of_point[p].is_none()

@@ -188,7 +188,7 @@ impl Builder<'_> {
             PointId::Coincident { point, link } => (point, Name::On(point, link)),
             _ => unreachable!("a group's point is a joint"),
         };
-        if let Some(order) = equations {
+        if let Some(order) = equations.filter(|_| self.record) {
             let [a, b] = order.map(|i| match sides[i] {
                 Side::Rigid { link, from } => self.relation(xn, from.2, true, link),
                 Side::Slide { kn, slide, .. } => self.relation(xn, kn, false, slide.known),
@@ -199,6 +199,10 @@ impl Builder<'_> {
                 }
             });
             self.step(Act::Equation(Eqn::Pair(a, b)));
+        } else if equations.is_some() {
+            // The same step, counted, without building what only its
+            // record would keep.
+            self.taken += 1;
         }
         let [(mut la, ta), (mut lb, tb)] = sides.map(|side| match side {
             Side::Rigid { link, from } => self.rigid(link, from, (x, xn)),

@@ -81,7 +81,7 @@ fn construct(
     };
     // The real construction at that scale (the steps' numbers are in mm),
     // in the first one's buffers.
-    let mut b = b.again(mu, rng(2));
+    b.again(mu, rng(2));
     b.record = naming == Naming::Full;
     b.run()?;
     Ok((b.plan, b.acts))

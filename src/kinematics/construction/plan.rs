@@ -248,25 +248,28 @@ pub struct Plan {
 impl Plan {
     /// An empty plan for `m` at scale `mu`.
     pub(super) fn empty(kind: PlanKind, mu: f64, delta: f64, m: &Mechanism) -> Plan {
+        // Room for a plan's usual size: its points and what it finds on
+        // each link, without growing (and copying) on the way.
+        let room = 2 * (m.scene.points.len() + m.links.len());
         Plan {
             kind,
             mu,
             delta,
-            points: Vec::new(),
+            points: Vec::with_capacity(room),
             steps: Vec::new(),
             rates: vec![None; m.links.len()],
             rate_len: vec![0.0; m.links.len()],
             rate_sense: vec![true; m.links.len()],
-            measured: Vec::new(),
+            measured: Vec::with_capacity(m.scene.points.len() + m.links.len()),
             worst_sin: 1.0,
-            body: Vec::new(),
+            body: Vec::with_capacity(room),
             of_point: vec![None; m.scene.points.len()],
             mistake_step: None,
             decisions: 0,
         }
     }
-    /// The same plan emptied, at scale `mu` (its buffers kept).
-    pub(super) fn cleared(mut self, mu: f64) -> Plan {
+    /// Empty the plan, at scale `mu` (its buffers kept).
+    pub(super) fn clear(&mut self, mu: f64) {
         self.mu = mu;
         self.points.clear();
         self.steps.clear();
@@ -279,7 +282,6 @@ impl Plan {
         self.worst_sin = 1.0;
         self.mistake_step = None;
         self.decisions = 0;
-        self
     }
     /// The plan point of the material point of `link` at `local`.
     pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {

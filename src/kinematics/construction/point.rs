@@ -87,14 +87,32 @@ impl Builder<'_> {
         if let Some(i) = self.find(link, x) {
             return i;
         }
+        // The link's known points, in the builder's scratch list (no
+        // allocation once it has grown).
+        let mut known = std::mem::take(&mut self.scratch);
+        known.clear();
+        known.extend(
+            self.plan
+                .body
+                .iter()
+                .filter(|k| k.link == link)
+                .map(|k| (k.local, k.point)),
+        );
+        let out = self.point_from(link, x, id, figure, &known);
+        self.scratch = known;
+        out
+    }
+
+    /// [`Builder::point_on`] from the link's known points `known`.
+    fn point_from(
+        &mut self,
+        link: usize,
+        x: Point,
+        id: PointId,
+        figure: Name,
+        known: &[(Vec2, usize)],
+    ) -> usize {
         let m = self.m();
-        let known: Vec<(Vec2, usize)> = self
-            .plan
-            .body
-            .iter()
-            .filter(|k| k.link == link)
-            .map(|k| (k.local, k.point))
-            .collect();
         if link == m.frame() {
             let out = self.add_point(id, Vec2::ZERO, 0.0);
             self.step(Act::Coincide {
@@ -122,7 +140,7 @@ impl Builder<'_> {
             !known.is_empty(),
             "a link is constructed only after one of its points"
         );
-        let out = match self.best_construction(link, local, x, &known) {
+        let out = match self.best_construction(link, local, x, known) {
             Construction::Figure { a, b, ratio, err } => {
                 let ((la, pa), (lb, pb)) = (known[a], known[b]);
                 let mut ratio = ratio;

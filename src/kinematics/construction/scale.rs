@@ -39,9 +39,19 @@ impl Field {
             lo = (lo.0.min(p.x), lo.1.min(p.y));
             hi = (hi.0.max(p.x), hi.1.max(p.y));
         }
-        let mu = standard_scale(largest, self.longest)
-            .max(standard_scale(hi.0 - lo.0, self.width))
-            .max(standard_scale(hi.1 - lo.1, self.height));
+        // The standard scale grows with the ratio it fits (the smallest
+        // standard value above it), so the largest of the three scales is
+        // the one of the largest ratio: one search instead of three.
+        let target = [
+            (largest, self.longest),
+            (hi.0 - lo.0, self.width),
+            (hi.1 - lo.1, self.height),
+        ]
+        .into_iter()
+        .filter(|&(x, _)| fits_something(x))
+        .map(|(x, max_mm)| x / max_mm)
+        .fold(None, |a: Option<f64>, t| Some(a.map_or(t, |a| a.max(t))));
+        let mu = target.map_or(0.0, standard_of_ratio);
         if mu > 0.0 { mu } else { 1.0 }
     }
 }
@@ -50,11 +60,20 @@ impl Field {
 /// longer than `max_mm`. With the standard steps (at most ×2 apart) the
 /// largest segment then lies between `max_mm`/2 and `max_mm`.
 pub fn standard_scale(largest: f64, max_mm: f64) -> f64 {
-    if largest.is_nan() || largest <= 0.0 || !largest.is_finite() {
+    if !fits_something(largest) {
         // Nothing to fit: the smallest scale, so that it never dominates.
         return 0.0;
     }
-    let target = largest / max_mm;
+    standard_of_ratio(largest / max_mm)
+}
+
+/// Whether a value has a scale to fit it by (finite, above zero).
+fn fits_something(largest: f64) -> bool {
+    !(largest.is_nan() || largest <= 0.0 || !largest.is_finite())
+}
+
+/// The smallest standard value not below `target` (real value per mm).
+fn standard_of_ratio(target: f64) -> f64 {
     let mut k = target.log10().floor() as i32 - 1;
     loop {
         for m in MANTISSAS {
@@ -82,6 +101,28 @@ fn round_sig(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn one_search_gives_the_largest_of_the_three_scales() {
+        let f = Field::default();
+        let mut x = 0.37f64;
+        for _ in 0..2000 {
+            // A pseudo-random walk over many decades.
+            x = (x * 7919.0 + 0.123).fract();
+            let p = [
+                kurbo::Vec2::new(x * 10f64.powi((x * 13.0) as i32 - 6), -x),
+                kurbo::Vec2::new(-3.0 * x, 10f64.powi((x * 7.0) as i32 - 3)),
+            ];
+            let largest = p.iter().map(|v| v.hypot()).fold(0.0, f64::max);
+            let (w, h) = ((p[0].x - p[1].x).abs(), (p[0].y - p[1].y).abs());
+            let three = standard_scale(largest, f.longest)
+                .max(standard_scale(w, f.width))
+                .max(standard_scale(h, f.height));
+            assert_eq!(f.scale(p.into_iter()), three, "{p:?}");
+        }
+        assert_eq!(f.scale(std::iter::empty()), 1.0);
+        assert_eq!(f.scale([kurbo::Vec2::ZERO].into_iter()), 1.0);
+    }
 
     #[test]
     fn nothing_to_fit_never_dominates() {
