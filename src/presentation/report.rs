@@ -9,6 +9,7 @@ use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
+use crate::verification::crosscheck::Method;
 use serde_json::{Map, Value, json};
 use std::fmt::Write as _;
 
@@ -230,14 +231,27 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         o.insert("plans".into(), Value::Object(pl));
     }
     if let Some(c) = &s.check {
-        let mut check = json!({
-            "max_rel_diff": num(c.max_rel_diff),
-            "worst": c.worst,
-            "conditioning": num(c.conditioning),
-            "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
-        });
+        let mut check = match c.method {
+            Method::Routes => json!({
+                "max_rel_diff": num(c.max_rel_diff),
+                "worst": c.worst,
+                "conditioning": num(c.conditioning),
+                "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
+            }),
+            // The fast path: route (b)'s equations at route (a)'s answer.
+            Method::Residuals { .. } => json!({
+                "method": "residuals",
+                "max_rel_residual": num(c.max_rel_diff),
+                "worst": c.worst,
+                "conditioning": num(c.conditioning),
+                "time_s": { "contour": num(c.contour_time), "check": num(c.constraint_time) },
+            }),
+        };
         if let Some(sens) = c.data_sensitivity {
             check["data_sensitivity"] = num(sens);
+        }
+        if let Method::Residuals { linear_data } = c.method {
+            check["data_check"] = json!(if linear_data { "linear" } else { "solved" });
         }
         if let Some(b) = &c.bound {
             let mut fields = vec![("p", b.p), ("angle", b.angle)];
@@ -631,14 +645,24 @@ fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
         }
     }
     if let Some(c) = &s.check {
-        let _ = writeln!(
-            t,
-            "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
-            c.max_rel_diff,
-            c.worst,
-            c.contour_time * 1e6,
-            c.constraint_time * 1e6
-        );
+        let _ = match c.method {
+            Method::Routes => writeln!(
+                t,
+                "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
+                c.max_rel_diff,
+                c.worst,
+                c.contour_time * 1e6,
+                c.constraint_time * 1e6
+            ),
+            Method::Residuals { .. } => writeln!(
+                t,
+                "  cross-check by residuals: max rel residual {:.1e} ({}); contour route {:.0} µs, check {:.0} µs",
+                c.max_rel_diff,
+                c.worst,
+                c.contour_time * 1e6,
+                c.constraint_time * 1e6
+            ),
+        };
     }
     t
 }
