@@ -84,15 +84,23 @@ impl Analysis {
         // The rounding of each input value as written (none for `count`),
         // position after position.
         let w = m.scene.input_count();
-        let rounding: Vec<Coords> = if m.scene.input_rounding.len() == values.len() * w {
-            m.scene.input_rounding.chunks(w).map(Coords::new).collect()
-        } else {
-            vec![Coords::new(&vec![0.0; w]); values.len()]
-        };
+        // (Made a chunk at a time: a sweep's memory is its input values.)
+        let rounded = m.scene.input_rounding.len() == values.len() * w;
         values
             .chunks(RUN_CHUNK)
-            .zip(rounding.chunks(RUN_CHUNK))
-            .try_for_each(|(chunk, rounding)| {
+            .enumerate()
+            .try_for_each(|(k, chunk)| {
+                let from = k * RUN_CHUNK;
+                let rounding: Vec<Coords> = (from..from + chunk.len())
+                    .map(|i| {
+                        if rounded {
+                            Coords::new(&m.scene.input_rounding[i * w..(i + 1) * w])
+                        } else {
+                            Coords::new(&vec![0.0; w])
+                        }
+                    })
+                    .collect();
+                let rounding = &rounding[..];
                 let checks = Checks {
                     changed: &changed,
                     residuals: eqs.as_ref(),
