@@ -338,16 +338,20 @@ fn plan_point_labels_read_unambiguously() {
         let (_, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
         s[0].plans.as_ref().unwrap().acceleration.clone().unwrap()
     };
-    // The shaper has a point K.
+    // The shaper's point K is on the ram, link 5: its Coriolis point of
+    // link 3 is the lecture's k₃.
     let shaper = fixture("shaper_fig2_11");
-    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("κ".into(), "3".into()));
-    // Without it the Coriolis point is the lecture's k.
+    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("k".into(), "3".into()));
+    // With the slider's pin on the rocking guide 3 called K, K of link 3
+    // is k₃ on the plan: the Coriolis point becomes κ₃.
     let renamed = shaper
         .to_string()
         .replace("\"K\"", "\"Q\"")
-        .replace("\"K-M\"", "\"Q-M\"");
+        .replace("\"K-M\"", "\"Q-M\"")
+        .replace("\"B\"", "\"K\"")
+        .replace("\"A-B\"", "\"A-K\"");
     let renamed: Value = serde_json::from_str(&renamed).unwrap();
-    assert_eq!(label(&acc(renamed), "k_3"), ("k".into(), "3".into()));
+    assert_eq!(label(&acc(renamed), "k_3"), ("κ".into(), "3".into()));
     let class3 = acc(fixture("class3_004"));
     assert_eq!(label(&class3, "s_3"), ("σ".into(), "3".into()));
     assert_eq!(label(&class3, "n_3'"), ("n′".into(), "3".into()));
