@@ -178,6 +178,12 @@ fn rendered_sheets_pass_the_layout_checks() {
                 "{where_}: drawing leaves the page: {bb:?} in {size:?}"
             );
             let labels = label_boxes(&s.svg);
+            // How far apart two boxes are (0 when they touch or overlap).
+            let apart = |a: &kurbo::Rect, b: &kurbo::Rect| {
+                let dx = (a.x0 - b.x1).max(b.x0 - a.x1).max(0.0);
+                let dy = (a.y0 - b.y1).max(b.y0 - a.y1).max(0.0);
+                dx.max(dy)
+            };
             for i in 0..labels.len() {
                 for j in i + 1..labels.len() {
                     let (a, b) = (&labels[i], &labels[j]);
@@ -187,6 +193,16 @@ fn rendered_sheets_pass_the_layout_checks() {
                         a.0,
                         b.0
                     );
+                    // A link's number stands apart: "S₄ 4" is not one label.
+                    if a.0.starts_with("link-") || b.0.starts_with("link-") {
+                        assert!(
+                            apart(&a.1, &b.1) >= 1.0,
+                            "{where_}: {} and {} read as one ({:.2} mm apart)",
+                            a.0,
+                            b.0,
+                            apart(&a.1, &b.1)
+                        );
+                    }
                 }
             }
             let lines: Vec<&str> = s.svg.lines().collect();
