@@ -309,3 +309,34 @@ fn the_command_streams_a_fast_sweep() {
     assert_eq!(std::fs::read_to_string(&out).unwrap(), b);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A branch point that leaves the sign of det Φ_q alone: the slider's pin
+/// passes through its rotating guide's pivot at φ = 270°. Route (a)'s
+/// closed form turns the guide by 180° there; route (b) cannot follow
+/// past it and the full path refuses; the fast path finds the jump by
+/// halving the span where a link turns much, and refuses too, at 270°.
+/// A sweep that stops short of it passes.
+#[test]
+fn the_fast_path_refuses_a_jump_of_route_a() {
+    let mut v = fixture("stress/coincident_pin_through_guide_pivot");
+    // (The scene's angles are in radians.)
+    let at = |n: usize| {
+        (0..n)
+            .map(|k| (0.5 + k as f64).to_radians())
+            .collect::<Vec<_>>()
+    };
+    v["positions"] = json!({ "angles": at(360) });
+    let full = analysis(&v).run().unwrap_err().to_string();
+    assert!(full.contains("269.99"), "{full}");
+    let fast = analysis(&without_plans(v.clone()))
+        .run()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        fast.contains("jumps here") && fast.contains("270"),
+        "{fast}"
+    );
+    v["positions"] = json!({ "angles": at(260) });
+    let solved = analysis(&without_plans(v)).run().unwrap();
+    assert_eq!(solved.len(), 260);
+}

@@ -81,6 +81,9 @@ impl Analysis {
             .as_ref()
             .and_then(|e| e.sketch_orientation)
             .map(|o| (o, None));
+        // … and route (a)'s answers one continuous motion: closed forms of
+        // class II groups (a class III group is tracked in small steps).
+        let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
         // The rounding of each input value as written (none for `count`),
         // position after position.
         let w = m.scene.input_count();
@@ -107,6 +110,9 @@ impl Analysis {
                 };
                 self.run_chunk(chunk, rounding, &mut ps, &mut cs, &checks, bar, &mut |s| {
                     self.same_orientation(&mut orientation, &s)?;
+                    if let Some((probe, last)) = &mut motion {
+                        self.continuous(probe, last, &s)?;
+                    }
                     f(s)
                 })
             })
@@ -194,6 +200,85 @@ impl Analysis {
         }
         *last = Some((o, Some(q)));
         Ok(())
+    }
+
+    /// The fast path's check that route (a)'s answers are one continuous
+    /// motion, as route (b)'s path following would find: its closed forms
+    /// keep the sketch's branch by a sign, and a branch point that leaves
+    /// det Φ_q's sign alone (a slider's pin passing through its rotating
+    /// guide's pivot) turns their answer by 180° at one input value. Where
+    /// a link turns or moves much between two positions (0.25 rad, a
+    /// quarter of the sketch's size), the span is halved, route (a) solved
+    /// at the middle, and each half judged again: a continuous motion's
+    /// change shrinks with its span, a jump does not and is refused.
+    fn continuous(
+        &self,
+        probe: &mut PositionSolver,
+        last: &mut Option<(Coords, Configuration)>,
+        s: &Solved,
+    ) -> Result<()> {
+        let q = s.drives.coords();
+        if let Some((q0, c0)) = last.take() {
+            let span = self.path_span(probe, q0, q);
+            self.no_jump(probe, q0, &c0, span, &s.config, 0)?;
+        }
+        *last = Some((q, s.config.clone()));
+        Ok(())
+    }
+
+    /// [`Analysis::continuous`] over `span` from `q0` (configuration `c0`)
+    /// to the configuration `c1`, at bisection depth `depth`.
+    fn no_jump(
+        &self,
+        probe: &mut PositionSolver,
+        q0: Coords,
+        c0: &Configuration,
+        span: Coords,
+        c1: &Configuration,
+        depth: usize,
+    ) -> Result<()> {
+        let m = &self.mech;
+        let change = (0..m.links.len())
+            .filter(|&l| l != m.frame() && self.link(l))
+            .filter_map(|l| Some((c0.poses[l]?, c1.poses[l]?)))
+            .map(|(a, b)| {
+                wrap_pi(b.angle - a.angle)
+                    .abs()
+                    .max((b.origin - a.origin).hypot() / m.size)
+            })
+            .fold(0.0f64, f64::max);
+        if change <= 0.25 {
+            return Ok(());
+        }
+        let wide = span
+            .iter()
+            .zip(q0.iter())
+            .any(|(d, x)| d.abs() > 1e-12 * (1.0 + x.abs()));
+        if !wide || depth >= 64 {
+            let mut at = q0;
+            for (x, d) in at.iter_mut().zip(span.iter()) {
+                *x += d;
+            }
+            return Err(Error::singular(
+                crate::kinematics::positions::describe_input(m, &at),
+                format!(
+                    "route (a)'s answer jumps here (a link turns or moves by {change:.3} at one input value): a branch point its closed forms pass without a continuous motion; with plans (want.plans) route (b) follows the motion and says where it stops"
+                ),
+            ));
+        }
+        let (mut mid, mut half) = (q0, span);
+        for ((x, h), d) in mid.iter_mut().zip(half.iter_mut()).zip(span.iter()) {
+            *h = d / 2.0;
+            *x += *h;
+        }
+        let cm = probe.solve_at_coords(mid).map_err(|e| {
+            Error::singular(
+                crate::kinematics::positions::describe_input(m, &mid),
+                format!("the mechanism does not assemble between two positions of the sweep ({e}): no continuous motion joins them"),
+            )
+        })?;
+        self.no_jump(probe, q0, c0, half, &cm, depth + 1)?;
+        self.no_jump(probe, mid, &cm, half, c1, depth + 1)
     }
 
     /// Which way the inputs go from `from` to `to`: a slider straight; a
