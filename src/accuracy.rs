@@ -56,6 +56,15 @@ pub struct Accuracy {
     pub max_rel_diff: f64,
     /// Units of its own rounding every datum is moved by in the data check.
     pub data_roundings: f64,
+    /// Without plans (the fast path), the data check is route (b)'s
+    /// equations of the changed data linearized at route (a)'s answer
+    /// where the scaled Jacobian's conditioning is at least this; below
+    /// it (near a singular position, where the change is not linear in
+    /// the data) route (a) is solved again on the changed data.
+    pub linear_data_conditioning: f64,
+    /// … and where the linearized sensitivity is below this: nearer the
+    /// refusal (`max_rel_diff`) it is decided by the solve again.
+    pub linear_data_sensitivity: f64,
     /// The constant c of the printed bound (c·ε·κ + 4·d + 4·σ)·S: the
     /// roundings per equation and their accumulation through the groups.
     pub bound_roundings: f64,
@@ -84,6 +93,8 @@ pub const ACCURACY: Accuracy = Accuracy {
     division_over_arcs: 2.0,
     max_rel_diff: 1e-6,
     data_roundings: 8.0,
+    linear_data_conditioning: 1e-3,
+    linear_data_sensitivity: 1e-9,
     bound_roundings: 256.0,
     max_tolerance_of_plan: 0.2,
     distinct_misfit: 2.0,

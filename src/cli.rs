@@ -24,8 +24,10 @@ pub enum Command {
     Solve {
         /// The scene file (JSON, see docs/scene-format.md).
         scene: PathBuf,
-        #[arg(long, value_enum, default_value_t = Format::Table)]
-        format: Format,
+        /// table; json (the result file); csv (a row per position: inputs, the wanted
+        /// points' x, y, v, a and links' angle, ω, ε); jsonl (a position per line).
+        #[arg(long, value_enum, default_value_t = SolveFormat::Table)]
+        format: SolveFormat,
         /// Write to this file (atomically) instead of standard output.
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -197,6 +199,15 @@ impl From<DrawFormat> for drawing::Format {
 pub enum CheckFormat {
     Text,
     Json,
+}
+
+/// `solve`'s formats: the table, the JSON result, and the streaming ones.
+#[derive(Clone, Copy, PartialEq, ValueEnum)]
+pub enum SolveFormat {
+    Table,
+    Json,
+    Csv,
+    Jsonl,
 }
 
 #[derive(Clone, Copy, PartialEq, ValueEnum)]

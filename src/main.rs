@@ -4,7 +4,7 @@
 mod cli;
 
 use clap::Parser;
-use cli::{CheckFormat, Cli, Command, Format};
+use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
 use mechplan::check::answer::Reading;
 use mechplan::drawing;
 use mechplan::output::{stdout, wrote};
@@ -39,8 +39,10 @@ fn command(c: Command) -> Result<u8, Error> {
         } => {
             let style = match (steps, format) {
                 (true, _) => Results::Steps(lang),
-                (false, Format::Table) => Results::Table,
-                (false, Format::Json) => Results::Json,
+                (false, SolveFormat::Table) => Results::Table,
+                (false, SolveFormat::Json) => Results::Json,
+                (false, SolveFormat::Csv) => Results::Csv,
+                (false, SolveFormat::Jsonl) => Results::Jsonl,
             };
             Study::from_path(&scene)?.write_results(style, output.as_deref())?;
         }

@@ -55,6 +55,12 @@ pub enum Results {
     Table,
     /// The result file of the contract.
     Json,
+    /// A row per position: the input values, the wanted points' places
+    /// and rates, the solved links' angles and rates (docs/scene-format.md,
+    /// "CSV and JSONL results").
+    Csv,
+    /// A line per position: the position's object of the JSON result.
+    Jsonl,
     /// The construction as numbered lecture-style steps.
     Steps(Option<Lang>),
 }
@@ -215,6 +221,8 @@ impl Study {
         let style = match style {
             Results::Table => report::Style::Table,
             Results::Json => report::Style::Json,
+            Results::Csv => report::Style::Csv,
+            Results::Jsonl => report::Style::Jsonl,
             Results::Steps(lang) => report::Style::Steps(lang.unwrap_or_else(|| self.lang())),
         };
         let write = |out: &mut dyn FnMut(&str) -> Result<()>| -> Result<()> {

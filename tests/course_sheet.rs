@@ -239,3 +239,22 @@ fn a_course_sheet_in_ukrainian() {
         assert!(!point, "a decimal point in a Ukrainian sheet: {t}");
     }
 }
+
+/// A slide along the frame's guide is named by the guide's point under
+/// the slider (v_DD0, a^r_DD0) at every position, even where the two
+/// pistons of the compressor meet and the construction draws D's guide
+/// line through b₀: one row per quantity, not a row split in two.
+#[test]
+fn slides_keep_their_names_in_the_results_table() {
+    let sheet = course("compressor_fig2_12", SheetSize::A1);
+    let subs: Vec<&str> = sheet
+        .svg
+        .split('>')
+        .filter_map(|t| t.strip_suffix("</tspan"))
+        .collect();
+    assert!(subs.contains(&"DD0") && subs.contains(&"BB0"), "{subs:?}");
+    assert!(
+        !subs.contains(&"DB0") && !subs.contains(&"BD0"),
+        "a split row"
+    );
+}

@@ -197,3 +197,21 @@ fn a_point_along_its_path() {
         );
     }
 }
+
+/// The displacement runs from the extreme position in the sense of the
+/// working stroke: never below the axis (the shaper's ram goes toward −x,
+/// its slide along the guide is negative; the diagram's s is not).
+#[test]
+fn the_displacement_is_positive_along_the_working_stroke() {
+    for name in FULL_TURN {
+        let an = analysis(name);
+        let d = Diagrams::build(&an, default_output(&an), 12, 180.0).unwrap();
+        let top = d.s.iter().fold(0.0f64, |a, &x| a.max(x));
+        assert!(top > 0.0, "{name}: {:?}", d.s);
+        for (k, x) in d.s.iter().enumerate() {
+            assert!(*x >= -1e-12 * top, "{name}: s at node {k} is {x}");
+        }
+        // Its analogue is the derivative of that s: rising at the start.
+        assert!(d.ds_mid[0] > 0.0, "{name}: {:?}", d.ds_mid);
+    }
+}

@@ -178,6 +178,12 @@ fn rendered_sheets_pass_the_layout_checks() {
                 "{where_}: drawing leaves the page: {bb:?} in {size:?}"
             );
             let labels = label_boxes(&s.svg);
+            // How far apart two boxes are (0 when they touch or overlap).
+            let apart = |a: &kurbo::Rect, b: &kurbo::Rect| {
+                let dx = (a.x0 - b.x1).max(b.x0 - a.x1).max(0.0);
+                let dy = (a.y0 - b.y1).max(b.y0 - a.y1).max(0.0);
+                dx.max(dy)
+            };
             for i in 0..labels.len() {
                 for j in i + 1..labels.len() {
                     let (a, b) = (&labels[i], &labels[j]);
@@ -187,6 +193,16 @@ fn rendered_sheets_pass_the_layout_checks() {
                         a.0,
                         b.0
                     );
+                    // A link's number stands apart: "S₄ 4" is not one label.
+                    if a.0.starts_with("link-") || b.0.starts_with("link-") {
+                        assert!(
+                            apart(&a.1, &b.1) >= 1.0,
+                            "{where_}: {} and {} read as one ({:.2} mm apart)",
+                            a.0,
+                            b.0,
+                            apart(&a.1, &b.1)
+                        );
+                    }
                 }
             }
             let lines: Vec<&str> = s.svg.lines().collect();
@@ -338,16 +354,20 @@ fn plan_point_labels_read_unambiguously() {
         let (_, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
         s[0].plans.as_ref().unwrap().acceleration.clone().unwrap()
     };
-    // The shaper has a point K.
+    // The shaper's point K is on the ram, link 5: its Coriolis point of
+    // link 3 is the lecture's k₃.
     let shaper = fixture("shaper_fig2_11");
-    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("κ".into(), "3".into()));
-    // Without it the Coriolis point is the lecture's k.
+    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("k".into(), "3".into()));
+    // With the slider's pin on the rocking guide 3 called K, K of link 3
+    // is k₃ on the plan: the Coriolis point becomes κ₃.
     let renamed = shaper
         .to_string()
         .replace("\"K\"", "\"Q\"")
-        .replace("\"K-M\"", "\"Q-M\"");
+        .replace("\"K-M\"", "\"Q-M\"")
+        .replace("\"B\"", "\"K\"")
+        .replace("\"A-B\"", "\"A-K\"");
     let renamed: Value = serde_json::from_str(&renamed).unwrap();
-    assert_eq!(label(&acc(renamed), "k_3"), ("k".into(), "3".into()));
+    assert_eq!(label(&acc(renamed), "k_3"), ("κ".into(), "3".into()));
     let class3 = acc(fixture("class3_004"));
     assert_eq!(label(&class3, "s_3"), ("σ".into(), "3".into()));
     assert_eq!(label(&class3, "n_3'"), ("n′".into(), "3".into()));

@@ -463,9 +463,10 @@ fn the_cylinder_in_the_steps() {
         "v_B = v̳_̳C̳ + v̳_̳B̳3̳B̳2̳ + v̲_̲B̲2̲C̲",
         "From p_v lay off p_vr3 = v_B3B2/μ_v",
         "through r3 a line ⊥ CB2",
-        // The boom has a point K (plan point k): the Coriolis points are κ.
-        "n2κ3 = a^k_B3B2 = 2·ω2·v_B3B2/μ_a",
-        "κ3r3 = a^r_B3B2/μ_a",
+        // The boom's point K is not on the cylinder's pair: the Coriolis
+        // point is the lecture's k3.
+        "n2k3 = a^k_B3B2 = 2·ω2·v_B3B2/μ_a",
+        "k3r3 = a^r_B3B2/μ_a",
         "ω3 = ω2: links 3 and 2 form a prismatic pair",
     ] {
         assert!(text.contains(want), "missing {want:?} in\n{text}");

@@ -385,7 +385,8 @@ impl<'a> PositionSolver<'a> {
         })
     }
 
-    fn has_triads(&self) -> bool {
+    /// Whether a class III group is tracked (its positions by continuation).
+    pub fn has_triads(&self) -> bool {
         self.s
             .groups
             .iter()

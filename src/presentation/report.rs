@@ -9,6 +9,7 @@ use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
+use crate::verification::crosscheck::Method;
 use serde_json::{Map, Value, json};
 use std::fmt::Write as _;
 
@@ -230,14 +231,27 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         o.insert("plans".into(), Value::Object(pl));
     }
     if let Some(c) = &s.check {
-        let mut check = json!({
-            "max_rel_diff": num(c.max_rel_diff),
-            "worst": c.worst,
-            "conditioning": num(c.conditioning),
-            "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
-        });
+        let mut check = match c.method {
+            Method::Routes => json!({
+                "max_rel_diff": num(c.max_rel_diff),
+                "worst": c.worst,
+                "conditioning": num(c.conditioning),
+                "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
+            }),
+            // The fast path: route (b)'s equations at route (a)'s answer.
+            Method::Residuals { .. } => json!({
+                "method": "residuals",
+                "max_rel_residual": num(c.max_rel_diff),
+                "worst": c.worst,
+                "conditioning": num(c.conditioning),
+                "time_s": { "contour": num(c.contour_time), "check": num(c.constraint_time) },
+            }),
+        };
         if let Some(sens) = c.data_sensitivity {
             check["data_sensitivity"] = num(sens);
+        }
+        if let Method::Residuals { linear_data } = c.method {
+            check["data_check"] = json!(if linear_data { "linear" } else { "solved" });
         }
         if let Some(b) = &c.bound {
             let mut fields = vec![("p", b.p), ("angle", b.angle)];
@@ -267,8 +281,106 @@ pub enum Style {
     Table,
     /// [`to_json`], pretty-printed, with a final newline.
     Json,
+    /// A row per position ([`csv_head`], [`csv_row`]).
+    Csv,
+    /// A line per position: [`position_json`] on one line.
+    Jsonl,
     /// [`to_steps`].
     Steps(Lang),
+}
+
+/// A CSV field: as it is, or in double quotes (doubled inside) when it
+/// holds a comma, a quote or a line break (RFC 4180).
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// A number as the JSON result writes it (shortest round trip, no `-0`).
+fn csv_num(x: f64) -> String {
+    num(x).to_string()
+}
+
+/// The CSV result's header line (docs/scene-format.md, "CSV and JSONL
+/// results"): `position`; each input's value (`phi_ID` in degrees for a
+/// crank, `s_ID` in m for a slider, ID its link's id); each wanted point's
+/// `x_P`, `y_P`, then with velocities `vx_P`, `vy_P`, with accelerations
+/// `ax_P`, `ay_P`; each solved link's `angle_N` (degrees), then `omega_N`,
+/// `epsilon_N` as wanted.
+pub fn csv_head(an: &Analysis) -> String {
+    let m = &an.mech;
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    let mut cols = vec!["position".to_string()];
+    for spec in m.scene.inputs() {
+        let id = m.link_id(spec.link());
+        cols.push(match spec {
+            InputSpec::Crank { .. } => format!("phi_{id}"),
+            InputSpec::Slider { .. } => format!("s_{id}"),
+        });
+    }
+    for &p in &an.points {
+        let name = m.point_name(p);
+        let mut kinds = vec!["x", "y"];
+        if vel {
+            kinds.extend(["vx", "vy"]);
+        }
+        if acc {
+            kinds.extend(["ax", "ay"]);
+        }
+        cols.extend(kinds.iter().map(|k| format!("{k}_{name}")));
+    }
+    for l in (0..m.links.len()).filter(|&l| an.link(l)) {
+        let id = m.link_id(l);
+        cols.push(format!("angle_{id}"));
+        if vel {
+            cols.push(format!("omega_{id}"));
+        }
+        if acc {
+            cols.push(format!("epsilon_{id}"));
+        }
+    }
+    let cols: Vec<String> = cols.iter().map(|c| csv_field(c)).collect();
+    cols.join(",") + "\n"
+}
+
+/// The CSV row of position `k` (from 0), the columns of [`csv_head`], the
+/// numbers as the JSON result writes them.
+pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
+    let m = &an.mech;
+    let vel = an.order.is_some();
+    let acc = an.order == Some(Order::Acceleration);
+    let mut row = Vec::with_capacity(64);
+    row.push((k + 1).to_string());
+    for (spec, d) in m.scene.inputs().zip(s.drives.iter()) {
+        row.push(csv_num(match spec {
+            InputSpec::Crank { .. } => d.q.to_degrees(),
+            InputSpec::Slider { .. } => d.q,
+        }));
+    }
+    for &p in &an.points {
+        let ps = s.point(an, p);
+        row.extend([csv_num(ps.at.x), csv_num(ps.at.y)]);
+        if let Some((v, a)) = ps.rates.filter(|_| vel) {
+            row.extend([csv_num(v.x), csv_num(v.y)]);
+            if acc {
+                row.extend([csv_num(a.x), csv_num(a.y)]);
+            }
+        }
+    }
+    for l in (0..m.links.len()).filter(|&l| an.link(l)) {
+        row.push(csv_num(deg(s.config.pose(l).angle)));
+        if let Some(mo) = s.motion[l].filter(|_| vel) {
+            row.push(csv_num(mo.omega));
+            if acc {
+                row.push(csv_num(mo.epsilon));
+            }
+        }
+    }
+    row.join(",") + "\n"
 }
 
 /// The result text of `solve` a position at a time: this head, then
@@ -279,6 +391,8 @@ pub fn text_head(an: &Analysis, style: Style) -> String {
     match style {
         Style::Table => table_head(an),
         Style::Steps(_) => steps_head(an),
+        Style::Csv => csv_head(an),
+        Style::Jsonl => String::new(),
         Style::Json => {
             // The document with no positions ends `"positions": []\n}`:
             // the head is everything before the brackets.
@@ -298,6 +412,10 @@ pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> Strin
     match style {
         Style::Table => table_position(an, k, s),
         Style::Steps(lang) => steps_position(an, k, s, lang),
+        Style::Csv => csv_row(an, k, s),
+        Style::Jsonl => {
+            serde_json::to_string(&position_json(an, s)).expect("JSON of finite numbers") + "\n"
+        }
         Style::Json => {
             // An element of the top-level array: pretty-printed two levels
             // deep, so every line is indented by four spaces (strings
@@ -321,7 +439,7 @@ pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> Strin
 /// The end of the result text, after `count` positions.
 pub fn text_tail(_an: &Analysis, style: Style, count: usize) -> String {
     match style {
-        Style::Table | Style::Steps(_) => String::new(),
+        Style::Table | Style::Steps(_) | Style::Csv | Style::Jsonl => String::new(),
         Style::Json if count == 0 => "[]\n}\n".into(),
         Style::Json => "\n  ]\n}\n".into(),
     }
@@ -527,14 +645,24 @@ fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
         }
     }
     if let Some(c) = &s.check {
-        let _ = writeln!(
-            t,
-            "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
-            c.max_rel_diff,
-            c.worst,
-            c.contour_time * 1e6,
-            c.constraint_time * 1e6
-        );
+        let _ = match c.method {
+            Method::Routes => writeln!(
+                t,
+                "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
+                c.max_rel_diff,
+                c.worst,
+                c.contour_time * 1e6,
+                c.constraint_time * 1e6
+            ),
+            Method::Residuals { .. } => writeln!(
+                t,
+                "  cross-check by residuals: max rel residual {:.1e} ({}); contour route {:.0} µs, check {:.0} µs",
+                c.max_rel_diff,
+                c.worst,
+                c.contour_time * 1e6,
+                c.constraint_time * 1e6
+            ),
+        };
     }
     t
 }

@@ -73,6 +73,9 @@ pub struct Diagrams {
     /// start of the stroke), +1.
     pub phi0: f64,
     pub dir: f64,
+    /// +1 or −1: the output's coordinate turned so that the displacement
+    /// from the extreme position is positive (the working stroke's sense).
+    pub along: f64,
     /// Crank angle step, rad (a driving slider: the slide's step, m).
     pub h: f64,
     /// The abscissa is a driving slider's slide over its stroke (m), not
@@ -225,10 +228,25 @@ impl Diagrams {
         for x in &mut s {
             *x -= s0;
         }
+        // Measured along the working stroke: the displacement from the
+        // extreme position is positive (s ≥ 0 for a slider or a rocker that
+        // goes out and back), as the lecture draws it; its rates follow.
+        let far = s
+            .iter()
+            .fold(0.0f64, |a, &x| if x.abs() > a.abs() { x } else { a });
+        let along = if stroke.is_none() && far < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        for x in s.iter_mut().chain(ds.iter_mut()).chain(dds.iter_mut()) {
+            // (+ 0.0: no −0 printed at the extreme position.)
+            *x = *x * along + 0.0;
+        }
         let mut ds_mid = Vec::with_capacity(n);
         for k in 0..n {
             let (_, v1, _) = out.at(phi0 + dir * h * (k as f64 + 0.5))?;
-            ds_mid.push(dir * v1);
+            ds_mid.push(along * dir * v1);
         }
         let mut dense = Vec::with_capacity(n * DENSE + 1);
         let mut near = s0;
@@ -247,7 +265,7 @@ impl Diagrams {
                 near + crate::geom::wrap_pi(v - near)
             };
             near = v;
-            dense.push((v - s0, dir * v1, v2));
+            dense.push((along * (v - s0), along * dir * v1, along * v2));
         }
         // Scales: the revolution (the stroke) over `l` mm; μ_s standard,
         // the curve within 50 mm; the poles so that the derived curves fit
@@ -293,6 +311,7 @@ impl Diagrams {
             n,
             phi0,
             dir,
+            along,
             h,
             stroke: stroke.is_some(),
             s,
@@ -357,7 +376,7 @@ impl Diagrams {
             let phi = self.phi0 + self.dir * self.h * (k as f64 + 0.5 + 0.5 * x);
             sum += w * self.dir * out.at(phi)?.1;
         }
-        Ok(0.5 * sum)
+        Ok(0.5 * self.along * sum)
     }
 
     /// The errors of every numerical curve against the analytic one.

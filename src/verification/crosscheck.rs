@@ -3,10 +3,18 @@
 //! answer with the scene's data changed by a few units of rounding); from
 //! them the error [`Bounds`] of every reported number. A position where
 //! they disagree is refused.
+//!
+//! Without plans (`want.plans: []`, a sweep) the fast path: route (b)'s
+//! equations evaluated at route (a)'s answer (the residuals of the closure
+//! equations and of their first and second time derivatives, each as the
+//! change of the answer that cancels it), the data sensitivity by the
+//! same equations of the changed data, linearized, and solved again only
+//! where the conditioning asks for it (docs/sweeps.md).
 
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
+use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings, Unknowns};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::positions::{PositionSolver, describe_input};
 use crate::kinematics::solve::{Analysis, Solved};
@@ -39,6 +47,38 @@ pub struct CrossCheck {
     /// The error bound of every reported number of each kind, in SI
     /// (`None` only before the data sensitivity is measured).
     pub bound: Option<Bounds>,
+    /// How the position was checked.
+    pub method: Method,
+    /// The fast path: the orientation of route (a)'s assembly, the sign
+    /// of det Φ_q at its answer (checked against the position before).
+    pub orientation: Option<f64>,
+}
+
+/// How a position was cross-checked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Route (a) against route (b) followed along the positions, and the
+    /// plans against both; `max_rel_diff` is their largest disagreement,
+    /// `constraint_time` route (b)'s time.
+    Routes,
+    /// The fast path (no plans): route (b)'s equations at route (a)'s
+    /// answer; `max_rel_diff` is the largest change of the answer that
+    /// cancels their residuals, `constraint_time` the check's time.
+    /// `linear_data`: the data sensitivity by those equations linearized
+    /// (else route (a) solved again on the changed data).
+    Residuals { linear_data: bool },
+}
+
+/// What the fast path's check needs, made once per run: route (b)'s
+/// equations of the scene and of the scene with its data changed both
+/// ways ([`Analysis::changed_data`]; `None` where the changed scene is
+/// refused).
+pub(crate) struct Residuals<'a> {
+    base: ConstraintSolver<'a>,
+    changed: Vec<Option<ConstraintSolver<'a>>>,
+    /// The orientation of the assembly the sketch shows
+    /// ([`ConstraintSolver::sketch_orientation`]).
+    pub sketch_orientation: Option<f64>,
 }
 
 /// The error bound of every number of one position that the routes report,
@@ -138,7 +178,136 @@ impl Analysis {
             plan_time: costs.plan_time,
             data_sensitivity: Some(sens),
             bound: Some(bound),
+            method: Method::Routes,
+            orientation: None,
         })
+    }
+
+    /// Route (b)'s equations for the fast path's check: of this scene and
+    /// of the changed scenes `changed`.
+    pub(crate) fn residual_equations<'a>(&'a self, changed: &'a ChangedData) -> Residuals<'a> {
+        let solver =
+            |an: &'a Analysis| ConstraintSolver::new(&an.mech, &an.include, Settings::default());
+        let base = solver(self);
+        let changed = changed
+            .iter()
+            .map(|c| {
+                c.as_ref()
+                    .ok()
+                    .map(solver)
+                    .filter(|cs| cs.links() == base.links())
+            })
+            .collect();
+        Residuals {
+            sketch_orientation: base.sketch_orientation(),
+            base,
+            changed,
+        }
+    }
+
+    /// The fast path's cross-check of route (a)'s answer `s` (no plans, no
+    /// route (b) along the positions): route (b)'s equations at the
+    /// answer, the residuals of the closure equations and of their first
+    /// and second time derivatives each turned into the change of the
+    /// answer that cancels it, measured as the routes' disagreement is and
+    /// refused above the same limit; a Jacobian as ill-conditioned as
+    /// route (b) refuses is refused. The data sensitivity: the same
+    /// equations of the changed data, linearized at the answer, unless
+    /// the conditioning is below [`crate::accuracy::Accuracy::linear_data_conditioning`]
+    /// or the result near the refusal, where route (a) is solved again
+    /// on the changed data as [`Analysis::cross_check`] does.
+    pub(crate) fn residual_check(
+        &self,
+        s: &Solved,
+        eqs: &Residuals,
+        contour_time: f64,
+        q_rounding: Coords,
+        changed: &ChangedData,
+    ) -> Result<CrossCheck> {
+        let m = &self.mech;
+        let t0 = std::time::Instant::now();
+        let refuse = |why: String| Error::singular(describe_input(m, &s.drives.coords()), why);
+        let x = s.drives.coords();
+        let rates = self.input_rates();
+        let u = eqs
+            .base
+            .unknowns(|l| s.config.pose(l), &s.motion, self.order);
+        let c = eqs
+            .base
+            .corrected(&u, &x, &rates, false, true)
+            .map_err(refuse)?;
+        if c.conditioning.is_nan() || c.conditioning < ACCURACY.min_conditioning {
+            return Err(refuse(format!(
+                "the constraint Jacobian is ill-conditioned (σ_min/σ_max = {:.2e})",
+                c.conditioning
+            )));
+        }
+        let (d, worst) = self.compare(s, &c.motion);
+        if d.is_nan() || d > MAX_REL_DIFF {
+            return Err(refuse(format!(
+                "route (a)'s answer does not satisfy the closure equations and their derivatives ({worst}: relative residual {d:.2e}); a position too close to a singular one cannot be trusted"
+            )));
+        }
+        let linear = (c.conditioning >= ACCURACY.linear_data_conditioning)
+            .then(|| self.linear_sensitivity(s, &u, eqs, q_rounding, changed))
+            .flatten()
+            .filter(|&x| x <= ACCURACY.linear_data_sensitivity);
+        let sens = match linear {
+            Some(x) => x,
+            None => self
+                .data_sensitivity(s, q_rounding, changed)
+                .map_err(refuse)?,
+        };
+        let bound = self.bounds(s, c.conditioning, d, sens);
+        Ok(CrossCheck {
+            max_rel_diff: d,
+            worst,
+            contour_time,
+            constraint_time: t0.elapsed().as_secs_f64(),
+            conditioning: c.conditioning,
+            plan_time: 0.0,
+            data_sensitivity: Some(sens),
+            bound: Some(bound),
+            method: Method::Residuals {
+                linear_data: linear.is_some(),
+            },
+            orientation: Some(c.orientation),
+        })
+    }
+
+    /// The data sensitivity to first order: route (b)'s equations of each
+    /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
+    /// moves it) at route (a)'s answer `u`, corrected by one step, and
+    /// compared with the answer as the data check compares. `None` where
+    /// a changed scene is refused or its Jacobian singular (the solve
+    /// again decides).
+    fn linear_sensitivity(
+        &self,
+        s: &Solved,
+        u: &Unknowns,
+        eqs: &Residuals,
+        q_rounding: Coords,
+        changed: &ChangedData,
+    ) -> Option<f64> {
+        let units = DATA_PERTURBATION / f64::EPSILON;
+        let rates = self.input_rates();
+        let mut worst = 0.0f64;
+        for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
+            let (Some(cs), Ok(an)) = (cs, an) else {
+                return None;
+            };
+            let mut x = s.drives.coords();
+            for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
+                *x += sign * units * r;
+            }
+            let c = cs.corrected(u, &x, &rates, true, false).ok()?;
+            let (d, _) = self.compare_with(s, &c.motion, &an.mech);
+            if d.is_nan() {
+                return None;
+            }
+            worst = worst.max(d);
+        }
+        Some(worst)
     }
 
     /// The bounds of a solved position ([`Bounds`]).

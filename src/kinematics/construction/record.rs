@@ -276,7 +276,7 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
         PointId::Normal { link } => by("n", link),
         PointId::Coriolis { link } => {
             let (key, (_, sub)) = by("k", link);
-            (key, (coriolis_letter(m).to_string(), sub))
+            (key, (coriolis_letter(m, link).to_string(), sub))
         }
         PointId::Relative { link } => by("r", link),
         PointId::Special { base } => {
@@ -291,12 +291,15 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
 /// letter. Its name in the steps is the capital, Σ3.
 const SPECIAL: &str = "σ";
 
-/// The letter of the Coriolis points on the plans: k (k₃ for link 3), as
-/// the lecture writes it, unless the scene has a point K (K, K1 …), whose
-/// plan point is k and whose point of link 3 would read k₃ too; then κ
-/// (kappa), which no point's name gives.
-fn coriolis_letter(m: &Mechanism) -> &'static str {
-    let taken = (0..m.scene.points.len()).any(|p| lower_label(m.point_name(p)).0 == "k");
+/// The letter of the Coriolis point of link `link` on the plans: k (k₃
+/// for link 3), as the lecture writes it, unless a point K of the scene
+/// slides on that link or carries it (the point of a prismatic pair of
+/// link 3), whose point of link 3 is k₃ too; then κ (kappa), which no
+/// point's name gives. (κ reads close to k, so only where k₃ is taken.)
+fn coriolis_letter(m: &Mechanism, link: usize) -> &'static str {
+    let taken = m.prismatics.iter().any(|pr| {
+        (pr.guide == link || pr.slider == link) && lower_label(m.point_name(pr.point)).0 == "k"
+    });
     if taken { "κ" } else { "k" }
 }
 

@@ -30,8 +30,18 @@ pub struct Analysis {
     pub structure: Structure,
     /// The groups, links and points the scene wants.
     pub demand: Demand,
-    /// None: positions only (no plans wanted).
+    /// The rates computed (`want.rates`, else `want.plans`); None:
+    /// positions only.
     pub order: Option<Order>,
+    /// Whether the plans are built, up to `order`. Without them every
+    /// position is cross-checked by route (b)'s residuals at route (a)'s
+    /// answer instead of by route (b) followed along the positions
+    /// ([`crate::verification::crosscheck`], docs/sweeps.md).
+    pub plans: bool,
+    /// A deliberate error put into route (a)'s answer, for the tests that
+    /// show the cross-check catches it; never set by mechplan itself.
+    #[doc(hidden)]
+    pub corrupt: Option<Corruption>,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
@@ -44,6 +54,19 @@ impl std::ops::Deref for Analysis {
     fn deref(&self) -> &Demand {
         &self.demand
     }
+}
+
+/// A deliberate error of route (a)'s answer (tests only), in the link
+/// that reports the last point on a moving link: its pose moved along x
+/// by `Position(x)` times the mechanism's size, or the velocity
+/// (acceleration) of its frame's origin by `x` times the largest velocity
+/// (acceleration) of a reported point at that position.
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Corruption {
+    Position(f64),
+    Velocity(f64),
+    Acceleration(f64),
 }
 
 /// Positions found and finished at a time by [`Analysis::run_each`]:
@@ -104,11 +127,14 @@ impl Analysis {
             mu_a: sc.want.scales.mu_a,
             ..Drafting::default()
         };
+        let plans = sc.want.plans && order.is_some();
         Ok(Analysis {
             mech,
             structure,
             demand,
             order,
+            plans,
+            corrupt: None,
             drafting,
             mu_l,
         })

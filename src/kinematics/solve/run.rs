@@ -1,15 +1,18 @@
 //! Solving every position asked for: the positions found in order by both
 //! routes, then each one's rates, plans and cross-check.
 
-use super::{Analysis, RUN_CHUNK, Solved};
+use super::{Analysis, Corruption, RUN_CHUNK, Solved};
 use crate::error::{Error, Result};
+use crate::geom::Pose;
 use crate::geom::wrap_pi;
+use crate::kinematics::analytic::Motion;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
 use crate::kinematics::construction::build_plans;
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::InputSpec;
-use crate::verification::crosscheck::{ChangedData, Costs};
+use crate::verification::crosscheck::{ChangedData, Costs, Residuals};
+use kurbo::Vec2;
 use std::time::Instant as Clock;
 
 /// A position found in order by both routes, before its rates.
@@ -18,8 +21,10 @@ struct Placed<'a> {
     /// The rounding of q as the file writes it (rad or m).
     q_rounding: Coords,
     config: Configuration,
-    /// Route (b) at this position (its state continues from the last).
-    constraint: ConstraintSolver<'a>,
+    /// Route (b) at this position (its state continues from the last);
+    /// `None` on the fast path (no plans), which checks route (a)'s answer
+    /// by route (b)'s equations instead.
+    constraint: Option<ConstraintSolver<'a>>,
     /// Time of finding the position, seconds, by route (a) and route (b).
     contour_time: f64,
     constraint_time: f64,
@@ -63,21 +68,53 @@ impl Analysis {
         let values = self.input_coords()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
-        let mut cs = ConstraintSolver::new(m, &self.include, Settings::default());
+        // Route (b) follows the positions where the plans are built; the
+        // fast path evaluates its equations at route (a)'s answers.
+        let mut cs = self
+            .plans
+            .then(|| ConstraintSolver::new(m, &self.include, Settings::default()));
         let changed = self.changed_data();
+        let eqs = (!self.plans).then(|| self.residual_equations(&changed));
+        // The fast path: the orientation of the assembly at the last
+        // position checked (the sketch's before the first).
+        let mut orientation = eqs
+            .as_ref()
+            .and_then(|e| e.sketch_orientation)
+            .map(|o| (o, None));
+        // … and route (a)'s answers one continuous motion: closed forms of
+        // class II groups (a class III group is tracked in small steps).
+        let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
         // The rounding of each input value as written (none for `count`),
         // position after position.
         let w = m.scene.input_count();
-        let rounding: Vec<Coords> = if m.scene.input_rounding.len() == values.len() * w {
-            m.scene.input_rounding.chunks(w).map(Coords::new).collect()
-        } else {
-            vec![Coords::new(&vec![0.0; w]); values.len()]
-        };
+        // (Made a chunk at a time: a sweep's memory is its input values.)
+        let rounded = m.scene.input_rounding.len() == values.len() * w;
         values
             .chunks(RUN_CHUNK)
-            .zip(rounding.chunks(RUN_CHUNK))
-            .try_for_each(|(chunk, rounding)| {
-                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &changed, bar, &mut f)
+            .enumerate()
+            .try_for_each(|(k, chunk)| {
+                let from = k * RUN_CHUNK;
+                let rounding: Vec<Coords> = (from..from + chunk.len())
+                    .map(|i| {
+                        if rounded {
+                            Coords::new(&m.scene.input_rounding[i * w..(i + 1) * w])
+                        } else {
+                            Coords::new(&vec![0.0; w])
+                        }
+                    })
+                    .collect();
+                let rounding = &rounding[..];
+                let checks = Checks {
+                    changed: &changed,
+                    residuals: eqs.as_ref(),
+                };
+                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &checks, bar, &mut |s| {
+                    self.same_orientation(&mut orientation, &s)?;
+                    if let Some((probe, last)) = &mut motion {
+                        self.continuous(probe, last, &s)?;
+                    }
+                    f(s)
+                })
             })
     }
 
@@ -89,8 +126,8 @@ impl Analysis {
         values: &[Coords],
         rounding: &[Coords],
         ps: &mut PositionSolver,
-        cs: &mut ConstraintSolver<'a>,
-        changed: &ChangedData,
+        cs: &mut Option<ConstraintSolver<'a>>,
+        checks: &Checks,
         bar: &indicatif::ProgressBar,
         f: &mut impl FnMut(Solved) -> Result<()>,
     ) -> Result<()> {
@@ -107,12 +144,15 @@ impl Analysis {
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
-            let span = self.path_span(ps, cs.last_inputs(), q);
-            if let Err(e) = cs.solve_positions_along(q, span) {
-                // Route (a)'s rates come first at a position: its error,
-                // if it has one here, is the one a sequential run reports.
-                stop = Some(self.contour_error(q, &config).unwrap_or(e));
-                break;
+            if let Some(cs) = cs.as_mut() {
+                let span = self.path_span(ps, cs.last_inputs(), q);
+                if let Err(e) = cs.solve_positions_along(q, span) {
+                    // Route (a)'s rates come first at a position: its
+                    // error, if it has one here, is the one a sequential
+                    // run reports.
+                    stop = Some(self.contour_error(q, &config).unwrap_or(e));
+                    break;
+                }
             }
             let constraint_time = t1.elapsed().as_secs_f64();
             placed.push(Placed {
@@ -124,13 +164,121 @@ impl Analysis {
                 constraint_time,
             });
         }
-        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, changed)) {
+        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, checks)) {
             f(s?)?;
         }
         match stop {
             Some(e) => Err(e),
             None => Ok(()),
         }
+    }
+
+    /// The fast path's check of the assembly: the orientation of route
+    /// (a)'s answer at `s` (the sign of det Φ_q) is the one at the
+    /// position before (`last`: its sign and inputs, none for the
+    /// sketch), as route (b)'s path following would keep it; it changes
+    /// only through a singular position, which route (b) cannot pass.
+    fn same_orientation(&self, last: &mut Option<(f64, Option<Coords>)>, s: &Solved) -> Result<()> {
+        let Some(o) = s.check.as_ref().and_then(|c| c.orientation) else {
+            return Ok(());
+        };
+        let q = s.drives.coords();
+        if let Some((before, at)) = *last
+            && before != o
+        {
+            let m = &self.mech;
+            let from = match at {
+                Some(at) => crate::kinematics::positions::describe_input(m, &at),
+                None => "the sketch".to_string(),
+            };
+            return Err(Error::singular(
+                crate::kinematics::positions::describe_input(m, &q),
+                format!(
+                    "between {from} and this position the mechanism passes a singular position (the orientation of its assembly, the sign of det Φ_q, changes): no motion from the sketch reaches route (a)'s answer here"
+                ),
+            ));
+        }
+        *last = Some((o, Some(q)));
+        Ok(())
+    }
+
+    /// The fast path's check that route (a)'s answers are one continuous
+    /// motion, as route (b)'s path following would find: its closed forms
+    /// keep the sketch's branch by a sign, and a branch point that leaves
+    /// det Φ_q's sign alone (a slider's pin passing through its rotating
+    /// guide's pivot) turns their answer by 180° at one input value. Where
+    /// a link turns or moves much between two positions (0.25 rad, a
+    /// quarter of the sketch's size), the span is halved, route (a) solved
+    /// at the middle, and each half judged again: a continuous motion's
+    /// change shrinks with its span, a jump does not and is refused.
+    fn continuous(
+        &self,
+        probe: &mut PositionSolver,
+        last: &mut Option<(Coords, Configuration)>,
+        s: &Solved,
+    ) -> Result<()> {
+        let q = s.drives.coords();
+        if let Some((q0, c0)) = last.take() {
+            let span = self.path_span(probe, q0, q);
+            self.no_jump(probe, q0, &c0, span, &s.config, 0)?;
+        }
+        *last = Some((q, s.config.clone()));
+        Ok(())
+    }
+
+    /// [`Analysis::continuous`] over `span` from `q0` (configuration `c0`)
+    /// to the configuration `c1`, at bisection depth `depth`.
+    fn no_jump(
+        &self,
+        probe: &mut PositionSolver,
+        q0: Coords,
+        c0: &Configuration,
+        span: Coords,
+        c1: &Configuration,
+        depth: usize,
+    ) -> Result<()> {
+        let m = &self.mech;
+        let change = (0..m.links.len())
+            .filter(|&l| l != m.frame() && self.link(l))
+            .filter_map(|l| Some((c0.poses[l]?, c1.poses[l]?)))
+            .map(|(a, b)| {
+                wrap_pi(b.angle - a.angle)
+                    .abs()
+                    .max((b.origin - a.origin).hypot() / m.size)
+            })
+            .fold(0.0f64, f64::max);
+        if change <= 0.25 {
+            return Ok(());
+        }
+        let wide = span
+            .iter()
+            .zip(q0.iter())
+            .any(|(d, x)| d.abs() > 1e-12 * (1.0 + x.abs()));
+        if !wide || depth >= 64 {
+            let mut at = q0;
+            for (x, d) in at.iter_mut().zip(span.iter()) {
+                *x += d;
+            }
+            return Err(Error::singular(
+                crate::kinematics::positions::describe_input(m, &at),
+                format!(
+                    "route (a)'s answer jumps here (a link turns or moves by {change:.3} at one input value): a branch point its closed forms pass without a continuous motion; with plans (want.plans) route (b) follows the motion and says where it stops"
+                ),
+            ));
+        }
+        let (mut mid, mut half) = (q0, span);
+        for ((x, h), d) in mid.iter_mut().zip(half.iter_mut()).zip(span.iter()) {
+            *h = d / 2.0;
+            *x += *h;
+        }
+        let cm = probe.solve_at_coords(mid).map_err(|e| {
+            Error::singular(
+                crate::kinematics::positions::describe_input(m, &mid),
+                format!("the mechanism does not assemble between two positions of the sweep ({e}): no continuous motion joins them"),
+            )
+        })?;
+        self.no_jump(probe, q0, c0, half, &cm, depth + 1)?;
+        self.no_jump(probe, mid, &cm, half, c1, depth + 1)
     }
 
     /// Which way the inputs go from `from` to `to`: a slider straight; a
@@ -189,14 +337,14 @@ impl Analysis {
         .err()
     }
 
-    /// One placed position: both routes' rates, the plans, the cross-check.
-    fn finish(&self, p: &Placed, changed: &ChangedData) -> Result<Solved> {
+    /// One placed position: both routes' rates, the plans, the cross-check
+    /// (on the fast path: route (a)'s rates and their check).
+    fn finish(&self, p: &Placed, checks: &Checks) -> Result<Solved> {
         let m = &self.mech;
         let rates = self.input_rates();
-        let (q, config) = (p.q, p.config.clone());
+        let (q, mut config) = (p.q, p.config.clone());
         let drives = self.drives_at(&q);
         let w = drives.len();
-        let mut cs = p.constraint.clone();
         let t0 = Clock::now();
         let run = |d: Drives, order: Order| {
             contour::solve(m, &self.structure, &self.need, &config, d, order)
@@ -219,6 +367,33 @@ impl Analysis {
             }
         }
         let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
+        self.corrupt(&mut config, &mut motion);
+        let Some(cs) = &p.constraint else {
+            let first = drives.first();
+            let mut solved = Solved {
+                q: first.q,
+                rate: first.rate,
+                rate2: first.rate2,
+                drives,
+                config,
+                motion,
+                analogue,
+                more_analogues,
+                mixed,
+                plans: None,
+                check: None,
+            };
+            let eqs = checks.residuals.expect("the fast path's equations");
+            solved.check = Some(self.residual_check(
+                &solved,
+                eqs,
+                contour_time,
+                p.q_rounding,
+                checks.changed,
+            )?);
+            return Ok(solved);
+        };
+        let mut cs = cs.clone();
         let t1 = Clock::now();
         let other = cs.solve_rates_of(&rates, self.order.unwrap_or(Order::Velocity))?;
         let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
@@ -254,7 +429,60 @@ impl Analysis {
             plan_time,
             conditioning: cs.conditioning,
         };
-        solved.check = Some(self.cross_check(&solved, &other, costs, p.q_rounding, changed)?);
+        solved.check =
+            Some(self.cross_check(&solved, &other, costs, p.q_rounding, checks.changed)?);
         Ok(solved)
     }
+
+    /// Put the deliberate error of [`Analysis::corrupt`] (tests only) into
+    /// route (a)'s answer: into the link that reports the last point on a
+    /// moving link (so that reported numbers change).
+    fn corrupt(&self, config: &mut Configuration, motion: &mut [Option<Motion>]) {
+        let Some(c) = self.corrupt else { return };
+        let m = &self.mech;
+        // The link that reports the last reported point on a moving link.
+        let Some(l) = self
+            .points
+            .iter()
+            .rev()
+            .map(|&p| self.carrier(p))
+            .find(|&l| l != m.frame())
+        else {
+            return;
+        };
+        // The largest velocity and acceleration of a reported point.
+        let (mut sv, mut sa) = (f64::MIN_POSITIVE, f64::MIN_POSITIVE);
+        for &p in &self.points {
+            let k = self.carrier(p);
+            if let Some(mo) = motion[k] {
+                let at = config.point(m, k, p);
+                sv = sv.max(mo.velocity(at).hypot());
+                sa = sa.max(mo.acceleration(at).hypot());
+            }
+        }
+        let pose = config.pose(l);
+        match c {
+            Corruption::Position(x) => {
+                let moved = pose.origin + Vec2::new(x * m.size, 0.0);
+                config.poses[l] = Some(Pose::new(moved, pose.angle));
+            }
+            Corruption::Velocity(x) => {
+                if let Some(mo) = motion[l].as_mut() {
+                    mo.v_at += Vec2::new(x * sv, 0.0);
+                }
+            }
+            Corruption::Acceleration(x) => {
+                if let Some(mo) = motion[l].as_mut() {
+                    mo.a_at += Vec2::new(x * sa, 0.0);
+                }
+            }
+        }
+    }
+}
+
+/// The checks of a run, made once: the scene with its data changed, and
+/// (on the fast path) route (b)'s equations of it and of them.
+struct Checks<'a> {
+    changed: &'a ChangedData,
+    residuals: Option<&'a Residuals<'a>>,
 }

@@ -184,8 +184,14 @@ pub struct Scales {
 
 #[derive(Clone, Debug)]
 pub struct Want {
+    /// The rates computed (`want.rates`, else `want.plans`): velocities,
+    /// and accelerations with them.
     pub velocity: bool,
     pub acceleration: bool,
+    /// Whether the plans are built (`want.plans` not empty, rates
+    /// wanted); without them every position is checked by route (b)'s
+    /// residuals at route (a)'s answer (docs/sweeps.md).
+    pub plans: bool,
     /// `None`: every point.
     pub points: Option<Vec<usize>>,
     pub drawings: Vec<String>,
@@ -200,6 +206,7 @@ impl Default for Want {
         Want {
             velocity: true,
             acceleration: true,
+            plans: true,
             points: None,
             drawings: Vec::new(),
             scales: Scales::default(),

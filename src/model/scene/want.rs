@@ -13,7 +13,9 @@ impl Reader {
         self.only_keys(
             o,
             "/want",
-            &["plans", "points", "drawings", "scales", "lang", "plans_at"],
+            &[
+                "plans", "rates", "points", "drawings", "scales", "lang", "plans_at",
+            ],
         );
         let names = |r: &mut Self, key: &str, allowed: &[&str]| -> Vec<String> {
             let at = format!("/want/{key}");
@@ -36,11 +38,35 @@ impl Reader {
             }
             out
         };
-        if o.contains_key("plans") {
-            let p = names(self, "plans", &["velocity", "acceleration"]);
-            w.velocity = p.iter().any(|x| x == "velocity");
-            w.acceleration = p.iter().any(|x| x == "acceleration");
+        // The highest order named: 0 none, 1 velocity, 2 acceleration
+        // (accelerations need velocities, so they come with them).
+        let order = |list: &[String]| {
+            if list.iter().any(|x| x == "acceleration") {
+                2
+            } else {
+                usize::from(list.iter().any(|x| x == "velocity"))
+            }
+        };
+        let plans = o
+            .contains_key("plans")
+            .then(|| order(&names(self, "plans", &["velocity", "acceleration"])));
+        let rates = o
+            .contains_key("rates")
+            .then(|| order(&names(self, "rates", &["velocity", "acceleration"])));
+        // The rates are `rates`, else those of the plans; the plans are
+        // drawn up to the rates or not at all.
+        match (plans, rates) {
+            (Some(p), Some(r)) if p != 0 && p != r => self.err(
+                "/want/plans",
+                "the plans are drawn up to the rates computed (want.rates) or not at all (\"plans\": [])",
+            ),
+            _ => {}
         }
+        if let Some(r) = rates.or(plans) {
+            w.velocity = r >= 1;
+            w.acceleration = r >= 2;
+        }
+        w.plans = plans.is_none_or(|p| p != 0) && (w.velocity || w.acceleration);
         if o.contains_key("drawings") {
             w.drawings = names(
                 self,

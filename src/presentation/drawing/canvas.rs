@@ -220,6 +220,15 @@ pub struct Label {
 }
 
 impl Label {
+    /// A bare number: a link's or a position's.
+    fn is_number(&self) -> bool {
+        !self.base.is_empty()
+            && self.base.chars().all(|c| c.is_ascii_digit())
+            && self.sub.is_empty()
+            && self.tail.is_empty()
+            && self.more.is_empty()
+    }
+
     pub fn new(base: impl Into<String>, sub: impl Into<String>) -> Label {
         Label {
             base: base.into(),
@@ -579,6 +588,10 @@ impl Canvas {
         // The box runs from the subscript's bottom (0.35 em below the
         // baseline) to the capitals' top (0.97 em above, as DejaVu renders).
         let (w, h) = (label.width(size), size * 1.32);
+        // A bare number (a link's, a position's) stands apart from other
+        // labels, so that "S₄ 4" does not read as one label, nor "2 7" as
+        // a number: 1.2 mm clear, where labels otherwise keep 0.3 mm.
+        let gap = if label.is_number() { 1.2 } else { 0.3 };
         let mut best: Option<((usize, usize, usize), Rect)> = None;
         'rings: for ring in [1.0, 2.0, 3.2, 4.6, 6.5, 9.0, 12.0, 16.0] {
             for k in 0..16 {
@@ -590,8 +603,9 @@ impl Canvas {
                 let y0 = anchor.y + d.y + if d.y < 0.0 { -h } else { 0.0 };
                 let r = Rect::new(x0, y0, x0 + w, y0 + h);
                 let (r3, r2) = (r.inflate(0.3, 0.3), r.inflate(0.2, 0.2));
-                let labels = self.boxes.count(&r3, |(a, b)| {
-                    Rect::from_points(*a, *b).intersect(r3).area() > 0.0
+                let rl = r.inflate(gap, gap);
+                let labels = self.boxes.count(&rl, |(a, b)| {
+                    Rect::from_points(*a, *b).intersect(rl).area() > 0.0
                 });
                 let lines = self.avoid.count(&r3, |(a, b)| seg_hits_rect(*a, *b, &r3));
                 let thin = self
@@ -607,7 +621,8 @@ impl Canvas {
             }
         }
         let (_, r) = best.expect("candidates exist");
-        self.boxes.push_rect(r);
+        // A bare number keeps its room for labels placed after it too.
+        self.boxes.push_rect(r.inflate(gap - 0.3, gap - 0.3));
         self.prims.push(Prim::Text {
             // The baseline sits 0.35 em above the box's bottom.
             at: Point::new(r.x0, r.y0 + 0.35 * size),

@@ -214,22 +214,33 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             None => hi = z,
         }
     }
-    // … then each figure by itself, the largest share first, one standard
-    // step (×1.25 and more) at a time, while the rest still packs.
+    // … then each figure by itself, the largest share first, by the
+    // largest step that still packs (a standard scale's next value is
+    // ×1.25 to ×2 away), in rounds until none grows.
     let mut zs = vec![lo; n];
     let mut order: Vec<usize> = (0..n).filter(|&i| sources[i].1 > 0.0).collect();
     order.sort_by(|&a, &b| sources[b].1.total_cmp(&sources[a].1));
-    for &i in &order {
-        for _ in 0..6 {
-            let mut z = zs.clone();
-            z[i] *= 1.25;
-            match attempt(&z) {
-                Some(p) => {
-                    best = Some(p);
-                    zs = z;
+    for _round in 0..4 {
+        let mut grew = false;
+        for &i in &order {
+            for _ in 0..6 {
+                let step = [2.0, 1.6, 1.25].into_iter().find_map(|k| {
+                    let mut z = zs.clone();
+                    z[i] *= k;
+                    attempt(&z).map(|p| (z, p))
+                });
+                match step {
+                    Some((z, p)) => {
+                        best = Some(p);
+                        zs = z;
+                        grew = true;
+                    }
+                    None => break,
                 }
-                None => break,
             }
+        }
+        if !grew {
+            break;
         }
     }
     let placed = best.ok_or_else(|| {

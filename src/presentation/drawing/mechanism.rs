@@ -52,6 +52,19 @@ fn centre_of_mass(c: &mut Canvas, at: Point) {
 
 /// Draw the mechanism at position `s` with scale `mu_l` (m/mm).
 pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: bool) {
+    draw_over(an, s, &[], c, mu_l, with_labels);
+}
+
+/// [`draw`], with the fixed guides' walls long enough for the sliders in
+/// every position of `stroke` too (the positions sheet).
+pub fn draw_over(
+    an: &Analysis,
+    s: &Solved,
+    stroke: &[Solved],
+    c: &mut Canvas,
+    mu_l: f64,
+    with_labels: bool,
+) {
     let m = &an.mech;
     let frame = m.frame();
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
@@ -155,12 +168,22 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
         }
         let q = place(pr.slider, pr.point);
         let u = s.config.pose(pr.guide).dir(pr.line_dir);
-        match walls
-            .iter_mut()
-            .find(|w| w.1.cross(u).abs() < 1e-9 && w.1.cross(q - w.0).abs() < 1e-6)
+        let i = match walls
+            .iter()
+            .position(|w| w.1.cross(u).abs() < 1e-9 && w.1.cross(q - w.0).abs() < 1e-6)
         {
-            Some(w) => w.2.push((pr.slider, q)),
-            None => walls.push((q, u, vec![(pr.slider, q)])),
+            Some(i) => i,
+            None => {
+                walls.push((q, u, Vec::new()));
+                walls.len() - 1
+            }
+        };
+        walls[i].2.push((pr.slider, q));
+        for o in stroke {
+            let p = o.config.point(m, pr.slider, pr.point);
+            walls[i]
+                .2
+                .push((pr.slider, Point::new(p.x / mu_l, p.y / mu_l)));
         }
     }
     for (o, u, on) in walls {

@@ -224,8 +224,14 @@ fn fits(u: Rect, (aw, ah): (f64, f64)) -> bool {
 fn mechanism_extent(an: &Analysis, solved: &[Solved]) -> Rect {
     let m = &an.mech;
     let mut r: Option<Rect> = None;
+    // The points drawn: those of moving links, and the frame's pivots (a
+    // frame point that only names an axis, as the compressor's Y, is not).
+    let drawn = |p: usize| {
+        let ls = m.links_of_point(p);
+        ls.iter().any(|&l| l != m.frame() && an.link(l)) || ls.len() >= 2
+    };
     for s in solved {
-        for p in 0..m.scene.points.len() {
+        for p in (0..m.scene.points.len()).filter(|&p| drawn(p)) {
             if let Some(&l) = m.links_of_point(p).iter().find(|&&l| an.link(l)) {
                 let q = s.config.point(m, l, p);
                 let b = Rect::from_points(q, q);

@@ -2,7 +2,7 @@
 //! position, numbered from 1, the first in main lines, with the
 //! trajectories of the coupler points drawn through many more positions.
 
-use super::canvas::{Canvas, Class, Label, Line, SMALL};
+use super::canvas::{Canvas, Label, Line, SMALL};
 use crate::kinematics::positions::PositionSolver;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
@@ -24,7 +24,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
         return;
     }
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    super::mechanism::draw(an, &solved[0], c, mu_l, true);
+    super::mechanism::draw_over(an, &solved[0], solved, c, mu_l, true);
     let input = m.scene.input.link();
     let tip = m.links[input]
         .points
@@ -62,27 +62,18 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
             );
         }
     }
-    // Guides on the frame long enough for the whole stroke.
+    // The sliders' places on their fixed guides (the walls reach them all).
     for pr in &m.prismatics {
         if pr.guide != m.frame() || !an.link(pr.slider) {
             continue;
         }
-        let u = pr.line(&crate::geom::Pose::IDENTITY).dir;
-        let pts: Vec<Point> = solved
-            .iter()
-            .map(|s| to(s.config.point(m, pr.slider, pr.point)))
-            .collect();
-        let ts: Vec<f64> = pts.iter().map(|p| (*p - pts[0]).dot(u)).collect();
-        let (lo, hi) = ts
-            .iter()
-            .fold((0.0f64, 0.0f64), |(a, b), &t| (a.min(t), b.max(t)));
-        c.seg(
-            pts[0] + u * (lo - 12.0),
-            pts[0] + u * (hi + 12.0),
-            Class::Main,
-        );
-        for p in &pts {
-            c.circle(*p, 0.5, "black", 0.0);
+        for s in solved {
+            c.circle(
+                to(s.config.point(m, pr.slider, pr.point)),
+                0.5,
+                "black",
+                0.0,
+            );
         }
     }
     for path in &t.paths {

@@ -6,7 +6,7 @@
 
 use super::canvas::{Canvas, Line, SMALL, runs_width};
 use crate::kinematics::construction::text::{Lang, num};
-use crate::kinematics::construction::{Dir, Op, Plan, PlanKind};
+use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PointId};
 use crate::presentation::notation::runs;
 use kurbo::Point;
 
@@ -206,13 +206,12 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
             Op::Intersect { lines, out, .. } => {
                 for l in lines.iter().filter(|l| matches!(l.dir, Dir::Guide(_))) {
                     let (a, b) = (l.through, *out);
+                    let guide = under(plan, a, b).to_uppercase();
                     let quantity = match plan.kind {
                         // The slide of B3 along the guide, relative to B.
-                        PlanKind::Velocity => format!(
-                            "v_{}{}",
-                            plan.points[b].name().to_uppercase(),
-                            plan.points[a].name().to_uppercase()
-                        ),
+                        PlanKind::Velocity => {
+                            format!("v_{}{guide}", plan.points[b].name().to_uppercase())
+                        }
                         // From the Coriolis vector's end: a^r.
                         PlanKind::Acceleration => plan
                             .steps
@@ -224,11 +223,7 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
                                 _ => None,
                             })
                             .unwrap_or_else(|| {
-                                format!(
-                                    "a^r_{}{}",
-                                    plan.points[b].name().to_uppercase(),
-                                    plan.points[a].name().to_uppercase()
-                                )
+                                format!("a^r_{}{guide}", plan.points[b].name().to_uppercase())
                             }),
                     };
                     push(
@@ -328,6 +323,20 @@ fn laid_off(plan: &Plan, what: &str, from: usize, to: usize) -> String {
                 _ => format!("a^t_{}", up(to)),
             }
         }
+    }
+}
+
+/// The name of the guide's point under `b`, for a slide of `b` along a
+/// guide drawn through the plan point `a`: D0 for D on the frame's guide,
+/// even when the construction drew the line through b₀ (B and D on one
+/// guide: every frame point sits at the pole), as the lecture writes
+/// v_DD0 whatever point of the guide the line passed through.
+fn under(plan: &Plan, a: usize, b: usize) -> String {
+    match (plan.points[a].id, plan.points[b].id) {
+        (PointId::Coincident { point: p, .. }, PointId::Named(q)) if p != q => {
+            format!("{}{}", plan.points[b].label.0, plan.points[a].label.1)
+        }
+        _ => plan.points[a].name(),
     }
 }
 

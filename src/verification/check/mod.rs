@@ -49,7 +49,8 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
             ),
         ));
     };
-    if an.order.is_none()
+    if !an.plans
+        || an.order.is_none()
         || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))
     {
         return Err(Error::scene(
