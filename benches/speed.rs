@@ -279,7 +279,7 @@ fn per_position(cr: &mut Criterion) {
             b.iter(|| {
                 k = (k + 1) % qs.len();
                 let q = qs[k];
-                prog.solve(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
+                prog.solve_one(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
                     .unwrap();
                 black_box(&st.motion);
             })
@@ -453,7 +453,7 @@ fn summary(_: &mut Criterion) {
     };
     let mut compiled = |k: usize| {
         let q = qs[k];
-        prog.solve(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
+        prog.solve_one(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)
             .unwrap();
         black_box(&st.motion);
     };

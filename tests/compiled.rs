@@ -70,6 +70,10 @@ fn sweeps(an: &Analysis) -> Vec<Coords> {
     own.iter().copied().chain(turn).collect()
 }
 
+fn w_one(an: &Analysis) -> bool {
+    an.mech.scene.input_count() == 1
+}
+
 #[test]
 fn compiled_route_gives_the_interpreted_numbers_to_the_bit() {
     let (mut positions, mut failures, mut files) = (0usize, 0usize, 0usize);
@@ -95,6 +99,8 @@ fn compiled_route_gives_the_interpreted_numbers_to_the_bit() {
         };
         files += 1;
         let mut st = prog.state();
+        // `solve_one` on its own state, for a single input.
+        let mut one = (w_one(&an)).then(|| prog.state());
         let rates: Vec<(f64, f64)> = m.scene.inputs().map(|i| i.rates()).collect();
         for q in sweeps(&an) {
             let here = format!("{name} at {:?}", &*q);
@@ -116,6 +122,21 @@ fn compiled_route_gives_the_interpreted_numbers_to_the_bit() {
             );
             positions += 1;
             let drives = Drives::at(&q, &rates);
+            if let Some(one) = one.as_mut() {
+                let r = prog.solve_one(one, drives.first(), Order::Acceleration);
+                let s = prog.rates(&mut st, drives, Order::Acceleration);
+                match (r, s) {
+                    (Ok(()), Ok(())) => {
+                        assert_eq!(
+                            format!("{:?}{:?}", one.config.poses, one.motion),
+                            format!("{:?}{:?}", st.config.poses, st.motion),
+                            "{here}: solve_one"
+                        );
+                    }
+                    (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{here}"),
+                    (a, b) => panic!("{here}: {:?} vs {:?}", a.err(), b.err()),
+                }
+            }
             for (d, order) in [
                 (drives, Order::Acceleration),
                 (drives, Order::Velocity),

@@ -31,7 +31,7 @@ use crate::geom::{Line, Pose, circle_circle, circle_line, perp};
 use crate::kinematics::analytic::contour::{
     self, Inverse, Twist, bracket, driven_pair, invert_lu, invert3,
 };
-use crate::kinematics::analytic::{Coords, Drives, Motion, Order};
+use crate::kinematics::analytic::{Coords, Drive, Drives, Motion, Order};
 use crate::kinematics::positions::{
     self, Branches, Configuration, dyad_error, pair_of, point_of, sketch_input, triad_error,
 };
@@ -462,7 +462,7 @@ impl<const N: usize> Contour<N> {
         &self,
         c: &Configuration,
         out: &mut [Option<Motion>],
-        drives: &Drives,
+        drives: &[Drive],
         order: Order,
     ) -> Option<()> {
         let o = c.pose(self.o_link).origin;
@@ -644,9 +644,13 @@ impl Dyad3 {
     fn run(&self, c: &Configuration, out: &mut [Option<Motion>], order: Order) -> Option<()> {
         let [l1, l2] = self.links;
         let o = c.pose(l1).origin;
-        let [x0, x1, x2] = self.pairs.map(|p| p.twist(c, o));
-        let arm = |t: Twist| if t.w != 0.0 { t.v.hypot() } else { 0.0 };
-        let reach = f64::max(f64::max(f64::max(0.0, arm(x0)), arm(x1)), arm(x2));
+        let [p0, p1, p2] = &self.pairs;
+        let (x0, x1, x2) = (p0.twist(c, o), p1.twist(c, o), p2.twist(c, o));
+        // The longest arm: the square root is monotone and correctly
+        // rounded, so the root of the largest square is the largest root
+        // (`Vec2::hypot` is `hypot2().sqrt()`), with one root taken.
+        let arm2 = |t: Twist| if t.w != 0.0 { t.v.hypot2() } else { 0.0 };
+        let reach = f64::max(f64::max(f64::max(0.0, arm2(x0)), arm2(x1)), arm2(x2)).sqrt();
         let pl = if reach > 0.0 { 1.0 / reach } else { 1.0 };
         // The contour's columns in the group's units, made dimensionless.
         let col = |t: Twist| {
@@ -971,7 +975,7 @@ impl<'a> Program<'a> {
     }
 
     /// [`Program::positions_at`], the coordinates by reference.
-    fn place(&self, st: &mut State, q: &Coords) -> Result<()> {
+    fn place(&self, st: &mut State, q: &[f64]) -> Result<()> {
         let (m, s) = (self.m, self.s);
         let c = &mut st.config;
         c.poses[m.frame()] = Some(Pose::IDENTITY);
@@ -1088,7 +1092,7 @@ impl<'a> Program<'a> {
 
     /// Dyad `gi` by the interpreted closed form (its tolerances, its errors).
     #[cold]
-    fn dyad(&self, c: &mut Configuration, gi: usize, q: &Coords) -> Result<()> {
+    fn dyad(&self, c: &mut Configuration, gi: usize, q: &[f64]) -> Result<()> {
         let (m, s) = (self.m, self.s);
         let AssurGroup::Dyad(d) = &s.groups[gi] else {
             unreachable!("a class II group")
@@ -1106,7 +1110,7 @@ impl<'a> Program<'a> {
     }
 
     /// [`Program::rates`], the drives by reference.
-    fn rates_of(&self, st: &mut State, drives: &Drives, order: Order) -> Result<()> {
+    fn rates_of(&self, st: &mut State, drives: &[Drive], order: Order) -> Result<()> {
         let m = self.m;
         let (c, out) = (&st.config, &mut st.motion);
         for step in &self.rate {
@@ -1177,8 +1181,8 @@ impl<'a> Program<'a> {
     }
 
     #[cold]
-    fn singular(&self, gi: usize, drives: &Drives) -> crate::error::Error {
-        contour::singular(self.m, &self.s.groups[gi], drives)
+    fn singular(&self, gi: usize, drives: &[Drive]) -> crate::error::Error {
+        contour::singular(self.m, &self.s.groups[gi], &Drives::new(drives))
     }
 
     /// Positions at `drive`'s coordinates (tracked from the last) and
@@ -1187,6 +1191,20 @@ impl<'a> Program<'a> {
         let drives: Drives = drive.into();
         self.positions_coords(st, drives.coords())?;
         self.rates_of(st, &drives, order)
+    }
+
+    /// [`Program::solve`] of a mechanism with one input: the same steps,
+    /// without gathering the inputs into [`Drives`] and [`Coords`].
+    #[inline]
+    pub fn solve_one(&self, st: &mut State, drive: Drive, order: Order) -> Result<()> {
+        assert_eq!(self.m.scene.input_count(), 1, "a mechanism with one input");
+        if self.triad_step.is_empty() {
+            self.place(st, &[drive.q])?;
+            st.last_q = Coords::one(drive.q);
+        } else {
+            self.positions_coords(st, Coords::one(drive.q))?;
+        }
+        self.rates_of(st, &[drive], order)
     }
 }
 
