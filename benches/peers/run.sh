@@ -12,7 +12,7 @@
 #   mechanism 1.1.10: Mechanism.iterate (scipy's fsolve on the loop
 #     equations for positions, velocities and accelerations).
 # mechplan: benches/peers/sweep.rs (the example peers_sweep), timing only the solve (positions and
-# route (a)), plus the whole Analysis::run for reference.
+# route (a), compiled for the mechanism), plus the whole Analysis::run for reference.
 # Each peer's result is checked against mechplan's before its time counts
 # (the relative difference is printed).
 set -euo pipefail
@@ -211,7 +211,7 @@ def rates(v):
 
 print(f"Sweep of {N} positions (one full turn), positions + velocities + accelerations;"
       " times are medians, per position.")
-print("mechplan: PositionSolver::solve + contour::solve (route (a)) and reading every point's"
+print("mechplan: compiled::Program::solve_one (positions and route (a)) and reading every point's"
       " place, velocity, acceleration; the whole Analysis::run (both routes, plans, cross-check):")
 for name, r in results.items():
     print(f"  {name:<28} route (a) {r['route_a_per_position_s'] * 1e6:8.3f} µs/position   "

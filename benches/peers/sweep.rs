@@ -3,7 +3,8 @@
 //! `cargo run --release --example peers_sweep -- FIXTURE N [CSV]`: the
 //! fixture's crank is turned through N equal steps of a full turn from its
 //! own angle; at each, the positions and route (a) (velocities and
-//! accelerations by the closed vector contours) are solved, and the place,
+//! accelerations by the closed vector contours, compiled for the
+//! mechanism: `compiled::Program::solve_one`) are solved, and the place,
 //! velocity and acceleration of every point are read off (SI units). Only
 //! that solve is timed (the median of several sweeps). Then the whole
 //! analysis (`Analysis::run`: both routes, the plans' construction, the
@@ -11,8 +12,8 @@
 //! line; with CSV, writes `k,phi,point,x,y,vx,vy,ax,ay` rows for the
 //! peers' results to be checked against.
 
-use mechplan::analytic::{Drive, Order, contour};
-use mechplan::positions::PositionSolver;
+use mechplan::analytic::{Drive, Order};
+use mechplan::compiled::Program;
 use mechplan::{Analysis, Scene};
 use std::hint::black_box;
 use std::io::Write as _;
@@ -35,21 +36,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let carriers: Vec<(usize, usize)> = an.points.iter().map(|&p| (p, an.carrier(p))).collect();
     // (x, y, vx, vy, ax, ay) of every reported point at every position.
     let mut out = vec![[0.0f64; 6]; n * carriers.len()];
+    let prog = Program::new(m, &an.structure, &an.need)?;
     let sweep = |out: &mut [[f64; 6]]| -> mechplan::Result<()> {
-        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
+        let mut st = prog.state();
         for (k, &q) in qs.iter().enumerate() {
-            let c = ps.solve(q)?;
-            let mo = contour::solve(
-                m,
-                &an.structure,
-                &an.need,
-                &c,
-                Drive { q, rate, rate2 },
-                Order::Acceleration,
-            )?;
+            prog.solve_one(&mut st, Drive { q, rate, rate2 }, Order::Acceleration)?;
             for (i, &(p, l)) in carriers.iter().enumerate() {
-                let at = c.point(m, l, p);
-                let x = mo[l].expect("solved link");
+                let at = st.config.point(m, l, p);
+                let x = st.motion[l].expect("solved link");
                 let (v, a) = (x.velocity(at), x.acceleration(at));
                 out[k * carriers.len() + i] = [at.x, at.y, v.x, v.y, a.x, a.y];
             }
