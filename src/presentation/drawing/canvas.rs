@@ -310,6 +310,76 @@ pub enum Prim {
     },
 }
 
+impl Prim {
+    /// The primitive with every place `q` it is drawn at moved to `p(q)`;
+    /// its sizes (radii, arrowheads, text) as they are.
+    fn placed(self, p: impl Fn(Point) -> Point) -> Prim {
+        match self {
+            Prim::Seg { a, b, class, id } => Prim::Seg {
+                a: p(a),
+                b: p(b),
+                class,
+                id,
+            },
+            Prim::Poly { pts, fill, stroke } => Prim::Poly {
+                pts: pts.into_iter().map(&p).collect(),
+                fill,
+                stroke,
+            },
+            Prim::Path { pts, line } => Prim::Path {
+                pts: pts.into_iter().map(&p).collect(),
+                line,
+            },
+            Prim::Circle {
+                c,
+                r,
+                fill,
+                stroke,
+                id,
+            } => Prim::Circle {
+                c: p(c),
+                r,
+                fill,
+                stroke,
+                id,
+            },
+            Prim::Arrow { tip, dir } => Prim::Arrow { tip: p(tip), dir },
+            Prim::Arc { c, r, a0, sweep } => Prim::Arc {
+                c: p(c),
+                r,
+                a0,
+                sweep,
+            },
+            Prim::Rich {
+                at,
+                runs,
+                size,
+                class,
+                anchor,
+            } => Prim::Rich {
+                at: p(at),
+                runs,
+                size,
+                class,
+                anchor,
+            },
+            Prim::Text {
+                at,
+                label,
+                size,
+                id,
+                class,
+            } => Prim::Text {
+                at: p(at),
+                label,
+                size,
+                id,
+                class,
+            },
+        }
+    }
+}
+
 /// Segments (or label boxes) kept in cells of a grid, so that asking which
 /// meet a small rectangle looks at a few cells, not at all of them: label
 /// placement stays linear in the size of the drawing (a positions sheet
@@ -683,76 +753,12 @@ impl Canvas {
     /// geometry only; text, arrowheads and symbols keep their size, as
     /// a reduced drawing keeps its lettering.
     pub fn scaled(&self, k: f64) -> Canvas {
-        let p = |q: &Point| Point::new(q.x * k, q.y * k);
-        let prims = self
-            .prims
-            .iter()
-            .map(|prim| match prim.clone() {
-                Prim::Seg { a, b, class, id } => Prim::Seg {
-                    a: p(&a),
-                    b: p(&b),
-                    class,
-                    id,
-                },
-                Prim::Poly { pts, fill, stroke } => Prim::Poly {
-                    pts: pts.iter().map(p).collect(),
-                    fill,
-                    stroke,
-                },
-                Prim::Path { pts, line } => Prim::Path {
-                    pts: pts.iter().map(p).collect(),
-                    line,
-                },
-                Prim::Circle {
-                    c,
-                    r,
-                    fill,
-                    stroke,
-                    id,
-                } => Prim::Circle {
-                    c: p(&c),
-                    r,
-                    fill,
-                    stroke,
-                    id,
-                },
-                Prim::Arrow { tip, dir } => Prim::Arrow { tip: p(&tip), dir },
-                Prim::Arc { c, r, a0, sweep } => Prim::Arc {
-                    c: p(&c),
-                    r,
-                    a0,
-                    sweep,
-                },
-                Prim::Rich {
-                    at,
-                    runs,
-                    size,
-                    class,
-                    anchor,
-                } => Prim::Rich {
-                    at: p(&at),
-                    runs,
-                    size,
-                    class,
-                    anchor,
-                },
-                Prim::Text {
-                    at,
-                    label,
-                    size,
-                    id,
-                    class,
-                } => Prim::Text {
-                    at: p(&at),
-                    label,
-                    size,
-                    id,
-                    class,
-                },
-            })
-            .collect();
         Canvas {
-            prims,
+            prims: self
+                .prims
+                .iter()
+                .map(|prim| prim.clone().placed(|q| Point::new(q.x * k, q.y * k)))
+                .collect(),
             ..Canvas::default()
         }
     }
@@ -760,73 +766,13 @@ impl Canvas {
     /// Everything drawn on `other`, moved by (`dx`, `dy`), drawn here too
     /// (a figure of figures: the course sheet's grid of plans).
     pub fn append(&mut self, other: &Canvas, dx: f64, dy: f64) {
-        let moved = other.scaled(1.0);
         let d = Vec2::new(dx, dy);
-        for prim in moved.prims {
-            self.prims.push(match prim {
-                Prim::Seg { a, b, class, id } => Prim::Seg {
-                    a: a + d,
-                    b: b + d,
-                    class,
-                    id,
-                },
-                Prim::Poly { pts, fill, stroke } => Prim::Poly {
-                    pts: pts.iter().map(|q| *q + d).collect(),
-                    fill,
-                    stroke,
-                },
-                Prim::Path { pts, line } => Prim::Path {
-                    pts: pts.iter().map(|q| *q + d).collect(),
-                    line,
-                },
-                Prim::Circle {
-                    c,
-                    r,
-                    fill,
-                    stroke,
-                    id,
-                } => Prim::Circle {
-                    c: c + d,
-                    r,
-                    fill,
-                    stroke,
-                    id,
-                },
-                Prim::Arrow { tip, dir } => Prim::Arrow { tip: tip + d, dir },
-                Prim::Arc { c, r, a0, sweep } => Prim::Arc {
-                    c: c + d,
-                    r,
-                    a0,
-                    sweep,
-                },
-                Prim::Rich {
-                    at,
-                    runs,
-                    size,
-                    class,
-                    anchor,
-                } => Prim::Rich {
-                    at: at + d,
-                    runs,
-                    size,
-                    class,
-                    anchor,
-                },
-                Prim::Text {
-                    at,
-                    label,
-                    size,
-                    id,
-                    class,
-                } => Prim::Text {
-                    at: at + d,
-                    label,
-                    size,
-                    id,
-                    class,
-                },
-            });
-        }
+        self.prims.extend(
+            other
+                .prims
+                .iter()
+                .map(|prim| prim.clone().placed(|q| q + d)),
+        );
     }
 
     /// Bounding box of everything drawn (drawing coordinates).
