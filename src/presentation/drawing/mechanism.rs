@@ -307,6 +307,21 @@ pub fn draw_over(
         c.poly(corners.to_vec(), "white", MAIN);
     }
     super::cylinder::draw(an, s, c, mu_l);
+    // The unit directions of the links leaving point `p` (to their other
+    // points), and each fixed pivot's support as drawn.
+    let leaving = |p: usize| -> Vec<Vec2> {
+        let at = at_point(p);
+        m.links_of_point(p)
+            .into_iter()
+            .filter(|&l| l != frame && an.link(l))
+            .flat_map(|l| m.links[l].points.iter().map(move |&q| (l, q)))
+            .filter(|&(_, q)| q != p)
+            .map(|(l, q)| place(l, q) - at)
+            .filter(|d| d.hypot() > 1e-9)
+            .map(|d| d.normalize())
+            .collect()
+    };
+    let mut supports: Vec<Option<Vec2>> = vec![None; m.scene.points.len()];
     // Pairs and points.
     for (p, &joint) in joints.iter().enumerate() {
         let ls = m.links_of_point(p);
@@ -316,16 +331,9 @@ pub fn draw_over(
         }
         let at = at_point(p);
         if ls.contains(&frame) && joint {
-            let dirs: Vec<Vec2> = ls
-                .iter()
-                .filter(|&&l| l != frame && an.link(l))
-                .flat_map(|&l| m.links[l].points.iter().map(move |&q| (l, q)))
-                .filter(|&(_, q)| q != p)
-                .map(|(l, q)| place(l, q) - at)
-                .filter(|d| d.hypot() > 1e-9)
-                .map(|d| d.normalize())
-                .collect();
-            pivot(c, at, base_direction(&dirs, at, &bodies));
+            let down = base_direction(&leaving(p), at, &bodies);
+            supports[p] = Some(down);
+            pivot(c, at, down);
         } else if joint {
             c.circle(at, 1.2, "white", MAIN);
         } else if is_mass(p) {
@@ -365,17 +373,9 @@ pub fn draw_over(
         let crank = (place(link, other) - o).atan2();
         // The arcs go where nothing else is about the pivot: clear of the
         // links there and of the support and its hatching.
-        let mut busy: Vec<(f64, f64)> = m
-            .links_of_point(pv)
-            .into_iter()
-            .filter(|&l| l != frame && an.link(l))
-            .flat_map(|l| m.links[l].points.iter().map(move |&q| (l, q)))
-            .filter(|&(_, q)| q != pv)
-            .map(|(l, q)| ((place(l, q) - o).atan2(), 0.35))
-            .collect();
-        if m.links_of_point(pv).contains(&frame) {
-            let dirs: Vec<Vec2> = busy.iter().map(|&(a, _)| Vec2::from_angle(a)).collect();
-            busy.push((base_direction(&dirs, o, &bodies).atan2(), 0.95));
+        let mut busy: Vec<(f64, f64)> = leaving(pv).iter().map(|d| (d.atan2(), 0.35)).collect();
+        if let Some(down) = supports[pv] {
+            busy.push((down.atan2(), 0.95));
         }
         // Other lines passing where the arcs would go.
         for &(p, q) in &bodies {
