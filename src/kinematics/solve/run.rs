@@ -15,6 +15,11 @@ use crate::verification::crosscheck::{ChangedData, Costs, Residuals};
 use kurbo::Vec2;
 use std::time::Instant as Clock;
 
+/// The change between two positions (a link's turn in rad, or its move
+/// over the sketch's size) above which the fast path halves the span
+/// between them to tell a quick motion from a jump of route (a).
+const JUMP: f64 = 0.25;
+
 /// A position found in order by both routes, before its rates.
 struct Placed<'a> {
     q: Coords,
@@ -218,12 +223,35 @@ impl Analysis {
         s: &Solved,
     ) -> Result<()> {
         let q = s.drives.coords();
-        if let Some((q0, c0)) = last.take() {
-            let span = self.path_span(probe, q0, q);
-            self.no_jump(probe, q0, &c0, span, &s.config, 0)?;
+        match last {
+            Some((q0, c0)) => {
+                // The way between (a probe every 5° of a crank) only where
+                // a link moved much: a fine sweep pays one comparison.
+                if self.change(c0, &s.config) > JUMP {
+                    let span = self.path_span(probe, *q0, q);
+                    self.no_jump(probe, *q0, c0, span, &s.config, 0)?;
+                }
+                *q0 = q;
+                c0.poses.clone_from(&s.config.poses);
+            }
+            None => *last = Some((q, s.config.clone())),
         }
-        *last = Some((q, s.config.clone()));
         Ok(())
+    }
+
+    /// How much the links turn (rad) or move (over the sketch's size) from
+    /// `c0` to `c1`, the most of any.
+    fn change(&self, c0: &Configuration, c1: &Configuration) -> f64 {
+        let m = &self.mech;
+        (0..m.links.len())
+            .filter(|&l| l != m.frame() && self.link(l))
+            .filter_map(|l| Some((c0.poses[l]?, c1.poses[l]?)))
+            .map(|(a, b)| {
+                wrap_pi(b.angle - a.angle)
+                    .abs()
+                    .max((b.origin - a.origin).hypot() / m.size)
+            })
+            .fold(0.0f64, f64::max)
     }
 
     /// [`Analysis::continuous`] over `span` from `q0` (configuration `c0`)
@@ -238,16 +266,8 @@ impl Analysis {
         depth: usize,
     ) -> Result<()> {
         let m = &self.mech;
-        let change = (0..m.links.len())
-            .filter(|&l| l != m.frame() && self.link(l))
-            .filter_map(|l| Some((c0.poses[l]?, c1.poses[l]?)))
-            .map(|(a, b)| {
-                wrap_pi(b.angle - a.angle)
-                    .abs()
-                    .max((b.origin - a.origin).hypot() / m.size)
-            })
-            .fold(0.0f64, f64::max);
-        if change <= 0.25 {
+        let change = self.change(c0, c1);
+        if change <= JUMP {
             return Ok(());
         }
         let wide = span
