@@ -11,7 +11,12 @@
 //!   with the names, labels and steps a drawing needs; step sentences are
 //!   rendered only on demand, so none here);
 //! - `construction_numbers/*`: the same constructions without names,
-//!   labels or steps (`build_plans_numbers`), the kernel "without step text";
+//!   labels or steps, as a sweep makes them (`construction::Kernel`: the
+//!   buffers and the last scales kept from one position to the next, the
+//!   same plans to the bit), the kernel "without step text";
+//! - `construction_numbers_alone/*`: the same, each position on its own
+//!   (`build_plans_numbers`: new buffers, a first construction for the
+//!   scale);
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
@@ -38,7 +43,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use mechplan::analytic::constraint::{ConstraintSolver, Settings};
 use mechplan::analytic::{Drive, Order, contour};
 use mechplan::compiled::Program;
-use mechplan::construction::{Setup, build_plans, build_plans_numbers};
+use mechplan::construction::{Kernel, Setup, build_plans, build_plans_numbers};
 use mechplan::drawing::{self, DrawOptions};
 use mechplan::positions::{Configuration, PositionSolver};
 use mechplan::{Analysis, Scene};
@@ -195,7 +200,26 @@ fn per_position(cr: &mut Criterion) {
         });
 
         let mut k = 0;
+        let mut kernel = Kernel::new();
         cr.bench_function(&format!("construction_numbers/{name}"), |b| {
+            b.iter(|| {
+                k = (k + 1) % qs.len();
+                let q = qs[k];
+                let (v, a) = kernel
+                    .build(
+                        &setup,
+                        &configs[k],
+                        Drive { q, rate, rate2 },
+                        Order::Acceleration,
+                        an.drafting,
+                    )
+                    .unwrap();
+                black_box((v.points.len(), a.map(|a| a.points.len())));
+            })
+        });
+
+        let mut k = 0;
+        cr.bench_function(&format!("construction_numbers_alone/{name}"), |b| {
             b.iter(|| {
                 k = (k + 1) % qs.len();
                 let q = qs[k];
@@ -353,18 +377,19 @@ fn summary(_: &mut Criterion) {
         .unwrap();
         black_box((c, mo));
     };
+    let mut sweep_kernel = Kernel::new();
     let mut kernel = |k: usize| {
         let q = qs[k];
-        black_box(
-            build_plans_numbers(
+        let (v, a) = sweep_kernel
+            .build(
                 &setup,
                 &configs[k],
                 Drive { q, rate, rate2 },
                 Order::Acceleration,
                 an.drafting,
             )
-            .unwrap(),
-        );
+            .unwrap();
+        black_box((v.points.len(), a.map(|a| a.points.len())));
     };
     const ROUNDS: usize = 201;
     let mut rounds: Vec<[f64; 4]> = Vec::with_capacity(ROUNDS);

@@ -24,7 +24,7 @@ pub(super) struct Builder<'a> {
     pub rng: Option<StdRng>,
     pub st: &'a Setup<'a>,
     pub c: &'a Configuration,
-    pub plan: Plan,
+    pub plan: &'a mut Plan,
     /// The construction's record, step by step, in ids (kept only when
     /// `record`).
     pub acts: Vec<Act>,
@@ -35,6 +35,7 @@ pub(super) struct Builder<'a> {
     /// The velocity plan, when building the acceleration plan.
     pub vel: Option<&'a Plan>,
     pub nr: Vec<bool>,
+    pub reported_on: Vec<Option<usize>>,
     /// Every input's coordinate and rates.
     pub drives: Drives,
     /// The first normal-component point laid off for each link (n₂ …).
@@ -43,31 +44,81 @@ pub(super) struct Builder<'a> {
     pub scratch: Vec<(Vec2, usize)>,
 }
 
+/// A builder's buffers, handed from one construction to the next of a
+/// sweep (`Kernel`): no allocation per position once they have grown.
+pub(super) struct Tools {
+    pub acts: Vec<Act>,
+    pub nr: Vec<bool>,
+    /// Of every point of the mechanism: reported (`Setup::points`), on
+    /// which link ([`Tools::carrier`]).
+    pub reported_on: Vec<Option<usize>>,
+    pub normal_of: Vec<Option<usize>>,
+    pub scratch: Vec<(Vec2, usize)>,
+}
+
+impl Tools {
+    pub fn new(st: &Setup) -> Tools {
+        let m = st.m;
+        let mut reported_on = vec![None; m.scene.points.len()];
+        for &p in st.points {
+            reported_on[p] = Some(Tools::carrier(st, p));
+        }
+        Tools {
+            acts: Vec::new(),
+            nr: non_rotating(m),
+            reported_on,
+            normal_of: vec![None; m.links.len()],
+            scratch: Vec::new(),
+        }
+    }
+}
+
 impl<'a> Builder<'a> {
+    /// A builder for `plan` (emptied by [`Builder::again`] before a run)
+    /// with the buffers `tools` (of the same mechanism).
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         st: &'a Setup<'a>,
         c: &'a Configuration,
         drives: Drives,
-        plan: Plan,
+        plan: &'a mut Plan,
         vel: Option<&'a Plan>,
         variant: Variant,
         rng: Option<StdRng>,
+        tools: Tools,
     ) -> Builder<'a> {
-        let m = st.m;
+        let Tools {
+            acts,
+            nr,
+            reported_on,
+            normal_of,
+            scratch,
+        } = tools;
         Builder {
             variant,
             rng,
             st,
             c,
             plan,
-            acts: Vec::new(),
+            acts,
             record: false,
             taken: 0,
             vel,
-            nr: non_rotating(m),
+            nr,
+            reported_on,
             drives,
-            normal_of: vec![None; m.links.len()],
-            scratch: Vec::new(),
+            normal_of,
+            scratch,
+        }
+    }
+    /// The buffers, for the next construction.
+    pub fn finish(self) -> Tools {
+        Tools {
+            acts: self.acts,
+            nr: self.nr,
+            reported_on: self.reported_on,
+            normal_of: self.normal_of,
+            scratch: self.scratch,
         }
     }
     /// The same builder for a new construction at scale `mu`, its buffers
@@ -389,7 +440,7 @@ impl<'a> Builder<'a> {
         for &p in &m.links[frame].points {
             let x = self.world(frame, p);
             self.register(frame, x, 0);
-            if self.st.points.contains(&p) {
+            if self.reported_on[p].is_some() {
                 self.plan.of_point[p] = Some(0);
             }
         }
@@ -440,10 +491,7 @@ impl<'a> Builder<'a> {
             links[..n].sort_unstable();
             for &l in &links[..n] {
                 for &p in &m.links[l].points {
-                    if self.st.points.contains(&p)
-                        && self.plan.of_point[p].is_none()
-                        && self.carrier(p) == l
-                    {
+                    if self.reported_on[p] == Some(l) && self.plan.of_point[p].is_none() {
                         self.named(l, p);
                     }
                 }
@@ -473,12 +521,15 @@ impl<'a> Builder<'a> {
         }
         Ok(())
     }
+}
 
-    /// The first included link carrying `p` (in scene order), else the frame.
-    fn carrier(&self, p: usize) -> usize {
-        let m = self.m();
+impl Tools {
+    /// The first included link carrying `p` (in scene order), else the
+    /// frame: the link a reported point is constructed on.
+    fn carrier(st: &Setup, p: usize) -> usize {
+        let m = st.m;
         (0..m.links.len())
-            .find(|&l| self.st.include[l] && m.links[l].points.contains(&p))
+            .find(|&l| st.include[l] && m.links[l].points.contains(&p))
             .unwrap_or(m.frame())
     }
 }

@@ -183,7 +183,7 @@ impl Builder<'_> {
         self.same_rate(placed, known);
         // The reported points of the placed link.
         for &q in &m.links[placed].points {
-            if self.st.points.contains(&q) && self.plan.of_point[q].is_none() {
+            if self.reported_on[q].is_some() && self.plan.of_point[q].is_none() {
                 let carrier = (0..m.links.len())
                     .find(|&l| self.st.include[l] && m.links[l].points.contains(&q));
                 if carrier == Some(placed) {

@@ -46,35 +46,56 @@ pub use scale::Field;
 use crate::error::Result;
 use crate::kinematics::analytic::{Drives, Order};
 use crate::kinematics::positions::Configuration;
-use builder::Builder;
-use record::Act;
+use builder::{Builder, Tools};
 
 /// Build the plan of `kind` (on the velocity plan `vel` for the
-/// acceleration plan): its numbers, and the record of its steps. A scale
-/// `d` leaves open is the standard one at which the plan fits `field`,
-/// found by a first construction at unit scale.
+/// acceleration plan) into `plan` with the buffers `tools`: its numbers,
+/// and in `tools.acts` the record of its steps. A scale `d` leaves open
+/// is the standard one at which the plan fits `field`, found by a first
+/// construction at unit scale; or, given a `guess` (the scale of the
+/// sweep's last position and its [`scale::band`]), by the construction at
+/// that scale itself when the plan it draws settles on it
+/// ([`Field::settles`]), the same plan to the bit without the first
+/// construction. Whether it settled, with the buffers.
 #[allow(clippy::too_many_arguments)]
 fn construct(
     st: &Setup,
     c: &Configuration,
     drive: Drives,
-    kind: PlanKind,
-    vel: Option<&Plan>,
+    (kind, vel): (PlanKind, Option<&Plan>),
     d: &Drafting,
     field: &Field,
     naming: Naming,
-) -> Result<(Plan, Vec<Act>)> {
+    (plan, tools): (&mut Plan, Tools),
+    guess: Option<(f64, (f64, f64))>,
+) -> Result<(Tools, bool)> {
     use rand::SeedableRng;
     let rng = |k: u64| {
         d.variant
             .jitter
             .map(|s| rand::rngs::StdRng::seed_from_u64(s ^ k))
     };
-    let plan = Plan::empty(kind, 1.0, d.delta, st.m);
-    let mut b = Builder::new(st, c, drive, plan, vel, d.variant, rng(1));
+    plan.kind = kind;
+    plan.delta = d.delta;
+    let mut b = Builder::new(st, c, drive, plan, vel, d.variant, rng(1), tools);
+    let record = naming == Naming::Full;
     let mu = match d.mu(kind) {
         Some(mu) => mu,
         None => {
+            // The pencil's noise and deliberate mistakes act at unit scale
+            // in the first construction: only a plain one can skip it.
+            let plain = d.variant.jitter.is_none()
+                && d.variant.mistake.is_none()
+                && d.variant.also.is_none();
+            if let Some((mu, band)) = guess.filter(|_| plain) {
+                b.again(mu, rng(2));
+                b.record = record;
+                if b.run().is_ok() && field.settles(b.plan, band) {
+                    return Ok((b.finish(), true));
+                }
+            }
+            b.again(1.0, rng(1));
+            b.record = false;
             b.run()?;
             field.scale(b.plan.points.iter().map(|p| p.at))
         }
@@ -82,9 +103,9 @@ fn construct(
     // The real construction at that scale (the steps' numbers are in mm),
     // in the first one's buffers.
     b.again(mu, rng(2));
-    b.record = naming == Naming::Full;
+    b.record = record;
     b.run()?;
-    Ok((b.plan, b.acts))
+    Ok((b.finish(), false))
 }
 
 /// What a build gives besides the numbers.
@@ -110,9 +131,11 @@ pub fn build_plans_in(
     naming: Naming,
 ) -> Result<Plans> {
     let build = |kind, vel| -> Result<Plan> {
-        let (mut plan, acts) = construct(st, c, drive, kind, vel, &d, field, naming)?;
+        let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
+        let fresh = (&mut plan, Tools::new(st));
+        let (tools, _) = construct(st, c, drive, (kind, vel), &d, field, naming, fresh, None)?;
         if naming == Naming::Full {
-            record::narrate(&mut plan, &acts, st);
+            record::narrate(&mut plan, &tools.acts, st);
         }
         Ok(plan)
     };
@@ -153,8 +176,21 @@ pub fn build_acceleration(
     let drive = drive.into();
     let field = Field::default();
     let kind = PlanKind::Acceleration;
-    let (mut plan, acts) = construct(st, c, drive, kind, Some(vel), &d, &field, Naming::Full)?;
-    record::narrate(&mut plan, &acts, st);
+    let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
+    let fresh = (&mut plan, Tools::new(st));
+    let naming = Naming::Full;
+    let (tools, _) = construct(
+        st,
+        c,
+        drive,
+        (kind, Some(vel)),
+        &d,
+        &field,
+        naming,
+        fresh,
+        None,
+    )?;
+    record::narrate(&mut plan, &tools.acts, st);
     Ok(plan)
 }
 
@@ -170,4 +206,112 @@ pub fn build_plans_numbers(
     let drive = drive.into();
     let field = Field::default();
     build_plans_in(st, c, (drive, order), d, &field, Naming::NumbersOnly)
+}
+
+/// Numbers-only builds over a sweep ([`Naming::NumbersOnly`]): the plans
+/// and the builder's buffers kept from one position to the next, and each
+/// plan's last scale tried first: a plan drawn at it whose own extent
+/// picks it ([`Field::settles`]) is kept, without the first construction
+/// at unit scale; else that construction is made. So a position's plans
+/// equal, bit for bit, what [`build_plans_numbers`] gives for it alone,
+/// but where the first construction at unit scale takes other
+/// scale-dependent choices (which pair of a class III group, a similar
+/// figure by division or by arcs) than the drawing does and its extent
+/// falls a standard step apart (2 plans of 5574 over the fixtures'
+/// sweeps, `tests/plans.rs`): then the plan is at the neighbouring scale,
+/// settled there, with the same values.
+pub struct Kernel {
+    /// The last position's plans, their buffers for the next (empty
+    /// until the first build).
+    velocity: Option<Plan>,
+    acceleration: Option<Plan>,
+    /// The builder's buffers (`None` after an error: made again).
+    tools: Option<Tools>,
+    /// The last scales of the velocity and acceleration plans, with their
+    /// bands ([`scale::band`]).
+    last: [Option<(f64, (f64, f64))>; 2],
+    /// Plans drawn at once at the last scale (no first construction).
+    pub settled: usize,
+}
+
+impl Kernel {
+    pub fn new() -> Kernel {
+        Kernel {
+            velocity: None,
+            acceleration: None,
+            tools: None,
+            last: [None; 2],
+            settled: 0,
+        }
+    }
+
+    /// The velocity plan of one position and, when `order` asks, its
+    /// acceleration plan; a scale `d` leaves open fits the default
+    /// [`Field`]. The mechanism must be the same at every call.
+    pub fn build(
+        &mut self,
+        st: &Setup,
+        c: &Configuration,
+        drive: impl Into<Drives>,
+        order: Order,
+        d: Drafting,
+    ) -> Result<(&Plan, Option<&Plan>)> {
+        let drive = drive.into();
+        let field = Field::default();
+        let m = st.m;
+        let naming = Naming::NumbersOnly;
+        // The scale a plan was drawn at, and its band when it changed.
+        let keep = |last: &mut Option<(f64, (f64, f64))>, mu: f64| {
+            if last.is_none_or(|l| l.0 != mu) {
+                *last = scale::band(mu).map(|b| (mu, b));
+            }
+        };
+        let velocity = self
+            .velocity
+            .get_or_insert_with(|| Plan::empty(PlanKind::Velocity, 1.0, d.delta, m));
+        let tools = self.tools.take().unwrap_or_else(|| Tools::new(st));
+        let kind = (PlanKind::Velocity, None);
+        let (tools, settled) = construct(
+            st,
+            c,
+            drive,
+            kind,
+            &d,
+            &field,
+            naming,
+            (velocity, tools),
+            self.last[0],
+        )?;
+        self.settled += usize::from(settled);
+        keep(&mut self.last[0], velocity.mu);
+        if order == Order::Velocity {
+            self.tools = Some(tools);
+            return Ok((velocity, None));
+        }
+        let acceleration = self
+            .acceleration
+            .get_or_insert_with(|| Plan::empty(PlanKind::Acceleration, 1.0, d.delta, m));
+        let kind = (PlanKind::Acceleration, Some(&*velocity));
+        let (tools, settled) = construct(
+            st,
+            c,
+            drive,
+            kind,
+            &d,
+            &field,
+            naming,
+            (acceleration, tools),
+            self.last[1],
+        )?;
+        self.settled += usize::from(settled);
+        keep(&mut self.last[1], acceleration.mu);
+        self.tools = Some(tools);
+        Ok((velocity, Some(acceleration)))
+    }
+}
+
+impl Default for Kernel {
+    fn default() -> Self {
+        Kernel::new()
+    }
 }

@@ -287,7 +287,7 @@ impl Plan {
     pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
         self.body
             .iter()
-            .find(|k| k.link == link && (k.local - local).hypot() <= tol)
+            .find(|k| k.link == link && (k.local - local).hypot2() <= tol * tol)
             .map(|k| k.point)
     }
     /// The step that draws plan point `idx` (its index in `steps`).

@@ -41,10 +41,8 @@ impl Builder<'_> {
     /// carrying it that the plan knows).
     pub(super) fn named(&mut self, link: usize, p: usize) -> usize {
         let x = self.world(link, p);
-        let i = match self.find(link, x) {
-            Some(i) => i,
-            None => self.point_on(link, x, PointId::Named(p), Name::Point(p)),
-        };
+        // (A point the plan knows on the link is found by `point_on`.)
+        let i = self.point_on(link, x, PointId::Named(p), Name::Point(p));
         self.plan.of_point[p].get_or_insert(i);
         i
     }
@@ -52,9 +50,6 @@ impl Builder<'_> {
     /// The coincident point of `link` at world `x` (named after point `p`
     /// with the link's number as subscript: b₃ is B as a point of link 3).
     pub(super) fn coincident(&mut self, link: usize, x: Point, p: usize) -> usize {
-        if let Some(i) = self.find(link, x) {
-            return i;
-        }
         self.point_on(
             link,
             x,

@@ -1,6 +1,8 @@
 //! Scale coefficients μ from the standard drafting values (ГОСТ 2.302):
 //! 1, 2, 2.5, 4, 5 × 10^k.
 
+use kurbo::Vec2;
+
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
 /// Where a plan drawn at a standard scale must fit, mm: its longest vector
@@ -33,6 +35,50 @@ impl Field {
     /// fall at unit scale (real values); 1 for a plan all at the pole
     /// (everything at rest: any scale draws it).
     pub fn scale(&self, points: impl Iterator<Item = kurbo::Vec2>) -> f64 {
+        let mu = self.ratio(points).map_or(0.0, standard_of_ratio);
+        if mu > 0.0 { mu } else { 1.0 }
+    }
+
+    /// Whether `plan`, drawn at its scale μ (a standard value whose
+    /// [`band`] is `band`), is the plan [`Field::scale`] picks μ for from a
+    /// construction at unit scale. The two constructions differ by their
+    /// rounding only, a few ulps amplified as the drafting error is (by
+    /// 1/sin θ at every intersection: the plan's error radii over δ); so μ
+    /// is settled when every extent within a billionth times that
+    /// amplification of the plan's own lies in μ's band.
+    pub fn settles(&self, plan: &super::Plan, band: (f64, f64)) -> bool {
+        // One pass in millimetres: the longest vector (squared), the box,
+        // the largest error radius.
+        let (mut long2, mut lo, mut hi, mut err) =
+            (0.0f64, Vec2::splat(f64::MAX), Vec2::splat(f64::MIN), 0.0f64);
+        for p in &plan.points {
+            long2 = long2.max(p.at.hypot2());
+            lo = Vec2::new(lo.x.min(p.at.x), lo.y.min(p.at.y));
+            hi = Vec2::new(hi.x.max(p.at.x), hi.y.max(p.at.y));
+            err = err.max(p.err);
+        }
+        let mu = plan.mu;
+        let ratio = (long2.sqrt() / self.longest)
+            .max((hi.x - lo.x) / self.width)
+            .max((hi.y - lo.y) / self.height)
+            * mu;
+        if !(ratio > 0.0 && ratio.is_finite()) {
+            // Nothing to fit (all at the pole): the scale is 1.
+            return mu == 1.0 && ratio == 0.0;
+        }
+        let spread = if plan.delta > 0.0 {
+            err / plan.delta
+        } else {
+            0.0
+        };
+        let slack = 1e-9 * spread.max(1.0 / plan.worst_sin).max(1.0);
+        band.0 <= ratio * (1.0 - slack) && ratio * (1.0 + slack) <= band.1
+    }
+
+    /// The largest ratio of a plan's extents (real values, at unit scale)
+    /// to the field's: its longest vector, width and height; `None` when
+    /// there is nothing to fit.
+    fn ratio(&self, points: impl Iterator<Item = kurbo::Vec2>) -> Option<f64> {
         let (mut largest, mut lo, mut hi) = (0.0f64, (f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
         for p in points {
             largest = largest.max(p.hypot());
@@ -42,7 +88,7 @@ impl Field {
         // The standard scale grows with the ratio it fits (the smallest
         // standard value above it), so the largest of the three scales is
         // the one of the largest ratio: one search instead of three.
-        let target = [
+        [
             (largest, self.longest),
             (hi.0 - lo.0, self.width),
             (hi.1 - lo.1, self.height),
@@ -50,9 +96,7 @@ impl Field {
         .into_iter()
         .filter(|&(x, _)| fits_something(x))
         .map(|(x, max_mm)| x / max_mm)
-        .fold(None, |a: Option<f64>, t| Some(a.map_or(t, |a| a.max(t))));
-        let mu = target.map_or(0.0, standard_of_ratio);
-        if mu > 0.0 { mu } else { 1.0 }
+        .fold(None, |a: Option<f64>, t| Some(a.map_or(t, |a| a.max(t))))
     }
 }
 
@@ -85,6 +129,29 @@ fn standard_of_ratio(target: f64) -> f64 {
         }
         k += 1;
     }
+}
+
+/// The ratios (real value per mm) for which [`Field::scale`] picks the
+/// standard value `mu`, narrowed by a hundred-billionth at both ends
+/// (so that rounding at the ends never matters): every ratio in
+/// `lo..=hi` gives `mu`. `None` when `mu` is not a standard value.
+pub fn band(mu: f64) -> Option<(f64, f64)> {
+    if !(mu.is_finite() && mu > 0.0) {
+        return None;
+    }
+    let k0 = mu.log10().floor() as i32;
+    for k in k0 - 1..=k0 + 1 {
+        for (i, m) in MANTISSAS.into_iter().enumerate() {
+            if (m * 10f64.powi(k) - mu).abs() <= 1e-9 * mu {
+                let below = match i {
+                    0 => MANTISSAS[4] * 10f64.powi(k - 1),
+                    _ => MANTISSAS[i - 1] * 10f64.powi(k),
+                };
+                return Some((below * (1.0 + 1e-11), mu * (1.0 - 1e-11)));
+            }
+        }
+    }
+    None
 }
 
 /// The next standard value above `mu` (a standard value or not).
@@ -122,6 +189,28 @@ mod tests {
         }
         assert_eq!(f.scale(std::iter::empty()), 1.0);
         assert_eq!(f.scale([kurbo::Vec2::ZERO].into_iter()), 1.0);
+    }
+
+    #[test]
+    fn a_band_holds_the_ratios_of_its_scale_and_no_others() {
+        let mut x = 0.61f64;
+        for _ in 0..2000 {
+            x = (x * 7919.0 + 0.123).fract();
+            let ratio = (x * 20.0 - 10.0).exp();
+            let mu = standard_of_ratio(ratio);
+            let (lo, hi) = band(mu).expect("a standard value");
+            assert!(
+                lo <= ratio * (1.0 + 1e-10) && ratio <= hi * (1.0 + 1e-10),
+                "{ratio}"
+            );
+            for r in [lo, hi, lo + 0.5 * (hi - lo)] {
+                assert_eq!(standard_of_ratio(r), mu, "{r} in the band of {mu}");
+            }
+            assert!(standard_of_ratio(lo * (1.0 - 1e-9)) < mu);
+            assert!(standard_of_ratio(hi * (1.0 + 1e-9)) > mu);
+        }
+        assert_eq!(band(1.0).map(|b| b.1 < 1.0), Some(true));
+        assert_eq!(band(0.3), None);
     }
 
     #[test]

@@ -24,12 +24,16 @@ impl Builder<'_> {
     /// the axes is not enough: a special point far out on the base carries
     /// large normal components ω²·l of the base).
     pub(super) fn triad(&mut self, t: &Triad) -> Result<()> {
-        let saved = (self.plan.clone(), self.normal_of.clone(), self.rng.clone());
+        let saved = (
+            (*self.plan).clone(),
+            self.normal_of.clone(),
+            self.rng.clone(),
+        );
         let (start, mark) = (self.plan.points.len(), self.acts.len());
         let mut best: Option<(f64, (usize, usize, usize))> = None;
         let mut first_err = None;
         for pair in PAIRS {
-            (self.plan, self.normal_of, self.rng) = saved.clone();
+            (*self.plan, self.normal_of, self.rng) = saved.clone();
             self.acts.truncate(mark);
             match self.triad_by(t, Some(pair)) {
                 Ok(()) => {
@@ -46,7 +50,7 @@ impl Builder<'_> {
                 }
             }
         }
-        (self.plan, self.normal_of, self.rng) = saved;
+        (*self.plan, self.normal_of, self.rng) = saved;
         self.acts.truncate(mark);
         match best {
             Some((_, pair)) => self.triad_by(t, Some(pair)),
