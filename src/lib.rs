@@ -14,6 +14,8 @@
 #[doc(hidden)]
 pub mod kinematics;
 #[doc(hidden)]
+pub mod kinetostatics;
+#[doc(hidden)]
 pub mod model;
 #[doc(hidden)]
 pub mod presentation;
