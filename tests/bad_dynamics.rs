@@ -276,6 +276,21 @@ fn forces_not_a_list() {
     );
 }
 
+#[test]
+fn too_many_moving_links() {
+    reject(
+        "too_many_links",
+        |v| {
+            let links = v["links"].as_object_mut().unwrap();
+            for i in 0..200 {
+                links.insert(format!("{}", 10 + i), json!({ "points": ["A", "B"] }));
+            }
+        },
+        "/dynamics",
+        "the force analysis takes at most 200 moving links (one dense system of 3 equations each); the scene has 203",
+    );
+}
+
 // ---- the good ones -------------------------------------------------------
 
 /// With `want` asking for velocities and one point only, the accelerations

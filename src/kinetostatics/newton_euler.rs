@@ -20,9 +20,7 @@ use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 use nalgebra::{DMatrix, DVector};
 
-/// The most moving links the dense system takes: 3 equations each, so
-/// the LU of a 600 × 600 matrix at every position.
-pub const MAX_MOVING_LINKS: usize = 200;
+pub use crate::model::scene::MAX_MOVING_LINKS;
 
 /// The unknowns found: in the mechanism's order of pairs and the scene's
 /// order of inputs.

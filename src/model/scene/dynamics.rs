@@ -9,6 +9,11 @@ use super::{LinkSpec, NamedPoint};
 use kurbo::Vec2;
 use serde_json::Value;
 
+/// The most moving links the force analysis takes: its equilibrium
+/// system is dense, 3 equations a link (an LU of 600 × 600 at every
+/// position).
+pub const MAX_MOVING_LINKS: usize = 200;
+
 /// The scene's `dynamics`: gravity, masses, external loads.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DynamicsSpec {
@@ -77,6 +82,16 @@ impl Reader {
     ) -> Option<DynamicsSpec> {
         let v = v?;
         let o = self.object(v, "/dynamics")?;
+        let moving = links.len().saturating_sub(1);
+        if moving > MAX_MOVING_LINKS {
+            self.err(
+                "/dynamics",
+                format!(
+                    "the force analysis takes at most {MAX_MOVING_LINKS} moving links (one dense system of 3 equations each); the scene has {moving}"
+                ),
+            );
+            return None;
+        }
         self.only_keys(o, "/dynamics", &["g", "links", "forces", "moments"]);
         let mut d = DynamicsSpec {
             g: Vec2::ZERO,

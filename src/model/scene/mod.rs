@@ -26,7 +26,7 @@ use kurbo::Point;
 use numbers::locate_bad_numbers;
 use reader::Reader;
 
-pub use dynamics::{DynamicsSpec, ForceSpec, LinkMass, MomentSpec, PerPosition};
+pub use dynamics::{DynamicsSpec, ForceSpec, LinkMass, MAX_MOVING_LINKS, MomentSpec, PerPosition};
 
 /// A named point of the sketch.
 #[derive(Clone, Debug)]
