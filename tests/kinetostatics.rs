@@ -530,3 +530,26 @@ fn balancing_power_is_the_rate_of_kinetic_energy() {
         eprintln!("{name}: M_b·ω1 against dT/dt by central differences within {worst:.1e} of ω1·T");
     }
 }
+
+/// A piston's guide force has no line exactly at the dead centres, where
+/// the rod lies along the cylinder's axis (`at` null, N ≈ 0), and one
+/// everywhere else: the compressor's positions 1 and 7 (φ1 = 90°, 270°).
+#[test]
+fn no_point_of_application_at_dead_centres() {
+    for (k, p) in positions(&fixture("compressor_fig2_12")).iter().enumerate() {
+        let dead = k == 0 || k == 6;
+        for pair in p["dynamics"]["pairs"].as_array().unwrap() {
+            if pair.get("slider").is_none() {
+                continue;
+            }
+            assert_eq!(pair["at"].is_null(), dead, "position {}: {pair}", k + 1);
+            if !dead {
+                // On the axis x = 0, the piston's own pin: the rod's force
+                // passes through it and so does the guide's.
+                let at = v(&pair["at"]);
+                let q = v(&p["points"][pair["point"].as_str().unwrap()]["p"]);
+                assert!(norm(sub(at, q)) < 1e-12, "position {}: {pair}", k + 1);
+            }
+        }
+    }
+}
