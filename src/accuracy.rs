@@ -74,6 +74,19 @@ pub struct Accuracy {
     /// Two explanations of a wrong answer are told apart only when one's
     /// misfit is this many times the other's.
     pub distinct_misfit: f64,
+    /// The force analysis: the smallest reciprocal condition number (1-norm)
+    /// of the scaled equilibrium system; below it its rounding (ε/rcond)
+    /// could exceed `max_rel_diff` and the position is refused.
+    pub min_force_conditioning: f64,
+    /// The force analysis: the two routes' balancing moments (forces) may
+    /// differ by this fraction of the virtual power's terms (the sum of
+    /// their magnitudes) before the position is refused, as the routes of
+    /// the kinematics by `max_rel_diff`.
+    pub max_balancing_diff: f64,
+    /// A prismatic pair's normal force below this fraction of the largest
+    /// force at the position has no point of application (`at` is null):
+    /// the couple over it would be rounding magnified.
+    pub null_normal_force: f64,
 }
 
 /// The values mechplan uses.
@@ -98,4 +111,7 @@ pub const ACCURACY: Accuracy = Accuracy {
     bound_roundings: 256.0,
     max_tolerance_of_plan: 0.2,
     distinct_misfit: 2.0,
+    min_force_conditioning: f64::EPSILON / 1e-6,
+    max_balancing_diff: 1e-6,
+    null_normal_force: 1e-9,
 };

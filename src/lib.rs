@@ -4,7 +4,8 @@
 //! The modules follow the data flow of the method of a TMM course
 //! (docs/architecture.md): [`model`] (the scene file, rigid links, Assur
 //! groups) → [`kinematics`] (positions, two analytic routes, the plans as
-//! constructions, the analysis of a scene's positions) → [`studies`]
+//! constructions, the analysis of a scene's positions) → [`kinetostatics`]
+//! (the force analysis, with the scene's `dynamics`) → [`studies`]
 //! (centres, invariants, diagrams) and [`verification`] (checking
 //! hand-drawn plans, the extended-precision reference) → [`presentation`]
 //! (result files, tables, sheets).
@@ -13,6 +14,8 @@
 // public for the tests, benches and fuzz targets, hidden from the API.
 #[doc(hidden)]
 pub mod kinematics;
+#[doc(hidden)]
+pub mod kinetostatics;
 #[doc(hidden)]
 pub mod model;
 #[doc(hidden)]

@@ -31,7 +31,9 @@ impl Demand {
             None => (0..sc.points.len()).collect(),
         };
         let carriers: Vec<usize> = points.iter().map(|&p| mech.links_of_point(p)[0]).collect();
-        let mut need = if sc.want.points.is_some() {
+        // The force analysis needs every link's equilibrium: with
+        // `dynamics` every group is solved, whatever points are reported.
+        let mut need = if sc.want.points.is_some() && sc.dynamics.is_none() {
             structure.needed_for(&carriers)
         } else {
             vec![true; structure.groups.len()]

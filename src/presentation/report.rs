@@ -14,12 +14,12 @@ use serde_json::{Map, Value, json};
 use std::fmt::Write as _;
 
 /// Round-trip-exact but tidy: integers print as integers, no `-0`.
-fn num(x: f64) -> Value {
+pub(super) fn num(x: f64) -> Value {
     let x = if x == 0.0 { 0.0 } else { x };
     json!(x)
 }
 
-fn vec2(v: kurbo::Vec2) -> Value {
+pub(super) fn vec2(v: kurbo::Vec2) -> Value {
     json!([num(v.x), num(v.y)])
 }
 
@@ -270,6 +270,9 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
             check["bound"] = Value::Object(bound);
         }
         o.insert("crosscheck".into(), check);
+    }
+    if let Some(d) = &s.dynamics {
+        o.insert("dynamics".into(), super::dynamics::dynamics_json(an, d));
     }
     Value::Object(o)
 }

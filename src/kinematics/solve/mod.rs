@@ -102,6 +102,9 @@ pub struct Solved {
     /// The plans of velocities and accelerations, as constructions.
     pub plans: Option<Plans>,
     pub check: Option<CrossCheck>,
+    /// The force analysis (with the scene's `dynamics`), after the
+    /// cross-check has passed the motion it starts from.
+    pub dynamics: Option<crate::kinetostatics::Dynamics>,
 }
 
 impl Analysis {

@@ -22,6 +22,8 @@ const JUMP: f64 = 0.25;
 
 /// A position found in order by both routes, before its rates.
 struct Placed<'a> {
+    /// The position's number in the scene's order, from 0.
+    index: usize,
     q: Coords,
     /// The rounding of q as the file writes it (rad or m).
     q_rounding: Coords,
@@ -113,6 +115,7 @@ impl Analysis {
                     changed: &changed,
                     residuals: eqs.as_ref(),
                 };
+                let chunk = (from, chunk);
                 self.run_chunk(chunk, rounding, &mut ps, &mut cs, &checks, bar, &mut |s| {
                     self.same_orientation(&mut orientation, &s)?;
                     if let Some((probe, last)) = &mut motion {
@@ -123,12 +126,13 @@ impl Analysis {
             })
     }
 
-    /// One chunk of [`Analysis::run_each`]: its positions found in order,
-    /// then finished (in parallel when long) and handed to `f` in order.
+    /// One chunk of [`Analysis::run_each`] (the number of its first
+    /// position, its input values): its positions found in order, then
+    /// finished (in parallel when long) and handed to `f` in order.
     #[allow(clippy::too_many_arguments)]
     fn run_chunk<'a>(
         &'a self,
-        values: &[Coords],
+        (from, values): (usize, &[Coords]),
         rounding: &[Coords],
         ps: &mut PositionSolver,
         cs: &mut Option<ConstraintSolver<'a>>,
@@ -138,7 +142,7 @@ impl Analysis {
     ) -> Result<()> {
         let mut placed = Vec::with_capacity(values.len());
         let mut stop = None;
-        for (&q, &q_rounding) in values.iter().zip(rounding) {
+        for (i, (&q, &q_rounding)) in values.iter().zip(rounding).enumerate() {
             let t0 = Clock::now();
             let config = match ps.solve_coords(q) {
                 Ok(c) => c,
@@ -161,6 +165,7 @@ impl Analysis {
             }
             let constraint_time = t1.elapsed().as_secs_f64();
             placed.push(Placed {
+                index: from + i,
                 q,
                 q_rounding,
                 config,
@@ -402,6 +407,7 @@ impl Analysis {
                 mixed,
                 plans: None,
                 check: None,
+                dynamics: None,
             };
             let eqs = checks.residuals.expect("the fast path's equations");
             solved.check = Some(self.residual_check(
@@ -411,6 +417,7 @@ impl Analysis {
                 p.q_rounding,
                 checks.changed,
             )?);
+            solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
             return Ok(solved);
         };
         let mut cs = cs.clone();
@@ -442,6 +449,7 @@ impl Analysis {
             mixed,
             plans,
             check: None,
+            dynamics: None,
         };
         let costs = Costs {
             contour_time,
@@ -451,6 +459,7 @@ impl Analysis {
         };
         solved.check =
             Some(self.cross_check(&solved, &other, costs, p.q_rounding, checks.changed)?);
+        solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
         Ok(solved)
     }
 

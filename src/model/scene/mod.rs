@@ -7,8 +7,9 @@
 //! top level, the units and the getters every section uses), `numbers`
 //! (numbers, angles and their rounding, non-finite numbers located),
 //! `links` (points and links), `sliders` (prismatic pairs and their
-//! guide lines), `lengths`, `input`, `positions`, `want`.
+//! guide lines), `lengths`, `input`, `positions`, `want`, `dynamics`.
 
+mod dynamics;
 mod input;
 mod lengths;
 mod links;
@@ -24,6 +25,8 @@ use crate::json::parse_strict;
 use kurbo::Point;
 use numbers::locate_bad_numbers;
 use reader::Reader;
+
+pub use dynamics::{DynamicsSpec, ForceSpec, LinkMass, MAX_MOVING_LINKS, MomentSpec, PerPosition};
 
 /// A named point of the sketch.
 #[derive(Clone, Debug)]
@@ -246,6 +249,9 @@ pub struct Scene {
     /// own rounding does (an angle of a million turns in radians is known
     /// only to about 1e-9 rad).
     pub input_rounding: Vec<f64>,
+    /// Masses and external loads for the force analysis (`dynamics`);
+    /// `None`: kinematics only.
+    pub dynamics: Option<DynamicsSpec>,
 }
 
 /// Unit roundoff of f64: half an ulp, relative.

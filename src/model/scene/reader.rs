@@ -125,6 +125,7 @@ impl Reader {
                 "positions",
                 "want",
                 "sheet",
+                "dynamics",
             ],
         );
         match top.get("mechplan") {
@@ -158,18 +159,25 @@ impl Reader {
         let positions = self.positions(top.get("positions"), &links, inputs.as_deref());
         let mut want = self.want(top.get("want"), &points);
         let sheet = self.sheet_info(top.get("sheet"));
-        if let (Some(w), Some(p), Some(at)) = (
+        let count = positions.as_ref().map(|p| match p {
+            PositionsSpec::Single => 1,
+            PositionsSpec::List(v) => v.len(),
+            PositionsSpec::Values(v) => v.len(),
+            PositionsSpec::Count { count, .. } => *count,
+        });
+        if let (Some(w), Some(n), Some(at)) = (
             want.as_mut(),
-            positions.as_ref(),
+            count,
             top.get("want").and_then(|w| w.get("plans_at")),
         ) {
-            let n = match p {
-                PositionsSpec::Single => 1,
-                PositionsSpec::List(v) => v.len(),
-                PositionsSpec::Values(v) => v.len(),
-                PositionsSpec::Count { count, .. } => *count,
-            };
             w.plans_at = self.plans_at(at, n);
+        }
+        let dynamics = self.dynamics(top.get("dynamics"), &points, &links, frame, count);
+        if let (Some(w), Some(_)) = (want.as_mut(), top.get("dynamics")) {
+            // The inertia forces need every link's accelerations, whatever
+            // `want` asks to be reported.
+            w.velocity = true;
+            w.acceleration = true;
         }
         Some(Scene {
             title,
@@ -183,6 +191,7 @@ impl Reader {
             input: inputs.as_ref()?[0].clone(),
             more_inputs: inputs?[1..].to_vec(),
             want: want?,
+            dynamics,
             length_unit: self.len,
             angle_unit: self.ang,
             input_rounding: std::mem::take(&mut self.rounding),

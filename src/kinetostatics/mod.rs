@@ -1,0 +1,205 @@
+//! Kinetostatics, the force analysis (issue #17), after the kinematics in
+//! the data flow: at each solved position the known loads ([`loads`]:
+//! inertia by d'Alembert, weights, the scene's external loads), the
+//! reactions in every pair and the balancing moment (force) of every input
+//! by the equilibrium of all links at once ([`newton_euler`]), checked
+//! against the balancing moment by virtual power ([`power`]).
+//! docs/kinetostatics.md gives the conventions and a worked example.
+
+pub mod loads;
+pub mod newton_euler;
+pub mod power;
+
+use crate::accuracy::ACCURACY;
+use crate::error::{Error, Result};
+use crate::kinematics::positions::describe_input;
+use crate::kinematics::solve::{Analysis, Solved};
+use kurbo::{Point, Vec2};
+pub use loads::{Inertia, Load, Origin};
+
+/// The reaction in a revolute pair: the force `r` (N) of link `first` on
+/// link `second` at the pair's point; `second` feels `r`, `first` −`r`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RevoluteReaction {
+    /// Index into `Mechanism::revolutes`.
+    pub pair: usize,
+    pub point: usize,
+    pub first: usize,
+    pub second: usize,
+    pub at: Point,
+    pub r: Vec2,
+}
+
+/// The reaction in a prismatic pair: the guide's force `n` (N) on the
+/// slider, perpendicular to the guide, and its couple `m` (N·m) about the
+/// pair's point `q`; together one force `n` through `at` = q + (m/|n|)·u
+/// along the guide, when `n` is not zero (else `at` is `None`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GuideReaction {
+    /// Index into `Mechanism::prismatics`.
+    pub pair: usize,
+    pub slider: usize,
+    pub guide: usize,
+    pub point: usize,
+    /// The pair's point (the slider's point on the guide line).
+    pub q: Point,
+    /// The guide's direction.
+    pub u: Vec2,
+    pub n: Vec2,
+    pub m: f64,
+    pub at: Option<Point>,
+}
+
+/// What the drive applies to an input link to keep the motion given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Balancing {
+    /// On a crank, N·m, counter-clockwise positive.
+    Moment(f64),
+    /// Along a driving slider's guide direction, N (a cylinder: on the
+    /// rod, and its opposite on the barrel).
+    Force(f64),
+}
+
+impl Balancing {
+    pub fn value(&self) -> f64 {
+        match *self {
+            Balancing::Moment(x) | Balancing::Force(x) => x,
+        }
+    }
+}
+
+/// The force analysis of one position.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Dynamics {
+    /// Every link with mass, in the scene's order.
+    pub inertia: Vec<Inertia>,
+    /// Every revolute pair, in `Mechanism::revolutes`' order.
+    pub revolutes: Vec<RevoluteReaction>,
+    /// Every prismatic pair, in the scene's order of `sliders`.
+    pub prismatics: Vec<GuideReaction>,
+    /// Per input, in the scene's order: by the equilibrium of the links.
+    pub balancing: Vec<Balancing>,
+    /// Per input: the same by virtual power.
+    pub virtual_power: Vec<f64>,
+    /// The largest disagreement of the two, relative to the magnitudes of
+    /// the virtual power's terms.
+    pub balancing_diff: f64,
+    /// The equilibrium system's reciprocal condition number.
+    pub rcond: f64,
+    /// The largest force at the position (N; a couple counted over the
+    /// mechanism's size): the scale of its residuals.
+    pub force_scale: f64,
+}
+
+/// The force analysis of solved position `s`, the `k`-th (from 0) of the
+/// scene; `None` when the scene has no `dynamics`. Refused (an error
+/// naming the position) where the equilibrium equations are singular or
+/// ill-conditioned, or the two routes disagree.
+pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> {
+    let Some(inertia) = loads::inertia(an, s) else {
+        return Ok(None);
+    };
+    let m = &an.mech;
+    let loads = loads::loads(an, s, k);
+    let x = newton_euler::solve(an, s, &loads)?;
+    let vp = power::balancing(an, s, &loads);
+    let size = m.size;
+    let mut scale = loads
+        .iter()
+        .map(|l| match *l {
+            Load::Force { f, .. } => f.hypot(),
+            Load::Couple { m, .. } => m.abs() / size,
+        })
+        .fold(0.0, f64::max);
+    let revolutes: Vec<RevoluteReaction> = m
+        .revolutes
+        .iter()
+        .zip(&x.revolute)
+        .enumerate()
+        .map(|(pair, (rv, &r))| RevoluteReaction {
+            pair,
+            point: rv.point,
+            first: rv.a,
+            second: rv.b,
+            at: s.config.point(m, rv.b, rv.point),
+            r,
+        })
+        .collect();
+    let balancing: Vec<Balancing> = m
+        .scene
+        .inputs()
+        .zip(&x.drives)
+        .map(|(i, &b)| {
+            if i.is_crank() {
+                Balancing::Moment(b)
+            } else {
+                Balancing::Force(b)
+            }
+        })
+        .collect();
+    for r in &revolutes {
+        scale = scale.max(r.r.hypot());
+    }
+    for b in &balancing {
+        scale = scale.max(match *b {
+            Balancing::Moment(x) => x.abs() / size,
+            Balancing::Force(x) => x.abs(),
+        });
+    }
+    for &(n, c) in &x.prismatic {
+        scale = scale.max(n.abs()).max(c.abs() / size);
+    }
+    let prismatics = m
+        .prismatics
+        .iter()
+        .zip(&x.prismatic)
+        .enumerate()
+        .map(|(pair, (pr, &(n, c)))| {
+            let (q, u, nrm) = newton_euler::guide_frame(an, s, pair);
+            // One force n through q + t·u has the moment t·n about q.
+            let at = (n.abs() > ACCURACY.null_normal_force * scale).then(|| q + u * (c / n));
+            GuideReaction {
+                pair,
+                slider: pr.slider,
+                guide: pr.guide,
+                point: pr.point,
+                q,
+                u,
+                n: nrm * n,
+                m: c,
+                at,
+            }
+        })
+        .collect();
+    let mut diff: f64 = 0.0;
+    for ((b, &v), &sc) in balancing.iter().zip(&vp.balancing).zip(&vp.scale) {
+        let d = (b.value() - v).abs();
+        let rel = if d == 0.0 {
+            0.0
+        } else {
+            d / sc.max(f64::MIN_POSITIVE)
+        };
+        diff = diff.max(rel);
+    }
+    if diff.is_nan() || diff > ACCURACY.max_balancing_diff {
+        return Err(Error::singular(
+            describe_input(m, &s.drives.coords()),
+            format!(
+                "the balancing moments (forces) of the inputs by the links' equilibrium {:?} and by virtual power {:?} differ by {diff:.1e} of the power's terms (more than {:.0e})",
+                balancing.iter().map(Balancing::value).collect::<Vec<_>>(),
+                vp.balancing,
+                ACCURACY.max_balancing_diff
+            ),
+        ));
+    }
+    Ok(Some(Dynamics {
+        inertia,
+        revolutes,
+        prismatics,
+        balancing,
+        virtual_power: vp.balancing,
+        balancing_diff: diff,
+        rcond: x.rcond,
+        force_scale: scale,
+    }))
+}
