@@ -6,6 +6,7 @@
 //! against the balancing moment by virtual power ([`power`]).
 //! docs/kinetostatics.md gives the conventions and a worked example.
 
+pub mod force_plan;
 pub mod loads;
 pub mod newton_euler;
 pub mod power;
@@ -89,6 +90,11 @@ pub struct Dynamics {
     /// The largest force at the position (N; a couple counted over the
     /// mechanism's size): the scale of its residuals.
     pub force_scale: f64,
+    /// The force plans, group by group (`None` with a class III group:
+    /// no scheme draws it), and their largest disagreement with the
+    /// links' equilibrium, relative to `force_scale`.
+    pub force_plans: Option<force_plan::ForcePlans>,
+    pub force_plans_diff: Option<f64>,
 }
 
 /// The force analysis of solved position `s`, the `k`-th (from 0) of the
@@ -192,7 +198,13 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
             ),
         ));
     }
+    let (force_plans, force_plans_diff) = match plans(an, s, &loads, &x, scale)? {
+        Some((p, d)) => (Some(p), Some(d)),
+        None => (None, None),
+    };
     Ok(Some(Dynamics {
+        force_plans,
+        force_plans_diff,
         inertia,
         revolutes,
         prismatics,
@@ -202,4 +214,62 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         rcond: x.rcond,
         force_scale: scale,
     }))
+}
+
+/// The force plans at position `s` and their largest disagreement with the
+/// links' equilibrium `x` (relative to `scale`); `None` with a class III
+/// group. Refused where they disagree by more than
+/// `accuracy::max_balancing_diff`.
+fn plans(
+    an: &Analysis,
+    s: &Solved,
+    loads: &[Load],
+    x: &newton_euler::Unknowns,
+    scale: f64,
+) -> Result<Option<(force_plan::ForcePlans, f64)>> {
+    use crate::model::structure::AssurGroup;
+    let m = &an.mech;
+    if an
+        .structure
+        .groups
+        .iter()
+        .any(|g| matches!(g, AssurGroup::Triad(_)))
+    {
+        return Ok(None);
+    }
+    let fp = force_plan::solve(an, s, loads, an.drafting.delta)?;
+    let size = m.size;
+    let mut diff: f64 = 0.0;
+    let mut worst = |a: f64, b: Option<f64>| {
+        let d = b.map_or(f64::INFINITY, |b| {
+            (a - b).abs() / scale.max(f64::MIN_POSITIVE)
+        });
+        diff = diff.max(if d.is_nan() { f64::INFINITY } else { d });
+    };
+    for (r, p) in x.revolute.iter().zip(&fp.revolute) {
+        worst(r.x, p.map(|p| p.x));
+        worst(r.y, p.map(|p| p.y));
+    }
+    for (r, p) in x.prismatic.iter().zip(&fp.prismatic) {
+        worst(r.0, p.map(|p| p.0));
+        worst(r.1 / size, p.map(|p| p.1 / size));
+    }
+    for (i, (r, p)) in x.drives.iter().zip(&fp.drives).enumerate() {
+        let l = if m.scene.input_at(i).is_crank() {
+            size
+        } else {
+            1.0
+        };
+        worst(r / l, p.map(|p| p / l));
+    }
+    if diff > ACCURACY.max_balancing_diff {
+        return Err(Error::singular(
+            describe_input(m, &s.drives.coords()),
+            format!(
+                "the force plans and the links' equilibrium give reactions that differ by {diff:.1e} of the largest force (more than {:.0e})",
+                ACCURACY.max_balancing_diff
+            ),
+        ));
+    }
+    Ok(Some((fp, diff)))
 }

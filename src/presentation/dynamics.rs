@@ -68,7 +68,7 @@ pub fn dynamics_json(an: &Analysis, d: &Dynamics) -> Value {
             })
         })
         .collect();
-    json!({
+    let mut out = json!({
         "inertia": inertia,
         "pairs": pairs,
         "balancing": per_input(an, d.balancing.iter().map(|b| balancing(*b)).collect()),
@@ -77,5 +77,19 @@ pub fn dynamics_json(an: &Analysis, d: &Dynamics) -> Value {
             "rel_diff": num(d.balancing_diff),
             "conditioning": num(d.rcond),
         },
-    })
+    });
+    if let (Some(fp), Some(diff)) = (&d.force_plans, d.force_plans_diff) {
+        out["check"]["force_plans"] = num(diff);
+        out["force_plans"] = fp
+            .plans
+            .iter()
+            .map(|p| {
+                json!({
+                    "links": p.links.iter().map(|&l| m.link_id(l)).collect::<Vec<_>>(),
+                    "mu": num(p.mu),
+                })
+            })
+            .collect();
+    }
+    out
 }

@@ -1,0 +1,260 @@
+//! The force plans (the graphical route, `kinetostatics::force_plan`)
+//! against the links' equilibrium solved as one linear system
+//! (`kinetostatics::newton_euler`): the two share only the loads.
+
+use mechplan::kinetostatics::force_plan::{self, Force, ForcePlan, ForceStep};
+use mechplan::kinetostatics::{loads, newton_euler};
+use mechplan::scene::Scene;
+use mechplan::{Analysis, Solved};
+
+const FIXTURES: [&str; 5] = [
+    "worked_slider_crank",
+    "six_link_fig2_10",
+    "shaper_fig2_11",
+    "compressor_fig2_12",
+    "arm_two_cylinders",
+];
+
+fn solved(name: &str) -> (Analysis, Vec<Solved>) {
+    let path = format!(
+        "{}/fixtures/dynamics/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let an =
+        Analysis::new(Scene::from_json(&std::fs::read_to_string(path).unwrap()).unwrap()).unwrap();
+    let solved = an.run().unwrap();
+    (an, solved)
+}
+
+/// Every reaction and balancing value of every fixture at every position
+/// agrees to 1e-10 of the position's largest force (a couple counted
+/// over the mechanism's size).
+#[test]
+fn force_plans_agree_with_the_links_equilibrium() {
+    let mut worst: f64 = 0.0;
+    let mut compared = 0;
+    for name in FIXTURES {
+        let (an, solved) = solved(name);
+        let size = an.mech.size;
+        for (k, s) in solved.iter().enumerate() {
+            let loads = loads::loads(&an, s, k);
+            let ne = newton_euler::solve(&an, s, &loads).unwrap();
+            let fp = force_plan::solve(&an, s, &loads, 0.5).unwrap();
+            let scale = s.dynamics.as_ref().unwrap().force_scale;
+            let mut check = |what: String, a: f64, b: f64| {
+                let d = (a - b).abs() / scale;
+                worst = worst.max(d);
+                compared += 1;
+                assert!(d <= 1e-10, "{name} position {}: {what}: {a} vs {b}", k + 1);
+            };
+            for (i, (r, p)) in ne.revolute.iter().zip(&fp.revolute).enumerate() {
+                let p = p.unwrap_or_else(|| panic!("{name}: revolute pair {i} has no force plan"));
+                check(format!("revolute {i} x"), r.x, p.x);
+                check(format!("revolute {i} y"), r.y, p.y);
+            }
+            for (i, (r, p)) in ne.prismatic.iter().zip(&fp.prismatic).enumerate() {
+                let p = p.unwrap_or_else(|| panic!("{name}: prismatic pair {i} has no force plan"));
+                check(format!("prismatic {i} N"), r.0, p.0);
+                check(format!("prismatic {i} couple / L"), r.1 / size, p.1 / size);
+            }
+            for (i, (r, p)) in ne.drives.iter().zip(&fp.drives).enumerate() {
+                let p = p.unwrap_or_else(|| panic!("{name}: input {i} has no balancing"));
+                let l = if an.mech.scene.input_at(i).is_crank() {
+                    size
+                } else {
+                    1.0
+                };
+                check(format!("balancing {i}"), r / l, p / l);
+            }
+        }
+    }
+    eprintln!("{compared} values compared, worst {worst:.1e} of the force scale");
+}
+
+/// Each group's plan is a closed polygon: its vectors laid off and its
+/// closing reactions sum to zero, every closing vector starts or ends at
+/// a point the plan drew, and the lines meet at a readable angle.
+#[test]
+fn every_force_plan_closes() {
+    for name in FIXTURES {
+        let (an, solved) = solved(name);
+        for (k, s) in solved.iter().enumerate() {
+            let loads = loads::loads(&an, s, k);
+            let fp = force_plan::solve(&an, s, &loads, 0.5).unwrap();
+            for plan in &fp.plans {
+                closes(name, k, plan);
+            }
+        }
+    }
+}
+
+fn closes(name: &str, k: usize, plan: &ForcePlan) {
+    // The laid-off vectors run head to tail from the start.
+    let mut at = 0;
+    for step in &plan.steps {
+        if let ForceStep::LayOff(i) = *step {
+            let v = plan.vectors[i];
+            assert_eq!(v.from, at, "{name} {k}: head to tail");
+            at = v.to;
+        }
+    }
+    let longest = plan.points.iter().map(|p| p.hypot()).fold(0.0, f64::max);
+    assert!(
+        longest <= 150.0 + 1e-9,
+        "{name} {k}: the plan fits its field"
+    );
+    assert!(plan.mu > 0.0);
+    // The reactions measured close the polygon: laid-off + the measured
+    // outer reactions (not the inner one) sum to zero.
+    let measured: Vec<_> = plan
+        .steps
+        .iter()
+        .filter_map(|s| match *s {
+            ForceStep::Measure(i) => Some(plan.vectors[i]),
+            _ => None,
+        })
+        .collect();
+    let laid: kurbo::Vec2 = plan
+        .steps
+        .iter()
+        .filter_map(|s| match *s {
+            ForceStep::LayOff(i) => Some(plan.vectors[i].value),
+            _ => None,
+        })
+        .fold(kurbo::Vec2::ZERO, |a, b| a + b);
+    if plan.group.is_some() {
+        // Components laid off (τ, along a guide) are parts of the outer
+        // reactions measured: count each reaction whole, once.
+        let pair = |f: Force| match f {
+            Force::Reaction {
+                from, to, joint, ..
+            } => Some((from, to, joint)),
+            _ => None,
+        };
+        let outer = [pair(measured[0].force), pair(measured[1].force)];
+        let parts: kurbo::Vec2 = plan
+            .steps
+            .iter()
+            .filter_map(|s| match *s {
+                ForceStep::LayOff(i) => {
+                    let f = plan.vectors[i].force;
+                    (pair(f).is_some() && outer.contains(&pair(f))).then_some(plan.vectors[i].value)
+                }
+                _ => None,
+            })
+            .fold(kurbo::Vec2::ZERO, |a, b| a + b);
+        let outer = measured[0].value + measured[1].value;
+        let sum = laid - parts + outer;
+        let scale = plan
+            .vectors
+            .iter()
+            .map(|v| v.value.hypot())
+            .fold(0.0, f64::max);
+        assert!(sum.hypot() <= 1e-12 * scale, "{name} {k}: {sum:?}");
+    }
+}
+
+/// Every kinematic fixture given masses on every moving link (centre at
+/// its first point), weights and a force on its last link: the plans of
+/// every group kind the fixtures hold (PRP, a driving slider on the
+/// frame, a cylinder, two cranks) agree with the links' equilibrium; a
+/// class III group is refused by the force plans with a message.
+#[test]
+fn force_plans_of_every_fixture_with_masses() {
+    let dir = format!("{}/fixtures", env!("CARGO_MANIFEST_DIR"));
+    let mut kinds = std::collections::BTreeSet::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let mut v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let links = v["links"].as_object().unwrap().clone();
+        let frame = links
+            .iter()
+            .find(|(_, l)| l["name"].as_str().is_some_and(|n| n.contains("frame")))
+            .map(|(id, _)| id.clone())
+            .unwrap_or_else(|| "0".into());
+        let mut masses = serde_json::Map::new();
+        let mut last = None;
+        for (i, (id, l)) in links.iter().enumerate() {
+            if *id == frame {
+                continue;
+            }
+            let centre = l["points"][0].clone();
+            masses.insert(
+                id.clone(),
+                serde_json::json!({ "m": 1.0 + i as f64, "J": 0.01 * (i + 1) as f64, "centre": centre }),
+            );
+            last = Some((id.clone(), centre));
+        }
+        let (id, point) = last.unwrap();
+        v["dynamics"] = serde_json::json!({
+            "g": [0, -9.81],
+            "links": masses,
+            "forces": [ { "link": id, "point": point, "F": [-100.0, 50.0] } ],
+            "moments": [ { "link": id, "M": 3.0 } ]
+        });
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+        let solved = an.run().unwrap_or_else(|e| panic!("{name}: {e}"));
+        let size = an.mech.size;
+        for (k, s) in solved.iter().enumerate() {
+            let loads = loads::loads(&an, s, k);
+            let ne = newton_euler::solve(&an, s, &loads).unwrap();
+            let fp = match force_plan::solve(&an, s, &loads, 0.5) {
+                Ok(fp) => fp,
+                Err(e) => {
+                    assert!(
+                        an.structure.formula(&an.mech).contains("III"),
+                        "{name}: {e}"
+                    );
+                    assert!(e.to_string().contains("class III"), "{e}");
+                    continue;
+                }
+            };
+            for g in &an.structure.groups {
+                if let mechplan::structure::AssurGroup::Dyad(d) = g {
+                    kinds.insert(format!(
+                        "{}{}",
+                        d.kind.name(),
+                        if d.cylinder.is_some() {
+                            "+cylinder"
+                        } else {
+                            ""
+                        }
+                    ));
+                }
+            }
+            let scale = s.dynamics.as_ref().unwrap().force_scale;
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-10 * scale;
+            for (r, p) in ne.revolute.iter().zip(&fp.revolute) {
+                let p = p.unwrap();
+                assert!(
+                    close(r.x, p.x) && close(r.y, p.y),
+                    "{name} {k}: {r:?} {p:?}"
+                );
+            }
+            for (r, p) in ne.prismatic.iter().zip(&fp.prismatic) {
+                let p = p.unwrap();
+                assert!(
+                    close(r.0, p.0) && close(r.1 / size, p.1 / size),
+                    "{name} {k}: {r:?} {p:?}"
+                );
+            }
+            for (i, (r, p)) in ne.drives.iter().zip(&fp.drives).enumerate() {
+                let l = if an.mech.scene.input_at(i).is_crank() {
+                    size
+                } else {
+                    1.0
+                };
+                assert!(close(r / l, p.unwrap() / l), "{name} {k}: {r} {p:?}");
+            }
+        }
+    }
+    for kind in ["RRR", "RRP", "RPR", "PRP", "RRR+cylinder"] {
+        assert!(kinds.contains(kind), "{kind} not exercised: {kinds:?}");
+    }
+    eprintln!("group kinds exercised: {kinds:?}");
+}
