@@ -258,3 +258,74 @@ fn force_plans_of_every_fixture_with_masses() {
     }
     eprintln!("group kinds exercised: {kinds:?}");
 }
+
+/// `solve --steps` on a dynamics scene tells the force plans in each
+/// language, and every reaction it reads off the polygon is the links'
+/// equilibrium's, to the four digits it prints.
+#[test]
+fn force_steps_read_off_the_reactions() {
+    use mechplan::construction::text::Lang;
+    for name in FIXTURES {
+        let (an, solved) = solved(name);
+        for lang in [Lang::En, Lang::Uk, Lang::Ru] {
+            let text = mechplan::report::to_steps(&an, &solved, lang);
+            let title = match lang {
+                Lang::En => "Force plans, position",
+                Lang::Uk => "Плани сил, положення",
+                Lang::Ru => "Планы сил, положение",
+            };
+            assert_eq!(text.matches(title).count(), solved.len(), "{name} {lang:?}");
+            // Position 1's measured reactions: "R_34 = 53.26·2 = 106.5 ± …".
+            let first = text.split(title).nth(1).unwrap();
+            let mut read = 0;
+            for line in first.lines() {
+                let measure = ["Measure", "Вимірюємо", "Измеряем"];
+                if !measure.iter().any(|w| line.contains(w)) {
+                    continue;
+                }
+                let Some(i) = line.find(": R_") else { continue };
+                let rest = &line[i + 2..];
+                let (key, rest) = rest.split_once(" = ").unwrap();
+                let value: f64 = rest
+                    .split(" = ")
+                    .nth(1)
+                    .and_then(|v| v.split_whitespace().next())
+                    .and_then(|v| v.parse().ok())
+                    .unwrap_or_else(|| panic!("{name}: {line}"));
+                // Find the reaction in the result: the pair of the two link ids.
+                let ids = &key[2..];
+                let s = &solved[0];
+                let d = s.dynamics.as_ref().unwrap();
+                let m = &an.mech;
+                let r = d
+                    .revolutes
+                    .iter()
+                    .find(|r| {
+                        [
+                            m.link_id(r.first).to_string() + m.link_id(r.second),
+                            m.link_id(r.second).to_string() + m.link_id(r.first),
+                        ]
+                        .contains(&ids.to_string())
+                    })
+                    .map(|r| r.r.hypot())
+                    .or_else(|| {
+                        d.prismatics
+                            .iter()
+                            .find(|p| {
+                                [
+                                    m.link_id(p.slider).to_string() + m.link_id(p.guide),
+                                    m.link_id(p.guide).to_string() + m.link_id(p.slider),
+                                ]
+                                .contains(&ids.to_string())
+                            })
+                            .map(|p| p.n.hypot())
+                    })
+                    .unwrap_or_else(|| panic!("{name}: no pair {ids}"));
+                let rel = (value - r).abs() / r.max(1e-9);
+                assert!(rel <= 1e-3, "{name} {lang:?}: {key} = {value} against {r}");
+                read += 1;
+            }
+            assert!(read >= 2, "{name} {lang:?}: {read} reactions read");
+        }
+    }
+}

@@ -577,7 +577,7 @@ fn dyad_polygon(
                     links: [s0.links.clone(), s1.links.clone()].concat(),
                     about: c,
                     about_name: outer_point(&o2),
-                    force: pre_force,
+                    force: r1_force(Part::AcrossGuide),
                     value: across,
                 });
             } else {

@@ -808,5 +808,6 @@ fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
             );
         }
     }
+    t += &super::force_steps::force_steps(an, s, i, &input, lang);
     t
 }
