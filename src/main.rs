@@ -83,6 +83,9 @@ fn command(c: Command) -> Result<u8, Error> {
             plan,
             position,
         } => {
+            if let Some(status) = check_forces(&scene, &answer, (format, &svg, delta, position))? {
+                return Ok(status);
+            }
             let r = Reading {
                 mu,
                 plan,
@@ -177,6 +180,75 @@ fn command(c: Command) -> Result<u8, Error> {
         )?))?,
     }
     Ok(0)
+}
+
+/// `check` of a force plan (an answer whose `plan` is `"force"`): its
+/// status, or `None` for a kinematic answer (read by the caller).
+fn check_forces(
+    scene: &std::path::Path,
+    answer: &std::path::Path,
+    (format, svg, delta, position): (
+        CheckFormat,
+        &Option<std::path::PathBuf>,
+        Option<f64>,
+        Option<usize>,
+    ),
+) -> Result<Option<u8>, Error> {
+    use mechplan::check::forces;
+    let name = answer.display().to_string();
+    if answer
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+    {
+        return Ok(None);
+    }
+    let too_large = std::fs::metadata(answer)
+        .is_ok_and(|md| mechplan::check::answer::check_size(md.len()).is_err());
+    if too_large {
+        // The kinematic reader refuses it with the limit.
+        return Ok(None);
+    }
+    let Ok(text) = mechplan::study::read(answer) else {
+        // Unreadable: the kinematic reader reports it.
+        return Ok(None);
+    };
+    if !forces::is_force_answer(&text) {
+        return Ok(None);
+    }
+    let mut ans = forces::from_json(&text).map_err(mechplan::study::in_file(&name))?;
+    if let Some(d) = delta {
+        if !(d.is_finite() && d > 0.0) {
+            return Err(Error::scene(
+                "delta",
+                "the pencil precision must be a positive number of mm",
+            ));
+        }
+        ans.delta = d;
+    }
+    if svg.is_some() {
+        return Err(Error::scene(
+            "svg",
+            "the overlay (--svg) is drawn for plans of velocities and accelerations only",
+        ));
+    }
+    let study = Study::from_path(scene)?;
+    match position {
+        Some(p) => {
+            study.position_in_range("position", p)?;
+            ans.position = p;
+        }
+        None => study
+            .position_in_range("/position", ans.position)
+            .map_err(mechplan::study::in_file(&name))?,
+    }
+    let report = study.check_forces(&ans)?;
+    stdout(&match format {
+        CheckFormat::Text => forces::to_text(&report),
+        CheckFormat::Json => {
+            serde_json::to_string_pretty(&forces::to_json(&report)).expect("finite numbers") + "\n"
+        }
+    })?;
+    Ok(Some(report.status() as u8))
 }
 
 /// The exit status: the command's own (0 success; `check`: 1 an item

@@ -289,6 +289,15 @@ impl Study {
         drawing::write_sheets(&sheets, &req.dir, req.format, req.dpi)
     }
 
+    /// Check a student's force plan ([`check::forces::from_json`]).
+    pub fn check_forces(
+        &self,
+        answer: &check::forces::ForceAnswer,
+    ) -> Result<check::forces::ForceReport> {
+        let solved = self.solved()?;
+        check::forces::check(&self.analysis, &solved, answer)
+    }
+
     /// Check a student's answer (read by [`check::answer::read`]).
     pub fn check(&self, answer: &check::answer::Answer) -> Result<check::Report> {
         let solved = self.solved()?;

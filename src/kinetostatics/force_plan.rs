@@ -325,6 +325,34 @@ fn outer(an: &Analysis, s: &Solved, c: &Conn, link: usize) -> Outer {
 /// The force plans of every group and input at solved position `s`
 /// under `loads`, from the last group attached back to the inputs.
 pub fn solve(an: &Analysis, s: &Solved, loads: &[Load], delta: f64) -> Result<ForcePlans> {
+    solve_at(an, s, loads, delta, None)
+}
+
+/// The scale a plan is drawn at, from its points at unit scale.
+type ScaleOf<'a> = &'a dyn Fn(&[Vec2]) -> f64;
+
+/// Which plan: a group's (index into `Structure::groups`) or an input
+/// link's (the scene's order of inputs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Which {
+    Group(usize),
+    Input(usize),
+}
+
+/// [`solve`] with one plan drawn at a given scale `fixed` (a student's
+/// μ_F, to check their plan at it); the others at the standard scale that
+/// fits the default field.
+pub fn solve_at(
+    an: &Analysis,
+    s: &Solved,
+    loads: &[Load],
+    delta: f64,
+    fixed: Option<(Which, f64)>,
+) -> Result<ForcePlans> {
+    let scale_of = |w: Which, pts: &[Vec2]| match fixed {
+        Some((f, mu)) if f == w => mu,
+        _ => Field::default().scale(pts.iter().copied()),
+    };
     let m = &an.mech;
     let st = &an.structure;
     let at = || describe_input(m, &s.drives.coords());
@@ -358,7 +386,8 @@ pub fn solve(an: &Analysis, s: &Solved, loads: &[Load], delta: f64) -> Result<Fo
                         "mechplan draws no force plan of a class III group (its reactions come from the links' equilibrium only)",
                     ));
                 };
-                let plan = group_plan(an, s, d, &mut known, &mut out, delta, &at)?;
+                let mu = |pts: &[Vec2]| scale_of(Which::Group(g), pts);
+                let plan = group_plan(an, s, d, (&mut known, &mut out), (delta, &mu), &at)?;
                 out.plans.push(ForcePlan {
                     group: Some(g),
                     ..plan
@@ -368,7 +397,8 @@ pub fn solve(an: &Analysis, s: &Solved, loads: &[Load], delta: f64) -> Result<Fo
                 if let InputRole::InGroup { .. } = st.roles[i] {
                     continue;
                 }
-                let plan = input_plan(an, s, i, &mut known, &mut out, delta)?;
+                let mu = |pts: &[Vec2]| scale_of(Which::Input(i), pts);
+                let plan = input_plan(an, s, i, (&mut known, &mut out), (delta, &mu))?;
                 out.plans.push(ForcePlan {
                     input: Some(i),
                     ..plan
@@ -428,9 +458,8 @@ fn group_plan(
     an: &Analysis,
     s: &Solved,
     d: &Dyad,
-    known: &mut Vec<Applied>,
-    out: &mut ForcePlans,
-    delta: f64,
+    (known, out): (&mut Vec<Applied>, &mut ForcePlans),
+    (delta, scale): (f64, ScaleOf),
     at: &dyn Fn() -> String,
 ) -> Result<ForcePlan> {
     let mut sides = [vec![d.links[0]], vec![d.links[1]]];
@@ -448,7 +477,7 @@ fn group_plan(
         Ok((dr.plan, sol))
     };
     let (trial, _) = draw(1.0)?;
-    let mu = Field::default().scale(trial.points.iter().copied());
+    let mu = scale(&trial.points);
     let (mut plan, sol) = draw(mu)?;
     // Record, and hand the outer reactions to the links across them.
     record((an, s), out, e1.joint, e1.from, e1.to, sol.r1, sol.c1);
@@ -777,9 +806,8 @@ fn input_plan(
     an: &Analysis,
     s: &Solved,
     i: usize,
-    known: &mut Vec<Applied>,
-    out: &mut ForcePlans,
-    delta: f64,
+    (known, out): (&mut Vec<Applied>, &mut ForcePlans),
+    (delta, scale): (f64, ScaleOf),
 ) -> Result<ForcePlan> {
     let m = &an.mech;
     let spec = m.scene.input_at(i);
@@ -798,7 +826,7 @@ fn input_plan(
         dr
     };
     let trial = draw(1.0);
-    let mu = Field::default().scale(trial.plan.points.iter().copied());
+    let mu = scale(&trial.plan.points);
     let mut dr = draw(mu);
     let end = dr.last();
     match *spec {

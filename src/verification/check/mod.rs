@@ -17,6 +17,7 @@
 pub mod answer;
 mod candidates;
 mod diagnosis;
+pub mod forces;
 mod items;
 mod report;
 pub mod svg;

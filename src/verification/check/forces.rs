@@ -1,0 +1,570 @@
+//! Checking a hand-drawn force plan (docs/check.md, "Force plans"): the
+//! student's segments, directions and values of one group's (or the input
+//! link's) plan against the plan mechplan draws **at the student's μ_F**,
+//! with the drafting-error model's tolerance (δ per vector laid off,
+//! 1/sin θ where the closing lines meet), and a verdict that is never
+//! "right" where the tolerance cannot tell the right answer from a typical
+//! mistake: the plans rebuilt with the inertia forces not reversed (the
+//! force m·a instead of −m·a) and without the weights are tried, and an
+//! item that one of them also explains (when it differs from the right
+//! one) cannot be judged; a wrong answer that one explains is diagnosed.
+
+use super::{Judgement, Verdict};
+use crate::error::{Error, Issue, Result};
+use crate::json::parse_strict;
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
+use crate::kinetostatics::loads::{self, Load, Origin};
+use crate::presentation::force_steps::force_name;
+use serde_json::Value;
+
+/// A student's force plan.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceAnswer {
+    pub position: usize,
+    /// The links of the plan (a group's, or the input link).
+    pub links: Vec<String>,
+    /// μ_F, N/mm.
+    pub mu: f64,
+    /// Pencil precision δ, mm.
+    pub delta: f64,
+    /// μ_l of the student's drawing of the mechanism (m/mm): the arms of
+    /// the moment equations were measured on it.
+    pub mu_l: Option<f64>,
+    /// (JSON pointer, force key, given).
+    pub segments: Vec<(String, String, f64)>,
+    pub angles: Vec<(String, String, f64)>,
+    pub values: Vec<(String, String, f64)>,
+}
+
+/// The check of a force plan.
+#[derive(Clone, Debug)]
+pub struct ForceReport {
+    pub position: usize,
+    pub links: Vec<String>,
+    pub mu: f64,
+    pub delta: f64,
+    pub verdicts: Vec<Verdict>,
+    /// The typical mistake that explains every wrong item, if one does.
+    pub diagnosis: Option<String>,
+}
+
+impl ForceReport {
+    pub fn wrong(&self) -> usize {
+        self.verdicts
+            .iter()
+            .filter(|v| v.judgement == Judgement::Wrong)
+            .count()
+    }
+    /// 0 right, 1 wrong, 4 none wrong but some cannot be judged.
+    pub fn status(&self) -> i32 {
+        if self.wrong() > 0 {
+            1
+        } else if self.verdicts.iter().any(|v| !v.ok()) {
+            4
+        } else {
+            0
+        }
+    }
+}
+
+fn issue(at: &str, msg: impl Into<String>) -> Issue {
+    Issue {
+        pointer: at.to_string(),
+        message: msg.into(),
+    }
+}
+
+/// Whether an answer's text is a force plan's (`"plan": "force"`).
+pub fn is_force_answer(text: &str) -> bool {
+    serde_json::from_str::<Value>(text)
+        .ok()
+        .is_some_and(|v| v.get("plan").and_then(Value::as_str) == Some("force"))
+}
+
+/// Read a force-plan answer, every problem with its JSON pointer.
+pub fn from_json(text: &str) -> Result<ForceAnswer> {
+    super::answer::check_size(text.len() as u64)?;
+    let v = parse_strict(text).map_err(Error::json)?;
+    let mut issues = Vec::new();
+    let Some(o) = v.as_object() else {
+        return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
+    };
+    const FIELDS: [&str; 10] = [
+        "plan", "position", "links", "mu", "delta", "mu_l", "segments", "angles", "values", "title",
+    ];
+    for k in o.keys() {
+        if !FIELDS.contains(&k.as_str()) {
+            issues.push(issue(
+                &format!("/{k}"),
+                format!("unknown field \"{k}\" (allowed: {})", FIELDS.join(", ")),
+            ));
+        }
+    }
+    let positive = |k: &str, issues: &mut Vec<Issue>| -> Option<f64> {
+        let x = o.get(k)?;
+        match x.as_f64() {
+            Some(x) if x.is_finite() && x > 0.0 => Some(x),
+            _ => {
+                issues.push(issue(&format!("/{k}"), "expected a positive number"));
+                None
+            }
+        }
+    };
+    let position = match o.get("position") {
+        None => 1,
+        Some(p) => match p.as_u64() {
+            Some(n) if n >= 1 => n as usize,
+            _ => {
+                issues.push(issue("/position", "expected a position number from 1"));
+                1
+            }
+        },
+    };
+    let links = match o.get("links").and_then(Value::as_array) {
+        Some(a) if !a.is_empty() && a.iter().all(Value::is_string) => a
+            .iter()
+            .map(|x| x.as_str().unwrap_or_default().to_string())
+            .collect(),
+        _ => {
+            issues.push(issue(
+                "/links",
+                "missing or wrong: the ids of the plan's links, as in the scene (a group's two, or the input link's)",
+            ));
+            Vec::new()
+        }
+    };
+    let mu = positive("mu", &mut issues);
+    if !o.contains_key("mu") {
+        issues.push(issue(
+            "/mu",
+            "missing: the scale μ_F of your force plan (N/mm)",
+        ));
+    }
+    let delta = positive("delta", &mut issues).unwrap_or(0.5);
+    let mu_l = positive("mu_l", &mut issues);
+    let table = |k: &str, issues: &mut Vec<Issue>| -> Vec<(String, String, f64)> {
+        let Some(x) = o.get(k) else { return Vec::new() };
+        let Some(t) = x.as_object() else {
+            issues.push(issue(
+                &format!("/{k}"),
+                "expected an object of force names to numbers",
+            ));
+            return Vec::new();
+        };
+        t.iter()
+            .filter_map(|(name, x)| {
+                let at = format!("/{k}/{name}");
+                match x.as_f64().filter(|x| x.is_finite()) {
+                    Some(x) => Some((at, name.clone(), x)),
+                    None => {
+                        issues.push(issue(&at, "expected a finite number"));
+                        None
+                    }
+                }
+            })
+            .collect()
+    };
+    let segments = table("segments", &mut issues);
+    let angles = table("angles", &mut issues);
+    let values = table("values", &mut issues);
+    for (at, _, x) in &segments {
+        if *x < 0.0 {
+            issues.push(issue(at, "a segment's length is not negative"));
+        }
+    }
+    if segments.is_empty() && angles.is_empty() && values.is_empty() {
+        issues.push(issue(
+            "",
+            "nothing to check: give segments (mm), angles (degrees) or values (N, N·m)",
+        ));
+    }
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
+    }
+    Ok(ForceAnswer {
+        position,
+        links,
+        mu: mu.expect("checked"),
+        delta,
+        mu_l,
+        segments,
+        angles,
+        values,
+    })
+}
+
+/// A force's key as students write it: without `_` and `^`, so that
+/// "R_34", "R34" and "R^τ_34" → "Rτ34" all read.
+fn key(s: &str) -> String {
+    s.chars().filter(|c| *c != '_' && *c != '^').collect()
+}
+
+/// Which plan the answer's links name.
+fn which(an: &Analysis, plans: &[ForcePlan], links: &[String]) -> Option<(Which, usize)> {
+    let m = &an.mech;
+    let mut want: Vec<&str> = links.iter().map(String::as_str).collect();
+    want.sort_unstable();
+    plans.iter().enumerate().find_map(|(k, p)| {
+        let mut ids: Vec<&str> = p.links.iter().map(|&l| m.link_id(l)).collect();
+        ids.sort_unstable();
+        (ids == want).then(|| {
+            let w = match (p.group, p.input) {
+                (Some(g), _) => Which::Group(g),
+                (None, Some(i)) => Which::Input(i),
+                (None, None) => unreachable!("a plan is a group's or an input's"),
+            };
+            (w, k)
+        })
+    })
+}
+
+/// What a plan says of one item: (expected, tolerance, on the plan in mm).
+type Expect = (f64, f64, Option<f64>);
+
+/// The balancing value and the forces on the input link of `plan`.
+fn balancing(plan: &ForcePlan) -> Option<(f64, f64)> {
+    let b = plan.steps.iter().find_map(|s| match s {
+        ForceStep::Balancing { value, .. } => Some(*value),
+        _ => None,
+    })?;
+    // The forces with arms about the pivot: those laid off (the pivot's
+    // own reaction, read off last, has none).
+    let forces: f64 = plan
+        .steps
+        .iter()
+        .filter_map(|s| match s {
+            ForceStep::LayOff(i) => Some(plan.vectors[*i].value.hypot()),
+            _ => None,
+        })
+        .sum();
+    Some((b, forces))
+}
+
+/// An item of `plan`, by kind: "segment", "angle" or "value".
+fn expect(
+    an: &Analysis,
+    loads: &[Load],
+    plan: &ForcePlan,
+    kind: &str,
+    name: &str,
+    ans: &ForceAnswer,
+) -> std::result::Result<Expect, String> {
+    let k = key(name);
+    if matches!(k.as_str(), "Mb" | "Fb" | "Mзр" | "Fзр" | "Mур" | "Fур") {
+        if kind != "value" {
+            return Err("the balancing moment (force) is a value, not a segment".into());
+        }
+        let (b, forces) = balancing(plan)
+            .ok_or("this plan has no balancing moment (force): it is the input link's")?;
+        let Some(mu_l) = ans.mu_l else {
+            return Err(
+                "give mu_l, the scale of your drawing of the mechanism (m/mm): the arms of the balancing moment are measured on it"
+                    .into(),
+            );
+        };
+        // Each arm read to δ on the drawing at μ_l, each force to its own.
+        return Ok((b, ans.delta * mu_l * forces, None));
+    }
+    let v = plan
+        .vectors
+        .iter()
+        .rev()
+        .find(|v| key(&force_name(an, loads, v.force, Lang::En)) == k)
+        .ok_or_else(|| {
+            let names: Vec<String> = plan
+                .vectors
+                .iter()
+                .map(|v| force_name(an, loads, v.force, Lang::En))
+                .collect();
+            format!(
+                "no force \"{name}\" on this plan (its forces: {})",
+                names.join(", ")
+            )
+        })?;
+    let seg = plan.points[v.to] - plan.points[v.from];
+    let tol_mm = plan.err[v.from] + plan.err[v.to] + ans.delta;
+    Ok(match kind {
+        "segment" => (seg.hypot(), tol_mm, Some(seg.hypot())),
+        "value" => (v.value.hypot(), tol_mm * plan.mu, Some(seg.hypot())),
+        _ => {
+            let deg = seg.y.atan2(seg.x).to_degrees().rem_euclid(360.0);
+            let tol = (tol_mm / seg.hypot().max(1e-300)).atan().to_degrees();
+            (deg, tol.min(180.0), None)
+        }
+    })
+}
+
+/// The difference of two readings of kind `kind` (angles modulo 360°).
+fn difference(kind: &str, a: f64, b: f64) -> f64 {
+    if kind == "angle" {
+        let d = (a - b).rem_euclid(360.0);
+        d.min(360.0 - d)
+    } else {
+        (a - b).abs()
+    }
+}
+
+/// Check a force-plan answer against the analysis.
+pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
+    let Some((k, s)) = ans
+        .position
+        .checked_sub(1)
+        .and_then(|k| solved.get(k).map(|s| (k, s)))
+    else {
+        return Err(Error::scene(
+            "/position",
+            format!(
+                "position {} is not one of the scene's positions: they are numbered from 1 to {}",
+                ans.position,
+                solved.len()
+            ),
+        ));
+    };
+    let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
+        return Err(Error::scene(
+            "/plan",
+            "the scene has no force plans to check against: it needs a dynamics object (and no class III group)",
+        ));
+    };
+    let Some((w, _)) = which(an, &fp.plans, &ans.links) else {
+        let all: Vec<String> = fp
+            .plans
+            .iter()
+            .map(|p| {
+                let ids: Vec<&str> = p.links.iter().map(|&l| an.mech.link_id(l)).collect();
+                format!("[{}]", ids.join(", "))
+            })
+            .collect();
+        return Err(Error::scene(
+            "/links",
+            format!(
+                "no force plan of these links (the plans: {})",
+                all.join(", ")
+            ),
+        ));
+    };
+    let delta = ans.delta;
+    let at_scale = |loads: &[Load]| -> Result<ForcePlan> {
+        let fp = force_plan::solve_at(an, s, loads, delta, Some((w, ans.mu)))?;
+        let (_, i) = which(an, &fp.plans, &ans.links).expect("the same structure");
+        Ok(fp.plans[i].clone())
+    };
+    let right_loads = loads::loads(an, s, k);
+    let plan = at_scale(&right_loads)?;
+    // The typical mistakes, as whole plans at the student's scale.
+    let mistakes: Vec<(&str, Vec<Load>)> = vec![
+        (
+            "the inertia forces and couples not reversed (m·a_S and J·ε instead of −m·a_S and −J·ε)",
+            right_loads
+                .iter()
+                .map(|l| match *l {
+                    Load::Force {
+                        f,
+                        origin: Origin::Inertia,
+                        link,
+                        point,
+                        at,
+                    } => Load::Force {
+                        f: -f,
+                        origin: Origin::Inertia,
+                        link,
+                        point,
+                        at,
+                    },
+                    Load::Couple {
+                        m,
+                        origin: Origin::Inertia,
+                        link,
+                    } => Load::Couple {
+                        m: -m,
+                        origin: Origin::Inertia,
+                        link,
+                    },
+                    other => other,
+                })
+                .collect(),
+        ),
+        (
+            "the weights left out",
+            right_loads
+                .iter()
+                .filter(|l| l.origin() != Origin::Gravity)
+                .copied()
+                .collect(),
+        ),
+    ];
+    let mistaken: Vec<(&str, ForcePlan)> = mistakes
+        .into_iter()
+        .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
+        .collect();
+    let mut verdicts = Vec::new();
+    let mut issues = Vec::new();
+    let mut explained: Vec<usize> = vec![0; mistaken.len()];
+    let items = [
+        ("segment", &ans.segments, "mm"),
+        ("angle", &ans.angles, "°"),
+        ("value", &ans.values, ""),
+    ];
+    for (kind, list, unit) in items {
+        for (pointer, name, given) in list.iter() {
+            let (expected, tol, on_plan) = match expect(an, &right_loads, &plan, kind, name, ans) {
+                Ok(e) => e,
+                Err(msg) => {
+                    issues.push(issue(pointer, msg));
+                    continue;
+                }
+            };
+            let unit = match (kind, unit) {
+                ("value", _) if key(name).starts_with('M') => "N·m",
+                ("value", _) => "N",
+                (_, u) => u,
+            };
+            let diff = difference(kind, *given, expected);
+            let mut also = None;
+            for (j, (what, p)) in mistaken.iter().enumerate() {
+                let Ok((e2, t2, _)) = expect(an, &right_loads, p, kind, name, ans) else {
+                    continue;
+                };
+                let apart = difference(kind, e2, expected) > tol;
+                if apart && difference(kind, *given, e2) <= t2 {
+                    explained[j] += 1;
+                    also.get_or_insert(*what);
+                }
+            }
+            let judgement = if diff > tol {
+                Judgement::Wrong
+            } else if kind != "angle" && tol >= expected.abs() {
+                Judgement::CannotJudge(format!(
+                    "the tolerance ({tol:.3} {unit}) is as large as the value itself: the plan is drawn too small to judge it"
+                ))
+            } else if let Some(what) = also {
+                Judgement::CannotJudge(format!(
+                    "a plan drawn with {what} gives it too, within the tolerance"
+                ))
+            } else {
+                Judgement::Right
+            };
+            verdicts.push(Verdict {
+                pointer: pointer.clone(),
+                key: name.clone(),
+                what: format!("{kind} {name}"),
+                expected,
+                given: *given,
+                difference: diff,
+                tolerance: tol,
+                unit,
+                on_plan: on_plan.map(|e| {
+                    (
+                        e,
+                        if kind == "value" {
+                            given / ans.mu
+                        } else {
+                            *given
+                        },
+                    )
+                }),
+                step: None,
+                judgement,
+            });
+        }
+    }
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
+    }
+    let wrong = verdicts
+        .iter()
+        .filter(|v| v.judgement == Judgement::Wrong)
+        .count();
+    let diagnosis = (wrong > 0)
+        .then(|| {
+            mistaken
+                .iter()
+                .zip(&explained)
+                .filter(|(_, n)| **n >= wrong)
+                .max_by_key(|(_, n)| **n)
+                .map(|((what, _), _)| what.to_string())
+        })
+        .flatten();
+    Ok(ForceReport {
+        position: ans.position,
+        links: ans.links.clone(),
+        mu: ans.mu,
+        delta,
+        verdicts,
+        diagnosis,
+    })
+}
+
+/// The report in words.
+pub fn to_text(r: &ForceReport) -> String {
+    use std::fmt::Write as _;
+    let mut t = format!(
+        "Force plan of links {}, position {}, μ_F = {} N/mm, δ = {} mm\n",
+        r.links.join(", "),
+        r.position,
+        r.mu,
+        r.delta
+    );
+    for v in &r.verdicts {
+        let verdict = match &v.judgement {
+            Judgement::Right => "right".to_string(),
+            Judgement::Wrong => "WRONG".to_string(),
+            Judgement::CannotJudge(why) => format!("cannot be judged: {why}"),
+        };
+        let _ = writeln!(
+            t,
+            "  {}: given {:.4} {u}, expected {:.4} ± {:.4} {u}: {verdict}",
+            v.what,
+            v.given,
+            v.expected,
+            v.tolerance,
+            u = v.unit
+        );
+    }
+    match &r.diagnosis {
+        Some(d) => {
+            let _ = writeln!(t, "  Diagnosis: the plan was drawn with {d}.");
+        }
+        None if r.wrong() > 0 => {
+            let _ = writeln!(
+                t,
+                "  Diagnosis: no typical mistake explains the wrong items."
+            );
+        }
+        None => {}
+    }
+    t
+}
+
+/// The report as JSON.
+pub fn to_json(r: &ForceReport) -> Value {
+    let items: Vec<Value> = r
+        .verdicts
+        .iter()
+        .map(|v| {
+            let (verdict, why) = match &v.judgement {
+                Judgement::Right => ("right", None),
+                Judgement::Wrong => ("wrong", None),
+                Judgement::CannotJudge(w) => ("cannot_judge", Some(w.clone())),
+            };
+            serde_json::json!({
+                "pointer": v.pointer, "key": v.key, "what": v.what,
+                "given": v.given, "expected": v.expected, "difference": v.difference,
+                "tolerance": v.tolerance, "unit": v.unit, "verdict": verdict, "why": why,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "plan": "force",
+        "position": r.position,
+        "links": r.links,
+        "mu": r.mu,
+        "delta": r.delta,
+        "items": items,
+        "wrong": r.wrong(),
+        "diagnosis": r.diagnosis,
+        "status": r.status(),
+    })
+}

@@ -1,0 +1,246 @@
+//! `check` of a hand-drawn force plan (docs/check.md, "Force plans"): an
+//! answer read off mechplan's own plan at the student's μ_F is right; one
+//! read off the plan drawn with the inertia forces not reversed is wrong
+//! and diagnosed; one drawn too small to tell cannot be judged; bad
+//! answers are refused naming the field, with the command's statuses.
+
+use mechplan::check::forces::{ForceAnswer, check, from_json};
+use mechplan::kinetostatics::force_plan::{self, ForceStep, Which};
+use mechplan::kinetostatics::loads::{self, Load, Origin};
+use mechplan::scene::Scene;
+use mechplan::{Analysis, Solved};
+use std::process::Command;
+
+fn scene_path() -> String {
+    format!(
+        "{}/fixtures/dynamics/six_link_fig2_10.json",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+fn solved() -> (Analysis, Vec<Solved>) {
+    let an =
+        Analysis::new(Scene::from_json(&std::fs::read_to_string(scene_path()).unwrap()).unwrap())
+            .unwrap();
+    let s = an.run().unwrap();
+    (an, s)
+}
+
+/// The answer a careful student would give for group (4, 5) at position
+/// `k` (from 0) at μ_F = `mu`, from the plan built with `loads`: the
+/// reactions' segments to 0.1 mm, their directions to 0.5°.
+fn answer_from(an: &Analysis, s: &Solved, k: usize, mu: f64, loads: &[Load]) -> ForceAnswer {
+    let g = 1; // II(4,5) is the second group attached
+    let fp = force_plan::solve_at(an, s, loads, 0.5, Some((Which::Group(g), mu))).unwrap();
+    let plan = fp.plans.iter().find(|p| p.group == Some(g)).unwrap();
+    let mut segments = Vec::new();
+    let mut angles = Vec::new();
+    for step in &plan.steps {
+        if let ForceStep::Measure(i) = step {
+            let v = plan.vectors[*i];
+            let name = mechplan::presentation::force_steps::force_name(
+                an,
+                loads,
+                v.force,
+                mechplan::construction::text::Lang::En,
+            );
+            let seg = plan.points[v.to] - plan.points[v.from];
+            segments.push((
+                format!("/segments/{name}"),
+                name.clone(),
+                (seg.hypot() * 10.0).round() / 10.0,
+            ));
+            let deg = seg.y.atan2(seg.x).to_degrees().rem_euclid(360.0);
+            angles.push((format!("/angles/{name}"), name, (deg * 2.0).round() / 2.0));
+        }
+    }
+    ForceAnswer {
+        position: k + 1,
+        links: vec!["4".into(), "5".into()],
+        mu,
+        delta: 0.5,
+        mu_l: Some(0.002),
+        segments,
+        angles,
+        values: Vec::new(),
+    }
+}
+
+fn reversed_inertia(loads: &[Load]) -> Vec<Load> {
+    loads
+        .iter()
+        .map(|l| match *l {
+            Load::Force {
+                f,
+                origin: Origin::Inertia,
+                link,
+                point,
+                at,
+            } => Load::Force {
+                f: -f,
+                origin: Origin::Inertia,
+                link,
+                point,
+                at,
+            },
+            Load::Couple {
+                m,
+                origin: Origin::Inertia,
+                link,
+            } => Load::Couple {
+                m: -m,
+                origin: Origin::Inertia,
+                link,
+            },
+            other => other,
+        })
+        .collect()
+}
+
+#[test]
+fn a_plan_read_off_the_construction_is_right() {
+    let (an, solved) = solved();
+    let mut right = 0;
+    for (k, s) in solved.iter().enumerate() {
+        let loads = loads::loads(&an, s, k);
+        let ans = answer_from(&an, s, k, 2.0, &loads);
+        let r = check(&an, &solved, &ans).unwrap();
+        assert_eq!(
+            r.wrong(),
+            0,
+            "position {}: {}",
+            k + 1,
+            mechplan::check::forces::to_text(&r)
+        );
+        right += usize::from(r.status() == 0);
+    }
+    assert!(
+        right * 2 >= solved.len(),
+        "most positions judged right: {right}"
+    );
+}
+
+#[test]
+fn inertia_forces_not_reversed_are_wrong_and_diagnosed() {
+    let (an, solved) = solved();
+    let mut diagnosed = 0;
+    for (k, s) in solved.iter().enumerate() {
+        let loads = reversed_inertia(&loads::loads(&an, s, k));
+        let ans = answer_from(&an, s, k, 2.0, &loads);
+        let r = check(&an, &solved, &ans).unwrap();
+        // Where the inertia forces matter more than the drafting error.
+        if r.wrong() > 0 {
+            let d = r.diagnosis.clone().unwrap_or_default();
+            assert!(d.contains("inertia"), "position {}: {d}", k + 1);
+            diagnosed += 1;
+        } else {
+            assert_ne!(
+                r.status(),
+                0,
+                "position {}: a mistaken plan accepted as right",
+                k + 1
+            );
+        }
+    }
+    assert!(diagnosed >= 3, "{diagnosed} positions diagnosed");
+}
+
+#[test]
+fn a_plan_drawn_too_small_cannot_be_judged() {
+    let (an, solved) = solved();
+    let loads = loads::loads(&an, &solved[0], 0);
+    // At 200 N/mm the whole plan is a millimetre or two.
+    let ans = answer_from(&an, &solved[0], 0, 200.0, &loads);
+    let r = check(&an, &solved, &ans).unwrap();
+    assert_eq!(r.wrong(), 0);
+    assert_eq!(r.status(), 4, "{}", mechplan::check::forces::to_text(&r));
+}
+
+#[test]
+fn bad_force_answers_are_refused_naming_the_field() {
+    let (an, solved) = solved();
+    let cases = [
+        (
+            r#"{"plan":"force","links":["4","5"],"segments":{"R_34":50}}"#,
+            "/mu",
+        ),
+        (
+            r#"{"plan":"force","links":["4","5"],"mu":2,"segments":{"R_34":"x"}}"#,
+            "/segments/R_34",
+        ),
+        (
+            r#"{"plan":"force","links":["4","5"],"mu":-2,"segments":{"R_34":5}}"#,
+            "/mu",
+        ),
+        (r#"{"plan":"force","mu":2,"segments":{"R_34":5}}"#, "/links"),
+        (
+            r#"{"plan":"force","links":["4","5"],"mu":2}"#,
+            "nothing to check",
+        ),
+        (
+            r#"{"plan":"force","links":["4","5"],"mu":2,"colour":1,"segments":{"R_34":5}}"#,
+            "/colour",
+        ),
+    ];
+    for (text, field) in cases {
+        let e = from_json(text).unwrap_err().to_string();
+        assert!(e.contains(field), "{text}: {e}");
+    }
+    let read = |t: &str| {
+        check(&an, &solved, &from_json(t).unwrap())
+            .unwrap_err()
+            .to_string()
+    };
+    let e = read(r#"{"plan":"force","links":["2","5"],"mu":2,"segments":{"R_34":5}}"#);
+    assert!(e.contains("/links") && e.contains("[4, 5]"), "{e}");
+    let e = read(r#"{"plan":"force","links":["4","5"],"mu":2,"segments":{"R_99":5}}"#);
+    assert!(e.contains("/segments/R_99") && e.contains("R_34"), "{e}");
+    let e = read(r#"{"plan":"force","links":["1"],"mu":2,"values":{"M_b":1}}"#);
+    assert!(e.contains("/values/M_b") && e.contains("mu_l"), "{e}");
+    let e = read(r#"{"plan":"force","position":99,"links":["1"],"mu":2,"values":{"R_01":1}}"#);
+    assert!(e.contains("/position"), "{e}");
+}
+
+#[test]
+fn the_command_answers_with_its_statuses() {
+    let dir = std::env::temp_dir().join(format!("mechplan_check_forces_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (an, solved) = solved();
+    let loads = loads::loads(&an, &solved[0], 0);
+    let right = answer_from(&an, &solved[0], 0, 2.0, &loads);
+    let to_json = |a: &ForceAnswer| {
+        let seg: serde_json::Map<String, serde_json::Value> = a
+            .segments
+            .iter()
+            .map(|(_, k, v)| (k.clone(), (*v).into()))
+            .collect();
+        serde_json::json!({ "plan": "force", "position": a.position, "links": a.links, "mu": a.mu, "segments": seg })
+            .to_string()
+    };
+    let run = |text: String, extra: &[&str]| {
+        let p = dir.join("answer.json");
+        std::fs::write(&p, text).unwrap();
+        Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &scene_path(), p.to_str().unwrap()])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let out = run(to_json(&right), &[]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let mut wrong = right.clone();
+    wrong.segments[0].2 *= 1.5;
+    let out = run(to_json(&wrong), &["--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["wrong"], 1);
+    let out = run(r#"{"plan":"force","links":["4","5"],"mu":2}"#.into(), &[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("nothing to check"));
+    std::fs::remove_dir_all(&dir).ok();
+}
