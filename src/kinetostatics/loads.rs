@@ -130,11 +130,19 @@ pub fn loads(an: &Analysis, s: &Solved, k: usize) -> Vec<Load> {
         });
     }
     for f in &d.forces {
+        let at = s.config.point(m, f.link, f.point);
+        let value = match &f.table {
+            None => f.f.at(k),
+            Some(t) => {
+                let (d, working) = stroke(s, f.link, at, t.from);
+                t.at(d, working)
+            }
+        };
         out.push(Load::Force {
             link: f.link,
             point: f.point,
-            at: s.config.point(m, f.link, f.point),
-            f: f.f.at(k),
+            at,
+            f: value,
             origin: Origin::External,
         });
     }
@@ -146,4 +154,29 @@ pub fn loads(an: &Analysis, s: &Solved, k: usize) -> Vec<Load> {
         });
     }
     out
+}
+
+/// A tabled force's argument at solved position `s`: its point's
+/// displacement |P − from| (m), and whether the point moves away from
+/// `from` (the working stroke; standing still counts as working).
+pub fn stroke(s: &Solved, link: usize, at: Point, from: Point) -> (f64, bool) {
+    let d = at - from;
+    let v = s.motion[link].map_or(Vec2::ZERO, |mo| mo.velocity(at));
+    (d.hypot(), v.dot(d) >= 0.0)
+}
+
+/// Every tabled force's displacement at solved position `s` within its
+/// table's rows (to a billionth of the table's span), else the pointer of
+/// the first one outside, with the displacement and the rows' range.
+pub fn tables_cover(an: &Analysis, s: &Solved) -> Option<(String, f64, f64, f64)> {
+    let d = an.mech.scene.dynamics.as_ref()?;
+    let m = &an.mech;
+    d.forces.iter().enumerate().find_map(|(i, f)| {
+        let t = f.table.as_ref()?;
+        let at = s.config.point(m, f.link, f.point);
+        let (x, _) = stroke(s, f.link, at, t.from);
+        let (lo, hi) = (t.s[0], t.s[t.s.len() - 1]);
+        let slack = 1e-9 * (hi - lo);
+        (x < lo - slack || x > hi + slack).then(|| (format!("/dynamics/forces/{i}/F/s"), x, lo, hi))
+    })
 }

@@ -106,6 +106,15 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         return Ok(None);
     };
     let m = &an.mech;
+    if let Some((at, x, lo, hi)) = loads::tables_cover(an, s) {
+        return Err(Error::scene(
+            at,
+            format!(
+                "at {} the force's point is {x} m from the table's `from`, outside its displacements {lo} … {hi} m: extend the table",
+                describe_input(m, &s.drives.coords())
+            ),
+        ));
+    }
     let loads = loads::loads(an, s, k);
     let x = newton_euler::solve(an, s, &loads)?;
     let vp = power::balancing(an, s, &loads);

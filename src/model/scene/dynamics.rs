@@ -53,12 +53,50 @@ impl<T: Copy> PerPosition<T> {
     }
 }
 
-/// An external force `f` (N) on `link` at its point `point`.
+/// An external force `f` (N) on `link` at its point `point`: given (one
+/// value, or one per position), or by a table against the displacement
+/// of its point (`table`, when `Some`: then `f` is not read).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ForceSpec {
     pub link: usize,
     pub point: usize,
     pub f: PerPosition<Vec2>,
+    pub table: Option<ForceTable>,
+}
+
+/// A force against the displacement of its point, s = |P − `from`| (m):
+/// a working resistance over the stroke, a gas force over the piston's
+/// travel. `working` while the point moves away from `from`, `back` while
+/// it moves toward it (zero when the table gives none), linear between
+/// the rows; a position whose s falls outside the rows is refused.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceTable {
+    pub from: kurbo::Point,
+    /// Increasing displacements, m.
+    pub s: Vec<f64>,
+    pub working: Vec<Vec2>,
+    pub back: Vec<Vec2>,
+}
+
+impl ForceTable {
+    /// The force at displacement `s` (clamped to the rows), on the
+    /// working stroke or back.
+    pub fn at(&self, s: f64, working: bool) -> Vec2 {
+        let f = if working { &self.working } else { &self.back };
+        if f.is_empty() {
+            return Vec2::ZERO;
+        }
+        let n = self.s.len();
+        if s <= self.s[0] {
+            return f[0];
+        }
+        if s >= self.s[n - 1] {
+            return f[n - 1];
+        }
+        let i = self.s.partition_point(|&x| x <= s).clamp(1, n - 1);
+        let t = (s - self.s[i - 1]) / (self.s[i] - self.s[i - 1]);
+        f[i - 1] + (f[i] - f[i - 1]) * t
+    }
 }
 
 /// An external couple `m` (N·m, counter-clockwise positive) on `link`.
@@ -142,17 +180,30 @@ impl Reader {
             if let (Some(l), Some(p)) = (link, point) {
                 self.on_link(p, l, &format!("{at}/point"), points, links);
             }
-            let f = self
-                .required(fo.get("F"), &format!("{at}/F"))
-                .and_then(|x| {
+            let given = self.required(fo.get("F"), &format!("{at}/F"));
+            let (f, table) = match given {
+                Some(x) if x.is_object() => (
+                    Some(PerPosition::Constant(Vec2::ZERO)),
+                    self.force_table(x, &format!("{at}/F"), points).map(Some),
+                ),
+                Some(x) => {
                     // A list of vectors, else one vector.
                     let listed = x
                         .as_array()
                         .is_some_and(|a| a.is_empty() || a[0].is_array());
-                    self.per_position(x, &format!("{at}/F"), listed, positions, Self::vector)
+                    let f =
+                        self.per_position(x, &format!("{at}/F"), listed, positions, Self::vector);
+                    (f, Some(None))
+                }
+                None => (None, None),
+            };
+            if let (Some(link), Some(point), Some(f), Some(table)) = (link, point, f, table) {
+                d.forces.push(ForceSpec {
+                    link,
+                    point,
+                    f,
+                    table,
                 });
-            if let (Some(link), Some(point), Some(f)) = (link, point, f) {
-                d.forces.push(ForceSpec { link, point, f });
             }
         }
         for (at, e) in list(self, "moments") {
@@ -173,6 +224,84 @@ impl Reader {
             }
         }
         Some(d)
+    }
+
+    /// `{ "from", "s", "working", "back" }`: a force against its point's
+    /// displacement from `from` (a point's name, or [x, y] in m).
+    fn force_table(&mut self, v: &Value, at: &str, points: &[NamedPoint]) -> Option<ForceTable> {
+        let o = self.object(v, at)?;
+        self.only_keys(o, at, &["from", "s", "working", "back"]);
+        let at_from = format!("{at}/from");
+        let from = match self.required(o.get("from"), &at_from)? {
+            x @ Value::String(_) => self
+                .point_ref(x, &at_from, points)
+                .map(|p| points[p].sketch),
+            x => self.vector(x, &at_from).map(|v| v.to_point()),
+        };
+        let at_s = format!("{at}/s");
+        let s: Option<Vec<f64>> = match self.required(o.get("s"), &at_s) {
+            Some(Value::Array(a)) if a.len() >= 2 => a
+                .iter()
+                .enumerate()
+                .map(|(k, x)| self.number(x, &format!("{at_s}/{k}")))
+                .collect(),
+            Some(_) => {
+                self.err(&at_s, "expected a list of at least two displacements (m)");
+                None
+            }
+            None => None,
+        };
+        if let Some(s) = &s
+            && (s[0] < 0.0 || s.windows(2).any(|w| w[1] <= w[0]))
+        {
+            self.err(
+                &at_s,
+                "the displacements must start at 0 or above and increase",
+            );
+            return None;
+        }
+        let rows = |r: &mut Self, key: &str, required: bool| -> Option<Vec<Vec2>> {
+            let at_k = format!("{at}/{key}");
+            let x = match o.get(key) {
+                None if !required => return Some(Vec::new()),
+                x => r.required(x, &at_k)?,
+            };
+            let Some(a) = x.as_array() else {
+                r.err(
+                    &at_k,
+                    "expected a list of forces [x, y] (N), one per displacement",
+                );
+                return None;
+            };
+            let f: Option<Vec<Vec2>> = a
+                .iter()
+                .enumerate()
+                .map(|(k, x)| r.vector(x, &format!("{at_k}/{k}")))
+                .collect();
+            let f = f?;
+            if let Some(s) = &s
+                && f.len() != s.len()
+            {
+                r.err(
+                    &at_k,
+                    format!(
+                        "{} forces for {} displacements: one force per displacement",
+                        f.len(),
+                        s.len()
+                    ),
+                );
+                return None;
+            }
+            Some(f)
+        };
+        let working = rows(self, "working", true);
+        let back = rows(self, "back", false);
+        Some(ForceTable {
+            from: from?,
+            s: s?,
+            working: working?,
+            back: back?,
+        })
     }
 
     fn required<'a>(&mut self, v: Option<&'a Value>, at: &str) -> Option<&'a Value> {

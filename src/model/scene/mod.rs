@@ -26,7 +26,9 @@ use kurbo::Point;
 use numbers::locate_bad_numbers;
 use reader::Reader;
 
-pub use dynamics::{DynamicsSpec, ForceSpec, LinkMass, MAX_MOVING_LINKS, MomentSpec, PerPosition};
+pub use dynamics::{
+    DynamicsSpec, ForceSpec, ForceTable, LinkMass, MAX_MOVING_LINKS, MomentSpec, PerPosition,
+};
 
 /// A named point of the sketch.
 #[derive(Clone, Debug)]
