@@ -6,6 +6,7 @@
 //! against the balancing moment by virtual power ([`power`]).
 //! docs/kinetostatics.md gives the conventions and a worked example.
 
+pub mod lever;
 pub mod loads;
 pub mod newton_euler;
 pub mod power;
@@ -84,6 +85,9 @@ pub struct Dynamics {
     /// The largest disagreement of the two, relative to the magnitudes of
     /// the virtual power's terms.
     pub balancing_diff: f64,
+    /// Per input: the same by Zhukovsky's lever ([`lever`]), on the
+    /// drafted velocity plan.
+    pub lever: Vec<f64>,
     /// The equilibrium system's reciprocal condition number.
     pub rcond: f64,
     /// The largest force at the position (N; a couple counted over the
@@ -192,12 +196,14 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
             ),
         ));
     }
+    let lever = lever::check(an, s, &loads, &balancing)?;
     Ok(Some(Dynamics {
         inertia,
         revolutes,
         prismatics,
         balancing,
         virtual_power: vp.balancing,
+        lever,
         balancing_diff: diff,
         rcond: x.rcond,
         force_scale: scale,
