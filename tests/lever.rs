@@ -249,3 +249,70 @@ fn result_file_carries_the_lever() {
         }
     }
 }
+
+/// The lever's sheet: drawn by default with `dynamics` (one per input and
+/// position), never without; its caption solves Σ M_p = 0 with the numbers
+/// of the worked example.
+#[test]
+fn lever_sheets() {
+    use mechplan::drawing::{DrawOptions, sheets};
+    let names = |an: &Analysis| -> Vec<String> {
+        let solved = solved(an);
+        sheets(an, &solved, &DrawOptions::default())
+            .into_iter()
+            .map(|s| s.name)
+            .collect()
+    };
+    let an = analysis("worked_slider_crank");
+    let solved_w = solved(&an);
+    let all = sheets(&an, &solved_w, &DrawOptions::default());
+    let lever = all
+        .iter()
+        .find(|s| s.name == "lever_1")
+        .expect("a lever sheet");
+    assert_eq!(lever.scales, vec![("mu_v", 0.1), ("mu_F", 50.0)]);
+    // The caption's numbers (the SVG writes subscripts apart: the numbers
+    // are whole).
+    for text in ["96720", "967.2", "96.72", "−100"] {
+        assert!(lever.svg.contains(text), "{text} not on the sheet");
+    }
+    let arm = names(&analysis("arm_two_cylinders"));
+    assert!(arm.iter().any(|n| n == "lever_1_1") && arm.iter().any(|n| n == "lever_9_2"));
+    let path = format!("{}/fixtures/four_bar.json", env!("CARGO_MANIFEST_DIR"));
+    let plain =
+        Analysis::new(Scene::from_json(&std::fs::read_to_string(path).unwrap()).unwrap()).unwrap();
+    assert!(!names(&plain).iter().any(|n| n.starts_with("lever")));
+}
+
+/// `want.drawings` may name the lever only with a `dynamics` object.
+#[test]
+fn lever_without_dynamics_is_refused() {
+    let path = format!("{}/fixtures/four_bar.json", env!("CARGO_MANIFEST_DIR"));
+    let mut scene: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    scene["want"]["drawings"] = serde_json::json!(["mechanism", "lever"]);
+    let err = Scene::from_json(&scene.to_string())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("/want/drawings/1") && err.contains("dynamics"),
+        "{err}"
+    );
+    let mut with = serde_json::from_str::<serde_json::Value>(
+        &std::fs::read_to_string(format!(
+            "{}/fixtures/dynamics/worked_slider_crank.json",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    with["want"] = serde_json::json!({ "drawings": ["lever"] });
+    let an = Analysis::new(Scene::from_json(&with.to_string()).unwrap()).unwrap();
+    let solved = solved(&an);
+    let names: Vec<String> =
+        mechplan::drawing::sheets(&an, &solved, &mechplan::drawing::DrawOptions::default())
+            .into_iter()
+            .map(|s| s.name)
+            .collect();
+    assert_eq!(names, vec!["lever_1".to_string()]);
+}

@@ -229,7 +229,13 @@ fn base_points(an: &Analysis, s: &Solved, link: usize) -> ((usize, Point), (Opti
 /// several one per input at unit rate, the others standing. Every point of
 /// the mechanism is a reported point, so each centre and force point is
 /// a plan point the kernel built.
-fn velocity_plan(an: &Analysis, s: &Solved, input: usize, naming: Naming) -> Result<Plan> {
+fn velocity_plan(
+    an: &Analysis,
+    s: &Solved,
+    input: usize,
+    naming: Naming,
+    mu_v: Option<f64>,
+) -> Result<Plan> {
     let points: Vec<usize> = (0..an.mech.scene.points.len()).collect();
     let st = Setup {
         m: &an.mech,
@@ -245,7 +251,7 @@ fn velocity_plan(an: &Analysis, s: &Solved, input: usize, naming: Naming) -> Res
         s.drives.unit(input, None)
     };
     let d = Drafting {
-        mu_v: if own { an.drafting.mu_v } else { None },
+        mu_v: mu_v.or(if own { an.drafting.mu_v } else { None }),
         mu_a: None,
         ..an.drafting
     };
@@ -269,7 +275,8 @@ pub fn levers(an: &Analysis, s: &Solved, loads: &[Load], naming: Naming) -> Resu
         .collect()
 }
 
-/// Zhukovsky's lever of input `input`.
+/// Zhukovsky's lever of input `input`, on the velocity plan at its
+/// standard scale (the scene's `want.scales.mu_v` with one input).
 pub fn lever(
     an: &Analysis,
     s: &Solved,
@@ -277,8 +284,21 @@ pub fn lever(
     input: usize,
     naming: Naming,
 ) -> Result<Lever> {
+    lever_at(an, s, loads, input, naming, None)
+}
+
+/// Zhukovsky's lever of input `input` on the velocity plan drawn at
+/// `mu_v` ((m/s)/mm; `None`: as [`lever`]): a sheet's own scale.
+pub fn lever_at(
+    an: &Analysis,
+    s: &Solved,
+    loads: &[Load],
+    input: usize,
+    naming: Naming,
+    mu_v: Option<f64>,
+) -> Result<Lever> {
     let m = &an.mech;
-    let plan = velocity_plan(an, s, input, naming)?;
+    let plan = velocity_plan(an, s, input, naming, mu_v)?;
     let mut forces = Vec::new();
     let on_lever =
         |load: usize, part, link, point, origin, x: Point, f: Vec2| -> Result<LeverForce> {
