@@ -103,6 +103,16 @@ fi
   fi
   echo
 } >> "$index.tmp"
+# Zhukovsky's lever (docs/kinetostatics.md, route 3): the six-link with
+# its loads, on the return stroke.
+./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json -o "$tmp/lever6" --format png --dpi 100 > /dev/null
+cp "$tmp/lever6/lever_10.png" "$out/lever_six_link_fig2_10.png"
+{
+  echo "## Zhukovsky's lever"
+  echo
+  echo "![the lever of the six-link at position 10](lever_six_link_fig2_10.png)"
+  echo
+} >> "$index.tmp"
 # The fill table (tests/sheet_fill.rs writes it between its markers).
 {
   echo "## How much of its field a drawing spans"

@@ -7,6 +7,7 @@
 //! docs/kinetostatics.md gives the conventions and a worked example.
 
 pub mod force_plan;
+pub mod lever;
 pub mod loads;
 pub mod newton_euler;
 pub mod power;
@@ -85,6 +86,9 @@ pub struct Dynamics {
     /// The largest disagreement of the two, relative to the magnitudes of
     /// the virtual power's terms.
     pub balancing_diff: f64,
+    /// Per input: the same by Zhukovsky's lever ([`lever`]), on the
+    /// drafted velocity plan.
+    pub lever: Vec<f64>,
     /// The equilibrium system's reciprocal condition number.
     pub rcond: f64,
     /// The largest force at the position (N; a couple counted over the
@@ -211,6 +215,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         Some((p, d)) => (Some(p), Some(d)),
         None => (None, None),
     };
+    let lever = lever::check(an, s, &loads, &balancing)?;
     Ok(Some(Dynamics {
         force_plans,
         force_plans_diff,
@@ -219,6 +224,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         prismatics,
         balancing,
         virtual_power: vp.balancing,
+        lever,
         balancing_diff: diff,
         rcond: x.rcond,
         force_scale: scale,

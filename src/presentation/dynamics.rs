@@ -68,12 +68,24 @@ pub fn dynamics_json(an: &Analysis, d: &Dynamics) -> Value {
             })
         })
         .collect();
+    let by_lever = d
+        .balancing
+        .iter()
+        .zip(&d.lever)
+        .map(|(b, &v)| {
+            balancing(match b {
+                Balancing::Moment(_) => Balancing::Moment(v),
+                Balancing::Force(_) => Balancing::Force(v),
+            })
+        })
+        .collect();
     let mut out = json!({
         "inertia": inertia,
         "pairs": pairs,
         "balancing": per_input(an, d.balancing.iter().map(|b| balancing(*b)).collect()),
         "check": {
             "virtual_power": per_input(an, by_power),
+            "lever": per_input(an, by_lever),
             "rel_diff": num(d.balancing_diff),
             "conditioning": num(d.rcond),
         },

@@ -173,6 +173,14 @@ impl Reader {
             w.plans_at = self.plans_at(at, n);
         }
         let dynamics = self.dynamics(top.get("dynamics"), &points, &links, frame, count);
+        if let (Some(w), None) = (want.as_ref(), top.get("dynamics"))
+            && let Some(k) = w.drawings.iter().position(|d| d == "lever")
+        {
+            self.err(
+                format!("/want/drawings/{k}"),
+                "Zhukovsky's lever draws the loads of the force analysis: the scene needs a \"dynamics\" object",
+            );
+        }
         if let (Some(w), Some(_)) = (want.as_mut(), top.get("dynamics")) {
             // The inertia forces need every link's accelerations, whatever
             // `want` asks to be reported.

@@ -18,6 +18,7 @@ pub mod diagram;
 pub mod export;
 pub mod frenet;
 pub mod html;
+pub mod lever;
 pub mod mechanism;
 pub mod plan;
 pub mod positions;
@@ -175,6 +176,7 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
             "velocity" => has_vel,
             "acceleration" => has_acc,
             "positions" => solved.len() > 1,
+            "lever" => solved.first().is_some_and(|s| s.dynamics.is_some()),
             _ => false,
         }
     } else {
@@ -478,7 +480,16 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 table: None,
             });
         }
-        let Some(plans) = &s.plans else { continue };
+        // Zhukovsky's lever after the plans of its position.
+        let levers = if asked(an, solved, "lever") && s.dynamics.is_some() {
+            lever::pending(an, s, k, opt)?
+        } else {
+            Vec::new()
+        };
+        let Some(plans) = &s.plans else {
+            out.extend(levers);
+            continue;
+        };
         for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
             let (name, title) = match kind {
                 PlanKind::Velocity => ("velocity", w.velocities),
@@ -508,6 +519,7 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 table: t,
             });
         }
+        out.extend(levers);
     }
     let mut sheets = Vec::new();
     if opt.course || asked(an, solved, "course") {

@@ -1,0 +1,429 @@
+//! Zhukovsky's lever as a sheet (docs/sheets.md): the velocity plan turned
+//! by 90° counter-clockwise at its scale μ_v, pivoted at the pole; every
+//! known force as an arrow at its turned point at the force scale μ_F (a
+//! couple as its pair of forces), its arm from the pole as a thin dashed
+//! perpendicular marked with its length in mm, the balancing force at
+//! its point; a table of forces, arms and moments beside it and under the
+//! figure the equation Σ M_p = 0 solved for the balancing value.
+
+use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
+use super::table::{Ruled, number};
+use crate::kinematics::construction::scale::standard_scale;
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::solve::Analysis;
+use crate::kinetostatics::lever::{Lever, LeverForce, Part};
+use crate::kinetostatics::{Balancing, Origin};
+use kurbo::{Point, Vec2};
+
+/// The longest force arrow, as a share of the lever's extent: forces
+/// long enough to read, short enough not to hide the plan.
+const FORCE_SHARE: f64 = 0.45;
+
+/// An arm shorter than this (mm) is not drawn: it would be a dot on the
+/// sheet (the table still lists it).
+const VISIBLE: f64 = 0.8;
+
+/// A force whose arrow is shorter than this (mm) is left to the table:
+/// its arrow unreadable, its arm would only crowd the lever.
+const SHORTEST: f64 = 1.5;
+
+/// The sheet's words.
+pub(crate) struct LeverWords {
+    pub title: &'static str,
+    /// The subscript of an inertia force (F_in2), of the balancing force
+    /// and moment (F_b, M_b).
+    inertia: &'static str,
+    balancing: &'static str,
+    turned: &'static str,
+    heads: [&'static str; 4],
+    input: &'static str,
+    along: &'static str,
+}
+
+pub(crate) fn words(lang: Lang) -> LeverWords {
+    match lang {
+        Lang::En => LeverWords {
+            title: "Zhukovsky's lever",
+            inertia: "in",
+            balancing: "b",
+            turned: "the plan of velocities turned by 90° ↺ about the pole p",
+            heads: ["force", "F, N", "h, mm", "F·h, N·mm"],
+            input: "input",
+            along: "along the guide",
+        },
+        Lang::Uk => LeverWords {
+            title: "Важіль Жуковського",
+            inertia: "ін",
+            balancing: "зр",
+            turned: "план швидкостей, повернутий на 90° ↺ навколо полюса p",
+            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            input: "вхід",
+            along: "уздовж напрямної",
+        },
+        Lang::Ru => LeverWords {
+            title: "Рычаг Жуковского",
+            inertia: "ин",
+            balancing: "ур",
+            turned: "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
+            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            input: "вход",
+            along: "вдоль направляющей",
+        },
+    }
+}
+
+/// A unit in the language, the newton included (Н).
+fn unit(u: &str, lang: Lang) -> String {
+    let u = super::table::unit(u, lang);
+    match lang {
+        Lang::En => u,
+        _ => u.replace('N', "Н"),
+    }
+}
+
+/// The name of a force on the lever in the lecture's notation: F_in2,
+/// G2, F_M2 (a couple's pair), F5 (an external force on link 5).
+fn name(an: &Analysis, f: &LeverForce, w: &LeverWords) -> String {
+    let link = an.mech.link_id(f.link);
+    match (f.part, f.origin) {
+        (Part::Couple { .. }, _) => format!("F_M{link}"),
+        (Part::Force, Origin::Inertia) => format!("F_{}{link}", w.inertia),
+        (Part::Force, Origin::Gravity) => format!("G_{link}"),
+        (Part::Force, Origin::External) => format!("F_{link}"),
+    }
+}
+
+/// A name in the notation as a label: base letters, subscript.
+fn label_of(s: &str) -> Label {
+    match s.split_once('_') {
+        Some((b, sub)) => Label::new(b, sub),
+        None => {
+            let cut = s.find(|c: char| c.is_ascii_digit()).unwrap_or(s.len());
+            Label::new(&s[..cut], &s[cut..])
+        }
+    }
+}
+
+/// The force scale μ_F (N/mm): the standard value at which the largest
+/// force, the balancing one included, is drawn at most [`FORCE_SHARE`] of
+/// the lever's extent.
+pub fn force_scale(l: &Lever) -> f64 {
+    let extent = l
+        .plan
+        .points
+        .iter()
+        .map(|p| p.at.hypot())
+        .fold(10.0, f64::max);
+    let largest = l
+        .forces
+        .iter()
+        .map(|f| f.f.hypot())
+        .fold(l.f_b.abs(), f64::max);
+    standard_scale(largest, FORCE_SHARE * extent)
+}
+
+/// The foot of the perpendicular from the pole to the line through `at`
+/// along `f`.
+fn foot(at: Vec2, f: Vec2) -> Point {
+    let u = f.normalize();
+    (at - u * at.dot(u)).to_point()
+}
+
+/// A force at `at` (mm on the lever) drawn at `mu_f`: its arrow from its
+/// point, its label, its arm as a dashed perpendicular from the pole with
+/// its length (once per foot: forces on one line share it); its line
+/// carried on (thin dashed) to the arm's foot.
+fn force(
+    c: &mut Canvas,
+    (at, f): (Vec2, Vec2),
+    mu_f: f64,
+    label: Label,
+    feet: &mut Vec<Point>,
+    lang: Lang,
+) {
+    let tail = at.to_point();
+    let len = f.hypot() / mu_f;
+    let tip = tail + f / mu_f;
+    if len < SHORTEST {
+        return;
+    }
+    c.vector(tail, tip, Class::Vector, None);
+    c.label_later(tail.midpoint(tip), label, FONT, None);
+    let h = at.cross(f).abs() / f.hypot();
+    let ft = foot(at, f);
+    if h >= VISIBLE && feet.iter().all(|q| (*q - ft).hypot() > 0.3) {
+        feet.push(ft);
+        // The force's line on to the foot, from the arrow's nearer end.
+        let along = (ft - tail).dot(f.normalize());
+        if along < 0.0 || along > len {
+            let from = if along < 0.0 { tail } else { tip };
+            c.path(vec![from, ft], Line::Dashed);
+        }
+        c.path(vec![Point::ORIGIN, ft], Line::Dashed);
+        c.label_later(
+            Point::ORIGIN.lerp(ft, 0.6),
+            Label::new(number(h, lang), ""),
+            SMALL,
+            None,
+        );
+    }
+}
+
+/// The lever on a canvas, the pole at the origin, with the caption under
+/// it; `mu_f` the force scale.
+pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
+    let w = words(lang);
+    let plan = &l.plan;
+    let turned = |i: usize| {
+        let v = plan.points[i].at;
+        Point::new(-v.y, v.x)
+    };
+    // Each moving link's known plan points: its segments (a shaded figure
+    // for three and more), as the plan draws them, turned.
+    let m = &an.mech;
+    let mut used = vec![false; plan.points.len()];
+    used[0] = true;
+    for link in (0..m.links.len()).filter(|&j| j != m.frame()) {
+        let mut pts: Vec<Point> = Vec::new();
+        for k in plan.body.iter().filter(|k| k.link == link) {
+            used[k.point] = true;
+            let p = turned(k.point);
+            if pts.iter().all(|q| (*q - p).hypot() > 0.05) {
+                pts.push(p);
+            }
+        }
+        match pts.len() {
+            0 | 1 => {}
+            2 => c.seg(pts[0], pts[1], Class::Main),
+            _ => {
+                let centre = pts.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / pts.len() as f64;
+                pts.sort_by(|a, b| {
+                    let ang = |p: &Point| (p.to_vec2() - centre).atan2();
+                    ang(a).total_cmp(&ang(b))
+                });
+                c.poly(pts, "#e3e3e3", super::canvas::MAIN);
+            }
+        }
+    }
+    // The rays from the pole: the turned absolute velocities.
+    for (i, _) in used.iter().enumerate().filter(|(i, u)| **u && *i > 0) {
+        let p = turned(i);
+        if p.to_vec2().hypot() > VISIBLE {
+            c.seg(Point::ORIGIN, p, Class::Thin);
+        }
+    }
+    let mut feet = Vec::new();
+    let fb = l.dir_b * l.f_b;
+    if fb != Vec2::ZERO {
+        let label = Label::new("F", w.balancing);
+        force(c, (l.at_b, fb), mu_f, label, &mut feet, lang);
+    }
+    for f in &l.forces {
+        let label = label_of(&name(an, f, &w));
+        force(c, (f.at, f.f), mu_f, label, &mut feet, lang);
+    }
+    // The points, labelled as on the plan (points at one place share one
+    // label), placed last.
+    let mut groups: Vec<(Point, Vec<usize>)> = Vec::new();
+    for (i, _) in used.iter().enumerate().filter(|(_, u)| **u) {
+        let p = turned(i);
+        match groups.iter_mut().find(|g| (g.0 - p).hypot() < 0.05) {
+            Some(g) => g.1.push(i),
+            None => groups.push((p, vec![i])),
+        }
+    }
+    for (p, members) in &groups {
+        c.dot(*p, format!("pt-{}", plan.points[members[0]].key));
+    }
+    for (p, members) in groups {
+        let first = &plan.points[members[0]];
+        let mut label = Label::new(first.label.0.clone(), first.label.1.clone());
+        for &i in &members[1..] {
+            let q = &plan.points[i];
+            if (q.label.0.clone(), q.label.1.clone()) != (label.base.clone(), label.sub.clone())
+                && !label.more.contains(&q.label)
+            {
+                label = label.and(q.label.0.clone(), q.label.1.clone());
+            }
+        }
+        c.label(p, label, FONT, Some(format!("label-{}", first.key)));
+    }
+    c.place_pending();
+    let bottom = c.bounds().y0;
+    for (i, t) in caption(an, l, mu_f, lang).iter().enumerate() {
+        c.rich(
+            Point::new(c.bounds().x0.min(0.0), bottom - 8.0 - 5.0 * i as f64),
+            t,
+            SMALL,
+            "",
+            "start",
+        );
+    }
+}
+
+/// The caption: the scales, and Σ M_p = 0 solved with numbers.
+fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<String> {
+    let w = words(lang);
+    let n = |x: f64| number(x, lang);
+    let u = |s: &str| unit(s, lang);
+    let b = w.balancing;
+    let sum: f64 = l.forces.iter().map(|f| f.moment).sum();
+    let mut out = vec![
+        format!(
+            "{}: μ_v = {} ({})/{}, μ_F = {} {}/{}",
+            w.turned,
+            n(l.mu_v),
+            u("m/s"),
+            u("mm"),
+            n(mu_f),
+            u("N"),
+            u("mm")
+        ),
+        format!(
+            "ΣM_p = Σ F·h + F_{b}·h_{b} = 0:  {} {} + F_{b}·{} {} = 0,  F_{b} = {} {}",
+            n(sum),
+            u("N·mm"),
+            {
+                let h = l.at_b.cross(l.dir_b);
+                if h < 0.0 { format!("({})", n(h)) } else { n(h) }
+            },
+            u("mm"),
+            n(l.f_b),
+            u("N")
+        ),
+    ];
+    let m = &an.mech;
+    match l.balancing {
+        Balancing::Moment(mb) => {
+            let spec = m.scene.input_at(l.input);
+            let pivot = match *spec {
+                crate::model::scene::InputSpec::Crank { pivot, .. } => m.point_name(pivot),
+                crate::model::scene::InputSpec::Slider { .. } => "",
+            };
+            out.push(format!(
+                "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {}",
+                m.point_name(l.point_b),
+                n(l.f_b),
+                n(mb / l.f_b),
+                n(mb),
+                u("N·m")
+            ));
+        }
+        Balancing::Force(fb) => {
+            out[1] = out[1].replace(&format!("F_{b} = {} {}", n(l.f_b), u("N")), "");
+            out.push(format!("F_{b} = {} {} ({})", n(fb), u("N"), w.along));
+        }
+    }
+    out
+}
+
+/// The table beside the lever: every force, its magnitude, arm and
+/// moment about the pole (counter-clockwise positive), the balancing
+/// force last.
+pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
+    let w = words(lang);
+    let mut rows: Vec<Vec<String>> = l
+        .forces
+        .iter()
+        .map(|f| {
+            let at = f.point.map(|p| an.mech.point_name(p)).unwrap_or("·");
+            vec![
+                format!("{} ({at})", name(an, f, &w)),
+                number(f.f.hypot(), lang),
+                number(f.arm, lang),
+                number(f.moment, lang),
+            ]
+        })
+        .collect();
+    rows.push(vec![
+        format!("F_{} ({})", w.balancing, an.mech.point_name(l.point_b)),
+        number(l.f_b.abs(), lang),
+        number(l.arm_b, lang),
+        number(l.moment_b, lang),
+    ]);
+    Ruled {
+        head: w.heads.iter().map(|s| s.to_string()).collect(),
+        rows,
+    }
+}
+
+/// "input 2" of a scene with several inputs, for the sheet's heading.
+pub(crate) fn input_text(l: &Lever, lang: Lang) -> String {
+    format!("{} {}", words(lang).input, l.input + 1)
+}
+
+/// The lever sheets of position `s` (the `k`-th), one per input, each at
+/// the μ_v that fills its field beside its table (the scene's μ_v where
+/// it fixes one for a single input).
+pub(super) fn pending(
+    an: &Analysis,
+    s: &crate::kinematics::solve::Solved,
+    k: usize,
+    opt: &super::DrawOptions,
+) -> crate::error::Result<Vec<super::Pending>> {
+    use crate::kinematics::construction::Naming;
+    use crate::kinetostatics::lever::lever_at;
+    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let pos = super::position_text(an, s, k, opt.lang);
+    let w = words(opt.lang);
+    let several = an.mech.scene.several_inputs();
+    let mut out = Vec::new();
+    for input in 0..an.mech.scene.input_count() {
+        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let figure = |l: &Lever| {
+            let mu_f = force_scale(l);
+            let mut c = Canvas::default();
+            draw(an, l, &mut c, mu_f, opt.lang);
+            (c, mu_f)
+        };
+        let right = |l: &Lever| table(an, l, opt.lang).size().0 + super::sheet::PAD;
+        let fixed = !several && an.drafting.mu_v.is_some();
+        let (l, (c, mu_f)) = if fixed {
+            let f = figure(&first);
+            (first, f)
+        } else {
+            let field = super::field_size(opt, right(&first));
+            let e = first.plan.points.iter().fold(kurbo::Rect::ZERO, |r, p| {
+                r.union_pt(Point::new(-p.at.y, p.at.x))
+            });
+            let lower = super::lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, field);
+            let rebuild = |mu: f64| {
+                let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+                let f = figure(&l);
+                Some((l, f))
+            };
+            match super::fill(lower, field, rebuild, |(_, (c, _))| c.bounds()) {
+                Some((_, x)) => x,
+                None => {
+                    let f = figure(&first);
+                    (first, f)
+                }
+            }
+        };
+        let t = table(an, &l, opt.lang);
+        let (name, title) = if several {
+            (
+                format!("lever_{}_{}", k + 1, input + 1),
+                format!("{}, {}, {pos}", w.title, input_text(&l, opt.lang)),
+            )
+        } else {
+            (format!("lever_{}", k + 1), format!("{}, {pos}", w.title))
+        };
+        out.push(super::Pending {
+            name,
+            title,
+            scale: Some(format!(
+                "{}, μ_F = {} {}/{}",
+                super::scale_text("v", l.mu_v, "m/s", opt.lang),
+                number(mu_f, opt.lang),
+                unit("N", opt.lang),
+                unit("mm", opt.lang)
+            )),
+            scales: vec![("mu_v", l.mu_v), ("mu_F", mu_f)],
+            canvas: c,
+            centre_on: None,
+            table: Some(t),
+        });
+    }
+    Ok(out)
+}
