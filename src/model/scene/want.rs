@@ -78,6 +78,7 @@ impl Reader {
                     "positions",
                     "diagrams",
                     "course",
+                    "forces",
                 ],
             );
         }

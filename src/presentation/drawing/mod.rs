@@ -16,6 +16,9 @@ pub mod course;
 pub mod cylinder;
 pub mod diagram;
 pub mod export;
+pub mod force_polygon;
+pub mod forces;
+pub mod free_body;
 pub mod frenet;
 pub mod html;
 pub mod mechanism;
@@ -175,6 +178,10 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
             "velocity" => has_vel,
             "acceleration" => has_acc,
             "positions" => solved.len() > 1,
+            "forces" => solved
+                .first()
+                .and_then(|s| s.dynamics.as_ref())
+                .is_some_and(|d| d.force_plans.is_some()),
             _ => false,
         }
     } else {
@@ -478,8 +485,8 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 table: None,
             });
         }
-        let Some(plans) = &s.plans else { continue };
         for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+            let Some(plans) = &s.plans else { break };
             let (name, title) = match kind {
                 PlanKind::Velocity => ("velocity", w.velocities),
                 PlanKind::Acceleration => ("acceleration", w.accelerations),
@@ -506,6 +513,19 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 canvas: c,
                 centre_on: None,
                 table: t,
+            });
+        }
+        if asked(an, solved, "forces")
+            && let Some(f) = forces::figure(an, s, k, opt, field)
+        {
+            out.push(Pending {
+                name: format!("forces_{}", k + 1),
+                title: format!("{}, {pos}", forces::title(opt.lang)),
+                scale: Some(scale_text("l", f.mu_l, "m", opt.lang)),
+                scales: vec![("mu_l", f.mu_l)],
+                canvas: f.canvas,
+                centre_on: None,
+                table: None,
             });
         }
     }
