@@ -261,6 +261,15 @@ impl Label {
         self.tail = tail.into();
         self
     }
+    /// How much higher than a plain label's its box reaches (mm): a
+    /// superscript stands above the capitals.
+    pub fn rise(&self, size: f64) -> f64 {
+        if self.sup.is_empty() {
+            0.0
+        } else {
+            0.55 * size
+        }
+    }
     /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
     pub fn width(&self, size: f64) -> f64 {
         let w = |s: &str| s.chars().map(char_width).sum::<f64>();
@@ -672,7 +681,7 @@ impl Canvas {
     pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
         // The box runs from the subscript's bottom (0.35 em below the
         // baseline) to the capitals' top (0.97 em above, as DejaVu renders).
-        let (w, h) = (label.width(size), size * 1.32);
+        let (w, h) = (label.width(size), size * 1.32 + label.rise(size));
         // A bare number (a link's, a position's) stands apart from other
         // labels, so that "S₄ 4" does not read as one label, nor "2 7" as
         // a number: 1.2 mm clear, where labels otherwise keep 0.3 mm.
@@ -828,7 +837,10 @@ impl Canvas {
                     at, label, size, ..
                 } => {
                     add(*at, 0.2);
-                    add(Point::new(at.x + label.width(*size), at.y + size), 0.2);
+                    add(
+                        Point::new(at.x + label.width(*size), at.y + size + label.rise(*size)),
+                        0.2,
+                    );
                 }
             }
         }
