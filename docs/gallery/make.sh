@@ -103,6 +103,9 @@ fi
   fi
   echo
 } >> "$index.tmp"
+# The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
+# every dynamics fixture, the six-link's position 2 in Ukrainian too.
+bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"
 # The fill table (tests/sheet_fill.rs writes it between its markers).
 {
   echo "## How much of its field a drawing spans"
