@@ -113,6 +113,9 @@ cp "$tmp/lever6/lever_10.png" "$out/lever_six_link_fig2_10.png"
   echo "![the lever of the six-link at position 10](lever_six_link_fig2_10.png)"
   echo
 } >> "$index.tmp"
+# The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
+# every dynamics fixture, the six-link's position 2 in Ukrainian too.
+bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"
 # The fill table (tests/sheet_fill.rs writes it between its markers).
 {
   echo "## How much of its field a drawing spans"

@@ -5,6 +5,7 @@
 
 pub mod drawing;
 pub mod dynamics;
+pub mod force_notation;
 pub mod force_steps;
 pub mod notation;
 pub mod quantity;

@@ -79,6 +79,7 @@ impl Reader {
                     "diagrams",
                     "course",
                     "lever",
+                    "forces",
                 ],
             );
         }

@@ -10,6 +10,8 @@ use std::fmt::Write as _;
 /// Line weights after ГОСТ 2.303: main lines S, thin lines S/2.
 pub const MAIN: f64 = 0.5;
 pub const THIN: f64 = 0.25;
+/// A result read off a plan: 1.6 S (ГОСТ 2.303 allows S up to 1.4 mm).
+pub const BOLD: f64 = 0.8;
 /// Font sizes after ГОСТ 2.304 (mm).
 pub const FONT: f64 = 3.5;
 pub const SMALL: f64 = 2.5;
@@ -138,6 +140,9 @@ pub enum Class {
     Main,
     /// A relative vector or a laid-off component: main line too.
     Vector,
+    /// A result read off a plan (a reaction on a force polygon): a line
+    /// thicker than the main one, as the course marks what was found.
+    Bold,
     /// A construction line, a dimension: thin line.
     Thin,
     /// The hatching of a fixed base or guide: thin line, told apart so
@@ -212,6 +217,9 @@ impl Line {
 pub struct Label {
     pub base: String,
     pub sub: String,
+    /// A superscript over the subscript (R^τ_12: the component of a
+    /// reaction); empty on most labels.
+    pub sup: String,
     /// Plain text after the subscript.
     pub tail: String,
     /// Further names sharing the label, each with its subscript
@@ -225,6 +233,7 @@ impl Label {
         !self.base.is_empty()
             && self.base.chars().all(|c| c.is_ascii_digit())
             && self.sub.is_empty()
+            && self.sup.is_empty()
             && self.tail.is_empty()
             && self.more.is_empty()
     }
@@ -233,6 +242,7 @@ impl Label {
         Label {
             base: base.into(),
             sub: sub.into(),
+            sup: String::new(),
             tail: String::new(),
             more: Vec::new(),
         }
@@ -242,9 +252,23 @@ impl Label {
         self.more.push((base.into(), sub.into()));
         self
     }
+    /// The superscript stacked over the subscript: R^τ_12.
+    pub fn with_sup(mut self, sup: impl Into<String>) -> Label {
+        self.sup = sup.into();
+        self
+    }
     pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
         self.tail = tail.into();
         self
+    }
+    /// How much higher than a plain label's its box reaches (mm): a
+    /// superscript stands above the capitals.
+    pub fn rise(&self, size: f64) -> f64 {
+        if self.sup.is_empty() {
+            0.0
+        } else {
+            0.55 * size
+        }
     }
     /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
     pub fn width(&self, size: f64) -> f64 {
@@ -254,7 +278,7 @@ impl Label {
             .iter()
             .map(|(b, s)| size * (w(", ") + w(b)) + 0.7 * size * w(s))
             .sum();
-        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub) + more
+        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub).max(w(&self.sup)) + more
     }
 }
 
@@ -657,7 +681,7 @@ impl Canvas {
     pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
         // The box runs from the subscript's bottom (0.35 em below the
         // baseline) to the capitals' top (0.97 em above, as DejaVu renders).
-        let (w, h) = (label.width(size), size * 1.32);
+        let (w, h) = (label.width(size), size * 1.32 + label.rise(size));
         // A bare number (a link's, a position's) stands apart from other
         // labels, so that "S₄ 4" does not read as one label, nor "2 7" as
         // a number: 1.2 mm clear, where labels otherwise keep 0.3 mm.
@@ -813,7 +837,10 @@ impl Canvas {
                     at, label, size, ..
                 } => {
                     add(*at, 0.2);
-                    add(Point::new(at.x + label.width(*size), at.y + size), 0.2);
+                    add(
+                        Point::new(at.x + label.width(*size), at.y + size + label.rise(*size)),
+                        0.2,
+                    );
                 }
             }
         }
@@ -827,16 +854,17 @@ impl Canvas {
         for p in &self.prims {
             match p {
                 Prim::Seg { a, b, class, id } => {
-                    let w = if matches!(class, Class::Thin | Class::Hatch) {
-                        THIN
-                    } else {
-                        MAIN
+                    let w = match class {
+                        Class::Thin | Class::Hatch => THIN,
+                        Class::Bold => BOLD,
+                        Class::Main | Class::Vector => MAIN,
                     };
                     let cls = match class {
                         Class::Main => "main",
                         Class::Vector => "vector",
                         Class::Thin => "thin",
                         Class::Hatch => "hatch",
+                        Class::Bold => "bold",
                     };
                     // A student's marks (check --svg) in red.
                     let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
@@ -979,7 +1007,18 @@ impl Canvas {
                         .iter()
                         .map(|(b, s)| format!("<tspan>, {}</tspan>{}", xml(b), sub(s)))
                         .collect();
-                    let sub = sub(&label.sub);
+                    // A superscript stacks over the subscript, as the
+                    // lecture's runs do (R^τ_12); else the base as it is.
+                    let (base, sub) = if label.sup.is_empty() {
+                        (xml(&label.base), sub(&label.sub))
+                    } else {
+                        let rs = vec![
+                            (Pos::Base, label.base.clone()),
+                            (Pos::Sup, label.sup.clone()),
+                            (Pos::Sub, label.sub.clone()),
+                        ];
+                        (runs_svg(&rs, *size), String::new())
+                    };
                     let tail = if label.tail.is_empty() {
                         String::new()
                     } else {
@@ -996,7 +1035,7 @@ impl Canvas {
                         fmt(ox + at.x),
                         fmt(oy - at.y),
                         fmt(*size),
-                        xml(&label.base)
+                        base
                     );
                 }
             }

@@ -39,7 +39,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64) {
     }
 }
 
-fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize) {
+pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize) {
     let m = &an.mech;
     let pr = &m.prismatics[k];
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);

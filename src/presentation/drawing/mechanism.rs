@@ -38,7 +38,7 @@ fn pivot(c: &mut Canvas, at: Point, down: Vec2) {
 }
 
 /// A centre of mass: a circle with two opposite quarters filled.
-fn centre_of_mass(c: &mut Canvas, at: Point) {
+pub(crate) fn centre_of_mass(c: &mut Canvas, at: Point) {
     let r = 1.4;
     c.circle(at, r, "white", THIN);
     for q in [0.0, std::f64::consts::PI] {

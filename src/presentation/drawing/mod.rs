@@ -16,6 +16,9 @@ pub mod course;
 pub mod cylinder;
 pub mod diagram;
 pub mod export;
+pub mod force_polygon;
+pub mod forces;
+pub mod free_body;
 pub mod frenet;
 pub mod html;
 pub mod lever;
@@ -177,6 +180,10 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
             "acceleration" => has_acc,
             "positions" => solved.len() > 1,
             "lever" => solved.first().is_some_and(|s| s.dynamics.is_some()),
+            "forces" => solved
+                .first()
+                .and_then(|s| s.dynamics.as_ref())
+                .is_some_and(|d| d.force_plans.is_some()),
             _ => false,
         }
     } else {
@@ -480,17 +487,14 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 table: None,
             });
         }
-        // Zhukovsky's lever after the plans of its position.
+        // Zhukovsky's lever after the plans and forces of its position.
         let levers = if asked(an, solved, "lever") && s.dynamics.is_some() {
             lever::pending(an, s, k, opt)?
         } else {
             Vec::new()
         };
-        let Some(plans) = &s.plans else {
-            out.extend(levers);
-            continue;
-        };
         for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+            let Some(plans) = &s.plans else { break };
             let (name, title) = match kind {
                 PlanKind::Velocity => ("velocity", w.velocities),
                 PlanKind::Acceleration => ("acceleration", w.accelerations),
@@ -517,6 +521,19 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
                 canvas: c,
                 centre_on: None,
                 table: t,
+            });
+        }
+        if asked(an, solved, "forces")
+            && let Some(f) = forces::figure(an, s, k, opt, field)
+        {
+            out.push(Pending {
+                name: format!("forces_{}", k + 1),
+                title: format!("{}, {pos}", forces::title(opt.lang)),
+                scale: Some(scale_text("l", f.mu_l, "m", opt.lang)),
+                scales: vec![("mu_l", f.mu_l)],
+                canvas: f.canvas,
+                centre_on: None,
+                table: None,
             });
         }
         out.extend(levers);

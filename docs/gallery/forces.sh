@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The force sheets of the gallery (part of make.sh; on its own it writes
+# only these PNGs): position 1 of every dynamics fixture and the six-link's
+# position 2 in Ukrainian, into docs/gallery/forces/, and prints their
+# section of the gallery's README. Usage: bash docs/gallery/forces.sh [TMPDIR]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+tmp=${1:-$(mktemp -d)}
+out=docs/gallery/forces
+mkdir -p "$out"
+rm -f "$out"/*.png
+echo "## Force sheets"
+echo
+echo "The force analysis of a position (\`forces_<k>\`, drawn with a \`dynamics\`"
+echo "scene; [docs/kinetostatics.md](../kinetostatics.md), \"On paper\"): per Assur"
+echo "group and the input link, the free body at μ_l and the force polygon at μ_F."
+echo
+for f in fixtures/dynamics/*.json; do
+  n=$(basename "$f" .json)
+  ./target/release/mechplan draw "$f" -o "$tmp/$n" --format png --dpi 100 > /dev/null
+  cp "$tmp/$n/forces_1.png" "$out/$n.png"
+  echo "![$n forces_1](forces/$n.png)"
+done
+./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json --lang uk -o "$tmp/six_uk" --format png --dpi 100 > /dev/null
+cp "$tmp/six_uk/forces_2.png" "$out/six_link_fig2_10_uk_2.png"
+echo "![six_link_fig2_10 forces_2, uk](forces/six_link_fig2_10_uk_2.png)"
+echo

@@ -1,0 +1,117 @@
+//! A force polygon drawn from its plan (`kinetostatics::force_plan`): the
+//! known vectors laid off head to tail, the two lines of known direction
+//! that close it (dashed, a little past where they meet), the components
+//! along them, and the reactions read off, bold; every vector named. The
+//! plan's points are drawn as they are, `k` times enlarged (a drawing at
+//! μ_F shows the plan built at its own μ: k = μ_plan / μ_F), so that what
+//! is drawn is the construction itself.
+
+use super::canvas::{Canvas, Class, FONT, Line};
+use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep, Part};
+use crate::presentation::drawing::canvas::Label;
+use kurbo::Point;
+
+/// How far a closing line runs past the meeting point, and before the
+/// point it is drawn through (mm).
+const OVERSHOOT: f64 = 6.0;
+const LEAD: f64 = 3.0;
+
+/// The drawn place of plan point `i` at `k` mm per plan mm (the start at
+/// the drawing's origin).
+pub fn at(plan: &ForcePlan, i: usize, k: f64) -> Option<Point> {
+    plan.points.get(i).map(|p| (*p * k).to_point())
+}
+
+/// Draw `plan` at `k` times its size, naming each force by `name`; ids
+/// start with `tag`: `{tag}-vec-{from}-{to}` for the vectors (the plan's
+/// point numbers), `{tag}-pt-{i}` for the points.
+pub fn draw(
+    plan: &ForcePlan,
+    name: &dyn Fn(Force) -> Option<Label>,
+    c: &mut Canvas,
+    k: f64,
+    tag: &str,
+) {
+    let pt = |i: usize| at(plan, i, k);
+    let mut used = vec![false; plan.points.len()];
+    // The closing lines under the vectors.
+    let mut components: Vec<(usize, usize, Force)> = Vec::new();
+    for st in &plan.steps {
+        let ForceStep::Intersect { lines, out, .. } = st else {
+            continue;
+        };
+        for (j, &li) in lines.iter().enumerate() {
+            let Some(l) = plan.lines.get(li) else {
+                continue;
+            };
+            let (Some(a), Some(x)) = (pt(l.through), pt(*out)) else {
+                continue;
+            };
+            let d = if (x - a).hypot() > 1e-9 {
+                (x - a).normalize()
+            } else {
+                l.dir
+            };
+            c.path(vec![a - d * LEAD, x + d * OVERSHOOT], Line::Dashed);
+            used[l.through] = true;
+            used[*out] = true;
+            // The component along the line: from the meeting point back to
+            // the start (the first line's), or on to it (the second's).
+            if let Force::Reaction {
+                part: Part::Normal | Part::AcrossGuide,
+                ..
+            } = l.force
+            {
+                let (from, to) = if j == 0 {
+                    (*out, l.through)
+                } else {
+                    (l.through, *out)
+                };
+                components.push((from, to, l.force));
+            }
+        }
+    }
+    let found = |vi: usize| plan.steps.contains(&ForceStep::Measure(vi));
+    // Each segment once: a reaction laid off and read off again (RPR) is
+    // drawn bold.
+    let mut segs: Vec<(usize, usize, Force, Class)> = Vec::new();
+    for (vi, v) in plan.vectors.iter().enumerate() {
+        let class = if found(vi) {
+            Class::Bold
+        } else {
+            Class::Vector
+        };
+        match segs
+            .iter_mut()
+            .find(|s| (s.0, s.1) == (v.from, v.to) && s.2 == v.force)
+        {
+            Some(s) => {
+                if class == Class::Bold {
+                    s.3 = class;
+                }
+            }
+            None => segs.push((v.from, v.to, v.force, class)),
+        }
+    }
+    for (from, to, force) in components {
+        segs.push((from, to, force, Class::Vector));
+    }
+    for (from, to, force, class) in segs {
+        let (Some(a), Some(b)) = (pt(from), pt(to)) else {
+            continue;
+        };
+        used[from] = true;
+        used[to] = true;
+        let id = format!("{tag}-vec-{from}-{to}");
+        c.vector(a, b, class, Some(id.clone()));
+        if let Some(label) = name(force) {
+            c.label_later(a.midpoint(b), label, FONT, Some(format!("{id}-label")));
+        }
+    }
+    for (i, u) in used.iter().enumerate() {
+        if let (true, Some(p)) = (*u, pt(i)) {
+            c.dot(p, format!("{tag}-pt-{i}"));
+        }
+    }
+    c.place_pending();
+}

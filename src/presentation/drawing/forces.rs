@@ -1,0 +1,265 @@
+//! The force analysis of one position on paper (`forces_<k>`): for every
+//! step of the graphical route, in the order solved (the last Assur group
+//! first, the input link last), the group's free-body drawing at μ_l
+//! ([`free_body`]) and its force polygon at its own μ_F beside it
+//! ([`force_polygon`]), captioned. All free bodies share one μ_l; each
+//! polygon has the largest standard scale at which it fills its box, as
+//! the course draws a polygon per group at a scale of its own.
+
+use super::canvas::{Canvas, FONT, Label, Prim};
+use super::free_body::{self, Scene};
+use super::{DrawOptions, fill, force_polygon, lower_scale, table};
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinetostatics::force_plan::ForcePlan;
+use crate::kinetostatics::loads;
+use crate::presentation::force_notation as names;
+use kurbo::{Point, Rect, Vec2};
+
+/// The gap between panels and between a free body and its polygon, mm.
+const GAP: f64 = 8.0;
+/// The band at a panel's top holding its caption, mm.
+const CAPTION: f64 = 7.0;
+/// The band under a polygon holding its μ_F, mm.
+const SCALE_LINE: f64 = 7.0;
+
+/// The sheet's figure: the panels, the free bodies' μ_l and each plan's
+/// μ_F (in the order of the plans).
+pub struct Figure {
+    pub canvas: Canvas,
+    pub mu_l: f64,
+    pub mu_f: Vec<f64>,
+}
+
+/// The heading's words: "Force analysis".
+pub fn title(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "Force analysis",
+        Lang::Uk => "Силовий розрахунок",
+        Lang::Ru => "Силовой расчёт",
+    }
+}
+
+/// A panel's caption: "Group (2, 3), RRR", "Input link 1".
+fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
+    let m = &an.mech;
+    let ids: Vec<&str> = plan.links.iter().map(|&l| m.link_id(l)).collect();
+    match plan.group {
+        Some(g) => {
+            let kind = match an.structure.groups.get(g) {
+                Some(crate::model::structure::AssurGroup::Dyad(d)) => {
+                    format!(", {}", d.kind.name())
+                }
+                _ => String::new(),
+            };
+            let word = match lang {
+                Lang::En => "Group",
+                Lang::Uk => "Група",
+                Lang::Ru => "Группа",
+            };
+            format!("{word} ({}){kind}", ids.join(", "))
+        }
+        None => {
+            let word = match lang {
+                Lang::En => "Input link",
+                Lang::Uk => "Вхідна ланка",
+                Lang::Ru => "Входное звено",
+            };
+            format!("{word} {}", ids.join(", "))
+        }
+    }
+}
+
+/// "μ_F = 20 N/mm" (uk, ru: "Н/мм", the decimal comma).
+pub fn scale_label(mu: f64, lang: Lang) -> Label {
+    let newton = if lang == Lang::En { "N" } else { "Н" };
+    Label::new("μ", "F").with_tail(format!(
+        " = {} {newton}/{}",
+        table::number(mu, lang),
+        table::unit("mm", lang)
+    ))
+}
+
+/// Panels in columns on a field: a free body on the left of each, at
+/// most [`BODY_SHARE`] of the column wide, its polygon on the right in
+/// the rest; each row as high as its tallest free body needs (a polygon
+/// at least [`MIN_POLYGON`] high).
+#[derive(Clone, Copy)]
+struct Columns {
+    cols: usize,
+    field: (f64, f64),
+}
+
+/// The share of a column's width its free bodies may take.
+const BODY_SHARE: f64 = 0.6;
+/// The least height of a polygon's box, mm.
+const MIN_POLYGON: f64 = 30.0;
+
+impl Columns {
+    fn col_width(&self) -> f64 {
+        (self.field.0 - GAP * (self.cols - 1) as f64) / self.cols as f64
+    }
+    /// The field of the free bodies as [`fill`] sees it: the widest body
+    /// against the column's share, the rows' heights against the field's.
+    fn body_field(&self) -> (f64, f64) {
+        (BODY_SHARE * self.col_width(), self.field.1)
+    }
+    /// Per row, its height (caption included).
+    fn rows(&self, bodies: &[Rect]) -> Vec<f64> {
+        bodies
+            .chunks(self.cols)
+            .map(|row| {
+                let h = row.iter().map(|b| b.height()).fold(0.0, f64::max);
+                h.max(MIN_POLYGON + SCALE_LINE) + CAPTION
+            })
+            .collect()
+    }
+    /// The extent [`fill`] compares with [`Columns::body_field`].
+    fn extent(&self, bodies: &[Rect]) -> Rect {
+        let w = bodies.iter().map(|b| b.width()).fold(0.0, f64::max);
+        let rows = self.rows(bodies);
+        let h = rows.iter().sum::<f64>() + GAP * rows.len().saturating_sub(1) as f64;
+        Rect::new(0.0, 0.0, w, h)
+    }
+    /// Panel `i`'s top left corner (drawing coordinates, y up), its free
+    /// body's box and its polygon's box (w × h).
+    fn panel(&self, i: usize, bodies: &[Rect]) -> (Point, (f64, f64), (f64, f64)) {
+        let rows = self.rows(bodies);
+        let (col, row) = (i % self.cols, i / self.cols);
+        let top: f64 = rows.iter().take(row).map(|h| h + GAP).sum();
+        let h = rows.get(row).copied().unwrap_or(0.0) - CAPTION;
+        let bw = bodies.iter().map(|b| b.width()).fold(0.0, f64::max);
+        let x = col as f64 * (self.col_width() + GAP);
+        (
+            Point::new(x, -top),
+            (bw, h),
+            (self.col_width() - bw - GAP, h - SCALE_LINE),
+        )
+    }
+}
+
+/// The figure of position `s` (the `k`-th, from 0) on a field of
+/// `field` mm; `None` without force plans.
+pub fn figure(
+    an: &Analysis,
+    s: &Solved,
+    k: usize,
+    opt: &DrawOptions,
+    field: (f64, f64),
+) -> Option<Figure> {
+    let d = s.dynamics.as_ref()?;
+    let fp = d.force_plans.as_ref()?;
+    let plans = &fp.plans;
+    if plans.is_empty() {
+        return None;
+    }
+    let loads = loads::loads(an, s, k);
+    let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
+    let scene = |i: usize| Scene {
+        an,
+        s,
+        d,
+        loads: &loads,
+        lang: opt.lang,
+        tag: &tags[i],
+    };
+    let bodies = |mu: f64| -> Vec<Canvas> {
+        plans
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let mut c = Canvas::default();
+                free_body::draw(&scene(i), p, &mut c, mu);
+                c
+            })
+            .collect()
+    };
+    let real = plans
+        .iter()
+        .enumerate()
+        .map(|(i, p)| free_body::extent(&scene(i), p))
+        .fold((0.0f64, 0.0f64), |a, r| {
+            (a.0.max(r.width()), a.1.max(r.height()))
+        });
+    // One column, or two: whichever draws the free bodies larger.
+    let bounds = |cs: &Vec<Canvas>| cs.iter().map(|c| c.bounds()).collect::<Vec<Rect>>();
+    let mut best: Option<(Columns, f64, Vec<Canvas>)> = None;
+    for cols in [1, 2].into_iter().filter(|&c| c <= plans.len()) {
+        let layout = Columns { cols, field };
+        let f = layout.body_field();
+        if f.0 <= GAP || f.1 <= CAPTION + GAP {
+            continue;
+        }
+        let lower = lower_scale(real.0, real.1, f);
+        let fit = fill(
+            lower,
+            f,
+            |mu| Some(bodies(mu)),
+            |cs| layout.extent(&bounds(cs)),
+        );
+        if let Some((mu, cs)) = fit
+            && best.as_ref().is_none_or(|b| mu < b.1)
+        {
+            best = Some((layout, mu, cs));
+        }
+    }
+    let (layout, mu_l, cs) = best?;
+    let boxes = bounds(&cs);
+    let name = |f| names::force(&an.mech, &loads, f, opt.lang);
+    let mut out = Canvas::default();
+    let mut mu_f = Vec::new();
+    for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {
+        let (corner, (bw, bh), (pw, ph)) = layout.panel(i, &boxes);
+        let top = corner.y - CAPTION;
+        // The polygon at the largest standard μ_F that fills its box.
+        let (lo, hi) = plan
+            .points
+            .iter()
+            .fold((Vec2::ZERO, Vec2::ZERO), |(lo, hi), p| {
+                (
+                    Vec2::new(lo.x.min(p.x), lo.y.min(p.y)),
+                    Vec2::new(hi.x.max(p.x), hi.y.max(p.y)),
+                )
+            });
+        let lower = lower_scale((hi.x - lo.x) * plan.mu, (hi.y - lo.y) * plan.mu, (pw, ph));
+        let polygon = |mu: f64| {
+            let mut c = Canvas::default();
+            force_polygon::draw(plan, &name, &mut c, plan.mu / mu, &tags[i]);
+            Some(c)
+        };
+        let Some((mu, poly)) = fill(lower, (pw, ph), polygon, |c| c.bounds()) else {
+            continue;
+        };
+        mu_f.push(mu);
+        out.text(
+            Point::new(corner.x, corner.y - FONT),
+            Label::new(caption(an, plan, opt.lang), ""),
+            FONT,
+            "caption",
+        );
+        let centre_in = |c: &Canvas, r: Rect| {
+            let b = c.bounds();
+            r.center() - b.center()
+        };
+        let d = centre_in(body, Rect::new(corner.x, top - bh, corner.x + bw, top));
+        out.append(body, d.x, d.y);
+        let px = corner.x + bw + GAP;
+        let d = centre_in(&poly, Rect::new(px, top - ph, px + pw, top));
+        out.append(&poly, d.x, d.y);
+        // μ_F under the polygon, with an id the checks read it by.
+        let scale = scale_label(mu, opt.lang);
+        let b = poly.bounds();
+        out.prims.push(Prim::Text {
+            at: Point::new(b.x0 + d.x, b.y0 + d.y - SCALE_LINE + 1.5),
+            label: scale,
+            size: FONT,
+            id: Some(format!("{}-mu", tags[i])),
+            class: "scale",
+        });
+    }
+    Some(Figure {
+        canvas: out,
+        mu_l,
+        mu_f,
+    })
+}

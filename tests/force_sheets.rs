@@ -1,0 +1,289 @@
+//! The force sheets (`forces_<k>`), read back from their SVG: every
+//! position of every dynamics fixture has one; the drawing stays inside
+//! the page and spans at least 60 % of its field one way; every label lies
+//! inside the frame and on no other label; and the drawn polygon is the
+//! plan: every vector's ends (the reactions read off among them) lie at
+//! `ForcePlan::points` placed as the sheet places them (its start point's
+//! dot, μ_F as the caption prints it) to 0.01 mm.
+
+use mechplan::construction::text::Lang;
+use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
+use mechplan::kinetostatics::force_plan::ForceStep;
+use std::collections::HashMap;
+
+const DYNAMICS: &[&str] = &[
+    "six_link_fig2_10",
+    "shaper_fig2_11",
+    "compressor_fig2_12",
+    "arm_two_cylinders",
+    "worked_slider_crank",
+];
+
+fn solve(name: &str, lang: Lang) -> (mechplan::Analysis, Vec<mechplan::Solved>, Vec<Sheet>) {
+    let path = format!(
+        "{}/fixtures/dynamics/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let scene = mechplan::Scene::from_json(&v.to_string()).unwrap();
+    let an = mechplan::Analysis::new(scene).unwrap();
+    let s = an.run().unwrap();
+    let opt = DrawOptions {
+        lang,
+        ..DrawOptions::default()
+    };
+    let sh = sheets(&an, &s, &opt);
+    (an, s, sh)
+}
+
+fn attr(line: &str, name: &str) -> Option<f64> {
+    let i = line.find(&format!(" {name}=\""))? + name.len() + 3;
+    line[i..].split('"').next()?.parse().ok()
+}
+
+fn attr_str<'a>(line: &'a str, name: &str) -> Option<&'a str> {
+    let i = line.find(&format!(" {name}=\""))? + name.len() + 3;
+    line[i..].split('"').next()
+}
+
+/// Every text with an id, by id, with its box (mm) as the renderer lays
+/// it out.
+fn label_boxes(svg: &str) -> Vec<(String, kurbo::Rect)> {
+    let t = tree(svg).unwrap();
+    let k = 25.4 / 96.0;
+    let mut out = Vec::new();
+    fn walk(g: &usvg::Group, k: f64, out: &mut Vec<(String, kurbo::Rect)>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, k, out),
+                usvg::Node::Text(t) if !t.id().is_empty() => {
+                    let b = n.abs_bounding_box();
+                    out.push((
+                        t.id().to_string(),
+                        kurbo::Rect::new(
+                            b.left() as f64 * k,
+                            b.top() as f64 * k,
+                            b.right() as f64 * k,
+                            b.bottom() as f64 * k,
+                        ),
+                    ));
+                }
+                _ => {}
+            }
+        }
+    }
+    walk(t.root(), k, &mut out);
+    out
+}
+
+/// The share of `field` (page mm) the rendered drawing inside it spans,
+/// across and down (1 px = 0.85 mm).
+fn span(svg: &str, field: kurbo::Rect) -> (f64, f64) {
+    const DPI: f32 = 30.0;
+    let t = tree(svg).unwrap();
+    let k = DPI / 25.4;
+    let (w, h) = (
+        t.size().width() * 25.4 / 96.0,
+        t.size().height() * 25.4 / 96.0,
+    );
+    let (pw, ph) = ((w * k).ceil() as u32, (h * k).ceil() as u32);
+    let mut pix = tiny_skia::Pixmap::new(pw, ph).unwrap();
+    let s = DPI / 96.0;
+    resvg::render(
+        &t,
+        tiny_skia::Transform::from_scale(s, s),
+        &mut pix.as_mut(),
+    );
+    let k = k as f64;
+    let (x0, x1) = ((field.x0 * k).ceil() as u32, (field.x1 * k).floor() as u32);
+    let (y0, y1) = ((field.y0 * k).ceil() as u32, (field.y1 * k).floor() as u32);
+    let (mut lo, mut hi) = ((u32::MAX, u32::MAX), (0u32, 0u32));
+    for y in y0..y1.min(ph) {
+        for x in x0..x1.min(pw) {
+            let p = pix.pixel(x, y).unwrap();
+            if p.red() < 200 || p.green() < 200 || p.blue() < 200 {
+                lo = (lo.0.min(x), lo.1.min(y));
+                hi = (hi.0.max(x), hi.1.max(y));
+            }
+        }
+    }
+    if hi.0 < lo.0 {
+        return (0.0, 0.0);
+    }
+    (
+        (hi.0 - lo.0 + 1) as f64 / (x1 - x0) as f64,
+        (hi.1 - lo.1 + 1) as f64 / (y1 - y0) as f64,
+    )
+}
+
+/// The layout checks on one sheet: inside the page, filling its field,
+/// labels inside the frame and apart.
+fn layout(where_: &str, s: &Sheet) {
+    let t = tree(&s.svg).unwrap();
+    let size = t.size();
+    let bb = t.root().abs_stroke_bounding_box();
+    assert!(
+        bb.left() >= 0.0
+            && bb.top() >= 0.0
+            && bb.right() <= size.width() + 1e-3
+            && bb.bottom() <= size.height() + 1e-3,
+        "{where_}: drawing leaves the page: {bb:?} in {size:?}"
+    );
+    let field = sheet::field(s.size, false, 0.0);
+    let (sx, sy) = span(&s.svg, field);
+    assert!(
+        sx.max(sy) >= 0.6,
+        "{where_}: the drawing spans {:.0} % × {:.0} % of its field",
+        100.0 * sx,
+        100.0 * sy
+    );
+    let frame = sheet::frame(s.size);
+    let labels = label_boxes(&s.svg);
+    assert!(labels.len() > 10, "{where_}: {} labels", labels.len());
+    for (id, r) in &labels {
+        assert!(
+            r.x0 >= frame.x0 && r.x1 <= frame.x1 && r.y0 >= frame.y0 && r.y1 <= frame.y1,
+            "{where_}: label {id} {r:?} outside the frame {frame:?}"
+        );
+    }
+    for i in 0..labels.len() {
+        for j in i + 1..labels.len() {
+            let (a, b) = (&labels[i], &labels[j]);
+            assert!(
+                a.1.intersect(b.1).area() <= 0.05,
+                "{where_}: labels {} {:?} and {} {:?} overlap",
+                a.0,
+                a.1,
+                b.0,
+                b.1
+            );
+        }
+    }
+}
+
+/// Every force sheet of every dynamics fixture, every position.
+#[test]
+fn force_sheets_pass_the_layout_checks() {
+    for name in DYNAMICS {
+        let (_, solved, sh) = solve(name, Lang::En);
+        let forces: Vec<&Sheet> = sh
+            .iter()
+            .filter(|s| s.name.starts_with("forces_"))
+            .collect();
+        assert_eq!(
+            forces.len(),
+            solved.len(),
+            "{name}: one force sheet a position"
+        );
+        for s in forces {
+            layout(&format!("{name} {}", s.name), s);
+        }
+    }
+}
+
+/// The polygon drawn is the plan: each plan's vectors end where its points
+/// are, placed by the start point's dot and the printed μ_F.
+#[test]
+fn drawn_polygons_are_the_force_plans() {
+    for name in DYNAMICS {
+        let (_, solved, sh) = solve(name, Lang::En);
+        for (k, s) in solved.iter().enumerate() {
+            let where_ = format!("{name} position {}", k + 1);
+            let plans = &s
+                .dynamics
+                .as_ref()
+                .unwrap()
+                .force_plans
+                .as_ref()
+                .unwrap()
+                .plans;
+            let svg = &sh
+                .iter()
+                .find(|x| x.name == format!("forces_{}", k + 1))
+                .unwrap()
+                .svg;
+            let lines: Vec<&str> = svg.lines().collect();
+            let by_id: HashMap<&str, &str> = lines
+                .iter()
+                .filter_map(|l| Some((attr_str(l, "id")?, *l)))
+                .collect();
+            for (i, plan) in plans.iter().enumerate() {
+                let tag = format!("f{}", i + 1);
+                let dot = by_id[format!("{tag}-pt-0").as_str()];
+                let o = kurbo::Point::new(attr(dot, "cx").unwrap(), attr(dot, "cy").unwrap());
+                // "μ<tspan …>F</tspan><tspan> = 25 N/mm</tspan>"
+                let cap = by_id[format!("{tag}-mu").as_str()];
+                let mu: f64 = cap
+                    .split(" = ")
+                    .nth(1)
+                    .and_then(|t| t.split(' ').next())
+                    .and_then(|x| x.parse().ok())
+                    .unwrap_or_else(|| panic!("{where_}: no μ_F in {cap}"));
+                let kx = plan.mu / mu;
+                let place = |j: usize| {
+                    let p = plan.points[j] - plan.points[0];
+                    kurbo::Point::new(o.x + p.x * kx, o.y - p.y * kx)
+                };
+                let mut reactions = 0;
+                for (vi, v) in plan.vectors.iter().enumerate() {
+                    let id = format!("{tag}-vec-{}-{}", v.from, v.to);
+                    let Some(line) = by_id.get(id.as_str()) else {
+                        // A vector under a micrometre is not drawn.
+                        assert!(
+                            (plan.points[v.to] - plan.points[v.from]).hypot() * kx < 1e-6,
+                            "{where_}: vector {id} missing"
+                        );
+                        continue;
+                    };
+                    let a = kurbo::Point::new(attr(line, "x1").unwrap(), attr(line, "y1").unwrap());
+                    let b = kurbo::Point::new(attr(line, "x2").unwrap(), attr(line, "y2").unwrap());
+                    // Each coordinate: the page is written to 0.01 mm, the
+                    // dot and the line each rounded by at most half that.
+                    for (got, want) in [(a, place(v.from)), (b, place(v.to))] {
+                        assert!(
+                            (got.x - want.x).abs().max((got.y - want.y).abs()) <= 0.01 + 1e-9,
+                            "{where_}: {id} ends at {got:?}, the plan's point at {want:?}"
+                        );
+                    }
+                    if plan.steps.contains(&ForceStep::Measure(vi)) {
+                        assert!(
+                            line.contains(r#"class="bold""#),
+                            "{where_}: reaction {id} not bold"
+                        );
+                        reactions += 1;
+                    }
+                }
+                assert!(reactions >= 1, "{where_}: plan {tag} reads off no reaction");
+            }
+        }
+    }
+}
+
+/// The course's names per language, and kinematic scenes without a force
+/// sheet (their sheets are the golden files' of tests/drawings.rs).
+#[test]
+fn names_and_only_with_dynamics() {
+    let (_, _, sh) = solve("six_link_fig2_10", Lang::Uk);
+    let s = sh.iter().find(|s| s.name == "forces_1").unwrap();
+    assert!(s.title.starts_with("Силовий розрахунок"), "{}", s.title);
+    for want in [
+        ">M<tspan",
+        ">зр</tspan>",
+        ">Φ<tspan",
+        ">R<tspan",
+        ">τ</tspan>",
+        "Н/мм",
+    ] {
+        assert!(s.svg.contains(want), "uk force sheet lacks {want}");
+    }
+    let (_, _, sh) = solve("worked_slider_crank", Lang::Ru);
+    let s = sh.iter().find(|s| s.name == "forces_1").unwrap();
+    assert!(s.svg.contains(">ур</tspan>"), "ru: M_ур missing");
+    let path = format!("{}/fixtures/four_bar.json", env!("CARGO_MANIFEST_DIR"));
+    let scene = mechplan::Scene::from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let an = mechplan::Analysis::new(scene).unwrap();
+    let solved = an.run().unwrap();
+    let sh = sheets(&an, &solved, &DrawOptions::default());
+    assert!(!sh.is_empty() && sh.iter().all(|s| !s.name.starts_with("forces")));
+}
