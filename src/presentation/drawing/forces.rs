@@ -121,10 +121,20 @@ impl Columns {
         let h = rows.iter().sum::<f64>() + GAP * rows.len().saturating_sub(1) as f64;
         Rect::new(0.0, 0.0, w, h)
     }
+    /// The rows' heights with the field's height left over shared among
+    /// them: the free bodies' μ_l is a standard value (up to ×2 apart), so
+    /// there is room the polygons take.
+    fn rows_spread(&self, bodies: &[Rect]) -> Vec<f64> {
+        let rows = self.rows(bodies);
+        let n = rows.len().max(1) as f64;
+        let used = rows.iter().sum::<f64>() + GAP * (n - 1.0);
+        let extra = ((self.field.1 - used) / n).max(0.0);
+        rows.into_iter().map(|h| h + extra).collect()
+    }
     /// Panel `i`'s top left corner (drawing coordinates, y up), its free
     /// body's box and its polygon's box (w × h).
     fn panel(&self, i: usize, bodies: &[Rect]) -> (Point, (f64, f64), (f64, f64)) {
-        let rows = self.rows(bodies);
+        let rows = self.rows_spread(bodies);
         let (col, row) = (i % self.cols, i / self.cols);
         let top: f64 = rows.iter().take(row).map(|h| h + GAP).sum();
         let h = rows.get(row).copied().unwrap_or(0.0) - CAPTION;
@@ -197,10 +207,25 @@ pub fn figure(
             |mu| Some(bodies(mu)),
             |cs| layout.extent(&bounds(cs)),
         );
-        if let Some((mu, cs)) = fit
-            && best.as_ref().is_none_or(|b| mu < b.1)
-        {
-            best = Some((layout, mu, cs));
+        // At the same μ_l (standard values are up to ×2 apart, so two
+        // layouts often share one), the one whose smallest polygon box is
+        // largest: the polygons then take the room the bodies leave.
+        let room = |layout: &Columns, cs: &Vec<Canvas>| {
+            let boxes = bounds(cs);
+            (0..cs.len())
+                .map(|i| {
+                    let (_, _, (pw, ph)) = layout.panel(i, &boxes);
+                    pw.min(ph)
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        if let Some((mu, cs)) = fit {
+            let better = best.as_ref().is_none_or(|b| {
+                mu < b.1 || (mu == b.1 && room(&layout, &cs) > room(&b.0, &b.2))
+            });
+            if better {
+                best = Some((layout, mu, cs));
+            }
         }
     }
     let (layout, mu_l, cs) = best?;
