@@ -6,44 +6,20 @@
 
 use crate::kinematics::construction::text::{Lang, num};
 use crate::kinematics::solve::{Analysis, Solved};
-use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep, Part};
-use crate::kinetostatics::loads::{self, Load, Origin};
+use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep};
+use crate::kinetostatics::loads::{self, Load};
 use crate::model::structure::AssurGroup;
 use kurbo::Vec2;
 use std::fmt::Write as _;
 
-/// The name of a force in the course's notation: Φ_2 (inertia force),
-/// M_Φ2 (inertia couple), G_2 (weight), F_5 and M_3 (external), R_12 (the
-/// reaction of link 1 on link 2) with ^τ, ^n, ^∥, ^⊥ for a component,
-/// F_b (the drive force of a cylinder or slider).
+/// The name of a force in the course's notation, as the force sheets
+/// print it (`presentation::force_notation`) in plain text: Φ_2 (inertia
+/// force), M_Φ2 (inertia couple), G_2 (weight), F_5 and M_3 (external),
+/// R_12 (the reaction of link 1 on link 2) with ^τ, ^n for a component,
+/// F_b (the drive force of a cylinder or slider; uk F_зр, ru F_ур).
 pub fn force_name(an: &Analysis, loads: &[Load], f: Force, lang: Lang) -> String {
-    let m = &an.mech;
-    match f {
-        Force::Load(i) => {
-            let id = m.link_id(loads[i].link());
-            match (loads[i], loads[i].origin()) {
-                (Load::Force { .. }, Origin::Inertia) => format!("Φ_{id}"),
-                (Load::Couple { .. }, Origin::Inertia) => format!("M_Φ{id}"),
-                (_, Origin::Gravity) => format!("G_{id}"),
-                (Load::Force { .. }, Origin::External) => format!("F_{id}"),
-                (Load::Couple { .. }, Origin::External) => format!("M_{id}"),
-            }
-        }
-        Force::Reaction { from, to, part, .. } => {
-            let sup = match part {
-                Part::Whole => "",
-                Part::Tangential => "^τ",
-                Part::Normal => "^n",
-                Part::AlongGuide => "^∥",
-                Part::AcrossGuide => "^⊥",
-            };
-            format!("R{sup}_{}{}", m.link_id(from), m.link_id(to))
-        }
-        Force::Drive { input, .. } => {
-            let id = m.link_id(m.scene.input_at(input).link());
-            format!("{}{id}", balancing_letter(lang, false))
-        }
-    }
+    super::force_notation::force(&an.mech, loads, f, lang)
+        .map_or_else(|| "?".into(), |l| super::force_notation::plain(&l))
 }
 
 /// M_b / F_b in the language's notation (uk: зр, ru: ур).

@@ -30,9 +30,7 @@ const SHORTEST: f64 = 1.5;
 /// The sheet's words.
 pub(crate) struct LeverWords {
     pub title: &'static str,
-    /// The subscript of an inertia force (F_in2), of the balancing force
-    /// and moment (F_b, M_b).
-    inertia: &'static str,
+    /// The subscript of the balancing force and moment (F_b, M_b).
     balancing: &'static str,
     turned: &'static str,
     heads: [&'static str; 4],
@@ -44,7 +42,6 @@ pub(crate) fn words(lang: Lang) -> LeverWords {
     match lang {
         Lang::En => LeverWords {
             title: "Zhukovsky's lever",
-            inertia: "in",
             balancing: "b",
             turned: "the plan of velocities turned by 90° ↺ about the pole p",
             heads: ["force", "F, N", "h, mm", "F·h, N·mm"],
@@ -53,7 +50,6 @@ pub(crate) fn words(lang: Lang) -> LeverWords {
         },
         Lang::Uk => LeverWords {
             title: "Важіль Жуковського",
-            inertia: "ін",
             balancing: "зр",
             turned: "план швидкостей, повернутий на 90° ↺ навколо полюса p",
             heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
@@ -62,7 +58,6 @@ pub(crate) fn words(lang: Lang) -> LeverWords {
         },
         Lang::Ru => LeverWords {
             title: "Рычаг Жуковского",
-            inertia: "ин",
             balancing: "ур",
             turned: "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
             heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
@@ -81,13 +76,14 @@ fn unit(u: &str, lang: Lang) -> String {
     }
 }
 
-/// The name of a force on the lever in the lecture's notation: F_in2,
+/// The name of a force on the lever in the course's notation, as the
+/// force sheets write it (`presentation::force_notation`): Φ2 (inertia),
 /// G2, F_M2 (a couple's pair), F5 (an external force on link 5).
-fn name(an: &Analysis, f: &LeverForce, w: &LeverWords) -> String {
+fn name(an: &Analysis, f: &LeverForce) -> String {
     let link = an.mech.link_id(f.link);
     match (f.part, f.origin) {
         (Part::Couple { .. }, _) => format!("F_M{link}"),
-        (Part::Force, Origin::Inertia) => format!("F_{}{link}", w.inertia),
+        (Part::Force, Origin::Inertia) => format!("Φ_{link}"),
         (Part::Force, Origin::Gravity) => format!("G_{link}"),
         (Part::Force, Origin::External) => format!("F_{link}"),
     }
@@ -219,7 +215,7 @@ pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
         force(c, (l.at_b, fb), mu_f, label, &mut feet, lang);
     }
     for f in &l.forces {
-        let label = label_of(&name(an, f, &w));
+        let label = label_of(&name(an, f));
         force(c, (f.at, f.f), mu_f, label, &mut feet, lang);
     }
     // The points, labelled as on the plan (points at one place share one
@@ -328,7 +324,7 @@ pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
         .map(|f| {
             let at = f.point.map(|p| an.mech.point_name(p)).unwrap_or("·");
             vec![
-                format!("{} ({at})", name(an, f, &w)),
+                format!("{} ({at})", name(an, f)),
                 number(f.f.hypot(), lang),
                 number(f.arm, lang),
                 number(f.moment, lang),
