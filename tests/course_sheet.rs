@@ -258,3 +258,83 @@ fn slides_keep_their_names_in_the_results_table() {
         "a split row"
     );
 }
+
+/// The course's second sheet (force analysis) of every dynamics fixture on
+/// A1 and A2: its figures inside the frame, apart, off the title block; the
+/// force panels, the lever, its table and the table of reactions present;
+/// the balancing moment the same by the three routes in that table; none
+/// for a scene without `dynamics`.
+#[test]
+fn force_course_sheets_pass_the_layout_checks() {
+    for name in [
+        "six_link_fig2_10",
+        "shaper_fig2_11",
+        "compressor_fig2_12",
+        "worked_slider_crank",
+    ] {
+        let path = format!(
+            "{}/fixtures/dynamics/{name}.json",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let text = std::fs::read_to_string(path).unwrap();
+        let (an, solved) = solve(mechplan::Scene::from_json(&text).unwrap());
+        for size in [SheetSize::A1, SheetSize::A2] {
+            let opt = DrawOptions {
+                sheet: size,
+                course: true,
+                ..DrawOptions::default()
+            };
+            let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &opt, &[size]).unwrap();
+            let s = sh
+                .iter()
+                .find(|s| s.name == "course_forces")
+                .unwrap_or_else(|| panic!("{name}: no force analysis sheet"));
+            let at = format!("{name} {size:?}");
+            let (w, h) = size.mm();
+            let frame = kurbo::Rect::new(20.0, 5.0, w - 5.0, h - 5.0);
+            let block = kurbo::Rect::new(frame.x1 - 185.0, frame.y1 - 55.0, frame.x1, frame.y1);
+            let figs = figures(&s.svg);
+            assert!(figs.len() >= 4, "{at}: {} figures", figs.len());
+            for (i, (a, ra)) in figs.iter().enumerate() {
+                assert!(
+                    frame.inset(-1.0).contains(ra.origin())
+                        && frame.inset(-1.0).contains(kurbo::Point::new(ra.x1, ra.y1)),
+                    "{at}: {a} {ra:?} leaves the frame"
+                );
+                assert!(
+                    ra.intersect(block).area() == 0.0,
+                    "{at}: {a} overlaps the title block"
+                );
+                for (b, rb) in &figs[i + 1..] {
+                    assert!(ra.intersect(*rb).area() == 0.0, "{at}: {a} and {b} overlap");
+                }
+            }
+            let all: Vec<String> = texts(&s.svg).into_iter().map(|(_, t)| t).collect();
+            for want in [
+                "Force analysis, position",
+                "Zhukovsky's lever",
+                "The forces on the lever",
+                "Reactions and the balancing moment",
+            ] {
+                assert!(all.iter().any(|t| t.contains(want)), "{at}: no \"{want}\"");
+            }
+            // The balancing moment's row: the same three digits thrice.
+            let k = all
+                .iter()
+                .position(|t| t.starts_with("Mb, ") || t.starts_with("M_b, "))
+                .unwrap_or_else(|| panic!("{at}: no M_b row in {all:?}"));
+            let row: Vec<&String> = all[k + 1..k + 5].iter().collect();
+            assert_eq!(row[0], row[2], "{at}: {row:?}");
+            assert_eq!(row[0], row[3], "{at}: {row:?}");
+            title_block(&s.svg, frame, &at);
+        }
+    }
+    let (an, solved) =
+        solve(mechplan::Scene::from_json(&fixture("six_link_fig2_10").to_string()).unwrap());
+    let opt = DrawOptions {
+        course: true,
+        ..DrawOptions::default()
+    };
+    let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &opt, &[SheetSize::A1]).unwrap();
+    assert!(sh.iter().all(|s| s.name != "course_forces"));
+}

@@ -113,6 +113,19 @@ cp "$tmp/lever6/lever_10.png" "$out/lever_six_link_fig2_10.png"
   echo "![the lever of the six-link at position 10](lever_six_link_fig2_10.png)"
   echo
 } >> "$index.tmp"
+# The course's second sheet, the force analysis (draw --course with a
+# dynamics scene): the six-link (en) and the shaper (uk).
+./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json --course -o "$tmp/cf6" --format png --dpi 100 > /dev/null
+./target/release/mechplan draw fixtures/dynamics/shaper_fig2_11.json --course --lang uk -o "$tmp/cfs" --format png --dpi 100 > /dev/null
+cp "$tmp/cf6/course_forces.png" "$out/course_forces_six_link_fig2_10.png"
+cp "$tmp/cfs/course_forces.png" "$out/course_forces_shaper_fig2_11_uk.png"
+{
+  echo "## The course's force analysis sheet"
+  echo
+  echo "![the six-link's force analysis sheet](course_forces_six_link_fig2_10.png)"
+  echo "![the shaper's force analysis sheet, uk](course_forces_shaper_fig2_11_uk.png)"
+  echo
+} >> "$index.tmp"
 # The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
 # every dynamics fixture, the six-link's position 2 in Ukrainian too.
 bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"

@@ -271,7 +271,13 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
         page.push("</g>\n");
     }
     let title = w.course.to_string();
-    page.title_block(&super::title_block(an, opt, &title, (1, 1)));
+    // Sheet 1 of 2 when the force analysis sheet follows.
+    let sheets = if super::course_forces::position_has_forces(an, solved) {
+        2
+    } else {
+        1
+    };
+    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
     let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
     Ok(Sheet {
         name: "course".into(),
@@ -284,7 +290,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
 
 /// The field of the course sheet: inside the frame, with no heading band
 /// (the sheet's name is in the title block).
-fn field_of(size: SheetSize) -> Rect {
+pub(super) fn field_of(size: SheetSize) -> Rect {
     let f = sheet::frame(size);
     f.inset(-sheet::PAD)
 }

@@ -220,9 +220,9 @@ pub fn figure(
                 .fold(f64::INFINITY, f64::min)
         };
         if let Some((mu, cs)) = fit {
-            let better = best.as_ref().is_none_or(|b| {
-                mu < b.1 || (mu == b.1 && room(&layout, &cs) > room(&b.0, &b.2))
-            });
+            let better = best
+                .as_ref()
+                .is_none_or(|b| mu < b.1 || (mu == b.1 && room(&layout, &cs) > room(&b.0, &b.2)));
             if better {
                 best = Some((layout, mu, cs));
             }

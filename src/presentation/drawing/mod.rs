@@ -13,6 +13,7 @@
 pub mod canvas;
 pub mod centres;
 pub mod course;
+mod course_forces;
 pub mod cylinder;
 pub mod diagram;
 pub mod export;
@@ -541,6 +542,9 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
     let mut sheets = Vec::new();
     if opt.course || asked(an, solved, "course") {
         sheets.push(course::sheet(an, solved, opt)?);
+        if let Some(f) = course_forces::sheet(an, solved, opt)? {
+            sheets.push(f);
+        }
     }
     let n = out.len();
     let lead = sheets.len();

@@ -1,0 +1,310 @@
+//! The course's second sheet: the force analysis of one position (A1, or
+//! A2) — every group cut out with its forces and its force polygon, the
+//! input link with the balancing moment, Zhukovsky's lever with its table,
+//! the reactions and the balancing moment by each route in one table, and
+//! the main title block (sheet 2 of 2, the kinematic sheet being 1).
+//!
+//! The position is the one a course project analyses: the first of
+//! `want.plans_at.acceleration` after the start of the working stroke (by
+//! default the middle of the working stroke, where the working resistance
+//! acts), else position 1. The figures are drawn to fill target boxes (the
+//! force panels most of the field, the lever a third) and packed around
+//! the title block as on the kinematic sheet; the boxes shrink together
+//! until everything packs.
+
+use super::canvas::Canvas;
+use super::course::{self, chosen};
+use super::sheet::{self, Page};
+use super::table::{Ruled, number};
+use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
+use crate::error::Result;
+use crate::kinematics::construction::Naming;
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinetostatics::Balancing;
+use crate::kinetostatics::lever::lever_at;
+use kurbo::Point;
+
+/// The caption's line height and font size, mm.
+const CAPTION: f64 = 6.0;
+const CAPTION_FONT: f64 = 3.5;
+
+/// The sheet's name in the title block.
+pub fn title(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "Force analysis of the mechanism",
+        Lang::Uk => "Силовий аналіз механізму",
+        Lang::Ru => "Силовой анализ механизма",
+    }
+}
+
+/// The position the sheet analyses (from 0); see the module's comment.
+pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
+    let (_, acc) = chosen(an, solved);
+    acc.iter()
+        .copied()
+        .find(|&k| k > 1)
+        .or(acc.first().copied())
+        .unwrap_or(1)
+        .clamp(1, solved.len().max(1))
+        - 1
+}
+
+/// A figure: caption lines over a drawing.
+struct Figure {
+    caption: Vec<String>,
+    canvas: Canvas,
+}
+
+impl Figure {
+    fn size(&self) -> (f64, f64) {
+        let b = self.canvas.bounds();
+        let cw = self
+            .caption
+            .iter()
+            .map(|c| {
+                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
+            })
+            .fold(0.0, f64::max);
+        (
+            b.width().max(cw),
+            b.height() + CAPTION * self.caption.len() as f64 + 2.0,
+        )
+    }
+}
+
+/// The reactions and the balancing moment (force) of position `s` by each
+/// route: the links' equilibrium, the force plans, the lever.
+fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
+    let d = s.dynamics.as_ref()?;
+    let m = &an.mech;
+    let (pair, value, angle, plans, lever) = match lang {
+        Lang::En => ("pair", "equilibrium", "angle, °", "force plans", "lever"),
+        Lang::Uk => ("пара", "рівновага", "кут, °", "плани сил", "важіль"),
+        Lang::Ru => ("пара", "равновесие", "угол, °", "планы сил", "рычаг"),
+    };
+    let head = vec![
+        pair.into(),
+        value.into(),
+        angle.into(),
+        plans.into(),
+        lever.into(),
+    ];
+    let deg = |v: kurbo::Vec2| number((v.y.atan2(v.x).to_degrees() * 10.0).round() / 10.0, lang);
+    let n3 = |x: f64| number(round3(x), lang);
+    let fp = d.force_plans.as_ref();
+    let newton = if lang == Lang::En { "N" } else { "Н" };
+    let mut rows = Vec::new();
+    for (i, r) in d.revolutes.iter().enumerate() {
+        let name = format!(
+            "R{}, {}",
+            super::super::force_notation::pair_sub(m.link_id(r.first), m.link_id(r.second)),
+            m.point_name(r.point)
+        );
+        let by_plan = fp
+            .and_then(|f| f.revolute[i])
+            .map_or("—".into(), |v| n3(v.hypot()));
+        rows.push(vec![
+            format!("{name}, {newton}"),
+            n3(r.r.hypot()),
+            deg(r.r),
+            by_plan,
+            "—".into(),
+        ]);
+    }
+    for (i, p) in d.prismatics.iter().enumerate() {
+        let name = format!(
+            "R{} ⊥",
+            super::super::force_notation::pair_sub(m.link_id(p.guide), m.link_id(p.slider))
+        );
+        let by_plan = fp
+            .and_then(|f| f.prismatic[i])
+            .map_or("—".into(), |v| n3(v.0.abs()));
+        rows.push(vec![
+            format!("{name}, {newton}"),
+            n3(p.n.hypot()),
+            deg(p.n),
+            by_plan,
+            "—".into(),
+        ]);
+    }
+    for (i, b) in d.balancing.iter().enumerate() {
+        let sub = super::super::force_notation::balancing_sub(lang);
+        let (name, unit) = match b {
+            Balancing::Moment(_) => (
+                format!("M_{sub}"),
+                if lang == Lang::En { "N·m" } else { "Н·м" },
+            ),
+            Balancing::Force(_) => (format!("F_{sub}"), if lang == Lang::En { "N" } else { "Н" }),
+        };
+        let by_plan = fp.and_then(|f| f.drives[i]).map_or("—".into(), n3);
+        let lever = d.lever.get(i).map_or("—".into(), |v| n3(*v));
+        rows.push(vec![
+            format!("{name}, {unit}"),
+            n3(b.value()),
+            "—".into(),
+            by_plan,
+            lever,
+        ]);
+    }
+    Some(Ruled { head, rows })
+}
+
+/// Three significant digits, as a course project's table gives them.
+fn round3(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let p = 10f64.powi(2 - x.abs().log10().floor() as i32);
+    (x * p).round() / p
+}
+
+/// The figures of position `k` with the force panels in a box of
+/// `panels` mm and the lever in one of `lever_box` mm.
+fn figures(
+    an: &Analysis,
+    s: &Solved,
+    k: usize,
+    opt: &DrawOptions,
+    (panels, lever_box): ((f64, f64), (f64, f64)),
+) -> Result<Vec<Figure>> {
+    let lang = opt.lang;
+    let pos = super::position_text(an, s, k, lang);
+    let mut out = Vec::new();
+    if let Some(f) = forces::figure(an, s, k, opt, panels) {
+        out.push(Figure {
+            caption: vec![
+                format!("{}, {pos}", forces::title(lang)),
+                super::scale_text("l", f.mu_l, "m", lang),
+            ],
+            canvas: f.canvas,
+        });
+    }
+    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let w = lever::words(lang);
+    for input in 0..an.mech.scene.input_count() {
+        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let draw = |l: &crate::kinetostatics::lever::Lever| {
+            let mu_f = lever::force_scale(l);
+            let mut c = Canvas::default();
+            lever::draw(an, l, &mut c, mu_f, lang);
+            c
+        };
+        let e = first.plan.points.iter().fold(kurbo::Rect::ZERO, |r, p| {
+            r.union_pt(Point::new(-p.at.y, p.at.x))
+        });
+        let lower = lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, lever_box);
+        let rebuild = |mu: f64| {
+            let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+            let c = draw(&l);
+            Some((l, c))
+        };
+        let (l, c) = fill(lower, lever_box, rebuild, |(_, c)| c.bounds())
+            .map(|(_, x)| x)
+            .unwrap_or_else(|| {
+                let c = draw(&first);
+                (first, c)
+            });
+        let mut caption = vec![w.title.to_string()];
+        caption.extend(lever::caption(an, &l, lever::force_scale(&l), lang));
+        out.push(Figure { caption, canvas: c });
+        let forces_on = match lang {
+            Lang::En => "The forces on the lever",
+            Lang::Uk => "Сили на важелі",
+            Lang::Ru => "Силы на рычаге",
+        };
+        out.push(Figure {
+            caption: vec![forces_on.to_string()],
+            canvas: lever::table(an, &l, lang).draw(),
+        });
+    }
+    if let Some(t) = results(an, s, lang) {
+        let head = match lang {
+            Lang::En => "Reactions and the balancing moment",
+            Lang::Uk => "Реакції та зрівноважувальний момент",
+            Lang::Ru => "Реакции и уравновешивающий момент",
+        };
+        out.push(Figure {
+            caption: vec![head.into()],
+            canvas: t.draw(),
+        });
+    }
+    Ok(out)
+}
+
+/// Whether the second sheet is drawn: the analysed position has force
+/// plans.
+pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
+    !solved.is_empty()
+        && solved[position(an, solved)]
+            .dynamics
+            .as_ref()
+            .is_some_and(|d| d.force_plans.is_some())
+}
+
+/// The second course sheet; `None` without force plans.
+pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
+    if solved.is_empty() {
+        return Ok(None);
+    }
+    let k = position(an, solved);
+    let s = &solved[k];
+    if s.dynamics
+        .as_ref()
+        .and_then(|d| d.force_plans.as_ref())
+        .is_none()
+    {
+        return Ok(None);
+    }
+    let size = course::size(opt);
+    let field = course::field_of(size);
+    let block = sheet::block(size);
+    let (fw, fh) = (field.width(), field.height());
+    // The boxes shrink together until the figures pack.
+    let mut placed = None;
+    for zoom in [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4] {
+        let panels = (0.6 * fw * zoom, (fh - 3.0 * CAPTION) * zoom);
+        let lever_box = (0.36 * fw * zoom, 0.45 * fh * zoom);
+        let figs = figures(an, s, k, opt, (panels, lever_box))?;
+        let sizes: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
+        if let Some(at) = course::pack(&sizes, field, block) {
+            placed = Some(figs.into_iter().zip(at).collect::<Vec<_>>());
+            break;
+        }
+    }
+    let placed = placed.ok_or_else(|| {
+        crate::Error::Internal(format!(
+            "the force analysis sheet's figures do not pack on {size:?}"
+        ))
+    })?;
+    let mut page = Page::new(size);
+    for (i, (f, at)) in placed.iter().enumerate() {
+        let (fw, _) = f.size();
+        let b = f.canvas.bounds();
+        page.push(&format!("<g class=\"figure\" id=\"fig-forces-{i}\">\n"));
+        let mut cap = Canvas::default();
+        for (j, t) in f.caption.iter().enumerate() {
+            cap.rich(
+                Point::new(fw / 2.0, -CAPTION * (j as f64 + 1.0) + 1.5),
+                t,
+                CAPTION_FONT,
+                "caption",
+                "middle",
+            );
+        }
+        page.write_canvas(&cap, at.x, at.y);
+        let top = at.y + CAPTION * f.caption.len() as f64 + 2.0;
+        let ox = at.x + (fw - b.width()) / 2.0 - b.x0;
+        page.write_canvas(&f.canvas, ox, top + b.y1);
+        page.push("</g>\n");
+    }
+    let name = title(opt.lang);
+    page.title_block(&super::title_block(an, opt, name, (2, 2)));
+    Ok(Some(Sheet {
+        name: "course_forces".into(),
+        title: name.into(),
+        size,
+        scales: Vec::new(),
+        svg: page.finish(),
+    }))
+}
