@@ -329,3 +329,36 @@ fn force_steps_read_off_the_reactions() {
         }
     }
 }
+
+/// The steps end each position with Zhukovsky's lever, whose M_b (read
+/// from the text in each language) is the links' equilibrium's.
+#[test]
+fn force_steps_end_with_the_lever() {
+    use mechplan::construction::text::Lang;
+    for name in ["worked_slider_crank", "six_link_fig2_10", "shaper_fig2_11"] {
+        let (an, solved) = solved(name);
+        for (lang, key) in [
+            (Lang::En, "M_b = F_b"),
+            (Lang::Uk, "M_зр = F_зр"),
+            (Lang::Ru, "M_ур = F_ур"),
+        ] {
+            let text = mechplan::report::to_steps(&an, &solved, lang);
+            let lines: Vec<&str> = text.lines().filter(|l| l.contains(key)).collect();
+            assert_eq!(lines.len(), solved.len(), "{name} {lang:?}");
+            for (line, s) in lines.iter().zip(&solved) {
+                let value: f64 = line
+                    .rsplit(" = ")
+                    .next()
+                    .and_then(|v| v.split_whitespace().next())
+                    .map(|v| v.replace('−', "-"))
+                    .and_then(|v| v.parse().ok())
+                    .unwrap_or_else(|| panic!("{line}"));
+                let mb = s.dynamics.as_ref().unwrap().balancing[0].value();
+                assert!(
+                    (value - mb).abs() <= 1e-3 * mb.abs().max(1e-3),
+                    "{name} {lang:?}: {line} vs {mb}"
+                );
+            }
+        }
+    }
+}

@@ -89,7 +89,71 @@ pub fn force_steps(an: &Analysis, s: &Solved, k: usize, input: &str, lang: Lang)
     for plan in &fp.plans {
         plan_words(an, &loads, plan, lang, &mut t);
     }
+    lever_words(an, s, &loads, lang, &mut t);
     t
+}
+
+/// A decimal comma between digits (the sheets' Ukrainian and Russian
+/// numbers) as the steps' decimal point, so that one text writes one way.
+fn points(s: &str) -> String {
+    let c: Vec<char> = s.chars().collect();
+    (0..c.len())
+        .map(|i| {
+            let digit = |j: Option<&char>| j.is_some_and(|c| c.is_ascii_digit());
+            if c[i] == ',' && i > 0 && digit(c.get(i - 1)) && digit(c.get(i + 1)) {
+                '.'
+            } else {
+                c[i]
+            }
+        })
+        .collect()
+}
+
+/// Zhukovsky's lever of every input: each force's arm on the turned plan
+/// and its moment about the pole, then ΣM_p = 0 solved for the balancing
+/// force and moment (the lever sheet's table and caption, in words).
+fn lever_words(an: &Analysis, s: &Solved, loads: &[Load], lang: Lang, t: &mut String) {
+    use crate::kinematics::construction::Naming;
+    use crate::presentation::drawing::lever as sheet;
+    let Ok(levers) = crate::kinetostatics::lever::levers(an, s, loads, Naming::Full) else {
+        return;
+    };
+    let (head, arm) = match lang {
+        Lang::En => ("Zhukovsky's lever", "arm"),
+        Lang::Uk => ("Важіль Жуковського", "плече"),
+        Lang::Ru => ("Рычаг Жуковского", "плечо"),
+    };
+    for l in &levers {
+        let mu_f = sheet::force_scale(l);
+        let caption = sheet::caption(an, l, mu_f, lang);
+        let _ = writeln!(t, "  {head}: {}.", points(&caption[0]));
+        let table = sheet::table(an, l, lang);
+        let mut n = 0;
+        for row in &table.rows {
+            n += 1;
+            let row: Vec<String> = row.iter().map(|c| points(c)).collect();
+            let _ = writeln!(
+                t,
+                "{n:>5}. {} = {} {}, {arm} h = {} {}: {}·h = {} {}.",
+                row[0],
+                row[1],
+                if lang == Lang::En { "N" } else { "Н" },
+                row[2],
+                if lang == Lang::En { "mm" } else { "мм" },
+                row[0].split(' ').next().unwrap_or(""),
+                row[3],
+                if lang == Lang::En {
+                    "N·mm"
+                } else {
+                    "Н·мм"
+                },
+            );
+        }
+        for line in &caption[1..] {
+            n += 1;
+            let _ = writeln!(t, "{n:>5}. {}.", points(line));
+        }
+    }
 }
 
 fn plan_words(an: &Analysis, loads: &[Load], plan: &ForcePlan, lang: Lang, t: &mut String) {

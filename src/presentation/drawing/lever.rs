@@ -258,7 +258,7 @@ pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
 }
 
 /// The caption: the scales, and Σ M_p = 0 solved with numbers.
-pub(super) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<String> {
+pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<String> {
     let w = words(lang);
     let n = |x: f64| number(x, lang);
     let u = |s: &str| unit(s, lang);
