@@ -83,7 +83,9 @@ fn command(c: Command) -> Result<u8, Error> {
             plan,
             position,
         } => {
-            if let Some(status) = check_forces(&scene, &answer, (format, &svg, delta, position))? {
+            if let Some(status) =
+                check_forces(&scene, &answer, (format, &svg, delta, position), (mu, plan))?
+            {
                 return Ok(status);
             }
             let r = Reading {
@@ -193,6 +195,7 @@ fn check_forces(
         Option<f64>,
         Option<usize>,
     ),
+    (mu, plan): (Option<f64>, Option<mechplan::construction::PlanKind>),
 ) -> Result<Option<u8>, Error> {
     use mechplan::check::forces;
     let name = answer.display().to_string();
@@ -224,6 +227,21 @@ fn check_forces(
             ));
         }
         ans.delta = d;
+    }
+    if plan.is_some() {
+        return Err(Error::scene(
+            "plan",
+            "the answer is a force plan (\"plan\": \"force\"): --plan names a plan of velocities or accelerations",
+        ));
+    }
+    if let Some(m) = mu {
+        if !(m.is_finite() && (1e-6..=1e9).contains(&m)) {
+            return Err(Error::scene(
+                "mu",
+                "μ_F must be a number of N/mm between 1e-6 and 1e9",
+            ));
+        }
+        ans.mu = m;
     }
     if svg.is_some() {
         return Err(Error::scene(
@@ -274,6 +292,9 @@ fn finish(result: Result<u8, Error>) -> ExitCode {
                 "min-time",
                 "count",
                 "delta",
+                "mu",
+                "plan",
+                "svg",
             ];
             if options.contains(&i.pointer.as_str()) {
                 let dash = if i.pointer == "n" { "-" } else { "--" };

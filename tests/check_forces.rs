@@ -244,3 +244,98 @@ fn the_command_answers_with_its_statuses() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("nothing to check"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The review of 2026-11-24: a scale no drawing has is refused, never
+/// judged (it was "right" with a NaN); the weights-left-out plan names its
+/// forces by the same loads (it was diagnosed from an external force); a
+/// driving slider's F_b takes the polygon's tolerance in N at the
+/// student's μ_F, without μ_l; `--mu` applies and `--plan` is refused.
+#[test]
+fn review_findings_stay_fixed() {
+    let (an, solved) = solved();
+    for mu in ["1e-310", "1e300", "0"] {
+        let text =
+            format!(r#"{{"plan":"force","links":["4","5"],"mu":{mu},"segments":{{"R_34":5}}}}"#);
+        let e = from_json(&text).unwrap_err().to_string();
+        assert!(e.contains("/mu"), "{mu}: {e}");
+    }
+    // Link 1 without mass: G_2 = 2000 N is not what leaving the weights
+    // out gives (F_3 = 2000 N is).
+    let path = format!(
+        "{}/fixtures/dynamics/worked_slider_crank.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["dynamics"]["links"].as_object_mut().unwrap().remove("1");
+    let w = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    let ws = w.run().unwrap();
+    let ans = from_json(
+        r#"{"plan":"force","position":1,"links":["2","3"],"mu":20,"values":{"G_2":2000}}"#,
+    )
+    .unwrap();
+    let r = check(&w, &ws, &ans).unwrap();
+    assert_eq!(r.wrong(), 1);
+    assert!(
+        r.diagnosis
+            .as_deref()
+            .is_none_or(|d| !d.contains("weights")),
+        "{:?}",
+        r.diagnosis
+    );
+    // A driving slider: F_b's tolerance grows with μ_F and needs no μ_l.
+    let path = format!(
+        "{}/fixtures/slider_driven_rocker.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["dynamics"] = serde_json::json!({
+        "g": [0, -9.81],
+        "links": { "1": { "m": 2, "J": 0, "centre": "A" }, "2": { "m": 1, "J": 0.01, "centre": "A" }, "3": { "m": 1, "J": 0.01, "centre": "B" } },
+        "moments": [ { "link": "3", "M": 5 } ]
+    });
+    let sa = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    let ss = sa.run().unwrap();
+    let fb = ss[0].dynamics.as_ref().unwrap().balancing[0].value();
+    let tol = |mu: f64| {
+        let text = format!(r#"{{"plan":"force","links":["1"],"mu":{mu},"values":{{"F_b":{fb}}}}}"#);
+        let r = check(&sa, &ss, &from_json(&text).unwrap()).unwrap();
+        assert_eq!(r.wrong(), 0);
+        r.verdicts[0].tolerance
+    };
+    let (fine, coarse) = (tol(0.1), tol(10.0));
+    assert!(coarse > 50.0 * fine, "{fine} {coarse}");
+    let _ = an;
+    let _ = solved;
+}
+
+#[test]
+fn command_line_mu_applies_and_plan_is_refused() {
+    let dir =
+        std::env::temp_dir().join(format!("mechplan_check_forces_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("a.json");
+    std::fs::write(
+        &p,
+        r#"{"plan":"force","position":1,"links":["4","5"],"mu":20,"segments":{"R_34":5}}"#,
+    )
+    .unwrap();
+    let run = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &scene_path(), p.to_str().unwrap()])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let out = run(&["--mu", "5"]);
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("μ_F = 5 N/mm"),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let out = run(&["--plan", "acceleration"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--plan"));
+    std::fs::remove_dir_all(&dir).ok();
+}

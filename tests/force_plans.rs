@@ -362,3 +362,21 @@ fn force_steps_end_with_the_lever() {
         }
     }
 }
+
+/// A dead centre without gravity, off the axes (the worked slider-crank
+/// turned by 30°): the power's terms vanish, and the routes' rounding
+/// (1e-14 N·m) must not read as a disagreement; M_b is zero there. (It
+/// was refused as singular: review of 2026-11-24.)
+#[test]
+fn a_dead_centre_without_gravity_is_solved() {
+    let scene = r#"{"mechplan": 1, "points": {"O": [0, 0], "A": [0.08660254037844388, 0.049999999999999996], "B": [0.43301270189221935, 0.24999999999999997], "S2": [0.2598076211353316, 0.14999999999999997]}, "links": {"0": {"points": ["O"]}, "1": {"points": ["O", "A"]}, "2": {"points": ["A", "B", "S2"]}, "3": {"points": ["B"]}}, "sliders": [{"slider": "3", "guide": "0", "point": "B", "line": {"through": "O", "angle": 30}}], "lengths": {"O-A": 0.1, "A-B": 0.4, "A-S2": 0.2, "B-S2": 0.2}, "input": {"link": "1", "pivot": "O", "angle": 30, "omega": 100}, "dynamics": {"links": {"1": {"m": 1, "J": 0.005, "centre": "O"}, "2": {"m": 2, "J": 0.03, "centre": "S2"}, "3": {"m": 3, "J": 0, "centre": "B"}}, "forces": [{"link": "3", "point": "B", "F": [1732.050808, 1000]}]}}"#;
+    let an = Analysis::new(Scene::from_json(scene).unwrap()).unwrap();
+    let solved = an.run().unwrap();
+    let d = solved[0].dynamics.as_ref().unwrap();
+    let mb = d.balancing[0].value();
+    assert!(
+        mb.abs() <= 1e-9 * d.force_scale * an.mech.size,
+        "M_b = {mb}"
+    );
+    assert!(d.balancing_diff <= 1e-3, "{}", d.balancing_diff);
+}

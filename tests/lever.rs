@@ -116,7 +116,7 @@ fn wrong_sign_of_an_inertia_force_does_not_balance() {
         for (k, s) in solved(&an).iter().enumerate() {
             let d = s.dynamics.as_ref().unwrap();
             let loads = loads::loads(&an, s, k);
-            assert!(lever::check(&an, s, &loads, &d.balancing).is_ok());
+            assert!(lever::check(&an, s, &loads, &d.balancing, &[0.0; 2]).is_ok());
             let good = lever::levers(&an, s, &loads, Naming::NumbersOnly).unwrap();
             for l in &good {
                 let Some(f) = l
@@ -146,7 +146,7 @@ fn wrong_sign_of_an_inertia_force_does_not_balance() {
                     .map(|f| f.moment.abs())
                     .fold(0.0, f64::max);
                 assert!(sum.abs() > 1e-3 * largest, "{name} {k}: {sum} of {largest}");
-                assert!(lever::check(&an, s, &wrong, &d.balancing).is_err());
+                assert!(lever::check(&an, s, &wrong, &d.balancing, &[0.0; 2]).is_err());
                 caught += 1;
             }
         }

@@ -562,6 +562,14 @@ fn numbers_only_plans_equal_full_plans() {
                     }
                     assert_eq!(format!("{:?}", f.rates), format!("{:?}", k.rates));
                     assert_eq!(f.points.len(), k.points.len());
+                    assert_eq!(f.of_point, k.of_point);
+                    let measured = |p: &Plan| -> Vec<(f64, f64, f64)> {
+                        p.measured
+                            .iter()
+                            .map(|m| (m.mm, m.value, m.bound))
+                            .collect()
+                    };
+                    assert_eq!(measured(f), measured(k), "{name} at {}", s.q);
                 } else {
                     other_scale.push(format!("{name} at {}: {} for {}", s.q, k.mu, f.mu));
                     let field = mechplan::construction::Field::default();

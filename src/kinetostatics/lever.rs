@@ -451,14 +451,17 @@ pub fn check(
     s: &Solved,
     loads: &[Load],
     by_links: &[Balancing],
+    floors: &[f64],
 ) -> Result<Vec<f64>> {
     let levers = levers(an, s, loads, Naming::NumbersOnly)?;
-    for (l, b) in levers.iter().zip(by_links) {
+    for ((l, b), &floor) in levers.iter().zip(by_links).zip(floors) {
         let d = (l.value() - b.value()).abs();
+        // Against the lever's moments, never less than `floor` (a dead
+        // centre without gravity has none).
         let rel = if d == 0.0 {
             0.0
         } else {
-            d / l.scale.max(f64::MIN_POSITIVE)
+            d / l.scale.max(floor).max(f64::MIN_POSITIVE)
         };
         if rel.is_nan() || rel > ACCURACY.max_balancing_diff {
             return Err(Error::singular(

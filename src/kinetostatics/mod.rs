@@ -190,13 +190,28 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
             }
         })
         .collect();
+    // Each balancing value's disagreements are measured against the size
+    // of the terms it is summed from, but never against less than a
+    // ten-billionth of the position's largest force (times the
+    // mechanism's size for a moment): at a dead centre without gravity
+    // the terms vanish and rounding alone would read as a disagreement.
+    let floors: Vec<f64> = m
+        .scene
+        .inputs()
+        .map(|i| 1e-10 * scale * if i.is_crank() { size } else { 1.0 })
+        .collect();
     let mut diff: f64 = 0.0;
-    for ((b, &v), &sc) in balancing.iter().zip(&vp.balancing).zip(&vp.scale) {
+    for (((b, &v), &sc), &floor) in balancing
+        .iter()
+        .zip(&vp.balancing)
+        .zip(&vp.scale)
+        .zip(&floors)
+    {
         let d = (b.value() - v).abs();
         let rel = if d == 0.0 {
             0.0
         } else {
-            d / sc.max(f64::MIN_POSITIVE)
+            d / sc.max(floor).max(f64::MIN_POSITIVE)
         };
         diff = diff.max(rel);
     }
@@ -215,7 +230,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         Some((p, d)) => (Some(p), Some(d)),
         None => (None, None),
     };
-    let lever = lever::check(an, s, &loads, &balancing)?;
+    let lever = lever::check(an, s, &loads, &balancing, &floors)?;
     Ok(Some(Dynamics {
         force_plans,
         force_plans_diff,

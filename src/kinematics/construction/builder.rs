@@ -141,11 +141,12 @@ impl<'a> Builder<'a> {
     /// Take a step: counted always, recorded for the naming pass only
     /// when the build narrates (a probe or a numbers-only build would only
     /// pay for the record).
+    /// (The act is made only when it is recorded.)
     #[inline]
-    pub fn step(&mut self, act: Act) {
+    pub fn step(&mut self, act: impl FnOnce() -> Act) {
         self.taken += 1;
         if self.record {
-            self.acts.push(act);
+            self.acts.push(act());
         }
     }
     #[inline]
@@ -183,7 +184,6 @@ impl<'a> Builder<'a> {
             label: (String::new(), String::new()),
             at,
             err,
-            figure: String::new(),
         });
         self.plan.points.len() - 1
     }
@@ -234,7 +234,7 @@ impl<'a> Builder<'a> {
         let at = self.plan.points[from].at + v / self.plan.mu + self.pencil();
         let err = self.plan.points[from].err + self.plan.delta + value_err / self.plan.mu;
         let to = self.add_point(id, at, err);
-        self.step(Act::LayOff {
+        self.step(|| Act::LayOff {
             from,
             to,
             what,
@@ -344,7 +344,7 @@ impl<'a> Builder<'a> {
         let err = a.err.hypot(b.err) / sin_angle;
         let out = self.add_point(id, at.to_vec2(), err);
         self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
-        self.step(Act::Intersect {
+        self.step(|| Act::Intersect {
             lines: [a, b],
             out,
             sin_angle,
@@ -395,7 +395,7 @@ impl<'a> Builder<'a> {
             value,
             bound: err,
         });
-        self.step(Act::Measure {
+        self.step(|| Act::Measure {
             from,
             to,
             value: rel.hypot(),
@@ -425,7 +425,7 @@ impl<'a> Builder<'a> {
     pub fn same_rate(&mut self, link: usize, from: usize) {
         self.plan.rates[link] = self.plan.rates[from];
         self.plan.rate_sense[link] = self.plan.rate_sense[from];
-        self.step(Act::Same {
+        self.step(|| Act::Same {
             link,
             from_link: from,
         });
@@ -436,7 +436,7 @@ impl<'a> Builder<'a> {
         let frame = m.frame();
         // The pole and the fixed points.
         self.add_point(PointId::Pole, Vec2::ZERO, 0.0);
-        self.step(Act::Pole);
+        self.step(|| Act::Pole);
         for &p in &m.links[frame].points {
             let x = self.world(frame, p);
             self.register(frame, x, 0);
@@ -512,10 +512,11 @@ impl<'a> Builder<'a> {
                 value: mm * self.plan.mu,
                 bound: (self.plan.points[i].err + self.plan.delta) * self.plan.mu,
             });
-            self.step(Act::Measure {
+            let value = mm * self.plan.mu;
+            self.step(|| Act::Measure {
                 from: 0,
                 to: i,
-                value: mm * self.plan.mu,
+                value,
                 reading: Reading::Point(p),
             });
         }

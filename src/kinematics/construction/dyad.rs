@@ -198,7 +198,7 @@ impl Builder<'_> {
                     r
                 }
             });
-            self.step(Act::Equation(Eqn::Pair(a, b)));
+            self.step(|| Act::Equation(Eqn::Pair(a, b)));
         } else if equations.is_some() {
             // The same step, counted, without building what only its
             // record would keep.

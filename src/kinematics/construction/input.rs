@@ -26,7 +26,7 @@ impl Builder<'_> {
                 let (omega, eps) = (Rate::Omega(link), Rate::Epsilon(link));
                 let idx = if self.vel_kind() {
                     self.plan.rates[link] = Some((rate, 0.0));
-                    self.step(Act::Equation(Eqn::CrankVelocity { a: an, o: on, link }));
+                    self.step(|| Act::Equation(Eqn::CrankVelocity { a: an, o: on, link }));
                     let sense = if self.making(Mistake::OmegaWrongSense) {
                         -1.0
                     } else {
@@ -50,7 +50,7 @@ impl Builder<'_> {
                         rate2 = w * w;
                     }
                     if rate2 != 0.0 {
-                        self.step(Act::Equation(Eqn::CrankAcceleration { a: an, o: on }));
+                        self.step(|| Act::Equation(Eqn::CrankAcceleration { a: an, o: on }));
                         let n = self.normal(0, -r * (w * w), link, (an, on), seg, 0.0);
                         let tangential = What::Component {
                             sup: 't',
@@ -67,7 +67,7 @@ impl Builder<'_> {
                             0.0,
                         )
                     } else {
-                        self.step(Act::Equation(Eqn::CrankNormal { a: an, o: on, link }));
+                        self.step(|| Act::Equation(Eqn::CrankNormal { a: an, o: on, link }));
                         let normal = What::Component {
                             sup: 'n',
                             x: an,
@@ -140,13 +140,16 @@ impl Builder<'_> {
         let sense = if placed == pr.slider { 1.0 } else { -1.0 };
         let u = self.c.pose(pr.guide).dir(pr.line_dir) * sense;
         let (xp, xk) = (name_of(placed), name_of(known));
-        self.step(Act::Equation(Eqn::Driven {
-            x: xp,
-            base: xk,
-            moving: placed,
-            known,
-            rotating: !self.nr[known],
-        }));
+        let rotating = !self.nr[known];
+        self.step(|| {
+            Act::Equation(Eqn::Driven {
+                x: xp,
+                base: xk,
+                moving: placed,
+                known,
+                rotating,
+            })
+        });
         let given = What::Given {
             x: xp,
             moving: placed,

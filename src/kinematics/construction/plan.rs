@@ -59,12 +59,20 @@ pub struct PlanPoint {
     pub at: Vec2,
     /// First-order drafting error radius, mm.
     pub err: f64,
-    /// The point's name on the mechanism's figure (`B`, `S2`, `B3` for B
-    /// as a point of link 3); empty for construction points.
-    pub figure: String,
 }
 
 impl PlanPoint {
+    /// The point's name on the mechanism's figure (`B`, `S2`, `B3` for B
+    /// as a point of link 3), from its label; empty for construction
+    /// points. (Not a field: a numbers-only build moves every plan point
+    /// once, and a smaller point moves cheaper.)
+    pub fn figure(&self) -> String {
+        if self.id.is_construction() {
+            String::new()
+        } else {
+            format!("{}{}", self.label.0, self.label.1).to_uppercase()
+        }
+    }
     /// "b", "s2", "n2" …: letters and subscript run together, for text.
     pub fn name(&self) -> String {
         if self.id == PointId::Pole {

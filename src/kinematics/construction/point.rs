@@ -110,7 +110,7 @@ impl Builder<'_> {
         let m = self.m();
         if link == m.frame() {
             let out = self.add_point(id, Vec2::ZERO, 0.0);
-            self.step(Act::Coincide {
+            self.step(|| Act::Coincide {
                 out,
                 with: 0,
                 translates: None,
@@ -123,7 +123,7 @@ impl Builder<'_> {
             // A translating link: all its points share one plan point.
             let (at, err) = (self.plan.points[with].at, self.plan.points[with].err);
             let out = self.add_point(id, at, err);
-            self.step(Act::Coincide {
+            self.step(|| Act::Coincide {
                 out,
                 with,
                 translates: Some(link),
@@ -160,7 +160,7 @@ impl Builder<'_> {
                     }
                 };
                 let out = self.add_point(id, at, e);
-                self.step(Act::Figure {
+                self.step(|| Act::Figure {
                     a: pa,
                     b: pb,
                     out,

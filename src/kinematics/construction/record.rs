@@ -317,9 +317,6 @@ pub(super) fn narrate(plan: &mut Plan, acts: &[Act], st: &Setup) {
             label.0.push('′');
         }
         seen.insert(key.clone());
-        if !p.id.is_construction() {
-            p.figure = format!("{}{}", label.0, label.1).to_uppercase();
-        }
         (p.key, p.label) = (key, label);
     }
     let w = Words { m, plan };
@@ -354,7 +351,7 @@ impl Words<'_> {
             Name::Point(p) => m.point_name(p).to_string(),
             Name::On(p, l) => format!("{}{}", m.point_name(p), m.link_id(l)),
             Name::Special(b) => format!("{}{}", SPECIAL.to_uppercase(), m.link_id(b)),
-            Name::Figure(i) => self.plan.points[i].figure.clone(),
+            Name::Figure(i) => self.plan.points[i].figure(),
         }
     }
     fn seg(&self, (a, b): Seg) -> String {

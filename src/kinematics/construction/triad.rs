@@ -116,10 +116,12 @@ impl Builder<'_> {
             ));
         }
         let sname = Name::Special(t.base);
-        self.step(Act::Equation(Eqn::Special {
-            base: t.base,
-            leashes: [(e[i].2, jn[i]), (e[j].2, jn[j])],
-        }));
+        self.step(|| {
+            Act::Equation(Eqn::Special {
+                base: t.base,
+                leashes: [(e[i].2, jn[i]), (e[j].2, jn[j])],
+            })
+        });
         // The line for S from leash n: through e_n (+ normals) ⊥ E_n J_n.
         let line_for_s = |b: &mut Builder, n: usize| -> Ray {
             let u = perp(jw[n] - e[n].1);

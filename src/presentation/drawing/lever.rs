@@ -292,15 +292,20 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
     match l.balancing {
         Balancing::Moment(mb) => {
             let spec = m.scene.input_at(l.input);
-            let pivot = match *spec {
-                crate::model::scene::InputSpec::Crank { pivot, .. } => m.point_name(pivot),
-                crate::model::scene::InputSpec::Slider { .. } => "",
+            // The crank's length from the mechanism (not M_b / F_b, which
+            // is 0/0 where nothing loads the crank).
+            let (pivot, arm) = match *spec {
+                crate::model::scene::InputSpec::Crank { pivot, link, .. } => (
+                    m.point_name(pivot),
+                    (m.local(link, l.point_b) - m.local(link, pivot)).hypot(),
+                ),
+                crate::model::scene::InputSpec::Slider { .. } => ("", mb / l.f_b),
             };
             out.push(format!(
                 "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {}",
                 m.point_name(l.point_b),
                 n(l.f_b),
-                n(mb / l.f_b),
+                n(arm),
                 n(mb),
                 u("N·m")
             ));

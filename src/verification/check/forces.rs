@@ -135,7 +135,18 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
             Vec::new()
         }
     };
-    let mu = positive("mu", &mut issues);
+    let mu = positive("mu", &mut issues).filter(|&m| {
+        // A scale no drawing has (a subnormal, 10³⁰⁰ N/mm) makes every
+        // segment nothing or infinite: refused, never judged.
+        let sane = (1e-6..=1e9).contains(&m);
+        if !sane {
+            issues.push(issue(
+                "/mu",
+                format!("μ_F = {m} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"),
+            ));
+        }
+        sane
+    });
     if !o.contains_key("mu") {
         issues.push(issue(
             "/mu",
@@ -252,7 +263,29 @@ fn expect(
     ans: &ForceAnswer,
 ) -> std::result::Result<Expect, String> {
     let k = key(name);
-    if matches!(k.as_str(), "Mb" | "Fb" | "Mзр" | "Fзр" | "Mур" | "Fур") {
+    if matches!(k.as_str(), "Fb" | "Fзр" | "Fур") {
+        // A driving slider's balancing force is laid off on the polygon:
+        // its drafting tolerance, in N.
+        if kind != "value" {
+            return Err("the balancing force is a value, not a segment".into());
+        }
+        let (b, _) =
+            balancing(plan).ok_or("this plan has no balancing force: it is the input link's")?;
+        let v = plan
+            .vectors
+            .iter()
+            .find(|v| {
+                matches!(
+                    v.force,
+                    crate::kinetostatics::force_plan::Force::Drive { .. }
+                )
+            })
+            .ok_or("this input is a crank: its balancing value is the moment M_b")?;
+        let seg = plan.points[v.to] - plan.points[v.from];
+        let tol = (plan.err[v.from] + plan.err[v.to] + ans.delta) * plan.mu;
+        return Ok((b, tol, Some(seg.hypot())));
+    }
+    if matches!(k.as_str(), "Mb" | "Mзр" | "Mур") {
         if kind != "value" {
             return Err("the balancing moment (force) is a value, not a segment".into());
         }
@@ -388,10 +421,26 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         ),
         (
             "the weights left out",
+            // Zeroed in place (a zero force is not drawn), so that every
+            // other load keeps its index and its name.
             right_loads
                 .iter()
-                .filter(|l| l.origin() != Origin::Gravity)
-                .copied()
+                .map(|l| match *l {
+                    Load::Force {
+                        origin: Origin::Gravity,
+                        link,
+                        point,
+                        at,
+                        ..
+                    } => Load::Force {
+                        f: kurbo::Vec2::ZERO,
+                        origin: Origin::Gravity,
+                        link,
+                        point,
+                        at,
+                    },
+                    other => other,
+                })
                 .collect(),
         ),
     ];
@@ -421,6 +470,16 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
                 ("value", _) => "N",
                 (_, u) => u,
             };
+            if !(expected.is_finite() && tol.is_finite()) {
+                issues.push(issue(
+                    pointer,
+                    format!(
+                        "cannot be judged at μ_F = {} N/mm: the plan's numbers are not finite there",
+                        ans.mu
+                    ),
+                ));
+                continue;
+            }
             let diff = difference(kind, *given, expected);
             let mut also = None;
             for (j, (what, p)) in mistaken.iter().enumerate() {
