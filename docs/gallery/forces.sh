@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The force sheets of the gallery (part of make.sh; on its own it writes
-# only these PNGs): position 1 of every dynamics fixture and the six-link's
+# only these PNGs): position 3 (else 1) of every dynamics fixture and the six-link's
 # position 2 in Ukrainian, into docs/gallery/forces/, and prints their
 # section of the gallery's README. Usage: bash docs/gallery/forces.sh [TMPDIR]
 set -euo pipefail
@@ -18,8 +18,11 @@ echo
 for f in fixtures/dynamics/*.json; do
   n=$(basename "$f" .json)
   ./target/release/mechplan draw "$f" -o "$tmp/$n" --format png --dpi 100 > /dev/null
-  cp "$tmp/$n/forces_1.png" "$out/$n.png"
-  echo "![$n forces_1](forces/$n.png)"
+  # Position 3 where there is one (position 1 of a count is often a dead
+  # centre, every force on one line), else position 1.
+  k=3; [ -f "$tmp/$n/forces_3.png" ] || k=1
+  cp "$tmp/$n/forces_$k.png" "$out/$n.png"
+  echo "![$n forces_$k](forces/$n.png)"
 done
 ./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json --lang uk -o "$tmp/six_uk" --format png --dpi 100 > /dev/null
 cp "$tmp/six_uk/forces_2.png" "$out/six_link_fig2_10_uk_2.png"
