@@ -184,8 +184,9 @@ fn command(c: Command) -> Result<u8, Error> {
     Ok(0)
 }
 
-/// `check` of a force plan (an answer whose `plan` is `"force"`): its
-/// status, or `None` for a kinematic answer (read by the caller).
+/// `check` of a force plan (a JSON answer whose `plan` is `"force"`, or
+/// an SVG drawing that states μ_F): its status, or `None` for a
+/// kinematic answer (read by the caller).
 fn check_forces(
     scene: &std::path::Path,
     answer: &std::path::Path,
@@ -199,12 +200,9 @@ fn check_forces(
 ) -> Result<Option<u8>, Error> {
     use mechplan::check::forces;
     let name = answer.display().to_string();
-    if answer
+    let drawn = answer
         .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
-    {
-        return Ok(None);
-    }
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
     let too_large = std::fs::metadata(answer)
         .is_ok_and(|md| mechplan::check::answer::check_size(md.len()).is_err());
     if too_large {
@@ -215,10 +213,19 @@ fn check_forces(
         // Unreadable: the kinematic reader reports it.
         return Ok(None);
     };
-    if !forces::is_force_answer(&text) {
-        return Ok(None);
+    // A force plan: JSON whose plan is "force", or a drawing stating μ_F.
+    let mut ans = if drawn {
+        if !forces::is_force_svg(&text) {
+            return Ok(None);
+        }
+        forces::from_svg(&text, mu, delta.unwrap_or(0.5), position.unwrap_or(1))
+    } else {
+        if !forces::is_force_answer(&text) {
+            return Ok(None);
+        }
+        forces::from_json(&text)
     }
-    let mut ans = forces::from_json(&text).map_err(mechplan::study::in_file(&name))?;
+    .map_err(mechplan::study::in_file(&name))?;
     if let Some(d) = delta {
         if !(d.is_finite() && d > 0.0) {
             return Err(Error::scene(

@@ -339,3 +339,80 @@ fn command_line_mu_applies_and_plan_is_refused() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--plan"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A force plan drawn in a vector editor: the vectors of group (4, 5) as
+/// lines (in a layer with a transform, y down as SVG draws), each
+/// labelled with its force's name beside its middle, "μ_F = 2 N/mm"
+/// written on it; read back and judged right; one vector drawn 1.5 times
+/// too long is wrong; a drawing of a kinematic plan (no μ_F) is left to
+/// the kinematic reader.
+#[test]
+fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
+    let (an, solved) = solved();
+    let s = &solved[0];
+    let loads = loads::loads(&an, s, 0);
+    let fp = force_plan::solve_at(&an, s, &loads, 0.5, Some((Which::Group(1), 2.0))).unwrap();
+    let plan = fp.plans.iter().find(|p| p.group == Some(1)).unwrap();
+    let svg = |stretch: Option<&str>| {
+        let mut body = String::new();
+        for v in &plan.vectors {
+            let name = mechplan::presentation::force_steps::force_name(
+                &an,
+                &loads,
+                v.force,
+                mechplan::construction::text::Lang::En,
+            );
+            let (a, mut b) = (plan.points[v.from], plan.points[v.to]);
+            if stretch == Some(name.as_str()) {
+                b = a + (b - a) * 1.5;
+            }
+            // y down on paper; 100 mm from the corner.
+            let p = |q: kurbo::Vec2| (100.0 + q.x, 100.0 - q.y);
+            let (pa, pb) = (p(a), p(b));
+            let m = ((pa.0 + pb.0) / 2.0, (pa.1 + pb.1) / 2.0);
+            let n = kurbo::Vec2::new(pb.1 - pa.1, -(pb.0 - pa.0)).normalize() * 2.0;
+            body += &format!(
+                "<path d=\"M {} {} L {} {}\" stroke=\"black\"/>\n<text x=\"{}\" y=\"{}\" font-size=\"3\">{name}</text>\n",
+                pa.0,
+                pa.1,
+                pb.0,
+                pb.1,
+                m.0 + n.x - 0.9,
+                m.1 + n.y + 1.0
+            );
+        }
+        format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\">\n<g transform=\"translate(5 3)\">\n{body}<text x=\"10\" y=\"200\">μ_F = 2 N/mm</text>\n</g></svg>\n"
+        )
+    };
+    let ans = mechplan::check::forces::from_svg(&svg(None), None, 0.5, 1).unwrap();
+    assert!(ans.segments.len() >= 5, "{:?}", ans.segments);
+    let r = check(&an, &solved, &ans).unwrap();
+    assert_eq!(r.wrong(), 0, "{}", mechplan::check::forces::to_text(&r));
+    let ans = mechplan::check::forces::from_svg(&svg(Some("R_05")), None, 0.5, 1).unwrap();
+    let r = check(&an, &solved, &ans).unwrap();
+    assert!(r.wrong() >= 1, "{}", mechplan::check::forces::to_text(&r));
+    assert!(mechplan::check::forces::is_force_svg(&svg(None)));
+    assert!(!mechplan::check::forces::is_force_svg(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\"><text x=\"1\" y=\"1\">μ_v = 0.01</text></svg>"
+    ));
+    // Through the command: status 0, and 1 for the stretched vector.
+    let dir =
+        std::env::temp_dir().join(format!("mechplan_check_forces_svg_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (stretch, status) in [(None, 0), (Some("R_05"), 1)] {
+        let p = dir.join("plan.svg");
+        std::fs::write(&p, svg(stretch)).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &scene_path(), p.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(status),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -206,6 +206,102 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
     })
 }
 
+/// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").
+pub fn is_force_svg(text: &str) -> bool {
+    super::svg::parse(text)
+        .ok()
+        .is_some_and(|d| super::svg::stated_mu(&d.labels, "_F").is_some())
+}
+
+/// How far from the middle of its vector a force's label may be, mm.
+const SNAP_MM: f64 = 10.0;
+
+/// A force plan drawn in a vector editor: its vectors as lines (a path or
+/// a line element each, or a path's segments), each labelled with the
+/// force's name (`R_34`, `R34`, `Φ4` …) near its middle, and the scale
+/// written on it ("μ_F = 2 N/mm"; `mu` overrides). Read: each label's
+/// nearest segment (by its middle, within 10 mm) gives the force's length;
+/// the plan is the one whose forces the labels name (no `links` needed).
+pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Result<ForceAnswer> {
+    let bad = |m: String| {
+        Error::fields(vec![Issue {
+            pointer: "svg".into(),
+            message: m,
+        }])
+    };
+    let d = super::svg::parse(text)?;
+    let Some(mu) = mu.or_else(|| super::svg::stated_mu(&d.labels, "_F")) else {
+        return Err(bad(
+            "no scale: write \"μ_F = … N/mm\" on the drawing or give --mu".into(),
+        ));
+    };
+    if !(mu.is_finite() && (1e-6..=1e9).contains(&mu)) {
+        return Err(bad(format!(
+            "μ_F = {mu} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"
+        )));
+    }
+    let segments: Vec<(kurbo::Point, kurbo::Point)> = d
+        .lines
+        .iter()
+        .flat_map(|l| l.windows(2).map(|w| (w[0], w[1])))
+        .filter(|(a, b)| (*b - *a).hypot() > 0.0)
+        .collect();
+    let mut items = Vec::new();
+    for (name, at) in &d.labels {
+        if name.is_empty() || name.contains('=') {
+            continue;
+        }
+        let nearest = segments
+            .iter()
+            .map(|(a, b)| ((a.midpoint(*b) - *at).hypot(), (*b - *a).hypot()))
+            .filter(|(dist, _)| dist.is_finite() && *dist <= SNAP_MM)
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((_, len)) = nearest {
+            items.push((format!("svg: label {name}"), name.clone(), len));
+        }
+    }
+    if items.is_empty() {
+        return Err(bad(
+            "no force's label next to the middle of a line: label each vector with its force's name (R_34 …)".into(),
+        ));
+    }
+    Ok(ForceAnswer {
+        position,
+        links: Vec::new(),
+        mu,
+        delta,
+        mu_l: None,
+        segments: items,
+        angles: Vec::new(),
+        values: Vec::new(),
+    })
+}
+
+/// The plan whose vectors carry every one of `names` (an SVG answer's
+/// labels), as [`which`] finds it by its links.
+fn which_by_names(
+    an: &Analysis,
+    loads: &[Load],
+    plans: &[ForcePlan],
+    names: &[String],
+) -> Option<(Which, usize)> {
+    plans.iter().enumerate().find_map(|(k, p)| {
+        let has: Vec<String> = p
+            .vectors
+            .iter()
+            .map(|v| key(&force_name(an, loads, v.force, Lang::En)))
+            .collect();
+        names.iter().all(|n| has.contains(&key(n))).then(|| {
+            let w = match (p.group, p.input) {
+                (Some(g), _) => Which::Group(g),
+                (None, Some(i)) => Which::Input(i),
+                (None, None) => unreachable!("a plan is a group's or an input's"),
+            };
+            (w, k)
+        })
+    })
+}
+
 /// A force's key as students write it: without `_` and `^`, so that
 /// "R_34", "R34" and "R^τ_34" → "Rτ34" all read.
 fn key(s: &str) -> String {
@@ -361,6 +457,29 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
             "the scene has no force plans to check against: it needs a dynamics object (and no class III group)",
         ));
     };
+    let right_loads = loads::loads(an, s, k);
+    // An SVG answer names its forces, not its links: the plan holding them.
+    let mut ans = ans.clone();
+    if ans.links.is_empty() {
+        let names: Vec<String> = ans.segments.iter().map(|x| x.1.clone()).collect();
+        if let Some((_, i)) = which_by_names(an, &right_loads, &fp.plans, &names) {
+            ans.links = fp.plans[i]
+                .links
+                .iter()
+                .map(|&l| an.mech.link_id(l).to_string())
+                .collect();
+        } else {
+            return Err(Error::scene(
+                "svg",
+                format!(
+                    "no force plan of position {} has all the forces labelled ({})",
+                    ans.position,
+                    names.join(", ")
+                ),
+            ));
+        }
+    }
+    let ans = &ans;
     let Some((w, _)) = which(an, &fp.plans, &ans.links) else {
         let all: Vec<String> = fp
             .plans
@@ -384,7 +503,6 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         let (_, i) = which(an, &fp.plans, &ans.links).expect("the same structure");
         Ok(fp.plans[i].clone())
     };
-    let right_loads = loads::loads(an, s, k);
     let plan = at_scale(&right_loads)?;
     // The typical mistakes, as whole plans at the student's scale.
     let mistakes: Vec<(&str, Vec<Load>)> = vec![

@@ -146,13 +146,16 @@ impl Ends {
 /// Read an SVG answer. `mu`, `plan` come from the command line or the
 /// answer JSON when the drawing does not state them ("μ = 0.01" text, and
 /// the pole's label p_v / p_a).
-pub fn from_svg(
-    text: &str,
-    mu: Option<f64>,
-    plan: Option<PlanKind>,
-    delta: f64,
-    position: usize,
-) -> Result<Answer> {
+/// What a drawing holds: its text labels (their text and where they are,
+/// mm, y down as drawn) and its lines (each path or line element's
+/// points in order, mm). Every problem names `svg`.
+pub(super) struct Drawing {
+    pub labels: Vec<(String, Point)>,
+    pub lines: Vec<Vec<Point>>,
+}
+
+/// Parse an answer drawn in a vector editor into its labels and lines.
+pub(super) fn parse(text: &str) -> Result<Drawing> {
     let bad = |m: String| {
         Error::fields(vec![Issue {
             pointer: "svg".into(),
@@ -214,7 +217,7 @@ pub fn from_svg(
             .and_then(|v| v.split_whitespace().next()?.parse::<f64>().ok())
     };
     let mut labels: Vec<(String, Point)> = Vec::new();
-    let mut ends: Vec<Point> = Vec::new();
+    let mut lines: Vec<Vec<Point>> = Vec::new();
     for n in doc.descendants().filter(|n| n.is_element()) {
         match n.tag_name().name() {
             "text" => {
@@ -237,6 +240,7 @@ pub fn from_svg(
             }
             "path" => {
                 let t = affine(n);
+                let mut line = Vec::new();
                 for seg in
                     svgtypes::SimplifyingPathParser::from(n.attribute("d").unwrap_or("")).flatten()
                 {
@@ -247,36 +251,72 @@ pub fn from_svg(
                         | svgtypes::SimplePathSegment::Quadratic { x, y, .. } => Some((x, y)),
                         svgtypes::SimplePathSegment::ClosePath => None,
                     };
-                    if let Some((x, y)) = p {
-                        ends.push(mm(t * Point::new(x, y)));
+                    match (seg, p) {
+                        // A move starts a new line of the path.
+                        (svgtypes::SimplePathSegment::MoveTo { .. }, Some((x, y))) => {
+                            if !line.is_empty() {
+                                lines.push(std::mem::take(&mut line));
+                            }
+                            line.push(mm(t * Point::new(x, y)));
+                        }
+                        (_, Some((x, y))) => line.push(mm(t * Point::new(x, y))),
+                        _ => {}
                     }
+                }
+                if !line.is_empty() {
+                    lines.push(line);
                 }
             }
             "line" => {
                 let t = affine(n);
+                let mut line = Vec::new();
                 for (x, y) in [("x1", "y1"), ("x2", "y2")] {
                     if let (Some(x), Some(y)) = (num(n, x), num(n, y)) {
-                        ends.push(mm(t * Point::new(x, y)));
+                        line.push(mm(t * Point::new(x, y)));
                     }
                 }
+                lines.push(line);
             }
             _ => {}
         }
     }
+    Ok(Drawing { labels, lines })
+}
+
+/// The scale a drawing states in a text such as "μ_v = 0.01 (m/s)/mm",
+/// "μ_F = 2 N/mm" (`prefix`: "" for any μ, "_F" for a force plan's).
+pub(super) fn stated_mu(labels: &[(String, Point)], prefix: &str) -> Option<f64> {
+    labels.iter().find_map(|(s, _)| {
+        let s = s.replace(' ', "");
+        let rest = s.strip_prefix('μ').or_else(|| s.strip_prefix("mu"))?;
+        let rest = rest.strip_prefix(prefix)?;
+        let num: String = rest
+            .split('=')
+            .nth(1)?
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
+            .collect();
+        num.parse().ok()
+    })
+}
+
+pub fn from_svg(
+    text: &str,
+    mu: Option<f64>,
+    plan: Option<PlanKind>,
+    delta: f64,
+    position: usize,
+) -> Result<Answer> {
+    let bad = |m: String| {
+        Error::fields(vec![Issue {
+            pointer: "svg".into(),
+            message: m,
+        }])
+    };
+    let Drawing { labels, lines } = parse(text)?;
+    let ends: Vec<Point> = lines.into_iter().flatten().collect();
     // μ from a text such as "μ_v = 0.01 (m/s)/mm" when not given.
-    let mu = mu.or_else(|| {
-        labels.iter().find_map(|(s, _)| {
-            let s = s.replace(' ', "");
-            let rest = s.strip_prefix('μ').or_else(|| s.strip_prefix("mu"))?;
-            let num: String = rest
-                .split('=')
-                .nth(1)?
-                .chars()
-                .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
-                .collect();
-            num.parse().ok()
-        })
-    });
+    let mu = mu.or_else(|| stated_mu(&labels, ""));
     let Some(mu) = mu else {
         return Err(bad(
             "no scale: give --mu or write \"μ = …\" on the drawing".into()
