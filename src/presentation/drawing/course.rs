@@ -77,16 +77,16 @@ pub fn chosen(an: &Analysis, solved: &[Solved]) -> (Vec<usize>, Vec<usize>) {
 /// A figure of the sheet: a caption over a drawing, and the scales it is
 /// drawn at.
 #[derive(Clone)]
-struct Figure {
-    id: String,
-    caption: Vec<String>,
-    canvas: Canvas,
-    scales: Vec<(&'static str, f64)>,
+pub(super) struct Figure {
+    pub id: String,
+    pub caption: Vec<String>,
+    pub canvas: Canvas,
+    pub scales: Vec<(&'static str, f64)>,
 }
 
 impl Figure {
     /// Width and height with the caption, mm.
-    fn size(&self) -> (f64, f64) {
+    pub fn size(&self) -> (f64, f64) {
         let b = self.canvas.bounds();
         let cw = self
             .caption
@@ -249,7 +249,29 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
         ))
     })?;
     let mut page = Page::new(size);
-    for (f, at) in &placed {
+    place(&mut page, &placed);
+    let title = w.course.to_string();
+    // Sheet 1 of 2 when the force analysis sheet follows.
+    let sheets = if super::course_forces::position_has_forces(an, solved) {
+        2
+    } else {
+        1
+    };
+    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
+    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
+    Ok(Sheet {
+        name: "course".into(),
+        title,
+        size,
+        scales,
+        svg: page.finish(),
+    })
+}
+
+/// Write the placed figures on `page`, each a group `fig-<id>`: its
+/// caption lines centred over it, the drawing under them.
+pub(super) fn place(page: &mut Page, placed: &[(Figure, Point)]) {
+    for (f, at) in placed {
         let (fw, _) = f.size();
         let b = f.canvas.bounds();
         page.push(&format!("<g class=\"figure\" id=\"fig-{}\">\n", f.id));
@@ -270,22 +292,6 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
         page.write_canvas(&f.canvas, ox, top + b.y1);
         page.push("</g>\n");
     }
-    let title = w.course.to_string();
-    // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if super::course_forces::position_has_forces(an, solved) {
-        2
-    } else {
-        1
-    };
-    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
-    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
-    Ok(Sheet {
-        name: "course".into(),
-        title,
-        size,
-        scales,
-        svg: page.finish(),
-    })
 }
 
 /// The field of the course sheet: inside the frame, with no heading band

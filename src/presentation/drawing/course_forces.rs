@@ -13,7 +13,7 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::course::{self, chosen};
+use super::course::{self, Figure, chosen};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
@@ -25,9 +25,8 @@ use crate::kinetostatics::Balancing;
 use crate::kinetostatics::lever::lever_at;
 use kurbo::Point;
 
-/// The caption's line height and font size, mm.
+/// The caption's line height, mm.
 const CAPTION: f64 = 6.0;
-const CAPTION_FONT: f64 = 3.5;
 
 /// The sheet's name in the title block.
 pub fn title(lang: Lang) -> &'static str {
@@ -48,29 +47,6 @@ pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
         .unwrap_or(1)
         .clamp(1, solved.len().max(1))
         - 1
-}
-
-/// A figure: caption lines over a drawing.
-struct Figure {
-    caption: Vec<String>,
-    canvas: Canvas,
-}
-
-impl Figure {
-    fn size(&self) -> (f64, f64) {
-        let b = self.canvas.bounds();
-        let cw = self
-            .caption
-            .iter()
-            .map(|c| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
-            })
-            .fold(0.0, f64::max);
-        (
-            b.width().max(cw),
-            b.height() + CAPTION * self.caption.len() as f64 + 2.0,
-        )
-    }
 }
 
 /// The reactions and the balancing moment (force) of position `s` by each
@@ -173,11 +149,13 @@ fn figures(
     let mut out = Vec::new();
     if let Some(f) = forces::figure(an, s, k, opt, panels) {
         out.push(Figure {
+            id: "forces".into(),
             caption: vec![
                 format!("{}, {pos}", forces::title(lang)),
                 super::scale_text("l", f.mu_l, "m", lang),
             ],
             canvas: f.canvas,
+            scales: vec![("mu_l", f.mu_l)],
         });
     }
     let loads = crate::kinetostatics::loads::loads(an, s, k);
@@ -207,15 +185,22 @@ fn figures(
             });
         let mut caption = vec![w.title.to_string()];
         caption.extend(lever::caption(an, &l, lever::force_scale(&l), lang));
-        out.push(Figure { caption, canvas: c });
+        out.push(Figure {
+            id: format!("lever-{}", input + 1),
+            caption,
+            canvas: c,
+            scales: vec![("mu_v", l.mu_v)],
+        });
         let forces_on = match lang {
             Lang::En => "The forces on the lever",
             Lang::Uk => "Сили на важелі",
             Lang::Ru => "Силы на рычаге",
         };
         out.push(Figure {
+            id: format!("lever-table-{}", input + 1),
             caption: vec![forces_on.to_string()],
             canvas: lever::table(an, &l, lang).draw(),
+            scales: Vec::new(),
         });
     }
     if let Some(t) = results(an, s, lang) {
@@ -225,8 +210,10 @@ fn figures(
             Lang::Ru => "Реакции и уравновешивающий момент",
         };
         out.push(Figure {
+            id: "reactions".into(),
             caption: vec![head.into()],
             canvas: t.draw(),
+            scales: Vec::new(),
         });
     }
     Ok(out)
@@ -278,33 +265,14 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         ))
     })?;
     let mut page = Page::new(size);
-    for (i, (f, at)) in placed.iter().enumerate() {
-        let (fw, _) = f.size();
-        let b = f.canvas.bounds();
-        page.push(&format!("<g class=\"figure\" id=\"fig-forces-{i}\">\n"));
-        let mut cap = Canvas::default();
-        for (j, t) in f.caption.iter().enumerate() {
-            cap.rich(
-                Point::new(fw / 2.0, -CAPTION * (j as f64 + 1.0) + 1.5),
-                t,
-                CAPTION_FONT,
-                "caption",
-                "middle",
-            );
-        }
-        page.write_canvas(&cap, at.x, at.y);
-        let top = at.y + CAPTION * f.caption.len() as f64 + 2.0;
-        let ox = at.x + (fw - b.width()) / 2.0 - b.x0;
-        page.write_canvas(&f.canvas, ox, top + b.y1);
-        page.push("</g>\n");
-    }
+    course::place(&mut page, &placed);
     let name = title(opt.lang);
     page.title_block(&super::title_block(an, opt, name, (2, 2)));
     Ok(Some(Sheet {
         name: "course_forces".into(),
         title: name.into(),
         size,
-        scales: Vec::new(),
+        scales: placed.iter().flat_map(|(f, _)| f.scales.clone()).collect(),
         svg: page.finish(),
     }))
 }
