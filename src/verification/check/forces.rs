@@ -291,14 +291,10 @@ fn which_by_names(
             .iter()
             .map(|v| key(&force_name(an, loads, v.force, Lang::En)))
             .collect();
-        names.iter().all(|n| has.contains(&key(n))).then(|| {
-            let w = match (p.group, p.input) {
-                (Some(g), _) => Which::Group(g),
-                (None, Some(i)) => Which::Input(i),
-                (None, None) => unreachable!("a plan is a group's or an input's"),
-            };
-            (w, k)
-        })
+        names
+            .iter()
+            .all(|n| has.contains(&key(n)))
+            .then(|| (which_of(p), k))
     })
 }
 
@@ -306,6 +302,15 @@ fn which_by_names(
 /// "R_34", "R34" and "R^τ_34" → "Rτ34" all read.
 fn key(s: &str) -> String {
     s.chars().filter(|c| *c != '_' && *c != '^').collect()
+}
+
+/// A plan's place: its group's, or its input link's.
+fn which_of(p: &ForcePlan) -> Which {
+    match (p.group, p.input) {
+        (Some(g), _) => Which::Group(g),
+        (None, Some(i)) => Which::Input(i),
+        (None, None) => unreachable!("a plan is a group's or an input's"),
+    }
 }
 
 /// Which plan the answer's links name.
@@ -316,14 +321,7 @@ fn which(an: &Analysis, plans: &[ForcePlan], links: &[String]) -> Option<(Which,
     plans.iter().enumerate().find_map(|(k, p)| {
         let mut ids: Vec<&str> = p.links.iter().map(|&l| m.link_id(l)).collect();
         ids.sort_unstable();
-        (ids == want).then(|| {
-            let w = match (p.group, p.input) {
-                (Some(g), _) => Which::Group(g),
-                (None, Some(i)) => Which::Input(i),
-                (None, None) => unreachable!("a plan is a group's or an input's"),
-            };
-            (w, k)
-        })
+        (ids == want).then(|| (which_of(p), k))
     })
 }
 
