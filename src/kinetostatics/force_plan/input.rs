@@ -1,0 +1,109 @@
+//! The input link's plan, last: its balancing moment (force) and the
+//! reaction of the link it turns or slides on.
+
+use super::draft::Draft;
+use super::dyad::couple_step;
+use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
+use super::{Applied, ScaleOf, Side, record};
+use crate::error::Result;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinetostatics::newton_euler::guide_frame;
+use crate::model::scene::InputSpec;
+use crate::model::structure::Joint;
+use kurbo::Vec2;
+
+/// The input link `i` (a crank, a driving slider on the frame or a chained
+/// slider): its balancing moment (force) and the reaction of the link it
+/// turns or slides on.
+pub(super) fn input_plan(
+    an: &Analysis,
+    s: &Solved,
+    i: usize,
+    (known, out): (&mut Vec<Applied>, &mut ForcePlans),
+    (delta, scale): (f64, ScaleOf),
+) -> Result<ForcePlan> {
+    let m = &an.mech;
+    let spec = m.scene.input_at(i);
+    let link = spec.link();
+    let side = Side {
+        links: vec![link],
+        known,
+    };
+    let sum = side.sum();
+    let draw = |mu: f64| {
+        let mut dr = Draft::new(mu, delta);
+        dr.plan.links = vec![link];
+        for a in side.forces().filter(|a| a.f != Vec2::ZERO) {
+            dr.lay_off(a.f, a.force);
+        }
+        dr
+    };
+    let trial = draw(1.0);
+    let mu = scale(&trial.plan.points);
+    let mut dr = draw(mu);
+    let end = dr.last();
+    match *spec {
+        InputSpec::Crank { pivot, .. } => {
+            let o = s.config.point(m, link, pivot);
+            let mb = -side.moment_about(o);
+            dr.plan.steps.push(ForceStep::Balancing {
+                input: i,
+                value: mb,
+            });
+            out.drives[i] = Some(mb);
+            let frame = m.frame();
+            let joint = Joint::R(pivot);
+            let force = Force::Reaction {
+                from: frame,
+                to: link,
+                joint,
+                part: Part::Whole,
+            };
+            let r = dr.measure(end, 0, force);
+            record((an, s), out, joint, frame, link, r, 0.0);
+        }
+        InputSpec::Slider { pair, .. } => {
+            let pr = &m.prismatics[pair];
+            let other = if pr.slider == link {
+                pr.guide
+            } else {
+                pr.slider
+            };
+            let (q, u, n) = guide_frame(an, s, pair);
+            let sign = if pr.slider == link { 1.0 } else { -1.0 };
+            let fb = -sum.dot(u) * sign;
+            dr.plan.steps.push(ForceStep::Balancing {
+                input: i,
+                value: fb,
+            });
+            out.drives[i] = Some(fb);
+            let normal = -sum.dot(n);
+            let couple = -side.moment_about(q);
+            let joint = Joint::P(pair);
+            let force = Force::Reaction {
+                from: other,
+                to: link,
+                joint,
+                part: Part::Whole,
+            };
+            dr.lay_off(u * (fb * sign), Force::Drive { input: i, on: link });
+            let r = dr.measure(dr.last(), 0, force);
+            couple_step(&mut dr, &[link], force, couple, r, q);
+            record((an, s), out, joint, other, link, n * normal, couple);
+            // The chained slider's guide link feels the opposite.
+            known.push(Applied {
+                link: other,
+                at: q,
+                f: -(n * normal) - u * (fb * sign),
+                couple: -couple,
+                force: Force::Reaction {
+                    from: link,
+                    to: other,
+                    joint,
+                    part: Part::Whole,
+                },
+            });
+        }
+    }
+    Ok(dr.plan)
+}

@@ -1,0 +1,207 @@
+//! The graphical route: force plans group by group, as the course draws
+//! them, from the last Assur group attached back to the input link.
+//!
+//! A group is cut out of the mechanism with the known loads on its links
+//! and the reactions of the groups already solved (the later ones); the
+//! reactions of its outer pairs are the unknowns. Each class II group has
+//! a scheme (the tangential components from the moments of one link about
+//! the middle joint, a projection on a guide where the middle pair is
+//! prismatic), after which the force polygon of the whole group is laid
+//! off at a scale μ_F and closed by the intersection of two lines of known
+//! direction; the middle pair's reaction is the segment from the end of
+//! the first link's loads to the closing point, and a prismatic pair's
+//! couple (the place of its normal force) comes from a moment equation.
+//! A cylinder (a driving slider between two moving links) is one side of
+//! its group, its rod and barrel together (the moments of a set of bodies
+//! in equilibrium balance whether it is rigid or not); its inner pair and
+//! the drive force come from the barrel's (or rod's) own equilibrium. The
+//! input link last: its balancing moment (force) and the frame's reaction.
+//!
+//! Every plan point carries a drafting error radius (δ per vector laid
+//! off, amplified by 1/sin θ where two lines meet), as the kinematic plans
+//! do; the reactions are measured off the plan. Class III groups have no
+//! scheme here: their reactions come from the links' equilibrium only.
+
+mod draft;
+mod dyad;
+mod input;
+mod plan;
+
+pub use plan::{Drawn, DrawnLine, Force, ForcePlan, ForcePlans, ForceStep, Part};
+
+use super::loads::Load;
+use super::newton_euler::guide_frame;
+use crate::error::{Error, Result};
+use crate::kinematics::construction::Field;
+use crate::kinematics::positions::describe_input;
+use crate::kinematics::solve::{Analysis, Solved};
+use crate::model::structure::{AssurGroup, InputRole, Joint, Stage};
+use kurbo::{Point, Vec2};
+
+/// A force known on a link: a load, or a reaction found (of a later group
+/// on this link).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Applied {
+    pub link: usize,
+    pub at: Point,
+    pub f: Vec2,
+    pub couple: f64,
+    pub force: Force,
+}
+
+impl Applied {
+    fn moment_about(&self, p: Point) -> f64 {
+        (self.at - p).cross(self.f) + self.couple
+    }
+}
+
+/// What acts on a set of links: its forces (the polygon's vectors, in
+/// order) and its moment about any point.
+pub(super) struct Side<'a> {
+    pub links: Vec<usize>,
+    pub known: &'a [Applied],
+}
+
+impl Side<'_> {
+    fn has(&self, l: usize) -> bool {
+        self.links.contains(&l)
+    }
+    fn forces(&self) -> impl Iterator<Item = &Applied> {
+        self.known.iter().filter(|a| self.has(a.link))
+    }
+    fn sum(&self) -> Vec2 {
+        self.forces().fold(Vec2::ZERO, |s, a| s + a.f)
+    }
+    fn moment_about(&self, p: Point) -> f64 {
+        self.forces().map(|a| a.moment_about(p)).sum()
+    }
+}
+
+/// The force plans of every group and input at solved position `s`
+/// under `loads`, from the last group attached back to the inputs.
+pub fn solve(an: &Analysis, s: &Solved, loads: &[Load], delta: f64) -> Result<ForcePlans> {
+    solve_at(an, s, loads, delta, None)
+}
+
+/// The scale a plan is drawn at, from its points at unit scale.
+type ScaleOf<'a> = &'a dyn Fn(&[Vec2]) -> f64;
+
+/// Which plan: a group's (index into `Structure::groups`) or an input
+/// link's (the scene's order of inputs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Which {
+    Group(usize),
+    Input(usize),
+}
+
+/// [`solve`] with one plan drawn at a given scale `fixed` (a student's
+/// μ_F, to check their plan at it); the others at the standard scale that
+/// fits the default field.
+pub fn solve_at(
+    an: &Analysis,
+    s: &Solved,
+    loads: &[Load],
+    delta: f64,
+    fixed: Option<(Which, f64)>,
+) -> Result<ForcePlans> {
+    let scale_of = |w: Which, pts: &[Vec2]| match fixed {
+        Some((f, mu)) if f == w => mu,
+        _ => Field::default().scale(pts.iter().copied()),
+    };
+    let m = &an.mech;
+    let st = &an.structure;
+    let at = || describe_input(m, &s.drives.coords());
+    let mut known: Vec<Applied> = Vec::new();
+    for (i, l) in loads.iter().enumerate() {
+        let (link, at, f, couple) = match *l {
+            Load::Force { link, at, f, .. } => (link, at, f, 0.0),
+            Load::Couple { link, m, .. } => (link, Point::ORIGIN, Vec2::ZERO, m),
+        };
+        if f != Vec2::ZERO || couple != 0.0 {
+            known.push(Applied {
+                link,
+                at,
+                f,
+                couple,
+                force: Force::Load(i),
+            });
+        }
+    }
+    let mut out = ForcePlans {
+        plans: Vec::new(),
+        revolute: vec![None; m.revolutes.len()],
+        prismatic: vec![None; m.prismatics.len()],
+        drives: vec![None; m.scene.input_count()],
+    };
+    for stage in st.stages.iter().rev() {
+        match *stage {
+            Stage::Group(g) => {
+                let AssurGroup::Dyad(d) = &st.groups[g] else {
+                    return Err(Error::structure(
+                        "mechplan draws no force plan of a class III group (its reactions come from the links' equilibrium only)",
+                    ));
+                };
+                let mu = |pts: &[Vec2]| scale_of(Which::Group(g), pts);
+                let plan = dyad::group_plan(an, s, d, (&mut known, &mut out), (delta, &mu), &at)?;
+                out.plans.push(ForcePlan {
+                    group: Some(g),
+                    ..plan
+                });
+            }
+            Stage::Input(i) => {
+                if let InputRole::InGroup { .. } = st.roles[i] {
+                    continue;
+                }
+                let mu = |pts: &[Vec2]| scale_of(Which::Input(i), pts);
+                let plan = input::input_plan(an, s, i, (&mut known, &mut out), (delta, &mu))?;
+                out.plans.push(ForcePlan {
+                    input: Some(i),
+                    ..plan
+                });
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Record the reaction `r` (with couple `c`) of link `from` on link `to`
+/// in pair `joint` in the mechanism's conventions.
+#[allow(clippy::too_many_arguments)]
+fn record(
+    (an, s): (&Analysis, &Solved),
+    out: &mut ForcePlans,
+    joint: Joint,
+    from: usize,
+    to: usize,
+    r: Vec2,
+    c: f64,
+) {
+    let m = &an.mech;
+    match joint {
+        Joint::R(p) => {
+            if let Some(k) = m
+                .revolutes
+                .iter()
+                .position(|rv| rv.point == p && (rv.a, rv.b) == (from, to))
+            {
+                out.revolute[k] = Some(r);
+            } else if let Some(k) = m
+                .revolutes
+                .iter()
+                .position(|rv| rv.point == p && (rv.a, rv.b) == (to, from))
+            {
+                out.revolute[k] = Some(-r);
+            }
+        }
+        Joint::P(k) => {
+            // The guide's force on the slider, along the guide's left normal.
+            let (_, _, n) = guide_frame(an, s, k);
+            let (r, c) = if m.prismatics[k].slider == to {
+                (r, c)
+            } else {
+                (-r, -c)
+            };
+            out.prismatic[k] = Some((r.dot(n), c));
+        }
+    }
+}
