@@ -209,12 +209,6 @@ impl<'a> Builder<'a> {
         }
     }
 
-    pub fn find(&self, link: usize, x: Point) -> Option<usize> {
-        let local = self.local(link, x);
-        let tol = self.same_point(link, x);
-        self.plan.known_at(link, local, tol)
-    }
-
     /// Lay off the real vector `v` from plan point `from`: the new plan
     /// point `id`.
     pub fn lay_off(

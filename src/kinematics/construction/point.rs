@@ -4,7 +4,7 @@
 //! link's measured rates from one — whichever comes out best conditioned.
 
 use super::builder::Builder;
-use super::plan::{Mistake, PointId};
+use super::plan::{Known, Mistake, PointId};
 use super::record::{Act, By, Name, Product, Rate, Way, What};
 use crate::accuracy::ACCURACY;
 use crate::geom::perp;
@@ -79,7 +79,9 @@ impl Builder<'_> {
     /// relative vector of the link's measured rates. `figure` is the
     /// point's name on the mechanism.
     fn point_on(&mut self, link: usize, x: Point, id: PointId, figure: Name) -> usize {
-        if let Some(i) = self.find(link, x) {
+        let local = self.local(link, x);
+        let tol = self.same_point(link, x);
+        if let Some(i) = self.plan.known_at(link, local, tol) {
             return i;
         }
         // The link's known points, in the builder's scratch list (no
@@ -93,21 +95,31 @@ impl Builder<'_> {
                 .filter(|k| k.link == link)
                 .map(|k| (k.local, k.point)),
         );
-        let out = self.point_from(link, x, id, figure, &known);
+        let out = self.point_from((link, x, local), id, figure, &known);
         self.scratch = known;
         out
     }
 
     /// [`Builder::point_on`] from the link's known points `known`.
+    ///
+    /// The plan knows no point of `link` at `local` (`point_on` looked):
+    /// the new point is added to the link's known points without looking
+    /// again.
     fn point_from(
         &mut self,
-        link: usize,
-        x: Point,
+        (link, x, local): (usize, Point, Vec2),
         id: PointId,
         figure: Name,
         known: &[(Vec2, usize)],
     ) -> usize {
         let m = self.m();
+        let learn = |b: &mut Self, out: usize| {
+            b.plan.body.push(Known {
+                link,
+                local,
+                point: out,
+            })
+        };
         if link == m.frame() {
             let out = self.add_point(id, Vec2::ZERO, 0.0);
             self.step(|| Act::Coincide {
@@ -115,10 +127,9 @@ impl Builder<'_> {
                 with: 0,
                 translates: None,
             });
-            self.register(link, x, out);
+            learn(self, out);
             return out;
         }
-        let local = self.local(link, x);
         if let (true, Some(&(_, with))) = (self.nr[link], known.first()) {
             // A translating link: all its points share one plan point.
             let (at, err) = (self.plan.points[with].at, self.plan.points[with].err);
@@ -128,7 +139,7 @@ impl Builder<'_> {
                 with,
                 translates: Some(link),
             });
-            self.register(link, x, out);
+            learn(self, out);
             return out;
         }
         assert!(
@@ -145,11 +156,14 @@ impl Builder<'_> {
                 }
                 let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
                 let at = a_at + (b_at - a_at).rotate_scale(ratio) + self.pencil();
-                let fig = [
-                    self.known_name(link, (la, pa)),
-                    self.known_name(link, (lb, pb)),
-                    figure,
-                ];
+                // The names only a narrated build records.
+                let fig = self.record.then(|| {
+                    [
+                        self.known_name(link, (la, pa)),
+                        self.known_name(link, (lb, pb)),
+                        figure,
+                    ]
+                });
                 let (e, by) = match err {
                     FigureErr::Divide(e) => (e, By::Divide { ratio: ratio.x }),
                     FigureErr::Arcs(e, s) => {
@@ -164,14 +178,14 @@ impl Builder<'_> {
                     a: pa,
                     b: pb,
                     out,
-                    figure: fig,
+                    figure: fig.expect("named when recorded"),
                     by,
                 });
                 out
             }
             Construction::Relation { a } => self.by_rates(link, x, id, figure, known[a]),
         };
-        self.register(link, x, out);
+        learn(self, out);
         out
     }
 
@@ -186,7 +200,12 @@ impl Builder<'_> {
         (la, pa): (Vec2, usize),
     ) -> usize {
         let r = x - self.c.pose(link).apply(la);
-        let an = self.known_name(link, (la, pa));
+        // The known point's name only a narrated build records.
+        let an = if self.record {
+            self.known_name(link, (la, pa))
+        } else {
+            Name::Figure(pa)
+        };
         let w = self.omega(link);
         let seg = (an, figure);
         let (rate, rate_err) = self.plan.rates[link].unwrap_or((0.0, 0.0));

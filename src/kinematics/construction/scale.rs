@@ -51,11 +51,28 @@ impl Field {
         // the largest error radius.
         let (mut long2, mut lo, mut hi, mut err) =
             (0.0f64, Vec2::splat(f64::MAX), Vec2::splat(f64::MIN), 0.0f64);
+        // (Plain comparisons: a NaN point leaves the extent as it is, and
+        // the ratio's own test below refuses a plan that is all NaN.)
         for p in &plan.points {
-            long2 = long2.max(p.at.hypot2());
-            lo = Vec2::new(lo.x.min(p.at.x), lo.y.min(p.at.y));
-            hi = Vec2::new(hi.x.max(p.at.x), hi.y.max(p.at.y));
-            err = err.max(p.err);
+            let (a, h) = (p.at, p.at.hypot2());
+            if h > long2 {
+                long2 = h;
+            }
+            if a.x < lo.x {
+                lo.x = a.x;
+            }
+            if a.y < lo.y {
+                lo.y = a.y;
+            }
+            if a.x > hi.x {
+                hi.x = a.x;
+            }
+            if a.y > hi.y {
+                hi.y = a.y;
+            }
+            if p.err > err {
+                err = p.err;
+            }
         }
         let mu = plan.mu;
         let ratio = (long2.sqrt() / self.longest)
