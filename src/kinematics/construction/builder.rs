@@ -25,34 +25,33 @@ pub(super) struct Builder<'a> {
     pub st: &'a Setup<'a>,
     pub c: &'a Configuration,
     pub plan: &'a mut Plan,
-    /// The construction's record, step by step, in ids (kept only when
-    /// `record`).
-    pub acts: Vec<Act>,
     /// Keep the record (a build that is narrated).
     pub record: bool,
     /// Steps taken so far, recorded or not.
     pub taken: usize,
     /// The velocity plan, when building the acceleration plan.
     pub vel: Option<&'a Plan>,
-    pub nr: Vec<bool>,
-    pub reported_on: Vec<Option<usize>>,
     /// Every input's coordinate and rates.
     pub drives: Drives,
-    /// The first normal-component point laid off for each link (n₂ …).
-    pub normal_of: Vec<Option<usize>>,
-    /// A scratch list of a link's known points (local place, plan point).
-    pub scratch: Vec<(Vec2, usize)>,
+    /// The buffers: the record, the non-rotating links, the reported
+    /// points' carriers, the normal points, a scratch list (borrowed: a
+    /// sweep's builders share them without moving them).
+    pub t: &'a mut Tools,
 }
 
 /// A builder's buffers, handed from one construction to the next of a
 /// sweep (`Kernel`): no allocation per position once they have grown.
 pub(super) struct Tools {
+    /// The construction's record, step by step, in ids (kept only when
+    /// `record`).
     pub acts: Vec<Act>,
     pub nr: Vec<bool>,
     /// Of every point of the mechanism: reported (`Setup::points`), on
     /// which link ([`Tools::carrier`]).
     pub reported_on: Vec<Option<usize>>,
+    /// The first normal-component point laid off for each link (n₂ …).
     pub normal_of: Vec<Option<usize>>,
+    /// A scratch list of a link's known points (local place, plan point).
     pub scratch: Vec<(Vec2, usize)>,
 }
 
@@ -75,7 +74,7 @@ impl Tools {
 
 impl<'a> Builder<'a> {
     /// A builder for `plan` (emptied by [`Builder::again`] before a run)
-    /// with the buffers `tools` (of the same mechanism).
+    /// with the buffers `t` (of the same mechanism).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         st: &'a Setup<'a>,
@@ -85,49 +84,28 @@ impl<'a> Builder<'a> {
         vel: Option<&'a Plan>,
         variant: Variant,
         rng: Option<StdRng>,
-        tools: Tools,
+        t: &'a mut Tools,
     ) -> Builder<'a> {
-        let Tools {
-            acts,
-            nr,
-            reported_on,
-            normal_of,
-            scratch,
-        } = tools;
         Builder {
             variant,
             rng,
             st,
             c,
             plan,
-            acts,
             record: false,
             taken: 0,
             vel,
-            nr,
-            reported_on,
             drives,
-            normal_of,
-            scratch,
-        }
-    }
-    /// The buffers, for the next construction.
-    pub fn finish(self) -> Tools {
-        Tools {
-            acts: self.acts,
-            nr: self.nr,
-            reported_on: self.reported_on,
-            normal_of: self.normal_of,
-            scratch: self.scratch,
+            t,
         }
     }
     /// The same builder for a new construction at scale `mu`, its buffers
     /// emptied and kept.
     pub fn again(&mut self, mu: f64, rng: Option<StdRng>) {
         self.plan.clear(mu);
-        self.acts.clear();
+        self.t.acts.clear();
         self.taken = 0;
-        self.normal_of.fill(None);
+        self.t.normal_of.fill(None);
         self.rng = rng;
     }
     #[inline]
@@ -146,7 +124,7 @@ impl<'a> Builder<'a> {
     pub fn step(&mut self, act: impl FnOnce() -> Act) {
         self.taken += 1;
         if self.record {
-            self.acts.push(act());
+            self.t.acts.push(act());
         }
     }
     #[inline]
@@ -159,7 +137,7 @@ impl<'a> Builder<'a> {
     }
     /// Remember the first normal-component point of `link`.
     pub fn note_normal(&mut self, link: usize, idx: usize) {
-        self.normal_of[link].get_or_insert(idx);
+        self.t.normal_of[link].get_or_insert(idx);
     }
     /// ω of a link from the velocity plan (for the acceleration plan).
     #[inline]
@@ -410,7 +388,7 @@ impl<'a> Builder<'a> {
             x,
             base,
             rigid,
-            rotating: !self.nr[link],
+            rotating: !self.t.nr[link],
             via: None,
         }
     }
@@ -434,7 +412,7 @@ impl<'a> Builder<'a> {
         for &p in &m.links[frame].points {
             let x = self.world(frame, p);
             self.register(frame, x, 0);
-            if self.reported_on[p].is_some() {
+            if self.t.reported_on[p].is_some() {
                 self.plan.of_point[p] = Some(0);
             }
         }
@@ -485,7 +463,7 @@ impl<'a> Builder<'a> {
             links[..n].sort_unstable();
             for &l in &links[..n] {
                 for &p in &m.links[l].points {
-                    if self.reported_on[p] == Some(l) && self.plan.of_point[p].is_none() {
+                    if self.t.reported_on[p] == Some(l) && self.plan.of_point[p].is_none() {
                         self.named(l, p);
                     }
                 }

@@ -129,7 +129,7 @@ impl Builder<'_> {
             return (self.line(j, u, Way::Perp(seg)), j);
         }
         let mut w = self.omega(link);
-        if self.nr[link] || w == 0.0 || self.making(Mistake::NormalForgotten) {
+        if self.t.nr[link] || w == 0.0 || self.making(Mistake::NormalForgotten) {
             return (self.line(j, u, Way::Perp(seg)), j);
         }
         let input = self.m().scene.input.link();
@@ -154,7 +154,7 @@ impl Builder<'_> {
     /// a^k = 2·ω×v_rel turned by 90° in the sense of ω (on a rotating guide).
     fn slide(&mut self, kx: usize, u: Vec2, s: Slide, (x, xn): (Point, Name)) -> Ray {
         let way = Way::Guide(s.guide);
-        if self.vel_kind() || self.nr[s.known] {
+        if self.vel_kind() || self.t.nr[s.known] {
             return self.line(kx, u, way);
         }
         let w = self.omega(s.known);
@@ -298,7 +298,7 @@ impl Builder<'_> {
         }
         let w = self.omega(c.link);
         let mut from = j;
-        let turns = !self.nr[c.link] && w != 0.0;
+        let turns = !self.t.nr[c.link] && w != 0.0;
         if turns && !self.making(Mistake::NormalForgotten) {
             let toward = if self.making(Mistake::NormalFromCentre) {
                 1.0

@@ -140,7 +140,7 @@ impl Builder<'_> {
         let sense = if placed == pr.slider { 1.0 } else { -1.0 };
         let u = self.c.pose(pr.guide).dir(pr.line_dir) * sense;
         let (xp, xk) = (name_of(placed), name_of(known));
-        let rotating = !self.nr[known];
+        let rotating = !self.t.nr[known];
         self.step(|| {
             Act::Equation(Eqn::Driven {
                 x: xp,
@@ -167,7 +167,7 @@ impl Builder<'_> {
         } else {
             let w = self.omega(known);
             let mut from = kx;
-            if !self.nr[known] && w != 0.0 {
+            if !self.t.nr[known] && w != 0.0 {
                 from = self.coriolis(kx, u * rate, w, (xp, placed, known), 0.0);
             }
             self.lay_off(
@@ -186,7 +186,7 @@ impl Builder<'_> {
         self.same_rate(placed, known);
         // The reported points of the placed link.
         for &q in &m.links[placed].points {
-            if self.reported_on[q].is_some() && self.plan.of_point[q].is_none() {
+            if self.t.reported_on[q].is_some() && self.plan.of_point[q].is_none() {
                 let carrier = (0..m.links.len())
                     .find(|&l| self.st.include[l] && m.links[l].points.contains(&q));
                 if carrier == Some(placed) {

@@ -66,9 +66,9 @@ fn construct(
     d: &Drafting,
     field: &Field,
     naming: Naming,
-    (plan, tools): (&mut Plan, Tools),
+    (plan, tools): (&mut Plan, &mut Tools),
     guess: Option<(f64, (f64, f64))>,
-) -> Result<(Tools, bool)> {
+) -> Result<bool> {
     use rand::SeedableRng;
     let rng = |k: u64| {
         d.variant
@@ -91,7 +91,7 @@ fn construct(
                 b.again(mu, rng(2));
                 b.record = record;
                 if b.run().is_ok() && field.settles(b.plan, band) {
-                    return Ok((b.finish(), true));
+                    return Ok(true);
                 }
             }
             b.again(1.0, rng(1));
@@ -105,7 +105,7 @@ fn construct(
     b.again(mu, rng(2));
     b.record = record;
     b.run()?;
-    Ok((b.finish(), false))
+    Ok(false)
 }
 
 /// What a build gives besides the numbers.
@@ -132,8 +132,9 @@ pub fn build_plans_in(
 ) -> Result<Plans> {
     let build = |kind, vel| -> Result<Plan> {
         let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
-        let fresh = (&mut plan, Tools::new(st));
-        let (tools, _) = construct(st, c, drive, (kind, vel), &d, field, naming, fresh, None)?;
+        let mut tools = Tools::new(st);
+        let fresh = (&mut plan, &mut tools);
+        construct(st, c, drive, (kind, vel), &d, field, naming, fresh, None)?;
         if naming == Naming::Full {
             record::narrate(&mut plan, &tools.acts, st);
         }
@@ -177,9 +178,10 @@ pub fn build_acceleration(
     let field = Field::default();
     let kind = PlanKind::Acceleration;
     let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
-    let fresh = (&mut plan, Tools::new(st));
+    let mut tools = Tools::new(st);
+    let fresh = (&mut plan, &mut tools);
     let naming = Naming::Full;
-    let (tools, _) = construct(
+    construct(
         st,
         c,
         drive,
@@ -225,7 +227,7 @@ pub struct Kernel {
     /// until the first build).
     velocity: Option<Plan>,
     acceleration: Option<Plan>,
-    /// The builder's buffers (`None` after an error: made again).
+    /// The builder's buffers (made at the first build).
     tools: Option<Tools>,
     /// The last scales of the velocity and acceleration plans, with their
     /// bands ([`scale::band`]).
@@ -269,9 +271,11 @@ impl Kernel {
         let velocity = self
             .velocity
             .get_or_insert_with(|| Plan::empty(PlanKind::Velocity, 1.0, d.delta, m));
-        let tools = self.tools.take().unwrap_or_else(|| Tools::new(st));
+        // (A construction empties what it uses first: an error mid-way
+        // leaves nothing the next one reads.)
+        let tools = self.tools.get_or_insert_with(|| Tools::new(st));
         let kind = (PlanKind::Velocity, None);
-        let (tools, settled) = construct(
+        let settled = construct(
             st,
             c,
             drive,
@@ -285,14 +289,13 @@ impl Kernel {
         self.settled += usize::from(settled);
         keep(&mut self.last[0], velocity.mu);
         if order == Order::Velocity {
-            self.tools = Some(tools);
             return Ok((velocity, None));
         }
         let acceleration = self
             .acceleration
             .get_or_insert_with(|| Plan::empty(PlanKind::Acceleration, 1.0, d.delta, m));
         let kind = (PlanKind::Acceleration, Some(&*velocity));
-        let (tools, settled) = construct(
+        let settled = construct(
             st,
             c,
             drive,
@@ -305,7 +308,6 @@ impl Kernel {
         )?;
         self.settled += usize::from(settled);
         keep(&mut self.last[1], acceleration.mu);
-        self.tools = Some(tools);
         Ok((velocity, Some(acceleration)))
     }
 }

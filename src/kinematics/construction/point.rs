@@ -86,7 +86,7 @@ impl Builder<'_> {
         }
         // The link's known points, in the builder's scratch list (no
         // allocation once it has grown).
-        let mut known = std::mem::take(&mut self.scratch);
+        let mut known = std::mem::take(&mut self.t.scratch);
         known.clear();
         known.extend(
             self.plan
@@ -96,7 +96,7 @@ impl Builder<'_> {
                 .map(|k| (k.local, k.point)),
         );
         let out = self.point_from((link, x, local), id, figure, &known);
-        self.scratch = known;
+        self.t.scratch = known;
         out
     }
 
@@ -130,7 +130,7 @@ impl Builder<'_> {
             learn(self, out);
             return out;
         }
-        if let (true, Some(&(_, with))) = (self.nr[link], known.first()) {
+        if let (true, Some(&(_, with))) = (self.t.nr[link], known.first()) {
             // A translating link: all its points share one plan point.
             let (at, err) = (self.plan.points[with].at, self.plan.points[with].err);
             let out = self.add_point(id, at, err);

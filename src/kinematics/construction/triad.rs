@@ -26,15 +26,15 @@ impl Builder<'_> {
     pub(super) fn triad(&mut self, t: &Triad) -> Result<()> {
         let saved = (
             (*self.plan).clone(),
-            self.normal_of.clone(),
+            self.t.normal_of.clone(),
             self.rng.clone(),
         );
-        let (start, mark) = (self.plan.points.len(), self.acts.len());
+        let (start, mark) = (self.plan.points.len(), self.t.acts.len());
         let mut best: Option<(f64, (usize, usize, usize))> = None;
         let mut first_err = None;
         for pair in PAIRS {
-            (*self.plan, self.normal_of, self.rng) = saved.clone();
-            self.acts.truncate(mark);
+            (*self.plan, self.t.normal_of, self.rng) = saved.clone();
+            self.t.acts.truncate(mark);
             match self.triad_by(t, Some(pair)) {
                 Ok(()) => {
                     let worst = self.plan.points[start..]
@@ -50,8 +50,8 @@ impl Builder<'_> {
                 }
             }
         }
-        (*self.plan, self.normal_of, self.rng) = saved;
-        self.acts.truncate(mark);
+        (*self.plan, self.t.normal_of, self.rng) = saved;
+        self.t.acts.truncate(mark);
         match best {
             Some((_, pair)) => self.triad_by(t, Some(pair)),
             // No pair constructs: the error of the best-angled one.
@@ -169,7 +169,7 @@ impl Builder<'_> {
             let from = if self.vel_kind() || self.omega(t.leashes[n]) == 0.0 {
                 e[n].0
             } else {
-                self.normal_of[t.leashes[n]].unwrap_or(e[n].0)
+                self.t.normal_of[t.leashes[n]].unwrap_or(e[n].0)
             };
             self.measure_rate(t.leashes[n], from, jn_idx, (e[n].1, e[n].2), (jw[n], jn[n]));
         }
