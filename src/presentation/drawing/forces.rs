@@ -81,17 +81,19 @@ pub fn scale_label(mu: f64, lang: Lang) -> Label {
 }
 
 /// Panels in columns on a field: a free body on the left of each, at
-/// most [`BODY_SHARE`] of the column wide, its polygon on the right in
+/// most a share ([`SHARES`]) of the column wide, its polygon on the right in
 /// the rest; each row as high as its tallest free body needs (a polygon
 /// at least [`MIN_POLYGON`] high).
 #[derive(Clone, Copy)]
 struct Columns {
     cols: usize,
     field: (f64, f64),
+    /// The share of a column's width its free bodies may take.
+    share: f64,
 }
 
-/// The share of a column's width its free bodies may take.
-const BODY_SHARE: f64 = 0.6;
+/// The shares of a column's width its free bodies may take.
+const SHARES: [f64; 3] = [0.5, 0.6, 0.7];
 /// The least height of a polygon's box, mm.
 const MIN_POLYGON: f64 = 30.0;
 
@@ -102,7 +104,7 @@ impl Columns {
     /// The field of the free bodies as [`fill`] sees it: the widest body
     /// against the column's share, the rows' heights against the field's.
     fn body_field(&self) -> (f64, f64) {
-        (BODY_SHARE * self.col_width(), self.field.1)
+        (self.share * self.col_width(), self.field.1)
     }
     /// Per row, its height (caption included).
     fn rows(&self, bodies: &[Rect]) -> Vec<f64> {
@@ -194,8 +196,15 @@ pub fn figure(
     // One column, or two: whichever draws the free bodies larger.
     let bounds = |cs: &Vec<Canvas>| cs.iter().map(|c| c.bounds()).collect::<Vec<Rect>>();
     let mut best: Option<(Columns, f64, Vec<Canvas>)> = None;
-    for cols in [1, 2].into_iter().filter(|&c| c <= plans.len()) {
-        let layout = Columns { cols, field };
+    // One column or two, the free bodies taking half to 70 % of a
+    // column: the layout that draws them largest (standard μ_l are up to
+    // ×2 apart, so a little more room can halve μ_l).
+    let layouts = [1, 2]
+        .into_iter()
+        .filter(|&c| c <= plans.len())
+        .flat_map(|cols| SHARES.map(|share| (cols, share)));
+    for (cols, share) in layouts {
+        let layout = Columns { cols, field, share };
         let f = layout.body_field();
         if f.0 <= GAP || f.1 <= CAPTION + GAP {
             continue;
