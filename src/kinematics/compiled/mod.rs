@@ -1,0 +1,341 @@
+//! Route (a) compiled per mechanism: the positions and the closed vector
+//! contours of [`crate::kinematics::positions`] and
+//! [`crate::kinematics::analytic::contour`], with everything that does
+//! not depend on the position worked out once, at load.
+//!
+//! [`Program::new`] walks the structure's stages once and turns them into
+//! two flat lists of typed steps over link and input indices: one that
+//! places the links ([`Place`]: a crank, a slider, each kind of dyad, a
+//! class III group) and one that finds their rates ([`Rate`]: the frame,
+//! the inputs, each group's contours). What the interpreted route looks
+//! up or recomputes at every position is a constant of the step: a point's
+//! local coordinates on its links, a group's link lengths, the angle and
+//! length of the segment a link is posed by, the sine and cosine of a
+//! guide's fixed angle, which links a contour reads as known, the order in
+//! which its walk reaches its links. A position then runs the steps on a
+//! [`State`] whose buffers are made once: no maps, no allocation.
+//!
+//! The arithmetic is the interpreted route's, operation for operation, so
+//! the numbers are the same to the bit (`tests/compiled.rs` checks every
+//! fixture and every stress scene over their sweeps, the errors too). A
+//! tolerance that only decides a failure (a tangency accepted to the
+//! rounding of its numbers) is not computed on the way: where a step
+//! cannot place its group by its plain closed form it hands the group to
+//! the interpreted solver, which accepts the tangency or gives the same
+//! error as the interpreted route. The singular contour is refused by the
+//! same test ([`crate::accuracy::Accuracy::min_contour_determinant`]).
+//!
+//! The steps are made and run by kind: [`place`] holds the steps that
+//! place the links (the closed form of each kind of dyad with its
+//! constants), [`rates`] the compiled contours and the steps of the rates,
+//! [`dyad3`] a dyad's contour written out in scalars; this module holds
+//! the [`Program`], its [`State`] and the public calls.
+
+mod dyad3;
+mod place;
+mod rates;
+
+use crate::error::Result;
+use crate::geom::Pose;
+use crate::kinematics::analytic::contour::{driven_pair, invert_lu, invert3};
+use crate::kinematics::analytic::{Coords, Drive, Drives, Motion, Order};
+use crate::kinematics::positions::{self, Branches, Configuration, sketch_input};
+use crate::model::mechanism::Mechanism;
+use crate::model::scene::InputSpec;
+use crate::model::structure::{AssurGroup, InputRole, Stage, Structure};
+use dyad3::Dyad3;
+use place::{Place, dyad_place};
+use rates::{DYAD_CONTOURS, Rate, TRIAD_CONTOURS, compile_contour};
+
+/// Route (a) of one mechanism, compiled: the positions and the contours
+/// as flat lists of typed steps ([`crate::kinematics::compiled`]).
+#[derive(Clone, Debug)]
+pub struct Program<'a> {
+    m: &'a Mechanism,
+    s: &'a Structure,
+    place: Vec<Place>,
+    rate: Vec<Rate>,
+    /// The largest step of each input over which class III groups are
+    /// tracked; empty when the program solves none.
+    triad_step: Vec<f64>,
+    /// The sketch's pose of each class III group's base, and its branches.
+    branches: Branches,
+}
+
+/// The buffers one sweep of a [`Program`] works in: the poses and the
+/// motions of the links (the links the program does not solve stay
+/// `None`), the tracked class III groups and the last input coordinates.
+#[derive(Clone, Debug)]
+pub struct State {
+    pub config: Configuration,
+    pub motion: Vec<Option<Motion>>,
+    triad_pose: Vec<Pose>,
+    last_q: Coords,
+}
+
+impl<'a> Program<'a> {
+    /// Compile the positions and route (a) of the groups `need` asks for,
+    /// on the branches the sketch shows (refused as
+    /// [`crate::kinematics::positions::PositionSolver::new`] refuses).
+    pub fn new(m: &'a Mechanism, s: &'a Structure, need: &[bool]) -> Result<Program<'a>> {
+        let branches = Branches::from_sketch(m, s)?;
+        let frame = m.frame();
+        let mut solved = vec![false; m.links.len()];
+        solved[frame] = true;
+        let mut place = Vec::new();
+        let mut rate = vec![Rate::Frame];
+        let mut triads = false;
+        for &st in &s.stages {
+            let gi = match st {
+                Stage::Input(i) => {
+                    match s.roles[i] {
+                        InputRole::Frame => {
+                            let (p, r) = input_steps(m, i);
+                            solved[m.scene.input_at(i).link()] = true;
+                            place.push(p);
+                            rate.push(r);
+                        }
+                        InputRole::Chained { known, pair } => {
+                            let pr = &m.prismatics[pair];
+                            let other = if pr.guide == known {
+                                pr.slider
+                            } else {
+                                pr.guide
+                            };
+                            if solved[known] {
+                                solved[other] = true;
+                                let (input, known) = (i, known);
+                                place.push(Place::Chained {
+                                    input,
+                                    known,
+                                    pair,
+                                    other,
+                                });
+                                rate.push(Rate::Chained {
+                                    input,
+                                    known,
+                                    pair,
+                                    other,
+                                });
+                            }
+                        }
+                        InputRole::InGroup { .. } => {}
+                    }
+                    continue;
+                }
+                Stage::Group(gi) => gi,
+            };
+            if !need[gi] {
+                continue;
+            }
+            let g = &s.groups[gi];
+            let sign = branches.sign[gi];
+            match g {
+                AssurGroup::Dyad(d) => {
+                    place.push(dyad_place(m, gi, d, sign));
+                    let driven =
+                        driven_pair(d).map(|(conn, input, on)| (conn, input, on.then_some(0)));
+                    let mut links = [0usize; 3];
+                    links[..2].copy_from_slice(&d.links);
+                    let n = match d.cylinder {
+                        Some(cy) => {
+                            links[2] = cy.other;
+                            3
+                        }
+                        None => 2,
+                    };
+                    let g = compile_contour::<3>(
+                        m,
+                        gi,
+                        [d.ext1, d.mid, d.ext2],
+                        DYAD_CONTOURS,
+                        &[(d.ext1.from, d.ext2.to)],
+                        &links[..n],
+                        driven,
+                        &solved,
+                        invert3,
+                    );
+                    rate.push(match Dyad3::of(&g) {
+                        Some(d3) => Rate::Dyad3(Box::new(d3)),
+                        None => Rate::Dyad(Box::new(g)),
+                    });
+                }
+                AssurGroup::Triad(t) => {
+                    triads = true;
+                    place.push(Place::Triad { group: gi });
+                    rate.push(Rate::Triad(Box::new(compile_contour::<6>(
+                        m,
+                        gi,
+                        [t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
+                        TRIAD_CONTOURS,
+                        &[
+                            (t.ext[0].from, t.ext[1].from),
+                            (t.ext[0].from, t.ext[2].from),
+                        ],
+                        &[t.leashes[0], t.leashes[1], t.leashes[2], t.base],
+                        None,
+                        &solved,
+                        invert_lu,
+                    ))));
+                }
+            }
+            for l in g.links() {
+                solved[l] = true;
+            }
+        }
+        let triad_step = if triads {
+            (0..m.scene.input_count())
+                .map(|i| positions::triad_step(m, s, need, i))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Ok(Program {
+            m,
+            s,
+            place,
+            rate,
+            triad_step,
+            branches,
+        })
+    }
+
+    /// A state to run this program in: the sketch's positions tracked from.
+    pub fn state(&self) -> State {
+        let n = self.m.links.len();
+        State {
+            config: Configuration {
+                poses: vec![None; n],
+            },
+            motion: vec![None; n],
+            triad_pose: self.branches.triad_pose.clone(),
+            last_q: sketch_input(self.m),
+        }
+    }
+
+    /// The number of steps (positions and rates).
+    pub fn len(&self) -> usize {
+        self.place.len() + self.rate.len()
+    }
+
+    /// Whether the program has no steps (never: the frame's rate is one).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Positions at the input coordinate `q` (a single input), reached
+    /// continuously from the last solved position, as
+    /// [`crate::kinematics::positions::PositionSolver::solve`].
+    #[inline]
+    pub fn positions(&self, st: &mut State, q: f64) -> Result<()> {
+        self.positions_coords(st, Coords::one(q))
+    }
+
+    /// Positions at the input coordinates `q`, reached continuously from
+    /// the last solved position (class III groups tracked in small
+    /// steps), as [`crate::kinematics::positions::PositionSolver::solve_coords`].
+    pub fn positions_coords(&self, st: &mut State, q: Coords) -> Result<()> {
+        if !self.triad_step.is_empty() {
+            let span = positions::span(self.m, &st.last_q, &q);
+            let n = span
+                .iter()
+                .enumerate()
+                .map(|(i, d)| (d.abs() / self.triad_step[i]).ceil())
+                .fold(0.0, f64::max) as usize;
+            for k in 1..n {
+                let mut qk = st.last_q;
+                for (x, d) in qk.iter_mut().zip(span.iter()) {
+                    *x += d * k as f64 / n as f64;
+                }
+                self.place(st, &qk)?;
+            }
+        }
+        self.place(st, &q)?;
+        st.last_q = q;
+        Ok(())
+    }
+
+    /// Positions at `q` from the current tracked state, without stepping,
+    /// as [`crate::kinematics::positions::PositionSolver::solve_at_coords`].
+    pub fn positions_at(&self, st: &mut State, q: Coords) -> Result<()> {
+        self.place(st, &q)
+    }
+
+    /// Velocities (and accelerations when `order` asks) of every solved
+    /// link at the positions in `st`, as
+    /// [`crate::kinematics::analytic::contour::solve`] gives them.
+    pub fn rates(&self, st: &mut State, drive: impl Into<Drives>, order: Order) -> Result<()> {
+        self.rates_of(st, &drive.into(), order)
+    }
+
+    /// Positions at `drive`'s coordinates (tracked from the last) and
+    /// their rates: one step of a sweep.
+    pub fn solve(&self, st: &mut State, drive: impl Into<Drives>, order: Order) -> Result<()> {
+        let drives: Drives = drive.into();
+        self.positions_coords(st, drives.coords())?;
+        self.rates_of(st, &drives, order)
+    }
+
+    /// [`Program::solve`] of a mechanism with one input: the same steps,
+    /// without gathering the inputs into [`Drives`] and [`Coords`].
+    #[inline]
+    pub fn solve_one(&self, st: &mut State, drive: Drive, order: Order) -> Result<()> {
+        assert_eq!(self.m.scene.input_count(), 1, "a mechanism with one input");
+        if self.triad_step.is_empty() {
+            self.place(st, &[drive.q])?;
+            st.last_q = Coords::one(drive.q);
+        } else {
+            self.positions_coords(st, Coords::one(drive.q))?;
+        }
+        self.rates_of(st, &[drive], order)
+    }
+}
+
+/// The steps of an input on the frame: its place and its rate.
+fn input_steps(m: &Mechanism, i: usize) -> (Place, Rate) {
+    match *m.scene.input_at(i) {
+        InputSpec::Crank { link, pivot, .. } => {
+            let pts = &m.links[link].points;
+            let other = if pts[0] == pivot { pts[1] } else { pts[0] };
+            let w = m.local(link, other) - m.local(link, pivot);
+            let at = m.links[m.frame()]
+                .sketch_pose
+                .apply(m.local(m.frame(), pivot));
+            (
+                Place::Crank {
+                    input: i,
+                    link,
+                    at,
+                    local: m.local(link, pivot),
+                    offset: w.atan2(),
+                },
+                Rate::Crank {
+                    input: i,
+                    link,
+                    pivot: m.local(m.frame(), pivot),
+                },
+            )
+        }
+        InputSpec::Slider { link, pair, .. } => {
+            let pr = &m.prismatics[pair];
+            let line = pr.line(&Pose::IDENTITY);
+            let (sin, cos) = pr.delta.sin_cos();
+            (
+                Place::Slider {
+                    input: i,
+                    link,
+                    q0: positions::sketch_slider_ref(m, pair),
+                    dir: line.dir,
+                    local: pr.slider_local,
+                    delta: pr.delta,
+                    turn: (cos, sin),
+                },
+                Rate::Slider {
+                    input: i,
+                    link,
+                    dir: pr.line_dir,
+                },
+            )
+        }
+    }
+}

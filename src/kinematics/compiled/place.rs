@@ -1,0 +1,390 @@
+//! The position steps of a compiled [`Program`]: a point of a link and a
+//! link's posing segment with their constants worked out at load, the
+//! closed form of each kind of dyad (RRR, RRP, RPR) with its lengths and
+//! angles, the [`Place`] step list, and [`Program`]'s running of it. What
+//! a plain closed form cannot place (a tangency, PRP and RPP, a cylinder's
+//! dyad) goes to the interpreted solver, so the numbers and the errors are
+//! those of [`crate::kinematics::positions`].
+
+use super::{Program, State};
+use crate::accuracy::ACCURACY;
+use crate::error::Result;
+use crate::geom::{Line, Pose, circle_circle, circle_line};
+use crate::kinematics::positions::{
+    self, Configuration, dyad_error, pair_of, point_of, triad_error,
+};
+use crate::model::mechanism::Mechanism;
+use crate::model::structure::{AssurGroup, DyadKind};
+use kurbo::{Point, Vec2};
+
+/// The angle and the length of a constant local segment (the one a link
+/// is posed by): `atan2` and `hypot` done once.
+#[derive(Clone, Copy, Debug)]
+struct Segment {
+    v: Vec2,
+    angle: f64,
+    len: f64,
+}
+
+impl Segment {
+    fn new(v: Vec2) -> Segment {
+        Segment {
+            v,
+            angle: v.atan2(),
+            len: v.hypot(),
+        }
+    }
+    /// The pose that puts local point `lp` at `at_p` and turns this
+    /// segment (from `lp`) onto `at_q − at_p`: the interpreted
+    /// `set_by_two_local` with its constant half done.
+    #[inline(always)]
+    fn pose(&self, lp: Vec2, at_p: Point, at_q: Point) -> Pose {
+        let (w, l) = (at_q - at_p, self.v);
+        let angle = w.atan2() - self.angle;
+        let norm = w.hypot() * self.len;
+        let turn = (l.dot(w) / norm, l.cross(w) / norm);
+        Pose::through_turned(at_p, lp, angle, turn)
+    }
+}
+
+/// A point of a link: the link and the point's local coordinates on it.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct On {
+    link: usize,
+    local: Vec2,
+}
+
+impl On {
+    pub(super) fn new(m: &Mechanism, link: usize, p: usize) -> On {
+        On {
+            link,
+            local: m.local(link, p),
+        }
+    }
+    #[inline(always)]
+    pub(super) fn world(&self, c: &Configuration) -> Point {
+        c.pose(self.link).apply(self.local)
+    }
+}
+
+/// A class II group RRR: the circles about B (on K1) and D (on K2) meet
+/// at C.
+#[derive(Clone, Debug)]
+pub(super) struct Rrr {
+    group: usize,
+    sign: f64,
+    links: [usize; 2],
+    b: On,
+    d: On,
+    /// B and C on link 1, D and C on link 2.
+    b1: Vec2,
+    d2: Vec2,
+    seg1: Segment,
+    seg2: Segment,
+}
+
+/// A class II group RRP: the circle about B meets the guide line.
+#[derive(Clone, Debug)]
+pub(super) struct Rrp {
+    group: usize,
+    sign: f64,
+    links: [usize; 2],
+    b: On,
+    b1: Vec2,
+    seg1: Segment,
+    r1: f64,
+    /// The known link K2 of the guide pair, and whether it is the guide.
+    k2: usize,
+    k2_guide: bool,
+    delta: f64,
+    /// The point of K2 the line is drawn from (the line's point on the
+    /// guide, the slider's point on the slider) and the offset of C from
+    /// the other's in link 2 (turned by link 2's angle).
+    anchor: Vec2,
+    offset: Vec2,
+    line_dir: Vec2,
+    /// C on link 2.
+    c2: Vec2,
+}
+
+/// A class II group RPR: the rocking guide's angle in closed form.
+#[derive(Clone, Debug)]
+pub(super) struct Rpr {
+    group: usize,
+    sign: f64,
+    guide: usize,
+    slider: usize,
+    /// The guide's and the slider's pins on their known links, and on
+    /// the guide and the slider.
+    jg: On,
+    js: On,
+    jg_local: Vec2,
+    js_local: Vec2,
+    h: f64,
+    alpha: f64,
+    delta: f64,
+}
+
+/// One step of the positions.
+#[derive(Clone, Debug)]
+pub(super) enum Place {
+    /// A crank about its pivot: its pose through the pivot at `at`
+    /// (`local` on the crank), turned by the input angle less `offset`.
+    Crank {
+        input: usize,
+        link: usize,
+        at: Point,
+        local: Vec2,
+        offset: f64,
+    },
+    /// A slider on a guide of the frame: its point at `q0 + dir·s`, its
+    /// angle `delta` (cosine and sine `turn`).
+    Slider {
+        input: usize,
+        link: usize,
+        q0: Point,
+        dir: Vec2,
+        local: Vec2,
+        delta: f64,
+        turn: (f64, f64),
+    },
+    /// A driving slider on a moving guide: pair `pair` places `other`
+    /// from `known`.
+    Chained {
+        input: usize,
+        known: usize,
+        pair: usize,
+        other: usize,
+    },
+    Rrr(Box<Rrr>),
+    Rrp(Box<Rrp>),
+    Rpr(Box<Rpr>),
+    /// Any other dyad (PRP, RPP, a cylinder's): the interpreted closed form.
+    Dyad {
+        group: usize,
+    },
+    /// A class III group: Newton from its tracked pose.
+    Triad {
+        group: usize,
+    },
+}
+
+impl Program<'_> {
+    /// [`Program::positions_at`], the coordinates by reference.
+    pub(super) fn place(&self, st: &mut State, q: &[f64]) -> Result<()> {
+        let (m, s) = (self.m, self.s);
+        let c = &mut st.config;
+        c.poses[m.frame()] = Some(Pose::IDENTITY);
+        for step in &self.place {
+            match step {
+                Place::Crank {
+                    input,
+                    link,
+                    at,
+                    local,
+                    offset,
+                } => c.poses[*link] = Some(Pose::through(*at, *local, q[*input] - offset)),
+                Place::Slider {
+                    input,
+                    link,
+                    q0,
+                    dir,
+                    local,
+                    delta,
+                    turn,
+                } => {
+                    c.poses[*link] = Some(Pose::through_turned(
+                        *q0 + *dir * q[*input],
+                        *local,
+                        *delta,
+                        *turn,
+                    ))
+                }
+                Place::Chained {
+                    input,
+                    known,
+                    pair,
+                    other,
+                } => {
+                    let kp = c.pose(*known);
+                    c.poses[*other] =
+                        Some(positions::place_across(m, *pair, *known, &kp, q[*input]));
+                }
+                Place::Rrr(g) => {
+                    let (b, dd) = (g.b.world(c), g.d.world(c));
+                    match circle_circle(b, g.seg1.len, dd, g.seg2.len, g.sign, -1.0) {
+                        Some(x) => {
+                            c.poses[g.links[0]] = Some(g.seg1.pose(g.b1, b, x));
+                            c.poses[g.links[1]] = Some(g.seg2.pose(g.d2, dd, x));
+                        }
+                        None => self.dyad(c, g.group, q)?,
+                    }
+                }
+                Place::Rrp(g) => {
+                    let b = g.b.world(c);
+                    let kp = c.pose(g.k2);
+                    let th2 = if g.k2_guide {
+                        kp.angle + g.delta
+                    } else {
+                        kp.angle - g.delta
+                    };
+                    let (sin, cos) = th2.sin_cos();
+                    let rot = |v: Vec2| Vec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y);
+                    let line = if g.k2_guide {
+                        Line {
+                            point: kp.apply(g.anchor) + rot(g.offset),
+                            dir: kp.dir(g.line_dir),
+                        }
+                    } else {
+                        Line {
+                            point: kp.apply(g.anchor) + rot(g.offset),
+                            dir: rot(g.line_dir),
+                        }
+                    };
+                    match circle_line(b, g.r1, &line, g.sign, -1.0) {
+                        Some(x) => {
+                            c.poses[g.links[0]] = Some(g.seg1.pose(g.b1, b, x));
+                            c.poses[g.links[1]] =
+                                Some(Pose::through_turned(x, g.c2, th2, (cos, sin)));
+                        }
+                        None => self.dyad(c, g.group, q)?,
+                    }
+                }
+                Place::Rpr(g) => {
+                    let (jg, js) = (g.jg.world(c), g.js.world(c));
+                    let w = js - jg;
+                    let dist = w.hypot();
+                    let sn = g.h / dist;
+                    // Above a bound of the tolerance the interpreted form
+                    // judges by (its rounding of the group's numbers),
+                    // clear of every failure it tests.
+                    let bound = 2.0
+                        * ACCURACY.tangency_roundings
+                        * f64::EPSILON
+                        * (g.h.abs() + jg.x.abs() + jg.y.abs() + js.x.abs() + js.y.abs());
+                    if sn.is_finite() && g.h.abs() - dist <= 0.0 && dist > bound {
+                        let sn = sn.clamp(-1.0, 1.0);
+                        let gamma_minus_beta = sn.atan2(g.sign * (1.0 - sn * sn).max(0.0).sqrt());
+                        let psi = w.atan2() - gamma_minus_beta - g.alpha;
+                        c.poses[g.guide] = Some(Pose::through(jg, g.jg_local, psi));
+                        c.poses[g.slider] = Some(Pose::through(js, g.js_local, psi + g.delta));
+                    } else {
+                        self.dyad(c, g.group, q)?;
+                    }
+                }
+                Place::Dyad { group } => self.dyad(c, *group, q)?,
+                Place::Triad { group } => {
+                    let AssurGroup::Triad(t) = &s.groups[*group] else {
+                        unreachable!("a class III group")
+                    };
+                    let pose = positions::solve_triad(m, t, st.triad_pose[*group], c)
+                        .map_err(|why| triad_error(m, s, *group, q, why))?;
+                    st.triad_pose[*group] = pose;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Dyad `gi` by the interpreted closed form (its tolerances, its errors).
+    #[cold]
+    fn dyad(&self, c: &mut Configuration, gi: usize, q: &[f64]) -> Result<()> {
+        let (m, s) = (self.m, self.s);
+        let AssurGroup::Dyad(d) = &s.groups[gi] else {
+            unreachable!("a class II group")
+        };
+        let cyl = d.cylinder.map(|cy| (cy, q[cy.input]));
+        positions::solve_dyad(m, d, cyl, self.branches.sign[gi], c)
+            .map_err(|why| dyad_error(m, s, gi, q, why))
+    }
+}
+
+/// The step that places dyad `gi`: its kind's closed form with its
+/// constants, or the interpreted one (PRP, RPP, a cylinder's).
+pub(super) fn dyad_place(
+    m: &Mechanism,
+    gi: usize,
+    d: &crate::model::structure::Dyad,
+    sign: f64,
+) -> Place {
+    if d.cylinder.is_some() {
+        return Place::Dyad { group: gi };
+    }
+    let [l1, l2] = d.links;
+    match d.kind {
+        DyadKind::Rrr => {
+            let (pb, pc, pd) = (
+                point_of(d.ext1.joint),
+                point_of(d.mid.joint),
+                point_of(d.ext2.joint),
+            );
+            let (b1, c1) = (m.local(l1, pb), m.local(d.mid.from, pc));
+            let (d2, c2) = (m.local(l2, pd), m.local(d.mid.to, pc));
+            Place::Rrr(Box::new(Rrr {
+                group: gi,
+                sign,
+                links: d.links,
+                b: On::new(m, d.ext1.from, pb),
+                d: On::new(m, d.ext2.to, pd),
+                b1,
+                d2,
+                seg1: Segment::new(c1 - b1),
+                seg2: Segment::new(c2 - d2),
+            }))
+        }
+        DyadKind::Rrp => {
+            let (pb, pc) = (point_of(d.ext1.joint), point_of(d.mid.joint));
+            let k = pair_of(d.ext2.joint);
+            let k2 = d.ext2.to;
+            let pr = &m.prismatics[k];
+            let x = m.local(l2, pc);
+            let k2_guide = pr.guide == k2;
+            let (anchor, offset) = if k2_guide {
+                (pr.line_point, x - pr.slider_local)
+            } else {
+                (pr.slider_local, x - pr.line_point)
+            };
+            let (b1, c1) = (m.local(l1, pb), m.local(d.mid.from, pc));
+            Place::Rrp(Box::new(Rrp {
+                group: gi,
+                sign,
+                links: d.links,
+                b: On::new(m, d.ext1.from, pb),
+                b1,
+                seg1: Segment::new(c1 - b1),
+                r1: (c1 - b1).hypot(),
+                k2,
+                k2_guide,
+                delta: pr.delta,
+                anchor,
+                offset,
+                line_dir: pr.line_dir,
+                c2: x,
+            }))
+        }
+        DyadKind::Rpr => {
+            let rg = positions::rocking_guide(m, d);
+            let pin = |p: usize| {
+                if p == point_of(d.ext1.joint) {
+                    On::new(m, d.ext1.from, p)
+                } else {
+                    On::new(m, d.ext2.to, p)
+                }
+            };
+            Place::Rpr(Box::new(Rpr {
+                group: gi,
+                sign,
+                guide: rg.guide,
+                slider: rg.slider,
+                jg: pin(rg.pin_guide),
+                js: pin(rg.pin_slider),
+                jg_local: m.local(rg.guide, rg.pin_guide),
+                js_local: m.local(rg.slider, rg.pin_slider),
+                h: rg.h,
+                alpha: rg.alpha,
+                delta: rg.delta,
+            }))
+        }
+        DyadKind::Prp | DyadKind::Rpp => Place::Dyad { group: gi },
+    }
+}

@@ -1,0 +1,114 @@
+//! What a label is and how wide text is: the [`Label`] (letters, a
+//! subscript, a superscript over it, a tail, further names) and the
+//! estimated widths of glyphs and of runs of the lecture's notation, which
+//! both the placing of labels and the writing of SVG measure text by, so
+//! that a label's box and its drawn text agree.
+
+use crate::presentation::notation::{Pos, Run};
+
+/// Advance width of a glyph of DejaVu Sans in em, a little generous.
+pub(super) fn char_width(c: char) -> f64 {
+    match c {
+        'm' | 'w' | 'M' | 'W' | 'ω' | 'Ω' | '—' => 1.0,
+        'i' | 'l' | 'j' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.36,
+        'f' | 't' | 'r' | ' ' | '(' | ')' | '/' => 0.46,
+        c if c.is_uppercase() => 0.8,
+        _ => 0.66,
+    }
+}
+
+/// Estimated width in mm of runs of text at font size `size`: a
+/// superscript and the subscript right after it stand one above the
+/// other, so the wider of the two counts.
+pub fn runs_width(rs: &[Run], size: f64) -> f64 {
+    let w = |s: &str| s.chars().map(char_width).sum::<f64>();
+    let mut total = 0.0;
+    let mut i = 0;
+    while i < rs.len() {
+        let (p, t) = &rs[i];
+        match p {
+            Pos::Base => total += size * w(t),
+            Pos::Sub => total += 0.7 * size * w(t),
+            Pos::Sup => {
+                let mut x = 0.7 * size * w(t);
+                if let Some((Pos::Sub, u)) = rs.get(i + 1) {
+                    x = x.max(0.7 * size * w(u));
+                    i += 1;
+                }
+                total += x;
+            }
+        }
+        i += 1;
+    }
+    total
+}
+
+/// A label: letters and a subscript.
+#[derive(Clone, Debug)]
+pub struct Label {
+    pub base: String,
+    pub sub: String,
+    /// A superscript over the subscript (R^τ_12: the component of a
+    /// reaction); empty on most labels.
+    pub sup: String,
+    /// Plain text after the subscript.
+    pub tail: String,
+    /// Further names sharing the label, each with its subscript
+    /// (", o₁, o₂").
+    pub more: Vec<(String, String)>,
+}
+
+impl Label {
+    /// A bare number: a link's or a position's.
+    pub(super) fn is_number(&self) -> bool {
+        !self.base.is_empty()
+            && self.base.chars().all(|c| c.is_ascii_digit())
+            && self.sub.is_empty()
+            && self.sup.is_empty()
+            && self.tail.is_empty()
+            && self.more.is_empty()
+    }
+
+    pub fn new(base: impl Into<String>, sub: impl Into<String>) -> Label {
+        Label {
+            base: base.into(),
+            sub: sub.into(),
+            sup: String::new(),
+            tail: String::new(),
+            more: Vec::new(),
+        }
+    }
+    /// Another name at the same place: "p_v, o₁".
+    pub fn and(mut self, base: impl Into<String>, sub: impl Into<String>) -> Label {
+        self.more.push((base.into(), sub.into()));
+        self
+    }
+    /// The superscript stacked over the subscript: R^τ_12.
+    pub fn with_sup(mut self, sup: impl Into<String>) -> Label {
+        self.sup = sup.into();
+        self
+    }
+    pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
+        self.tail = tail.into();
+        self
+    }
+    /// How much higher than a plain label's its box reaches (mm): a
+    /// superscript stands above the capitals.
+    pub fn rise(&self, size: f64) -> f64 {
+        if self.sup.is_empty() {
+            0.0
+        } else {
+            0.55 * size
+        }
+    }
+    /// Estimated width in mm at font size `size` (DejaVu Sans: ~0.6 em).
+    pub fn width(&self, size: f64) -> f64 {
+        let w = |s: &str| s.chars().map(char_width).sum::<f64>();
+        let more: f64 = self
+            .more
+            .iter()
+            .map(|(b, s)| size * (w(", ") + w(b)) + 0.7 * size * w(s))
+            .sum();
+        size * (w(&self.base) + w(&self.tail)) + 0.7 * size * w(&self.sub).max(w(&self.sup)) + more
+    }
+}

@@ -1,0 +1,306 @@
+//! The writing of a [`Canvas`] as SVG: each primitive as its element (the
+//! lines with their ГОСТ 2.303 weights and dash arrays, the labels and the
+//! lecture's notation as tspans), every number through one formatter
+//! ([`fmt`]: 0.01 mm, no trailing zeros, no "-0") and every text through
+//! [`xml`], so the output is byte-stable.
+
+use super::label::char_width;
+use super::{ARROW_WIDTH, BOLD, Canvas, Class, MAIN, Prim, THIN};
+use crate::presentation::notation::{Pos, Run};
+use kurbo::{Point, Vec2};
+use std::fmt::Write as _;
+
+/// Numbers as 0.01 mm, no trailing zeros, no "-0": byte-stable output.
+pub fn fmt(x: f64) -> String {
+    let r = (x * 100.0).round() / 100.0;
+    let s = format!("{r:.2}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// How far a subscript sinks and a superscript rises, in font sizes:
+/// apart enough that a superscript stands clear above the subscript under
+/// it (a^k over B3B2).
+const SUB_SHIFT: f64 = 0.24;
+const SUP_SHIFT: f64 = 0.48;
+
+/// Runs of text as SVG tspans: a subscript right after a superscript
+/// moves back under it, and what follows starts after the wider of them.
+fn runs_svg(rs: &[Run], size: f64) -> String {
+    let small = 0.7 * size;
+    let w = |s: &str| small * s.chars().map(char_width).sum::<f64>();
+    let mut out = String::new();
+    let mut pending_dx = 0.0;
+    let mut i = 0;
+    while i < rs.len() {
+        let (p, t) = &rs[i];
+        let dx = if pending_dx > 0.0 {
+            format!(r#" dx="{}""#, fmt(pending_dx))
+        } else {
+            String::new()
+        };
+        pending_dx = 0.0;
+        match p {
+            Pos::Base => {
+                let _ = write!(out, "<tspan{dx}>{}</tspan>", xml(t));
+            }
+            Pos::Sub => {
+                let _ = write!(
+                    out,
+                    r#"<tspan{dx} baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                    fmt(-SUB_SHIFT * size),
+                    fmt(small),
+                    xml(t)
+                );
+            }
+            Pos::Sup => {
+                let _ = write!(
+                    out,
+                    r#"<tspan{dx} baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                    fmt(SUP_SHIFT * size),
+                    fmt(small),
+                    xml(t)
+                );
+                if let Some((Pos::Sub, u)) = rs.get(i + 1) {
+                    let (ws, wu) = (w(t), w(u));
+                    let _ = write!(
+                        out,
+                        r#"<tspan dx="{}" baseline-shift="{}" font-size="{}">{}</tspan>"#,
+                        fmt(-ws),
+                        fmt(-SUB_SHIFT * size),
+                        fmt(small),
+                        xml(u)
+                    );
+                    pending_dx = (ws - wu).max(0.0);
+                    i += 1;
+                }
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
+impl Canvas {
+    /// Write the primitives as SVG elements, drawing coordinates mapped to
+    /// the page by x ↦ ox + x, y ↦ oy − y.
+    pub fn write(&self, out: &mut String, ox: f64, oy: f64) {
+        let px = |p: Point| format!("{} {}", fmt(ox + p.x), fmt(oy - p.y));
+        for p in &self.prims {
+            match p {
+                Prim::Seg { a, b, class, id } => {
+                    let w = match class {
+                        Class::Thin | Class::Hatch => THIN,
+                        Class::Bold => BOLD,
+                        Class::Main | Class::Vector => MAIN,
+                    };
+                    let cls = match class {
+                        Class::Main => "main",
+                        Class::Vector => "vector",
+                        Class::Thin => "thin",
+                        Class::Hatch => "hatch",
+                        Class::Bold => "bold",
+                    };
+                    // A student's marks (check --svg) in red.
+                    let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
+                        "#c00000"
+                    } else {
+                        "black"
+                    };
+                    let id = id_attr(id);
+                    let _ = writeln!(
+                        out,
+                        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="{color}" stroke-width="{}" stroke-linecap="round"/>"#,
+                        fmt(ox + a.x),
+                        fmt(oy - a.y),
+                        fmt(ox + b.x),
+                        fmt(oy - b.y),
+                        fmt(w)
+                    );
+                }
+                Prim::Poly { pts, fill, stroke } => {
+                    let d: Vec<String> = pts.iter().map(|q| px(*q)).collect();
+                    let stroke = stroke_attr(*stroke);
+                    let _ = writeln!(
+                        out,
+                        r#"<polygon points="{}" fill="{fill}"{stroke}/>"#,
+                        d.join(" ")
+                    );
+                }
+                Prim::Circle {
+                    c,
+                    r,
+                    fill,
+                    stroke,
+                    id,
+                } => {
+                    let id = id_attr(id);
+                    let stroke = stroke_attr(*stroke);
+                    let _ = writeln!(
+                        out,
+                        r#"<circle{id} cx="{}" cy="{}" r="{}" fill="{fill}"{stroke}/>"#,
+                        fmt(ox + c.x),
+                        fmt(oy - c.y),
+                        fmt(*r)
+                    );
+                }
+                Prim::Path { pts, line } => {
+                    let mut d = String::new();
+                    for (i, q) in pts.iter().enumerate() {
+                        d += if i == 0 { "M" } else { " L" };
+                        d += &px(*q);
+                    }
+                    let len: f64 = pts.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+                    let dash = line.dash_array(len);
+                    let dash = if dash.is_empty() {
+                        String::new()
+                    } else {
+                        let v: Vec<String> = dash.iter().map(|x| fmt(*x)).collect();
+                        format!(r#" stroke-dasharray="{}""#, v.join(" "))
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<path class="{}" d="{d}" fill="none" stroke="black" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
+                        line.class(),
+                        fmt(line.width())
+                    );
+                }
+                Prim::Arrow { tip, dir } => {
+                    let back = *tip - *dir;
+                    let n = Vec2::new(-dir.y, dir.x) * ARROW_WIDTH;
+                    let _ = writeln!(
+                        out,
+                        r#"<polygon class="arrow" points="{} {} {}" fill="black"/>"#,
+                        px(*tip),
+                        px(back + n),
+                        px(back - n)
+                    );
+                }
+                Prim::Arc { c, r, a0, sweep } => {
+                    let p0 = *c + Vec2::from_angle(*a0) * *r;
+                    let p1 = *c + Vec2::from_angle(a0 + sweep) * *r;
+                    // In page coordinates y is flipped: a CCW sweep is sweep-flag 0.
+                    let large = if sweep.abs() > std::f64::consts::PI {
+                        1
+                    } else {
+                        0
+                    };
+                    let flag = if *sweep > 0.0 { 0 } else { 1 };
+                    let _ = writeln!(
+                        out,
+                        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
+                        px(p0),
+                        fmt(*r),
+                        fmt(*r),
+                        px(p1),
+                        fmt(THIN)
+                    );
+                }
+                Prim::Rich {
+                    at,
+                    runs,
+                    size,
+                    class,
+                    anchor,
+                } => {
+                    let anchor = if *anchor == "start" {
+                        String::new()
+                    } else {
+                        format!(r#" text-anchor="{anchor}""#)
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<text class="{class}" x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
+                        fmt(ox + at.x),
+                        fmt(oy - at.y),
+                        fmt(*size),
+                        runs_svg(runs, *size)
+                    );
+                }
+                Prim::Text {
+                    at,
+                    label,
+                    size,
+                    id,
+                    class,
+                } => {
+                    let id = id_attr(id);
+                    // A subscript, when there is one.
+                    let sub = |s: &str| {
+                        if s.is_empty() {
+                            String::new()
+                        } else {
+                            format!(
+                                r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
+                                fmt(size * 0.7),
+                                xml(s)
+                            )
+                        }
+                    };
+                    let more: String = label
+                        .more
+                        .iter()
+                        .map(|(b, s)| format!("<tspan>, {}</tspan>{}", xml(b), sub(s)))
+                        .collect();
+                    // A superscript stacks over the subscript, as the
+                    // lecture's runs do (R^τ_12); else the base as it is.
+                    let (base, sub) = if label.sup.is_empty() {
+                        (xml(&label.base), sub(&label.sub))
+                    } else {
+                        let rs = vec![
+                            (Pos::Base, label.base.clone()),
+                            (Pos::Sup, label.sup.clone()),
+                            (Pos::Sub, label.sub.clone()),
+                        ];
+                        (runs_svg(&rs, *size), String::new())
+                    };
+                    let tail = if label.tail.is_empty() {
+                        String::new()
+                    } else {
+                        format!("<tspan>{}</tspan>", xml(&label.tail))
+                    };
+                    let fill = if *class == "student" {
+                        r##" fill="#c00000""##
+                    } else {
+                        ""
+                    };
+                    let _ = writeln!(
+                        out,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}{sub}{more}{tail}</text>"#,
+                        fmt(ox + at.x),
+                        fmt(oy - at.y),
+                        fmt(*size),
+                        base
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// ` id="…"` of an element that has an id, else nothing.
+fn id_attr(id: &Option<String>) -> String {
+    id.as_ref()
+        .map(|i| format!(r#" id="{i}""#))
+        .unwrap_or_default()
+}
+
+/// ` stroke="black" stroke-width="…"` of an outlined shape, else nothing.
+fn stroke_attr(stroke: f64) -> String {
+    if stroke > 0.0 {
+        format!(r#" stroke="black" stroke-width="{}""#, fmt(stroke))
+    } else {
+        String::new()
+    }
+}
+
+pub fn xml(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
