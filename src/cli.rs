@@ -20,7 +20,7 @@ pub struct Cli {
 
 #[derive(Subcommand)]
 pub enum Command {
-    /// Solve positions, velocities and accelerations of a scene (two analytic routes, cross-checked).
+    /// Solve positions, velocities and accelerations of a scene (two analytic routes, cross-checked); with dynamics, the forces too (three routes).
     Solve {
         /// The scene file (JSON, see docs/scene-format.md).
         scene: PathBuf,
@@ -38,7 +38,7 @@ pub enum Command {
         #[arg(long, value_parser = lang)]
         lang: Option<Lang>,
     },
-    /// Check a hand-drawn plan (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 2 bad input, 3 output not written.
+    /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written.
     Check {
         /// The scene file.
         scene: PathBuf,
@@ -52,7 +52,8 @@ pub enum Command {
         /// Pencil precision δ in mm (default: the answer's, else 0.5).
         #[arg(long)]
         delta: Option<f64>,
-        /// For an SVG answer: the scale μ, if the drawing does not state it.
+        /// For an SVG answer: the scale μ, if the drawing does not state it; for a force plan
+        /// (μ_F, N/mm) it overrides the answer's.
         #[arg(long)]
         mu: Option<f64>,
         /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
@@ -62,7 +63,7 @@ pub enum Command {
         #[arg(long)]
         position: Option<usize>,
     },
-    /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets.
+    /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets; with dynamics, the force sheets and Zhukovsky's lever too.
     Draw {
         /// The scene file (JSON, see docs/scene-format.md).
         scene: PathBuf,
