@@ -5,7 +5,6 @@ mod cli;
 
 use clap::Parser;
 use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
-use mechplan::check::answer::Reading;
 use mechplan::drawing;
 use mechplan::output::{stdout, wrote};
 use mechplan::study::{Diagram, Precision};
@@ -83,38 +82,17 @@ fn command(c: Command) -> Result<u8, Error> {
             plan,
             position,
         } => {
-            if let Some(status) =
-                check_forces(&scene, &answer, (format, &svg, delta, position), (mu, plan))?
-            {
-                return Ok(status);
-            }
-            let r = Reading {
+            let req = mechplan::check::CheckRequest {
+                json: matches!(format, CheckFormat::Json),
+                overlay: svg,
+                delta,
                 mu,
                 plan,
-                delta,
                 position,
             };
-            let ans = mechplan::check::answer::read(&answer, &r)?;
-            let study = Study::from_path(&scene)?;
-            match position {
-                Some(p) => study.position_in_range("position", p)?,
-                None => study
-                    .position_in_range("/position", ans.position)
-                    .map_err(mechplan::study::in_file(&answer.display().to_string()))?,
-            }
-            let report = study.check(&ans)?;
-            if let Some(out) = &svg {
-                let overlay = mechplan::check::overlay(study.analysis(), &ans, &report);
-                mechplan::write_atomically(out, overlay.as_bytes())?;
-            }
-            stdout(&match format {
-                CheckFormat::Text => mechplan::check::to_text(&report),
-                CheckFormat::Json => {
-                    let json = mechplan::check::to_json(&report);
-                    serde_json::to_string_pretty(&json).expect("finite numbers") + "\n"
-                }
-            })?;
-            return Ok(report.status());
+            let (report, status) = mechplan::check::check_file(&scene, &answer, &req)?;
+            stdout(&report)?;
+            return Ok(status);
         }
         Command::Precision {
             scene,
@@ -182,98 +160,6 @@ fn command(c: Command) -> Result<u8, Error> {
         )?))?,
     }
     Ok(0)
-}
-
-/// `check` of a force plan (a JSON answer whose `plan` is `"force"`, or
-/// an SVG drawing that states μ_F): its status, or `None` for a
-/// kinematic answer (read by the caller).
-fn check_forces(
-    scene: &std::path::Path,
-    answer: &std::path::Path,
-    (format, svg, delta, position): (
-        CheckFormat,
-        &Option<std::path::PathBuf>,
-        Option<f64>,
-        Option<usize>,
-    ),
-    (mu, plan): (Option<f64>, Option<mechplan::construction::PlanKind>),
-) -> Result<Option<u8>, Error> {
-    use mechplan::check::forces;
-    let name = answer.display().to_string();
-    let drawn = answer
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
-    let too_large = std::fs::metadata(answer)
-        .is_ok_and(|md| mechplan::check::answer::check_size(md.len()).is_err());
-    if too_large {
-        // The kinematic reader refuses it with the limit.
-        return Ok(None);
-    }
-    let Ok(text) = mechplan::study::read(answer) else {
-        // Unreadable: the kinematic reader reports it.
-        return Ok(None);
-    };
-    // A force plan: JSON whose plan is "force", or a drawing stating μ_F.
-    let mut ans = if drawn {
-        if !forces::is_force_svg(&text) {
-            return Ok(None);
-        }
-        forces::from_svg(&text, mu, delta.unwrap_or(0.5), position.unwrap_or(1))
-    } else {
-        if !forces::is_force_answer(&text) {
-            return Ok(None);
-        }
-        forces::from_json(&text)
-    }
-    .map_err(mechplan::study::in_file(&name))?;
-    if let Some(d) = delta {
-        if !(d.is_finite() && d > 0.0) {
-            return Err(Error::scene(
-                "delta",
-                "the pencil precision must be a positive number of mm",
-            ));
-        }
-        ans.delta = d;
-    }
-    if plan.is_some() {
-        return Err(Error::scene(
-            "plan",
-            "the answer is a force plan (\"plan\": \"force\"): --plan names a plan of velocities or accelerations",
-        ));
-    }
-    if let Some(m) = mu {
-        if !(m.is_finite() && (1e-6..=1e9).contains(&m)) {
-            return Err(Error::scene(
-                "mu",
-                "μ_F must be a number of N/mm between 1e-6 and 1e9",
-            ));
-        }
-        ans.mu = m;
-    }
-    if svg.is_some() {
-        return Err(Error::scene(
-            "svg",
-            "the overlay (--svg) is drawn for plans of velocities and accelerations only",
-        ));
-    }
-    let study = Study::from_path(scene)?;
-    match position {
-        Some(p) => {
-            study.position_in_range("position", p)?;
-            ans.position = p;
-        }
-        None => study
-            .position_in_range("/position", ans.position)
-            .map_err(mechplan::study::in_file(&name))?,
-    }
-    let report = study.check_forces(&ans)?;
-    stdout(&match format {
-        CheckFormat::Text => forces::to_text(&report),
-        CheckFormat::Json => {
-            serde_json::to_string_pretty(&forces::to_json(&report)).expect("finite numbers") + "\n"
-        }
-    })?;
-    Ok(Some(report.status() as u8))
 }
 
 /// The exit status: the command's own (0 success; `check`: 1 an item

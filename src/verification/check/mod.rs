@@ -17,6 +17,7 @@
 pub mod answer;
 mod candidates;
 mod diagnosis;
+mod file;
 pub mod forces;
 mod items;
 mod report;
@@ -24,6 +25,7 @@ pub mod svg;
 mod verdict;
 
 pub use candidates::Candidate as Explanation;
+pub use file::{CheckRequest, check_file};
 pub use items::resolve;
 pub use report::{overlay, to_json, to_text};
 pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};

@@ -43,7 +43,7 @@ impl ForceReport {
             .count()
     }
     /// 0 right, 1 wrong, 4 none wrong but some cannot be judged.
-    pub fn status(&self) -> i32 {
+    pub fn status(&self) -> u8 {
         if self.wrong() > 0 {
             1
         } else if self.verdicts.iter().any(|v| !v.ok()) {
