@@ -10,5 +10,7 @@ pub mod force_steps;
 pub mod notation;
 pub mod quantity;
 pub mod report;
+mod steps;
 pub mod studies;
 pub mod tables;
+mod text_table;

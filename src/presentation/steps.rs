@@ -1,0 +1,89 @@
+//! The constructions as numbered lecture-style steps (`solve --steps`):
+//! per position the plan of velocities and of accelerations, their
+//! measured values with their drafting bounds, and with `dynamics` the
+//! force plans and the lever ([`super::force_steps`]).
+
+use super::report::input_words;
+use crate::kinematics::construction::text::Lang;
+use crate::kinematics::solve::{Analysis, Solved};
+use std::fmt::Write as _;
+
+/// The constructions as numbered lecture-style steps (`solve --steps`).
+pub fn to_steps(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
+    let mut t = steps_head(an);
+    for (i, s) in solved.iter().enumerate() {
+        t += &steps_position(an, i, s, lang);
+    }
+    t
+}
+
+/// The steps' title line.
+pub(super) fn steps_head(an: &Analysis) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    if !m.scene.title.is_empty() {
+        let _ = writeln!(t, "{}", m.scene.title);
+    }
+    t
+}
+
+/// The steps of position `i` (from 0).
+pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
+    use crate::kinematics::construction::text::{num, sentence};
+    let mut t = String::new();
+    let (title_v, title_a, worst, bound_word) = match lang {
+        Lang::En => (
+            "Plan of velocities",
+            "Plan of accelerations",
+            "worst intersection angle",
+            "drafting bound",
+        ),
+        Lang::Uk => (
+            "План швидкостей",
+            "План прискорень",
+            "найменший кут перетину",
+            "похибка побудови",
+        ),
+        Lang::Ru => (
+            "План скоростей",
+            "План ускорений",
+            "наименьший угол пересечения",
+            "погрешность построения",
+        ),
+    };
+    let Some(plans) = &s.plans else { return t };
+    let input = input_words(an, s);
+    for (title, plan) in [
+        (title_v, Some(&plans.velocity)),
+        (title_a, plans.acceleration.as_ref()),
+    ] {
+        let Some(plan) = plan else { continue };
+        let position = match lang {
+            Lang::En => "position",
+            Lang::Uk => "положення",
+            Lang::Ru => "положение",
+        };
+        let _ = writeln!(t, "\n{title}, {position} {}, {input}", i + 1);
+        for k in 0..plan.steps.len() {
+            let _ = writeln!(t, "{:>3}. {}", k + 1, sentence(plan, k, lang));
+        }
+        let mm = if lang == Lang::En { "mm" } else { "мм" };
+        let _ = writeln!(
+            t,
+            "     {worst}: {}°; δ = {} {mm}",
+            num(plan.worst_angle_deg()),
+            num(plan.delta)
+        );
+        for q in &plan.measured {
+            let _ = writeln!(
+                t,
+                "     {} = {} ± {} ({bound_word})",
+                q.quantity,
+                num(q.value),
+                num(q.bound)
+            );
+        }
+    }
+    t += &super::force_steps::force_steps(an, s, i, &input, lang);
+    t
+}
