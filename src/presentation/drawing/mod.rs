@@ -11,6 +11,7 @@
 //! scale: a new construction, not the solver's plan enlarged.
 
 pub mod canvas;
+mod captions;
 pub mod centres;
 pub mod course;
 mod course_forces;
@@ -37,12 +38,12 @@ use crate::kinematics::construction::scale::{standard_above, standard_scale};
 use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
-use crate::model::scene::InputSpec;
-use canvas::{Canvas, Label};
+use canvas::Canvas;
 use kurbo::{Point, Rect};
 use sheet::{Page, TitleBlock};
 use table::number;
 
+pub(crate) use captions::{position_text, scale_label, scale_text, words};
 /// Sheet formats, landscape (ГОСТ 2.301).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SheetSize {
@@ -119,49 +120,6 @@ pub enum Format {
     Svg,
     Png,
     Pdf,
-}
-
-/// The words of the sheets' headings.
-pub(crate) struct Words {
-    pub mechanism: &'static str,
-    pub velocities: &'static str,
-    pub accelerations: &'static str,
-    pub positions: &'static str,
-    pub position: &'static str,
-    pub course: &'static str,
-    pub table: &'static str,
-}
-
-pub(crate) fn words(lang: Lang) -> Words {
-    match lang {
-        Lang::En => Words {
-            mechanism: "Plan of the mechanism",
-            velocities: "Plan of velocities",
-            accelerations: "Plan of accelerations",
-            positions: "Positions of the mechanism",
-            position: "position",
-            course: "Kinematic analysis of the mechanism",
-            table: "Results",
-        },
-        Lang::Uk => Words {
-            mechanism: "План механізму",
-            velocities: "План швидкостей",
-            accelerations: "План прискорень",
-            positions: "Положення механізму",
-            position: "положення",
-            course: "Кінематичний аналіз механізму",
-            table: "Результати",
-        },
-        Lang::Ru => Words {
-            mechanism: "План механизма",
-            velocities: "План скоростей",
-            accelerations: "План ускорений",
-            positions: "Положения механизма",
-            position: "положение",
-            course: "Кинематический анализ механизма",
-            table: "Результаты",
-        },
-    }
 }
 
 /// Whether the scene asks for drawing `d` (`want.drawings`; by default the
@@ -670,67 +628,6 @@ pub(crate) fn title_block(
     number: (usize, usize),
 ) -> TitleBlock {
     TitleBlock::new(&an.mech.scene.sheet, title, opt.lang, number)
-}
-
-/// "position 1, φ1 = 30°" (the input link's own number), localised.
-pub(crate) fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
-    let w = words(lang);
-    let m = &an.mech;
-    if m.scene.several_inputs() {
-        // Every input with its link's id: "φ1 = 60°, φ4 = 120°", "s3 = 0,1 м".
-        let inputs: Vec<String> = m
-            .scene
-            .inputs()
-            .zip(s.drives.iter())
-            .map(|(spec, d)| {
-                let id = m.link_id(spec.link());
-                match spec {
-                    InputSpec::Crank { .. } => format!(
-                        "φ{id} = {}°",
-                        number(d.q.to_degrees().rem_euclid(360.0), lang)
-                    ),
-                    InputSpec::Slider { .. } => {
-                        format!("s{id} = {} {}", number(d.q, lang), table::unit("m", lang))
-                    }
-                }
-            })
-            .collect();
-        return format!("{} {}, {}", w.position, k + 1, inputs.join(", "));
-    }
-    match m.scene.input {
-        InputSpec::Crank { link, .. } => format!(
-            "{} {}, φ{} = {}°",
-            w.position,
-            k + 1,
-            m.link_id(link),
-            number(s.q.to_degrees().rem_euclid(360.0), lang)
-        ),
-        InputSpec::Slider { .. } => format!(
-            "{} {}, s = {} {}",
-            w.position,
-            k + 1,
-            number(s.q, lang),
-            table::unit("m", lang)
-        ),
-    }
-}
-
-/// "μ_v = 0.01 (m/s)/mm" in the notation of the sheets, localised.
-pub(crate) fn scale_text(sym: &str, mu: f64, unit: &str, lang: Lang) -> String {
-    let u = table::unit(unit, lang);
-    let u = if u.contains('/') { format!("({u})") } else { u };
-    format!(
-        "μ_{sym} = {} {u}/{}",
-        number(mu, lang),
-        table::unit("mm", lang)
-    )
-}
-
-/// "μ_v = 0.01 (m/s)/mm", localised, as a label (the handout's).
-pub(crate) fn scale_label(sym: &str, mu: f64, unit: &str, lang: Lang) -> Label {
-    let t = scale_text(sym, mu, unit, lang);
-    let tail = t.split_once(' ').map(|x| x.1).unwrap_or("");
-    Label::new("μ", sym).with_tail(format!(" {tail}"))
 }
 
 /// A single sheet from a canvas (the diagrams, the Frenet families, the
