@@ -642,3 +642,96 @@ fn numbers_only_plans_equal_full_plans() {
     );
     assert!(other_scale.len() * 100 <= same_scale, "{other_scale:#?}");
 }
+
+/// The sweep kernel on the stiff catalogue (`fixtures/stress`: needle
+/// triangles, necks, near-parallel leashes, a tiny linkage in a huge
+/// sketch, rates of 1e-6): over each scene's positions in order, a plan
+/// at the scale a build alone picks equals it to the bit; one at another
+/// scale settles on its own extent and gives the same values to 1e-9 of
+/// the plan's size; a position the build alone refuses, the kernel
+/// refuses too.
+#[test]
+fn the_sweep_kernel_on_the_stiff_catalogue() {
+    use mechplan::analytic::{Drive, Order};
+    use mechplan::construction::{Field, Kernel, Setup, build_plans_numbers};
+    let dir = format!("{}/fixtures/stress", env!("CARGO_MANIFEST_DIR"));
+    let (mut same, mut other, mut scenes, mut settled) = (0, 0, 0, 0);
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let Ok(scene) = mechplan::Scene::from_json(&text) else {
+            continue;
+        };
+        let Ok(an) = mechplan::Analysis::new(scene) else {
+            continue;
+        };
+        let Ok(solved) = an.run() else { continue };
+        if an.order != Some(Order::Acceleration) {
+            continue;
+        }
+        scenes += 1;
+        let setup = Setup {
+            m: &an.mech,
+            s: &an.structure,
+            need: &an.need,
+            points: &an.points,
+            include: &an.include,
+        };
+        let mut kernel = Kernel::new();
+        for s in &solved {
+            let drive = Drive {
+                q: s.q,
+                rate: s.rate,
+                rate2: s.rate2,
+            };
+            let alone =
+                build_plans_numbers(&setup, &s.config, drive, Order::Acceleration, an.drafting);
+            let swept = kernel.build(&setup, &s.config, drive, Order::Acceleration, an.drafting);
+            let (alone, (kv, ka)) = match (alone, swept) {
+                (Ok(a), Ok(k)) => (a, k),
+                (Err(_), Err(_)) => continue,
+                (a, k) => panic!(
+                    "{path:?} at {}: alone {:?}, swept {:?}",
+                    s.q,
+                    a.err(),
+                    k.err()
+                ),
+            };
+            for (f, k) in [
+                (&alone.velocity, kv),
+                (alone.acceleration.as_ref().unwrap(), ka.unwrap()),
+            ] {
+                if f.mu == k.mu {
+                    same += 1;
+                    for (a, b) in f.points.iter().zip(&k.points) {
+                        assert_eq!((a.at, a.err), (b.at, b.err), "{path:?} at {}", s.q);
+                    }
+                    assert_eq!(format!("{:?}", f.rates), format!("{:?}", k.rates));
+                } else {
+                    other += 1;
+                    let field = Field::default();
+                    assert_eq!(field.scale(k.points.iter().map(|p| p.at * k.mu)), k.mu);
+                    let size = f
+                        .points
+                        .iter()
+                        .map(|p| p.at.hypot() * f.mu)
+                        .fold(0.0, f64::max);
+                    for p in 0..f.of_point.len() {
+                        if let (Some(a), Some(b)) = (f.value_of(p), k.value_of(p)) {
+                            assert!((a - b).hypot() <= 1e-9 * size, "{path:?} at {}", s.q);
+                        }
+                    }
+                }
+            }
+        }
+        settled += kernel.settled;
+    }
+    eprintln!(
+        "{scenes} stiff scenes, {same} plans at the same scale, {other} not, {settled} settled at once"
+    );
+    assert!(scenes >= 10 && same > 0 && settled > 0);
+    assert!(other * 100 <= same, "{other} of {same}");
+}
