@@ -7,7 +7,6 @@
 
 use super::rates::{Contour, PairTwist, Src, Walk};
 use crate::accuracy::ACCURACY;
-use crate::geom::perp;
 use crate::kinematics::analytic::contour::{self, Twist, bracket};
 use crate::kinematics::analytic::{Motion, Order};
 use crate::kinematics::positions::Configuration;
@@ -152,14 +151,7 @@ impl Dyad3 {
             (Twist::default(), Twist::default())
         };
         for (l, v, a) in [(l1, vl1, al1), (l2, vl2, al2)] {
-            out[l] = Some(Motion::from_point(
-                c.pose(l),
-                o,
-                v.v,
-                a.v + perp(v.v) * v.w,
-                v.w,
-                a.w,
-            ));
+            out[l] = Some(contour::twist_motion(c.pose(l), o, v, a));
         }
         Some(())
     }

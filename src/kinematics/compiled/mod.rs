@@ -37,15 +37,19 @@ mod rates;
 
 use crate::error::Result;
 use crate::geom::Pose;
-use crate::kinematics::analytic::contour::{driven_pair, invert_lu, invert3};
+use crate::kinematics::analytic::contour::{
+    DYAD_CONTOURS, TRIAD_CONTOURS, driven_pair, dyad_contour, invert_lu, invert3, triad_contour,
+};
 use crate::kinematics::analytic::{Coords, Drive, Drives, Motion, Order};
-use crate::kinematics::positions::{self, Branches, Configuration, sketch_input};
+use crate::kinematics::positions::{
+    self, Branches, Configuration, CrankFrame, Tracking, crank_frame, sketch_input,
+};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
-use crate::model::structure::{AssurGroup, InputRole, Stage, Structure};
+use crate::model::structure::{AssurGroup, Step, Structure};
 use dyad3::Dyad3;
 use place::{Place, dyad_place};
-use rates::{DYAD_CONTOURS, Rate, TRIAD_CONTOURS, compile_contour};
+use rates::{Rate, compile_contour};
 
 /// Route (a) of one mechanism, compiled: the positions and the contours
 /// as flat lists of typed steps ([`crate::kinematics::compiled`]).
@@ -79,108 +83,51 @@ impl<'a> Program<'a> {
     /// [`crate::kinematics::positions::PositionSolver::new`] refuses).
     pub fn new(m: &'a Mechanism, s: &'a Structure, need: &[bool]) -> Result<Program<'a>> {
         let branches = Branches::from_sketch(m, s)?;
-        let frame = m.frame();
         let mut solved = vec![false; m.links.len()];
-        solved[frame] = true;
+        solved[m.frame()] = true;
         let mut place = Vec::new();
         let mut rate = vec![Rate::Frame];
         let mut triads = false;
-        for &st in &s.stages {
-            let gi = match st {
-                Stage::Input(i) => {
-                    match s.roles[i] {
-                        InputRole::Frame => {
-                            let (p, r) = input_steps(m, i);
-                            solved[m.scene.input_at(i).link()] = true;
-                            place.push(p);
-                            rate.push(r);
-                        }
-                        InputRole::Chained { known, pair } => {
-                            let pr = &m.prismatics[pair];
-                            let other = if pr.guide == known {
-                                pr.slider
-                            } else {
-                                pr.guide
-                            };
-                            if solved[known] {
-                                solved[other] = true;
-                                let (input, known) = (i, known);
-                                place.push(Place::Chained {
-                                    input,
-                                    known,
-                                    pair,
-                                    other,
-                                });
-                                rate.push(Rate::Chained {
-                                    input,
-                                    known,
-                                    pair,
-                                    other,
-                                });
-                            }
-                        }
-                        InputRole::InGroup { .. } => {}
+        for step in s.steps(m) {
+            match step {
+                Step::Frame { input, link } => {
+                    let (p, r) = input_steps(m, input);
+                    solved[link] = true;
+                    place.push(p);
+                    rate.push(r);
+                }
+                Step::Chained {
+                    input,
+                    known,
+                    pair,
+                    other,
+                } => {
+                    if solved[known] {
+                        solved[other] = true;
+                        place.push(Place::Chained {
+                            input,
+                            known,
+                            pair,
+                            other,
+                        });
+                        rate.push(Rate::Chained {
+                            input,
+                            known,
+                            pair,
+                            other,
+                        });
                     }
-                    continue;
                 }
-                Stage::Group(gi) => gi,
-            };
-            if !need[gi] {
-                continue;
-            }
-            let g = &s.groups[gi];
-            let sign = branches.sign[gi];
-            match g {
-                AssurGroup::Dyad(d) => {
-                    place.push(dyad_place(m, gi, d, sign));
-                    let driven =
-                        driven_pair(d).map(|(conn, input, on)| (conn, input, on.then_some(0)));
-                    let mut links = [0usize; 3];
-                    links[..2].copy_from_slice(&d.links);
-                    let n = match d.cylinder {
-                        Some(cy) => {
-                            links[2] = cy.other;
-                            3
-                        }
-                        None => 2,
-                    };
-                    let g = compile_contour::<3>(
-                        m,
-                        gi,
-                        [d.ext1, d.mid, d.ext2],
-                        DYAD_CONTOURS,
-                        &[(d.ext1.from, d.ext2.to)],
-                        &links[..n],
-                        driven,
-                        &solved,
-                        invert3,
-                    );
-                    rate.push(match Dyad3::of(&g) {
-                        Some(d3) => Rate::Dyad3(Box::new(d3)),
-                        None => Rate::Dyad(Box::new(g)),
-                    });
+                Step::Group { index, .. } if !need[index] => {}
+                Step::Group { index, group } => {
+                    let (p, r) = group_steps(m, index, group, branches.sign[index], &solved);
+                    triads |= matches!(group, AssurGroup::Triad(_));
+                    place.push(p);
+                    rate.push(r);
+                    for l in group.links() {
+                        solved[l] = true;
+                    }
                 }
-                AssurGroup::Triad(t) => {
-                    triads = true;
-                    place.push(Place::Triad { group: gi });
-                    rate.push(Rate::Triad(Box::new(compile_contour::<6>(
-                        m,
-                        gi,
-                        [t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
-                        TRIAD_CONTOURS,
-                        &[
-                            (t.ext[0].from, t.ext[1].from),
-                            (t.ext[0].from, t.ext[2].from),
-                        ],
-                        &[t.leashes[0], t.leashes[1], t.leashes[2], t.base],
-                        None,
-                        &solved,
-                        invert_lu,
-                    ))));
-                }
-            }
-            for l in g.links() {
-                solved[l] = true;
             }
         }
         let triad_step = if triads {
@@ -236,17 +183,7 @@ impl<'a> Program<'a> {
     /// steps), as [`crate::kinematics::positions::PositionSolver::solve_coords`].
     pub fn positions_coords(&self, st: &mut State, q: Coords) -> Result<()> {
         if !self.triad_step.is_empty() {
-            let span = positions::span(self.m, &st.last_q, &q);
-            let n = span
-                .iter()
-                .enumerate()
-                .map(|(i, d)| (d.abs() / self.triad_step[i]).ceil())
-                .fold(0.0, f64::max) as usize;
-            for k in 1..n {
-                let mut qk = st.last_q;
-                for (x, d) in qk.iter_mut().zip(span.iter()) {
-                    *x += d * k as f64 / n as f64;
-                }
+            for qk in Tracking::new(self.m, st.last_q, &q, |i| self.triad_step[i]) {
                 self.place(st, &qk)?;
             }
         }
@@ -295,19 +232,14 @@ impl<'a> Program<'a> {
 fn input_steps(m: &Mechanism, i: usize) -> (Place, Rate) {
     match *m.scene.input_at(i) {
         InputSpec::Crank { link, pivot, .. } => {
-            let pts = &m.links[link].points;
-            let other = if pts[0] == pivot { pts[1] } else { pts[0] };
-            let w = m.local(link, other) - m.local(link, pivot);
-            let at = m.links[m.frame()]
-                .sketch_pose
-                .apply(m.local(m.frame(), pivot));
+            let CrankFrame { at, local, offset } = crank_frame(m, link, pivot);
             (
                 Place::Crank {
                     input: i,
                     link,
                     at,
-                    local: m.local(link, pivot),
-                    offset: w.atan2(),
+                    local,
+                    offset,
                 },
                 Rate::Crank {
                     input: i,
@@ -336,6 +268,54 @@ fn input_steps(m: &Mechanism, i: usize) -> (Place, Rate) {
                     dir: pr.line_dir,
                 },
             )
+        }
+    }
+}
+
+/// The steps of group `gi` (on its branch `sign`, the links `solved`
+/// known before it): its place and its rate.
+fn group_steps(
+    m: &Mechanism,
+    gi: usize,
+    g: &AssurGroup,
+    sign: f64,
+    solved: &[bool],
+) -> (Place, Rate) {
+    match g {
+        AssurGroup::Dyad(d) => {
+            let driven = driven_pair(d).map(|(conn, input, on)| (conn, input, on.then_some(0)));
+            let (pairs, ends) = dyad_contour(d);
+            let g = compile_contour::<3>(
+                m,
+                gi,
+                pairs,
+                DYAD_CONTOURS,
+                &ends,
+                &d.placed_links(),
+                driven,
+                solved,
+                invert3,
+            );
+            let rate = match Dyad3::of(&g) {
+                Some(d3) => Rate::Dyad3(Box::new(d3)),
+                None => Rate::Dyad(Box::new(g)),
+            };
+            (dyad_place(m, gi, d, sign), rate)
+        }
+        AssurGroup::Triad(t) => {
+            let (pairs, ends) = triad_contour(t);
+            let rate = Rate::Triad(Box::new(compile_contour::<6>(
+                m,
+                gi,
+                pairs,
+                TRIAD_CONTOURS,
+                &ends,
+                &t.placed_links(),
+                None,
+                solved,
+                invert_lu,
+            )));
+            (Place::Triad { group: gi }, rate)
         }
     }
 }

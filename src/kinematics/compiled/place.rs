@@ -10,9 +10,7 @@ use super::{Program, State};
 use crate::accuracy::ACCURACY;
 use crate::error::Result;
 use crate::geom::{Line, Pose, circle_circle, circle_line};
-use crate::kinematics::positions::{
-    self, Configuration, dyad_error, pair_of, point_of, triad_error,
-};
+use crate::kinematics::positions::{self, Configuration, pair_of, point_of, triad_error};
 use crate::model::mechanism::Mechanism;
 use crate::model::structure::{AssurGroup, DyadKind};
 use kurbo::{Point, Vec2};
@@ -293,9 +291,7 @@ impl Program<'_> {
         let AssurGroup::Dyad(d) = &s.groups[gi] else {
             unreachable!("a class II group")
         };
-        let cyl = d.cylinder.map(|cy| (cy, q[cy.input]));
-        positions::solve_dyad(m, d, cyl, self.branches.sign[gi], c)
-            .map_err(|why| dyad_error(m, s, gi, q, why))
+        positions::solve_group_dyad(m, s, gi, d, self.branches.sign[gi], q, c)
     }
 }
 
@@ -313,11 +309,7 @@ pub(super) fn dyad_place(
     let [l1, l2] = d.links;
     match d.kind {
         DyadKind::Rrr => {
-            let (pb, pc, pd) = (
-                point_of(d.ext1.joint),
-                point_of(d.mid.joint),
-                point_of(d.ext2.joint),
-            );
+            let (pb, pc, pd) = positions::rrr_points(d);
             let (b1, c1) = (m.local(l1, pb), m.local(d.mid.from, pc));
             let (d2, c2) = (m.local(l2, pd), m.local(d.mid.to, pc));
             Place::Rrr(Box::new(Rrr {

@@ -11,13 +11,13 @@ use super::place::On;
 use super::{Program, State};
 use crate::error::Result;
 use crate::geom::perp;
-use crate::kinematics::analytic::contour::{self, Inverse, Twist, bracket};
+use crate::kinematics::analytic::contour::{self, Inverse, Reach, Twist, bracket};
 use crate::kinematics::analytic::{Drive, Drives, Motion, Order};
 use crate::kinematics::positions::Configuration;
 use crate::model::mechanism::Mechanism;
 use crate::model::structure::{Conn, Joint};
 use kurbo::{Point, Vec2};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SMatrix;
 
 /// The twist of a pair's unit rate about a point, as a step computes it:
 /// a revolute pair at its point on link `link`, a prismatic pair along
@@ -129,14 +129,6 @@ pub(super) struct Contour<const N: usize> {
     invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
 }
 
-/// A dyad's single contour through its three pairs.
-pub(super) const DYAD_CONTOURS: &[&[(usize, f64)]] = &[&[(0, 1.0), (1, 1.0), (2, 1.0)]];
-/// A three-leash group's two contours.
-pub(super) const TRIAD_CONTOURS: &[&[(usize, f64)]] = &[
-    &[(0, 1.0), (1, 1.0), (2, -1.0), (3, -1.0)],
-    &[(0, 1.0), (1, 1.0), (4, -1.0), (5, -1.0)],
-];
-
 /// The contours' compiler: which links are known, the walk over the pairs
 /// exactly as [`contour`]'s walk takes it.
 struct Compiling<'s> {
@@ -166,6 +158,25 @@ impl Compiling<'_> {
     fn add(&mut self, l: usize) {
         self.found[self.n_found] = l;
         self.n_found += 1;
+    }
+}
+
+/// The walk as compiled: each step it takes, in order.
+struct Walking<'c, 's> {
+    cp: &'c mut Compiling<'s>,
+    walk: [Walk; MAX_WALK],
+    n_walk: usize,
+}
+
+impl Reach for Walking<'_, '_> {
+    type Base = Src;
+    fn get(&mut self, l: usize) -> Option<Src> {
+        self.cp.get(l)
+    }
+    fn found(&mut self, j: usize, base: Src, forward: bool, l: usize) {
+        self.walk[self.n_walk] = Walk { base, j, forward };
+        self.n_walk += 1;
+        self.cp.add(l);
     }
 }
 
@@ -208,48 +219,17 @@ pub(super) fn compile_contour<const N: usize>(
         }
         None => N,
     };
-    let mut walk = [Walk {
-        base: Src::Known(0),
-        j: 0,
-        forward: true,
-    }; MAX_WALK];
-    let mut n_walk = 0;
-    let mut pending = [true; MAX_WALK];
-    let mut left = n;
-    while left > 0 {
-        let before = left;
-        for j in 0..n {
-            if !pending[j] {
-                continue;
-            }
-            let cn = all[j];
-            match (cp.get(cn.from), cp.get(cn.to)) {
-                (Some(base), None) => {
-                    walk[n_walk] = Walk {
-                        base,
-                        j,
-                        forward: true,
-                    };
-                    n_walk += 1;
-                    cp.add(cn.to);
-                }
-                (None, Some(base)) => {
-                    walk[n_walk] = Walk {
-                        base,
-                        j,
-                        forward: false,
-                    };
-                    n_walk += 1;
-                    cp.add(cn.from);
-                }
-                (Some(_), Some(_)) => {}
-                (None, None) => continue,
-            }
-            pending[j] = false;
-            left -= 1;
-        }
-        assert!(left < before, "group pairs form a connected contour");
-    }
+    let mut walking = Walking {
+        cp: &mut cp,
+        walk: [Walk {
+            base: Src::Known(0),
+            j: 0,
+            forward: true,
+        }; MAX_WALK],
+        n_walk: 0,
+    };
+    contour::walk_pairs(&all[..n], &mut walking);
+    let (walk, n_walk) = (walking.walk, walking.n_walk);
     let reached = |cp: &mut Compiling, l: usize| cp.get(l).expect("every group link reached");
     let drift_from: [Src; N] = std::array::from_fn(|j| reached(&mut cp, conns[j].from));
     let driven = driven.map(|(conn, input, contour)| DrivenPair {
@@ -294,27 +274,9 @@ impl<const N: usize> Contour<N> {
         let o = c.pose(self.o_link).origin;
         let xi: [Twist; N] = std::array::from_fn(|j| self.pairs[j].twist(c, o));
         let xd = self.driven.map(|d| d.twist.twist(c, o));
-        let reach = xi
-            .iter()
-            .map(|t| if t.w != 0.0 { t.v.hypot() } else { 0.0 })
-            .fold(0.0, f64::max);
-        let per_length = if reach > 0.0 { 1.0 / reach } else { 1.0 };
+        let per_length = contour::per_length(&xi);
         let contours = self.contours;
-        let in_group_units = |mut r: SVector<f64, N>| {
-            for ci in 0..contours.len() {
-                r[3 * ci + 1] *= per_length;
-                r[3 * ci + 2] *= per_length;
-            }
-            r
-        };
-        let mut a = SMatrix::<f64, N, N>::zeros();
-        for (ci, contour) in contours.iter().enumerate() {
-            for &(j, sg) in contour.iter() {
-                a[(3 * ci, j)] = sg * xi[j].w;
-                a[(3 * ci + 1, j)] = sg * xi[j].v.x * per_length;
-                a[(3 * ci + 2, j)] = sg * xi[j].v.y * per_length;
-            }
-        }
+        let a = contour::contour_matrix::<N>(contours, &xi, per_length);
         let mut ks = [(Twist::default(), Twist::default()); MAX_KNOWN];
         for (k, &l) in ks.iter_mut().zip(&self.known[..self.n_known]) {
             *k = contour::state(&out[l].expect("attachment solved first"), o);
@@ -325,21 +287,15 @@ impl<const N: usize> Contour<N> {
             Src::Known(i) => ks[i],
             Src::Found(_) => unreachable!("a contour ends on known links"),
         };
-        let on_contour = |rhs: &mut SVector<f64, N>, t: Twist| {
-            if let Some(ci) = self.driven.and_then(|d| d.contour) {
-                rhs[3 * ci] -= t.w;
-                rhs[3 * ci + 1] -= t.v.x;
-                rhs[3 * ci + 2] -= t.v.y;
-            }
-        };
+        let on_contour = self.driven.and_then(|d| d.contour);
         let driven_rates = self
             .driven
             .map(|d| (drives[d.input].rate, drives[d.input].rate2));
-        let mut rhs_v = rhs::<N>(ends, |s| known(s).0);
+        let mut rhs_v = contour::rhs::<N, _>(ends, |s| known(s).0);
         if let (Some((rate, _)), Some(x)) = (driven_rates, xd) {
-            on_contour(&mut rhs_v, x * rate);
+            contour::subtract_on(&mut rhs_v, on_contour, x * rate);
         }
-        let qd = inverse.solve(&in_group_units(rhs_v));
+        let qd = inverse.solve(&contour::in_group_units(rhs_v, contours.len(), per_length));
         let mut vel = [Twist::default(); 4];
         for (k, w) in self.walk[..self.n_walk].iter().enumerate() {
             let base = match w.base {
@@ -361,23 +317,17 @@ impl<const N: usize> Contour<N> {
         if accelerations {
             let drift: [Twist; N] =
                 std::array::from_fn(|j| bracket(vel_of(self.drift_from[j]), xi[j]) * qd[j]);
-            let mut rhs = rhs::<N>(ends, |s| known(s).1);
-            for (ci, contour) in contours.iter().enumerate() {
-                for &(j, sg) in contour.iter() {
-                    rhs[3 * ci] -= sg * drift[j].w;
-                    rhs[3 * ci + 1] -= sg * drift[j].v.x;
-                    rhs[3 * ci + 2] -= sg * drift[j].v.y;
-                }
-            }
+            let mut rhs = contour::rhs::<N, _>(ends, |s| known(s).1);
+            contour::subtract_drift(&mut rhs, contours, &drift);
             let driven_acc = match (self.driven, driven_rates, xd) {
                 (Some(d), Some((rate, rate2)), Some(x)) => {
                     let t = x * rate2 + bracket(vel_of(d.from), x) * rate;
-                    on_contour(&mut rhs, t);
+                    contour::subtract_on(&mut rhs, on_contour, t);
                     t
                 }
                 _ => Twist::default(),
             };
-            let qdd = inverse.solve(&in_group_units(rhs));
+            let qdd = inverse.solve(&contour::in_group_units(rhs, contours.len(), per_length));
             for (k, w) in self.walk[..self.n_walk].iter().enumerate() {
                 let base = match w.base {
                     Src::Known(i) => ks[i].1,
@@ -392,19 +342,11 @@ impl<const N: usize> Contour<N> {
             }
         }
         for &(l, s) in &self.links[..self.n_links] {
-            let v = vel_of(s);
             let a = match s {
                 Src::Found(f) if accelerations => acc[f],
                 _ => Twist::default(),
             };
-            out[l] = Some(Motion::from_point(
-                c.pose(l),
-                o,
-                v.v,
-                a.v + perp(v.v) * v.w,
-                v.w,
-                a.w,
-            ));
+            out[l] = Some(contour::twist_motion(c.pose(l), o, vel_of(s), a));
         }
         Some(())
     }
@@ -515,18 +457,4 @@ impl Program<'_> {
     fn singular(&self, gi: usize, drives: &[Drive]) -> crate::error::Error {
         contour::singular(self.m, &self.s.groups[gi], &Drives::new(drives))
     }
-}
-
-/// The known side of the contours: the twist (or twist rate) of each
-/// contour's end link less that of its start link (`contour::rhs`).
-#[inline]
-fn rhs<const N: usize>(ends: &[(Src, Src)], f: impl Fn(Src) -> Twist) -> SVector<f64, N> {
-    let mut r = SVector::<f64, N>::zeros();
-    for (ci, &(k1, k2)) in ends.iter().enumerate() {
-        let t = f(k2) - f(k1);
-        r[3 * ci] = t.w;
-        r[3 * ci + 1] = t.v.x;
-        r[3 * ci + 2] = t.v.y;
-    }
-    r
 }

@@ -98,6 +98,42 @@ pub struct Dyad {
     pub cylinder: Option<Cylinder>,
 }
 
+impl Dyad {
+    /// The links the group places, without allocation: its two links in
+    /// the dyad's order, then a cylinder's other link.
+    pub fn placed_links(&self) -> GroupLinks {
+        let mut links = GroupLinks {
+            links: [self.links[0], self.links[1], 0, 0],
+            len: 2,
+        };
+        if let Some(cy) = self.cylinder {
+            links.links[2] = cy.other;
+            links.len = 3;
+        }
+        links
+    }
+}
+
+/// A group's links (at most four) without allocation, as a slice.
+#[derive(Clone, Copy, Debug)]
+pub struct GroupLinks {
+    links: [usize; 4],
+    len: usize,
+}
+
+impl std::ops::Deref for GroupLinks {
+    type Target = [usize];
+    fn deref(&self) -> &[usize] {
+        &self.links[..self.len]
+    }
+}
+
+impl std::ops::DerefMut for GroupLinks {
+    fn deref_mut(&mut self) -> &mut [usize] {
+        &mut self.links[..self.len]
+    }
+}
+
 /// A hydraulic cylinder in a class II group: the guide and the slider of a
 /// driving slider, neither known before the group, one link of variable
 /// length (their slide is the input's). `links[slot]` of the dyad is the
@@ -167,6 +203,17 @@ pub struct Triad {
     pub int: [Conn; 3],
 }
 
+impl Triad {
+    /// The links the group places, without allocation: the three
+    /// leashes, then the base.
+    pub fn placed_links(&self) -> GroupLinks {
+        GroupLinks {
+            links: [self.leashes[0], self.leashes[1], self.leashes[2], self.base],
+            len: 4,
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub enum AssurGroup {
     Dyad(Dyad),
@@ -190,6 +237,14 @@ impl AssurGroup {
         };
         v.sort_unstable();
         v
+    }
+    /// The links the group places, without allocation (in the group's
+    /// own order: [`Dyad::placed_links`], [`Triad::placed_links`]).
+    pub fn placed_links(&self) -> GroupLinks {
+        match self {
+            AssurGroup::Dyad(d) => d.placed_links(),
+            AssurGroup::Triad(t) => t.placed_links(),
+        }
     }
     /// The two links of a cylinder in the group (in the dyad's slot, the
     /// other).

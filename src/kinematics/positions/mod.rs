@@ -1,0 +1,399 @@
+//! Positions: the input placed exactly, then every group in the order of
+//! attachment by its closed form (circle∩circle, circle∩line, line∩line, the
+//! rocking-guide angle) on the branch the sketch shows. A class III group is
+//! solved by a one-dimensional root search in its base angle, tracked
+//! continuously from the sketch.
+
+mod dyad;
+mod input;
+mod triad;
+
+use crate::accuracy::ACCURACY;
+use crate::error::{Error, Result};
+use crate::geom::{Pose, rotate, sign_tol, wrap_pi};
+use crate::kinematics::analytic::Coords;
+use crate::model::mechanism::Mechanism;
+use crate::model::scene::InputSpec;
+use crate::model::structure::{AssurGroup, Dyad, DyadKind, Joint, Step, Structure};
+use kurbo::{Point, Vec2};
+
+pub(crate) use dyad::{rocking_guide, rrr_points, solve_group_dyad};
+pub(crate) use input::{CrankFrame, crank_frame};
+pub use input::{
+    place_across, place_input, sketch_input, sketch_slider_ref, slide_pose, slide_ref,
+};
+use triad::triad_scale;
+pub(crate) use triad::{solve_triad, triad_error};
+
+/// The poses of the links solved so far (None: not needed, not computed).
+#[derive(Clone, Debug)]
+pub struct Configuration {
+    pub poses: Vec<Option<Pose>>,
+}
+
+impl Configuration {
+    #[inline]
+    pub fn pose(&self, link: usize) -> Pose {
+        self.poses[link].expect("link solved before use")
+    }
+    /// World position of `point` as carried by `link`.
+    #[inline]
+    pub fn point(&self, m: &Mechanism, link: usize, point: usize) -> Point {
+        self.pose(link).apply(m.local(link, point))
+    }
+}
+
+/// Branch of each group as the sketch shows it, plus the tracked state of
+/// class III groups (their base angle).
+#[derive(Clone, Debug)]
+pub struct Branches {
+    pub sign: Vec<f64>,
+    /// Tracked base pose of each class III group.
+    pub triad_pose: Vec<Pose>,
+}
+
+/// Describe the input values for messages: "φ = 123.4°" or "s = 0.05 m",
+/// in the shortest decimal that is the value (near a limit, positions a
+/// nano-degree apart must read apart); several inputs each with its link's
+/// id: "φ1 = 30°, φ4 = 120°".
+pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
+    let several = m.scene.several_inputs();
+    q.iter()
+        .zip(m.scene.inputs())
+        .map(|(&q, spec)| {
+            let id = if several { m.link_id(spec.link()) } else { "" };
+            match spec {
+                InputSpec::Crank { .. } => format!("φ{id} = {}°", q.to_degrees()),
+                InputSpec::Slider { .. } => format!("s{id} = {q} m"),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn sketch(m: &Mechanism, p: usize) -> Point {
+    m.scene.points[p].sketch
+}
+
+pub(crate) fn point_of(j: Joint) -> usize {
+    match j {
+        Joint::R(p) => p,
+        Joint::P(_) => unreachable!("a revolute pair was expected"),
+    }
+}
+
+pub(crate) fn pair_of(j: Joint) -> usize {
+    match j {
+        Joint::P(k) => k,
+        Joint::R(_) => unreachable!("a prismatic pair was expected"),
+    }
+}
+
+/// Angle of `moving` given the angle of `known` across prismatic pair `k`.
+pub(crate) fn angle_across(m: &Mechanism, k: usize, known: usize, known_angle: f64) -> f64 {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        known_angle + pr.delta
+    } else {
+        known_angle - pr.delta
+    }
+}
+
+/// The world line on which the local point `x` of link `moving` (at angle
+/// `theta`) must lie, because of prismatic pair `k` with the posed link `known`.
+pub fn slide_line(
+    m: &Mechanism,
+    k: usize,
+    known: usize,
+    known_pose: &Pose,
+    theta: f64,
+    x: Vec2,
+) -> crate::geom::Line {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        crate::geom::Line {
+            point: known_pose.apply(pr.line_point) + rotate(x - pr.slider_local, theta),
+            dir: known_pose.dir(pr.line_dir),
+        }
+    } else {
+        crate::geom::Line {
+            point: known_pose.apply(pr.slider_local) + rotate(x - pr.line_point, theta),
+            dir: rotate(pr.line_dir, theta),
+        }
+    }
+}
+
+/// The guide direction of pair `k` in the sketch.
+fn sketch_guide_dir(m: &Mechanism, k: usize) -> Vec2 {
+    let pr = &m.prismatics[k];
+    m.links[pr.guide].sketch_pose.dir(pr.line_dir)
+}
+
+impl Branches {
+    /// Read every group's branch off the sketch.
+    pub fn from_sketch(m: &Mechanism, s: &Structure) -> Result<Branches> {
+        // Relative to the group's own lengths (`dyad_sign` is a sine or a
+        // cosine), not to the sketch's size: a far point of some other link
+        // must not make a group in general position look like a dead point.
+        let tol = ACCURACY.branch_dead_band;
+        let mut sign = Vec::new();
+        let mut triad_pose = Vec::new();
+        for g in &s.groups {
+            let (sg, pose) = match g {
+                AssurGroup::Dyad(d) => (dyad_sign(m, d), Pose::IDENTITY),
+                // A class III group's branch is tracked continuously from the sketch.
+                AssurGroup::Triad(t) => (1.0, m.links[t.base].sketch_pose),
+            };
+            let sg_tol = sign_tol(sg, tol);
+            if sg_tol == 0.0 && sg.is_finite() && needs_sign(g) {
+                return Err(Error::structure(format!(
+                    "the sketch shows group {} at a dead point (its branch cannot be read off the drawing); draw it in a general position",
+                    g.label(m)
+                )));
+            }
+            sign.push(if needs_sign(g) { sg_tol } else { 1.0 });
+            triad_pose.push(pose);
+        }
+        Ok(Branches { sign, triad_pose })
+    }
+}
+
+fn needs_sign(g: &AssurGroup) -> bool {
+    match g {
+        AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
+        AssurGroup::Triad(_) => false,
+    }
+}
+
+fn dyad_sign(m: &Mechanism, d: &Dyad) -> f64 {
+    match d.kind {
+        DyadKind::Rrr => {
+            let (b, c, dd) = (
+                sketch(m, point_of(d.ext1.joint)),
+                sketch(m, point_of(d.mid.joint)),
+                sketch(m, point_of(d.ext2.joint)),
+            );
+            (dd - b).cross(c - b) / ((dd - b).hypot() * (c - b).hypot()).max(f64::MIN_POSITIVE)
+        }
+        DyadKind::Rrp => {
+            let b = sketch(m, point_of(d.ext1.joint));
+            let c = sketch(m, point_of(d.mid.joint));
+            (c - b).dot(sketch_guide_dir(m, pair_of(d.ext2.joint)))
+                / (c - b).hypot().max(f64::MIN_POSITIVE)
+        }
+        DyadKind::Rpr => {
+            let rg = rocking_guide(m, d);
+            let u = sketch_guide_dir(m, pair_of(d.mid.joint));
+            let w = sketch(m, rg.pin_slider) - sketch(m, rg.pin_guide);
+            u.dot(w) / w.hypot().max(f64::MIN_POSITIVE)
+        }
+        DyadKind::Prp | DyadKind::Rpp => 1.0,
+    }
+}
+
+/// The largest step of input `i` in which class III groups are tracked: 2°
+/// of a crank, a hundredth of the smallest class III group of a slider.
+pub(crate) fn triad_step(m: &Mechanism, s: &Structure, need: &[bool], i: usize) -> f64 {
+    match m.scene.input_at(i) {
+        InputSpec::Crank { .. } => 2f64.to_radians(),
+        // A hundredth of the smallest class III group: the groups'
+        // own size, not the sketch's.
+        InputSpec::Slider { .. } => {
+            0.01 * s
+                .groups
+                .iter()
+                .zip(need)
+                .filter_map(|(g, &n)| match g {
+                    AssurGroup::Triad(t) if n => Some(triad_scale(m, t)),
+                    _ => None,
+                })
+                .fold(f64::INFINITY, f64::min)
+        }
+    }
+}
+
+/// The change of the input coordinates from `from` to `to`: a crank the
+/// short way round, a slider straight.
+pub fn span(m: &Mechanism, from: &[f64], to: &[f64]) -> Coords {
+    let mut d = Coords::new(to);
+    for ((d, &a), spec) in d.iter_mut().zip(from).zip(m.scene.inputs()) {
+        *d = match spec {
+            InputSpec::Crank { .. } => wrap_pi(*d - a),
+            InputSpec::Slider { .. } => *d - a,
+        };
+    }
+    d
+}
+
+/// The input coordinates between two positions at which class III groups
+/// are tracked so that they stay on their branch: the change
+/// ([`span`]) cut into equal steps, none longer than the largest step
+/// of its input; the last position itself is not among them.
+pub(crate) struct Tracking {
+    from: Coords,
+    span: Coords,
+    k: usize,
+    n: usize,
+}
+
+impl Tracking {
+    /// From `from` to `to`, input i in steps of at most `step(i)`.
+    pub(crate) fn new(
+        m: &Mechanism,
+        from: Coords,
+        to: &Coords,
+        step: impl Fn(usize) -> f64,
+    ) -> Tracking {
+        let span = span(m, &from, to);
+        let n = span
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (d.abs() / step(i)).ceil())
+            .fold(0.0, f64::max) as usize;
+        Tracking {
+            from,
+            span,
+            k: 1,
+            n,
+        }
+    }
+}
+
+impl Iterator for Tracking {
+    type Item = Coords;
+    fn next(&mut self) -> Option<Coords> {
+        if self.k >= self.n {
+            return None;
+        }
+        let (k, n) = (self.k, self.n);
+        let mut qk = self.from;
+        for (x, d) in qk.iter_mut().zip(self.span.iter()) {
+            *x += d * k as f64 / n as f64;
+        }
+        self.k += 1;
+        Some(qk)
+    }
+}
+
+/// The position solver: closed forms per group with the sketch's branches.
+#[derive(Clone, Debug)]
+pub struct PositionSolver<'a> {
+    pub m: &'a Mechanism,
+    pub s: &'a Structure,
+    /// Which groups to solve (demand-driven).
+    pub need: Vec<bool>,
+    pub branches: Branches,
+    /// The input coordinates of the last solved position (for tracking).
+    pub last_q: Coords,
+}
+
+impl<'a> PositionSolver<'a> {
+    pub fn new(m: &'a Mechanism, s: &'a Structure, need: Vec<bool>) -> Result<Self> {
+        Ok(PositionSolver {
+            m,
+            s,
+            need,
+            branches: Branches::from_sketch(m, s)?,
+            last_q: sketch_input(m),
+        })
+    }
+
+    /// Whether a class III group is tracked (its positions by continuation).
+    pub fn has_triads(&self) -> bool {
+        self.s
+            .groups
+            .iter()
+            .zip(&self.need)
+            .any(|(g, &n)| n && matches!(g, AssurGroup::Triad(_)))
+    }
+
+    /// Solve at input coordinate `q` (a single input), reached
+    /// continuously from the last solved position (from the sketch at
+    /// first), the short way round.
+    pub fn solve(&mut self, q: f64) -> Result<Configuration> {
+        self.solve_coords(Coords::one(q))
+    }
+
+    /// Solve at the input coordinates `q`, reached continuously from the
+    /// last solved position (from the sketch at first), each crank the
+    /// short way round.
+    pub fn solve_coords(&mut self, q: Coords) -> Result<Configuration> {
+        if self.has_triads() {
+            // Track class III groups in small steps so they stay on their branch.
+            let (m, st, need) = (self.m, self.s, &self.need);
+            let steps = Tracking::new(m, self.last_q, &q, |i| triad_step(m, st, need, i));
+            for qk in steps {
+                self.solve_at_coords(qk)?;
+            }
+        }
+        let c = self.solve_at_coords(q)?;
+        self.last_q = q;
+        Ok(c)
+    }
+
+    /// Solve at `q` (a single input) from the current tracked state
+    /// without stepping.
+    pub fn solve_at(&mut self, q: f64) -> Result<Configuration> {
+        self.solve_at_coords(Coords::one(q))
+    }
+
+    /// Solve at the input coordinates `q` from the current tracked state
+    /// without stepping.
+    pub fn solve_at_coords(&mut self, q: Coords) -> Result<Configuration> {
+        let (m, s) = (self.m, self.s);
+        let mut c = Configuration {
+            poses: vec![None; m.links.len()],
+        };
+        c.poses[m.frame()] = Some(Pose::IDENTITY);
+        for step in s.steps(m) {
+            match step {
+                Step::Frame { input, link } => {
+                    c.poses[link] = Some(place_input(m, input, q[input]))
+                }
+                Step::Chained {
+                    input,
+                    known,
+                    pair,
+                    other,
+                } => {
+                    let Some(kp) = c.poses[known] else {
+                        continue;
+                    };
+                    c.poses[other] = Some(place_across(m, pair, known, &kp, q[input]));
+                }
+                Step::Group { index, .. } if !self.need[index] => {}
+                Step::Group {
+                    index,
+                    group: AssurGroup::Dyad(d),
+                } => solve_group_dyad(m, s, index, d, self.branches.sign[index], &q, &mut c)?,
+                Step::Group {
+                    index,
+                    group: AssurGroup::Triad(t),
+                } => {
+                    let pose = solve_triad(m, t, self.branches.triad_pose[index], &mut c)
+                        .map_err(|why| triad_error(m, s, index, &q, why))?;
+                    self.branches.triad_pose[index] = pose;
+                }
+            }
+        }
+        Ok(c)
+    }
+}
+
+/// Pose a link by two points at local places `lp`, `lq` at known world
+/// places.
+fn set_by_two_local(
+    c: &mut Configuration,
+    link: usize,
+    lp: Vec2,
+    at_p: Point,
+    lq: Vec2,
+    at_q: Point,
+) {
+    let (w, l) = (at_q - at_p, lq - lp);
+    let angle = w.atan2() - l.atan2();
+    // The turn from l to w: its cosine and sine straight from the vectors.
+    let norm = w.hypot() * l.hypot();
+    let turn = (l.dot(w) / norm, l.cross(w) / norm);
+    c.poses[link] = Some(Pose::through_turned(at_p, lp, angle, turn));
+}
