@@ -161,6 +161,27 @@ impl<T: Number> Pose<T> {
     }
 }
 
+/// A slide at the poses of its slider and its guide: the guide's
+/// direction `u`, the arms of the slider's point on the slider (`rs`) and
+/// of the guide line's point on the guide (`rg`), and `d` = Q − P from the
+/// line's point to the slider's.
+struct SlideAt<T> {
+    u: Vector<T>,
+    rs: Vector<T>,
+    rg: Vector<T>,
+    d: Vector<T>,
+}
+
+impl<T: Number> SlideAt<T> {
+    /// ḋ, the rate of `d`, from the links' velocities `lin_s`, `lin_g` (of
+    /// their frames' origins) and their angular rates `ws`, `wg`.
+    fn rate(&self, lin_s: &Vector<T>, lin_g: &Vector<T>, ws: &T, wg: &T) -> Vector<T> {
+        lin_s
+            .add(&self.rs.perp().scale(ws))
+            .sub(&lin_g.add(&self.rg.perp().scale(wg)))
+    }
+}
+
 /// A prismatic pair in the frames of its links.
 #[derive(Clone, Debug)]
 pub struct Prism<T> {
@@ -173,6 +194,31 @@ pub struct Prism<T> {
     pub line_dir: Vector<T>,
     /// θ_slider − θ_guide.
     pub delta: T,
+}
+
+impl<T: Number> Prism<T> {
+    /// At the poses `p`: the guide's direction u and d = Q − P from the
+    /// guide line's point to the slider's.
+    fn offset(&self, p: &[Pose<T>]) -> (Vector<T>, Vector<T>) {
+        let (ps, pg) = (&p[self.slider], &p[self.guide]);
+        let u = pg.dir(&self.line_dir);
+        let d = ps
+            .apply(&self.slider_local)
+            .sub(&pg.apply(&self.line_point));
+        (u, d)
+    }
+
+    /// The slide at the poses `p`.
+    fn at(&self, p: &[Pose<T>]) -> SlideAt<T> {
+        let (ps, pg) = (&p[self.slider], &p[self.guide]);
+        let u = pg.dir(&self.line_dir);
+        let rs = ps.dir(&self.slider_local);
+        let rg = pg.dir(&self.line_point);
+        let d = ps
+            .apply(&self.slider_local)
+            .sub(&pg.apply(&self.line_point));
+        SlideAt { u, rs, rg, d }
+    }
 }
 
 /// One pair's equations.
@@ -206,18 +252,10 @@ pub enum Driver<T> {
         foot: Vector<T>,
         dir: Vector<T>,
     },
-    /// A driving slider on a moving guide (a hydraulic cylinder): its
-    /// point `at` (slider's frame) along the guide line (`line_point`,
-    /// `line_dir` in the guide's frame) less `zero`, where the sketch has
-    /// it: the slide relative to the guide.
-    Slide {
-        slider: usize,
-        guide: usize,
-        at: Vector<T>,
-        line_point: Vector<T>,
-        line_dir: Vector<T>,
-        zero: T,
-    },
+    /// A driving slider on a moving guide (a hydraulic cylinder): the
+    /// slider's point along the guide line of its pair `pair` less
+    /// `zero`, where the sketch has it: the slide relative to the guide.
+    Slide { pair: Prism<T>, zero: T },
 }
 
 /// The unknowns and equations of the links solved.
@@ -315,14 +353,7 @@ impl<T: Number> Equations<T> {
                     let p = sketch(m.prismatics[pair].point).sub(&gs.origin);
                     let local = p.rotate(&-gs.sin.clone(), &gs.cos);
                     let zero = local.sub(&pr.line_point).dot(&pr.line_dir);
-                    Driver::Slide {
-                        slider: pr.slider,
-                        guide: pr.guide,
-                        at: pr.slider_local,
-                        line_point: pr.line_point,
-                        line_dir: pr.line_dir,
-                        zero,
-                    }
+                    Driver::Slide { pair: pr, zero }
                 }
             }));
         }
@@ -369,8 +400,7 @@ impl<T: Number> Equations<T> {
                     let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
                     let turn = ps.angle.clone() - pg.angle.clone() - pr.delta.clone();
                     r.push(turn.wrap_angle());
-                    let u = pg.dir(&pr.line_dir);
-                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
+                    let (u, d) = pr.offset(p);
                     r.push(u.cross(&d));
                 }
                 Constraint::Driver(i) => {
@@ -386,17 +416,9 @@ impl<T: Number> Equations<T> {
                             foot,
                             dir,
                         } => dir.dot(&p[*link].apply(at).sub(foot)) - x,
-                        Driver::Slide {
-                            slider,
-                            guide,
-                            at,
-                            line_point,
-                            line_dir,
-                            zero,
-                        } => {
-                            let (ps, pg) = (&p[*slider], &p[*guide]);
-                            let d = ps.apply(at).sub(&pg.apply(line_point));
-                            pg.dir(line_dir).dot(&d) - zero.clone() - x
+                        Driver::Slide { pair, zero } => {
+                            let (u, d) = pair.offset(p);
+                            u.dot(&d) - zero.clone() - x
                         }
                     })
                 }
@@ -424,6 +446,25 @@ impl<T: Number> Equations<T> {
         }
     }
 
+    /// Row `row` of a slide along `w`, its links `(slider, guide)`: the
+    /// slider's point, the guide line's point, then `turn`, the row's
+    /// change with the guide's angle through its direction.
+    fn put_slide(
+        &self,
+        add: &mut impl FnMut(usize, usize, T),
+        row: usize,
+        pair: &Prism<T>,
+        sl: &SlideAt<T>,
+        w: &Vector<T>,
+        turn: T,
+    ) {
+        self.put_point(add, row, pair.slider, &sl.rs, false, w);
+        self.put_point(add, row, pair.guide, &sl.rg, true, w);
+        if let Some(i) = self.slot[pair.guide] {
+            add(row, 3 * i + 2, turn);
+        }
+    }
+
     /// The Jacobian Φ_q at the poses, cell by cell into `add(row, column,
     /// value)` (a cell may receive several values, to be summed in order,
     /// onto a matrix of zeros).
@@ -446,7 +487,6 @@ impl<T: Number> Equations<T> {
                     row += 2;
                 }
                 Constraint::Prismatic(pr) => {
-                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
                     if let Some(i) = self.slot[pr.slider] {
                         add(row, 3 * i + 2, T::one());
                     }
@@ -455,16 +495,10 @@ impl<T: Number> Equations<T> {
                     }
                     // f = u × (Q − P): u and P turn with the guide;
                     // u × X = (k×u)·X.
-                    let u = pg.dir(&pr.line_dir);
-                    let rs = ps.dir(&pr.slider_local);
-                    let rg = pg.dir(&pr.line_point);
-                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
-                    let n = u.perp();
-                    self.put_point(add, row + 1, pr.slider, &rs, false, &n);
-                    self.put_point(add, row + 1, pr.guide, &rg, true, &n);
-                    if let Some(i) = self.slot[pr.guide] {
-                        add(row + 1, 3 * i + 2, n.cross(&d));
-                    }
+                    let sl = pr.at(p);
+                    let n = sl.u.perp();
+                    let turn = n.cross(&sl.d);
+                    self.put_slide(add, row + 1, pr, &sl, &n, turn);
                     row += 2;
                 }
                 Constraint::Driver(k) => {
@@ -477,25 +511,11 @@ impl<T: Number> Equations<T> {
                             let r = p[*link].dir(at);
                             self.put_point(add, row, *link, &r, false, dir);
                         }
-                        Driver::Slide {
-                            slider,
-                            guide,
-                            at,
-                            line_point,
-                            line_dir,
-                            ..
-                        } => {
+                        Driver::Slide { pair, .. } => {
                             // f = u·(Q − P): u and P turn with the guide.
-                            let (ps, pg) = (&p[*slider], &p[*guide]);
-                            let u = pg.dir(line_dir);
-                            let rs = ps.dir(at);
-                            let rg = pg.dir(line_point);
-                            let d = ps.apply(at).sub(&pg.apply(line_point));
-                            self.put_point(add, row, *slider, &rs, false, &u);
-                            self.put_point(add, row, *guide, &rg, true, &u);
-                            if let Some(i) = self.slot[*guide] {
-                                add(row, 3 * i + 2, u.perp().dot(&d));
-                            }
+                            let sl = pair.at(p);
+                            let turn = sl.u.perp().dot(&sl.d);
+                            self.put_slide(add, row, pair, &sl, &sl.u, turn);
                         }
                     }
                     row += 1;
@@ -534,15 +554,10 @@ impl<T: Number> Equations<T> {
                     g.extend([t.x, t.y]);
                 }
                 Constraint::Prismatic(pr) => {
-                    let (ps, pg) = (&p[pr.slider], &p[pr.guide]);
-                    let u = pg.dir(&pr.line_dir);
                     let (ws, wg) = (rate(pr.slider), rate(pr.guide));
-                    let rs = ps.dir(&pr.slider_local);
-                    let rg = pg.dir(&pr.line_point);
-                    let d = ps.apply(&pr.slider_local).sub(&pg.apply(&pr.line_point));
-                    let dd = lin(pr.slider)
-                        .add(&rs.perp().scale(&ws))
-                        .sub(&lin(pr.guide).add(&rg.perp().scale(&wg)));
+                    let sl = pr.at(p);
+                    let dd = sl.rate(&lin(pr.slider), &lin(pr.guide), &ws, &wg);
+                    let SlideAt { u, rs, rg, d } = sl;
                     // f̈ = ü×d + 2u̇×ḋ + u×d̈; the q̈-free part goes to γ.
                     let quad = u.neg().scale(&wg).scale(&wg).cross(&d)
                         + T::from_f64(2.0) * u.perp().scale(&wg).cross(&dd)
@@ -562,25 +577,13 @@ impl<T: Number> Equations<T> {
                             let r = p[*link].dir(at);
                             acc + square(rate(*link)) * dir.dot(&r)
                         }
-                        Driver::Slide {
-                            slider,
-                            guide,
-                            at,
-                            line_point,
-                            line_dir,
-                            ..
-                        } => {
+                        Driver::Slide { pair, .. } => {
                             // f̈ = ü·d + 2u̇·ḋ + u·d̈; the q̈-free part
                             // leaves γ.
-                            let (ps, pg) = (&p[*slider], &p[*guide]);
-                            let u = pg.dir(line_dir);
-                            let (ws, wg) = (rate(*slider), rate(*guide));
-                            let rs = ps.dir(at);
-                            let rg = pg.dir(line_point);
-                            let d = ps.apply(at).sub(&pg.apply(line_point));
-                            let dd = lin(*slider)
-                                .add(&rs.perp().scale(&ws))
-                                .sub(&lin(*guide).add(&rg.perp().scale(&wg)));
+                            let (ws, wg) = (rate(pair.slider), rate(pair.guide));
+                            let sl = pair.at(p);
+                            let dd = sl.rate(&lin(pair.slider), &lin(pair.guide), &ws, &wg);
+                            let SlideAt { u, rs, rg, d } = sl;
                             let quad = -(square(wg.clone()) * u.dot(&d))
                                 + T::from_f64(2.0) * wg.clone() * u.perp().dot(&dd)
                                 + u.dot(&rs.neg().scale(&square(ws)).add(&rg.scale(&square(wg))));

@@ -37,9 +37,7 @@ mod rates;
 
 use crate::error::Result;
 use crate::geom::Pose;
-use crate::kinematics::analytic::contour::{
-    DYAD_CONTOURS, TRIAD_CONTOURS, driven_pair, dyad_contour, invert_lu, invert3, triad_contour,
-};
+use crate::kinematics::analytic::contour::{driven_pair, dyad_contours, triad_contours};
 use crate::kinematics::analytic::{Coords, Drive, Drives, Motion, Order};
 use crate::kinematics::positions::{
     self, Branches, Configuration, CrankFrame, Tracking, crank_frame, sketch_input,
@@ -284,18 +282,8 @@ fn group_steps(
     match g {
         AssurGroup::Dyad(d) => {
             let driven = driven_pair(d).map(|(conn, input, on)| (conn, input, on.then_some(0)));
-            let (pairs, ends) = dyad_contour(d);
-            let g = compile_contour::<3>(
-                m,
-                gi,
-                pairs,
-                DYAD_CONTOURS,
-                &ends,
-                &d.placed_links(),
-                driven,
-                solved,
-                invert3,
-            );
+            let on = dyad_contours(d);
+            let g = compile_contour::<3>(m, gi, &on, &d.placed_links(), driven, solved);
             let rate = match Dyad3::of(&g) {
                 Some(d3) => Rate::Dyad3(Box::new(d3)),
                 None => Rate::Dyad(Box::new(g)),
@@ -303,18 +291,9 @@ fn group_steps(
             (dyad_place(m, gi, d, sign), rate)
         }
         AssurGroup::Triad(t) => {
-            let (pairs, ends) = triad_contour(t);
-            let rate = Rate::Triad(Box::new(compile_contour::<6>(
-                m,
-                gi,
-                pairs,
-                TRIAD_CONTOURS,
-                &ends,
-                &t.placed_links(),
-                None,
-                solved,
-                invert_lu,
-            )));
+            let on = triad_contours(t);
+            let g = compile_contour::<6>(m, gi, &on, &t.placed_links(), None, solved);
+            let rate = Rate::Triad(Box::new(g));
             (Place::Triad { group: gi }, rate)
         }
     }

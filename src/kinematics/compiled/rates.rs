@@ -11,7 +11,7 @@ use super::place::On;
 use super::{Program, State};
 use crate::error::Result;
 use crate::geom::perp;
-use crate::kinematics::analytic::contour::{self, Inverse, Reach, Twist, bracket};
+use crate::kinematics::analytic::contour::{self, Contours, Inverse, Reach, Twist, bracket};
 use crate::kinematics::analytic::{Drive, Drives, Motion, Order};
 use crate::kinematics::positions::Configuration;
 use crate::model::mechanism::Mechanism;
@@ -180,18 +180,19 @@ impl Reach for Walking<'_, '_> {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
+/// Compile group `group`'s contours `on`: its links `links` (the first
+/// the one whose origin the twists are taken about), a cylinder's driven
+/// pair (with its input and the contour it lies on), the links `solved`
+/// before it.
 pub(super) fn compile_contour<const N: usize>(
     m: &Mechanism,
     group: usize,
-    conns: [Conn; N],
-    contours: &'static [&'static [(usize, f64)]],
-    ends: &[(usize, usize)],
+    on: &Contours<N>,
     links: &[usize],
     driven: Option<(Conn, usize, Option<usize>)>,
     solved: &[bool],
-    invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
 ) -> Contour<N> {
+    let (conns, contours, ends, invert) = (on.pairs, on.contours, on.ends(), on.invert);
     let mut cp = Compiling {
         solved,
         known: [0; MAX_KNOWN],

@@ -259,35 +259,16 @@ impl Kernel {
         d: Drafting,
     ) -> Result<(&Plan, Option<&Plan>)> {
         let drive = drive.into();
-        let field = Field::default();
         let m = st.m;
-        let naming = Naming::NumbersOnly;
-        // The scale a plan was drawn at, and its band when it changed.
-        let keep = |last: &mut Option<(f64, (f64, f64))>, mu: f64| {
-            if last.is_none_or(|l| l.0 != mu) {
-                *last = scale::band(mu).map(|b| (mu, b));
-            }
-        };
         let velocity = self
             .velocity
             .get_or_insert_with(|| Plan::empty(PlanKind::Velocity, 1.0, d.delta, m));
         // (A construction empties what it uses first: an error mid-way
         // leaves nothing the next one reads.)
         let tools = self.tools.get_or_insert_with(|| Tools::new(st));
+        let at = (st, c, drive, &d);
         let kind = (PlanKind::Velocity, None);
-        let settled = construct(
-            st,
-            c,
-            drive,
-            kind,
-            &d,
-            &field,
-            naming,
-            (velocity, tools),
-            self.last[0],
-        )?;
-        self.settled += usize::from(settled);
-        keep(&mut self.last[0], velocity.mu);
+        self.settled += usize::from(sweep_plan(at, kind, velocity, tools, &mut self.last[0])?);
         if order == Order::Velocity {
             return Ok((velocity, None));
         }
@@ -295,21 +276,35 @@ impl Kernel {
             .acceleration
             .get_or_insert_with(|| Plan::empty(PlanKind::Acceleration, 1.0, d.delta, m));
         let kind = (PlanKind::Acceleration, Some(&*velocity));
-        let settled = construct(
-            st,
-            c,
-            drive,
+        self.settled += usize::from(sweep_plan(
+            at,
             kind,
-            &d,
-            &field,
-            naming,
-            (acceleration, tools),
-            self.last[1],
-        )?;
-        self.settled += usize::from(settled);
-        keep(&mut self.last[1], acceleration.mu);
+            acceleration,
+            tools,
+            &mut self.last[1],
+        )?);
         Ok((velocity, Some(acceleration)))
     }
+}
+
+/// One plan of a sweep's position, numbers only, tried first at the
+/// scale it was last drawn at (`last`, with its band), which it then
+/// keeps: whether it settled there at once.
+fn sweep_plan(
+    (st, c, drive, d): (&Setup, &Configuration, Drives, &Drafting),
+    kind: (PlanKind, Option<&Plan>),
+    plan: &mut Plan,
+    tools: &mut Tools,
+    last: &mut Option<(f64, (f64, f64))>,
+) -> Result<bool> {
+    let field = Field::default();
+    let naming = Naming::NumbersOnly;
+    let settled = construct(st, c, drive, kind, d, &field, naming, (plan, tools), *last)?;
+    // The scale the plan was drawn at, and its band when it changed.
+    if last.is_none_or(|l| l.0 != plan.mu) {
+        *last = scale::band(plan.mu).map(|b| (plan.mu, b));
+    }
+    Ok(settled)
 }
 
 impl Default for Kernel {

@@ -22,6 +22,16 @@ enum Outer {
     Guide { q: Point, u: Vec2 },
 }
 
+impl Outer {
+    /// Where the pair's reaction acts: the pin, the guide's point.
+    fn point(self) -> Point {
+        match self {
+            Outer::Pin { at, .. } => at,
+            Outer::Guide { q, .. } => q,
+        }
+    }
+}
+
 fn outer(an: &Analysis, s: &Solved, c: &Conn, link: usize) -> Outer {
     match c.joint {
         Joint::R(p) => Outer::Pin {
@@ -67,33 +77,19 @@ pub(super) fn group_plan(
     record((an, s), out, e1.joint, e1.from, e1.to, sol.r1, sol.c1);
     record((an, s), out, e2.joint, e2.to, e2.from, sol.r2, sol.c2);
     record((an, s), out, mid.joint, mid.to, mid.from, sol.rm, sol.cm);
-    let point_of = |o: Outer| match o {
-        Outer::Pin { at, .. } => at,
-        Outer::Guide { q, .. } => q,
-    };
     known.push(Applied {
         link: e1.from,
-        at: point_of(o1),
+        at: o1.point(),
         f: -sol.r1,
         couple: -sol.c1,
-        force: Force::Reaction {
-            from: e1.to,
-            to: e1.from,
-            joint: e1.joint,
-            part: Part::Whole,
-        },
+        force: reaction(e1.to, e1.from, e1.joint, Part::Whole),
     });
     known.push(Applied {
         link: e2.to,
-        at: point_of(o2),
+        at: o2.point(),
         f: -sol.r2,
         couple: -sol.c2,
-        force: Force::Reaction {
-            from: e2.from,
-            to: e2.to,
-            joint: e2.joint,
-            part: Part::Whole,
-        },
+        force: reaction(e2.from, e2.to, e2.joint, Part::Whole),
     });
     if let Some(c) = d.cylinder {
         cylinder_pair(an, s, d, c, known, out, &mut plan, sol)?;
@@ -114,6 +110,156 @@ struct Solution {
     cm: f64,
 }
 
+/// A dyad's polygon under way: its two sides' forces, its pairs, the
+/// middle pair's point (B) or its guide.
+struct Polygon<'k> {
+    s0: Side<'k>,
+    s1: Side<'k>,
+    e1: Conn,
+    mid: Conn,
+    e2: Conn,
+    o1: Outer,
+    o2: Outer,
+    b: Point,
+    mid_guide: Option<Vec2>,
+}
+
+impl Polygon<'_> {
+    /// The reaction in the first outer pair, on the group (`part` of it).
+    fn r1_force(&self, part: Part) -> Force {
+        reaction(self.e1.from, self.e1.to, self.e1.joint, part)
+    }
+
+    /// The reaction in the second outer pair, on the group.
+    fn r2_force(&self, part: Part) -> Force {
+        reaction(self.e2.to, self.e2.from, self.e2.joint, part)
+    }
+
+    /// Step 1: the first side's known component of its outer reaction
+    /// and what it is of that reaction.
+    fn first_component(&self, dr: &mut Draft) -> (Vec2, Force) {
+        let (s0, s1, b) = (&self.s0, &self.s1, self.b);
+        let mut pre = Vec2::ZERO;
+        let mut pre_force = self.r1_force(Part::Tangential);
+        match (self.o1, self.mid_guide) {
+            (Outer::Pin { at: a, .. }, None) => {
+                // ΣM_B(side 0) = 0: R^τ ⊥ AB.
+                let e = perp((b - a).normalize());
+                let t = -s0.moment_about(b) / (a - b).cross(e);
+                pre = e * t;
+                dr.plan.steps.push(ForceStep::Moment {
+                    links: s0.links.clone(),
+                    about: b,
+                    about_name: mid_point(&self.mid),
+                    force: pre_force,
+                    value: t,
+                });
+            }
+            (Outer::Pin { at: a, .. }, Some(u)) => {
+                // Along the middle guide: the guide's force on side 0 is across
+                // it, so (R + ΣF₀)·u = 0.
+                let along = -s0.sum().dot(u);
+                pre_force = self.r1_force(Part::AlongGuide);
+                dr.plan.steps.push(ForceStep::Projection {
+                    links: s0.links.clone(),
+                    force: pre_force,
+                    value: along,
+                });
+                if let Outer::Pin { at: c, .. } = self.o2 {
+                    // RPR: ΣM_C(both sides) = 0 gives the rest of R.
+                    let n = perp(u);
+                    let both = s0.moment_about(c) + s1.moment_about(c);
+                    let across = -((a - c).cross(u * along) + both) / (a - c).cross(n);
+                    pre = u * along + n * across;
+                    pre_force = self.r1_force(Part::Whole);
+                    dr.plan.steps.push(ForceStep::Moment {
+                        links: [s0.links.clone(), s1.links.clone()].concat(),
+                        about: c,
+                        about_name: outer_point(&self.o2),
+                        force: self.r1_force(Part::AcrossGuide),
+                        value: across,
+                    });
+                } else {
+                    pre = u * along;
+                }
+            }
+            (Outer::Guide { .. }, _) => {}
+        }
+        (pre, pre_force)
+    }
+
+    /// The second side's tangential component (RRR).
+    fn second_component(&self, dr: &mut Draft) {
+        let (s1, b) = (&self.s1, self.b);
+        if let (Outer::Pin { at: c, .. }, None) = (self.o2, self.mid_guide) {
+            let e = perp((b - c).normalize());
+            let t = -s1.moment_about(b) / (c - b).cross(e);
+            dr.plan.steps.push(ForceStep::Moment {
+                links: s1.links.clone(),
+                about: b,
+                about_name: mid_point(&self.mid),
+                force: self.r2_force(Part::Tangential),
+                value: t,
+            });
+            dr.lay_off(e * t, self.r2_force(Part::Tangential));
+        }
+    }
+
+    /// Close the polygon ending at point `end`: where two lines of known
+    /// direction meet, or (RPR) the vector back to the start.
+    fn close(&self, dr: &mut Draft, end: usize, at: &dyn Fn() -> String) -> Result<usize> {
+        let b = self.b;
+        Ok(match (self.o1, self.o2, self.mid_guide) {
+            (Outer::Pin { .. }, Outer::Pin { .. }, Some(_)) => 0,
+            _ => {
+                let first_dir = match (self.o1, self.mid_guide) {
+                    (Outer::Pin { at: a, .. }, None) => (b - a, Part::Normal),
+                    (Outer::Pin { .. }, Some(u)) => (perp(u), Part::AcrossGuide),
+                    (Outer::Guide { u, .. }, _) => (perp(u), Part::Whole),
+                };
+                let second_dir = match self.o2 {
+                    Outer::Pin { at: c, .. } => (b - c, Part::Normal),
+                    Outer::Guide { u, .. } => (perp(u), Part::Whole),
+                };
+                let l1 = dr.line(0, first_dir.0, self.r1_force(first_dir.1));
+                let l2 = dr.line(end, second_dir.0, self.r2_force(second_dir.1));
+                dr.meet(l1, l2, at)?
+            }
+        })
+    }
+
+    /// The couples of prismatic pairs (where their normal forces act), side
+    /// 0 first: each side has at most one unknown couple.
+    fn couples(&self, dr: &mut Draft, sol: &mut Solution, mid_force: Force) {
+        let (s0, s1, b) = (&self.s0, &self.s1, self.b);
+        let (r1, r2, rm) = (sol.r1, sol.r2, sol.rm);
+        let (p1, p2) = (self.o1.point(), self.o2.point());
+        let m0 = s0.moment_about(p1) + (b - p1).cross(rm);
+        if self.mid_guide.is_some() {
+            sol.cm = -m0;
+            couple_step(dr, &s0.links, mid_force, sol.cm, rm, b);
+        } else if let Outer::Guide { .. } = self.o1 {
+            sol.c1 = -m0;
+            couple_step(dr, &s0.links, self.r1_force(Part::Whole), sol.c1, r1, p1);
+        }
+        if let Outer::Guide { .. } = self.o2 {
+            let m1 = s1.moment_about(p2) + (b - p2).cross(-rm) - sol.cm;
+            sol.c2 = -m1;
+            couple_step(dr, &s1.links, self.r2_force(Part::Whole), sol.c2, r2, p2);
+        }
+    }
+}
+
+/// The reaction in pair `joint` on link `to` from link `from` (`part` of it).
+pub(super) fn reaction(from: usize, to: usize, joint: Joint, part: Part) -> Force {
+    Force::Reaction {
+        from,
+        to,
+        joint,
+        part,
+    }
+}
+
 /// The dyad's scheme and polygon (see the module's comment).
 #[allow(clippy::too_many_arguments)]
 fn dyad_polygon(
@@ -130,20 +276,7 @@ fn dyad_polygon(
         links: sides[i].clone(),
         known,
     };
-    let (s0, s1) = (side(0), side(1));
     let (e1, mid, e2) = (d.ext1, d.mid, d.ext2);
-    let r1_force = |part| Force::Reaction {
-        from: e1.from,
-        to: e1.to,
-        joint: e1.joint,
-        part,
-    };
-    let r2_force = |part| Force::Reaction {
-        from: e2.to,
-        to: e2.from,
-        joint: e2.joint,
-        part,
-    };
     // The middle pair: its point (B) or its guide.
     let (b, mid_guide) = match mid.joint {
         Joint::R(p) => (s.config.point(&an.mech, mid.to, p), None),
@@ -152,112 +285,35 @@ fn dyad_polygon(
             (q, Some(u))
         }
     };
-    // Step 1: the first side's known component of its outer reaction.
-    let mut pre = Vec2::ZERO;
-    let mut pre_force = r1_force(Part::Tangential);
-    match (o1, mid_guide) {
-        (Outer::Pin { at: a, .. }, None) => {
-            // ΣM_B(side 0) = 0: R^τ ⊥ AB.
-            let e = perp((b - a).normalize());
-            let t = -s0.moment_about(b) / (a - b).cross(e);
-            pre = e * t;
-            dr.plan.steps.push(ForceStep::Moment {
-                links: s0.links.clone(),
-                about: b,
-                about_name: mid_point(&mid),
-                force: pre_force,
-                value: t,
-            });
-        }
-        (Outer::Pin { at: a, .. }, Some(u)) => {
-            // Along the middle guide: the guide's force on side 0 is across
-            // it, so (R + ΣF₀)·u = 0.
-            let along = -s0.sum().dot(u);
-            pre_force = r1_force(Part::AlongGuide);
-            dr.plan.steps.push(ForceStep::Projection {
-                links: s0.links.clone(),
-                force: pre_force,
-                value: along,
-            });
-            if let Outer::Pin { at: c, .. } = o2 {
-                // RPR: ΣM_C(both sides) = 0 gives the rest of R.
-                let n = perp(u);
-                let both = s0.moment_about(c) + s1.moment_about(c);
-                let across = -((a - c).cross(u * along) + both) / (a - c).cross(n);
-                pre = u * along + n * across;
-                pre_force = r1_force(Part::Whole);
-                dr.plan.steps.push(ForceStep::Moment {
-                    links: [s0.links.clone(), s1.links.clone()].concat(),
-                    about: c,
-                    about_name: outer_point(&o2),
-                    force: r1_force(Part::AcrossGuide),
-                    value: across,
-                });
-            } else {
-                pre = u * along;
-            }
-        }
-        (Outer::Guide { .. }, _) => {}
-    }
+    let pg = Polygon {
+        s0: side(0),
+        s1: side(1),
+        e1,
+        mid,
+        e2,
+        o1,
+        o2,
+        b,
+        mid_guide,
+    };
+    let (pre, pre_force) = pg.first_component(dr);
     dr.lay_off(pre, pre_force);
     let after_pre = dr.last();
-    for a in s0.forces().filter(|a| a.f != Vec2::ZERO) {
+    for a in pg.s0.forces().filter(|a| a.f != Vec2::ZERO) {
         dr.lay_off(a.f, a.force);
     }
     let end0 = dr.last();
-    for a in s1.forces().filter(|a| a.f != Vec2::ZERO) {
+    for a in pg.s1.forces().filter(|a| a.f != Vec2::ZERO) {
         dr.lay_off(a.f, a.force);
     }
     let end1 = dr.last();
-    // The second side's tangential component (RRR).
-    if let (Outer::Pin { at: c, .. }, None) = (o2, mid_guide) {
-        let e = perp((b - c).normalize());
-        let t = -s1.moment_about(b) / (c - b).cross(e);
-        dr.plan.steps.push(ForceStep::Moment {
-            links: s1.links.clone(),
-            about: b,
-            about_name: mid_point(&mid),
-            force: r2_force(Part::Tangential),
-            value: t,
-        });
-        dr.lay_off(e * t, r2_force(Part::Tangential));
-    }
+    pg.second_component(dr);
     let end = dr.last();
-    // Close the polygon: where two lines of known direction meet, or (RPR)
-    // the vector back to the start.
-    let closing = match (o1, o2, mid_guide) {
-        (Outer::Pin { .. }, Outer::Pin { .. }, Some(_)) => 0,
-        _ => {
-            let first_dir = match (o1, mid_guide) {
-                (Outer::Pin { at: a, .. }, None) => (b - a, Part::Normal),
-                (Outer::Pin { .. }, Some(u)) => (perp(u), Part::AcrossGuide),
-                (Outer::Guide { u, .. }, _) => (perp(u), Part::Whole),
-            };
-            let second_dir = match o2 {
-                Outer::Pin { at: c, .. } => (b - c, Part::Normal),
-                Outer::Guide { u, .. } => (perp(u), Part::Whole),
-            };
-            let l1 = dr.line(0, first_dir.0, r1_force(first_dir.1));
-            let l2 = dr.line(end, second_dir.0, r2_force(second_dir.1));
-            dr.meet(l1, l2, at)?
-        }
-    };
-    let r1 = dr.measure(closing, after_pre, r1_force(Part::Whole));
-    let r2 = dr.measure(end1, closing, r2_force(Part::Whole));
-    let mid_force = Force::Reaction {
-        from: mid.to,
-        to: mid.from,
-        joint: mid.joint,
-        part: Part::Whole,
-    };
+    let closing = pg.close(dr, end, at)?;
+    let r1 = dr.measure(closing, after_pre, pg.r1_force(Part::Whole));
+    let r2 = dr.measure(end1, closing, pg.r2_force(Part::Whole));
+    let mid_force = reaction(mid.to, mid.from, mid.joint, Part::Whole);
     let rm = dr.measure(end0, closing, mid_force);
-    // The couples of prismatic pairs (where their normal forces act), side
-    // 0 first: each side has at most one unknown couple.
-    let point_of = |o: Outer| match o {
-        Outer::Pin { at, .. } => at,
-        Outer::Guide { q, .. } => q,
-    };
-    let (p1, p2) = (point_of(o1), point_of(o2));
     let mut sol = Solution {
         r1,
         c1: 0.0,
@@ -266,19 +322,7 @@ fn dyad_polygon(
         rm,
         cm: 0.0,
     };
-    let m0 = s0.moment_about(p1) + (b - p1).cross(rm);
-    if mid_guide.is_some() {
-        sol.cm = -m0;
-        couple_step(dr, &s0.links, mid_force, sol.cm, rm, b);
-    } else if let Outer::Guide { .. } = o1 {
-        sol.c1 = -m0;
-        couple_step(dr, &s0.links, r1_force(Part::Whole), sol.c1, r1, p1);
-    }
-    if let Outer::Guide { .. } = o2 {
-        let m1 = s1.moment_about(p2) + (b - p2).cross(-rm) - sol.cm;
-        sol.c2 = -m1;
-        couple_step(dr, &s1.links, r2_force(Part::Whole), sol.c2, r2, p2);
-    }
+    pg.couples(dr, &mut sol, mid_force);
     Ok(sol)
 }
 

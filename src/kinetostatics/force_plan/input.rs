@@ -2,7 +2,7 @@
 //! reaction of the link it turns or slides on.
 
 use super::draft::Draft;
-use super::dyad::couple_step;
+use super::dyad::{couple_step, reaction};
 use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
 use super::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
@@ -53,12 +53,7 @@ pub(super) fn input_plan(
             out.drives[i] = Some(mb);
             let frame = m.frame();
             let joint = Joint::R(pivot);
-            let force = Force::Reaction {
-                from: frame,
-                to: link,
-                joint,
-                part: Part::Whole,
-            };
+            let force = reaction(frame, link, joint, Part::Whole);
             let r = dr.measure(end, 0, force);
             record((an, s), out, joint, frame, link, r, 0.0);
         }
@@ -80,12 +75,7 @@ pub(super) fn input_plan(
             let normal = -sum.dot(n);
             let couple = -side.moment_about(q);
             let joint = Joint::P(pair);
-            let force = Force::Reaction {
-                from: other,
-                to: link,
-                joint,
-                part: Part::Whole,
-            };
+            let force = reaction(other, link, joint, Part::Whole);
             dr.lay_off(u * (fb * sign), Force::Drive { input: i, on: link });
             let r = dr.measure(dr.last(), 0, force);
             couple_step(&mut dr, &[link], force, couple, r, q);
@@ -96,12 +86,7 @@ pub(super) fn input_plan(
                 at: q,
                 f: -(n * normal) - u * (fb * sign),
                 couple: -couple,
-                force: Force::Reaction {
-                    from: link,
-                    to: other,
-                    joint,
-                    part: Part::Whole,
-                },
+                force: reaction(link, other, joint, Part::Whole),
             });
         }
     }

@@ -177,31 +177,54 @@ pub fn solve(
 }
 
 /// A dyad's single contour through its three pairs.
-pub(crate) const DYAD_CONTOURS: &[&[(usize, f64)]] = &[&[(0, 1.0), (1, 1.0), (2, 1.0)]];
-
+const DYAD_CONTOURS: &[&[(usize, f64)]] = &[&[(0, 1.0), (1, 1.0), (2, 1.0)]];
 /// A three-leash group's two contours.
-pub(crate) const TRIAD_CONTOURS: &[&[(usize, f64)]] = &[
+const TRIAD_CONTOURS: &[&[(usize, f64)]] = &[
     &[(0, 1.0), (1, 1.0), (2, -1.0), (3, -1.0)],
     &[(0, 1.0), (1, 1.0), (4, -1.0), (5, -1.0)],
 ];
 
-/// A dyad's pairs in the order of its contour ([`DYAD_CONTOURS`]) and the
-/// contour's ends: from K1 to K2.
-pub(crate) fn dyad_contour(d: &Dyad) -> ([Conn; 3], [(usize, usize); 1]) {
-    ([d.ext1, d.mid, d.ext2], [(d.ext1.from, d.ext2.to)])
+/// A group's contours: its `N` pairs in contour order, the contours as
+/// (pair index, sign) lists from the known link of an end to the known
+/// link of the other end, and the inversion of their matrix.
+#[derive(Clone, Copy)]
+pub(crate) struct Contours<const N: usize> {
+    pub pairs: [Conn; N],
+    pub contours: &'static [&'static [(usize, f64)]],
+    ends: [(usize, usize); 2],
+    pub invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
 }
 
-/// A three-leash group's pairs in the order of its two contours
-/// ([`TRIAD_CONTOURS`]) and their ends: from the first leash's known
-/// link to the second's and the third's.
-pub(crate) fn triad_contour(t: &Triad) -> ([Conn; 6], [(usize, usize); 2]) {
-    (
-        [t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
-        [
+impl<const N: usize> Contours<N> {
+    /// Each contour's (start, end) known links.
+    pub fn ends(&self) -> &[(usize, usize)] {
+        &self.ends[..self.contours.len()]
+    }
+}
+
+/// A dyad's contour: its pairs from K1 to K2, inverted in closed form.
+pub(crate) fn dyad_contours(d: &Dyad) -> Contours<3> {
+    let ends = (d.ext1.from, d.ext2.to);
+    Contours {
+        pairs: [d.ext1, d.mid, d.ext2],
+        contours: DYAD_CONTOURS,
+        ends: [ends, ends],
+        invert: invert3,
+    }
+}
+
+/// A three-leash group's two contours: from the first leash's known
+/// link to the second's and the third's, inverted by LU.
+pub(crate) fn triad_contours(t: &Triad) -> Contours<6> {
+    Contours {
+        pairs: [t.ext[0], t.int[0], t.int[1], t.ext[1], t.int[2], t.ext[2]],
+        contours: TRIAD_CONTOURS,
+        ends: [
             (t.ext[0].from, t.ext[1].from),
             (t.ext[0].from, t.ext[2].from),
         ],
-    )
+        invert: invert_lu,
+    }
 }
 
 /// One group's rates at the drives `drives`, the links before it known
@@ -226,24 +249,12 @@ fn solve_group(
                 rate2: drives[input].rate2,
                 contour: on.then_some(0),
             });
-            let (pairs, ends) = dyad_contour(d);
-            let on = Contours {
-                pairs,
-                contours: DYAD_CONTOURS,
-                ends: &ends,
-                invert: invert3,
-            };
-            group::<3>(m, c, on, out, order, &d.placed_links(), driven, motions)
+            let on = dyad_contours(d);
+            group::<3>(m, c, &on, out, order, &d.placed_links(), driven, motions)
         }
         AssurGroup::Triad(t) => {
-            let (pairs, ends) = triad_contour(t);
-            let on = Contours {
-                pairs,
-                contours: TRIAD_CONTOURS,
-                ends: &ends,
-                invert: invert_lu,
-            };
-            group::<6>(m, c, on, out, order, &t.placed_links(), None, motions)
+            let on = triad_contours(t);
+            group::<6>(m, c, &on, out, order, &t.placed_links(), None, motions)
         }
     }
 }
@@ -259,16 +270,6 @@ pub(crate) fn singular(m: &Mechanism, g: &AssurGroup, drives: &Drives) -> Error 
     )
 }
 
-/// A group's contours: its `N` pairs in contour order, the contours as
-/// (pair index, sign) lists from the known link `ends[i].0` to the known
-/// link `ends[i].1`, and the inversion of their matrix.
-struct Contours<'e, const N: usize> {
-    pairs: [Conn; N],
-    contours: &'static [&'static [(usize, f64)]],
-    ends: &'e [(usize, usize)],
-    invert: fn(&SMatrix<f64, N, N>) -> Option<Inverse<N>>,
-}
-
 /// One group's contours: the rates in its pairs, then the motion of each
 /// of its links (`links`, written to `motions` in ascending link order, the
 /// order of [`AssurGroup::links`]); `None` when the velocity contour is
@@ -277,14 +278,14 @@ struct Contours<'e, const N: usize> {
 fn group<const N: usize>(
     m: &Mechanism,
     c: &Configuration,
-    on: Contours<N>,
+    on: &Contours<N>,
     known: &[Option<Motion>],
     order: Order,
     links: &[usize],
     driven: Option<Driven>,
     motions: &mut [(usize, Motion); 4],
 ) -> Option<usize> {
-    let (conns, contours, ends) = (on.pairs, on.contours, on.ends);
+    let (conns, contours, ends) = (on.pairs, on.contours, on.ends());
     // The twists are taken about a point of the group (the pose of its
     // first link), so that the contour's numbers are the group's own size.
     let o = c.pose(links[0]).origin;

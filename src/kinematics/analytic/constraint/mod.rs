@@ -8,6 +8,11 @@
 //! equations themselves (Φ, Φ_q, γ) are [`super::equations`], written once
 //! for f64 and for the extended-precision reference.
 
+mod answer;
+mod path;
+
+pub use answer::{Corrected, Unknowns};
+
 use super::equations::{Constraint, Equations, Prism, Vector};
 use super::{Coords, Motion, Order};
 use crate::accuracy::ACCURACY;
@@ -287,44 +292,6 @@ impl<'a> ConstraintSolver<'a> {
         x
     }
 
-    /// The tangent of the path, dq/dx from Φ_q·q' = −∂Φ/∂x (the drivers'
-    /// rows alone depend on x: each by its input's rate along the path,
-    /// `dx`), and the sign of det Φ_q: the sign of the assembly's
-    /// orientation, which changes only where the path meets a singular
-    /// position (where two assemblies meet).
-    fn tangent(&self, dx: &[f64]) -> Option<(DVector<f64>, f64)> {
-        let j = self.jacobian(&self.q);
-        let mut b = DVector::zeros(self.rows());
-        for &(i, row) in &self.driver_rows {
-            b[row] = dx[i];
-        }
-        let lu = j.lu();
-        let u = lu.u();
-        let mut sign: f64 = lu.p().determinant();
-        for i in 0..u.nrows().min(u.ncols()) {
-            sign *= u[(i, i)].signum();
-        }
-        Some((lu.solve(&b)?, sign))
-    }
-
-    /// A direction on the path in the links' own lengths (x, y over the
-    /// link's size, θ, and each input over its own scale), of unit length,
-    /// to measure how the path turns: `t` the tangent, `dx` the inputs'
-    /// rates along the path over their scales.
-    fn unit_direction(&self, t: &DVector<f64>, dx: &[f64]) -> DVector<f64> {
-        let mut d = DVector::zeros(t.len() + dx.len());
-        for i in 0..self.eq.links.len() {
-            d[3 * i] = t[3 * i] / self.scale[i];
-            d[3 * i + 1] = t[3 * i + 1] / self.scale[i];
-            d[3 * i + 2] = t[3 * i + 2];
-        }
-        for (k, x) in dx.iter().enumerate() {
-            d[t.len() + k] = *x;
-        }
-        let n = d.norm();
-        if n > 0.0 { d / n } else { d }
-    }
-
     /// Positions at input coordinate `x` (a single input), reached by
     /// continuation from the previous solve (from the sketch at first),
     /// the short way round.
@@ -394,167 +361,6 @@ impl<'a> ConstraintSolver<'a> {
     /// before the first).
     pub fn last_inputs(&self) -> Coords {
         self.last_input.unwrap_or_else(|| sketch_input(self.m))
-    }
-
-    /// Follow the assembly along the inputs from the last solved
-    /// coordinates by `span`: a predictor along the path's tangent,
-    /// Newton's corrector, and step control. A step is halved when the
-    /// path turns by more than [`MAX_TURN`] over it, when the corrector
-    /// does not contract (each correction at most half the last), or when
-    /// the Jacobian is singular on the way; it grows again after easy
-    /// steps. So a narrow neck (a near-toggle, a change point passed at
-    /// 1e-11) is passed on the same assembly in steps as small as the
-    /// neck, and open country in steps up to 5° (or 5 % of the input
-    /// link's size).
-    ///
-    /// This is the same branch that route (a) takes by its sign rule: the
-    /// orientation sign of a group (docs/analysis.md) changes only through
-    /// a toggle, where the two assemblies meet; a path that never meets
-    /// the other assembly keeps its sign.
-    ///
-    /// The path's parameter x: a single input's own coordinate; several
-    /// inputs move together, straight from the start to the end, as x goes
-    /// from 0 to 1.
-    fn walk(&mut self, span: &[f64]) -> std::result::Result<(), String> {
-        let m = self.m;
-        let from = self.last_inputs();
-        let several = span.len() > 1;
-        // Each input's own scale and largest step: a crank in radians, a
-        // slider in its link's size.
-        let scale_of = |i: usize| -> f64 {
-            let spec = m.scene.input_at(i);
-            if spec.is_crank() {
-                1.0
-            } else {
-                let l = spec.link();
-                self.eq.slot[l].map_or(m.size, |k| self.scale[k])
-            }
-        };
-        let step_of = |i: usize| -> f64 {
-            if m.scene.input_at(i).is_crank() {
-                ACCURACY.max_path_step.to_radians()
-            } else {
-                0.01 * ACCURACY.max_path_step * scale_of(i)
-            }
-        };
-        // (start, end), the inputs' rates along x, the inputs at x.
-        let (start, end, rates) = if several {
-            (0.0, 1.0, Coords::new(span))
-        } else {
-            (from[0], from[0] + span[0], Coords::one(1.0))
-        };
-        let at = |x: f64| -> Coords {
-            if several {
-                let mut q = from;
-                for (q, d) in q.iter_mut().zip(span) {
-                    *q += x * d;
-                }
-                q
-            } else {
-                Coords::one(x)
-            }
-        };
-        let scaled: Vec<f64> = rates
-            .iter()
-            .enumerate()
-            .map(|(i, r)| r / scale_of(i))
-            .collect();
-        // Inputs standing to their rounding: no path, only the corrector.
-        let rounding = |i: usize| {
-            64.0 * f64::EPSILON * (from[i].abs() + (from[i] + span[i]).abs() + scale_of(i))
-        };
-        if several && (0..span.len()).all(|i| span[i].abs() <= rounding(i)) {
-            self.steps = 0;
-            return self.newton(&at(end), false).map(|_| ());
-        }
-        let (max_step, min_step) = if several {
-            let moving = (0..span.len()).filter(|&i| span[i] != 0.0);
-            let max = moving
-                .clone()
-                .map(|i| step_of(i) / span[i].abs())
-                .fold(1.0, f64::min);
-            // The smallest step worth taking: the rounding of the inputs.
-            let min = moving
-                .map(|i| {
-                    64.0 * f64::EPSILON
-                        * (from[i].abs().max((from[i] + span[i]).abs()) + scale_of(i))
-                        / span[i].abs()
-                })
-                .fold(64.0 * f64::EPSILON, f64::max);
-            (max, min)
-        } else {
-            (
-                step_of(0),
-                64.0 * f64::EPSILON * (start.abs().max(end.abs()) + scale_of(0)),
-            )
-        };
-        let (length, dir) = if several {
-            (1.0, 1.0)
-        } else {
-            (span[0].abs(), span[0].signum())
-        };
-        let mut x = start;
-        let mut h = max_step.min(length);
-        self.steps = 0;
-        let Some((mut t, sign)) = self.tangent(&rates) else {
-            return Err("the constraint Jacobian is singular at the start of the path".into());
-        };
-        while (end - x) * dir > 0.0 {
-            let to = if (end - x).abs() <= h {
-                end
-            } else {
-                x + dir * h
-            };
-            let dx = to - x;
-            let saved = self.q.clone();
-            // Predictor along the tangent, then Newton's corrector.
-            self.q += &t * dx;
-            // The step stands if the corrector contracts, the path turns
-            // little over it, and the orientation keeps its sign: a step
-            // over a narrow neck, whose ends may look alike, lands on the
-            // other assembly, of the other sign.
-            let accepted = match self.newton(&at(to), true) {
-                Ok(_) => match self.tangent(&rates) {
-                    Some((t_new, sign_new)) => {
-                        let a = self.unit_direction(&t, &scaled);
-                        let b = self.unit_direction(&t_new, &scaled);
-                        let turn = a.dot(&b).clamp(-1.0, 1.0).acos();
-                        (turn <= MAX_TURN && sign_new == sign).then_some((t_new, turn))
-                    }
-                    None => None,
-                },
-                Err(_) => None,
-            };
-            match accepted {
-                Some((t_new, turn)) => {
-                    x = to;
-                    t = t_new;
-                    self.steps += 1;
-                    if turn < 0.25 * MAX_TURN {
-                        h = (h * 1.5).min(max_step);
-                    }
-                }
-                None => {
-                    self.q = saved;
-                    h *= 0.5;
-                    if h < min_step {
-                        let unit = if several {
-                            " of the way"
-                        } else if m.scene.input.is_crank() {
-                            " rad"
-                        } else {
-                            " m"
-                        };
-                        return Err(format!(
-                            "the assembly cannot be followed past {} (steps down to {}{unit} do not converge on it)",
-                            describe_input(m, &at(x)),
-                            crate::presentation::quantity::format_quantity(h, "")
-                        ));
-                    }
-                }
-            }
-        }
-        Ok(())
     }
 
     /// Velocities and (if asked) accelerations at the last solved
@@ -640,96 +446,6 @@ impl<'a> ConstraintSolver<'a> {
         &self.eq.links
     }
 
-    /// An answer found otherwise (route (a)'s) in this route's unknowns:
-    /// each solved link's pose (x, y, θ) from `pose`, and from `motion`
-    /// (with `order`) the velocity of its frame's origin and ω, its
-    /// acceleration and ε.
-    pub fn unknowns(
-        &self,
-        pose: impl Fn(usize) -> Pose,
-        motion: &[Option<Motion>],
-        order: Option<Order>,
-    ) -> Unknowns {
-        let n = 3 * self.eq.links.len();
-        let mut q = DVector::zeros(n);
-        let (mut qd, mut qdd) = (DVector::zeros(n), DVector::zeros(n));
-        for (i, &l) in self.eq.links.iter().enumerate() {
-            let p = pose(l);
-            (q[3 * i], q[3 * i + 1], q[3 * i + 2]) = (p.origin.x, p.origin.y, p.angle);
-            if let Some(mo) = motion[l] {
-                let (v, a) = (mo.velocity(p.origin), mo.acceleration(p.origin));
-                (qd[3 * i], qd[3 * i + 1], qd[3 * i + 2]) = (v.x, v.y, mo.omega);
-                (qdd[3 * i], qdd[3 * i + 1], qdd[3 * i + 2]) = (a.x, a.y, mo.epsilon);
-            }
-        }
-        Unknowns {
-            q,
-            qd: order.map(|_| qd),
-            qdd: (order == Some(Order::Acceleration)).then_some(qdd),
-        }
-    }
-
-    /// This route's equations at an answer `u` found otherwise, at the
-    /// input coordinates `x` with each input's (rate, rate of rate): the
-    /// residuals of the closure equations Φ(q), of their first time
-    /// derivative Φ_q·q̇ − (the drivers' rates) and of their second
-    /// Φ_q·q̈ − γ(q, q̇), each turned into the change of the answer that
-    /// cancels it, Φ_q⁻¹·residual (for the positions one Newton step, for
-    /// the rates the linear solves of [`Self::solve_rates_of`]), and the
-    /// answer so corrected. The rates' residuals are taken at the answer's
-    /// own positions and velocities, so that each quantity is checked on
-    /// its own; with `relinearize` at the corrected ones instead (an
-    /// answer of a slightly different mechanism: the scene with its data
-    /// changed, whose corrected answer is its own to first order). With
-    /// `conditioning`, the scaled conditioning of Φ_q at the answer's
-    /// positions (else NaN).
-    pub fn corrected(
-        &self,
-        u: &Unknowns,
-        x: &[f64],
-        rates: &[(f64, f64)],
-        relinearize: bool,
-        conditioning: bool,
-    ) -> std::result::Result<Corrected, String> {
-        let singular = || "the constraint Jacobian is singular".to_string();
-        let j = self.jacobian(&u.q);
-        let conditioning = if conditioning {
-            self.scaled_conditioning(&j)
-        } else {
-            f64::NAN
-        };
-        let lu = j.clone().lu();
-        let orientation = lu.determinant().signum();
-        let q = &u.q - lu.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
-        let (j, lu, at) = if relinearize {
-            let j = self.jacobian(&q);
-            (j.clone(), j.lu(), &q)
-        } else {
-            (j, lu, &u.q)
-        };
-        let mut b = DVector::zeros(self.rows());
-        for &(i, row) in &self.driver_rows {
-            b[row] = rates[i].0;
-        }
-        let qd = match &u.qd {
-            Some(qd) => Some(qd - lu.solve(&(&j * qd - b)).ok_or_else(singular)?),
-            None => None,
-        };
-        let qdd = match (&u.qdd, &u.qd, &qd) {
-            (Some(qdd), Some(qd_own), Some(qd_new)) => {
-                let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                let g = self.gamma(at, if relinearize { qd_new } else { qd_own }, &acc);
-                Some(qdd - lu.solve(&(&j * qdd - g)).ok_or_else(singular)?)
-            }
-            _ => None,
-        };
-        Ok(Corrected {
-            motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
-            conditioning,
-            orientation,
-        })
-    }
-
     /// The orientation of the assembly the sketch shows, the sign of
     /// det Φ_q at the sketch's poses (which route (b)'s path following
     /// keeps from there on); `None` when the sketch is within 1e-6 of a
@@ -739,28 +455,4 @@ impl<'a> ConstraintSolver<'a> {
         let j = self.jacobian(&self.q);
         (self.scaled_conditioning(&j) >= 1e-6).then(|| j.lu().determinant().signum())
     }
-}
-
-/// An answer in route (b)'s unknowns ([`ConstraintSolver::unknowns`]):
-/// the poses, and the rates where the analysis has them.
-#[derive(Clone, Debug)]
-pub struct Unknowns {
-    pub q: DVector<f64>,
-    pub qd: Option<DVector<f64>>,
-    pub qdd: Option<DVector<f64>>,
-}
-
-/// An answer corrected by route (b)'s equations
-/// ([`ConstraintSolver::corrected`]).
-#[derive(Clone, Debug)]
-pub struct Corrected {
-    /// Every solved link's corrected motion (zero rates where the answer
-    /// had none).
-    pub motion: Vec<Option<Motion>>,
-    /// σ_min/σ_max of the scaled Jacobian at the answer's positions (NaN
-    /// when not asked for).
-    pub conditioning: f64,
-    /// The sign of det Φ_q there: the orientation of the assembly, which
-    /// changes only through a singular position.
-    pub orientation: f64,
 }
