@@ -242,11 +242,11 @@ pub fn shape(
             },
         ));
     }
-    let name = |p: usize| scene.points[p].name.as_str();
-    let issue = |point: Option<usize>, message: String| ShapeIssue {
-        link: l,
-        point,
-        message,
+    let sh = Shaping {
+        scene,
+        l,
+        pts,
+        mag: sketch_magnitude(scene, pts),
     };
     let (o, x1) = (sketch(scene, pts[0]), sketch(scene, pts[1]));
     let axis = x1 - o;
@@ -255,12 +255,12 @@ pub fn shape(
     // draw it (never relative to the size of the whole sketch).
     let sketched_zero = axis.hypot() <= 4.0 * U * (o.to_vec2().hypot() + x1.to_vec2().hypot());
     if d01 == 0.0 || sketched_zero {
-        return Err(vec![issue(
+        return Err(vec![sh.issue(
             None,
             format!(
                 "zero-length link: its first two points \"{}\" and \"{}\" coincide",
-                name(pts[0]),
-                name(pts[1])
+                sh.name(pts[0]),
+                sh.name(pts[1])
             ),
         )]);
     }
@@ -269,7 +269,6 @@ pub fn shape(
         let w = p - o;
         Vec2::new(cos * w.x + sin * w.y, -sin * w.x + cos * w.y)
     };
-    let mag = sketch_magnitude(scene, pts);
     let mut local = vec![Vec2::ZERO; pts.len()];
     local[1] = Vec2::new(d01, 0.0);
     let mut placements = vec![Placement::Origin, Placement::Base];
@@ -281,137 +280,33 @@ pub fn shape(
         let p = pts[k];
         let (j1, j2) = references(scene, pts, k);
         let (q1, q2) = (pts[j1], pts[j2]);
-        let (r1, r2) = (distance(scene, p, q1), distance(scene, p, q2));
-        let d = (local[j2] - local[j1]).hypot();
+        let refs = Refs {
+            k,
+            j: (j1, j2),
+            r: (distance(scene, p, q1), distance(scene, p, q2)),
+            d: (local[j2] - local[j1]).hypot(),
+        };
         let free = given(scene, p, q1).is_none() && given(scene, p, q2).is_none();
         let sketched = free && as_sketched[j1] && as_sketched[j2];
         as_sketched.push(sketched);
         let placement = match decided {
             Some(plan) => plan[k],
             None if sketched => Placement::Sketch,
-            None => {
-                let (side, drawn_on_line) =
-                    sketch_side(sketch(scene, q1), sketch(scene, q2), sketch(scene, p));
-                // Do the distances close a degenerate triangle, to rounding?
-                let mut s = [d, r1, r2];
-                s.sort_by(|x, y| y.total_cmp(x));
-                let lengths_flat = (s[0] - s[1] - s[2]).abs() <= rounding_slack(d + r1 + r2, mag);
-                // Three given lengths whose decimals close exactly: the
-                // data put P on the line, whatever the drawing shows.
-                let base = given(scene, q1, q2).filter(|_| {
-                    // The references' distance in the shape is that length
-                    // exactly only for the base pair.
-                    (j1, j2) == (0, 1) || (j1, j2) == (1, 0)
-                });
-                let exactly_flat = match (given(scene, p, q1), given(scene, p, q2), base) {
-                    (Some(a), Some(b), Some(c)) => decimals_close(scene.length_unit, [a, b, c]),
-                    _ => false,
-                };
-                if drawn_on_line && !lengths_flat {
-                    issues.push(issue(
-                        Some(k),
-                        format!(
-                            "point \"{}\" is drawn on the line through \"{}\" and \"{}\", but its distances make a triangle: draw it on the side it belongs",
-                            name(p),
-                            name(q1),
-                            name(q2)
-                        ),
-                    ));
-                }
-                if drawn_on_line || exactly_flat {
-                    Placement::OnLine { refs: (j1, j2) }
-                } else {
-                    Placement::Triangle {
-                        refs: (j1, j2),
-                        side,
-                    }
-                }
-            }
+            None => sh.decide(&refs, &mut issues),
         };
         placements.push(placement);
-        let (flat, side) = match placement {
-            Placement::Sketch => {
-                local[k] = to_frame(sketch(scene, p));
-                continue;
-            }
-            Placement::Triangle { side, .. } => (false, side),
-            _ => (true, 1.0),
-        };
-        if d <= 4.0 * U * (local[j1].hypot() + local[j2].hypot()) {
-            // Two coincident references fix no place (found by fuzzing:
-            // the triangle's base of length zero gave NaN).
-            issues.push(issue(
-                Some(k),
-                format!(
-                    "point \"{}\" cannot be placed: its reference points \"{}\" and \"{}\" coincide (give lengths that pair it with two distinct points of the link)",
-                    name(p),
-                    name(q1),
-                    name(q2)
-                ),
-            ));
+        if placement == Placement::Sketch {
+            local[k] = to_frame(sketch(scene, p));
             continue;
         }
-        local[k] = match apex(local[j1], local[j2], r1, r2, side, flat) {
-            Ok((at, _)) => at,
-            // A degenerate triangle to the rounding of the data: on the
-            // line (the data cannot tell more).
-            Err(deficit) if deficit <= rounding_slack(d + r1 + r2, mag) => {
-                apex(local[j1], local[j2], r1, r2, side, true)
-                    .expect("a flat apex always exists")
-                    .0
-            }
-            Err(deficit) => {
-                issues.push(issue(
-                    Some(k),
-                    format!(
-                        "link \"{}\" cannot be rigid: point \"{}\" at {} from \"{}\" and {} from \"{}\", which are {} apart (the triangle inequality fails by {})",
-                        scene.links[l].id,
-                        name(p),
-                        quantity(r1, "m"),
-                        name(q1),
-                        quantity(r2, "m"),
-                        name(q2),
-                        quantity(d, "m"),
-                        quantity(deficit, "m"),
-                    ),
-                ));
-                local[j1]
-            }
-        };
+        if let Some(at) = sh.place(&refs, placement, &local, &mut issues) {
+            local[k] = at;
+        }
     }
     if !issues.is_empty() {
         return Err(issues);
     }
-    // Every distance the rule used must hold in the shape, to rounding: a
-    // self-check of the construction, never a silent change of the data.
-    for k in 1..pts.len() {
-        let (refs, flat) = match placements[k] {
-            Placement::Base => ((0, 0), false),
-            Placement::OnLine { refs } => (refs, true),
-            Placement::Triangle { refs, .. } => (refs, false),
-            _ => continue,
-        };
-        for j in [refs.0, refs.1] {
-            let want = distance(scene, pts[k], pts[j]);
-            let got = (local[k] - local[j]).hypot();
-            // On a line the distances agree only to their own rounding.
-            let slack = rounding_slack(want + local[k].hypot() + local[j].hypot(), mag)
-                * if flat { 4.0 } else { 1.0 };
-            if (got - want).abs() > slack {
-                return Err(vec![issue(
-                    Some(k),
-                    format!(
-                        "internal: the shape of link \"{}\" puts \"{}\" {} from \"{}\" where the data say {}",
-                        scene.links[l].id,
-                        name(pts[k]),
-                        quantity(got, "m"),
-                        name(pts[j]),
-                        quantity(want, "m")
-                    ),
-                )]);
-            }
-        }
-    }
+    sh.check(&placements, &local)?;
     Ok((
         placements,
         Shape {
@@ -419,6 +314,179 @@ pub fn shape(
             sketch_angle: axis.atan2(),
         },
     ))
+}
+
+/// A link's shape under way: the scene, the link and its points, the
+/// magnitude of their sketch coordinates.
+struct Shaping<'s> {
+    scene: &'s Scene,
+    l: usize,
+    pts: &'s [usize],
+    mag: f64,
+}
+
+/// The point `k` of a link being placed: its references `j` (indices in
+/// the link), its distances `r` to them and theirs `d` in the shape.
+struct Refs {
+    k: usize,
+    j: (usize, usize),
+    r: (f64, f64),
+    d: f64,
+}
+
+impl Shaping<'_> {
+    fn name(&self, p: usize) -> &str {
+        self.scene.points[p].name.as_str()
+    }
+
+    fn issue(&self, point: Option<usize>, message: String) -> ShapeIssue {
+        ShapeIssue {
+            link: self.l,
+            point,
+            message,
+        }
+    }
+
+    /// The placement of a point whose placement a given length enters,
+    /// decided from the data: on its references' line or the apex of
+    /// their triangle on the sketch's side (an issue when the sketch draws
+    /// it on the line but its distances make a triangle).
+    fn decide(&self, refs: &Refs, issues: &mut Vec<ShapeIssue>) -> Placement {
+        let (scene, pts) = (self.scene, self.pts);
+        let (k, (j1, j2), (r1, r2), d) = (refs.k, refs.j, refs.r, refs.d);
+        let (p, q1, q2) = (pts[k], pts[j1], pts[j2]);
+        let (side, drawn_on_line) =
+            sketch_side(sketch(scene, q1), sketch(scene, q2), sketch(scene, p));
+        // Do the distances close a degenerate triangle, to rounding?
+        let mut s = [d, r1, r2];
+        s.sort_by(|x, y| y.total_cmp(x));
+        let lengths_flat = (s[0] - s[1] - s[2]).abs() <= rounding_slack(d + r1 + r2, self.mag);
+        // Three given lengths whose decimals close exactly: the
+        // data put P on the line, whatever the drawing shows.
+        let base = given(scene, q1, q2).filter(|_| {
+            // The references' distance in the shape is that length
+            // exactly only for the base pair.
+            (j1, j2) == (0, 1) || (j1, j2) == (1, 0)
+        });
+        let exactly_flat = match (given(scene, p, q1), given(scene, p, q2), base) {
+            (Some(a), Some(b), Some(c)) => decimals_close(scene.length_unit, [a, b, c]),
+            _ => false,
+        };
+        if drawn_on_line && !lengths_flat {
+            issues.push(self.issue(
+                Some(k),
+                format!(
+                    "point \"{}\" is drawn on the line through \"{}\" and \"{}\", but its distances make a triangle: draw it on the side it belongs",
+                    self.name(p),
+                    self.name(q1),
+                    self.name(q2)
+                ),
+            ));
+        }
+        if drawn_on_line || exactly_flat {
+            Placement::OnLine { refs: (j1, j2) }
+        } else {
+            Placement::Triangle {
+                refs: (j1, j2),
+                side,
+            }
+        }
+    }
+
+    /// The place in the link's frame of a point on its references' line
+    /// or at their triangle's apex (`placement`), the points before it
+    /// placed (`local`); `None` (an issue) when its references coincide.
+    fn place(
+        &self,
+        refs: &Refs,
+        placement: Placement,
+        local: &[Vec2],
+        issues: &mut Vec<ShapeIssue>,
+    ) -> Option<Vec2> {
+        let (scene, pts) = (self.scene, self.pts);
+        let (k, (j1, j2), (r1, r2), d) = (refs.k, refs.j, refs.r, refs.d);
+        let (p, q1, q2) = (pts[k], pts[j1], pts[j2]);
+        let (flat, side) = match placement {
+            Placement::Triangle { side, .. } => (false, side),
+            _ => (true, 1.0),
+        };
+        if d <= 4.0 * U * (local[j1].hypot() + local[j2].hypot()) {
+            // Two coincident references fix no place (found by fuzzing:
+            // the triangle's base of length zero gave NaN).
+            issues.push(self.issue(
+                Some(k),
+                format!(
+                    "point \"{}\" cannot be placed: its reference points \"{}\" and \"{}\" coincide (give lengths that pair it with two distinct points of the link)",
+                    self.name(p),
+                    self.name(q1),
+                    self.name(q2)
+                ),
+            ));
+            return None;
+        }
+        Some(match apex(local[j1], local[j2], r1, r2, side, flat) {
+            Ok((at, _)) => at,
+            // A degenerate triangle to the rounding of the data: on the
+            // line (the data cannot tell more).
+            Err(deficit) if deficit <= rounding_slack(d + r1 + r2, self.mag) => {
+                apex(local[j1], local[j2], r1, r2, side, true)
+                    .expect("a flat apex always exists")
+                    .0
+            }
+            Err(deficit) => {
+                issues.push(self.issue(
+                    Some(k),
+                    format!(
+                        "link \"{}\" cannot be rigid: point \"{}\" at {} from \"{}\" and {} from \"{}\", which are {} apart (the triangle inequality fails by {})",
+                        scene.links[self.l].id,
+                        self.name(p),
+                        quantity(r1, "m"),
+                        self.name(q1),
+                        quantity(r2, "m"),
+                        self.name(q2),
+                        quantity(d, "m"),
+                        quantity(deficit, "m"),
+                    ),
+                ));
+                local[j1]
+            }
+        })
+    }
+
+    /// Every distance the rule used must hold in the shape, to rounding: a
+    /// self-check of the construction, never a silent change of the data.
+    fn check(&self, placements: &[Placement], local: &[Vec2]) -> Result<(), Vec<ShapeIssue>> {
+        let (scene, pts) = (self.scene, self.pts);
+        for k in 1..pts.len() {
+            let (refs, flat) = match placements[k] {
+                Placement::Base => ((0, 0), false),
+                Placement::OnLine { refs } => (refs, true),
+                Placement::Triangle { refs, .. } => (refs, false),
+                _ => continue,
+            };
+            for j in [refs.0, refs.1] {
+                let want = distance(scene, pts[k], pts[j]);
+                let got = (local[k] - local[j]).hypot();
+                // On a line the distances agree only to their own rounding.
+                let slack = rounding_slack(want + local[k].hypot() + local[j].hypot(), self.mag)
+                    * if flat { 4.0 } else { 1.0 };
+                if (got - want).abs() > slack {
+                    return Err(vec![self.issue(
+                        Some(k),
+                        format!(
+                            "internal: the shape of link \"{}\" puts \"{}\" {} from \"{}\" where the data say {}",
+                            scene.links[self.l].id,
+                            self.name(pts[k]),
+                            quantity(got, "m"),
+                            self.name(pts[j]),
+                            quantity(want, "m")
+                        ),
+                    )]);
+                }
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The slack in comparing a given length with the distance the shape of a

@@ -3,7 +3,7 @@
 
 use super::reader::Reader;
 use super::{InputSpec, LinkSpec, MAX_POSITIONS, PositionsSpec, U};
-use serde_json::Value;
+use serde_json::{Map, Value};
 
 impl Reader {
     pub(super) fn positions(
@@ -25,30 +25,6 @@ impl Reader {
         let input = inputs.and_then(|i| i.first());
         let crank = !several && matches!(input, Some(InputSpec::Crank { .. }));
         let slider = !several && matches!(input, Some(InputSpec::Slider { .. }));
-        let list = |r: &mut Self, key: &str, unit: f64| -> Option<Vec<f64>> {
-            let at = format!("/positions/{key}");
-            let a = o[key].as_array();
-            match a {
-                Some(a) if !a.is_empty() && a.len() <= MAX_POSITIONS => {
-                    let mut out = Vec::new();
-                    for (k, x) in a.iter().enumerate() {
-                        out.push(r.number(x, &format!("{at}/{k}"))? * unit);
-                    }
-                    Some(out)
-                }
-                Some(a) if a.len() > MAX_POSITIONS => {
-                    r.err(
-                        at,
-                        format!("{} positions; at most {MAX_POSITIONS}", a.len()),
-                    );
-                    None
-                }
-                _ => {
-                    r.err(at, "expected a non-empty list of numbers");
-                    None
-                }
-            }
-        };
         let n = ["angles", "s", "count", "values"]
             .iter()
             .filter(|k| o.contains_key(**k))
@@ -64,22 +40,7 @@ impl Reader {
             return self.values(&o["values"], inputs?);
         }
         if several {
-            let key = ["angles", "s", "count"]
-                .into_iter()
-                .find(|k| o.contains_key(*k))
-                .expect("one key");
-            self.err(
-                format!("/positions/{key}"),
-                format!(
-                    "the scene has {} inputs: give \"values\", one list [q1, q2, ...] per position with a value for each input in the order of /input{}",
-                    inputs.map_or(0, |i| i.len()),
-                    if key == "count" {
-                        " (equal steps over a revolution are defined for a single crank)"
-                    } else {
-                        ""
-                    }
-                ),
-            );
+            self.several_inputs(o, inputs.map_or(0, |i| i.len()));
             return None;
         }
         if o.contains_key("angles") {
@@ -90,7 +51,7 @@ impl Reader {
                 );
                 return None;
             }
-            return list(self, "angles", 1.0).map(|v| {
+            return self.position_list(o, "angles", 1.0).map(|v| {
                 self.rounding = v.iter().map(|&x| self.angle_rounding(x)).collect();
                 PositionsSpec::List(v.into_iter().map(|x| self.angle(x)).collect())
             });
@@ -103,11 +64,68 @@ impl Reader {
                 );
                 return None;
             }
-            return list(self, "s", self.len).map(|v| {
+            return self.position_list(o, "s", self.len).map(|v| {
                 self.rounding = v.iter().map(|&x| 2.0 * U * x.abs()).collect();
                 PositionsSpec::List(v)
             });
         }
+        self.count(o, links, slider)
+    }
+
+    /// A list of positions `key` (each × `unit`).
+    fn position_list(&mut self, o: &Map<String, Value>, key: &str, unit: f64) -> Option<Vec<f64>> {
+        let at = format!("/positions/{key}");
+        let a = o[key].as_array();
+        match a {
+            Some(a) if !a.is_empty() && a.len() <= MAX_POSITIONS => {
+                let mut out = Vec::new();
+                for (k, x) in a.iter().enumerate() {
+                    out.push(self.number(x, &format!("{at}/{k}"))? * unit);
+                }
+                Some(out)
+            }
+            Some(a) if a.len() > MAX_POSITIONS => {
+                self.err(
+                    at,
+                    format!("{} positions; at most {MAX_POSITIONS}", a.len()),
+                );
+                None
+            }
+            _ => {
+                self.err(at, "expected a non-empty list of numbers");
+                None
+            }
+        }
+    }
+
+    /// The error of positions given as for one input to a scene of `n`.
+    fn several_inputs(&mut self, o: &Map<String, Value>, n: usize) {
+        let key = ["angles", "s", "count"]
+            .into_iter()
+            .find(|k| o.contains_key(*k))
+            .expect("one key");
+        self.err(
+            format!("/positions/{key}"),
+            format!(
+                "the scene has {} inputs: give \"values\", one list [q1, q2, ...] per position with a value for each input in the order of /input{}",
+                n,
+                if key == "count" {
+                    " (equal steps over a revolution are defined for a single crank)"
+                } else {
+                    ""
+                }
+            ),
+        );
+    }
+
+    /// `count`: equal steps over a revolution of a crank, from the output
+    /// link's extreme position when `output` names one.
+    fn count(
+        &mut self,
+        o: &Map<String, Value>,
+        links: &[LinkSpec],
+        slider: bool,
+    ) -> Option<PositionsSpec> {
         let count = match o["count"].as_u64() {
             Some(c) if (1..=MAX_POSITIONS as u64).contains(&c) => c as usize,
             _ => {
