@@ -98,28 +98,7 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     let links: Vec<usize> = (0..m.links.len())
         .filter(|&l| l == m.frame() || an.link(l))
         .collect();
-    let n = links.len();
-    let idx = |l: usize| links.iter().position(|&x| x == l);
-    let origin = m.links[m.frame()].sketch_pose.origin;
-    let size = m.size;
-    let to_h = |p: Point| -> H { [(p.x - origin.x) / size, (p.y - origin.y) / size, 1.0] };
-    let mut known: Vec<Option<(H, How, f64)>> = vec![None; n * n];
-    let slot = |i: usize, j: usize| i.min(j) * n + i.max(j);
-    // Primary centres: the pairs.
-    for r in &m.revolutes {
-        if let (Some(i), Some(j)) = (idx(r.a), idx(r.b)) {
-            let l = if an.link(r.a) { r.a } else { r.b };
-            let at = c.point(m, l, r.point);
-            known[slot(i, j)] = Some((to_h(at), How::Revolute(m.point_name(r.point).into()), 1.0));
-        }
-    }
-    for pr in &m.prismatics {
-        if let (Some(i), Some(j)) = (idx(pr.guide), idx(pr.slider)) {
-            let u = c.pose(pr.guide).dir(pr.line_dir);
-            let nrm = Vec2::new(-u.y, u.x);
-            known[slot(i, j)] = Some(([nrm.x, nrm.y, 0.0], How::Prismatic, 1.0));
-        }
-    }
+    let mut k = Kennedy::primary(an, c, links);
     // Kennedy's theorem, pass by pass: each pass places every centre that
     // two lines through already known centres determine; the best pair of
     // lines (the largest angle between them) is used.
@@ -128,23 +107,114 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     // coincide are then recorded as undetermined.
     let mut last = false;
     loop {
+        let placed = k.pass(m, last, &mut undetermined);
+        if placed.is_empty() {
+            if last {
+                break;
+            }
+            last = true;
+            continue;
+        }
+        last = false;
+        for (at, v) in placed {
+            k.known[at] = Some(v);
+        }
+    }
+    let found = k.centres(m, &mut undetermined);
+    Centres {
+        links: k.links,
+        found,
+        undetermined,
+    }
+}
+
+/// A centre known so far: homogeneous, in the sketch's size from the
+/// frame's origin; how it was found; the sine of its lines' angle.
+type Known = (H, How, f64);
+
+/// Kennedy's construction under way: the links taking part, the centres
+/// known of every two of them (by `slot`).
+struct Kennedy {
+    links: Vec<usize>,
+    known: Vec<Option<Known>>,
+    origin: Point,
+    size: f64,
+}
+
+impl Kennedy {
+    /// The primary centres: the pairs.
+    fn primary(an: &Analysis, c: &Configuration, links: Vec<usize>) -> Kennedy {
+        let m = &an.mech;
+        let n = links.len();
+        let mut k = Kennedy {
+            links,
+            known: vec![None; n * n],
+            origin: m.links[m.frame()].sketch_pose.origin,
+            size: m.size,
+        };
+        let (origin, size) = (k.origin, k.size);
+        let to_h = |p: Point| -> H { [(p.x - origin.x) / size, (p.y - origin.y) / size, 1.0] };
+        for r in &m.revolutes {
+            if let (Some(i), Some(j)) = (k.idx(r.a), k.idx(r.b)) {
+                let l = if an.link(r.a) { r.a } else { r.b };
+                let at = c.point(m, l, r.point);
+                let slot = k.slot(i, j);
+                k.known[slot] = Some((to_h(at), How::Revolute(m.point_name(r.point).into()), 1.0));
+            }
+        }
+        for pr in &m.prismatics {
+            if let (Some(i), Some(j)) = (k.idx(pr.guide), k.idx(pr.slider)) {
+                let u = c.pose(pr.guide).dir(pr.line_dir);
+                let nrm = Vec2::new(-u.y, u.x);
+                let slot = k.slot(i, j);
+                k.known[slot] = Some(([nrm.x, nrm.y, 0.0], How::Prismatic, 1.0));
+            }
+        }
+        k
+    }
+
+    fn idx(&self, l: usize) -> Option<usize> {
+        self.links.iter().position(|&x| x == l)
+    }
+
+    fn slot(&self, i: usize, j: usize) -> usize {
+        i.min(j) * self.links.len() + i.max(j)
+    }
+
+    /// The lines P_ik P_kj through the centre of links i and j (unit
+    /// normals, a² + b² = 1), with k.
+    fn lines(&self, i: usize, j: usize) -> Vec<(usize, H)> {
+        let known = &self.known;
+        (0..self.links.len())
+            .filter(|&k| k != i && k != j)
+            .filter_map(|k| {
+                let a = &known[self.slot(i, k)].as_ref()?.0;
+                let b = &known[self.slot(k, j)].as_ref()?.0;
+                let l = cross(a, b);
+                let h = l[0].hypot(l[1]);
+                (h > 1e-12).then(|| (k, [l[0] / h, l[1] / h, l[2] / h]))
+            })
+            .collect()
+    }
+
+    /// One pass: every centre not yet known that two lines determine
+    /// (by slot); with `last`, those whose lines all coincide are
+    /// recorded in `undetermined` (and placed nowhere).
+    fn pass(
+        &self,
+        m: &Mechanism,
+        last: bool,
+        undetermined: &mut Vec<Undetermined>,
+    ) -> Vec<(usize, Known)> {
+        let (n, links) = (self.links.len(), &self.links);
         let mut placed = Vec::new();
         for i in 0..n {
             for j in i + 1..n {
-                if known[slot(i, j)].is_some() {
+                let slot = self.slot(i, j);
+                if self.known[slot].is_some() {
                     continue;
                 }
-                // The lines P_ik P_kj with unit normals (a² + b² = 1).
-                let lines: Vec<(usize, H)> = (0..n)
-                    .filter(|&k| k != i && k != j)
-                    .filter_map(|k| {
-                        let a = &known[slot(i, k)].as_ref()?.0;
-                        let b = &known[slot(k, j)].as_ref()?.0;
-                        let l = cross(a, b);
-                        let h = l[0].hypot(l[1]);
-                        (h > 1e-12).then(|| (k, [l[0] / h, l[1] / h, l[2] / h]))
-                    })
-                    .collect();
+                let lines = self.lines(i, j);
                 let mut best: Option<(f64, usize, usize)> = None;
                 for (x, (_, la)) in lines.iter().enumerate() {
                     for (y, (_, lb)) in lines.iter().enumerate().skip(x + 1) {
@@ -159,14 +229,14 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
                 let p = cross(la, lb);
                 let via = [links[lines[x].0], links[lines[y].0]];
                 if s > PARALLEL_SIN {
-                    placed.push((slot(i, j), (p, How::Kennedy(via), s)));
+                    placed.push((slot, (p, How::Kennedy(via), s)));
                 } else {
                     // Parallel lines: distinct ones meet at infinity (a
                     // relative translation), coincident ones say nothing.
                     let gap = (la[2] - lb[2] * (la[0] * lb[0] + la[1] * lb[1]).signum()).abs();
                     if gap > 1e-9 {
                         let d = [-la[1], la[0], 0.0];
-                        placed.push((slot(i, j), (d, How::Kennedy(via), s)));
+                        placed.push((slot, (d, How::Kennedy(via), s)));
                     } else if !last {
                         // Coincident: wait for more lines from later passes.
                     } else {
@@ -180,61 +250,54 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
                                 m.link_id(links[j])
                             ),
                         });
-                        placed.push((slot(i, j), ([0.0, 0.0, 0.0], How::Kennedy(via), 0.0)));
+                        placed.push((slot, ([0.0, 0.0, 0.0], How::Kennedy(via), 0.0)));
                     }
                 }
             }
         }
-        if placed.is_empty() {
-            if last {
-                break;
-            }
-            last = true;
-            continue;
-        }
-        last = false;
-        for (k, v) in placed {
-            known[k] = Some(v);
-        }
+        placed
     }
-    let mut found = Vec::new();
-    for i in 0..n {
-        for j in i + 1..n {
-            let pair = (links[i], links[j]);
-            match known[slot(i, j)].clone() {
-                Some((h, how, s)) if h != [0.0, 0.0, 0.0] => {
-                    let place = if h[2] == 0.0 {
-                        let d = Vec2::new(h[0], h[1]);
-                        Place::Infinity(d / d.hypot())
-                    } else {
-                        Place::At(Point::new(
-                            origin.x + h[0] / h[2] * size,
-                            origin.y + h[1] / h[2] * size,
-                        ))
-                    };
-                    found.push(Centre {
+
+    /// The centres found, in the world; those no two lines reach recorded
+    /// in `undetermined`.
+    fn centres(&self, m: &Mechanism, undetermined: &mut Vec<Undetermined>) -> Vec<Centre> {
+        let (n, links) = (self.links.len(), &self.links);
+        let (origin, size) = (self.origin, self.size);
+        let mut found = Vec::new();
+        for i in 0..n {
+            for j in i + 1..n {
+                let pair = (links[i], links[j]);
+                match self.known[self.slot(i, j)].clone() {
+                    Some((h, how, s)) if h != [0.0, 0.0, 0.0] => {
+                        let place = if h[2] == 0.0 {
+                            let d = Vec2::new(h[0], h[1]);
+                            Place::Infinity(d / d.hypot())
+                        } else {
+                            Place::At(Point::new(
+                                origin.x + h[0] / h[2] * size,
+                                origin.y + h[1] / h[2] * size,
+                            ))
+                        };
+                        found.push(Centre {
+                            links: pair,
+                            place,
+                            how,
+                            sin_angle: s,
+                        });
+                    }
+                    Some(_) => {}
+                    None => undetermined.push(Undetermined {
                         links: pair,
-                        place,
-                        how,
-                        sin_angle: s,
-                    });
+                        why: format!(
+                            "fewer than two Kennedy lines reach the centre of links {} and {}",
+                            m.link_id(pair.0),
+                            m.link_id(pair.1)
+                        ),
+                    }),
                 }
-                Some(_) => {}
-                None => undetermined.push(Undetermined {
-                    links: pair,
-                    why: format!(
-                        "fewer than two Kennedy lines reach the centre of links {} and {}",
-                        m.link_id(pair.0),
-                        m.link_id(pair.1)
-                    ),
-                }),
             }
         }
-    }
-    Centres {
-        links,
-        found,
-        undetermined,
+        found
     }
 }
 

@@ -126,6 +126,142 @@ pub struct Errors {
     pub trapezoid_s: (f64, usize),
 }
 
+/// The output sampled along the abscissa: from `phi0` in steps of `h`
+/// in the sense `dir`, `n` intervals; a point's `path` (its arc length),
+/// a `slide`, or a link's angle (continued).
+struct Sampling<'a> {
+    out: Output<'a>,
+    phi0: f64,
+    dir: f64,
+    h: f64,
+    n: usize,
+    path: bool,
+    slide: bool,
+}
+
+impl Sampling<'_> {
+    /// A path's arc length: Gauss–Legendre over each step of |v|.
+    fn arc(&mut self, from: f64, step: f64) -> Result<f64> {
+        let dir = self.dir;
+        let mut sum = 0.0;
+        for (x, w) in GAUSS8 {
+            let phi = from + dir * step * 0.5 * (1.0 + x);
+            sum += w * dir * self.out.at(phi)?.1;
+        }
+        Ok(0.5 * step * sum)
+    }
+
+    /// The output and its analytic s′, s″ at the nodes.
+    fn nodes(&mut self) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+        let (phi0, dir, h, n) = (self.phi0, self.dir, self.h, self.n);
+        let mut s = Vec::with_capacity(n + 1);
+        let (mut ds, mut dds) = (Vec::new(), Vec::new());
+        let mut prev: Option<f64> = None;
+        for k in 0..=n {
+            let (v, v1, v2) = self.out.at(phi0 + dir * h * k as f64)?;
+            let v = match (self.slide, prev) {
+                _ if self.path => match prev {
+                    None => 0.0,
+                    Some(p) => p + self.arc(phi0 + dir * h * (k - 1) as f64, h)?,
+                },
+                (false, Some(p)) => p + crate::geom::wrap_pi(v - p),
+                _ => v,
+            };
+            prev = Some(v);
+            s.push(v);
+            ds.push(dir * v1);
+            dds.push(v2);
+        }
+        Ok((s, ds, dds))
+    }
+
+    /// The analytic s′ at the interval midpoints (turned by `along`).
+    fn midpoints(&mut self, along: f64) -> Result<Vec<f64>> {
+        let (phi0, dir, h, n) = (self.phi0, self.dir, self.h, self.n);
+        let mut ds_mid = Vec::with_capacity(n);
+        for k in 0..n {
+            let (_, v1, _) = self.out.at(phi0 + dir * h * (k as f64 + 0.5))?;
+            ds_mid.push(along * dir * v1);
+        }
+        Ok(ds_mid)
+    }
+
+    /// The analytic (s, s′, s″) at DENSE samples per interval, s from `s0`
+    /// (turned by `along`).
+    fn dense(&mut self, s0: f64, along: f64) -> Result<Vec<(f64, f64, f64)>> {
+        let (phi0, dir, h, n) = (self.phi0, self.dir, self.h, self.n);
+        let mut dense = Vec::with_capacity(n * DENSE + 1);
+        let mut near = s0;
+        let hd = h / DENSE as f64;
+        for j in 0..=n * DENSE {
+            let (v, v1, v2) = self.out.at(phi0 + dir * hd * j as f64)?;
+            let v = if self.path {
+                if j == 0 {
+                    s0
+                } else {
+                    near + self.arc(phi0 + dir * hd * (j - 1) as f64, hd)?
+                }
+            } else if self.slide {
+                v
+            } else {
+                near + crate::geom::wrap_pi(v - near)
+            };
+            near = v;
+            dense.push((along * (v - s0), along * dir * v1, along * v2));
+        }
+        Ok(dense)
+    }
+}
+
+/// The graphical differentiation by chords: μ_s standard, the curve within
+/// its room; the poles so that the derived curves fit theirs; the rays'
+/// ordinates.
+struct Chords {
+    mu_s: f64,
+    h1: f64,
+    h2: f64,
+    y1: Vec<f64>,
+    y2: Vec<f64>,
+}
+
+impl Chords {
+    /// Of the displacements `s` at the nodes (largest magnitude `range`),
+    /// an interval `dx` mm long; `stroke`: a slide's stroke, not a cycle.
+    fn of(s: &[f64], range: f64, dx: f64, stroke: bool) -> Chords {
+        let n = s.len() - 1;
+        let mu_s = standard_scale(range.max(f64::MIN_POSITIVE), HEIGHT_S);
+        let slope1 = (0..n)
+            .map(|k| ((s[k + 1] - s[k]) / mu_s / dx).abs())
+            .fold(0.0, f64::max);
+        let h1 = pole_distance(slope1, HEIGHT_DERIVED);
+        // The construction: rays from P1 = (−H1, 0) parallel to the chords
+        // meet the ordinate axis at y′ = H1·Δy/Δx.
+        let y1: Vec<f64> = (0..n)
+            .map(|k| ray_ordinate(h1, dx, (s[k + 1] - s[k]) / mu_s))
+            .collect();
+        // Chords of the velocity diagram: between the midpoints k − ½ and
+        // k + ½ (the cycle closes: the midpoint before node 0 is the last;
+        // over a stroke node 0 takes the first chord).
+        let chord = |k: usize| {
+            if stroke {
+                y1[k.max(1)] - y1[k.max(1) - 1]
+            } else {
+                y1[k] - y1[(k + n - 1) % n]
+            }
+        };
+        let slope2 = (0..n).map(|k| (chord(k) / dx).abs()).fold(0.0, f64::max);
+        let h2 = pole_distance(slope2, HEIGHT_DERIVED);
+        let y2: Vec<f64> = (0..n).map(|k| ray_ordinate(h2, dx, chord(k))).collect();
+        Chords {
+            mu_s,
+            h1,
+            h2,
+            y1,
+            y2,
+        }
+    }
+}
+
 /// A round pole distance (mm) that keeps the largest ordinate H·|slope|
 /// within `room` mm.
 fn pole_distance(max_slope: f64, room: f64) -> f64 {
@@ -165,7 +301,7 @@ impl Diagrams {
 
     fn from_output(
         an: &Analysis,
-        mut out: Output,
+        out: Output,
         output: usize,
         point: Option<usize>,
         phi0: f64,
@@ -191,33 +327,16 @@ impl Diagrams {
             Some((lo, hi)) => (hi - lo) / n as f64,
             None => TAU / n as f64,
         };
-        // A path's arc length: Gauss–Legendre over each step of |v|.
-        let arc = |out: &mut Output, from: f64, step: f64| -> Result<f64> {
-            let mut sum = 0.0;
-            for (x, w) in GAUSS8 {
-                let phi = from + dir * step * 0.5 * (1.0 + x);
-                sum += w * dir * out.at(phi)?.1;
-            }
-            Ok(0.5 * step * sum)
+        let mut sm = Sampling {
+            out,
+            phi0,
+            dir,
+            h,
+            n,
+            path,
+            slide,
         };
-        let mut s = Vec::with_capacity(n + 1);
-        let (mut ds, mut dds) = (Vec::new(), Vec::new());
-        let mut prev: Option<f64> = None;
-        for k in 0..=n {
-            let (v, v1, v2) = out.at(phi0 + dir * h * k as f64)?;
-            let v = match (slide, prev) {
-                _ if path => match prev {
-                    None => 0.0,
-                    Some(p) => p + arc(&mut out, phi0 + dir * h * (k - 1) as f64, h)?,
-                },
-                (false, Some(p)) => p + crate::geom::wrap_pi(v - p),
-                _ => v,
-            };
-            prev = Some(v);
-            s.push(v);
-            ds.push(dir * v1);
-            dds.push(v2);
-        }
+        let (mut s, mut ds, mut dds) = sm.nodes()?;
         if stroke.is_none() && !slide && (s[n] - s[0]).abs() > 1.0 {
             return Err(Error::scene(
                 "output",
@@ -243,33 +362,9 @@ impl Diagrams {
             // (+ 0.0: no −0 printed at the extreme position.)
             *x = *x * along + 0.0;
         }
-        let mut ds_mid = Vec::with_capacity(n);
-        for k in 0..n {
-            let (_, v1, _) = out.at(phi0 + dir * h * (k as f64 + 0.5))?;
-            ds_mid.push(along * dir * v1);
-        }
-        let mut dense = Vec::with_capacity(n * DENSE + 1);
-        let mut near = s0;
-        let hd = h / DENSE as f64;
-        for j in 0..=n * DENSE {
-            let (v, v1, v2) = out.at(phi0 + dir * hd * j as f64)?;
-            let v = if path {
-                if j == 0 {
-                    s0
-                } else {
-                    near + arc(&mut out, phi0 + dir * hd * (j - 1) as f64, hd)?
-                }
-            } else if slide {
-                v
-            } else {
-                near + crate::geom::wrap_pi(v - near)
-            };
-            near = v;
-            dense.push((along * (v - s0), along * dir * v1, along * v2));
-        }
-        // Scales: the revolution (the stroke) over `l` mm; μ_s standard,
-        // the curve within 50 mm; the poles so that the derived curves fit
-        // 35 mm.
+        let ds_mid = sm.midpoints(along)?;
+        let dense = sm.dense(s0, along)?;
+        // Scales: the revolution (the stroke) over `l` mm.
         let mu_phi = match stroke {
             Some((lo, hi)) => (hi - lo) / l,
             None => TAU / l,
@@ -281,29 +376,9 @@ impl Diagrams {
                 "it does not move over the revolution: there is no diagram to draw",
             ));
         }
-        let mu_s = standard_scale(range.max(f64::MIN_POSITIVE), HEIGHT_S);
-        let dx = h / mu_phi;
-        let slope1 = (0..n)
-            .map(|k| ((s[k + 1] - s[k]) / mu_s / dx).abs())
-            .fold(0.0, f64::max);
-        let h1 = pole_distance(slope1, HEIGHT_DERIVED);
-        // The construction: rays from P1 = (−H1, 0) parallel to the chords
-        // meet the ordinate axis at y′ = H1·Δy/Δx.
-        let y1: Vec<f64> = (0..n)
-            .map(|k| ray_ordinate(h1, dx, (s[k + 1] - s[k]) / mu_s))
-            .collect();
-        let mu_v = mu_s / (h1 * mu_phi);
-        // Chords of the velocity diagram: between the midpoints k − ½ and
-        // k + ½ (the cycle closes: the midpoint before node 0 is the last;
-        // over a stroke node 0 takes the first chord).
-        let chord = |k: usize| match stroke {
-            Some(_) => y1[k.max(1)] - y1[k.max(1) - 1],
-            None => y1[k] - y1[(k + n - 1) % n],
-        };
-        let slope2 = (0..n).map(|k| (chord(k) / dx).abs()).fold(0.0, f64::max);
-        let h2 = pole_distance(slope2, HEIGHT_DERIVED);
-        let y2: Vec<f64> = (0..n).map(|k| ray_ordinate(h2, dx, chord(k))).collect();
-        let mu_a = mu_v / (h2 * mu_phi);
+        let cons = Chords::of(&s, range, h / mu_phi, stroke.is_some());
+        let mu_v = cons.mu_s / (cons.h1 * mu_phi);
+        let mu_a = mu_v / (cons.h2 * mu_phi);
         Ok(Diagrams {
             output,
             point,
@@ -319,14 +394,14 @@ impl Diagrams {
             dds,
             ds_mid,
             dense,
-            mu_s,
+            mu_s: cons.mu_s,
             mu_phi,
-            h1,
-            h2,
+            h1: cons.h1,
+            h2: cons.h2,
             mu_v,
             mu_a,
-            y1,
-            y2,
+            y1: cons.y1,
+            y2: cons.y2,
         })
     }
 

@@ -283,52 +283,15 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     let dir = if omega < 0.0 { -1.0 } else { 1.0 };
     let n = set.n.max(36);
     let turning = out.slide.is_none();
-    // The output at crank angle φ, a link's angle kept near `near`.
-    let value = |out: &mut Output, phi: f64, near: f64| -> Result<f64> {
-        let v = out.at(phi)?.0;
-        Ok(if turning { near + wrap_pi(v - near) } else { v })
-    };
-    let sample = |out: &mut Output, start: f64| -> Result<Vec<f64>> {
-        let mut s: Vec<f64> = Vec::with_capacity(n + 1);
-        for k in 0..=n {
-            let near = s.last().copied().unwrap_or(0.0);
-            let phi = start + dir * TAU * k as f64 / n as f64;
-            let v = out.at(phi)?.0;
-            s.push(if turning && k > 0 {
-                near + wrap_pi(v - near)
-            } else {
-                v
-            });
-        }
-        Ok(s)
+    let grid = Grid {
+        an,
+        set,
+        dir,
+        n,
+        turning,
     };
     // Start at the lower extreme of the output, found exactly.
-    let mut start = an.working_stroke_start(set.output)?;
-    let mut s = sample(&mut out, start)?;
-    if turning && (s[n] - s[0]).abs() > 1.0 {
-        return Err(Error::scene(
-            "output",
-            "the output link turns fully: it has no recess and approach (choose a rocking link or a slider)",
-        ));
-    }
-    let k_lo = (0..=n).min_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap();
-    if k_lo != 0 && k_lo != n {
-        let h = TAU / n as f64;
-        let base = s[k_lo];
-        let c0 = start + dir * h * k_lo as f64;
-        let (t, _) = golden_max(
-            &|t| {
-                let mut o = Output::new(an, set.output).expect("checked");
-                o.at(c0).ok();
-                -value(&mut o, c0 + dir * t, base).unwrap_or(f64::INFINITY)
-            },
-            -h,
-            h,
-        );
-        start = c0 + dir * t;
-        out = Output::new(an, set.output)?;
-        s = sample(&mut out, start)?;
-    }
+    let (start, s) = grid.start_at_lower_extreme(&mut out)?;
     let (lo, hi) = s
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
@@ -336,18 +299,155 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
     if total <= 1e-12 * m.size.max(1.0) {
         return Err(Error::scene("output", "the output does not move"));
     }
-    let e = set.tolerance * total;
-    let h = TAU / n as f64;
-    let angle = |k: f64| start + dir * h * k;
-    // Dwells: the longest runs of grid points within E of an extreme.
-    let band = |at_low: bool| -> Option<(usize, usize)> {
-        let inside = |k: usize| {
-            if at_low {
-                s[k] - lo <= e
+    let sw = Sweep {
+        grid,
+        start,
+        s,
+        lo,
+        hi,
+        e: set.tolerance * total,
+        h: TAU / n as f64,
+    };
+    let (e, h) = (sw.e, sw.h);
+    let high = sw.high_dwell();
+    let low = sw.low_dwell();
+    let x_hi = sw.upper_extreme();
+    // Phase boundaries in grid units from the start (the lower extreme).
+    let recess_from = match low {
+        Some((b, _)) => sw.cross(&mut out, b, lo + e)?,
+        None => 0.0,
+    };
+    let (recess_to, approach_from) = match high {
+        Some((a, b)) => (
+            sw.cross(&mut out, a - 1, hi - e)?,
+            sw.cross(&mut out, b, hi - e)?,
+        ),
+        None => (x_hi, x_hi),
+    };
+    let approach_to = match low {
+        Some((_, a)) => sw.cross(&mut out, a - 1, lo + e)?,
+        None => n as f64,
+    };
+    let mut list = Vec::new();
+    for (kind, x0, x1) in [
+        (PhaseKind::Recess, recess_from, recess_to),
+        (PhaseKind::Approach, approach_from, approach_to),
+    ] {
+        if kind == PhaseKind::Approach && high.is_some() {
+            let span = h * (approach_from - recess_to);
+            list.push(sw.dwell(&mut out, recess_to, approach_from, span)?);
+        }
+        list.push(sw.phase(&mut out, kind, x0, x1)?);
+    }
+    if low.is_some() {
+        // Around the lower extreme, over the start of the revolution.
+        let span = h * (n as f64 - approach_to + recess_from);
+        list.push(sw.dwell(&mut out, approach_to, recess_from, span)?);
+    }
+    Ok(list)
+}
+
+/// The output at crank angle φ; a link's angle (`turning`) kept near
+/// `near`.
+fn value(out: &mut Output, phi: f64, near: f64, turning: bool) -> Result<f64> {
+    let v = out.at(phi)?.0;
+    Ok(if turning { near + wrap_pi(v - near) } else { v })
+}
+
+/// The grid the output is sampled on: `n` steps of a revolution in the
+/// sense `dir` of the crank; `turning`: the output is a link's angle.
+#[derive(Clone, Copy)]
+struct Grid<'a> {
+    an: &'a Analysis,
+    set: &'a Settings,
+    dir: f64,
+    n: usize,
+    turning: bool,
+}
+
+impl<'a> Grid<'a> {
+    /// The output over a revolution from crank angle `start`, a link's
+    /// angle continued from one grid point to the next.
+    fn sample(&self, out: &mut Output, start: f64) -> Result<Vec<f64>> {
+        let (n, dir) = (self.n, self.dir);
+        let mut s: Vec<f64> = Vec::with_capacity(n + 1);
+        for k in 0..=n {
+            let near = s.last().copied().unwrap_or(0.0);
+            let phi = start + dir * TAU * k as f64 / n as f64;
+            let v = out.at(phi)?.0;
+            s.push(if self.turning && k > 0 {
+                near + wrap_pi(v - near)
             } else {
-                hi - s[k] <= e
-            }
-        };
+                v
+            });
+        }
+        Ok(s)
+    }
+
+    /// The crank angle of the output's lower extreme, found exactly, and
+    /// the output sampled from there (`out` afresh when the start moved).
+    fn start_at_lower_extreme(&self, out: &mut Output<'a>) -> Result<(f64, Vec<f64>)> {
+        let (an, set, n, dir) = (self.an, self.set, self.n, self.dir);
+        let mut start = an.working_stroke_start(set.output)?;
+        let mut s = self.sample(out, start)?;
+        if self.turning && (s[n] - s[0]).abs() > 1.0 {
+            return Err(Error::scene(
+                "output",
+                "the output link turns fully: it has no recess and approach (choose a rocking link or a slider)",
+            ));
+        }
+        let k_lo = (0..=n).min_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap();
+        if k_lo != 0 && k_lo != n {
+            let h = TAU / n as f64;
+            let base = s[k_lo];
+            let c0 = start + dir * h * k_lo as f64;
+            let (t, _) = golden_max(
+                &|t| {
+                    let mut o = Output::new(an, set.output).expect("checked");
+                    o.at(c0).ok();
+                    -value(&mut o, c0 + dir * t, base, self.turning).unwrap_or(f64::INFINITY)
+                },
+                -h,
+                h,
+            );
+            start = c0 + dir * t;
+            *out = Output::new(an, set.output)?;
+            s = self.sample(out, start)?;
+        }
+        Ok((start, s))
+    }
+}
+
+/// The output sampled over a revolution from its lower extreme: the
+/// samples `s`, their range [lo, hi], the dwell tolerance `e`, the step
+/// `h` of the grid.
+struct Sweep<'a> {
+    grid: Grid<'a>,
+    start: f64,
+    s: Vec<f64>,
+    lo: f64,
+    hi: f64,
+    e: f64,
+    h: f64,
+}
+
+impl Sweep<'_> {
+    /// The crank angle at `k` grid steps from the start.
+    fn angle(&self, k: f64) -> f64 {
+        self.start + self.grid.dir * self.h * k
+    }
+
+    /// The output `x` grid steps from the start, kept near the lower
+    /// extreme.
+    fn level(&self, out: &mut Output, x: f64) -> Result<f64> {
+        value(out, self.angle(x), self.lo, self.grid.turning)
+    }
+
+    /// The dwell at the upper extreme: the longest run of grid points
+    /// within E of it, if long enough.
+    fn high_dwell(&self) -> Option<(usize, usize)> {
+        let (n, s) = (self.grid.n, &self.s);
+        let inside = |k: usize| self.hi - s[k] <= self.e;
         let mut best: Option<(usize, usize)> = None;
         let mut k = 0;
         while k <= n {
@@ -362,28 +462,33 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
             }
             k += 1;
         }
-        best.filter(|(a, b)| h * (b - a) as f64 >= set.min_dwell)
-    };
-    let high = band(false);
-    // The dwell at the lower extreme runs over the start: the grid points
-    // within E at the start and at the end of the revolution.
-    let low = {
+        best.filter(|(a, b)| self.h * (b - a) as f64 >= self.grid.set.min_dwell)
+    }
+
+    /// The dwell at the lower extreme runs over the start: the grid points
+    /// within E at the start and at the end of the revolution.
+    fn low_dwell(&self) -> Option<(usize, usize)> {
+        let (n, s, lo, e) = (self.grid.n, &self.s, self.lo, self.e);
         let first_out = (0..=n).find(|&k| s[k] - lo > e);
         let last_out = (0..=n).rev().find(|&k| s[k] - lo > e);
         match (first_out, last_out) {
-            (Some(f), Some(l)) if h * ((f - 1) + (n - l - 1)) as f64 >= set.min_dwell => {
+            (Some(f), Some(l))
+                if self.h * ((f - 1) + (n - l - 1)) as f64 >= self.grid.set.min_dwell =>
+            {
                 Some((f - 1, l + 1))
             }
             _ => None,
         }
-    };
-    // Where the output crosses `level` between grid points k and k + 1.
-    let cross = |out: &mut Output, k: usize, level: f64| -> Result<f64> {
+    }
+
+    /// Where the output crosses `level` between grid points k and k + 1.
+    fn cross(&self, out: &mut Output, k: usize, level: f64) -> Result<f64> {
+        let s = &self.s;
         let (mut a, mut b) = (k as f64, k as f64 + 1.0);
         let fa = s[k] - level;
         for _ in 0..60 {
             let mid = 0.5 * (a + b);
-            let f = value(out, angle(mid), s[k])? - level;
+            let f = value(out, self.angle(mid), s[k], self.grid.turning)? - level;
             if (f < 0.0) == (fa < 0.0) {
                 a = mid;
             } else {
@@ -391,59 +496,50 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
             }
         }
         Ok(0.5 * (a + b))
-    };
-    // The upper extreme, refined (when it is not a dwell).
-    let k_hi = (0..=n).max_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap();
-    let x_hi = {
+    }
+
+    /// The upper extreme in grid steps, refined (when it is not a dwell).
+    fn upper_extreme(&self) -> f64 {
+        let (an, set, n, s) = (self.grid.an, self.grid.set, self.grid.n, &self.s);
+        let k_hi = (0..=n).max_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap();
         let base = s[k_hi];
         let (t, _) = golden_max(
             &|t| {
                 let mut o = Output::new(an, set.output).expect("checked");
-                o.at(angle(k_hi as f64)).ok();
-                value(&mut o, angle(k_hi as f64 + t), base).unwrap_or(f64::NEG_INFINITY)
+                o.at(self.angle(k_hi as f64)).ok();
+                value(&mut o, self.angle(k_hi as f64 + t), base, self.grid.turning)
+                    .unwrap_or(f64::NEG_INFINITY)
             },
             -1.0,
             1.0,
         );
         k_hi as f64 + t
-    };
-    // Phase boundaries in grid units from the start (the lower extreme).
-    let recess_from = match low {
-        Some((b, _)) => cross(&mut out, b, lo + e)?,
-        None => 0.0,
-    };
-    let (recess_to, approach_from) = match high {
-        Some((a, b)) => (cross(&mut out, a - 1, hi - e)?, cross(&mut out, b, hi - e)?),
-        None => (x_hi, x_hi),
-    };
-    let approach_to = match low {
-        Some((_, a)) => cross(&mut out, a - 1, lo + e)?,
-        None => n as f64,
-    };
-    let mut list = Vec::new();
-    let level = |out: &mut Output, x: f64| value(out, angle(x), lo);
-    for (kind, x0, x1) in [
-        (PhaseKind::Recess, recess_from, recess_to),
-        (PhaseKind::Approach, approach_from, approach_to),
-    ] {
-        if kind == PhaseKind::Approach && high.is_some() {
-            let (s0, s1) = (level(&mut out, recess_to)?, level(&mut out, approach_from)?);
-            list.push(Phase {
-                kind: PhaseKind::Dwell,
-                start: angle(recess_to),
-                span: h * (approach_from - recess_to),
-                s0,
-                s1,
-                stroke: e,
-                peaks: None,
-            });
-        }
-        let (p0, span) = (angle(x0), h * (x1 - x0));
-        let (s0, s1) = (level(&mut out, x0)?, level(&mut out, x1)?);
+    }
+
+    /// A dwell from `x0` to `x1` grid steps from the start, `span` long.
+    fn dwell(&self, out: &mut Output, x0: f64, x1: f64, span: f64) -> Result<Phase> {
+        let (s0, s1) = (self.level(out, x0)?, self.level(out, x1)?);
+        Ok(Phase {
+            kind: PhaseKind::Dwell,
+            start: self.angle(x0),
+            span,
+            s0,
+            s1,
+            stroke: self.e,
+            peaks: None,
+        })
+    }
+
+    /// The phase `kind` from `x0` to `x1` grid steps from the start, with
+    /// the peaks of its law.
+    fn phase(&self, out: &mut Output, kind: PhaseKind, x0: f64, x1: f64) -> Result<Phase> {
+        let (dir, turning, n) = (self.grid.dir, self.grid.turning, self.grid.n);
+        let (p0, span) = (self.angle(x0), self.h * (x1 - x0));
+        let (s0, s1) = (self.level(out, x0)?, self.level(out, x1)?);
         let stroke = (s1 - s0).abs();
         let sign = (s1 - s0).signum();
         // The law of the phase in x: a = (s − s0)/S, b = s'·φ_p/S, c = s''·φ_p²/S.
-        let cell = std::cell::RefCell::new(&mut out);
+        let cell = std::cell::RefCell::new(out);
         let law = |x: f64| -> (f64, f64, f64) {
             let o: &mut Output = &mut cell.borrow_mut();
             match o.at(p0 + dir * span * x) {
@@ -461,11 +557,11 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
         let pk = peaks(&law, (n / 4).max(64));
         if !(pk.b.is_finite() && pk.c.is_finite() && pk.d.is_finite()) {
             return Err(Error::singular(
-                crate::kinematics::positions::describe_input(m, &[p0]),
+                crate::kinematics::positions::describe_input(&self.grid.an.mech, &[p0]),
                 format!("the {} phase could not be evaluated", kind.name()),
             ));
         }
-        list.push(Phase {
+        Ok(Phase {
             kind,
             start: p0,
             span,
@@ -473,22 +569,8 @@ pub fn phases(an: &Analysis, set: &Settings) -> Result<Vec<Phase>> {
             s1,
             stroke,
             peaks: Some(pk),
-        });
+        })
     }
-    if low.is_some() {
-        // Around the lower extreme, over the start of the revolution.
-        let (s0, s1) = (level(&mut out, approach_to)?, level(&mut out, recess_from)?);
-        list.push(Phase {
-            kind: PhaseKind::Dwell,
-            start: angle(approach_to),
-            span: h * (n as f64 - approach_to + recess_from),
-            s0,
-            s1,
-            stroke: e,
-            peaks: None,
-        });
-    }
-    Ok(list)
 }
 
 /// The default output: the last link of the last group, passing over a
