@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings as NewtonSettings};
 use crate::kinematics::analytic::{Drive, Motion, Order, contour};
-use crate::kinematics::construction::{Drafting, Variant, build_plans_numbers};
+use crate::kinematics::construction::{Drafting, Setup, Variant, build_plans_numbers};
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::{InputSpec, PositionsSpec};
@@ -120,6 +120,7 @@ fn time_per_call(min_time: f64, mut f: impl FnMut() -> Result<()>) -> Result<f64
     }
     Ok(best)
 }
+
 /// Run every method on the scene.
 pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     let m = &an.mech;
@@ -141,11 +142,53 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     let links: Vec<usize> = (0..m.links.len())
         .filter(|&l| an.link(l) && l != m.frame())
         .collect();
-    // The reference at every evaluation position: the starts in order (on
-    // the sketch's branch), then each refined on its own, in parallel.
+    let truth = truths(an, &qs, &links)?;
+    let bench = Bench {
+        an,
+        set,
+        setup: an.setup(),
+        truth,
+        qs,
+        links,
+        rate,
+        rate2,
+        // The construction kernel, without pencil noise.
+        drafting: Drafting {
+            delta: set.delta,
+            ..an.drafting
+        },
+    };
+    let mut rows = vec![bench.kernel()?, bench.contour()?];
+    // Route (b) at each Newton tolerance.
+    for &tol in &set.newton_tols {
+        rows.push(bench.newton(tol)?);
+    }
+    // Kinematic diagrams by numerical differentiation (a crank only).
+    if crank {
+        for chords in [true, false] {
+            for &n in &set.diagram_ns {
+                rows.extend(bench.diagram(chords, n)?);
+            }
+        }
+    }
+    // Hand drafting emulated: the kernel with pencil noise.
+    if set.seeds > 0 {
+        rows.push(bench.hand()?);
+    }
+    Ok(Report {
+        title: m.scene.title.clone(),
+        positions: bench.qs.len(),
+        rows,
+    })
+}
+
+/// The reference at every evaluation position `qs`: the starts in order
+/// (on the sketch's branch), then each refined on its own, in parallel.
+fn truths(an: &Analysis, qs: &[f64], links: &[usize]) -> Result<Vec<Truth>> {
+    let m = &an.mech;
     let mut re = Reference::new(an)?;
-    let starts: Vec<(f64, Configuration)> = qs.iter().copied().zip(re.starts(&qs)?).collect();
-    let truth = crate::progress::map(&starts, "reference", |(q, c)| -> Result<Truth> {
+    let starts: Vec<(f64, Configuration)> = qs.iter().copied().zip(re.starts(qs)?).collect();
+    crate::progress::map(&starts, "reference", |(q, c)| -> Result<Truth> {
         let st: RefState = re.refine(&Real::from_f64(*q), c)?;
         let q = *q;
         let points: Vec<_> = an.points.iter().map(|&p| st.point(an, p)).collect();
@@ -175,10 +218,54 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         })
     })
     .into_iter()
-    .collect::<Result<Vec<Truth>>>()?;
-    let setup = an.setup();
-    let drive = |q: f64| Drive { q, rate, rate2 };
-    let from_motion = |c: Option<&Configuration>, mo: &[Option<Motion>]| -> Got {
+    .collect::<Result<Vec<Truth>>>()
+}
+
+/// The methods' bench: the scene, the evaluation positions `qs` with the
+/// reference there, the solved links, the input's rates.
+struct Bench<'a> {
+    an: &'a Analysis,
+    set: &'a Settings,
+    setup: Setup<'a>,
+    truth: Vec<Truth>,
+    qs: Vec<f64>,
+    links: Vec<usize>,
+    rate: f64,
+    rate2: f64,
+    drafting: Drafting,
+}
+
+/// A method's row: its errors' statistics and its time per position.
+fn row(method: &str, setting: String, time: f64, errs: Errors) -> Row {
+    let (err, compared) = errs.stats();
+    Row {
+        method: method.into(),
+        setting,
+        time,
+        err,
+        compared,
+    }
+}
+
+impl Bench<'_> {
+    fn drive(&self, q: f64) -> Drive {
+        Drive {
+            q,
+            rate: self.rate,
+            rate2: self.rate2,
+        }
+    }
+
+    fn positions(&self) -> Result<PositionSolver<'_>> {
+        let an = self.an;
+        PositionSolver::new(&an.mech, &an.structure, an.need.clone())
+    }
+
+    /// What a route's motions `mo` give (the points on the positions `c`,
+    /// else on the motions' poses).
+    fn got_of_motion(&self, c: Option<&Configuration>, mo: &[Option<Motion>]) -> Got {
+        let (an, links) = (self.an, &self.links);
+        let m = &an.mech;
         let mut g = Got::default();
         let mut pl = Vec::new();
         let (mut v, mut a) = (Vec::new(), Vec::new());
@@ -199,17 +286,14 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         g.omega = Some(links.iter().map(|&l| mo[l].unwrap().omega).collect());
         g.epsilon = Some(links.iter().map(|&l| mo[l].unwrap().epsilon).collect());
         g
-    };
-    let mut rows = Vec::new();
-    let npos = qs.len();
+    }
 
-    // The construction kernel, without pencil noise.
-    let drafting = Drafting {
-        delta: set.delta,
-        ..an.drafting
-    };
-    let kernel_got = |c: &Configuration, q: f64, d: Drafting| -> Result<Got> {
-        let plans = build_plans_numbers(&setup, c, drive(q), Order::Acceleration, d)?;
+    /// What the construction kernel gives at `q` (positions `c`) drafted
+    /// as `d`.
+    fn kernel_got(&self, c: &Configuration, q: f64, d: Drafting) -> Result<Got> {
+        let (an, links) = (self.an, &self.links);
+        let m = &an.mech;
+        let plans = build_plans_numbers(&self.setup, c, self.drive(q), Order::Acceleration, d)?;
         let acc = plans.acceleration.as_ref().expect("asked for");
         let mut g = Got {
             places: Some(
@@ -231,156 +315,133 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
         g.omega = rates(&plans.velocity);
         g.epsilon = rates(acc);
         Ok(g)
-    };
-    {
-        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
-        let mut errs = Errors::default();
-        for t in &truth {
-            let c = ps.solve(t.q)?;
-            errs.add(t, &kernel_got(&c, t.q, drafting)?, m.size);
-        }
-        let time = time_per_call(set.min_time, || {
-            for &q in &qs {
-                let c = ps.solve(q)?;
-                build_plans_numbers(&setup, &c, drive(q), Order::Acceleration, drafting)?;
-            }
-            Ok(())
-        })? / npos as f64;
-        let (err, compared) = errs.stats();
-        rows.push(Row {
-            method: "kernel".into(),
-            setting: String::new(),
-            time,
-            err,
-            compared,
-        });
     }
 
-    // Route (a).
-    {
-        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
+    /// The construction kernel, without pencil noise.
+    fn kernel(&self) -> Result<Row> {
+        let size = self.an.mech.size;
+        let mut ps = self.positions()?;
         let mut errs = Errors::default();
-        for t in &truth {
+        for t in &self.truth {
             let c = ps.solve(t.q)?;
-            let mo = contour::solve(
-                m,
-                &an.structure,
-                &an.need,
-                &c,
-                drive(t.q),
-                Order::Acceleration,
-            )?;
-            errs.add(t, &from_motion(Some(&c), &mo), m.size);
+            errs.add(t, &self.kernel_got(&c, t.q, self.drafting)?, size);
         }
-        let time = time_per_call(set.min_time, || {
-            for &q in &qs {
+        let time = time_per_call(self.set.min_time, || {
+            for &q in &self.qs {
                 let c = ps.solve(q)?;
-                contour::solve(
-                    m,
-                    &an.structure,
-                    &an.need,
-                    &c,
-                    drive(q),
-                    Order::Acceleration,
-                )?;
+                let drive = self.drive(q);
+                build_plans_numbers(&self.setup, &c, drive, Order::Acceleration, self.drafting)?;
             }
             Ok(())
-        })? / npos as f64;
-        let (err, compared) = errs.stats();
-        rows.push(Row {
-            method: "contour".into(),
-            setting: String::new(),
-            time,
-            err,
-            compared,
-        });
+        })? / self.qs.len() as f64;
+        Ok(row("kernel", String::new(), time, errs))
     }
 
-    // Route (b) at each Newton tolerance.
-    for &tol in &set.newton_tols {
+    /// Route (a).
+    fn contour(&self) -> Result<Row> {
+        let an = self.an;
+        let m = &an.mech;
+        let mut ps = self.positions()?;
+        let mut errs = Errors::default();
+        let solve = |c: &Configuration, q: f64| {
+            let order = Order::Acceleration;
+            contour::solve(m, &an.structure, &an.need, c, self.drive(q), order)
+        };
+        for t in &self.truth {
+            let c = ps.solve(t.q)?;
+            let mo = solve(&c, t.q)?;
+            errs.add(t, &self.got_of_motion(Some(&c), &mo), m.size);
+        }
+        let time = time_per_call(self.set.min_time, || {
+            for &q in &self.qs {
+                let c = ps.solve(q)?;
+                solve(&c, q)?;
+            }
+            Ok(())
+        })? / self.qs.len() as f64;
+        Ok(row("contour", String::new(), time, errs))
+    }
+
+    /// Route (b) at the Newton tolerance `tol`.
+    fn newton(&self, tol: f64) -> Result<Row> {
+        let an = self.an;
+        let m = &an.mech;
+        let (rate, rate2) = (self.rate, self.rate2);
         let ns = NewtonSettings {
             tol,
             ..NewtonSettings::default()
         };
         let mut cs = ConstraintSolver::new(m, &an.include, ns);
         let mut errs = Errors::default();
-        for t in &truth {
+        for t in &self.truth {
             cs.solve_positions(t.q)?;
             let mo = cs.solve_rates(rate, rate2, Order::Acceleration)?;
-            errs.add(t, &from_motion(None, &mo), m.size);
+            errs.add(t, &self.got_of_motion(None, &mo), m.size);
         }
-        let time = time_per_call(set.min_time, || {
+        let time = time_per_call(self.set.min_time, || {
             let mut cs = ConstraintSolver::new(m, &an.include, ns);
-            for &q in &qs {
+            for &q in &self.qs {
                 cs.solve_positions(q)?;
                 cs.solve_rates(rate, rate2, Order::Acceleration)?;
             }
             Ok(())
-        })? / npos as f64;
-        let (err, compared) = errs.stats();
-        rows.push(Row {
-            method: "newton".into(),
-            setting: format!("tol {}", sci(tol)),
-            time,
-            err,
-            compared,
-        });
+        })? / self.qs.len() as f64;
+        Ok(row("newton", format!("tol {}", sci(tol)), time, errs))
     }
 
-    // Kinematic diagrams by numerical differentiation (a crank only).
-    if crank {
-        for chords in [true, false] {
-            for &n in &set.diagram_ns {
-                let h = std::f64::consts::TAU / n as f64;
-                // Stencil offsets in steps of h.
-                let offs: &[f64] = if chords {
-                    &[-1.0, -0.5, 0.0, 0.5, 1.0]
-                } else {
-                    &[-1.0, 0.0, 1.0]
-                };
-                let mut ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
-                let mut errs = Errors::default();
-                let mut evals = 0usize;
-                let diff = |ps: &mut PositionSolver, q: f64| -> Option<Got> {
-                    let mut samples = Vec::with_capacity(offs.len());
-                    for &o in offs {
-                        samples.push(sample(an, &links, ps.solve(q + o * h).ok()?));
-                    }
-                    Some(differentiate(&samples, h, chords, rate, rate2))
-                };
-                for t in &truth {
-                    if let Some(g) = diff(&mut ps, t.q) {
-                        errs.add(t, &g, m.size);
-                        evals += 1;
-                    }
-                    // Back on the path for the next position.
-                    let _ = ps.solve(t.q);
-                }
-                if evals == 0 {
-                    continue;
-                }
-                let time = time_per_call(set.min_time, || {
-                    for &q in &qs {
-                        let _ = diff(&mut ps, q);
-                    }
-                    Ok(())
-                })? / (npos * offs.len()) as f64;
-                let (err, compared) = errs.stats();
-                rows.push(Row {
-                    method: if chords { "chords" } else { "central" }.into(),
-                    setting: format!("N = {n}"),
-                    time,
-                    err,
-                    compared,
-                });
+    /// A kinematic diagram by numerical differentiation over `n` steps a
+    /// revolution (`chords`, else central differences); none when no
+    /// position's stencil assembles.
+    fn diagram(&self, chords: bool, n: usize) -> Result<Option<Row>> {
+        let an = self.an;
+        let (rate, rate2) = (self.rate, self.rate2);
+        let h = std::f64::consts::TAU / n as f64;
+        // Stencil offsets in steps of h.
+        let offs: &[f64] = if chords {
+            &[-1.0, -0.5, 0.0, 0.5, 1.0]
+        } else {
+            &[-1.0, 0.0, 1.0]
+        };
+        let mut ps = self.positions()?;
+        let mut errs = Errors::default();
+        let mut evals = 0usize;
+        let diff = |ps: &mut PositionSolver, q: f64| -> Option<Got> {
+            let mut samples = Vec::with_capacity(offs.len());
+            for &o in offs {
+                samples.push(sample(an, &self.links, ps.solve(q + o * h).ok()?));
             }
+            Some(differentiate(&samples, h, chords, rate, rate2))
+        };
+        for t in &self.truth {
+            if let Some(g) = diff(&mut ps, t.q) {
+                errs.add(t, &g, an.mech.size);
+                evals += 1;
+            }
+            // Back on the path for the next position.
+            let _ = ps.solve(t.q);
         }
+        if evals == 0 {
+            return Ok(None);
+        }
+        let time = time_per_call(self.set.min_time, || {
+            for &q in &self.qs {
+                let _ = diff(&mut ps, q);
+            }
+            Ok(())
+        })? / (self.qs.len() * offs.len()) as f64;
+        let method = if chords { "chords" } else { "central" };
+        Ok(Some(row(method, format!("N = {n}"), time, errs)))
     }
 
-    // Hand drafting emulated: the kernel with pencil noise.
-    if set.seeds > 0 {
-        let mut ps = PositionSolver::new(m, &an.structure, an.need.clone())?;
-        let configs: Vec<Configuration> = qs.iter().map(|&q| ps.solve(q)).collect::<Result<_>>()?;
+    /// Hand drafting emulated: the kernel with pencil noise.
+    fn hand(&self) -> Result<Row> {
+        let set = self.set;
+        let mut ps = self.positions()?;
+        let configs: Vec<Configuration> = self
+            .qs
+            .iter()
+            .map(|&q| ps.solve(q))
+            .collect::<Result<_>>()?;
         let mut errs = Errors::default();
         let t0 = Instant::now();
         let mut built = 0usize;
@@ -390,32 +451,21 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
                     jitter: Some(seed),
                     ..Variant::default()
                 },
-                ..drafting
+                ..self.drafting
             };
-            for (t, c) in truth.iter().zip(&configs) {
-                if let Ok(mut g) = kernel_got(c, t.q, d) {
+            for (t, c) in self.truth.iter().zip(&configs) {
+                if let Ok(mut g) = self.kernel_got(c, t.q, d) {
                     // The plan of the mechanism is not drawn by hand here.
                     g.places = None;
-                    errs.add(t, &g, m.size);
+                    errs.add(t, &g, self.an.mech.size);
                     built += 1;
                 }
             }
         }
         let time = t0.elapsed().as_secs_f64() / built.max(1) as f64;
-        let (err, compared) = errs.stats();
-        rows.push(Row {
-            method: "hand".into(),
-            setting: format!("δ = {} mm, {} seeds", set.delta, set.seeds),
-            time,
-            err,
-            compared,
-        });
+        let setting = format!("δ = {} mm, {} seeds", set.delta, set.seeds);
+        Ok(row("hand", setting, time, errs))
     }
-    Ok(Report {
-        title: m.scene.title.clone(),
-        positions: npos,
-        rows,
-    })
 }
 
 /// (reported points' places, angles of the solved links) at one position.
