@@ -287,22 +287,14 @@ pub fn lever(
     lever_at(an, s, loads, input, naming, None)
 }
 
-/// Zhukovsky's lever of input `input` on the velocity plan drawn at
-/// `mu_v` ((m/s)/mm; `None`: as [`lever`]): a sheet's own scale.
-pub fn lever_at(
-    an: &Analysis,
-    s: &Solved,
-    loads: &[Load],
-    input: usize,
-    naming: Naming,
-    mu_v: Option<f64>,
-) -> Result<Lever> {
-    let m = &an.mech;
-    let plan = velocity_plan(an, s, input, naming, mu_v)?;
+/// The loads carried onto the lever turned from `plan`, each with its
+/// moment about the pole (a couple as two forces at its link's base
+/// points).
+fn lever_forces(an: &Analysis, s: &Solved, plan: &Plan, loads: &[Load]) -> Result<Vec<LeverForce>> {
     let mut forces = Vec::new();
     let on_lever =
         |load: usize, part, link, point, origin, x: Point, f: Vec2| -> Result<LeverForce> {
-            let p = place(an, s, &plan, link, x)?;
+            let p = place(an, s, plan, link, x)?;
             let at = turned(p.at);
             let moment = at.cross(f);
             let arm = if f.hypot() > 0.0 {
@@ -345,55 +337,87 @@ pub fn lever_at(
                 let ((p, at_p), (q, at_q)) = base_points(an, s, link);
                 let pq = at_p - at_q;
                 let f = perp(pq) * (c / pq.hypot2());
-                forces.push(on_lever(
-                    k,
-                    Part::Couple { at_p: true },
-                    link,
-                    Some(p),
-                    origin,
-                    at_p,
-                    f,
-                )?);
-                forces.push(on_lever(
-                    k,
-                    Part::Couple { at_p: false },
-                    link,
-                    q,
-                    origin,
-                    at_q,
-                    -f,
-                )?);
+                let part = Part::Couple { at_p: true };
+                forces.push(on_lever(k, part, link, Some(p), origin, at_p, f)?);
+                let part = Part::Couple { at_p: false };
+                forces.push(on_lever(k, part, link, q, origin, at_q, -f)?);
             }
         }
     }
-    // The drive's force: its place on the lever and its direction.
-    let (point_b, at_b, err_b, dir_b, per_unit) = match *m.scene.input_at(input) {
+    Ok(forces)
+}
+
+/// The balancing force of an input on the lever: the point it acts at
+/// and its place on the turned plan (with the plan's error there), its
+/// direction, and the factor from the force to the input's balancing
+/// value (l_OA of a crank).
+struct LeverDrive {
+    point: usize,
+    at: Vec2,
+    err: f64,
+    dir: Vec2,
+    per_unit: f64,
+}
+
+/// The balancing force of input `input` on the lever turned from `plan`.
+fn lever_drive(an: &Analysis, s: &Solved, plan: &Plan, input: usize) -> Result<LeverDrive> {
+    let m = &an.mech;
+    Ok(match *m.scene.input_at(input) {
         InputSpec::Crank { link, pivot, .. } => {
             let pts = &m.links[link].points;
             let a = if pts[0] == pivot { pts[1] } else { pts[0] };
             let (o, x) = (s.config.point(m, link, pivot), s.config.point(m, link, a));
-            let pa = place(an, s, &plan, link, x)?;
+            let pa = place(an, s, plan, link, x)?;
             let oa = x - o;
             // F_b ⊥ OA at A, counter-clockwise about O for F_b > 0.
-            (a, turned(pa.at), pa.err, perp(oa) / oa.hypot(), oa.hypot())
+            LeverDrive {
+                point: a,
+                at: turned(pa.at),
+                err: pa.err,
+                dir: perp(oa) / oa.hypot(),
+                per_unit: oa.hypot(),
+            }
         }
         InputSpec::Slider { link, pair, .. } => {
             let pr = &m.prismatics[pair];
             let x = s.config.point(m, link, pr.point);
             let u = s.config.pose(pr.guide).dir(pr.line_dir);
-            let rod = place(an, s, &plan, link, x)?;
-            let barrel = place(an, s, &plan, pr.guide, x)?;
+            let rod = place(an, s, plan, link, x)?;
+            let barrel = place(an, s, plan, pr.guide, x)?;
             // F_b·u on the rod at x, −F_b·u on the barrel at x: on the
             // lever one force at the relative velocity's turned end.
-            (
-                pr.point,
-                turned(rod.at - barrel.at),
-                rod.err + barrel.err,
-                u,
-                1.0,
-            )
+            LeverDrive {
+                point: pr.point,
+                at: turned(rod.at - barrel.at),
+                err: rod.err + barrel.err,
+                dir: u,
+                per_unit: 1.0,
+            }
         }
-    };
+    })
+}
+
+/// Zhukovsky's lever of input `input` on the velocity plan drawn at
+/// `mu_v` ((m/s)/mm; `None`: as [`lever`]): a sheet's own scale.
+pub fn lever_at(
+    an: &Analysis,
+    s: &Solved,
+    loads: &[Load],
+    input: usize,
+    naming: Naming,
+    mu_v: Option<f64>,
+) -> Result<Lever> {
+    let m = &an.mech;
+    let plan = velocity_plan(an, s, input, naming, mu_v)?;
+    let forces = lever_forces(an, s, &plan, loads)?;
+    // The drive's force: its place on the lever and its direction.
+    let LeverDrive {
+        point: point_b,
+        at: at_b,
+        err: err_b,
+        dir: dir_b,
+        per_unit,
+    } = lever_drive(an, s, &plan, input)?;
     let arm_unit = at_b.cross(dir_b);
     let at = || describe_input(m, &s.drives.coords());
     if arm_unit == 0.0 || !arm_unit.is_finite() {

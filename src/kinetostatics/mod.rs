@@ -123,27 +123,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
     let x = newton_euler::solve(an, s, &loads)?;
     let vp = power::balancing(an, s, &loads);
     let size = m.size;
-    let mut scale = loads
-        .iter()
-        .map(|l| match *l {
-            Load::Force { f, .. } => f.hypot(),
-            Load::Couple { m, .. } => m.abs() / size,
-        })
-        .fold(0.0, f64::max);
-    let revolutes: Vec<RevoluteReaction> = m
-        .revolutes
-        .iter()
-        .zip(&x.revolute)
-        .enumerate()
-        .map(|(pair, (rv, &r))| RevoluteReaction {
-            pair,
-            point: rv.point,
-            first: rv.a,
-            second: rv.b,
-            at: s.config.point(m, rv.b, rv.point),
-            r,
-        })
-        .collect();
+    let revolutes = revolute_reactions(an, s, &x);
     let balancing: Vec<Balancing> = m
         .scene
         .inputs()
@@ -156,40 +136,8 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
             }
         })
         .collect();
-    for r in &revolutes {
-        scale = scale.max(r.r.hypot());
-    }
-    for b in &balancing {
-        scale = scale.max(match *b {
-            Balancing::Moment(x) => x.abs() / size,
-            Balancing::Force(x) => x.abs(),
-        });
-    }
-    for &(n, c) in &x.prismatic {
-        scale = scale.max(n.abs()).max(c.abs() / size);
-    }
-    let prismatics = m
-        .prismatics
-        .iter()
-        .zip(&x.prismatic)
-        .enumerate()
-        .map(|(pair, (pr, &(n, c)))| {
-            let (q, u, nrm) = newton_euler::guide_frame(an, s, pair);
-            // One force n through q + t·u has the moment t·n about q.
-            let at = (n.abs() > ACCURACY.null_normal_force * scale).then(|| q + u * (c / n));
-            GuideReaction {
-                pair,
-                slider: pr.slider,
-                guide: pr.guide,
-                point: pr.point,
-                q,
-                u,
-                n: nrm * n,
-                m: c,
-                at,
-            }
-        })
-        .collect();
+    let scale = force_scale(size, &loads, &revolutes, &balancing, &x);
+    let prismatics = guide_reactions(an, s, &x, scale);
     // Each balancing value's disagreements are measured against the size
     // of the terms it is summed from, but never against less than a
     // ten-billionth of the position's largest force (times the
@@ -200,21 +148,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         .inputs()
         .map(|i| 1e-10 * scale * if i.is_crank() { size } else { 1.0 })
         .collect();
-    let mut diff: f64 = 0.0;
-    for (((b, &v), &sc), &floor) in balancing
-        .iter()
-        .zip(&vp.balancing)
-        .zip(&vp.scale)
-        .zip(&floors)
-    {
-        let d = (b.value() - v).abs();
-        let rel = if d == 0.0 {
-            0.0
-        } else {
-            d / sc.max(floor).max(f64::MIN_POSITIVE)
-        };
-        diff = diff.max(rel);
-    }
+    let diff = balancing_diff(&balancing, &vp, &floors);
     if diff.is_nan() || diff > ACCURACY.max_balancing_diff {
         return Err(Error::singular(
             describe_input(m, &s.drives.coords()),
@@ -244,6 +178,115 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
         rcond: x.rcond,
         force_scale: scale,
     }))
+}
+
+/// Every revolute pair's reaction (of its first link on its second) at
+/// position `s`, from the links' equilibrium `x`.
+fn revolute_reactions(
+    an: &Analysis,
+    s: &Solved,
+    x: &newton_euler::Unknowns,
+) -> Vec<RevoluteReaction> {
+    let m = &an.mech;
+    m.revolutes
+        .iter()
+        .zip(&x.revolute)
+        .enumerate()
+        .map(|(pair, (rv, &r))| RevoluteReaction {
+            pair,
+            point: rv.point,
+            first: rv.a,
+            second: rv.b,
+            at: s.config.point(m, rv.b, rv.point),
+            r,
+        })
+        .collect()
+}
+
+/// The largest force at the position (N; a couple over the mechanism's
+/// `size`): the loads, the reactions, the balancing values.
+fn force_scale(
+    size: f64,
+    loads: &[Load],
+    revolutes: &[RevoluteReaction],
+    balancing: &[Balancing],
+    x: &newton_euler::Unknowns,
+) -> f64 {
+    let mut scale = loads
+        .iter()
+        .map(|l| match *l {
+            Load::Force { f, .. } => f.hypot(),
+            Load::Couple { m, .. } => m.abs() / size,
+        })
+        .fold(0.0, f64::max);
+    for r in revolutes {
+        scale = scale.max(r.r.hypot());
+    }
+    for b in balancing {
+        scale = scale.max(match *b {
+            Balancing::Moment(x) => x.abs() / size,
+            Balancing::Force(x) => x.abs(),
+        });
+    }
+    for &(n, c) in &x.prismatic {
+        scale = scale.max(n.abs()).max(c.abs() / size);
+    }
+    scale
+}
+
+/// Every prismatic pair's reaction (the guide's on the slider) at
+/// position `s`, from the links' equilibrium `x`; its line of action
+/// where its normal force is not null against `scale`.
+fn guide_reactions(
+    an: &Analysis,
+    s: &Solved,
+    x: &newton_euler::Unknowns,
+    scale: f64,
+) -> Vec<GuideReaction> {
+    an.mech
+        .prismatics
+        .iter()
+        .zip(&x.prismatic)
+        .enumerate()
+        .map(|(pair, (pr, &(n, c)))| {
+            let (q, u, nrm) = newton_euler::guide_frame(an, s, pair);
+            // One force n through q + t·u has the moment t·n about q.
+            let at = (n.abs() > ACCURACY.null_normal_force * scale).then(|| q + u * (c / n));
+            GuideReaction {
+                pair,
+                slider: pr.slider,
+                guide: pr.guide,
+                point: pr.point,
+                q,
+                u,
+                n: nrm * n,
+                m: c,
+                at,
+            }
+        })
+        .collect()
+}
+
+/// The largest disagreement of the balancing values by the links'
+/// equilibrium and by virtual power `vp`, each relative to its terms'
+/// size (never below its floor).
+fn balancing_diff(balancing: &[Balancing], vp: &power::VirtualPower, floors: &[f64]) -> f64 {
+    let mut diff: f64 = 0.0;
+    for (((b, &v), &sc), &floor) in balancing
+        .iter()
+        .zip(&vp.balancing)
+        .zip(&vp.scale)
+        .zip(floors)
+    {
+        let d = (b.value() - v).abs();
+        let rel = if d == 0.0 {
+            0.0
+        } else {
+            d / sc.max(floor).max(f64::MIN_POSITIVE)
+        };
+        diff = diff.max(rel);
+    }
+    diff
 }
 
 /// The force plans at position `s` and their largest disagreement with the

@@ -109,112 +109,147 @@ impl Analysis {
         for (n, own) in need.iter_mut().zip(&self.need) {
             *n |= *own;
         }
-        let mut ps = PositionSolver::new(m, &self.structure, need.clone())?;
-        let eval = |ps: &mut PositionSolver, phi: f64, step: bool| -> Result<(f64, f64)> {
-            let c = if step {
-                ps.solve(phi)?
-            } else {
-                ps.solve_at(phi)?
-            };
-            let an = contour::solve(
-                m,
-                &self.structure,
-                &need,
-                &c,
-                Drive {
-                    q: phi,
-                    rate: 1.0,
-                    rate2: 0.0,
-                },
-                Order::Velocity,
-            )?;
-            Ok(self.output_coordinate(out, &c, &an))
+        let mut tf = Transfer {
+            an: self,
+            ps: PositionSolver::new(m, &self.structure, need.clone())?,
+            need,
+            out,
         };
         let n = 720;
-        let mut samples = Vec::with_capacity(n + 1);
-        for k in 0..=n {
-            let phi = angle + std::f64::consts::TAU * k as f64 / n as f64;
-            let v = eval(&mut ps, phi, true).map_err(|e| match e {
-                Error::Unsolvable(crate::error::Unsolvable::Assembly { group, at, why }) => Error::assembly(group, at, format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible")),
-                e => e,
-            })?;
-            samples.push((phi, v.0, v.1));
-        }
+        let samples = tf.revolution(angle, n)?;
         let angular = !m
             .prismatics
             .iter()
             .any(|p| p.slider == out && p.guide == m.frame());
         // Unwrap an angular output so that min/max compare.
         let mut extremes: Vec<(f64, f64)> = Vec::new();
-        let mut offset = 0.0;
         for k in 0..n {
             let (p0, _, d0) = samples[k];
             let (p1, _, d1) = samples[k + 1];
             if d0 == 0.0 || d0.signum() != d1.signum() {
-                ps.solve(p0)?;
-                // Bisection on the transfer function, then polish to the last ulp.
-                let (mut a, mut b, mut fa) = (p0, p1, d0);
-                for _ in 0..200 {
-                    let mid = 0.5 * (a + b);
-                    if mid <= a || mid >= b {
-                        break;
-                    }
-                    let (_, fm) = eval(&mut ps, mid, false)?;
-                    if fm == 0.0 {
-                        a = mid;
-                        b = mid;
-                        break;
-                    }
-                    if fm.signum() == fa.signum() {
-                        a = mid;
-                        fa = fm;
-                    } else {
-                        b = mid;
-                    }
-                }
-                let root = 0.5 * (a + b);
-                let (x, _) = eval(&mut ps, root, false)?;
+                let (root, x) = tf.extreme(p0, p1, d0)?;
                 let x = if angular {
                     let base = samples[0].1;
-                    offset = base + wrap_pi(x - base);
-                    offset
+                    base + wrap_pi(x - base)
                 } else {
                     x
                 };
                 extremes.push((root, x));
             }
         }
-        let _ = offset;
         if extremes.len() < 2 {
             // No extreme positions: the output turns fully; start at the input.
             return Ok((angle, std::f64::consts::TAU));
         }
-        let lo =
-            extremes.iter().copied().fold(
-                (0.0, f64::INFINITY),
-                |acc, e| if e.1 < acc.1 { e } else { acc },
-            );
-        let hi = extremes
-            .iter()
-            .copied()
-            .fold(
-                (0.0, f64::NEG_INFINITY),
-                |acc, e| if e.1 > acc.1 { e } else { acc },
-            );
-        let dir = sc.input.sense();
-        // Crank angle of the stroke lo → hi in the sense of rotation.
-        let d_lo_hi = (dir * (hi.0 - lo.0)).rem_euclid(std::f64::consts::TAU);
-        let d_hi_lo = std::f64::consts::TAU - d_lo_hi;
-        // The larger stroke begins the working stroke; at a tie (180° each)
-        // the extreme with the smallest output coordinate.
-        let start = if d_lo_hi >= d_hi_lo - 1e-9 {
-            lo.0
+        Ok(working_stroke_of(&extremes, sc.input.sense()))
+    }
+}
+
+/// The working stroke from the output's extreme positions (crank angle,
+/// output), the crank turning in the sense `dir`: the crank angle it
+/// begins at and the crank angle it takes.
+fn working_stroke_of(extremes: &[(f64, f64)], dir: f64) -> (f64, f64) {
+    let lo = extremes.iter().copied().fold(
+        (0.0, f64::INFINITY),
+        |acc, e| if e.1 < acc.1 { e } else { acc },
+    );
+    let hi =
+        extremes.iter().copied().fold(
+            (0.0, f64::NEG_INFINITY),
+            |acc, e| if e.1 > acc.1 { e } else { acc },
+        );
+    // Crank angle of the stroke lo → hi in the sense of rotation.
+    let d_lo_hi = (dir * (hi.0 - lo.0)).rem_euclid(std::f64::consts::TAU);
+    let d_hi_lo = std::f64::consts::TAU - d_lo_hi;
+    // The larger stroke begins the working stroke; at a tie (180° each)
+    // the extreme with the smallest output coordinate.
+    let start = if d_lo_hi >= d_hi_lo - 1e-9 {
+        lo.0
+    } else {
+        hi.0
+    };
+    (
+        start.rem_euclid(std::f64::consts::TAU),
+        d_lo_hi.max(d_hi_lo),
+    )
+}
+
+/// The output `out` and its first transfer function over the crank
+/// angle, the positions followed continuously (`need`: the groups solved).
+struct Transfer<'a> {
+    an: &'a Analysis,
+    ps: PositionSolver<'a>,
+    need: Vec<bool>,
+    out: usize,
+}
+
+impl Transfer<'_> {
+    /// The output and its transfer function at crank angle φ, reached in
+    /// steps from the last position (`step`) or at once.
+    fn eval(&mut self, phi: f64, step: bool) -> Result<(f64, f64)> {
+        let an = self.an;
+        let m = &an.mech;
+        let c = if step {
+            self.ps.solve(phi)?
         } else {
-            hi.0
+            self.ps.solve_at(phi)?
         };
-        Ok((
-            start.rem_euclid(std::f64::consts::TAU),
-            d_lo_hi.max(d_hi_lo),
-        ))
+        let mo = contour::solve(
+            m,
+            &an.structure,
+            &self.need,
+            &c,
+            Drive {
+                q: phi,
+                rate: 1.0,
+                rate2: 0.0,
+            },
+            Order::Velocity,
+        )?;
+        Ok(an.output_coordinate(self.out, &c, &mo))
+    }
+
+    /// (φ, output, transfer function) at `n` + 1 crank angles over a
+    /// revolution from `angle`.
+    fn revolution(&mut self, angle: f64, n: usize) -> Result<Vec<(f64, f64, f64)>> {
+        let mut samples = Vec::with_capacity(n + 1);
+        for k in 0..=n {
+            let phi = angle + std::f64::consts::TAU * k as f64 / n as f64;
+            let v = self.eval(phi, true).map_err(|e| match e {
+                Error::Unsolvable(crate::error::Unsolvable::Assembly { group, at, why }) => Error::assembly(group, at, format!("{why}; the crank cannot turn fully, so /positions/count (a full revolution) is impossible")),
+                e => e,
+            })?;
+            samples.push((phi, v.0, v.1));
+        }
+        Ok(samples)
+    }
+
+    /// The extreme position between crank angles `p0` and `p1` (the
+    /// transfer function `d0` at p0 changes sign): its crank angle, by
+    /// bisection polished to the last ulp, and the output there.
+    fn extreme(&mut self, p0: f64, p1: f64, d0: f64) -> Result<(f64, f64)> {
+        self.ps.solve(p0)?;
+        let (mut a, mut b, mut fa) = (p0, p1, d0);
+        for _ in 0..200 {
+            let mid = 0.5 * (a + b);
+            if mid <= a || mid >= b {
+                break;
+            }
+            let (_, fm) = self.eval(mid, false)?;
+            if fm == 0.0 {
+                a = mid;
+                b = mid;
+                break;
+            }
+            if fm.signum() == fa.signum() {
+                a = mid;
+                fa = fm;
+            } else {
+                b = mid;
+            }
+        }
+        let root = 0.5 * (a + b);
+        let (x, _) = self.eval(root, false)?;
+        Ok((root, x))
     }
 }
