@@ -126,6 +126,27 @@ pub struct Errors {
     pub trapezoid_s: (f64, usize),
 }
 
+/// The displacements `s` from node 0 (the value there returned), measured
+/// along the working stroke: the displacement from the extreme position
+/// positive (s ≥ 0 for a slider or a rocker that goes out and back over
+/// a `cycle`), as the lecture draws it; its rates `ds`, `dds` follow. The
+/// sense returned: ±1.
+fn along_working_stroke(s: &mut [f64], ds: &mut [f64], dds: &mut [f64], cycle: bool) -> (f64, f64) {
+    let s0 = s[0];
+    for x in s.iter_mut() {
+        *x -= s0;
+    }
+    let far = s
+        .iter()
+        .fold(0.0f64, |a, &x| if x.abs() > a.abs() { x } else { a });
+    let along = if cycle && far < 0.0 { -1.0 } else { 1.0 };
+    for x in s.iter_mut().chain(ds.iter_mut()).chain(dds.iter_mut()) {
+        // (+ 0.0: no −0 printed at the extreme position.)
+        *x = *x * along + 0.0;
+    }
+    (s0, along)
+}
+
 /// The output sampled along the abscissa: from `phi0` in steps of `h`
 /// in the sense `dir`, `n` intervals; a point's `path` (its arc length),
 /// a `slide`, or a link's angle (continued).
@@ -343,25 +364,7 @@ impl Diagrams {
                 "the output link turns fully: choose a rocking link or a slider",
             ));
         }
-        let s0 = s[0];
-        for x in &mut s {
-            *x -= s0;
-        }
-        // Measured along the working stroke: the displacement from the
-        // extreme position is positive (s ≥ 0 for a slider or a rocker that
-        // goes out and back), as the lecture draws it; its rates follow.
-        let far = s
-            .iter()
-            .fold(0.0f64, |a, &x| if x.abs() > a.abs() { x } else { a });
-        let along = if stroke.is_none() && far < 0.0 {
-            -1.0
-        } else {
-            1.0
-        };
-        for x in s.iter_mut().chain(ds.iter_mut()).chain(dds.iter_mut()) {
-            // (+ 0.0: no −0 printed at the extreme position.)
-            *x = *x * along + 0.0;
-        }
+        let (s0, along) = along_working_stroke(&mut s, &mut ds, &mut dds, stroke.is_none());
         let ds_mid = sm.midpoints(along)?;
         let dense = sm.dense(s0, along)?;
         // Scales: the revolution (the stroke) over `l` mm.

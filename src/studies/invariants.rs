@@ -13,7 +13,7 @@
 
 use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
-use crate::kinematics::analytic::{Drive, Order, contour};
+use crate::kinematics::analytic::{Order, contour};
 use crate::kinematics::positions::PositionSolver;
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
@@ -236,16 +236,12 @@ impl<'a> Output<'a> {
     pub fn at(&mut self, phi: f64) -> Result<(f64, f64, f64)> {
         let m = &self.an.mech;
         let c = self.ps.solve(phi)?;
-        let mo = contour::solve(
+        let mo = contour::transfer(
             m,
             &self.an.structure,
             &self.need,
             &c,
-            Drive {
-                q: phi,
-                rate: 1.0,
-                rate2: 0.0,
-            },
+            phi,
             Order::Acceleration,
         )?;
         let x = mo[self.out].expect("output solved");

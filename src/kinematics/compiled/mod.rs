@@ -94,26 +94,11 @@ impl<'a> Program<'a> {
                     place.push(p);
                     rate.push(r);
                 }
-                Step::Chained {
-                    input,
-                    known,
-                    pair,
-                    other,
-                } => {
-                    if solved[known] {
-                        solved[other] = true;
-                        place.push(Place::Chained {
-                            input,
-                            known,
-                            pair,
-                            other,
-                        });
-                        rate.push(Rate::Chained {
-                            input,
-                            known,
-                            pair,
-                            other,
-                        });
+                Step::Chained(ch) => {
+                    if solved[ch.known] {
+                        solved[ch.other] = true;
+                        place.push(Place::Chained(ch));
+                        rate.push(Rate::Chained(ch));
                     }
                 }
                 Step::Group { index, .. } if !need[index] => {}

@@ -12,7 +12,7 @@ use crate::error::Result;
 use crate::geom::{Line, Pose, circle_circle, circle_line};
 use crate::kinematics::positions::{self, Configuration, pair_of, point_of, triad_error};
 use crate::model::mechanism::Mechanism;
-use crate::model::structure::{AssurGroup, DyadKind};
+use crate::model::structure::{AssurGroup, Chained, DyadKind};
 use kurbo::{Point, Vec2};
 
 /// The angle and the length of a constant local segment (the one a link
@@ -123,6 +123,86 @@ pub(super) struct Rpr {
     delta: f64,
 }
 
+impl Rrr {
+    /// Place the group by its plain closed form; `false` where it cannot
+    /// (the interpreted form decides).
+    #[inline(always)]
+    fn place(&self, c: &mut Configuration) -> bool {
+        let (b, dd) = (self.b.world(c), self.d.world(c));
+        match circle_circle(b, self.seg1.len, dd, self.seg2.len, self.sign, -1.0) {
+            Some(x) => {
+                c.poses[self.links[0]] = Some(self.seg1.pose(self.b1, b, x));
+                c.poses[self.links[1]] = Some(self.seg2.pose(self.d2, dd, x));
+                true
+            }
+            None => false,
+        }
+    }
+}
+
+impl Rrp {
+    /// Place the group by its plain closed form; `false` where it cannot.
+    #[inline(always)]
+    fn place(&self, c: &mut Configuration) -> bool {
+        let b = self.b.world(c);
+        let kp = c.pose(self.k2);
+        let th2 = if self.k2_guide {
+            kp.angle + self.delta
+        } else {
+            kp.angle - self.delta
+        };
+        let (sin, cos) = th2.sin_cos();
+        let rot = |v: Vec2| Vec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y);
+        let line = if self.k2_guide {
+            Line {
+                point: kp.apply(self.anchor) + rot(self.offset),
+                dir: kp.dir(self.line_dir),
+            }
+        } else {
+            Line {
+                point: kp.apply(self.anchor) + rot(self.offset),
+                dir: rot(self.line_dir),
+            }
+        };
+        match circle_line(b, self.r1, &line, self.sign, -1.0) {
+            Some(x) => {
+                c.poses[self.links[0]] = Some(self.seg1.pose(self.b1, b, x));
+                c.poses[self.links[1]] = Some(Pose::through_turned(x, self.c2, th2, (cos, sin)));
+                true
+            }
+            None => false,
+        }
+    }
+}
+
+impl Rpr {
+    /// Place the group by its plain closed form; `false` where it cannot.
+    #[inline(always)]
+    fn place(&self, c: &mut Configuration) -> bool {
+        let (jg, js) = (self.jg.world(c), self.js.world(c));
+        let w = js - jg;
+        let dist = w.hypot();
+        let sn = self.h / dist;
+        // Above a bound of the tolerance the interpreted form
+        // judges by (its rounding of the group's numbers),
+        // clear of every failure it tests.
+        let bound = 2.0
+            * ACCURACY.tangency_roundings
+            * f64::EPSILON
+            * (self.h.abs() + jg.x.abs() + jg.y.abs() + js.x.abs() + js.y.abs());
+        if sn.is_finite() && self.h.abs() - dist <= 0.0 && dist > bound {
+            let sn = sn.clamp(-1.0, 1.0);
+            let gamma_minus_beta = sn.atan2(self.sign * (1.0 - sn * sn).max(0.0).sqrt());
+            let psi = w.atan2() - gamma_minus_beta - self.alpha;
+            c.poses[self.guide] = Some(Pose::through(jg, self.jg_local, psi));
+            c.poses[self.slider] = Some(Pose::through(js, self.js_local, psi + self.delta));
+            true
+        } else {
+            false
+        }
+    }
+}
+
 /// One step of the positions.
 #[derive(Clone, Debug)]
 pub(super) enum Place {
@@ -146,14 +226,9 @@ pub(super) enum Place {
         delta: f64,
         turn: (f64, f64),
     },
-    /// A driving slider on a moving guide: pair `pair` places `other`
-    /// from `known`.
-    Chained {
-        input: usize,
-        known: usize,
-        pair: usize,
-        other: usize,
-    },
+    /// A driving slider on a moving guide: its pair places its link
+    /// from the known one.
+    Chained(Chained),
     Rrr(Box<Rrr>),
     Rrp(Box<Rrp>),
     Rpr(Box<Rpr>),
@@ -198,75 +273,28 @@ impl Program<'_> {
                         *turn,
                     ))
                 }
-                Place::Chained {
-                    input,
-                    known,
-                    pair,
-                    other,
-                } => {
-                    let kp = c.pose(*known);
-                    c.poses[*other] =
-                        Some(positions::place_across(m, *pair, *known, &kp, q[*input]));
+                Place::Chained(ch) => {
+                    let kp = c.pose(ch.known);
+                    c.poses[ch.other] = Some(positions::place_across(
+                        m,
+                        ch.pair,
+                        ch.known,
+                        &kp,
+                        q[ch.input],
+                    ));
                 }
                 Place::Rrr(g) => {
-                    let (b, dd) = (g.b.world(c), g.d.world(c));
-                    match circle_circle(b, g.seg1.len, dd, g.seg2.len, g.sign, -1.0) {
-                        Some(x) => {
-                            c.poses[g.links[0]] = Some(g.seg1.pose(g.b1, b, x));
-                            c.poses[g.links[1]] = Some(g.seg2.pose(g.d2, dd, x));
-                        }
-                        None => self.dyad(c, g.group, q)?,
+                    if !g.place(c) {
+                        self.dyad(c, g.group, q)?;
                     }
                 }
                 Place::Rrp(g) => {
-                    let b = g.b.world(c);
-                    let kp = c.pose(g.k2);
-                    let th2 = if g.k2_guide {
-                        kp.angle + g.delta
-                    } else {
-                        kp.angle - g.delta
-                    };
-                    let (sin, cos) = th2.sin_cos();
-                    let rot = |v: Vec2| Vec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y);
-                    let line = if g.k2_guide {
-                        Line {
-                            point: kp.apply(g.anchor) + rot(g.offset),
-                            dir: kp.dir(g.line_dir),
-                        }
-                    } else {
-                        Line {
-                            point: kp.apply(g.anchor) + rot(g.offset),
-                            dir: rot(g.line_dir),
-                        }
-                    };
-                    match circle_line(b, g.r1, &line, g.sign, -1.0) {
-                        Some(x) => {
-                            c.poses[g.links[0]] = Some(g.seg1.pose(g.b1, b, x));
-                            c.poses[g.links[1]] =
-                                Some(Pose::through_turned(x, g.c2, th2, (cos, sin)));
-                        }
-                        None => self.dyad(c, g.group, q)?,
+                    if !g.place(c) {
+                        self.dyad(c, g.group, q)?;
                     }
                 }
                 Place::Rpr(g) => {
-                    let (jg, js) = (g.jg.world(c), g.js.world(c));
-                    let w = js - jg;
-                    let dist = w.hypot();
-                    let sn = g.h / dist;
-                    // Above a bound of the tolerance the interpreted form
-                    // judges by (its rounding of the group's numbers),
-                    // clear of every failure it tests.
-                    let bound = 2.0
-                        * ACCURACY.tangency_roundings
-                        * f64::EPSILON
-                        * (g.h.abs() + jg.x.abs() + jg.y.abs() + js.x.abs() + js.y.abs());
-                    if sn.is_finite() && g.h.abs() - dist <= 0.0 && dist > bound {
-                        let sn = sn.clamp(-1.0, 1.0);
-                        let gamma_minus_beta = sn.atan2(g.sign * (1.0 - sn * sn).max(0.0).sqrt());
-                        let psi = w.atan2() - gamma_minus_beta - g.alpha;
-                        c.poses[g.guide] = Some(Pose::through(jg, g.jg_local, psi));
-                        c.poses[g.slider] = Some(Pose::through(js, g.js_local, psi + g.delta));
-                    } else {
+                    if !g.place(c) {
                         self.dyad(c, g.group, q)?;
                     }
                 }

@@ -15,7 +15,7 @@ use crate::kinematics::analytic::contour::{self, Contours, Inverse, Reach, Twist
 use crate::kinematics::analytic::{Drive, Drives, Motion, Order};
 use crate::kinematics::positions::Configuration;
 use crate::model::mechanism::Mechanism;
-use crate::model::structure::{Conn, Joint};
+use crate::model::structure::{Chained, Conn, Joint};
 use kurbo::{Point, Vec2};
 use nalgebra::SMatrix;
 
@@ -371,12 +371,7 @@ pub(super) enum Rate {
         dir: Vec2,
     },
     /// A driving slider on a moving guide.
-    Chained {
-        input: usize,
-        known: usize,
-        pair: usize,
-        other: usize,
-    },
+    Chained(Chained),
     Dyad3(Box<Dyad3>),
     Dyad(Box<Contour<3>>),
     Triad(Box<Contour<6>>),
@@ -424,15 +419,10 @@ impl Program<'_> {
                         0.0,
                     ));
                 }
-                Rate::Chained {
-                    input,
-                    known,
-                    pair,
-                    other,
-                } => {
-                    let d = drives[*input];
-                    let kmo = out[*known].expect("solved before");
-                    out[*other] = Some(contour::across(m, c, *pair, *known, &kmo, d.rate, d.rate2));
+                Rate::Chained(ch) => {
+                    let kmo = out[ch.known].expect("solved before");
+                    out[ch.other] =
+                        Some(contour::chained_motion(m, c, *ch, &kmo, drives[ch.input]));
                 }
                 Rate::Dyad3(g) => {
                     if g.run(c, out, order).is_none() {

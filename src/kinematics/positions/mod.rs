@@ -350,16 +350,11 @@ impl<'a> PositionSolver<'a> {
                 Step::Frame { input, link } => {
                     c.poses[link] = Some(place_input(m, input, q[input]))
                 }
-                Step::Chained {
-                    input,
-                    known,
-                    pair,
-                    other,
-                } => {
-                    let Some(kp) = c.poses[known] else {
+                Step::Chained(ch) => {
+                    let Some(kp) = c.poses[ch.known] else {
                         continue;
                     };
-                    c.poses[other] = Some(place_across(m, pair, known, &kp, q[input]));
+                    c.poses[ch.other] = Some(place_across(m, ch.pair, ch.known, &kp, q[ch.input]));
                 }
                 Step::Group { index, .. } if !self.need[index] => {}
                 Step::Group {

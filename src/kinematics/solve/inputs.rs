@@ -4,7 +4,7 @@
 use super::Analysis;
 use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
-use crate::kinematics::analytic::{Coords, Drive, Motion, Order, contour};
+use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::{InputSpec, PositionsSpec};
 
@@ -194,18 +194,7 @@ impl Transfer<'_> {
         } else {
             self.ps.solve_at(phi)?
         };
-        let mo = contour::solve(
-            m,
-            &an.structure,
-            &self.need,
-            &c,
-            Drive {
-                q: phi,
-                rate: 1.0,
-                rate2: 0.0,
-            },
-            Order::Velocity,
-        )?;
+        let mo = contour::transfer(m, &an.structure, &self.need, &c, phi, Order::Velocity)?;
         Ok(an.output_coordinate(self.out, &c, &mo))
     }
 

@@ -173,20 +173,24 @@ pub enum Stage {
     Group(usize),
 }
 
+/// A chained input: input `input` slides link `other` on the known link
+/// `known` in its driving pair `pair` (a slider on a moving guide).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Chained {
+    pub input: usize,
+    pub known: usize,
+    pub pair: usize,
+    pub other: usize,
+}
+
 /// One step of [`Structure::steps`], the walk in the order of attachment.
 #[derive(Clone, Copy, Debug)]
 pub enum Step<'a> {
     /// Input `input` on the frame moves its link `link` (a crank, a slider
     /// on a guide of the frame).
     Frame { input: usize, link: usize },
-    /// Input `input` slides link `other` on the known link `known` in its
-    /// driving pair `pair` (a slider on a moving guide).
-    Chained {
-        input: usize,
-        known: usize,
-        pair: usize,
-        other: usize,
-    },
+    /// A slider on a moving guide.
+    Chained(Chained),
     /// Group `index` (a group with a cylinder places its input there).
     Group { index: usize, group: &'a AssurGroup },
 }
@@ -341,7 +345,7 @@ impl Structure {
         for step in self.steps(m) {
             match step {
                 Step::Frame { .. } => {}
-                Step::Chained { input, .. } => parts.push(class_one(input)),
+                Step::Chained(ch) => parts.push(class_one(ch.input)),
                 Step::Group { group, .. } => parts.push(group.label(m)),
             }
         }
@@ -367,12 +371,12 @@ impl Structure {
                     } else {
                         pr.guide
                     };
-                    Some(Step::Chained {
+                    Some(Step::Chained(Chained {
                         input,
                         known,
                         pair,
                         other,
-                    })
+                    }))
                 }
                 InputRole::InGroup { .. } => None,
             },

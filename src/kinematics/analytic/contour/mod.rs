@@ -15,12 +15,12 @@
 mod algebra;
 mod twist;
 
-use super::{Drives, Motion, Order};
+use super::{Drive, Drives, Motion, Order};
 use crate::error::{Error, Result};
 use crate::kinematics::positions::{Configuration, describe_input};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
-use crate::model::structure::{AssurGroup, Conn, Dyad, Joint, Step, Structure, Triad};
+use crate::model::structure::{AssurGroup, Chained, Conn, Dyad, Joint, Step, Structure, Triad};
 use kurbo::Vec2;
 use nalgebra::SMatrix;
 
@@ -79,6 +79,19 @@ pub fn across(
     let vel = v + xi * rate;
     let acc = dv + xi * rate2 + bracket(v, xi) * rate;
     twist_motion(c.pose(other), o, vel, acc)
+}
+
+/// The motion of the link a chained input places, its known link moving
+/// as `known_mo`, at the input's drive `d` ([`across`]).
+#[inline]
+pub(crate) fn chained_motion(
+    m: &Mechanism,
+    c: &Configuration,
+    ch: Chained,
+    known_mo: &Motion,
+    d: Drive,
+) -> Motion {
+    across(m, c, ch.pair, ch.known, known_mo, d.rate, d.rate2)
 }
 
 /// The driving pair of a cylinder in a dyad, traversed along the dyad's
@@ -152,15 +165,9 @@ pub fn solve(
                 let d = drives[input];
                 out[link] = Some(input_motion(m, c, input, d.rate, d.rate2));
             }
-            Step::Chained {
-                input,
-                known,
-                pair,
-                other,
-            } => {
-                let d = drives[input];
-                if let Some(kmo) = out[known] {
-                    out[other] = Some(across(m, c, pair, known, &kmo, d.rate, d.rate2));
+            Step::Chained(ch) => {
+                if let Some(kmo) = out[ch.known] {
+                    out[ch.other] = Some(chained_motion(m, c, ch, &kmo, drives[ch.input]));
                 }
             }
             Step::Group { index, .. } if !need[index] => {}
@@ -174,6 +181,24 @@ pub fn solve(
         }
     }
     Ok(out)
+}
+
+/// The transfer functions at the positions `c` (input coordinate `q`):
+/// the rates at unit input rate and zero rate of rate ([`solve`]).
+pub fn transfer(
+    m: &Mechanism,
+    s: &Structure,
+    need: &[bool],
+    c: &Configuration,
+    q: f64,
+    order: Order,
+) -> Result<Vec<Option<Motion>>> {
+    let unit = Drive {
+        q,
+        rate: 1.0,
+        rate2: 0.0,
+    };
+    solve(m, s, need, c, unit, order)
 }
 
 /// A dyad's single contour through its three pairs.
