@@ -128,12 +128,6 @@ impl std::ops::Deref for GroupLinks {
     }
 }
 
-impl std::ops::DerefMut for GroupLinks {
-    fn deref_mut(&mut self) -> &mut [usize] {
-        &mut self.links[..self.len]
-    }
-}
-
 /// A hydraulic cylinder in a class II group: the guide and the slider of a
 /// driving slider, neither known before the group, one link of variable
 /// length (their slide is the input's). `links[slot]` of the dyad is the
