@@ -3,8 +3,8 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use mechplan::construction::PlanKind;
-use mechplan::construction::text::Lang;
 use mechplan::drawing::{self, SheetSize};
+use mechplan::words::construction::Lang;
 use std::path::PathBuf;
 
 #[derive(Parser)]

@@ -26,13 +26,18 @@ pub mod studies;
 pub mod verification;
 
 #[doc(hidden)]
+pub mod format;
+#[doc(hidden)]
 pub mod geom;
 #[doc(hidden)]
 pub mod json;
+pub mod lang;
 #[doc(hidden)]
 pub mod output;
 #[doc(hidden)]
 pub mod progress;
+#[doc(hidden)]
+pub mod words;
 
 pub mod accuracy;
 pub mod error;
@@ -45,7 +50,7 @@ pub use kinematics::{analytic, compiled, construction, positions, solve};
 #[doc(hidden)]
 pub use model::{mechanism, scene, shape, structure};
 #[doc(hidden)]
-pub use presentation::{drawing, quantity, report};
+pub use presentation::{drawing, report};
 #[doc(hidden)]
 pub use studies::{centres, diagrams, frenet, invariants};
 #[doc(hidden)]

@@ -25,12 +25,12 @@
 //! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
 
 use crate::error::{Error, Input, Result};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::Scene;
 use crate::presentation::drawing::{self, DrawOptions, SheetSize};
 use crate::presentation::report;
 use crate::verification::check;
+use crate::words::construction::Lang;
 use std::path::{Path, PathBuf};
 
 /// A scene read and made ready to solve.

@@ -38,11 +38,11 @@ fn answer_from(an: &Analysis, s: &Solved, k: usize, mu: f64, loads: &[Load]) -> 
     for step in &plan.steps {
         if let ForceStep::Measure(i) = step {
             let v = plan.vectors[*i];
-            let name = mechplan::presentation::force_steps::force_name(
-                an,
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
                 loads,
                 v.force,
-                mechplan::construction::text::Lang::En,
+                mechplan::words::construction::Lang::En,
             );
             let seg = plan.points[v.to] - plan.points[v.from];
             segments.push((
@@ -356,11 +356,11 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
     let svg = |stretch: Option<&str>| {
         let mut body = String::new();
         for v in &plan.vectors {
-            let name = mechplan::presentation::force_steps::force_name(
-                &an,
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
                 &loads,
                 v.force,
-                mechplan::construction::text::Lang::En,
+                mechplan::words::construction::Lang::En,
             );
             let (a, mut b) = (plan.points[v.from], plan.points[v.to]);
             if stretch == Some(name.as_str()) {

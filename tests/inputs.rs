@@ -458,7 +458,7 @@ fn several_inputs_in_the_result_file() {
 #[test]
 fn the_cylinder_in_the_steps() {
     let (an, solved) = solve(scene_with(fixture("boom_cylinder"), json!({ "s": [0.1] })));
-    let text = mechplan::report::to_steps(&an, &solved, mechplan::construction::text::Lang::En);
+    let text = mechplan::report::to_steps(&an, &solved, mechplan::words::construction::Lang::En);
     for want in [
         "v_B = v̳_̳C̳ + v̳_̳B̳3̳B̳2̳ + v̲_̲B̲2̲C̲",
         "From p_v lay off p_vr3 = v_B3B2/μ_v",
@@ -472,8 +472,8 @@ fn the_cylinder_in_the_steps() {
         assert!(text.contains(want), "missing {want:?} in\n{text}");
     }
     for lang in [
-        mechplan::construction::text::Lang::Uk,
-        mechplan::construction::text::Lang::Ru,
+        mechplan::words::construction::Lang::Uk,
+        mechplan::words::construction::Lang::Ru,
     ] {
         let t = mechplan::report::to_steps(&an, &solved, lang);
         assert!(t.contains("a^k_B3B2 = 2·ω2·v_B3B2"), "{t}");

@@ -4,23 +4,16 @@
 //! lines that close the polygon, the reactions read off it, the couples of
 //! the guides and the balancing moment, in English, Ukrainian or Russian.
 
-use crate::kinematics::construction::text::{Lang, num};
+use crate::words::construction::Lang;
+
+use crate::format::num;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep};
 use crate::kinetostatics::loads::{self, Load};
 use crate::model::structure::AssurGroup;
+use crate::words::forces::force_name;
 use kurbo::Vec2;
 use std::fmt::Write as _;
-
-/// The name of a force in the course's notation, as the force sheets
-/// print it (`presentation::force_notation`) in plain text: Φ_2 (inertia
-/// force), M_Φ2 (inertia couple), G_2 (weight), F_5 and M_3 (external),
-/// R_12 (the reaction of link 1 on link 2) with ^τ, ^n for a component,
-/// F_b (the drive force of a cylinder or slider; uk F_зр, ru F_ур).
-pub fn force_name(an: &Analysis, loads: &[Load], f: Force, lang: Lang) -> String {
-    super::force_notation::force(&an.mech, loads, f, lang)
-        .map_or_else(|| "?".into(), |l| super::force_notation::plain(&l))
-}
 
 /// M_b / F_b in the language's notation (uk: зр, ru: ур).
 fn balancing_letter(lang: Lang, moment: bool) -> &'static str {
@@ -158,7 +151,7 @@ fn lever_words(an: &Analysis, s: &Solved, loads: &[Load], lang: Lang, t: &mut St
 
 fn plan_words(an: &Analysis, loads: &[Load], plan: &ForcePlan, lang: Lang, t: &mut String) {
     let m = &an.mech;
-    let name = |f: Force| force_name(an, loads, f, lang);
+    let name = |f: Force| force_name(&an.mech, loads, f, lang);
     let unit = if lang == Lang::En { "N/mm" } else { "Н/мм" };
     let (n_, mm, nm) = match lang {
         Lang::En => ("N", "mm", "N·m"),

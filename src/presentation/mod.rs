@@ -5,10 +5,7 @@
 
 pub mod drawing;
 pub mod dynamics;
-pub mod force_notation;
 pub mod force_steps;
-pub mod notation;
-pub mod quantity;
 pub mod report;
 mod steps;
 pub mod studies;

@@ -5,10 +5,10 @@
 
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use crate::verification::crosscheck::Method;
+use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};
 
 pub use super::steps::to_steps;
@@ -488,7 +488,7 @@ fn plan_json(plan: &crate::kinematics::construction::Plan) -> Value {
 /// The inputs of a position in short: "φ1 = 30°", "s = 0.1 m"; several
 /// with their links' ids: "φ1 = 30°, φ4 = 120°", "s3 = 0.1 m, s6 = 0 m".
 pub fn input_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
+    use crate::format::num;
     let m = &an.mech;
     let several = m.scene.several_inputs();
     m.scene
@@ -514,7 +514,7 @@ pub fn input_words(an: &Analysis, s: &Solved) -> String {
 /// The inputs' rates of a position in short: "ω1 = 10 rad/s, ε1 = 0
 /// rad/s²", several with their links' ids.
 pub fn drive_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
+    use crate::format::num;
     let m = &an.mech;
     let several = m.scene.several_inputs();
     m.scene

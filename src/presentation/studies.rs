@@ -131,8 +131,8 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
     let start = if d.stroke {
         format!(
             "over the stroke {x} = {} … {} m of the driving slider",
-            crate::kinematics::construction::text::num(d.phi0),
-            crate::kinematics::construction::text::num(d.phi0 + d.h * d.n as f64)
+            crate::format::num(d.phi0),
+            crate::format::num(d.phi0 + d.h * d.n as f64)
         )
     } else {
         format!(
@@ -153,7 +153,7 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
             (None, false) => "its angle",
         },
         d.n,
-        crate::kinematics::construction::text::num(d.mu_s),
+        crate::format::num(d.mu_s),
         d.mu_phi,
         d.h1,
         d.h2,

@@ -4,10 +4,10 @@
 
 use super::tables::{self, Cell, Kind, Table};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use crate::verification::crosscheck::Method;
+use crate::words::construction::Lang;
 use std::fmt::Write as _;
 
 /// The sense of rotation, "-" for a value that is zero up to rounding

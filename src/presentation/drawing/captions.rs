@@ -3,9 +3,9 @@
 
 use super::canvas::Label;
 use super::table::{self, number};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
+use crate::words::construction::Lang;
 
 /// The words of the sheets' headings.
 pub(crate) struct Words {

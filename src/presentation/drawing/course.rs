@@ -19,10 +19,10 @@ use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, w
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::PositionsSpec;
+use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
 
@@ -91,9 +91,7 @@ impl Figure {
         let cw = self
             .caption
             .iter()
-            .map(|c| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
-            })
+            .map(|c| super::canvas::runs_width(&crate::words::notation::runs(c), CAPTION_FONT))
             .fold(0.0, f64::max);
         (
             b.width().max(cw),

@@ -19,10 +19,10 @@ use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
 use crate::error::Result;
 use crate::kinematics::construction::Naming;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::kinetostatics::Balancing;
 use crate::kinetostatics::lever::lever_at;
+use crate::words::construction::Lang;
 use kurbo::Point;
 
 /// The caption's line height, mm.
@@ -74,7 +74,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     for (i, r) in d.revolutes.iter().enumerate() {
         let name = format!(
             "R{}, {}",
-            super::super::force_notation::pair_sub(m.link_id(r.first), m.link_id(r.second)),
+            crate::words::forces::pair_sub(m.link_id(r.first), m.link_id(r.second)),
             m.point_name(r.point)
         );
         let by_plan = fp
@@ -91,7 +91,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     for (i, p) in d.prismatics.iter().enumerate() {
         let name = format!(
             "R{} ⊥",
-            super::super::force_notation::pair_sub(m.link_id(p.guide), m.link_id(p.slider))
+            crate::words::forces::pair_sub(m.link_id(p.guide), m.link_id(p.slider))
         );
         let by_plan = fp
             .and_then(|f| f.prismatic[i])
@@ -105,7 +105,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
         ]);
     }
     for (i, b) in d.balancing.iter().enumerate() {
-        let sub = super::super::force_notation::balancing_sub(lang);
+        let sub = crate::words::forces::balancing_sub(lang);
         let (name, unit) = match b {
             Balancing::Moment(_) => (
                 format!("M_{sub}"),

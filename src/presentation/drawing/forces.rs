@@ -9,11 +9,11 @@
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::kinetostatics::force_plan::ForcePlan;
 use crate::kinetostatics::loads;
-use crate::presentation::force_notation as names;
+use crate::words::construction::Lang;
+use crate::words::forces as names;
 use kurbo::{Point, Rect, Vec2};
 
 /// The gap between panels and between a free body and its polygon, mm.

@@ -21,12 +21,13 @@
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
 use crate::error::Result;
-use crate::kinematics::construction::text::{Lang, num, sentence};
+use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::model::scene::InputSpec;
 use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
+use crate::words::construction::{Lang, sentence};
 use kurbo::Point;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -105,7 +106,7 @@ fn ui(l: Lang) -> Ui {
 /// dropped (with a combining underline right after them); the rest of the
 /// text is kept, escaped.
 pub fn rich(s: &str) -> String {
-    use crate::presentation::notation::{Pos, runs};
+    use crate::words::notation::{Pos, runs};
     runs(s)
         .into_iter()
         .map(|(p, t)| match p {

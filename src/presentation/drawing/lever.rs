@@ -9,10 +9,10 @@
 use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
 use crate::kinematics::construction::scale::standard_scale;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::lever::{Lever, LeverForce, Part};
 use crate::kinetostatics::{Balancing, Origin};
+use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
 /// The longest force arrow, as a share of the lever's extent: forces

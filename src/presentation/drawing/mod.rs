@@ -35,9 +35,9 @@ pub use export::{pdf, pdf_book, png, tree, write_sheets};
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::{Analysis, Solved};
+use crate::words::construction::Lang;
 use canvas::Canvas;
 use kurbo::{Point, Rect};
 use sheet::{Page, TitleBlock};
@@ -343,7 +343,7 @@ fn misfit(
     mu_l: f64,
     t: Option<&positions::Trajectories>,
 ) -> Error {
-    use crate::presentation::quantity::format_quantity as q;
+    use crate::format::format_quantity as q;
     let first = sizes.first().copied().unwrap_or(opt.sheet);
     let last = sizes.last().copied().unwrap_or(opt.sheet);
     let area_of = |sheet| field_size(&DrawOptions { sheet, ..*opt }, 0.0);

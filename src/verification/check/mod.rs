@@ -32,9 +32,9 @@ pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
 
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::{Lang, sentence};
 use crate::kinematics::construction::{PlanKind, Variant};
 use crate::kinematics::solve::{Analysis, Solved};
+use crate::words::construction::{Lang, sentence};
 use answer::Answer;
 use candidates::{Builds, candidates, cannot_judge};
 use diagnosis::diagnose;

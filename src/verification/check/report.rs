@@ -10,7 +10,7 @@ use kurbo::Vec2;
 /// The report as text for the terminal.
 pub fn to_text(r: &Report) -> String {
     use std::fmt::Write as _;
-    let fmt = crate::presentation::quantity::format_number;
+    let fmt = crate::format::format_number;
     let mut t = String::new();
     let kind = if r.plan == PlanKind::Velocity {
         "velocity"
@@ -22,7 +22,7 @@ pub fn to_text(r: &Report) -> String {
         "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {}",
         r.position,
         fmt(r.mu),
-        crate::presentation::quantity::format_quantity(r.delta, "mm")
+        crate::format::format_quantity(r.delta, "mm")
     );
     if r.worst_angle < 5.0 {
         let _ = writeln!(

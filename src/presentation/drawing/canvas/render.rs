@@ -6,7 +6,7 @@
 
 use super::label::char_width;
 use super::{ARROW_WIDTH, BOLD, Canvas, Class, MAIN, Prim, THIN};
-use crate::presentation::notation::{Pos, Run};
+use crate::words::notation::{Pos, Run};
 use kurbo::{Point, Vec2};
 use std::fmt::Write as _;
 

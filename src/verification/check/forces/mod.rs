@@ -15,11 +15,11 @@ pub use answer::{ForceAnswer, from_json, from_svg, is_force_answer, is_force_svg
 
 use super::{Judgement, Verdict};
 use crate::error::{Error, Result};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::{Analysis, Solved};
 use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
 use crate::kinetostatics::loads::{self, Load, Origin};
-use crate::presentation::force_steps::force_name;
+use crate::words::construction::Lang;
+use crate::words::forces::force_name;
 use answer::issue;
 use serde_json::Value;
 
@@ -66,7 +66,7 @@ fn which_by_names(
         let has: Vec<String> = p
             .vectors
             .iter()
-            .map(|v| key(&force_name(an, loads, v.force, Lang::En)))
+            .map(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)))
             .collect();
         names
             .iter()
@@ -175,12 +175,12 @@ fn expect(
         .vectors
         .iter()
         .rev()
-        .find(|v| key(&force_name(an, loads, v.force, Lang::En)) == k)
+        .find(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)) == k)
         .ok_or_else(|| {
             let names: Vec<String> = plan
                 .vectors
                 .iter()
-                .map(|v| force_name(an, loads, v.force, Lang::En))
+                .map(|v| force_name(&an.mech, loads, v.force, Lang::En))
                 .collect();
             format!(
                 "no force \"{name}\" on this plan (its forces: {})",

@@ -4,24 +4,12 @@
 //! language is one `Catalogue` of phrases with named blanks (`{pole}`),
 //! filled by one rendering path.
 
-use super::{Dir, Op, Plan, PlanKind, Why};
+use crate::format::num;
+use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, Why};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Lang {
-    En,
-    Uk,
-    Ru,
-}
+pub use crate::lang::Lang;
 
 impl Lang {
-    pub fn parse(s: &str) -> Option<Lang> {
-        match s {
-            "en" => Some(Lang::En),
-            "uk" => Some(Lang::Uk),
-            "ru" => Some(Lang::Ru),
-            _ => None,
-        }
-    }
     fn words(self) -> &'static Catalogue {
         match self {
             Lang::En => &EN,
@@ -148,21 +136,6 @@ fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
     }
     out.push_str(rest);
     out
-}
-
-/// Numbers as a student writes them: up to 4 significant digits.
-pub fn num(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 9) as usize;
-    let s = format!("{x:.digits$}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    };
-    if s == "-0" { "0".into() } else { s }
 }
 
 fn dir(w: &Catalogue, d: &Dir) -> String {
