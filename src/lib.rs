@@ -19,6 +19,8 @@ pub mod kinetostatics;
 #[doc(hidden)]
 pub mod model;
 #[doc(hidden)]
+pub mod pipeline;
+#[doc(hidden)]
 pub mod presentation;
 #[doc(hidden)]
 pub mod studies;
@@ -57,8 +59,9 @@ pub use studies::{centres, diagrams, frenet, invariants};
 pub use verification::{check, precision, reference};
 
 pub use error::{Error, Issue, Result};
+pub use pipeline::Solved;
 pub use scene::Scene;
-pub use solve::{Analysis, Solved};
+pub use solve::Analysis;
 pub use study::{DrawRequest, Results, Solution, Study};
 
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).

@@ -25,8 +25,9 @@
 //! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
 
 use crate::error::{Error, Input, Result};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::Scene;
+use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, SheetSize};
 use crate::presentation::report;
 use crate::verification::check;
@@ -205,9 +206,9 @@ impl Study {
 
     /// Each position as it is solved, in order, with the bar.
     fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        let bar = crate::progress::bar(self.position_count()?, "positions");
+        let bar = crate::progress::Silent;
         let done = self.analysis.run_each_with(&bar, f);
-        bar.finish_and_clear();
+
         done
     }
 

@@ -52,7 +52,7 @@ fn streamed_text_is_the_document_byte_for_byte() {
     // Several chunks of positions; and no positions at all.
     let v = fixture("six_link_fig2_10");
     let (an, solved) = solve(scene_with(v, serde_json::json!({ "count": 1100 })));
-    assert!(solved.len() > 2 * mechplan::solve::RUN_CHUNK);
+    assert!(solved.len() > 2 * mechplan::pipeline::RUN_CHUNK);
     let whole = serde_json::to_string_pretty(&report::to_json(&an, &solved)).unwrap() + "\n";
     assert_eq!(report::to_text(&an, &solved, Style::Json), whole);
     let none = serde_json::to_string_pretty(&report::to_json(&an, &[])).unwrap() + "\n";

@@ -15,7 +15,7 @@ pub mod power;
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use kurbo::{Point, Vec2};
 pub use loads::{Inertia, Load, Origin};
 
@@ -105,7 +105,7 @@ pub struct Dynamics {
 /// scene; `None` when the scene has no `dynamics`. Refused (an error
 /// naming the position) where the equilibrium equations are singular or
 /// ill-conditioned, or the two routes disagree.
-pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> {
+pub fn analyse(an: &Analysis, s: &Position, k: usize) -> Result<Option<Dynamics>> {
     let Some(inertia) = loads::inertia(an, s) else {
         return Ok(None);
     };
@@ -252,7 +252,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
 /// `accuracy::max_balancing_diff`.
 fn plans(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     x: &newton_euler::Unknowns,
     scale: f64,

@@ -7,10 +7,11 @@
 use crate::words::construction::Lang;
 
 use crate::format::num;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep};
 use crate::kinetostatics::loads::{self, Load};
 use crate::model::structure::AssurGroup;
+use crate::pipeline::Solved;
 use crate::words::forces::force_name;
 use kurbo::Vec2;
 use std::fmt::Write as _;

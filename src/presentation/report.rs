@@ -5,8 +5,9 @@
 
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::verification::crosscheck::Method;
 use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};

@@ -4,7 +4,8 @@
 //! force plans and the lever ([`super::force_steps`]).
 
 use super::report::input_words;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use std::fmt::Write as _;
 

@@ -2,8 +2,10 @@
 //! kinematic diagrams, the motion-law invariants (the studies themselves
 //! compute numbers only).
 
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+
 use crate::model::mechanism::Mechanism;
+use crate::pipeline::Solved;
 use crate::studies::centres::{How, Place, find, name};
 use crate::studies::diagrams::{Diagrams, central};
 use crate::studies::invariants::{Phase, Settings};

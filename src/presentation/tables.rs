@@ -15,7 +15,8 @@
 use crate::format::num;
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Measured, Plan, PlanKind, Plans};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 
 /// What a column holds.

@@ -4,8 +4,9 @@
 
 use super::tables::{self, Cell, Kind, Table};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::verification::crosscheck::Method;
 use crate::words::construction::Lang;
 use std::fmt::Write as _;

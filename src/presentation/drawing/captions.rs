@@ -3,8 +3,9 @@
 
 use super::canvas::Label;
 use super::table::{self, number};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 
 /// The words of the sheets' headings.

@@ -19,9 +19,10 @@ use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
 use crate::error::Result;
 use crate::kinematics::construction::Naming;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::Balancing;
 use crate::kinetostatics::lever::lever_at;
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use kurbo::Point;
 

@@ -9,9 +9,10 @@
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::ForcePlan;
 use crate::kinetostatics::loads;
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces as names;
 use kurbo::{Point, Rect, Vec2};

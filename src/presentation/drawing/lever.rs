@@ -358,7 +358,7 @@ pub(crate) fn input_text(l: &Lever, lang: Lang) -> String {
 /// it fixes one for a single input).
 pub(super) fn pending(
     an: &Analysis,
-    s: &crate::kinematics::solve::Solved,
+    s: &crate::pipeline::Solved,
     k: usize,
     opt: &super::DrawOptions,
 ) -> crate::error::Result<Vec<super::Pending>> {

@@ -13,8 +13,9 @@ use crate::kinematics::construction::{
     Drafting, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
 };
 use crate::kinematics::positions::{Configuration, PositionSolver};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::structure::{AssurGroup, DyadKind};
+use crate::pipeline::Solved;
 
 /// A way the plan may have been built wrong: what a diagnosis names
 /// (typed; its sentence is [`super::Diagnosis::mistake`]).

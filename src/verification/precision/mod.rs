@@ -29,7 +29,7 @@
 mod measure;
 mod render;
 
-pub use measure::run;
+pub use measure::{run, run_watched};
 pub use render::{sci, time_str, to_markdown, to_svg};
 
 /// What to run.

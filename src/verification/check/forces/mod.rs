@@ -15,9 +15,10 @@ pub use answer::{ForceAnswer, from_json, from_svg, is_force_answer, is_force_svg
 
 use super::{Judgement, Verdict};
 use crate::error::{Error, Result};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
 use crate::kinetostatics::loads::{self, Load, Origin};
+use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
 use answer::issue;
