@@ -19,6 +19,15 @@ pub fn num(x: f64) -> String {
     if s == "-0" { "0".into() } else { s }
 }
 
+/// 1e-8, 2.5e-3: a compact scientific number.
+pub fn sci(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:.1e}");
+    s.replace(".0e", "e")
+}
+
 /// Significant digits of [`format_number`].
 pub const DIGITS: usize = 4;
 

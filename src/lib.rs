@@ -13,6 +13,8 @@
 // The library's internals, by the data flow (docs/architecture.md):
 // public for the tests, benches and fuzz targets, hidden from the API.
 #[doc(hidden)]
+pub mod grading;
+#[doc(hidden)]
 pub mod kinematics;
 #[doc(hidden)]
 pub mod kinetostatics;
@@ -35,8 +37,6 @@ pub mod geom;
 pub mod json;
 pub mod lang;
 #[doc(hidden)]
-pub mod output;
-#[doc(hidden)]
 pub mod progress;
 #[doc(hidden)]
 pub mod words;
@@ -48,6 +48,8 @@ pub mod study;
 // The paths of the first, flat layout, kept: tests, benches and fuzz
 // targets reach the internals by them.
 #[doc(hidden)]
+pub use grading as check;
+#[doc(hidden)]
 pub use kinematics::{analytic, compiled, construction, positions, solve};
 #[doc(hidden)]
 pub use model::{mechanism, scene, shape, structure};
@@ -55,8 +57,7 @@ pub use model::{mechanism, scene, shape, structure};
 pub use presentation::{drawing, report};
 #[doc(hidden)]
 pub use studies::{centres, diagrams, frenet, invariants};
-#[doc(hidden)]
-pub use verification::{check, precision, reference};
+pub use verification::{precision, reference};
 
 pub use error::{Error, Issue, Result};
 pub use pipeline::Solved;
@@ -67,4 +68,4 @@ pub use study::{DrawRequest, Results, Solution, Study};
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
 pub const DEFAULT_SCENE: &str = include_str!("../fixtures/six_link_fig2_10.json");
 
-pub use output::write_atomically;
+pub use study::files::write_atomically;

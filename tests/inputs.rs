@@ -539,7 +539,12 @@ fn a_hand_drawn_boom_plan_is_checked() {
         mechplan::check::answer::from_json(&text).unwrap()
     };
     let right = check(&an, &solved, &answer(good)).unwrap();
-    assert_eq!(right.wrong(), 0, "{}", mechplan::check::to_text(&right));
+    assert_eq!(
+        right.wrong(),
+        0,
+        "{}",
+        mechplan::presentation::verdict::to_text(&right)
+    );
     let r = check(&an, &solved, &answer(&wrong)).unwrap();
     assert!(r.wrong() > 0);
     let d = r.diagnosis.unwrap().mistake.unwrap();

@@ -106,7 +106,7 @@ fn a_long_sweep_runs_in_bounded_memory() {
     let o = limited(&format!("solve '{}' --format json", scene.display()));
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout).unwrap();
-    assert!(text.len() > mechplan::output::Spool::MEMORY);
+    assert!(text.len() > mechplan::study::files::Spool::MEMORY);
     assert_eq!(text.matches("\n      \"input\": {").count(), 20000);
     assert!(text.ends_with("\n  ]\n}\n"));
 }

@@ -1,12 +1,12 @@
-//! Sheets out of the program: SVG as it is, PNG (resvg), PDF (svg2pdf) one
-//! file per sheet and one book of every sheet, and the manifest
-//! (`sheets.json`) that says which files a run wrote, so that the next
-//! run into the same folder can remove the sheets of its own it no longer
-//! draws.
+//! Sheets as bytes: SVG as it is, PNG (resvg), PDF (svg2pdf) one file per
+//! sheet and one book of every sheet, and the manifest (`sheets.json`)
+//! that says which files a run wrote, so that the next run into the same
+//! folder can remove the sheets of its own it no longer draws. Writing
+//! them is the front door's (`crate::study`).
 
 use super::{Format, Sheet};
 use crate::error::{Error, Result};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// The manifest's file name.
 pub const MANIFEST: &str = "sheets.json";
@@ -105,7 +105,7 @@ pub fn pdf_book(sheets: &[Sheet]) -> Result<Vec<u8>> {
 
 /// The manifest of a run: every file written, each sheet's title and
 /// scales.
-fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
+pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
     let name = |p: &PathBuf| {
         p.file_name()
             .map(|n| n.to_string_lossy().into_owned())
@@ -133,130 +133,4 @@ fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
         doc["book"] = serde_json::json!(BOOK);
     }
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
-}
-
-/// The files an earlier run listed in `dir`'s manifest.
-fn listed(dir: &Path) -> Vec<String> {
-    let Ok(text) = std::fs::read_to_string(dir.join(MANIFEST)) else {
-        return Vec::new();
-    };
-    let Ok(v) = serde_json::from_str::<serde_json::Value>(&text) else {
-        return Vec::new();
-    };
-    let mut out: Vec<String> = v["sheets"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter_map(|s| s["file"].as_str().map(str::to_string))
-        .collect();
-    if let Some(b) = v["book"].as_str() {
-        out.push(b.to_string());
-    }
-    // Only plain file names in the folder itself: a manifest is no
-    // licence to remove anything elsewhere.
-    out.retain(|f| !f.is_empty() && !f.contains(['/', '\\']) && f != ".." && f != ".");
-    out
-}
-
-/// Write every sheet into `dir` in `format` (with the PDF book of them
-/// all for PDF) and the manifest, all or nothing: every file is rendered,
-/// then written to a temporary beside its place, and only when all are
-/// written are they renamed into place; a failure removes every temporary
-/// of this run ([`crate::output::write_files_atomically`]). Then the
-/// sheets an earlier run listed in the manifest and this one did not
-/// write are removed, each named in a note. Returns the paths written.
-pub fn write_sheets(
-    sheets: &[Sheet],
-    dir: &Path,
-    format: Format,
-    dpi: f64,
-) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    let before = listed(dir);
-    // Render everything first, so that a failure writes nothing.
-    let mut files = Vec::new();
-    for s in sheets {
-        let (ext, bytes) = match format {
-            Format::Svg => ("svg", s.svg.clone().into_bytes()),
-            Format::Png => ("png", png(&s.svg, dpi)?),
-            Format::Pdf => ("pdf", pdf(&s.svg)?),
-        };
-        files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
-    }
-    let paths: Vec<PathBuf> = files.iter().map(|(p, _)| p.clone()).collect();
-    if format == Format::Pdf && sheets.len() > 1 {
-        files.push((dir.join(BOOK), pdf_book(sheets)?));
-    }
-    files.push((
-        dir.join(MANIFEST),
-        manifest(sheets, &paths, format).into_bytes(),
-    ));
-    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
-    crate::output::write_files_atomically(&refs)?;
-    let written: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
-    let removed: Vec<String> = before
-        .into_iter()
-        .map(|old| dir.join(old))
-        .filter(|p| !written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
-        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-        .collect();
-    if !removed.is_empty() {
-        crate::output::note(&format!(
-            "removed {} sheet file(s) of an earlier run in {} that this run does not draw: {}",
-            removed.len(),
-            dir.display(),
-            abbreviate(&removed)
-        ));
-    }
-    // Sheets by the names this program gives, neither written now nor
-    // listed by a manifest (an older version's): said, left alone.
-    if let Ok(entries) = std::fs::read_dir(dir) {
-        let mut stale: Vec<String> = entries
-            .filter_map(|e| e.ok())
-            .map(|e| e.path())
-            .filter(|p| p.is_file() && !written.contains(p) && looks_like_a_sheet(p))
-            .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-            .collect();
-        stale.sort();
-        if !stale.is_empty() {
-            crate::output::note(&format!(
-                "{} sheet file(s) in {} are not from this run (no manifest lists them; left as they are): {}",
-                stale.len(),
-                dir.display(),
-                abbreviate(&stale)
-            ));
-        }
-    }
-    Ok(written)
-}
-
-/// The first names of a list and how many more.
-fn abbreviate(names: &[String]) -> String {
-    if names.len() <= 6 {
-        names.join(", ")
-    } else {
-        format!("{} and {} more", names[..5].join(", "), names.len() - 5)
-    }
-}
-
-/// Whether a file is named as this program names its sheets.
-fn looks_like_a_sheet(p: &Path) -> bool {
-    let (Some(stem), Some(ext)) = (
-        p.file_stem().and_then(|s| s.to_str()),
-        p.extension().and_then(|s| s.to_str()),
-    ) else {
-        return false;
-    };
-    if !matches!(ext, "svg" | "png" | "pdf") {
-        return false;
-    }
-    let numbered = |prefix: &str| {
-        stem.strip_prefix(prefix)
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-    };
-    matches!(stem, "positions" | "diagrams" | "course" | "sheets")
-        || ["mechanism_", "velocity_", "acceleration_"]
-            .iter()
-            .any(|p| numbered(p))
 }

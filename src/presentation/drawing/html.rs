@@ -20,7 +20,6 @@
 
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
-use crate::error::Result;
 use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
@@ -31,7 +30,6 @@ use crate::presentation::tables::{self, Cell, Kind, Table, unit};
 use crate::words::construction::{Lang, sentence};
 use kurbo::Point;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 /// Words of the page around the drawings.
 struct Ui {
@@ -638,15 +636,6 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
     h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
     let _ = write!(h, "<script>\n{JS}</script>\n</body>\n</html>\n");
     h
-}
-
-/// Write `dir/handout.html` (atomically); returns its path.
-pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -> Result<PathBuf> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    let path = dir.join("handout.html");
-    crate::write_atomically(&path, handout(an, solved, lang).as_bytes())?;
-    Ok(path)
 }
 
 /// Errors of the page's script, collected for `#selftest` (in the head,

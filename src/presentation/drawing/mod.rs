@@ -30,7 +30,7 @@ pub mod positions;
 pub mod sheet;
 pub mod table;
 
-pub use export::{pdf, pdf_book, png, tree, write_sheets};
+pub use export::{pdf, pdf_book, png, tree};
 
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;

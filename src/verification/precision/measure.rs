@@ -1,8 +1,9 @@
 //! The measurement: every method run on the scene's positions, its errors
 //! against the extended-precision reference and its run time, as rows.
 
-use super::{Report, Row, Settings, Stat, sci};
+use super::{Report, Row, Settings, Stat};
 use crate::error::{Error, Result};
+use crate::format::sci;
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings as NewtonSettings};
 use crate::kinematics::analytic::{Drive, Motion, Order, contour};

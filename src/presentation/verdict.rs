@@ -1,8 +1,9 @@
-//! The report as text for the terminal, as JSON, and as an SVG overlay of
-//! the student's points on the correct plan.
+//! A check's verdict (`crate::grading`'s report, data) as text for the
+//! terminal, as JSON, and as an SVG overlay of the student's points on the
+//! correct plan.
 
-use super::answer::{Answer, Given};
-use super::{Judgement, Report};
+use crate::grading::answer::{Answer, Given};
+use crate::grading::{Judgement, Report};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use kurbo::Vec2;
@@ -207,8 +208,8 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
 }
 
 /// A typed explanation as JSON: its kind, and which element or factor.
-fn explanation_json(e: super::Explanation) -> serde_json::Value {
-    use super::Explanation as E;
+fn explanation_json(e: crate::grading::Explanation) -> serde_json::Value {
+    use crate::grading::Explanation as E;
     match e {
         E::Mistake { m, at, both } => {
             serde_json::json!({ "kind": format!("{m:?}"), "at": at, "both_plans": both })

@@ -11,23 +11,21 @@
 //! By part: the verdicts and the report ([`Judgement`], [`Verdict`],
 //! [`Report`]), the items as a construction expects them (`items`), the
 //! mistaken constructions tried and what cannot be judged
-//! (`candidates`), the diagnosis (`diagnosis`), and the report as text,
-//! JSON and an overlay sheet (`report`).
+//! (`candidates`), the diagnosis (`diagnosis`). The verdict is data: its
+//! text, JSON and overlay sheet are presentation's
+//! (`crate::presentation::verdict`), reading the answer's file the front
+//! door's (`crate::study`).
 
 pub mod answer;
 mod candidates;
 mod diagnosis;
-mod file;
 pub mod forces;
 mod items;
-mod report;
 pub mod svg;
 mod verdict;
 
 pub use candidates::Candidate as Explanation;
-pub use file::{CheckRequest, check_file};
 pub use items::resolve;
-pub use report::{overlay, to_json, to_text};
 pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
 
 use crate::error::{Error, Result};

@@ -4,11 +4,12 @@
 //! scene, the overlay written when asked, and the report as text or JSON
 //! with its exit status. The binary only parses its arguments.
 
-use super::answer::{self, Reading};
-use super::forces;
-use crate::error::{Error, Result};
+use super::Study;
+use crate::error::{Error, Result, in_file};
+use crate::grading::answer::{self, MAX_ANSWER_BYTES, Reading};
+use crate::grading::forces;
 use crate::kinematics::construction::PlanKind;
-use crate::study::{Study, in_file, read};
+use crate::presentation::verdict;
 use std::path::{Path, PathBuf};
 
 /// What the command line says besides the two files.
@@ -18,9 +19,13 @@ pub struct CheckRequest {
     pub json: bool,
     /// Where to write the overlay of a kinematic plan (`--svg`).
     pub overlay: Option<PathBuf>,
+    /// The pencil's precision δ, mm (`--delta`), over the answer's own.
     pub delta: Option<f64>,
+    /// The plan's scale μ (`--mu`), over the answer's own.
     pub mu: Option<f64>,
+    /// Which plan the answer is (`--plan`), over the answer's own.
     pub plan: Option<PlanKind>,
+    /// The position (`--position`, from 1), over the answer's own.
     pub position: Option<usize>,
 }
 
@@ -36,7 +41,7 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         delta: req.delta,
         position: req.position,
     };
-    let ans = answer::read(answer, &r)?;
+    let ans = answer::from_text(&read_answer(answer)?, &name_of(answer), is_svg(answer), &r)?;
     let study = Study::from_path(scene)?;
     match req.position {
         Some(p) => study.position_in_range("position", p)?,
@@ -46,13 +51,13 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
     }
     let report = study.check(&ans)?;
     if let Some(out) = &req.overlay {
-        let overlay = super::overlay(study.analysis(), &ans, &report);
-        crate::output::write_atomically(out, overlay.as_bytes())?;
+        let overlay = verdict::overlay(study.analysis(), &ans, &report);
+        super::files::write_atomically(out, overlay.as_bytes())?;
     }
     let text = if req.json {
-        serde_json::to_string_pretty(&super::to_json(&report)).expect("finite numbers") + "\n"
+        serde_json::to_string_pretty(&verdict::to_json(&report)).expect("finite numbers") + "\n"
     } else {
-        super::to_text(&report)
+        verdict::to_text(&report)
     };
     Ok((text, report.status()))
 }
@@ -65,15 +70,9 @@ fn check_force_file(
     answer: &Path,
     req: &CheckRequest,
 ) -> Result<Option<(String, u8)>> {
-    let name = answer.display().to_string();
-    let drawn = answer
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
-    let too_large = std::fs::metadata(answer).is_ok_and(|md| answer::check_size(md.len()).is_err());
-    if too_large {
-        return Ok(None);
-    }
-    let Ok(text) = read(answer) else {
+    let name = name_of(answer);
+    let drawn = is_svg(answer);
+    let Ok(text) = read_answer(answer) else {
         return Ok(None);
     };
     let mut ans = if drawn {
@@ -136,4 +135,36 @@ fn check_force_file(
         forces::to_text(&report)
     };
     Ok(Some((text, report.status())))
+}
+
+/// How an answer file is named in messages.
+fn name_of(answer: &Path) -> String {
+    answer.display().to_string()
+}
+
+/// An answer drawn in a vector editor, by its extension.
+fn is_svg(answer: &Path) -> bool {
+    answer
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+}
+
+/// An answer file's text, refusing one larger than [`MAX_ANSWER_BYTES`]
+/// before it is read whole; its problems name the file.
+fn read_answer(path: &Path) -> Result<String> {
+    use std::io::Read;
+    let name = name_of(path);
+    let io = |source| Error::Io {
+        path: name.clone(),
+        source,
+    };
+    let f = std::fs::File::open(path).map_err(io)?;
+    if let Ok(md) = f.metadata() {
+        answer::check_size(md.len()).map_err(in_file(&name))?;
+    }
+    let mut text = String::new();
+    f.take(MAX_ANSWER_BYTES as u64 + 1)
+        .read_to_string(&mut text)
+        .map_err(io)?;
+    Ok(text)
 }

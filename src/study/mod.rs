@@ -24,20 +24,52 @@
 //! Parameters that the command line shows as options are named here by
 //! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
 
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Result};
+use crate::grading as check;
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::Scene;
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, SheetSize};
 use crate::presentation::report;
-use crate::verification::check;
+use crate::progress::{Progress, Silent};
 use crate::words::construction::Lang;
 use std::path::{Path, PathBuf};
+
+mod check_file;
+pub mod files;
+mod sheets;
+
+pub use check_file::{CheckRequest, check_file};
+pub use sheets::{Written, write_sheets};
 
 /// A scene read and made ready to solve.
 #[derive(Clone, Debug)]
 pub struct Study {
     analysis: Analysis,
+    watcher: Watcher,
+}
+
+/// Who is told how far a long sweep has come (none by default).
+#[derive(Clone, Default)]
+struct Watcher(Option<std::sync::Arc<dyn Progress + Send>>);
+
+impl Watcher {
+    fn get(&self) -> &dyn Progress {
+        match &self.0 {
+            Some(w) => &**w,
+            None => &Silent,
+        }
+    }
+}
+
+impl std::fmt::Debug for Watcher {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "Watcher(..)"
+        } else {
+            "Watcher(none)"
+        })
+    }
 }
 
 /// The positions of a study, solved: both routes, the plans and their
@@ -110,18 +142,7 @@ impl Default for DrawRequest {
     }
 }
 
-/// Name `name` in the messages of an input's problems ("… (in NAME)").
-pub fn in_file(name: &str) -> impl Fn(Error) -> Error + '_ {
-    move |e| match e {
-        Error::Input(Input::Fields(mut v)) => {
-            for i in &mut v {
-                i.message = format!("{} (in {name})", i.message);
-            }
-            Error::fields(v)
-        }
-        e => e,
-    }
-}
+pub use crate::error::in_file;
 
 /// Read a file whole, an error naming it if it cannot be read.
 pub fn read(path: &Path) -> Result<String> {
@@ -136,6 +157,7 @@ impl Study {
     pub fn from_json(text: &str) -> Result<Study> {
         Ok(Study {
             analysis: Analysis::new(Scene::from_json(text)?)?,
+            watcher: Watcher::default(),
         })
     }
 
@@ -153,6 +175,14 @@ impl Study {
     pub fn default_scene() -> Study {
         Study::named(crate::DEFAULT_SCENE, "the embedded default scene")
             .expect("the embedded scene is valid")
+    }
+
+    /// The same study, telling `watcher` how far its long sweeps have
+    /// come (the command's progress bar; the library itself prints
+    /// nothing).
+    pub fn watched_by(mut self, watcher: std::sync::Arc<dyn Progress + Send>) -> Study {
+        self.watcher = Watcher(Some(watcher));
+        self
     }
 
     /// The analysis: mechanism, structure, what is wanted.
@@ -204,52 +234,73 @@ impl Study {
         Ok(out)
     }
 
-    /// Each position as it is solved, in order, with the bar.
+    /// Each position as it is solved, in order, told to the watcher.
     fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        let bar = crate::progress::Silent;
-        let done = self.analysis.run_each_with(&bar, f);
-
+        let w = self.watcher.get();
+        w.start(self.position_count()?, "positions");
+        let done = self.analysis.run_each_with(w, f);
+        w.finish();
         done
     }
 
-    /// Write the results of every position in `style` to `out` (a file,
-    /// atomically) or to standard output. Each position's text is written
-    /// as soon as it is solved and the position dropped, so a long sweep
-    /// costs no more memory than a short one; nothing is written if a
-    /// position is refused.
-    pub fn write_results(&self, style: Results, out: Option<&Path>) -> Result<()> {
-        let an = &self.analysis;
-        let style = match style {
+    /// The result style of the report module for `style`.
+    fn style(&self, style: Results) -> report::Style {
+        match style {
             Results::Table => report::Style::Table,
             Results::Json => report::Style::Json,
             Results::Csv => report::Style::Csv,
             Results::Jsonl => report::Style::Jsonl,
             Results::Steps(lang) => report::Style::Steps(lang.unwrap_or_else(|| self.lang())),
-        };
-        let write = |out: &mut dyn FnMut(&str) -> Result<()>| -> Result<()> {
-            out(&report::text_head(an, style))?;
-            let mut count = 0;
-            self.each(|s| {
-                out(&report::text_position(an, style, count, &s))?;
-                count += 1;
-                Ok(())
-            })?;
-            out(&report::text_tail(an, style, count))
-        };
-        match out {
-            None => {
-                let mut spool = crate::output::Spool::new();
-                write(&mut |t| spool.write(t))?;
-                spool.finish()
-            }
-            Some(path) => {
-                crate::output::write_atomically_with(path, |o| write(&mut |t| o.write(t)))
-            }
         }
     }
 
+    /// Every position's results in `style`, handed to `out` a piece at a
+    /// time: each position's text as soon as it is solved, the position
+    /// then dropped, so that a long sweep costs no more memory than a
+    /// short one.
+    fn stream_results(
+        &self,
+        style: Results,
+        out: &mut dyn FnMut(&str) -> Result<()>,
+    ) -> Result<()> {
+        let an = &self.analysis;
+        let style = self.style(style);
+        out(&report::text_head(an, style))?;
+        let mut count = 0;
+        self.each(|s| {
+            out(&report::text_position(an, style, count, &s))?;
+            count += 1;
+            Ok(())
+        })?;
+        out(&report::text_tail(an, style, count))
+    }
+
+    /// Write the results of every position in `style` to `out` as they
+    /// are solved (flat memory however many positions). A position that
+    /// cannot be solved stops the run with its error, what was written
+    /// before it staying written: for all or nothing, write into a file
+    /// ([`Study::write_results_to_file`]) or a [`files::Spool`].
+    pub fn write_results(&self, style: Results, out: &mut dyn std::io::Write) -> Result<()> {
+        let mut o = files::Output::new(out, "the output");
+        self.stream_results(style, &mut |t| o.write(t))?;
+        out.flush().map_err(|e| files::write_error("the output", e))
+    }
+
+    /// Write the results of every position in `style` into the file
+    /// `path`, all or nothing (a temporary beside it, renamed into place
+    /// when the last position is written).
+    pub fn write_results_to_file(&self, style: Results, path: &Path) -> Result<()> {
+        files::write_atomically_with(path, |o| self.stream_results(style, &mut |t| o.write(t)))
+    }
+
+    /// The results of every position in `style`, held back in `spool`
+    /// (memory, then a temporary file) to be printed when all are solved.
+    pub fn write_results_to_spool(&self, style: Results, spool: &mut files::Spool) -> Result<()> {
+        self.stream_results(style, &mut |t| spool.write(t))
+    }
+
     /// Draw the sheets (or the handout) into `req.dir`: the files written.
-    pub fn draw(&self, req: &DrawRequest) -> Result<Vec<PathBuf>> {
+    pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         if !(req.dpi.is_finite() && (10.0..=1200.0).contains(&req.dpi)) {
             return Err(Error::scene(
                 "dpi",
@@ -260,9 +311,15 @@ impl Study {
         let lang = req.lang.unwrap_or_else(|| self.lang());
         let solved = self.solved()?;
         if req.html {
-            return Ok(vec![drawing::html::write_handout(
-                an, &solved, lang, &req.dir,
-            )?]);
+            std::fs::create_dir_all(&req.dir)
+                .map_err(|e| files::write_error(&req.dir.display().to_string(), e))?;
+            let path = req.dir.join("handout.html");
+            let page = drawing::html::handout(an, &solved, lang);
+            files::write_files_atomically(&[(path.clone(), page.as_bytes())])?;
+            return Ok(Written {
+                files: vec![path],
+                notes: Vec::new(),
+            });
         }
         // A sheet asked for is the only one tried; else A4, the scales
         // filling it, or (for a μ_l the scene fixes) the smallest sheet
@@ -280,14 +337,18 @@ impl Study {
             course: req.course,
         };
         let (sheets, sheet) = drawing::sheets_on(an, &solved, &opt, &sizes)?;
+        let mut notes = Vec::new();
         if sheet != sizes[0] {
-            crate::output::note(&format!(
+            notes.push(format!(
                 "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {:?}: drawn on {sheet:?}",
                 an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
                 sizes[0]
             ));
         }
-        drawing::write_sheets(&sheets, &req.dir, req.format, req.dpi)
+        let mut written = write_sheets(&sheets, &req.dir, req.format, req.dpi)?;
+        notes.append(&mut written.notes);
+        written.notes = notes;
+        Ok(written)
     }
 
     /// Check a student's force plan ([`check::forces::from_json`]).
@@ -393,7 +454,7 @@ impl Study {
             ));
         };
         let sheet = drawing::diagram::sheet(an, &d, &DrawOptions::default());
-        Ok(Diagram::Written(drawing::write_sheets(
+        Ok(Diagram::Written(write_sheets(
             &[sheet],
             dir,
             format,
@@ -428,14 +489,17 @@ impl Study {
                 "must be a positive number of seconds",
             ));
         }
-        let report = precision::run(&self.analysis, settings)?;
-        let table = precision::to_markdown(&report);
+        let report = precision::run_watched(&self.analysis, settings, self.watcher.get())?;
+        let table = crate::presentation::precision::to_markdown(&report);
         let Some((dir, stem)) = dir else {
             return Ok(Precision::Table(table));
         };
         std::fs::create_dir_all(dir)
-            .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-        let svg = precision::to_svg(&report, &format!("{stem}: error against run time"));
+            .map_err(|e| crate::study::files::write_error(&dir.display().to_string(), e))?;
+        let svg = crate::presentation::precision::to_svg(
+            &report,
+            &format!("{stem}: error against run time"),
+        );
         let png = drawing::png(&svg, 150.0)?;
         let files: Vec<(PathBuf, &[u8])> = [
             ("md", table.as_bytes()),
@@ -445,10 +509,11 @@ impl Study {
         .into_iter()
         .map(|(ext, bytes)| (dir.join(format!("{stem}.{ext}")), bytes))
         .collect();
-        crate::output::write_files_atomically(&files)?;
-        Ok(Precision::Written(
-            files.into_iter().map(|(p, _)| p).collect(),
-        ))
+        crate::study::files::write_files_atomically(&files)?;
+        Ok(Precision::Written(Written {
+            files: files.into_iter().map(|(p, _)| p).collect(),
+            notes: Vec::new(),
+        }))
     }
 }
 
@@ -458,7 +523,7 @@ pub enum Diagram {
     /// The table of the diagrams and their errors.
     Table(String),
     /// The sheet's files.
-    Written(Vec<PathBuf>),
+    Written(Written),
 }
 
 /// The precision report's result: its table, or the files written.
@@ -467,7 +532,7 @@ pub enum Precision {
     /// The report's table (Markdown).
     Table(String),
     /// The table and the plot's files.
-    Written(Vec<PathBuf>),
+    Written(Written),
 }
 
 impl Solution<'_> {
@@ -487,4 +552,14 @@ fn pretty(v: &serde_json::Value) -> String {
     let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
     t.push('\n');
     t
+}
+
+/// The Frenet trihedron's sheets (`mechplan frenet`): families of link
+/// positions at `count` segments per revolution, written into `dir`.
+pub fn frenet(dir: &Path, format: drawing::Format, count: usize) -> Result<Written> {
+    if !(2..=10_000).contains(&count) {
+        return Err(Error::scene("count", "must be from 2 to 10000 segments"));
+    }
+    let sheets = drawing::frenet::sheets(count, &DrawOptions::default());
+    write_sheets(&sheets, dir, format, 150.0)
 }
