@@ -6,8 +6,7 @@ mod terminal;
 
 use clap::Parser;
 use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
-use mechplan::study::files::Spool;
-use mechplan::study::{Diagram, Precision};
+use mechplan::Spool;
 use mechplan::{DrawRequest, Error, Results, Study};
 use std::path::Path;
 use std::process::ExitCode;
@@ -121,7 +120,7 @@ fn command(c: Command) -> Result<u8, Error> {
             positions,
             min_time,
         } => {
-            let settings = mechplan::precision::Settings {
+            let settings = mechplan::PrecisionSettings {
                 seeds,
                 positions,
                 min_time,
@@ -131,17 +130,24 @@ fn command(c: Command) -> Result<u8, Error> {
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_else(|| "scene".into());
-            let dir = output.as_deref().map(|d| (d, stem.as_str()));
-            match study(&scene)?.precision(&settings, dir)? {
-                Precision::Table(t) => stdout(&t)?,
-                Precision::Written(w) => wrote(&w)?,
+            let report = study(&scene)?.precision(&settings)?;
+            match output {
+                Some(dir) => wrote(&report.write_into(&dir, &stem)?)?,
+                None => stdout(&report.to_markdown())?,
             }
         }
         Command::Centres {
             scene,
             position,
             format,
-        } => stdout(&study(&scene)?.centres(position, format == Format::Json)?)?,
+        } => {
+            let study = study(&scene)?;
+            let centres = study.centres(position)?;
+            stdout(&match format {
+                Format::Json => terminal::pretty(&centres.to_json()),
+                Format::Table => centres.to_table(),
+            })?
+        }
         Command::Invariants {
             scene,
             output,
@@ -151,8 +157,11 @@ fn command(c: Command) -> Result<u8, Error> {
             format,
         } => {
             let study = study(&scene)?;
-            let json = format == Format::Json;
-            stdout(&study.invariants(output.as_deref(), tolerance, min_dwell, n, json)?)?;
+            let inv = study.invariants(output.as_deref(), tolerance, min_dwell, n)?;
+            stdout(&match format {
+                Format::Json => terminal::pretty(&inv.to_json()),
+                Format::Table => inv.to_table(),
+            })?;
         }
         Command::Diagram {
             scene,
@@ -162,11 +171,11 @@ fn command(c: Command) -> Result<u8, Error> {
             output_dir,
             format,
         } => {
-            let dir = output_dir.as_deref().map(|d| (d, format.into()));
             let study = study(&scene)?;
-            match study.diagram(output.as_deref(), point.as_deref(), n, dir)? {
-                Diagram::Table(t) => stdout(&t)?,
-                Diagram::Written(w) => wrote(&w)?,
+            let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
+            match output_dir {
+                Some(dir) => wrote(&d.write_into(&dir, format.into())?)?,
+                None => stdout(&d.to_table())?,
             }
         }
         Command::Frenet {

@@ -3,8 +3,8 @@
 //! for long sweeps). The library hands it texts and files written.
 
 use indicatif::{ProgressBar, ProgressStyle};
+use mechplan::Progress;
 use mechplan::Result;
-use mechplan::progress::Progress;
 use mechplan::study::files::{STDOUT, Spool, write_error};
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -48,6 +48,13 @@ pub fn stdout(text: &str) -> Result<()> {
     o.write_all(text.as_bytes())
         .and_then(|()| o.flush())
         .map_err(|e| write_error(STDOUT, e))
+}
+
+/// Pretty JSON with a final newline.
+pub fn pretty(v: &serde_json::Value) -> String {
+    let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
+    t.push('\n');
+    t
 }
 
 /// Print what a spool held back, checked and flushed.

@@ -558,23 +558,20 @@ fn a_hand_drawn_boom_plan_is_checked() {
 fn one_input_features_refuse_several() {
     let study = mechplan::Study::from_json(&fixture("five_bar_two_cranks").to_string()).unwrap();
     let inv = study
-        .invariants(Some("3"), 0.01, 5.0, 360, false)
+        .invariants(Some("3"), 0.01, 5.0, 360)
         .unwrap_err()
         .to_string();
     assert!(
         inv.contains("/input") && inv.contains("several inputs"),
         "{inv}"
     );
-    let dia = study
-        .diagram(Some("3"), None, 12, None)
-        .unwrap_err()
-        .to_string();
+    let dia = study.diagram(Some("3"), None, 12).unwrap_err().to_string();
     assert!(
         dia.contains("/input") && dia.contains("several inputs"),
         "{dia}"
     );
     let pre = study
-        .precision(&mechplan::precision::Settings::default(), None)
+        .precision(&mechplan::precision::Settings::default())
         .unwrap_err()
         .to_string();
     assert!(
@@ -583,10 +580,7 @@ fn one_input_features_refuse_several() {
     );
     // Diagrams of the boom: over the cylinder's stroke, against its slide.
     let boom = mechplan::Study::from_json(&fixture("boom_cylinder").to_string()).unwrap();
-    let mechplan::study::Diagram::Table(t) = boom.diagram(Some("1"), None, 10, None).unwrap()
-    else {
-        unreachable!()
-    };
+    let t = boom.diagram(Some("1"), None, 10).unwrap().to_table();
     assert!(t.contains("over the stroke s3 = -0.15 … 0.35 m"), "{t}");
     let d = mechplan::diagrams::Diagrams::build(
         boom.analysis(),

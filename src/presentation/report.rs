@@ -14,19 +14,10 @@ use serde_json::{Map, Value, json};
 
 pub use super::steps::to_steps;
 use super::steps::{steps_head, steps_position};
+use crate::json::{number as num, vec2};
 pub(crate) use super::text_table::group_kinds;
 pub use super::text_table::to_table;
 use super::text_table::{table_head, table_position};
-
-/// Round-trip-exact but tidy: integers print as integers, no `-0`.
-pub(super) fn num(x: f64) -> Value {
-    let x = if x == 0.0 { 0.0 } else { x };
-    json!(x)
-}
-
-pub(super) fn vec2(v: kurbo::Vec2) -> Value {
-    json!([num(v.x), num(v.y)])
-}
 
 fn deg(a: f64) -> f64 {
     wrap_pi(a).to_degrees()
@@ -486,58 +477,3 @@ fn plan_json(plan: &crate::kinematics::construction::Plan) -> Value {
     })
 }
 
-/// The inputs of a position in short: "φ1 = 30°", "s = 0.1 m"; several
-/// with their links' ids: "φ1 = 30°, φ4 = 120°", "s3 = 0.1 m, s6 = 0 m".
-pub fn input_words(an: &Analysis, s: &Solved) -> String {
-    use crate::format::num;
-    let m = &an.mech;
-    let several = m.scene.several_inputs();
-    m.scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| {
-            let id = m.link_id(spec.link());
-            match spec {
-                InputSpec::Crank { .. } => format!(
-                    "φ{} = {}°",
-                    if several { id } else { "1" },
-                    num(d.q.to_degrees().rem_euclid(360.0))
-                ),
-                InputSpec::Slider { .. } => {
-                    format!("s{} = {} m", if several { id } else { "" }, num(d.q))
-                }
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-/// The inputs' rates of a position in short: "ω1 = 10 rad/s, ε1 = 0
-/// rad/s²", several with their links' ids.
-pub fn drive_words(an: &Analysis, s: &Solved) -> String {
-    use crate::format::num;
-    let m = &an.mech;
-    let several = m.scene.several_inputs();
-    m.scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| {
-            let id = m.link_id(spec.link());
-            match spec {
-                InputSpec::Crank { .. } => {
-                    let k = if several { id } else { "1" };
-                    format!(
-                        "ω{k} = {} rad/s, ε{k} = {} rad/s²",
-                        num(d.rate),
-                        num(d.rate2)
-                    )
-                }
-                InputSpec::Slider { .. } => {
-                    let k = if several { id } else { "" };
-                    format!("v{k} = {} m/s, a{k} = {} m/s²", num(d.rate), num(d.rate2))
-                }
-            }
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
-}

@@ -3,7 +3,7 @@
 //! measured values with their drafting bounds, and with `dynamics` the
 //! force plans and the lever ([`super::force_steps`]).
 
-use super::report::input_words;
+use crate::words::inputs::input_words;
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;

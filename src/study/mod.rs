@@ -1,6 +1,8 @@
 //! The library's front door: a [`Study`] is a scene read and made ready;
 //! it solves, reports, draws and checks. Everything the `mechplan` command
-//! does is one call here, so another program does it the same way.
+//! does is one call here, so another program does it the same way. This
+//! is the only module that reads or writes files; the library never
+//! prints (the command does, `src/terminal.rs`).
 //!
 //! ```
 //! use mechplan::Study;
@@ -9,13 +11,12 @@
 //! let study = Study::from_json(mechplan::DEFAULT_SCENE)?;
 //! let solution = study.solve()?;
 //! // The slider D's velocity at the first position, by route (a) …
-//! let d = study.analysis().mech.scene.point_index("D").unwrap();
-//! let (v, _a) = solution.positions[0].point(study.analysis(), d).rates.unwrap();
+//! let d = solution.position(1)?.point("D")?;
+//! let v = d.velocity().expect("the scene asks for velocities");
 //! // … and as measured on the velocity plan: the same, within its bound.
-//! let plan = &solution.positions[0].plans.as_ref().unwrap().velocity;
-//! let measured = plan.value_of(d).unwrap();
+//! let measured = d.measured_velocity().expect("the scene asks for plans");
 //! assert!((v - measured).hypot() < 1e-9);
-//! // The result file of the contract.
+//! // The result file, as `mechplan solve --format json` writes it.
 //! let json = solution.to_json();
 //! assert_eq!(json["mechplan"], 1);
 //! # Ok::<(), mechplan::Error>(())
@@ -25,33 +26,37 @@
 //! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
 
 use crate::error::{Error, Result};
-use crate::grading as check;
 use crate::kinematics::solve::Analysis;
+use crate::lang::Lang;
 use crate::model::scene::Scene;
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, SheetSize};
 use crate::presentation::report;
 use crate::progress::{Progress, Silent};
-use crate::words::construction::Lang;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 mod check_file;
 pub mod files;
 mod sheets;
+mod solution;
+mod studies;
 
 pub use check_file::{CheckRequest, check_file};
 pub use sheets::{Written, write_sheets};
+pub use solution::{LinkResult, PointResult, PositionResult, Positions, Solution};
+pub use studies::{Centres, Checked, Diagram, Invariants, KinematicCheck, PrecisionReport};
 
 /// A scene read and made ready to solve.
 #[derive(Clone, Debug)]
 pub struct Study {
-    analysis: Analysis,
+    analysis: Arc<Analysis>,
     watcher: Watcher,
 }
 
 /// Who is told how far a long sweep has come (none by default).
 #[derive(Clone, Default)]
-struct Watcher(Option<std::sync::Arc<dyn Progress + Send>>);
+struct Watcher(Option<Arc<dyn Progress + Send>>);
 
 impl Watcher {
     fn get(&self) -> &dyn Progress {
@@ -70,15 +75,6 @@ impl std::fmt::Debug for Watcher {
             "Watcher(none)"
         })
     }
-}
-
-/// The positions of a study, solved: both routes, the plans and their
-/// cross-check at every one.
-#[derive(Clone, Debug)]
-pub struct Solution<'a> {
-    study: &'a Study,
-    /// Every position asked for, in order.
-    pub positions: Vec<Solved>,
 }
 
 /// How `solve` writes its result.
@@ -142,6 +138,19 @@ impl Default for DrawRequest {
     }
 }
 
+impl DrawRequest {
+    /// Refused before anything is solved: a resolution out of range.
+    fn validate(&self) -> Result<()> {
+        if !(self.dpi.is_finite() && (10.0..=1200.0).contains(&self.dpi)) {
+            return Err(Error::scene(
+                "dpi",
+                format!("{} is not a resolution from 10 to 1200 dpi", self.dpi),
+            ));
+        }
+        Ok(())
+    }
+}
+
 pub use crate::error::in_file;
 
 /// Read a file whole, an error naming it if it cannot be read.
@@ -153,10 +162,30 @@ pub fn read(path: &Path) -> Result<String> {
 }
 
 impl Study {
-    /// A scene from its JSON text.
+    /// A scene from its JSON text (the scene file's format:
+    /// docs/scene-format.md). Every problem of the scene is reported at
+    /// once, each with its JSON pointer.
+    ///
+    /// ```
+    /// let study = mechplan::Study::from_json(r#"{
+    ///   "mechplan": 1,
+    ///   "units": { "length": "mm", "angle": "deg" },
+    ///   "points": { "O": [0, 0], "A": [0, 40], "B": [120, 100], "C": [150, 0] },
+    ///   "links": [
+    ///     { "id": "0", "frame": true, "points": ["O", "C"] },
+    ///     { "id": "1", "points": ["O", "A"] },
+    ///     { "id": "2", "points": ["A", "B"] },
+    ///     { "id": "3", "points": ["B", "C"] }
+    ///   ],
+    ///   "input": { "link": "1", "pivot": "O", "omega": 10 },
+    ///   "want": { "velocity": true, "acceleration": true }
+    /// }"#)?;
+    /// assert_eq!(study.position_count()?, 1);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn from_json(text: &str) -> Result<Study> {
         Ok(Study {
-            analysis: Analysis::new(Scene::from_json(text)?)?,
+            analysis: Arc::new(Analysis::new(Scene::from_json(text)?)?),
             watcher: Watcher::default(),
         })
     }
@@ -180,12 +209,14 @@ impl Study {
     /// The same study, telling `watcher` how far its long sweeps have
     /// come (the command's progress bar; the library itself prints
     /// nothing).
-    pub fn watched_by(mut self, watcher: std::sync::Arc<dyn Progress + Send>) -> Study {
+    pub fn watched_by(mut self, watcher: Arc<dyn Progress + Send>) -> Study {
         self.watcher = Watcher(Some(watcher));
         self
     }
 
-    /// The analysis: mechanism, structure, what is wanted.
+    /// The analysis: mechanism, structure, what is wanted (the internals,
+    /// for the project's own tests).
+    #[cfg(feature = "internals")]
     pub fn analysis(&self) -> &Analysis {
         &self.analysis
     }
@@ -215,16 +246,13 @@ impl Study {
         ))
     }
 
-    /// Solve every position.
+    /// Solve every position, all kept in memory (for a long sweep, see
+    /// [`Study::positions`], which keeps none).
     pub fn solve(&self) -> Result<Solution<'_>> {
-        Ok(Solution {
-            study: self,
-            positions: self.solved()?,
-        })
+        Ok(Solution::new(self, self.solved()?))
     }
 
-    /// Every position solved, a progress bar on a terminal for a long
-    /// sweep (the solver only advances the bar it is given).
+    /// Every position solved, in order.
     fn solved(&self) -> Result<Vec<Solved>> {
         let mut out = Vec::new();
         self.each(|s| {
@@ -263,7 +291,7 @@ impl Study {
         style: Results,
         out: &mut dyn FnMut(&str) -> Result<()>,
     ) -> Result<()> {
-        let an = &self.analysis;
+        let an = &*self.analysis;
         let style = self.style(style);
         out(&report::text_head(an, style))?;
         let mut count = 0;
@@ -280,6 +308,15 @@ impl Study {
     /// cannot be solved stops the run with its error, what was written
     /// before it staying written: for all or nothing, write into a file
     /// ([`Study::write_results_to_file`]) or a [`files::Spool`].
+    ///
+    /// ```
+    /// use mechplan::{Results, Study};
+    /// let mut csv = Vec::new();
+    /// Study::default_scene().write_results(Results::Csv, &mut csv)?;
+    /// let text = String::from_utf8(csv).unwrap();
+    /// assert!(text.lines().count() > 1);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn write_results(&self, style: Results, out: &mut dyn std::io::Write) -> Result<()> {
         let mut o = files::Output::new(out, "the output");
         self.stream_results(style, &mut |t| o.write(t))?;
@@ -299,167 +336,60 @@ impl Study {
         self.stream_results(style, &mut |t| spool.write(t))
     }
 
-    /// Draw the sheets (or the handout) into `req.dir`: the files written.
+    /// Draw the sheets (or the handout) into `req.dir`: the files written
+    /// and the notes for the user.
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
-        if !(req.dpi.is_finite() && (10.0..=1200.0).contains(&req.dpi)) {
-            return Err(Error::scene(
-                "dpi",
-                format!("{} is not a resolution from 10 to 1200 dpi", req.dpi),
-            ));
-        }
-        let an = &self.analysis;
-        let lang = req.lang.unwrap_or_else(|| self.lang());
-        let solved = self.solved()?;
-        if req.html {
-            std::fs::create_dir_all(&req.dir)
-                .map_err(|e| files::write_error(&req.dir.display().to_string(), e))?;
-            let path = req.dir.join("handout.html");
-            let page = drawing::html::handout(an, &solved, lang);
-            files::write_files_atomically(&[(path.clone(), page.as_bytes())])?;
-            return Ok(Written {
-                files: vec![path],
-                notes: Vec::new(),
-            });
-        }
-        // A sheet asked for is the only one tried; else A4, the scales
-        // filling it, or (for a μ_l the scene fixes) the smallest sheet
-        // that holds the mechanism's drawings at it.
-        let sizes = match req.sheet {
-            Some(s) => vec![s],
-            None => SheetSize::ALL.to_vec(),
-        };
-        let opt = DrawOptions {
-            sheet: sizes[0],
-            lang,
-            title_block: req.title_block,
-            table: req.table,
-            centres: req.centres,
-            course: req.course,
-        };
-        let (sheets, sheet) = drawing::sheets_on(an, &solved, &opt, &sizes)?;
-        let mut notes = Vec::new();
-        if sheet != sizes[0] {
-            notes.push(format!(
-                "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {:?}: drawn on {sheet:?}",
-                an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
-                sizes[0]
-            ));
-        }
-        let mut written = write_sheets(&sheets, &req.dir, req.format, req.dpi)?;
-        notes.append(&mut written.notes);
-        written.notes = notes;
-        Ok(written)
+        req.validate()?;
+        self.solve()?.draw(req)
     }
 
-    /// Check a student's force plan ([`check::forces::from_json`]).
-    pub fn check_forces(
-        &self,
-        answer: &check::forces::ForceAnswer,
-    ) -> Result<check::forces::ForceReport> {
-        let solved = self.solved()?;
-        check::forces::check(&self.analysis, &solved, answer)
+    /// Check a student's answer, JSON or SVG (`svg`: an SVG drawing by its
+    /// file's extension; a text starting with `<` is one too), its
+    /// problems naming `name` (the answer's file). A plan of velocities or
+    /// accelerations, or a force plan (`"plan": "force"`, or a drawing
+    /// stating μ_F).
+    pub fn check_answer(&self, text: &str, name: &str, svg: bool) -> Result<Checked> {
+        self.solve()?
+            .check_answer(text, name, svg, &CheckRequest::default())
     }
 
-    /// Check a student's answer (read by [`check::answer::read`]).
-    pub fn check(&self, answer: &check::answer::Answer) -> Result<check::Report> {
-        let solved = self.solved()?;
-        check::check(&self.analysis, &solved, answer)
-    }
-
-    /// The instant centres of every position (or of `position`, from 1),
-    /// as a table or JSON.
-    pub fn centres(&self, position: Option<usize>, json: bool) -> Result<String> {
-        if let Some(p) = position {
-            self.position_in_range("position", p)?;
-        }
-        let an = &self.analysis;
-        let solved = self.solved()?;
-        Ok(if json {
-            pretty(&crate::presentation::studies::centres_json(
-                an, &solved, position,
-            ))
-        } else {
-            crate::presentation::studies::centres_table(an, &solved, position)
-        })
+    /// The instant centres of every position (or of `position`, from 1).
+    pub fn centres(&self, position: Option<usize>) -> Result<Centres<'_>> {
+        self.solve()?.into_centres(position)
     }
 
     /// The phases and motion-law invariants of link `output` (its id;
-    /// default: the last group's last link), as a table or JSON.
+    /// default: the last group's last link): `tolerance` the dwell
+    /// tolerance E (a fraction of the stroke, 0 to 0.5), `min_dwell_deg`
+    /// the shortest dwell reported, `n` the grid's steps per revolution.
     pub fn invariants(
         &self,
         output: Option<&str>,
         tolerance: f64,
         min_dwell_deg: f64,
         n: usize,
-        json: bool,
-    ) -> Result<String> {
-        use crate::studies::invariants;
-        if !(tolerance.is_finite() && (0.0..0.5).contains(&tolerance)) {
-            return Err(Error::scene(
-                "tolerance",
-                "must be a fraction of the stroke from 0 to 0.5",
-            ));
-        }
-        if !(min_dwell_deg.is_finite() && (0.0..360.0).contains(&min_dwell_deg)) {
-            return Err(Error::scene("min-dwell", "must be from 0 to 360 degrees"));
-        }
-        if !(36..=1_000_000).contains(&n) {
-            return Err(Error::scene("n", "must be from 36 to 1000000 steps"));
-        }
-        let an = &self.analysis;
-        let set = invariants::Settings {
-            output: self.link("output", output)?,
-            tolerance,
-            min_dwell: min_dwell_deg.to_radians(),
-            n,
-        };
-        let list = invariants::phases(an, &set)?;
-        Ok(if json {
-            pretty(&crate::presentation::studies::invariants_json(
-                an, &set, &list,
-            ))
-        } else {
-            crate::presentation::studies::invariants_table(an, &set, &list)
-        })
+    ) -> Result<Invariants<'_>> {
+        studies::invariants(self, output, tolerance, min_dwell_deg, n)
     }
 
     /// The kinematic diagrams of link `output` (or of point `point` along
-    /// its path) by the chord method over `n` intervals: the table, or the
-    /// sheet written into `dir`.
+    /// its path) by the chord method over `n` intervals.
     pub fn diagram(
         &self,
         output: Option<&str>,
         point: Option<&str>,
         n: usize,
-        dir: Option<(&Path, drawing::Format)>,
-    ) -> Result<Diagram> {
-        use crate::studies::diagrams::Diagrams;
-        if !(4..=3600).contains(&n) {
-            return Err(Error::scene("n", "must be from 4 to 3600 intervals"));
-        }
-        let an = &self.analysis;
-        let out = self.link("output", output)?;
-        let d = match point {
-            Some(name) => {
-                let p = an.mech.scene.point_index(name).ok_or_else(|| {
-                    Error::scene("point", format!("the scene has no point \"{name}\""))
-                })?;
-                Diagrams::build_point(an, p, n, drawing::diagram::LENGTH)?
-            }
-            None => Diagrams::build(an, out, n, drawing::diagram::LENGTH)?,
-        };
-        let Some((dir, format)) = dir else {
-            return Ok(Diagram::Table(
-                crate::presentation::studies::diagrams_table(an, &d),
-            ));
-        };
-        let sheet = drawing::diagram::sheet(an, &d, &DrawOptions::default());
-        Ok(Diagram::Written(write_sheets(
-            &[sheet],
-            dir,
-            format,
-            150.0,
-        )?))
+    ) -> Result<Diagram<'_>> {
+        studies::diagram(self, output, point, n)
+    }
+
+    /// The work-precision report: every method's error against an
+    /// extended-precision reference, and its run time.
+    pub fn precision(
+        &self,
+        settings: &crate::verification::precision::Settings,
+    ) -> Result<PrecisionReport> {
+        studies::precision(self, settings)
     }
 
     /// A link by its id, or the default output (the last group's last link).
@@ -474,84 +404,6 @@ impl Study {
             None => Ok(crate::studies::invariants::default_output(an)),
         }
     }
-
-    /// The work-precision report: its table, and with `dir` the table,
-    /// the plot (SVG, PNG) written there as `stem.md`, `.svg`, `.png`.
-    pub fn precision(
-        &self,
-        settings: &crate::verification::precision::Settings,
-        dir: Option<(&Path, &str)>,
-    ) -> Result<Precision> {
-        use crate::verification::precision;
-        if !(settings.min_time.is_finite() && settings.min_time > 0.0) {
-            return Err(Error::scene(
-                "min-time",
-                "must be a positive number of seconds",
-            ));
-        }
-        let report = precision::run_watched(&self.analysis, settings, self.watcher.get())?;
-        let table = crate::presentation::precision::to_markdown(&report);
-        let Some((dir, stem)) = dir else {
-            return Ok(Precision::Table(table));
-        };
-        std::fs::create_dir_all(dir)
-            .map_err(|e| crate::study::files::write_error(&dir.display().to_string(), e))?;
-        let svg = crate::presentation::precision::to_svg(
-            &report,
-            &format!("{stem}: error against run time"),
-        );
-        let png = drawing::png(&svg, 150.0)?;
-        let files: Vec<(PathBuf, &[u8])> = [
-            ("md", table.as_bytes()),
-            ("svg", svg.as_bytes()),
-            ("png", png.as_slice()),
-        ]
-        .into_iter()
-        .map(|(ext, bytes)| (dir.join(format!("{stem}.{ext}")), bytes))
-        .collect();
-        crate::study::files::write_files_atomically(&files)?;
-        Ok(Precision::Written(Written {
-            files: files.into_iter().map(|(p, _)| p).collect(),
-            notes: Vec::new(),
-        }))
-    }
-}
-
-/// A diagram's result: its table, or the sheet's files.
-#[derive(Clone, Debug)]
-pub enum Diagram {
-    /// The table of the diagrams and their errors.
-    Table(String),
-    /// The sheet's files.
-    Written(Written),
-}
-
-/// The precision report's result: its table, or the files written.
-#[derive(Clone, Debug)]
-pub enum Precision {
-    /// The report's table (Markdown).
-    Table(String),
-    /// The table and the plot's files.
-    Written(Written),
-}
-
-impl Solution<'_> {
-    /// The result file of the contract (`solve --format json`).
-    pub fn to_json(&self) -> serde_json::Value {
-        report::to_json(&self.study.analysis, &self.positions)
-    }
-
-    /// The sheets of the drawings, on A4 (see [`Study::draw`] for files).
-    pub fn sheets(&self, opt: &DrawOptions) -> Vec<drawing::Sheet> {
-        drawing::sheets(&self.study.analysis, &self.positions, opt)
-    }
-}
-
-/// Pretty JSON with a final newline.
-fn pretty(v: &serde_json::Value) -> String {
-    let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
-    t.push('\n');
-    t
 }
 
 /// The Frenet trihedron's sheets (`mechplan frenet`): families of link
@@ -562,4 +414,11 @@ pub fn frenet(dir: &Path, format: drawing::Format, count: usize) -> Result<Writt
     }
     let sheets = drawing::frenet::sheets(count, &DrawOptions::default());
     write_sheets(&sheets, dir, format, 150.0)
+}
+
+/// Pretty JSON with a final newline.
+fn pretty(v: &serde_json::Value) -> String {
+    let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
+    t.push('\n');
+    t
 }

@@ -6,6 +6,7 @@
 
 pub mod construction;
 pub mod forces;
+pub mod inputs;
 pub mod notation;
 
 pub use crate::lang::Lang;

@@ -22,7 +22,6 @@ use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
 use answer::issue;
-use serde_json::Value;
 
 /// The check of a force plan.
 #[derive(Clone, Debug)]
@@ -447,77 +446,5 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         delta,
         verdicts,
         diagnosis,
-    })
-}
-
-/// The report in words.
-pub fn to_text(r: &ForceReport) -> String {
-    use std::fmt::Write as _;
-    let mut t = format!(
-        "Force plan of links {}, position {}, μ_F = {} N/mm, δ = {} mm\n",
-        r.links.join(", "),
-        r.position,
-        r.mu,
-        r.delta
-    );
-    for v in &r.verdicts {
-        let verdict = match &v.judgement {
-            Judgement::Right => "right".to_string(),
-            Judgement::Wrong => "WRONG".to_string(),
-            Judgement::CannotJudge(why) => format!("cannot be judged: {why}"),
-        };
-        let _ = writeln!(
-            t,
-            "  {}: given {:.4} {u}, expected {:.4} ± {:.4} {u}: {verdict}",
-            v.what,
-            v.given,
-            v.expected,
-            v.tolerance,
-            u = v.unit
-        );
-    }
-    match &r.diagnosis {
-        Some(d) => {
-            let _ = writeln!(t, "  Diagnosis: the plan was drawn with {d}.");
-        }
-        None if r.wrong() > 0 => {
-            let _ = writeln!(
-                t,
-                "  Diagnosis: no typical mistake explains the wrong items."
-            );
-        }
-        None => {}
-    }
-    t
-}
-
-/// The report as JSON.
-pub fn to_json(r: &ForceReport) -> Value {
-    let items: Vec<Value> = r
-        .verdicts
-        .iter()
-        .map(|v| {
-            let (verdict, why) = match &v.judgement {
-                Judgement::Right => ("right", None),
-                Judgement::Wrong => ("wrong", None),
-                Judgement::CannotJudge(w) => ("cannot_judge", Some(w.clone())),
-            };
-            serde_json::json!({
-                "pointer": v.pointer, "key": v.key, "what": v.what,
-                "given": v.given, "expected": v.expected, "difference": v.difference,
-                "tolerance": v.tolerance, "unit": v.unit, "verdict": verdict, "why": why,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "plan": "force",
-        "position": r.position,
-        "links": r.links,
-        "mu": r.mu,
-        "delta": r.delta,
-        "items": items,
-        "wrong": r.wrong(),
-        "diagnosis": r.diagnosis,
-        "status": r.status(),
     })
 }

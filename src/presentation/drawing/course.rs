@@ -251,7 +251,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     place(&mut page, &placed);
     let title = w.course.to_string();
     // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if super::course_forces::position_has_forces(an, solved) {
+    let sheets = if position_has_forces(an, solved) {
         2
     } else {
         1
@@ -647,4 +647,27 @@ fn pack_in_order(
         sky = next;
     }
     Some(out)
+}
+
+/// The position the force analysis sheet analyses (from 0): the first
+/// position with an acceleration plan after the first, else the first.
+pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
+    let (_, acc) = chosen(an, solved);
+    acc.iter()
+        .copied()
+        .find(|&k| k > 1)
+        .or(acc.first().copied())
+        .unwrap_or(1)
+        .clamp(1, solved.len().max(1))
+        - 1
+}
+
+/// Whether the second sheet is drawn: the analysed position has force
+/// plans.
+pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
+    !solved.is_empty()
+        && solved[position(an, solved)]
+            .dynamics
+            .as_ref()
+            .is_some_and(|d| d.force_plans.is_some())
 }

@@ -13,7 +13,7 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::course::{self, Figure, chosen};
+use super::course::{self, Figure, position};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
@@ -36,18 +36,6 @@ pub fn title(lang: Lang) -> &'static str {
         Lang::Uk => "Силовий аналіз механізму",
         Lang::Ru => "Силовой анализ механизма",
     }
-}
-
-/// The position the sheet analyses (from 0); see the module's comment.
-pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
-    let (_, acc) = chosen(an, solved);
-    acc.iter()
-        .copied()
-        .find(|&k| k > 1)
-        .or(acc.first().copied())
-        .unwrap_or(1)
-        .clamp(1, solved.len().max(1))
-        - 1
 }
 
 /// The reactions and the balancing moment (force) of position `s` by each
@@ -218,16 +206,6 @@ fn figures(
         });
     }
     Ok(out)
-}
-
-/// Whether the second sheet is drawn: the analysed position has force
-/// plans.
-pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
-    !solved.is_empty()
-        && solved[position(an, solved)]
-            .dynamics
-            .as_ref()
-            .is_some_and(|d| d.force_plans.is_some())
 }
 
 /// The second course sheet; `None` without force plans.

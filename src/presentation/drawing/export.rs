@@ -5,103 +5,16 @@
 //! them is the front door's (`crate::study`).
 
 use super::{Format, Sheet};
-use crate::error::{Error, Result};
+#[cfg(feature = "render")]
+pub use render::{pdf, pdf_book, png, tree};
+#[cfg(not(feature = "render"))]
+pub use unrendered::{pdf, pdf_book, png};
 use std::path::PathBuf;
 
 /// The manifest's file name.
 pub const MANIFEST: &str = "sheets.json";
 /// The PDF book's file name (`--format pdf`).
 pub const BOOK: &str = "sheets.pdf";
-
-/// A font database with the system's fonts (DejaVu on the project's machines).
-fn options() -> usvg::Options<'static> {
-    let mut o = usvg::Options::default();
-    o.fontdb_mut().load_system_fonts();
-    o.font_family = "DejaVu Sans".into();
-    o
-}
-
-/// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
-pub fn tree(svg: &str) -> Result<usvg::Tree> {
-    usvg::Tree::from_str(svg, &options())
-        .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
-}
-
-/// Render a sheet to PNG at `dpi`.
-pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    let size = tree.size();
-    // usvg sizes the sheet in CSS pixels (96 per inch).
-    let k = (dpi / 96.0) as f32;
-    let (pw, ph) = (
-        (size.width() * k).ceil() as u32,
-        (size.height() * k).ceil() as u32,
-    );
-    let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
-        .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
-    resvg::render(
-        &tree,
-        tiny_skia::Transform::from_scale(k, k),
-        &mut pixmap.as_mut(),
-    );
-    pixmap
-        .encode_png()
-        .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
-}
-
-/// Convert a sheet to PDF.
-pub fn pdf(svg: &str) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    svg2pdf::to_pdf(
-        &tree,
-        svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions::default(),
-    )
-    .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
-}
-
-/// Every sheet as a page of one PDF, each page the size of its sheet:
-/// each sheet becomes a form XObject (svg2pdf) drawn over its page.
-pub fn pdf_book(sheets: &[Sheet]) -> Result<Vec<u8>> {
-    use pdf_writer::{Content, Finish, Name, Pdf, Rect, Ref};
-    let mut alloc = Ref::new(1);
-    let catalog = alloc.bump();
-    let tree_id = alloc.bump();
-    let mut pdf = Pdf::new();
-    let mut pages = Vec::new();
-    let mut chunks = Vec::new();
-    for s in sheets {
-        let t = tree(&s.svg)?;
-        // CSS pixels (96 per inch) to points (72 per inch).
-        let (w, h) = (t.size().width() * 0.75, t.size().height() * 0.75);
-        let (chunk, id) = svg2pdf::to_chunk(&t, svg2pdf::ConversionOptions::default())
-            .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))?;
-        let mut map = std::collections::HashMap::new();
-        let chunk = chunk.renumber(|old| *map.entry(old).or_insert_with(|| alloc.bump()));
-        let svg_id = map[&id];
-        let (page, content) = (alloc.bump(), alloc.bump());
-        let mut c = Content::new();
-        c.transform([w, 0.0, 0.0, h, 0.0, 0.0]);
-        c.x_object(Name(b"S1"));
-        pdf.stream(content, &c.finish());
-        let mut p = pdf.page(page);
-        p.media_box(Rect::new(0.0, 0.0, w, h));
-        p.parent(tree_id);
-        p.contents(content);
-        p.resources().x_objects().pair(Name(b"S1"), svg_id);
-        p.finish();
-        pages.push(page);
-        chunks.push(chunk);
-    }
-    pdf.catalog(catalog).pages(tree_id);
-    pdf.pages(tree_id)
-        .kids(pages.iter().copied())
-        .count(pages.len() as i32);
-    for c in &chunks {
-        pdf.extend(c);
-    }
-    Ok(pdf.finish())
-}
 
 /// The manifest of a run: every file written, each sheet's title and
 /// scales.
@@ -133,4 +46,130 @@ pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
         doc["book"] = serde_json::json!(BOOK);
     }
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+}
+
+/// Rendering with resvg and svg2pdf (the `render` feature).
+#[cfg(feature = "render")]
+mod render {
+    use super::Sheet;
+    use crate::error::{Error, Result};
+
+    /// A font database with the system's fonts (DejaVu on the project's machines).
+    fn options() -> usvg::Options<'static> {
+        let mut o = usvg::Options::default();
+        o.fontdb_mut().load_system_fonts();
+        o.font_family = "DejaVu Sans".into();
+        o
+    }
+
+    /// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
+    pub fn tree(svg: &str) -> Result<usvg::Tree> {
+        usvg::Tree::from_str(svg, &options())
+            .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
+    }
+
+    /// Render a sheet to PNG at `dpi`.
+    pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
+        let tree = tree(svg)?;
+        let size = tree.size();
+        // usvg sizes the sheet in CSS pixels (96 per inch).
+        let k = (dpi / 96.0) as f32;
+        let (pw, ph) = (
+            (size.width() * k).ceil() as u32,
+            (size.height() * k).ceil() as u32,
+        );
+        let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
+            .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
+        resvg::render(
+            &tree,
+            tiny_skia::Transform::from_scale(k, k),
+            &mut pixmap.as_mut(),
+        );
+        pixmap
+            .encode_png()
+            .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
+    }
+
+    /// Convert a sheet to PDF.
+    pub fn pdf(svg: &str) -> Result<Vec<u8>> {
+        let tree = tree(svg)?;
+        svg2pdf::to_pdf(
+            &tree,
+            svg2pdf::ConversionOptions::default(),
+            svg2pdf::PageOptions::default(),
+        )
+        .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
+    }
+
+    /// Every sheet as a page of one PDF, each page the size of its sheet:
+    /// each sheet becomes a form XObject (svg2pdf) drawn over its page.
+    pub fn pdf_book(sheets: &[Sheet]) -> Result<Vec<u8>> {
+        use pdf_writer::{Content, Finish, Name, Pdf, Rect, Ref};
+        let mut alloc = Ref::new(1);
+        let catalog = alloc.bump();
+        let tree_id = alloc.bump();
+        let mut pdf = Pdf::new();
+        let mut pages = Vec::new();
+        let mut chunks = Vec::new();
+        for s in sheets {
+            let t = tree(&s.svg)?;
+            // CSS pixels (96 per inch) to points (72 per inch).
+            let (w, h) = (t.size().width() * 0.75, t.size().height() * 0.75);
+            let (chunk, id) = svg2pdf::to_chunk(&t, svg2pdf::ConversionOptions::default())
+                .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))?;
+            let mut map = std::collections::HashMap::new();
+            let chunk = chunk.renumber(|old| *map.entry(old).or_insert_with(|| alloc.bump()));
+            let svg_id = map[&id];
+            let (page, content) = (alloc.bump(), alloc.bump());
+            let mut c = Content::new();
+            c.transform([w, 0.0, 0.0, h, 0.0, 0.0]);
+            c.x_object(Name(b"S1"));
+            pdf.stream(content, &c.finish());
+            let mut p = pdf.page(page);
+            p.media_box(Rect::new(0.0, 0.0, w, h));
+            p.parent(tree_id);
+            p.contents(content);
+            p.resources().x_objects().pair(Name(b"S1"), svg_id);
+            p.finish();
+            pages.push(page);
+            chunks.push(chunk);
+        }
+        pdf.catalog(catalog).pages(tree_id);
+        pdf.pages(tree_id)
+            .kids(pages.iter().copied())
+            .count(pages.len() as i32);
+        for c in &chunks {
+            pdf.extend(c);
+        }
+        Ok(pdf.finish())
+    }
+}
+
+/// Without the `render` feature, PNG and PDF are refused by name.
+#[cfg(not(feature = "render"))]
+mod unrendered {
+    use super::Sheet;
+    use crate::error::{Error, Result};
+
+    fn refused(format: &str) -> Error {
+        Error::scene(
+            "format",
+            format!("{format} sheets need mechplan built with its `render` feature (on by default); this build writes SVG only"),
+        )
+    }
+
+    /// Refused: PNG needs the `render` feature.
+    pub fn png(_svg: &str, _dpi: f64) -> Result<Vec<u8>> {
+        Err(refused("PNG"))
+    }
+
+    /// Refused: PDF needs the `render` feature.
+    pub fn pdf(_svg: &str) -> Result<Vec<u8>> {
+        Err(refused("PDF"))
+    }
+
+    /// Refused: PDF needs the `render` feature.
+    pub fn pdf_book(_sheets: &[Sheet]) -> Result<Vec<u8>> {
+        Err(refused("PDF"))
+    }
 }

@@ -364,7 +364,7 @@ fn label_versions(
 /// "φ1 = 235.8°" or "s = 0.1 m".
 fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::input_words(an, s);
+        return crate::words::inputs::input_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
@@ -375,7 +375,7 @@ fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
 /// The drive at a position: "ω1 = −10 rad/s, ε1 = 0 rad/s²".
 fn drive_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::drive_words(an, s);
+        return crate::words::inputs::drive_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!(
