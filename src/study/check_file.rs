@@ -4,29 +4,11 @@
 //! asked, and the report as text or JSON with its exit status. The binary
 //! only parses its arguments.
 
-use super::{Study, studies};
+use super::Study;
+use super::studies::{self, CheckRequest};
 use crate::error::{Error, Result, in_file};
 use crate::grading::answer::{self, MAX_ANSWER_BYTES};
-use crate::kinematics::construction::PlanKind;
-use std::path::{Path, PathBuf};
-
-/// What the command line says besides the two files: each override
-/// replaces what the answer says.
-#[derive(Clone, Debug, Default)]
-pub struct CheckRequest {
-    /// The report as JSON (else text).
-    pub json: bool,
-    /// Where to write the overlay of a kinematic plan (`--svg`).
-    pub overlay: Option<PathBuf>,
-    /// The pencil's precision δ, mm (`--delta`), over the answer's own.
-    pub delta: Option<f64>,
-    /// The plan's scale μ (`--mu`), over the answer's own.
-    pub mu: Option<f64>,
-    /// Which plan the answer is (`--plan`), over the answer's own.
-    pub plan: Option<PlanKind>,
-    /// The position (`--position`, from 1), over the answer's own.
-    pub position: Option<usize>,
-}
+use std::path::Path;
 
 /// Check `answer` against `scene`: the report, and the exit status (0
 /// right, 1 wrong, 4 some items cannot be judged).
@@ -46,7 +28,7 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         super::files::write_atomically(out, overlay.as_bytes())?;
     }
     let text = if req.json {
-        super::pretty(&checked.to_json())
+        pretty(&checked.to_json())
     } else {
         checked.to_text()
     };
@@ -71,4 +53,11 @@ fn read_answer(path: &Path) -> Result<String> {
         .read_to_string(&mut text)
         .map_err(io)?;
     Ok(text)
+}
+
+/// Pretty JSON with a final newline.
+fn pretty(v: &serde_json::Value) -> String {
+    let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
+    t.push('\n');
+    t
 }

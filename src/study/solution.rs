@@ -2,7 +2,8 @@
 //! one at a time ([`Positions`], flat memory however many), each read by
 //! name ([`PositionResult::point`], [`PositionResult::link`]).
 
-use super::{CheckRequest, Checked, DrawRequest, Study, Written, files, write_sheets};
+use super::prepared::Watcher;
+use super::{DrawRequest, Study, Written, files, write_sheets};
 use crate::error::{Error, Result};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
@@ -156,20 +157,6 @@ impl<'a> Solution<'a> {
         notes.append(&mut written.notes);
         written.notes = notes;
         Ok(written)
-    }
-
-    /// Check a student's answer against these positions (see
-    /// [`Study::check_answer`]); `req` overrides what the answer says.
-    pub fn check_answer(
-        &self,
-        text: &str,
-        name: &str,
-        svg: bool,
-        req: &CheckRequest,
-    ) -> Result<Checked> {
-        let parsed = super::studies::parse_answer(text, name, svg, req)?;
-        super::studies::position_of(self.study, &parsed, name, req)?;
-        super::studies::check_parsed(self, parsed)
     }
 }
 
@@ -341,6 +328,29 @@ pub struct Positions<'a> {
 }
 
 impl Study {
+    /// Solve every position, all kept in memory (for a long sweep, see
+    /// [`Study::positions`], which keeps none).
+    pub fn solve(&self) -> Result<Solution<'_>> {
+        Ok(Solution::new(self, self.solved()?))
+    }
+
+    /// Every position solved, in order.
+    pub(super) fn solved(&self) -> Result<Vec<Solved>> {
+        let mut out = Vec::new();
+        self.each(|s| {
+            out.push(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// Draw the sheets (or the handout) into `req.dir`: the files written
+    /// and the notes for the user.
+    pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
+        req.validate()?;
+        self.solve()?.draw(req)
+    }
+
     /// Every position, solved as it is read (flat memory; see
     /// [`Positions`]).
     ///
@@ -370,7 +380,7 @@ impl Study {
 
 /// The worker of [`Positions`]: every position sent in order, then the
 /// error that stopped the run (none when the reader has gone).
-fn run_into(an: &Analysis, watcher: &super::Watcher, tx: &SyncSender<Result<Solved>>) {
+fn run_into(an: &Analysis, watcher: &Watcher, tx: &SyncSender<Result<Solved>>) {
     let w = watcher.get();
     if let Ok(n) = an.input_values().map(|v| v.len()) {
         w.start(n, "positions");

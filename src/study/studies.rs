@@ -4,11 +4,12 @@
 //! invariants ([`Invariants`]), the kinematic diagrams ([`Diagram`]), the
 //! work-precision report ([`PrecisionReport`]).
 
-use super::{CheckRequest, Solution, Study, Written, files, write_sheets};
+use super::{Solution, Study, Written, files, write_sheets};
 use crate::error::{Error, Result, in_file};
 use crate::grading::answer::{self, Answer, Reading};
 use crate::grading::forces::{self, ForceAnswer, ForceReport};
 use crate::grading::{self, Report};
+use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use crate::presentation::drawing::{self, DrawOptions, Format, Sheet};
 use crate::presentation::{precision as precision_text, studies as tables, verdict};
@@ -18,7 +19,76 @@ use crate::verification::precision;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+/// What the command line says besides the two files: each override
+/// replaces what the answer says.
+#[derive(Clone, Debug, Default)]
+pub struct CheckRequest {
+    /// The report as JSON (else text).
+    pub json: bool,
+    /// Where to write the overlay of a kinematic plan (`--svg`).
+    pub overlay: Option<PathBuf>,
+    /// The pencil's precision δ, mm (`--delta`), over the answer's own.
+    pub delta: Option<f64>,
+    /// The plan's scale μ (`--mu`), over the answer's own.
+    pub mu: Option<f64>,
+    /// Which plan the answer is (`--plan`), over the answer's own.
+    pub plan: Option<PlanKind>,
+    /// The position (`--position`, from 1), over the answer's own.
+    pub position: Option<usize>,
+}
+
 /// An answer read, before it is checked.
+impl Study {
+    /// Check a student's answer, JSON or SVG (`svg`: an SVG drawing by its
+    /// file's extension; a text starting with `<` is one too), its
+    /// problems naming `name` (the answer's file). A plan of velocities or
+    /// accelerations, or a force plan (`"plan": "force"`, or a drawing
+    /// stating μ_F).
+    pub fn check_answer(&self, text: &str, name: &str, svg: bool) -> Result<Checked> {
+        self.solve()?
+            .check_answer(text, name, svg, &CheckRequest::default())
+    }
+
+    /// The instant centres of every position (or of `position`, from 1).
+    pub fn centres(&self, position: Option<usize>) -> Result<Centres<'_>> {
+        self.solve()?.into_centres(position)
+    }
+
+    /// The phases and motion-law invariants of link `output` (its id;
+    /// default: the last group's last link): `tolerance` the dwell
+    /// tolerance E (a fraction of the stroke, 0 to 0.5), `min_dwell_deg`
+    /// the shortest dwell reported, `n` the grid's steps per revolution.
+    pub fn invariants(
+        &self,
+        output: Option<&str>,
+        tolerance: f64,
+        min_dwell_deg: f64,
+        n: usize,
+    ) -> Result<Invariants<'_>> {
+        invariants(self, output, tolerance, min_dwell_deg, n)
+    }
+
+    /// The kinematic diagrams of link `output` (or of point `point` along
+    /// its path) by the chord method over `n` intervals.
+    pub fn diagram(
+        &self,
+        output: Option<&str>,
+        point: Option<&str>,
+        n: usize,
+    ) -> Result<Diagram<'_>> {
+        diagram(self, output, point, n)
+    }
+
+    /// The work-precision report: every method's error against an
+    /// extended-precision reference, and its run time.
+    pub fn precision(
+        &self,
+        settings: &crate::verification::precision::Settings,
+    ) -> Result<PrecisionReport> {
+        precision(self, settings)
+    }
+}
+
 pub(super) enum Parsed {
     /// A plan of velocities or accelerations.
     Kinematic(Answer),
@@ -215,6 +285,20 @@ pub struct Centres<'a> {
 }
 
 impl<'a> Solution<'a> {
+    /// Check a student's answer against these positions (see
+    /// [`Study::check_answer`]); `req` overrides what the answer says.
+    pub fn check_answer(
+        &self,
+        text: &str,
+        name: &str,
+        svg: bool,
+        req: &CheckRequest,
+    ) -> Result<Checked> {
+        let parsed = parse_answer(text, name, svg, req)?;
+        position_of(self.study(), &parsed, name, req)?;
+        check_parsed(self, parsed)
+    }
+
     /// The instant centres (of `position`, from 1, or of every position).
     pub fn into_centres(self, position: Option<usize>) -> Result<Centres<'a>> {
         if let Some(p) = position {

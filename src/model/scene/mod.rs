@@ -325,13 +325,4 @@ impl Scene {
             _ => Err(Error::fields(r.issues)),
         }
     }
-
-    /// Read a scene file from disk.
-    pub fn from_path(path: &std::path::Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-            path: path.display().to_string(),
-            source,
-        })?;
-        Scene::from_json(&text)
-    }
 }
