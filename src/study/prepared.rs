@@ -132,18 +132,19 @@ impl Study {
     /// once, each with its JSON pointer.
     ///
     /// ```
+    /// // A four-bar: link 0 the frame (the first link), crank 1 turned
+    /// // at 10 rad/s from 45°, coupler 2, rocker 3; lengths in m.
     /// let study = mechplan::Study::from_json(r#"{
     ///   "mechplan": 1,
-    ///   "units": { "length": "mm", "angle": "deg" },
-    ///   "points": { "O": [0, 0], "A": [0, 40], "B": [120, 100], "C": [150, 0] },
-    ///   "links": [
-    ///     { "id": "0", "frame": true, "points": ["O", "C"] },
-    ///     { "id": "1", "points": ["O", "A"] },
-    ///     { "id": "2", "points": ["A", "B"] },
-    ///     { "id": "3", "points": ["B", "C"] }
-    ///   ],
-    ///   "input": { "link": "1", "pivot": "O", "omega": 10 },
-    ///   "want": { "velocity": true, "acceleration": true }
+    ///   "units": { "length": "m", "angle": "deg" },
+    ///   "points": { "O1": [0, 0], "A": [0.0707, 0.0707],
+    ///               "B": [0.3402, 0.2940], "O3": [0.4, 0] },
+    ///   "links": { "0": { "points": ["O1", "O3"] },
+    ///              "1": { "points": ["O1", "A"] },
+    ///              "2": { "points": ["A", "B"] },
+    ///              "3": { "points": ["O3", "B"] } },
+    ///   "lengths": { "O1-A": 0.1, "A-B": 0.35, "O3-B": 0.3 },
+    ///   "input": { "link": "1", "pivot": "O1", "angle": 45, "omega": 10 }
     /// }"#)?;
     /// assert_eq!(study.position_count()?, 1);
     /// # Ok::<(), mechplan::Error>(())

@@ -44,6 +44,18 @@ impl Study {
     /// problems naming `name` (the answer's file). A plan of velocities or
     /// accelerations, or a force plan (`"plan": "force"`, or a drawing
     /// stating μ_F).
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// // A student read v_B = 0.3 m/s off a velocity plan drawn at
+    /// // μ_v = 0.01 (m/s)/mm, at position 2.
+    /// let answer = r#"{ "plan": "velocity", "position": 2, "mu": 0.01,
+    ///                   "values": { "v_B": 0.3 } }"#;
+    /// let checked = study.check_answer(answer, "answer.json", false)?;
+    /// assert_eq!(checked.wrong(), 1); // v_B is 0.83 m/s there
+    /// assert!(checked.to_text().contains("WRONG"));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn check_answer(&self, text: &str, name: &str, svg: bool) -> Result<Checked> {
         self.solve()?
             .check_answer(text, name, svg, &CheckRequest::default())
