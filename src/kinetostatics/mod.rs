@@ -73,6 +73,10 @@ impl Balancing {
 /// The force analysis of one position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dynamics {
+    /// Every known load: inertia, then weights, then the external loads
+    /// in the order written ([`loads::loads`]), found once here for every
+    /// reader (the force plans' words, sheets and checks).
+    pub loads: Vec<Load>,
     /// Every link with mass, in the scene's order.
     pub inertia: Vec<Inertia>,
     /// Every revolute pair, in `Mechanism::revolutes`' order.
@@ -232,6 +236,7 @@ pub fn analyse(an: &Analysis, s: &Position, k: usize) -> Result<Option<Dynamics>
     };
     let lever = lever::check(an, s, &loads, &balancing, &floors)?;
     Ok(Some(Dynamics {
+        loads,
         force_plans,
         force_plans_diff,
         inertia,

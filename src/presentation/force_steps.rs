@@ -9,7 +9,7 @@ use crate::words::construction::Lang;
 use crate::format::num;
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep};
-use crate::kinetostatics::loads::{self, Load};
+use crate::kinetostatics::loads::Load;
 use crate::model::structure::AssurGroup;
 use crate::pipeline::Solved;
 use crate::words::forces::force_name;
@@ -67,7 +67,7 @@ pub fn force_steps(an: &Analysis, s: &Solved, k: usize, input: &str, lang: Lang)
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return String::new();
     };
-    let loads = loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let mut t = String::new();
     let title = match lang {
         Lang::En => "Force plans",

@@ -17,7 +17,7 @@ use super::{Judgement, Verdict};
 use crate::error::{Error, Result};
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
-use crate::kinetostatics::loads::{self, Load, Origin};
+use crate::kinetostatics::loads::{Load, Origin};
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
@@ -212,11 +212,7 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
 
 /// Check a force-plan answer against the analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
-    let Some((k, s)) = ans
-        .position
-        .checked_sub(1)
-        .and_then(|k| solved.get(k).map(|s| (k, s)))
-    else {
+    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Err(Error::scene(
             "/position",
             format!(
@@ -232,7 +228,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
             "the scene has no force plans to check against: it needs a dynamics object (and no class III group)",
         ));
     };
-    let right_loads = loads::loads(an, s, k);
+    let right_loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     // An SVG answer names its forces, not its links: the plan holding them.
     let mut ans = ans.clone();
     if ans.links.is_empty() {

@@ -136,7 +136,7 @@ fn figures(
     let lang = opt.lang;
     let pos = super::position_text(an, s, k, lang);
     let mut out = Vec::new();
-    if let Some(f) = forces::figure(an, s, k, opt, panels) {
+    if let Some(f) = forces::figure(an, s, opt, panels) {
         out.push(Figure {
             id: "forces".into(),
             caption: vec![
@@ -147,7 +147,7 @@ fn figures(
             scales: vec![("mu_l", f.mu_l)],
         });
     }
-    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let w = lever::words(lang);
     for input in 0..an.mech.scene.input_count() {
         let first = lever_at(an, s, &loads, input, Naming::Full, None)?;

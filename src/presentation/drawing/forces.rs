@@ -11,7 +11,6 @@ use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::ForcePlan;
-use crate::kinetostatics::loads;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces as names;
@@ -151,12 +150,11 @@ impl Columns {
     }
 }
 
-/// The figure of position `s` (the `k`-th, from 0) on a field of
-/// `field` mm; `None` without force plans.
+/// The figure of position `s` on a field of `field` mm; `None` without
+/// force plans.
 pub fn figure(
     an: &Analysis,
     s: &Solved,
-    k: usize,
     opt: &DrawOptions,
     field: (f64, f64),
 ) -> Option<Figure> {
@@ -166,7 +164,7 @@ pub fn figure(
     if plans.is_empty() {
         return None;
     }
-    let loads = loads::loads(an, s, k);
+    let loads = &d.loads;
     let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
     let scene = |i: usize| Scene {
         an,

@@ -364,7 +364,7 @@ pub(super) fn pending(
 ) -> crate::error::Result<Vec<super::Pending>> {
     use crate::kinematics::construction::Naming;
     use crate::kinetostatics::lever::lever_at;
-    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let pos = super::position_text(an, s, k, opt.lang);
     let w = words(opt.lang);
     let several = an.mech.scene.several_inputs();

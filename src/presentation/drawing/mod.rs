@@ -502,7 +502,7 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
             });
         }
         if asked(an, solved, "forces")
-            && let Some(f) = forces::figure(an, s, k, opt, field)
+            && let Some(f) = forces::figure(an, s, opt, field)
         {
             out.push(Pending {
                 name: format!("forces_{}", k + 1),
