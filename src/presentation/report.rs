@@ -1,5 +1,5 @@
-//! Results as the contract's JSON (`shared/spec/scene-format.md`, result
-//! section; additions in `docs/scene-format.md`), as a terminal table (the
+//! Results as the JSON of `docs/scene-format.md` ("The result files"),
+//! as a terminal table (the
 //! tables of [`super::tables`], the handout's too, written as text) and
 //! as the construction's steps.
 

@@ -1,5 +1,5 @@
-//! The scene file (contract: `shared/spec/scene-format.md`, extensions in
-//! `docs/scene-format.md`): reading and validating it completely, every
+//! The scene file (described completely in `docs/scene-format.md`):
+//! reading and validating it completely, every
 //! problem reported with its JSON pointer. All numbers are converted to SI
 //! (m, rad) here, so nothing downstream knows about units.
 //!
