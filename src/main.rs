@@ -7,7 +7,7 @@ mod terminal;
 use clap::Parser;
 use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
 use mechplan::Spool;
-use mechplan::{DrawRequest, Error, Results, Study};
+use mechplan::{CheckRequest, DrawRequest, Error, Results, Study};
 use std::path::Path;
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -101,7 +101,7 @@ fn command(c: Command) -> Result<u8, Error> {
             plan,
             position,
         } => {
-            let req = mechplan::study::CheckRequest {
+            let req = CheckRequest {
                 json: matches!(format, CheckFormat::Json),
                 overlay: svg,
                 delta,
@@ -109,10 +109,25 @@ fn command(c: Command) -> Result<u8, Error> {
                 plan,
                 position,
             };
-            let (report, status) = mechplan::study::check_file(&scene, &answer, &req)?;
+            let (report, status) = mechplan::check_file(&scene, &answer, &req)?;
             stdout(&report)?;
             return Ok(status);
         }
+        Command::Frenet {
+            output,
+            format,
+            count,
+        } => wrote(&mechplan::frenet(&output, format.into(), count)?)?,
+        study_command => studies(study_command)?,
+    }
+    Ok(0)
+}
+
+/// The studies of a scene: the precision report, the instant centres,
+/// the motion-law invariants, the kinematic diagrams (the other commands
+/// are `command`'s).
+fn studies(c: Command) -> Result<(), Error> {
+    match c {
         Command::Precision {
             scene,
             output,
@@ -132,8 +147,8 @@ fn command(c: Command) -> Result<u8, Error> {
                 .unwrap_or_else(|| "scene".into());
             let report = study(&scene)?.precision(&settings)?;
             match output {
-                Some(dir) => wrote(&report.write_into(&dir, &stem)?)?,
-                None => stdout(&report.to_markdown())?,
+                Some(dir) => wrote(&report.write_into(&dir, &stem)?),
+                None => stdout(&report.to_markdown()),
             }
         }
         Command::Centres {
@@ -146,7 +161,7 @@ fn command(c: Command) -> Result<u8, Error> {
             stdout(&match format {
                 Format::Json => terminal::pretty(&centres.to_json()),
                 Format::Table => centres.to_table(),
-            })?
+            })
         }
         Command::Invariants {
             scene,
@@ -161,7 +176,7 @@ fn command(c: Command) -> Result<u8, Error> {
             stdout(&match format {
                 Format::Json => terminal::pretty(&inv.to_json()),
                 Format::Table => inv.to_table(),
-            })?;
+            })
         }
         Command::Diagram {
             scene,
@@ -174,17 +189,16 @@ fn command(c: Command) -> Result<u8, Error> {
             let study = study(&scene)?;
             let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
             match output_dir {
-                Some(dir) => wrote(&d.write_into(&dir, format.into())?)?,
-                None => stdout(&d.to_table())?,
+                Some(dir) => wrote(&d.write_into(&dir, format.into())?),
+                None => stdout(&d.to_table()),
             }
         }
-        Command::Frenet {
-            output,
-            format,
-            count,
-        } => wrote(&mechplan::study::frenet(&output, format.into(), count)?)?,
+        // `command` runs the others itself.
+        Command::Solve { .. }
+        | Command::Draw { .. }
+        | Command::Check { .. }
+        | Command::Frenet { .. } => Ok(()),
     }
-    Ok(0)
 }
 
 /// The exit status: the command's own (0 success; `check`: 1 an item
