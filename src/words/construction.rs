@@ -4,6 +4,7 @@
 //! language is one `Catalogue` of phrases with named blanks (`{pole}`),
 //! filled by one rendering path.
 
+use super::fill;
 use crate::format::num;
 use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PlanLine, Why};
 
@@ -117,26 +118,6 @@ static RU: Catalogue = Catalogue {
     same: "{what}{link} = {what}{from}: звенья {link} и {from} образуют поступательную пару и вращаются вместе.",
     equations: "Векторные уравнения: {text}.",
 };
-
-/// A phrase with its blanks filled: each `{name}` by the value named so
-/// in `args` (one pass: a value is never filled again).
-fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
-    let mut out = String::with_capacity(phrase.len() + 16 * args.len());
-    let mut rest = phrase;
-    while let Some(open) = rest.find('{') {
-        out.push_str(&rest[..open]);
-        let close = open + rest[open..].find('}').expect("a closed blank");
-        let name = &rest[open + 1..close];
-        let value = args
-            .iter()
-            .find(|(n, _)| *n == name)
-            .unwrap_or_else(|| panic!("no value for the blank {{{name}}}"));
-        out.push_str(value.1);
-        rest = &rest[close + 1..];
-    }
-    out.push_str(rest);
-    out
-}
 
 fn dir(w: &Catalogue, d: &Dir) -> String {
     match d {
