@@ -233,7 +233,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
     let mut ans = ans.clone();
     if ans.links.is_empty() {
         let names: Vec<String> = ans.segments.iter().map(|x| x.1.clone()).collect();
-        if let Some((_, i)) = which_by_names(an, &right_loads, &fp.plans, &names) {
+        if let Some((_, i)) = which_by_names(an, right_loads, &fp.plans, &names) {
             ans.links = fp.plans[i]
                 .links
                 .iter()
@@ -274,7 +274,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         let (_, i) = which(an, &fp.plans, &ans.links).expect("the same structure");
         Ok(fp.plans[i].clone())
     };
-    let plan = at_scale(&right_loads)?;
+    let plan = at_scale(right_loads)?;
     // The typical mistakes, as whole plans at the student's scale.
     let mistakes: Vec<(&str, Vec<Load>)> = vec![
         (
@@ -347,7 +347,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
     ];
     for (kind, list, unit) in items {
         for (pointer, name, given) in list.iter() {
-            let (expected, tol, on_plan) = match expect(an, &right_loads, &plan, kind, name, ans) {
+            let (expected, tol, on_plan) = match expect(an, right_loads, &plan, kind, name, ans) {
                 Ok(e) => e,
                 Err(msg) => {
                     issues.push(issue(pointer, msg));
@@ -372,7 +372,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
             let diff = difference(kind, *given, expected);
             let mut also = None;
             for (j, (what, p)) in mistaken.iter().enumerate() {
-                let Ok((e2, t2, _)) = expect(an, &right_loads, p, kind, name, ans) else {
+                let Ok((e2, t2, _)) = expect(an, right_loads, p, kind, name, ans) else {
                     continue;
                 };
                 let apart = difference(kind, e2, expected) > tol;

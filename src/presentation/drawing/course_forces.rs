@@ -150,7 +150,7 @@ fn figures(
     let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let w = lever::words(lang);
     for input in 0..an.mech.scene.input_count() {
-        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let draw = |l: &crate::kinetostatics::lever::Lever| {
             let mu_f = lever::force_scale(l);
             let mut c = Canvas::default();
@@ -162,7 +162,7 @@ fn figures(
         });
         let lower = lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, lever_box);
         let rebuild = |mu: f64| {
-            let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+            let l = lever_at(an, s, loads, input, Naming::Full, Some(mu)).ok()?;
             let c = draw(&l);
             Some((l, c))
         };

@@ -170,7 +170,7 @@ pub fn figure(
         an,
         s,
         d,
-        loads: &loads,
+        loads,
         lang: opt.lang,
         tag: &tags[i],
     };
@@ -238,7 +238,7 @@ pub fn figure(
     }
     let (layout, mu_l, cs) = best?;
     let boxes = bounds(&cs);
-    let name = |f| names::force(&an.mech, &loads, f, opt.lang);
+    let name = |f| names::force(&an.mech, loads, f, opt.lang);
     let mut out = Canvas::default();
     let mut mu_f = Vec::new();
     for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {

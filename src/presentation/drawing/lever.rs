@@ -370,7 +370,7 @@ pub(super) fn pending(
     let several = an.mech.scene.several_inputs();
     let mut out = Vec::new();
     for input in 0..an.mech.scene.input_count() {
-        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let figure = |l: &Lever| {
             let mu_f = force_scale(l);
             let mut c = Canvas::default();
@@ -389,7 +389,7 @@ pub(super) fn pending(
             });
             let lower = super::lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, field);
             let rebuild = |mu: f64| {
-                let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+                let l = lever_at(an, s, loads, input, Naming::Full, Some(mu)).ok()?;
                 let f = figure(&l);
                 Some((l, f))
             };
