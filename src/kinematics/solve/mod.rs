@@ -42,6 +42,12 @@ pub struct Analysis {
     /// show the cross-check catches it; never set by mechplan itself.
     #[doc(hidden)]
     pub corrupt: Option<Corruption>,
+    /// Run the twins kept as references (tests and benches only): route
+    /// (a) interpreted (`PositionSolver`, `contour::solve`) instead of
+    /// compiled for the mechanism ([`crate::kinematics::compiled`]), as
+    /// before issue 24: the same results to the bit, the old cost.
+    #[doc(hidden)]
+    pub reference: bool,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
@@ -138,6 +144,7 @@ impl Analysis {
             order,
             plans,
             corrupt: None,
+            reference: false,
             drafting,
             mu_l,
         })

@@ -8,6 +8,7 @@ use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Motion;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
+use crate::kinematics::compiled::{Program, State};
 use crate::kinematics::construction::build_plans;
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::InputSpec;
@@ -75,6 +76,20 @@ impl Analysis {
         let values = self.input_coords()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
+        // Route (a) compiled for the mechanism (issue 24): the rates at
+        // every position, and on the fast path its positions in order.
+        // The full path finds them by the interpreted solver, whose
+        // tracked state route (b)'s probes of the way start from.
+        let mut route = Route {
+            program: match self.reference {
+                false => Some(Program::new(m, &self.structure, &self.need)?),
+                true => None,
+            },
+            state: None,
+        };
+        if !self.plans {
+            route.state = route.program.as_ref().map(Program::state);
+        }
         // Route (b) follows the positions where the plans are built; the
         // fast path evaluates its equations at route (a)'s answers.
         let mut cs = self
@@ -116,7 +131,8 @@ impl Analysis {
                     residuals: eqs.as_ref(),
                 };
                 let chunk = (from, chunk);
-                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &checks, bar, &mut |s| {
+                let ps = (&mut ps, &mut route);
+                self.run_chunk(chunk, rounding, ps, &mut cs, &checks, bar, &mut |s| {
                     self.same_orientation(&mut orientation, &s)?;
                     if let Some((probe, last)) = &mut motion {
                         self.continuous(probe, last, &s)?;
@@ -134,7 +150,7 @@ impl Analysis {
         &'a self,
         (from, values): (usize, &[Coords]),
         rounding: &[Coords],
-        ps: &mut PositionSolver,
+        (ps, route): (&mut PositionSolver, &mut Route<'a>),
         cs: &mut Option<ConstraintSolver<'a>>,
         checks: &Checks,
         bar: &indicatif::ProgressBar,
@@ -144,7 +160,11 @@ impl Analysis {
         let mut stop = None;
         for (i, (&q, &q_rounding)) in values.iter().zip(rounding).enumerate() {
             let t0 = Clock::now();
-            let config = match ps.solve_coords(q) {
+            let config = match (&route.program, &mut route.state) {
+                (Some(prog), Some(st)) => prog.positions_coords(st, q).map(|()| st.config.clone()),
+                _ => ps.solve_coords(q),
+            };
+            let config = match config {
                 Ok(c) => c,
                 Err(e) => {
                     stop = Some(e);
@@ -174,7 +194,8 @@ impl Analysis {
                 constraint_time,
             });
         }
-        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, checks)) {
+        let program = route.program.as_ref();
+        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, checks, program)) {
             f(s?)?;
         }
         match stop {
@@ -363,16 +384,23 @@ impl Analysis {
     }
 
     /// One placed position: both routes' rates, the plans, the cross-check
-    /// (on the fast path: route (a)'s rates and their check).
-    fn finish(&self, p: &Placed, checks: &Checks) -> Result<Solved> {
+    /// (on the fast path: route (a)'s rates and their check); route (a)
+    /// by `program` (`None`: interpreted, the reference).
+    fn finish(&self, p: &Placed, checks: &Checks, program: Option<&Program>) -> Result<Solved> {
         let m = &self.mech;
         let rates = self.input_rates();
         let (q, mut config) = (p.q, p.config.clone());
         let drives = self.drives_at(&q);
         let w = drives.len();
         let t0 = Clock::now();
-        let run = |d: Drives, order: Order| {
-            contour::solve(m, &self.structure, &self.need, &config, d, order)
+        let mut st = program.map(|prog| {
+            let mut st = prog.state();
+            st.config.clone_from(&config);
+            (prog, st)
+        });
+        let mut run = |d: Drives, order: Order| match st.as_mut() {
+            Some((prog, st)) => prog.rates(st, d, order).map(|()| st.motion.clone()),
+            None => contour::solve(m, &self.structure, &self.need, &config, d, order),
         };
         let none = || vec![None; m.links.len()];
         let (mut motion, mut analogue) = (none(), none());
@@ -507,6 +535,14 @@ impl Analysis {
             }
         }
     }
+}
+
+/// Route (a) of a run: the program compiled for the mechanism (`None`:
+/// the interpreted reference, [`Analysis::reference`]), and on the fast
+/// path the state its positions are tracked in.
+struct Route<'a> {
+    program: Option<Program<'a>>,
+    state: Option<State>,
 }
 
 /// The checks of a run, made once: the scene with its data changed, and
