@@ -217,7 +217,19 @@ impl Study {
     /// costs no more memory than a short one; nothing is written if a
     /// position is refused.
     pub fn write_results(&self, style: Results, out: Option<&Path>) -> Result<()> {
-        let an = &self.analysis;
+        // A table or CSV prints no plan: the plans are checked only, built
+        // by the sweep's kernel (`Analysis::keep_plans`).
+        let lean;
+        let study = match style {
+            Results::Table | Results::Csv if self.analysis.keep_plans => {
+                let mut analysis = self.analysis.clone();
+                analysis.keep_plans = false;
+                lean = Study { analysis };
+                &lean
+            }
+            _ => self,
+        };
+        let an = &study.analysis;
         let style = match style {
             Results::Table => report::Style::Table,
             Results::Json => report::Style::Json,
@@ -228,7 +240,7 @@ impl Study {
         let write = |out: &mut dyn FnMut(&str) -> Result<()>| -> Result<()> {
             out(&report::text_head(an, style))?;
             let mut count = 0;
-            self.each(|s| {
+            study.each(|s| {
                 out(&report::text_position(an, style, count, &s))?;
                 count += 1;
                 Ok(())

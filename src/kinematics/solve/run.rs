@@ -9,7 +9,7 @@ use crate::kinematics::analytic::Motion;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
 use crate::kinematics::compiled::{Program, State};
-use crate::kinematics::construction::build_plans;
+use crate::kinematics::construction::{Kernel, Plans, build_plans, build_plans_numbers};
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::model::scene::InputSpec;
 use crate::verification::crosscheck::{ChangedData, Costs, Residuals};
@@ -36,6 +36,11 @@ struct Placed<'a> {
     /// Time of finding the position, seconds, by route (a) and route (b).
     contour_time: f64,
     constraint_time: f64,
+    /// Where the result keeps no plans: the sweep kernel's plans of the
+    /// position, numbers only, for the cross-check (`None` where it
+    /// refused: the one-position build then gives the position's error),
+    /// and their time, seconds.
+    kernel: Option<(Option<Plans>, f64)>,
 }
 
 impl Analysis {
@@ -86,7 +91,13 @@ impl Analysis {
                 true => None,
             },
             state: None,
+            kernel: None,
         };
+        // Plans only checked (a result that keeps none), by the sweep's
+        // kernel where asked (`sweep_kernel`): in the order of the positions.
+        if self.plans && !self.keep_plans && !self.reference && self.sweep_kernel {
+            route.kernel = Some(Kernel::new());
+        }
         if !self.plans {
             route.state = route.program.as_ref().map(Program::state);
         }
@@ -184,6 +195,10 @@ impl Analysis {
                 }
             }
             let constraint_time = t1.elapsed().as_secs_f64();
+            let kernel = match (&mut route.kernel, self.order) {
+                (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, q, order)),
+                _ => None,
+            };
             placed.push(Placed {
                 index: from + i,
                 q,
@@ -192,6 +207,7 @@ impl Analysis {
                 constraint: cs.clone(),
                 contour_time,
                 constraint_time,
+                kernel,
             });
         }
         let program = route.program.as_ref();
@@ -453,17 +469,21 @@ impl Analysis {
         let other = cs.solve_rates_of(&rates, self.order.unwrap_or(Order::Velocity))?;
         let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
         let t2 = Clock::now();
+        // Where the result keeps no plans they are only checked: built
+        // numbers only (the same plans to the bit), or by the sweep's
+        // kernel (`Analysis::sweep_kernel`; where it refused, on their own).
+        let lean = !self.keep_plans && !self.reference;
+        let checked = p.kernel.as_ref().and_then(|k| k.0.as_ref());
+        let (setup, d) = (self.setup(), self.drafting);
         let plans = match self.order {
-            Some(order) => Some(build_plans(
-                &self.setup(),
-                &config,
-                drives,
-                order,
-                self.drafting,
-            )?),
-            None => None,
+            Some(order) if checked.is_none() => Some(match lean {
+                true => build_plans_numbers(&setup, &config, drives, order, d)?,
+                false => build_plans(&setup, &config, drives, order, d)?,
+            }),
+            _ => None,
         };
-        let plan_time = t2.elapsed().as_secs_f64();
+        let (plans, lean) = if lean { (None, plans) } else { (plans, None) };
+        let plan_time = t2.elapsed().as_secs_f64() + p.kernel.as_ref().map_or(0.0, |k| k.1);
         let first = drives.first();
         let mut solved = Solved {
             q: first.q,
@@ -485,10 +505,33 @@ impl Analysis {
             plan_time,
             conditioning: cs.conditioning,
         };
+        let plans = solved.plans.as_ref().or(lean.as_ref()).or(checked);
         solved.check =
-            Some(self.cross_check(&solved, &other, costs, p.q_rounding, checks.changed)?);
+            Some(self.cross_check(&solved, &other, plans, costs, p.q_rounding, checks.changed)?);
         solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
         Ok(solved)
+    }
+
+    /// The plans of a position by the sweep's kernel `k`, numbers only (as
+    /// the one-position build's, [`Kernel`]), and their time; `None` where
+    /// it refuses.
+    fn kernel_plans(
+        &self,
+        k: &mut Kernel,
+        config: &Configuration,
+        q: Coords,
+        order: Order,
+    ) -> (Option<Plans>, f64) {
+        let t = Clock::now();
+        let drives = self.drives_at(&q);
+        let plans = k
+            .build(&self.setup(), config, drives, order, self.drafting)
+            .ok()
+            .map(|(v, a)| Plans {
+                velocity: v.clone(),
+                acceleration: a.cloned(),
+            });
+        (plans, t.elapsed().as_secs_f64())
     }
 
     /// Put the deliberate error of [`Analysis::corrupt`] (tests only) into
@@ -539,10 +582,12 @@ impl Analysis {
 
 /// Route (a) of a run: the program compiled for the mechanism (`None`:
 /// the interpreted reference, [`Analysis::reference`]), and on the fast
-/// path the state its positions are tracked in.
+/// path the state its positions are tracked in; and the sweep's
+/// construction kernel where the result keeps no plans.
 struct Route<'a> {
     program: Option<Program<'a>>,
     state: Option<State>,
+    kernel: Option<Kernel>,
 }
 
 /// The checks of a run, made once: the scene with its data changed, and
