@@ -582,10 +582,13 @@ fn command(cr: &mut Criterion) {
     // variant once a round, the median of the times and of the rounds'
     // ratios to the group's first: a load that comes and goes slows all
     // alike).
-    const ROUNDS: usize = 7;
+    const ROUNDS: usize = 15;
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!();
-    println!("The command per position ({n} positions of the six-link), load average {load}");
+    println!(
+        "The command per position ({n} positions of the six-link, {} threads), load average {load}",
+        rayon::current_num_threads()
+    );
     for (group, variants) in &groups {
         let mut rounds: Vec<Vec<f64>> = Vec::new();
         for _ in 0..ROUNDS {
