@@ -2,6 +2,7 @@
 //! routes, then each one's rates, plans and cross-check.
 
 use super::{Analysis, Position, RUN_CHUNK, Solved};
+use crate::kinematics::solve::Motions;
 use crate::error::{Error, Result};
 use crate::geom::Pose;
 use crate::geom::wrap_pi;
@@ -438,20 +439,14 @@ impl Analysis {
         }
         let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
         self.corrupt(&mut config, &mut motion);
+        let motions = Motions {
+            motion,
+            analogue,
+            more_analogues,
+            mixed,
+        };
         let Some(cs) = &p.constraint else {
-            let first = drives.first();
-            let mut solved = Solved::from(Position {
-                q: first.q,
-                rate: first.rate,
-                rate2: first.rate2,
-                drives,
-                config,
-                motion,
-                analogue,
-                more_analogues,
-                mixed,
-                plans: None,
-            });
+            let mut solved = Solved::from(Position::new(drives, config, motions, None));
             let eqs = checks.residuals.expect("the fast path's equations");
             solved.check = Some(self.residual_check(
                 &solved,
@@ -483,19 +478,7 @@ impl Analysis {
         };
         let (plans, lean) = if lean { (None, plans) } else { (plans, None) };
         let plan_time = t2.elapsed().as_secs_f64() + p.kernel.as_ref().map_or(0.0, |k| k.1);
-        let first = drives.first();
-        let mut solved = Solved::from(Position {
-            q: first.q,
-            rate: first.rate,
-            rate2: first.rate2,
-            drives,
-            config,
-            motion,
-            analogue,
-            more_analogues,
-            mixed,
-            plans,
-        });
+        let mut solved = Solved::from(Position::new(drives, config, motions, plans));
         let costs = Costs {
             contour_time,
             constraint_time,

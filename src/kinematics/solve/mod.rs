@@ -234,6 +234,41 @@ pub struct Slide {
     pub s_qqs: Vec<Vec<f64>>,
 }
 
+/// Route (a)'s answers at a position besides its configuration: the
+/// motions, and the transfer functions of each input and each pair of
+/// inputs (see [`Position`]'s fields of the same names).
+#[derive(Clone, Debug, Default)]
+pub struct Motions {
+    /// The links' motions at the inputs' rates.
+    pub motion: Vec<Option<Motion>>,
+    /// At unit rate of the first input, the others standing.
+    pub analogue: Vec<Option<Motion>>,
+    /// At unit rate of each further input.
+    pub more_analogues: Vec<Vec<Option<Motion>>>,
+    /// At unit rates of each pair of inputs.
+    pub mixed: Vec<Vec<Option<Motion>>>,
+}
+
+impl Position {
+    /// A position of its inputs' `drives`, its configuration, route (a)'s
+    /// motions and (where built) its plans.
+    pub fn new(drives: Drives, config: Configuration, m: Motions, plans: Option<Plans>) -> Position {
+        let first = drives.first();
+        Position {
+            q: first.q,
+            rate: first.rate,
+            rate2: first.rate2,
+            drives,
+            config,
+            motion: m.motion,
+            analogue: m.analogue,
+            more_analogues: m.more_analogues,
+            mixed: m.mixed,
+            plans,
+        }
+    }
+}
+
 impl Position {
     /// The transfer functions of input `i`: route (a) at unit rate of
     /// input i, the others standing.
