@@ -10,142 +10,69 @@ use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PlanLine, Why};
 
 pub use crate::lang::Lang;
 
-impl Lang {
-    fn words(self) -> &'static Catalogue {
-        match self {
-            Lang::En => &EN,
-            Lang::Uk => &UK,
-            Lang::Ru => &RU,
-        }
-    }
+/// The construction's phrases in `lang`.
+fn words(lang: Lang) -> &'static Phrases {
+    &super::catalogue(lang).construction
 }
 
 /// The phrases of one language. Blanks in braces are filled by [`fill`].
-struct Catalogue {
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Phrases {
     /// Units of the velocity and the acceleration plan: values, rates.
-    unit: [&'static str; 2],
-    rate_unit: [&'static str; 2],
+    unit: [String; 2],
+    rate_unit: [String; 2],
     /// Senses of a rate: positive, negative, zero.
-    sense: [&'static str; 3],
+    sense: [String; 3],
     /// Directions: `{p}`, `{q}`; `{link}`; `{v}`, `{w}`; `{seg}`, `{w}`.
-    toward: &'static str,
-    guide: &'static str,
-    turned: &'static str,
-    perp_sense: &'static str,
+    toward: String,
+    guide: String,
+    turned: String,
+    perp_sense: String,
     /// Steps.
-    pole: &'static str,
-    lay_off: &'static str,
-    intersect: &'static str,
-    similar: &'static str,
-    divide: &'static str,
-    coincide: &'static str,
+    pole: String,
+    lay_off: String,
+    intersect: String,
+    similar: String,
+    divide: String,
+    coincide: String,
     /// Why a point coincides: at the pole; `{link}` translates.
-    fixed: &'static str,
-    translates: &'static str,
-    measure: &'static str,
+    fixed: String,
+    translates: String,
+    measure: String,
     /// How a relative segment turns its link.
-    turns: &'static str,
-    same: &'static str,
-    equations: &'static str,
+    turns: String,
+    same: String,
+    equations: String,
 }
 
-static EN: Catalogue = Catalogue {
-    unit: ["m/s", "m/s²"],
-    rate_unit: ["rad/s", "rad/s²"],
-    sense: ["counter-clockwise", "clockwise", "zero"],
-    toward: "∥ {p}{q}, from {p} toward {q}",
-    guide: "∥ the guide of link {link}",
-    turned: "{v} turned by 90° in the sense of {w}",
-    perp_sense: "⊥ {seg} in the sense of {w}",
-    pole: "Choose the pole {pole}: the points of the frame lie there{fixed}; {mu} = {scale} ({unit})/mm.",
-    lay_off: "From {from} lay off {from}{to} = {what}/{mu} = {value} / {scale} = {mm} mm, {dir}.",
-    intersect: "Through {a} draw a line {dir_a}; through {b} a line {dir_b}; they meet at {out} (at {angle}°).",
-    similar: "By the similarity theorem build on {a}{b} the triangle {plan_fig} similar to {fig} of link {link}, the letters in the same order: point {out}.",
-    divide: "Divide {a}{b} as {x} divides {f0}{f1} ({a}{out} = {ratio} · {a}{b}): point {out}.",
-    coincide: "Point {out} coincides with {with}: {why}.",
-    fixed: "a point of the frame lies at the pole",
-    translates: "link {link} translates",
-    measure: "Measure {seg} = {mm} mm: {quantity} = {seg}·{mu} = {value} {unit}",
-    turns: "segment {seg} carried to {x} turns {j}{x} about {j} {sense}",
-    same: "{what}{link} = {what}{from}: links {link} and {from} form a prismatic pair and turn together.",
-    equations: "Vector equations: {text}.",
-};
-
-static UK: Catalogue = Catalogue {
-    unit: ["м/с", "м/с²"],
-    rate_unit: ["рад/с", "рад/с²"],
-    sense: [
-        "проти годинникової стрілки",
-        "за годинниковою стрілкою",
-        "нуль",
-    ],
-    toward: "∥ {p}{q}, від {p} до {q}",
-    guide: "∥ напрямній ланки {link}",
-    turned: "{v}, повернутий на 90° у напрямку {w}",
-    perp_sense: "⊥ {seg} у напрямку {w}",
-    pole: "Обираємо полюс {pole}: у ньому лежать точки стояка{fixed}; {mu} = {scale} ({unit})/мм.",
-    lay_off: "Від {from} відкладаємо {from}{to} = {what}/{mu} = {value} / {scale} = {mm} мм, {dir}.",
-    intersect: "Через {a} проводимо пряму {dir_a}; через {b} — пряму {dir_b}; вони перетинаються в точці {out} (під кутом {angle}°).",
-    similar: "За теоремою подібності будуємо на {a}{b} трикутник {plan_fig}, подібний до {fig} ланки {link}, з тим самим порядком літер: точка {out}.",
-    divide: "Ділимо {a}{b} так, як {x} ділить {f0}{f1} ({a}{out} = {ratio} · {a}{b}): точка {out}.",
-    coincide: "Точка {out} збігається з {with}: {why}.",
-    fixed: "точки стояка лежать у полюсі",
-    translates: "ланка {link} рухається поступально",
-    measure: "Вимірюємо {seg} = {mm} мм: {quantity} = {seg}·{mu} = {value} {unit}",
-    turns: "відрізок {seg}, перенесений у точку {x}, повертає {j}{x} навколо {j} {sense}",
-    same: "{what}{link} = {what}{from}: ланки {link} і {from} утворюють поступальну пару й обертаються разом.",
-    equations: "Векторні рівняння: {text}.",
-};
-
-static RU: Catalogue = Catalogue {
-    unit: ["м/с", "м/с²"],
-    rate_unit: ["рад/с", "рад/с²"],
-    sense: ["против часовой стрелки", "по часовой стрелке", "ноль"],
-    toward: "∥ {p}{q}, от {p} к {q}",
-    guide: "∥ направляющей звена {link}",
-    turned: "{v}, повёрнутый на 90° в сторону {w}",
-    perp_sense: "⊥ {seg} в сторону {w}",
-    pole: "Выбираем полюс {pole}: в нём лежат точки стойки{fixed}; {mu} = {scale} ({unit})/мм.",
-    lay_off: "От {from} откладываем {from}{to} = {what}/{mu} = {value} / {scale} = {mm} мм, {dir}.",
-    intersect: "Через {a} проводим прямую {dir_a}; через {b} — прямую {dir_b}; они пересекаются в точке {out} (под углом {angle}°).",
-    similar: "По теореме подобия строим на {a}{b} треугольник {plan_fig}, подобный {fig} звена {link}, с тем же порядком букв: точка {out}.",
-    divide: "Делим {a}{b} так, как {x} делит {f0}{f1} ({a}{out} = {ratio} · {a}{b}): точка {out}.",
-    coincide: "Точка {out} совпадает с {with}: {why}.",
-    fixed: "точки стойки лежат в полюсе",
-    translates: "звено {link} движется поступательно",
-    measure: "Измеряем {seg} = {mm} мм: {quantity} = {seg}·{mu} = {value} {unit}",
-    turns: "отрезок {seg}, перенесённый в точку {x}, поворачивает {j}{x} вокруг {j} {sense}",
-    same: "{what}{link} = {what}{from}: звенья {link} и {from} образуют поступательную пару и вращаются вместе.",
-    equations: "Векторные уравнения: {text}.",
-};
-
-fn dir(w: &Catalogue, d: &Dir) -> String {
+fn dir(w: &Phrases, d: &Dir) -> String {
     match d {
         Dir::Perp(seg) => format!("⊥ {seg}"),
         Dir::Along(seg) => format!("∥ {seg}"),
-        Dir::Toward(p, q) => fill(w.toward, &[("p", p), ("q", q)]),
-        Dir::Guide(link) => fill(w.guide, &[("link", link)]),
-        Dir::Turned(v, r) => fill(w.turned, &[("v", v), ("w", r)]),
-        Dir::PerpSense(seg, r) => fill(w.perp_sense, &[("seg", seg), ("w", r)]),
+        Dir::Toward(p, q) => fill(&w.toward, &[("p", p), ("q", q)]),
+        Dir::Guide(link) => fill(&w.guide, &[("link", link)]),
+        Dir::Turned(v, r) => fill(&w.turned, &[("v", v), ("w", r)]),
+        Dir::PerpSense(seg, r) => fill(&w.perp_sense, &[("seg", seg), ("w", r)]),
     }
 }
 
-fn sense(w: &Catalogue, x: f64) -> &'static str {
+fn sense(w: &Phrases, x: f64) -> &str {
     if x > 0.0 {
-        w.sense[0]
+        &w.sense[0]
     } else if x < 0.0 {
-        w.sense[1]
+        &w.sense[1]
     } else {
-        w.sense[2]
+        &w.sense[2]
     }
 }
 
 /// The sentence of step `i` of `plan`.
 pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
-    let w = l.words();
+    let w = words(l);
     let (unit, rate_unit, mu) = match plan.kind {
-        PlanKind::Velocity => (w.unit[0], w.rate_unit[0], "μ_v"),
-        PlanKind::Acceleration => (w.unit[1], w.rate_unit[1], "μ_a"),
+        PlanKind::Velocity => (&w.unit[0], &w.rate_unit[0], "μ_v"),
+        PlanKind::Acceleration => (&w.unit[1], &w.rate_unit[1], "μ_a"),
     };
     let s = Speaker {
         w,
@@ -176,7 +103,7 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             figure,
             link,
         } => fill(
-            w.similar,
+            &w.similar,
             &[
                 ("a", &s.p(*a)),
                 ("b", &s.p(*b)),
@@ -193,7 +120,7 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             figure,
             ratio,
         } => fill(
-            w.divide,
+            &w.divide,
             &[
                 ("a", &s.p(*a)),
                 ("b", &s.p(*b)),
@@ -207,10 +134,10 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
         Op::Coincide { out, with, why } => {
             let why = match why {
                 Why::Fixed => w.fixed.to_string(),
-                Why::Translates(k) => fill(w.translates, &[("link", k)]),
+                Why::Translates(k) => fill(&w.translates, &[("link", k)]),
             };
             fill(
-                w.coincide,
+                &w.coincide,
                 &[("out", &s.p(*out)), ("with", &s.p(*with)), ("why", &why)],
             )
         }
@@ -227,17 +154,17 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             from_link,
             what,
         } => fill(
-            w.same,
+            &w.same,
             &[("what", what), ("link", link), ("from", from_link)],
         ),
-        Op::Equation { text } => fill(w.equations, &[("text", text)]),
+        Op::Equation { text } => fill(&w.equations, &[("text", text)]),
     }
 }
 
 /// What a plan's sentences share: the language's phrases, the plan, its
 /// units and its scale as written.
 struct Speaker<'a> {
-    w: &'static Catalogue,
+    w: &'static Phrases,
     plan: &'a Plan,
     unit: &'static str,
     rate_unit: &'static str,
@@ -263,7 +190,7 @@ impl Speaker<'_> {
             format!(" ({})", fixed.join(", "))
         };
         fill(
-            self.w.pole,
+            &self.w.pole,
             &[
                 ("pole", &self.p(0)),
                 ("fixed", &fixed),
@@ -276,7 +203,7 @@ impl Speaker<'_> {
 
     fn lay_off(&self, (from, to): (usize, usize), what: &str, value: f64, d: &Dir) -> String {
         fill(
-            self.w.lay_off,
+            &self.w.lay_off,
             &[
                 ("from", &self.p(from)),
                 ("to", &self.p(to)),
@@ -294,7 +221,7 @@ impl Speaker<'_> {
         let ang = sin_angle.clamp(-1.0, 1.0).asin().to_degrees();
         let (a, b) = (&lines[0], &lines[1]);
         fill(
-            self.w.intersect,
+            &self.w.intersect,
             &[
                 ("a", &self.p(a.through)),
                 ("dir_a", &dir(self.w, &a.dir)),
@@ -320,7 +247,7 @@ impl Speaker<'_> {
         let w = self.w;
         let seg = format!("{}{}", self.p(from), self.p(to));
         let base = fill(
-            w.measure,
+            &w.measure,
             &[
                 ("seg", &seg),
                 ("mm", &self.between(from, to)),
@@ -344,7 +271,7 @@ impl Speaker<'_> {
             return format!("{value}.");
         }
         let args = [("seg", &*seg), ("x", x), ("j", j), ("sense", sense(w, *r))];
-        let why = fill(w.turns, &args);
+        let why = fill(&w.turns, &args);
         format!("{value}, {} ({why}).", sense(w, *r))
     }
 }
@@ -356,23 +283,24 @@ mod tests {
     /// Every blank of every language's phrases is one the rendering fills.
     #[test]
     fn catalogues_fill() {
-        for c in [&EN, &UK, &RU] {
+        for lang in Lang::ALL {
+            let c = words(lang);
             let phrases = [
-                c.toward,
-                c.guide,
-                c.turned,
-                c.perp_sense,
-                c.pole,
-                c.lay_off,
-                c.intersect,
-                c.similar,
-                c.divide,
-                c.coincide,
-                c.translates,
-                c.measure,
-                c.turns,
-                c.same,
-                c.equations,
+                &c.toward,
+                &c.guide,
+                &c.turned,
+                &c.perp_sense,
+                &c.pole,
+                &c.lay_off,
+                &c.intersect,
+                &c.similar,
+                &c.divide,
+                &c.coincide,
+                &c.translates,
+                &c.measure,
+                &c.turns,
+                &c.same,
+                &c.equations,
             ];
             let names = [
                 "p", "q", "link", "v", "w", "seg", "pole", "fixed", "mu", "scale", "unit", "from",

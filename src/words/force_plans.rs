@@ -18,132 +18,55 @@ use kurbo::Vec2;
 use std::fmt::Write as _;
 
 /// The phrases of one language.
-pub struct Catalogue {
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Phrases {
     /// The steps' heading and the position's word.
-    pub title: &'static str,
+    pub title: String,
     /// "position".
-    pub position: &'static str,
+    pub position: String,
     /// "link", "links" (one, several).
-    links: [&'static str; 2],
+    links: [String; 2],
     /// Units: N, mm, N·m, N/mm.
-    newton: &'static str,
-    mm: &'static str,
-    newton_metre: &'static str,
-    per_mm: &'static str,
+    newton: String,
+    mm: String,
+    newton_metre: String,
+    per_mm: String,
     /// `{formula}`, `{links}`.
-    group: &'static str,
+    group: String,
     /// `{ids}`.
-    input_link: &'static str,
+    input_link: String,
     /// `{at}`, `{what}`, `{f}`, `{value}`, `{n}`.
-    moment: &'static str,
+    moment: String,
     /// `{what}`, `{f}`, `{value}`, `{n}`.
-    projection: &'static str,
+    projection: String,
     /// `{from}`, `{f}`, `{val}`, `{n}`, `{len}`, `{mm}`, `{dir}`, `{to}`.
-    lay_off: &'static str,
+    lay_off: String,
     /// `{through}`, `{f}`, `{dir}`.
-    line: &'static str,
+    line: String,
     /// `{out}`, `{deg}`.
-    intersect: &'static str,
+    intersect: String,
     /// `{a}`, `{b}`, `{l}`, `{mm}`, `{f}`, `{mu}`, `{val}`, `{bound}`, `{n}`, `{dir}`.
-    measure: &'static str,
+    measure: String,
     /// `{what}`, `{value}`, `{nm}`, `{f}`, `{p}`: the couple of a guide
     /// with its force placed, and alone.
-    couple_at: &'static str,
-    couple_alone: &'static str,
+    couple_at: String,
+    couple_alone: String,
     /// `{id}`, `{kind}`, `{b}`, `{value}`, `{unit}`, `{sense}`.
-    balancing: &'static str,
+    balancing: String,
     /// The balancing moment and force, as `{kind}` says them.
-    kind: [&'static str; 2],
+    kind: [String; 2],
     /// A moment's senses: counter-clockwise, clockwise.
-    sense: [&'static str; 2],
+    sense: [String; 2],
     /// The subscript of M_b, F_b.
-    balancing_sub: &'static str,
+    balancing_sub: String,
     /// "worst intersection angle".
-    worst: &'static str,
+    worst: String,
 }
 
-static EN: Catalogue = Catalogue {
-    title: "Force plans",
-    position: "position",
-    links: ["link", "links"],
-    newton: "N",
-    mm: "mm",
-    newton_metre: "N·m",
-    per_mm: "N/mm",
-    group: "Group {formula} of {links}, cut out with its loads and the reactions of the groups solved",
-    input_link: "The input link {ids}",
-    moment: "ΣM_{at}({what}) = 0 gives {f} = {value} {n} (signed along its assumed direction).",
-    projection: "Projecting the equilibrium of {what} on the guide: {f} = {value} {n}.",
-    lay_off: "From point {from} lay off {f} = {val} {n} as {len} {mm} at {dir}: point {to}.",
-    line: "Through point {through} draw the line of {f} (at {dir}).",
-    intersect: "The two lines meet at point {out} (at {deg}°).",
-    measure: "Measure {a}→{b} = {l} {mm}: {f} = {l}·{mu} = {val} ± {bound} {n}, at {dir}.",
-    couple_at: "ΣM({what}) = 0: the couple of the guide is {value} {nm}, so {f} acts at {p} m.",
-    couple_alone: "ΣM({what}) = 0: the couple of the guide is {value} {nm} ({f} is zero: a couple alone).",
-    balancing: "The equilibrium of link {id} gives the balancing {kind} {b} = {value} {unit}{sense}.",
-    kind: ["moment", "force"],
-    sense: ["counter-clockwise", "clockwise"],
-    balancing_sub: "b",
-    worst: "worst intersection angle",
-};
-
-static UK: Catalogue = Catalogue {
-    title: "Плани сил",
-    position: "положення",
-    links: ["ланки", "ланок"],
-    newton: "Н",
-    mm: "мм",
-    newton_metre: "Н·м",
-    per_mm: "Н/мм",
-    group: "Група {formula} {links}, відокремлена разом з її навантаженнями та реакціями вже розрахованих груп",
-    input_link: "Вхідна ланка {ids}",
-    moment: "З ΣM_{at}({what}) = 0: {f} = {value} {n} (зі знаком щодо прийнятого напрямку).",
-    projection: "Проєкція рівноваги {what} на напрямну: {f} = {value} {n}.",
-    lay_off: "Від точки {from} відкладаємо {f} = {val} {n} відрізком {len} {mm} під кутом {dir}: точка {to}.",
-    line: "Через точку {through} проводимо лінію дії {f} (під кутом {dir}).",
-    intersect: "Лінії перетинаються в точці {out} (під кутом {deg}°).",
-    measure: "Вимірюємо {a}→{b} = {l} {mm}: {f} = {l}·{mu} = {val} ± {bound} {n}, під кутом {dir}.",
-    couple_at: "ΣM({what}) = 0: момент у поступальній парі {value} {nm}, отже {f} прикладена в точці {p} м.",
-    couple_alone: "ΣM({what}) = 0: момент у поступальній парі {value} {nm} ({f} дорівнює нулю).",
-    balancing: "З рівноваги ланки {id}: {kind} {b} = {value} {unit}{sense}.",
-    kind: ["зрівноважувальний момент", "зрівноважувальна сила"],
-    sense: ["проти годинникової стрілки", "за годинниковою стрілкою"],
-    balancing_sub: "зр",
-    worst: "найменший кут перетину",
-};
-
-static RU: Catalogue = Catalogue {
-    title: "Планы сил",
-    position: "положение",
-    links: ["звена", "звеньев"],
-    newton: "Н",
-    mm: "мм",
-    newton_metre: "Н·м",
-    per_mm: "Н/мм",
-    group: "Группа {formula} {links}, выделенная вместе с её нагрузками и реакциями уже рассчитанных групп",
-    input_link: "Входное звено {ids}",
-    moment: "Из ΣM_{at}({what}) = 0: {f} = {value} {n} (со знаком относительно принятого направления).",
-    projection: "Проекция равновесия {what} на направляющую: {f} = {value} {n}.",
-    lay_off: "От точки {from} откладываем {f} = {val} {n} отрезком {len} {mm} под углом {dir}: точка {to}.",
-    line: "Через точку {through} проводим линию действия {f} (под углом {dir}).",
-    intersect: "Линии пересекаются в точке {out} (под углом {deg}°).",
-    measure: "Измеряем {a}→{b} = {l} {mm}: {f} = {l}·{mu} = {val} ± {bound} {n}, под углом {dir}.",
-    couple_at: "ΣM({what}) = 0: момент в поступательной паре {value} {nm}, значит {f} приложена в точке {p} м.",
-    couple_alone: "ΣM({what}) = 0: момент в поступательной паре {value} {nm} ({f} равна нулю).",
-    balancing: "Из равновесия звена {id}: {kind} {b} = {value} {unit}{sense}.",
-    kind: ["уравновешивающий момент", "уравновешивающая сила"],
-    sense: ["против часовой стрелки", "по часовой стрелке"],
-    balancing_sub: "ур",
-    worst: "наименьший угол пересечения",
-};
-
 /// The phrases of `lang`.
-pub fn words(lang: Lang) -> &'static Catalogue {
-    match lang {
-        Lang::En => &EN,
-        Lang::Uk => &UK,
-        Lang::Ru => &RU,
-    }
+pub fn words(lang: Lang) -> &'static Phrases {
+    &super::catalogue(lang).force_plans
 }
 
 /// A direction as an angle, degrees in [0, 360).
@@ -158,9 +81,9 @@ fn angle(v: Vec2) -> String {
 }
 
 /// "links 4, 5" in the language.
-fn links_words(an: &Analysis, links: &[usize], w: &Catalogue) -> String {
+fn links_words(an: &Analysis, links: &[usize], w: &Phrases) -> String {
     let ids: Vec<&str> = links.iter().map(|&l| an.mech.link_id(l)).collect();
-    let word = w.links[usize::from(ids.len() != 1)];
+    let word = &w.links[usize::from(ids.len() != 1)];
     format!("{word} {}", ids.join(", "))
 }
 
@@ -183,11 +106,11 @@ pub fn plan_words(an: &Analysis, loads: &[Load], plan: &ForcePlan, lang: Lang, t
                 AssurGroup::Triad(_) => "III",
             };
             let links = links_words(an, &plan.links, w);
-            fill(w.group, &[("formula", formula), ("links", &links)])
+            fill(&w.group, &[("formula", formula), ("links", &links)])
         }
         None => {
             let ids: Vec<&str> = plan.links.iter().map(|&l| an.mech.link_id(l)).collect();
-            fill(w.input_link, &[("ids", &ids.join(", "))])
+            fill(&w.input_link, &[("ids", &ids.join(", "))])
         }
     };
     let _ = writeln!(t, "  {head}; μ_F = {} {}.", num(plan.mu), w.per_mm);
@@ -219,7 +142,7 @@ struct Step<'a> {
     loads: &'a [Load],
     plan: &'a ForcePlan,
     lang: Lang,
-    w: &'static Catalogue,
+    w: &'static Phrases,
 }
 
 impl Step<'_> {
@@ -230,7 +153,7 @@ impl Step<'_> {
     /// One step of the plan in words.
     fn words(&self, step: &ForceStep) -> String {
         let (w, plan) = (self.w, self.plan);
-        let n = w.newton;
+        let n = &w.newton[..];
         match step {
             ForceStep::Moment {
                 links,
@@ -243,7 +166,7 @@ impl Step<'_> {
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
                 let args = [("at", &*at), ("what", &what), ("f", &f), ("value", &value)];
-                fill(w.moment, &[args[0], args[1], args[2], args[3], ("n", n)])
+                fill(&w.moment, &[args[0], args[1], args[2], args[3], ("n", n)])
             }
             ForceStep::Projection {
                 links,
@@ -253,7 +176,7 @@ impl Step<'_> {
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
                 fill(
-                    w.projection,
+                    &w.projection,
                     &[("what", &what), ("f", &f), ("value", &value), ("n", n)],
                 )
             }
@@ -263,14 +186,14 @@ impl Step<'_> {
                 let (f, val, dir) = (self.name(d.force), num(d.value.hypot()), angle(d.value));
                 let (from, to) = (d.from.to_string(), d.to.to_string());
                 fill(
-                    w.lay_off,
+                    &w.lay_off,
                     &[
                         ("from", &from),
                         ("f", &f),
                         ("val", &val),
                         ("n", n),
                         ("len", &len),
-                        ("mm", w.mm),
+                        ("mm", &w.mm),
                         ("dir", &dir),
                         ("to", &to),
                     ],
@@ -279,11 +202,11 @@ impl Step<'_> {
             ForceStep::Line(l) => {
                 let l = plan.lines[*l];
                 let (f, dir, through) = (self.name(l.force), angle(l.dir), l.through.to_string());
-                fill(w.line, &[("through", &through), ("f", &f), ("dir", &dir)])
+                fill(&w.line, &[("through", &through), ("f", &f), ("dir", &dir)])
             }
             ForceStep::Intersect { out, sin, .. } => {
                 let deg = num(sin.clamp(-1.0, 1.0).asin().to_degrees());
-                fill(w.intersect, &[("out", &out.to_string()), ("deg", &deg)])
+                fill(&w.intersect, &[("out", &out.to_string()), ("deg", &deg)])
             }
             ForceStep::Measure(v) => self.measure(*v),
             ForceStep::Couple {
@@ -294,13 +217,13 @@ impl Step<'_> {
             } => {
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
-                let args = [("what", &*what), ("value", &value), ("nm", w.newton_metre), ("f", &f)];
+                let args = [("what", &*what), ("value", &value), ("nm", &w.newton_metre), ("f", &f)];
                 match at {
                     Some(p) => {
                         let p = format!("({}, {})", num(p.x), num(p.y));
-                        fill(w.couple_at, &[args[0], args[1], args[2], args[3], ("p", &p)])
+                        fill(&w.couple_at, &[args[0], args[1], args[2], args[3], ("p", &p)])
                     }
-                    None => fill(w.couple_alone, &args),
+                    None => fill(&w.couple_alone, &args),
                 }
             }
             ForceStep::Balancing { input, value } => self.balancing(*input, *value),
@@ -317,17 +240,17 @@ impl Step<'_> {
         let (a, b, l) = (d.from.to_string(), d.to.to_string(), num(len));
         let (mu, bound) = (num(plan.mu), num(bound));
         fill(
-            w.measure,
+            &w.measure,
             &[
                 ("a", &a),
                 ("b", &b),
                 ("l", &l),
-                ("mm", w.mm),
+                ("mm", &w.mm),
                 ("f", &f),
                 ("mu", &mu),
                 ("val", &val),
                 ("bound", &bound),
-                ("n", w.newton),
+                ("n", &w.newton),
                 ("dir", &dir),
             ],
         )
@@ -342,21 +265,56 @@ impl Step<'_> {
         let id = m.link_id(spec.link());
         let b = format!("{}_{}", if crank { "M" } else { "F" }, w.balancing_sub);
         let (unit, sense) = if crank {
-            let sense = w.sense[if value >= 0.0 { 0 } else { 1 }];
-            (w.newton_metre, format!(", {sense}"))
+            let sense = &w.sense[if value >= 0.0 { 0 } else { 1 }];
+            (&w.newton_metre[..], format!(", {sense}"))
         } else {
-            (w.newton, String::new())
+            (&w.newton[..], String::new())
         };
         fill(
-            w.balancing,
+            &w.balancing,
             &[
                 ("id", id),
-                ("kind", w.kind[usize::from(!crank)]),
+                ("kind", &w.kind[usize::from(!crank)]),
                 ("b", &b),
                 ("value", &num(value)),
                 ("unit", unit),
                 ("sense", &sense),
             ],
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every blank of every language's phrases is one the rendering fills.
+    #[test]
+    fn catalogues_fill() {
+        let names = [
+            "formula", "links", "ids", "at", "what", "f", "value", "n", "from", "val", "len", "mm",
+            "dir", "to", "through", "out", "deg", "a", "b", "l", "mu", "bound", "nm", "p", "id",
+            "kind", "unit", "sense",
+        ];
+        let args: Vec<(&str, &str)> = names.iter().map(|n| (*n, "·")).collect();
+        for lang in Lang::ALL {
+            let c = words(lang);
+            for phrase in [
+                &c.group,
+                &c.input_link,
+                &c.moment,
+                &c.projection,
+                &c.lay_off,
+                &c.line,
+                &c.intersect,
+                &c.measure,
+                &c.couple_at,
+                &c.couple_alone,
+                &c.balancing,
+            ] {
+                let filled = fill(phrase, &args);
+                assert!(!filled.contains(['{', '}']), "{lang:?}: {phrase}");
+            }
+        }
     }
 }

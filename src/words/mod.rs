@@ -13,6 +13,8 @@ pub mod inputs;
 pub mod notation;
 
 pub use crate::lang::Lang;
+
+use std::sync::OnceLock;
 pub use notation::Label;
 
 /// A phrase with its blanks filled: each `{name}` by the value named so
@@ -33,4 +35,47 @@ pub(crate) fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
     }
     out.push_str(rest);
     out
+}
+
+/// Every phrase of one language, read from its catalogue file
+/// (`src/words/en.json`, `uk.json`, `ru.json`, compiled in): a new
+/// language is one more file and its [`Lang`].
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Catalogue {
+    /// The language's code, as the file's name.
+    pub language: String,
+    /// The construction's steps.
+    pub construction: construction::Phrases,
+    /// The force plans' steps.
+    pub force_plans: force_plans::Phrases,
+}
+
+/// The catalogue of `lang`, read once.
+pub fn catalogue(lang: Lang) -> &'static Catalogue {
+    static ALL: OnceLock<[Catalogue; 3]> = OnceLock::new();
+    let all = ALL.get_or_init(|| {
+        [
+            include_str!("en.json"),
+            include_str!("uk.json"),
+            include_str!("ru.json"),
+        ]
+        .map(|text| serde_json::from_str(text).expect("the words' catalogues are valid (tested)"))
+    });
+    let k = Lang::ALL.iter().position(|&l| l == lang).expect("every language has a catalogue");
+    &all[k]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each catalogue file reads whole (every phrase there, none unknown)
+    /// and says its own language.
+    #[test]
+    fn every_language_has_its_catalogue() {
+        for lang in Lang::ALL {
+            assert_eq!(catalogue(lang).language, lang.code());
+        }
+    }
 }
