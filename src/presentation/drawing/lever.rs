@@ -39,31 +39,45 @@ pub(crate) struct LeverWords {
 }
 
 pub(crate) fn words(lang: Lang) -> LeverWords {
-    match lang {
-        Lang::En => LeverWords {
-            title: "Zhukovsky's lever",
-            balancing: "b",
-            turned: "the plan of velocities turned by 90° ↺ about the pole p",
-            heads: ["force", "F, N", "h, mm", "F·h, N·mm"],
-            input: "input",
-            along: "along the guide",
-        },
-        Lang::Uk => LeverWords {
-            title: "Важіль Жуковського",
-            balancing: "зр",
-            turned: "план швидкостей, повернутий на 90° ↺ навколо полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вхід",
-            along: "уздовж напрямної",
-        },
-        Lang::Ru => LeverWords {
-            title: "Рычаг Жуковского",
-            balancing: "ур",
-            turned: "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вход",
-            along: "вдоль направляющей",
-        },
+    // Each word in English, Ukrainian and Russian.
+    fn pick<T>(lang: Lang, [en, uk, ru]: [T; 3]) -> T {
+        match lang {
+            Lang::En => en,
+            Lang::Uk => uk,
+            Lang::Ru => ru,
+        }
+    }
+    LeverWords {
+        title: pick(
+            lang,
+            [
+                "Zhukovsky's lever",
+                "Важіль Жуковського",
+                "Рычаг Жуковского",
+            ],
+        ),
+        balancing: pick(lang, ["b", "зр", "ур"]),
+        turned: pick(
+            lang,
+            [
+                "the plan of velocities turned by 90° ↺ about the pole p",
+                "план швидкостей, повернутий на 90° ↺ навколо полюса p",
+                "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
+            ],
+        ),
+        heads: pick(
+            lang,
+            [
+                ["force", "F, N", "h, mm", "F·h, N·mm"],
+                ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+                ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            ],
+        ),
+        input: pick(lang, ["input", "вхід", "вход"]),
+        along: pick(
+            lang,
+            ["along the guide", "уздовж напрямної", "вдоль направляющей"],
+        ),
     }
 }
 

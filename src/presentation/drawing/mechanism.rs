@@ -199,6 +199,22 @@ impl<'a> Scheme<'a> {
         !self.joints[p] && self.m.point_name(p).starts_with('S')
     }
 
+    /// The moving links drawn, with their indices.
+    fn moving(&self) -> impl Iterator<Item = (usize, &'a crate::model::mechanism::Link)> + '_ {
+        (self.m.links.iter().enumerate()).filter(|&(l, _)| l != self.frame && self.an.link(l))
+    }
+
+    /// The places of link `l`'s points but its centres of mass: the
+    /// corners of its body.
+    fn body(&self, l: usize) -> Vec<Point> {
+        self.m.links[l]
+            .points
+            .iter()
+            .filter(|&&p| !self.is_mass(p))
+            .map(|&p| self.place(l, p))
+            .collect()
+    }
+
     /// The middle of the points drawn.
     fn centre(&self) -> Point {
         let m = self.m;
@@ -245,16 +261,8 @@ impl<'a> Scheme<'a> {
     /// The lines between every two points of each moving link, into
     /// `bodies`.
     fn link_lines(&self, bodies: &mut Vec<(Point, Point)>) {
-        for (l, link) in self.m.links.iter().enumerate() {
-            if l == self.frame || !self.an.link(l) {
-                continue;
-            }
-            let xy: Vec<Point> = link
-                .points
-                .iter()
-                .filter(|&&p| !self.is_mass(p))
-                .map(|&p| self.place(l, p))
-                .collect();
+        for (l, _) in self.moving() {
+            let xy = self.body(l);
             for i in 0..xy.len() {
                 for j in i + 1..xy.len() {
                     bodies.push((xy[i], xy[j]));
@@ -323,17 +331,8 @@ impl<'a> Scheme<'a> {
     /// Draw the moving links: bodies, the lines to their centres of mass
     /// and the links' numbers.
     fn links(&self, c: &mut Canvas) {
-        for (l, link) in self.m.links.iter().enumerate() {
-            if l == self.frame || !self.an.link(l) {
-                continue;
-            }
-            let xy: Vec<Point> = link
-                .points
-                .iter()
-                .copied()
-                .filter(|&p| !self.is_mass(p))
-                .map(|p| self.place(l, p))
-                .collect();
+        for (l, link) in self.moving() {
+            let xy = self.body(l);
             link_body(c, &xy);
             // Centres of mass lie on their links: draw the link to them.
             for &p in &link.points {
