@@ -39,45 +39,31 @@ pub(crate) struct LeverWords {
 }
 
 pub(crate) fn words(lang: Lang) -> LeverWords {
+    let k = match lang {
+        Lang::En => 0,
+        Lang::Uk => 1,
+        Lang::Ru => 2,
+    };
     // Each word in English, Ukrainian and Russian.
-    fn pick<T>(lang: Lang, [en, uk, ru]: [T; 3]) -> T {
-        match lang {
-            Lang::En => en,
-            Lang::Uk => uk,
-            Lang::Ru => ru,
-        }
-    }
     LeverWords {
-        title: pick(
-            lang,
-            [
-                "Zhukovsky's lever",
-                "Важіль Жуковського",
-                "Рычаг Жуковского",
-            ],
-        ),
-        balancing: pick(lang, ["b", "зр", "ур"]),
-        turned: pick(
-            lang,
-            [
-                "the plan of velocities turned by 90° ↺ about the pole p",
-                "план швидкостей, повернутий на 90° ↺ навколо полюса p",
-                "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
-            ],
-        ),
-        heads: pick(
-            lang,
-            [
-                ["force", "F, N", "h, mm", "F·h, N·mm"],
-                ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-                ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            ],
-        ),
-        input: pick(lang, ["input", "вхід", "вход"]),
-        along: pick(
-            lang,
-            ["along the guide", "уздовж напрямної", "вдоль направляющей"],
-        ),
+        title: [
+            "Zhukovsky's lever",
+            "Важіль Жуковського",
+            "Рычаг Жуковского",
+        ][k],
+        balancing: ["b", "зр", "ур"][k],
+        turned: [
+            "the plan of velocities turned by 90° ↺ about the pole p",
+            "план швидкостей, повернутий на 90° ↺ навколо полюса p",
+            "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
+        ][k],
+        heads: [
+            ["force", "F, N", "h, mm", "F·h, N·mm"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+        ][k],
+        input: ["input", "вхід", "вход"][k],
+        along: ["along the guide", "уздовж напрямної", "вдоль направляющей"][k],
     }
 }
 
