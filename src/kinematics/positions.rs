@@ -6,6 +6,7 @@
 
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
+use crate::format::format_quantity as quantity;
 use crate::geom::{
     LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate, sign_tol, wrap_pi,
 };
@@ -15,7 +16,6 @@ use crate::model::scene::InputSpec;
 use crate::model::structure::{
     AssurGroup, Conn, Cylinder, Dyad, DyadKind, InputRole, Joint, Stage, Structure, Triad,
 };
-use crate::presentation::quantity::format_quantity as quantity;
 use kurbo::{Point, Vec2};
 
 /// The poses of the links solved so far (None: not needed, not computed).

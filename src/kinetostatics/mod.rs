@@ -15,7 +15,7 @@ pub mod power;
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use kurbo::{Point, Vec2};
 pub use loads::{Inertia, Load, Origin};
 
@@ -73,6 +73,10 @@ impl Balancing {
 /// The force analysis of one position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dynamics {
+    /// Every known load: inertia, then weights, then the external loads
+    /// in the order written ([`loads::loads`]), found once here for every
+    /// reader (the force plans' words, sheets and checks).
+    pub loads: Vec<Load>,
     /// Every link with mass, in the scene's order.
     pub inertia: Vec<Inertia>,
     /// Every revolute pair, in `Mechanism::revolutes`' order.
@@ -105,7 +109,7 @@ pub struct Dynamics {
 /// scene; `None` when the scene has no `dynamics`. Refused (an error
 /// naming the position) where the equilibrium equations are singular or
 /// ill-conditioned, or the two routes disagree.
-pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> {
+pub fn analyse(an: &Analysis, s: &Position, k: usize) -> Result<Option<Dynamics>> {
     let Some(inertia) = loads::inertia(an, s) else {
         return Ok(None);
     };
@@ -232,6 +236,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
     };
     let lever = lever::check(an, s, &loads, &balancing, &floors)?;
     Ok(Some(Dynamics {
+        loads,
         force_plans,
         force_plans_diff,
         inertia,
@@ -252,7 +257,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
 /// `accuracy::max_balancing_diff`.
 fn plans(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     x: &newton_euler::Unknowns,
     scale: f64,

@@ -1,31 +1,23 @@
-//! Results as the contract's JSON (`shared/spec/scene-format.md`, result
-//! section; additions in `docs/scene-format.md`), as a terminal table (the
+//! Results as the JSON of `docs/scene-format.md` ("The result files"),
+//! as a terminal table (the
 //! tables of [`super::tables`], the handout's too, written as text) and
 //! as the construction's steps.
 
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::verification::crosscheck::{CrossCheck, Method};
+use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};
 
 pub use super::steps::to_steps;
 use super::steps::{steps_head, steps_position};
+use crate::json::{number as num, vec2};
 pub(crate) use super::text_table::group_kinds;
 pub use super::text_table::to_table;
 use super::text_table::{table_head, table_position};
-
-/// Round-trip-exact but tidy: integers print as integers, no `-0`.
-pub(super) fn num(x: f64) -> Value {
-    let x = if x == 0.0 { 0.0 } else { x };
-    json!(x)
-}
-
-pub(super) fn vec2(v: kurbo::Vec2) -> Value {
-    json!([num(v.x), num(v.y)])
-}
 
 fn deg(a: f64) -> f64 {
     wrap_pi(a).to_degrees()
@@ -524,58 +516,4 @@ fn plan_json(plan: &crate::kinematics::construction::Plan) -> Value {
         "delta": num(plan.delta),
         "measured": measured,
     })
-}
-
-/// The inputs of a position in short: "φ1 = 30°", "s = 0.1 m"; several
-/// with their links' ids: "φ1 = 30°, φ4 = 120°", "s3 = 0.1 m, s6 = 0 m".
-pub fn input_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
-    per_input(an, s, ", ", |spec, d, k| match spec {
-        InputSpec::Crank { .. } => {
-            format!("φ{k} = {}°", num(d.q.to_degrees().rem_euclid(360.0)))
-        }
-        InputSpec::Slider { .. } => format!("s{k} = {} m", num(d.q)),
-    })
-}
-
-/// The inputs' rates of a position in short: "ω1 = 10 rad/s, ε1 = 0
-/// rad/s²", several with their links' ids.
-pub fn drive_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
-    per_input(an, s, "; ", |spec, d, k| match spec {
-        InputSpec::Crank { .. } => format!(
-            "ω{k} = {} rad/s, ε{k} = {} rad/s²",
-            num(d.rate),
-            num(d.rate2)
-        ),
-        InputSpec::Slider { .. } => {
-            format!("v{k} = {} m/s, a{k} = {} m/s²", num(d.rate), num(d.rate2))
-        }
-    })
-}
-
-/// Each input's words by `words` (its spec, its drive and the index its
-/// symbols carry: its link's id of several inputs, else 1 of a crank and
-/// none of a slider), joined by `sep`.
-fn per_input(
-    an: &Analysis,
-    s: &Solved,
-    sep: &str,
-    words: impl Fn(&InputSpec, &crate::kinematics::analytic::Drive, &str) -> String,
-) -> String {
-    let m = &an.mech;
-    let several = m.scene.several_inputs();
-    m.scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| {
-            let k = match spec {
-                _ if several => m.link_id(spec.link()),
-                InputSpec::Crank { .. } => "1",
-                InputSpec::Slider { .. } => "",
-            };
-            words(spec, d, k)
-        })
-        .collect::<Vec<_>>()
-        .join(sep)
 }

@@ -4,10 +4,11 @@
 
 use super::tables::{self, Cell, Kind, Table};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::verification::crosscheck::Method;
+use crate::words::construction::Lang;
 use std::fmt::Write as _;
 
 /// The sense of rotation, "-" for a value that is zero up to rounding
@@ -200,5 +201,5 @@ pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    crate::presentation::quantity::fixed(x, 6)
+    crate::format::fixed(x, 6)
 }

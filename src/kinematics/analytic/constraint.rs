@@ -251,7 +251,7 @@ impl<'a> ConstraintSolver<'a> {
         } else {
             Err(format!(
                 "Newton's method did not converge (residual {})",
-                crate::presentation::quantity::format_quantity(r, "")
+                crate::format::format_quantity(r, "")
             ))
         }
     }
@@ -548,7 +548,7 @@ impl<'a> ConstraintSolver<'a> {
                         return Err(format!(
                             "the assembly cannot be followed past {} (steps down to {}{unit} do not converge on it)",
                             describe_input(m, &at(x)),
-                            crate::presentation::quantity::format_quantity(h, "")
+                            crate::format::format_quantity(h, "")
                         ));
                     }
                 }

@@ -1,11 +1,11 @@
-//! The whole analysis of a scene: which groups the wanted output needs,
-//! the input values of the positions (with the extreme position found
-//! exactly for `positions.count`), both analytic routes and the plans at
-//! every position (`run_each`). Their cross-check is verification:
-//! [`crate::verification::crosscheck`] (its types re-exported here).
+//! A scene made ready for the analysis ([`Analysis`]: mechanism,
+//! structure, what is wanted), the input values of the positions (with the
+//! extreme position found exactly for `positions.count`), and what the
+//! kinematics gives at one position ([`Position`]). Solving every position
+//! in order, with the cross-check and the forces, is the pipeline's
+//! (`crate::pipeline`).
 
 mod inputs;
-mod run;
 
 use crate::error::Result;
 use crate::geom::perp;
@@ -17,8 +17,6 @@ use crate::model::mechanism::Mechanism;
 use crate::model::scene::Scene;
 use crate::model::structure::{Structure, analyse};
 use kurbo::{Point, Vec2};
-
-pub use crate::verification::crosscheck::{BOUND_ROUNDINGS, Bounds, CrossCheck, MAX_REL_DIFF};
 
 /// A scene made ready: mechanism, structure, and what is to be computed.
 ///
@@ -69,14 +67,10 @@ pub enum Corruption {
     Acceleration(f64),
 }
 
-/// Positions found and finished at a time by [`Analysis::run_each`]:
-/// enough to keep both cores busy, few enough that a sweep of the largest
-/// count allowed needs no more memory than a short one.
-pub const RUN_CHUNK: usize = 512;
-
-/// One solved position.
+/// One position as the kinematics solves it: the inputs' values, the
+/// configuration, route (a)'s motions and transfer functions, the plans.
 #[derive(Clone, Debug)]
-pub struct Solved {
+pub struct Position {
     /// The (first) input's coordinate (rad or m) and its rates.
     pub q: f64,
     pub rate: f64,
@@ -101,10 +95,6 @@ pub struct Solved {
     pub mixed: Vec<Vec<Option<Motion>>>,
     /// The plans of velocities and accelerations, as constructions.
     pub plans: Option<Plans>,
-    pub check: Option<CrossCheck>,
-    /// The force analysis (with the scene's `dynamics`), after the
-    /// cross-check has passed the motion it starts from.
-    pub dynamics: Option<crate::kinetostatics::Dynamics>,
 }
 
 impl Analysis {
@@ -155,7 +145,7 @@ impl Analysis {
     /// construction on the same configuration, up to the plan of `order`.
     pub fn plans_at_scales(
         &self,
-        s: &Solved,
+        s: &Position,
         order: Order,
         mu_v: Option<f64>,
         mu_a: Option<f64>,
@@ -217,7 +207,7 @@ pub struct Slide {
     pub s_qqs: Vec<Vec<f64>>,
 }
 
-impl Solved {
+impl Position {
     /// The transfer functions of input `i`: route (a) at unit rate of
     /// input i, the others standing.
     pub fn analogue_of(&self, i: usize) -> &[Option<Motion>] {

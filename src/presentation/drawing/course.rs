@@ -19,10 +19,11 @@ use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, w
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
 
@@ -91,9 +92,7 @@ impl Figure {
         let cw = self
             .caption
             .iter()
-            .map(|c| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
-            })
+            .map(|c| super::canvas::runs_width(&crate::words::notation::runs(c), CAPTION_FONT))
             .fold(0.0, f64::max);
         (
             b.width().max(cw),
@@ -153,7 +152,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     place(&mut page, &placed);
     let title = w.course.to_string();
     // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if super::course_forces::position_has_forces(an, solved) {
+    let sheets = if position_has_forces(an, solved) {
         2
     } else {
         1
@@ -690,4 +689,27 @@ fn pack_in_order(
         sky = next;
     }
     Some(out)
+}
+
+/// The position the force analysis sheet analyses (from 0): the first
+/// position with an acceleration plan after the first, else the first.
+pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
+    let (_, acc) = chosen(an, solved);
+    acc.iter()
+        .copied()
+        .find(|&k| k > 1)
+        .or(acc.first().copied())
+        .unwrap_or(1)
+        .clamp(1, solved.len().max(1))
+        - 1
+}
+
+/// Whether the second sheet is drawn: the analysed position has force
+/// plans.
+pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
+    !solved.is_empty()
+        && solved[position(an, solved)]
+            .dynamics
+            .as_ref()
+            .is_some_and(|d| d.force_plans.is_some())
 }

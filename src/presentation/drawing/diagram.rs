@@ -9,9 +9,9 @@
 use super::canvas::{Canvas, Class, Label, SMALL};
 use super::table::{number, unit};
 use super::{DrawOptions, Sheet, page_svg};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::studies::diagrams::{DENSE, Diagrams};
+use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
 /// The gap between two diagrams, mm.

@@ -9,11 +9,11 @@
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan};
-use crate::kinetostatics::loads;
-use crate::presentation::force_notation as names;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
+use crate::words::forces as names;
 use kurbo::{Point, Rect, Vec2};
 
 /// The gap between panels and between a free body and its polygon, mm.
@@ -150,12 +150,11 @@ impl Columns {
     }
 }
 
-/// The figure of position `s` (the `k`-th, from 0) on a field of
-/// `field` mm; `None` without force plans.
+/// The figure of position `s` on a field of `field` mm; `None` without
+/// force plans.
 pub fn figure(
     an: &Analysis,
     s: &Solved,
-    k: usize,
     opt: &DrawOptions,
     field: (f64, f64),
 ) -> Option<Figure> {
@@ -165,13 +164,13 @@ pub fn figure(
     if plans.is_empty() {
         return None;
     }
-    let loads = loads::loads(an, s, k);
+    let loads = &d.loads;
     let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
     let scene = |i: usize| Scene {
         an,
         s,
         d,
-        loads: &loads,
+        loads,
         lang: opt.lang,
         tag: &tags[i],
     };
@@ -195,7 +194,7 @@ pub fn figure(
         });
     let (layout, mu_l, cs) = best_layout(plans.len(), field, real, bodies)?;
     let boxes = bounds(&cs);
-    let name = |f| names::force(&an.mech, &loads, f, opt.lang);
+    let name = |f| names::force(&an.mech, loads, f, opt.lang);
     let mut out = Canvas::default();
     let mut mu_f = Vec::new();
     for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {

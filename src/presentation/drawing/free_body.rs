@@ -12,14 +12,15 @@
 use super::canvas::{Canvas, Class, FONT, Label, Line, MAIN, SMALL};
 use super::{cylinder, mechanism};
 use crate::geom::perp;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep, Part};
 use crate::kinetostatics::newton_euler::guide_frame;
 use crate::kinetostatics::{Dynamics, Load};
 use crate::model::scene::InputSpec;
 use crate::model::structure::Joint;
-use crate::presentation::force_notation as names;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
+use crate::words::forces as names;
 use kurbo::{Point, Vec2};
 use std::f64::consts::PI;
 

@@ -20,16 +20,16 @@
 
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
-use crate::error::Result;
-use crate::kinematics::construction::text::{Lang, num, sentence};
+use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
+use crate::words::construction::{Lang, sentence};
 use kurbo::Point;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 /// Words of the page around the drawings.
 struct Ui {
@@ -105,7 +105,7 @@ fn ui(l: Lang) -> Ui {
 /// dropped (with a combining underline right after them); the rest of the
 /// text is kept, escaped.
 pub fn rich(s: &str) -> String {
-    use crate::presentation::notation::{Pos, runs};
+    use crate::words::notation::{Pos, runs};
     runs(s)
         .into_iter()
         .map(|(p, t)| match p {
@@ -364,7 +364,7 @@ fn label_versions(
 /// "φ1 = 235.8°" or "s = 0.1 m".
 fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::input_words(an, s);
+        return crate::words::inputs::input_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
@@ -375,7 +375,7 @@ fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
 /// The drive at a position: "ω1 = −10 rad/s, ε1 = 0 rad/s²".
 fn drive_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::drive_words(an, s);
+        return crate::words::inputs::drive_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!(
@@ -665,15 +665,6 @@ fn plan_figure(
         );
     }
     h.push_str("</ol></details>\n</figure>\n");
-}
-
-/// Write `dir/handout.html` (atomically); returns its path.
-pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -> Result<PathBuf> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    let path = dir.join("handout.html");
-    crate::write_atomically(&path, handout(an, solved, lang).as_bytes())?;
-    Ok(path)
 }
 
 /// Errors of the page's script, collected for `#selftest` (in the head,

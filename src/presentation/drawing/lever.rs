@@ -9,10 +9,10 @@
 use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
 use crate::kinematics::construction::scale::standard_scale;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::lever::{Lever, LeverForce, Part};
 use crate::kinetostatics::{Balancing, Origin};
+use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
 /// The longest force arrow, as a share of the lever's extent: forces
@@ -358,19 +358,19 @@ pub(crate) fn input_text(l: &Lever, lang: Lang) -> String {
 /// it fixes one for a single input).
 pub(super) fn pending(
     an: &Analysis,
-    s: &crate::kinematics::solve::Solved,
+    s: &crate::pipeline::Solved,
     k: usize,
     opt: &super::DrawOptions,
 ) -> crate::error::Result<Vec<super::Pending>> {
     use crate::kinematics::construction::Naming;
     use crate::kinetostatics::lever::lever_at;
-    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let pos = super::position_text(an, s, k, opt.lang);
     let w = words(opt.lang);
     let several = an.mech.scene.several_inputs();
     let mut out = Vec::new();
     for input in 0..an.mech.scene.input_count() {
-        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let figure = |l: &Lever| {
             let mu_f = force_scale(l);
             let mut c = Canvas::default();
@@ -389,7 +389,7 @@ pub(super) fn pending(
             });
             let lower = super::lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, field);
             let rebuild = |mu: f64| {
-                let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+                let l = lever_at(an, s, loads, input, Naming::Full, Some(mu)).ok()?;
                 let f = figure(&l);
                 Some((l, f))
             };

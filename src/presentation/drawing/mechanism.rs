@@ -6,9 +6,10 @@
 
 use super::canvas::{Canvas, Class, FONT, Label, MAIN, SMALL, THIN};
 use crate::geom::perp;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use kurbo::{Point, Vec2};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 

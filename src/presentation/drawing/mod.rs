@@ -30,14 +30,17 @@ pub mod positions;
 pub mod sheet;
 pub mod table;
 
-pub use export::{pdf, pdf_book, png, tree, write_sheets};
+#[cfg(feature = "render")]
+pub use export::tree;
+pub use export::{pdf, pdf_book, png};
 
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 use canvas::Canvas;
 use kurbo::{Point, Rect};
 use sheet::{Page, TitleBlock};
@@ -47,13 +50,18 @@ pub(crate) use captions::{position_text, scale_label, scale_text, words};
 /// Sheet formats, landscape (ГОСТ 2.301).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SheetSize {
+    /// 297 × 210 mm.
     A4,
+    /// 420 × 297 mm.
     A3,
+    /// 594 × 420 mm.
     A2,
+    /// 841 × 594 mm (the course project's sheet).
     A1,
 }
 
 impl SheetSize {
+    /// Width and height, mm, landscape.
     pub fn mm(&self) -> (f64, f64) {
         match self {
             SheetSize::A4 => (297.0, 210.0),
@@ -62,6 +70,7 @@ impl SheetSize {
             SheetSize::A1 => (841.0, 594.0),
         }
     }
+    /// The size of a name, `A4` … `A1` (either case).
     pub fn parse(s: &str) -> Option<SheetSize> {
         match s.to_ascii_uppercase().as_str() {
             "A4" => Some(SheetSize::A4),
@@ -107,18 +116,28 @@ impl Default for DrawOptions {
 /// figures are drawn at (`mu_l`, `mu_v`, `mu_a`) and SVG text.
 #[derive(Clone, Debug)]
 pub struct Sheet {
+    /// The file stem: `mechanism_1`, `velocity_1`, `positions`, `course` …
     pub name: String,
+    /// The sheet's title, as its heading says it.
     pub title: String,
+    /// The sheet format it is drawn on.
     pub size: SheetSize,
+    /// The scales of its figures by name (`mu_l` m/mm, `mu_v` (m/s)/mm,
+    /// `mu_a` (m/s²)/mm, `mu_F` N/mm).
     pub scales: Vec<(&'static str, f64)>,
+    /// The sheet as SVG text, true size in mm.
     pub svg: String,
 }
 
 /// Output formats of `mechplan draw`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
+    /// SVG text, true size.
     Svg,
+    /// A picture at the request's resolution (the `render` feature).
     Png,
+    /// A page per sheet, true size, and one book of all (the `render`
+    /// feature).
     Pdf,
 }
 
@@ -343,7 +362,7 @@ fn misfit(
     mu_l: f64,
     t: Option<&positions::Trajectories>,
 ) -> Error {
-    use crate::presentation::quantity::format_quantity as q;
+    use crate::format::format_quantity as q;
     let first = sizes.first().copied().unwrap_or(opt.sheet);
     let last = sizes.last().copied().unwrap_or(opt.sheet);
     let area_of = |sheet| field_size(&DrawOptions { sheet, ..*opt }, 0.0);
@@ -535,7 +554,7 @@ fn position_sheets(
         });
     }
     if asked(an, solved, "forces")
-        && let Some(f) = forces::figure(an, s, k, opt, field)
+        && let Some(f) = forces::figure(an, s, opt, field)
     {
         out.push(pending(
             format!("forces_{}", k + 1),

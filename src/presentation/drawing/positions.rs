@@ -4,9 +4,10 @@
 
 use super::canvas::{Canvas, Label, Line, SMALL};
 use crate::kinematics::positions::PositionSolver;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use kurbo::Point;
 
 /// The trajectories of the coupler points (m), computed once for every

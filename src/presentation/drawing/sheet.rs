@@ -7,8 +7,8 @@
 
 use super::SheetSize;
 use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, xml};
-use crate::kinematics::construction::text::Lang;
 use crate::model::scene::SheetInfo;
+use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::fmt::Write as _;
 
@@ -89,9 +89,7 @@ impl Page {
         // One line if it fits at 5 mm, else a smaller font.
         let size = [5.0, FONT, SMALL]
             .into_iter()
-            .find(|&s| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(title), s) <= width
-            })
+            .find(|&s| super::canvas::runs_width(&crate::words::notation::runs(title), s) <= width)
             .unwrap_or(SMALL);
         c.rich(Point::new(0.0, 0.0), title, size, "heading", "start");
         if let Some(s) = scale {

@@ -17,7 +17,7 @@ pub use label::{Label, runs_width};
 pub use placement::Grid;
 pub use render::{fmt, xml};
 
-use crate::presentation::notation::Run;
+use crate::words::notation::Run;
 use kurbo::{Point, Rect, Vec2};
 
 /// Line weights after ГОСТ 2.303: main lines S, thin lines S/2.

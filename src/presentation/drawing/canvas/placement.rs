@@ -6,7 +6,7 @@
 //! else is drawn), free text and text in the lecture's notation.
 
 use super::{Canvas, Label, Prim, runs_width};
-use crate::presentation::notation::runs;
+use crate::words::notation::runs;
 use kurbo::{Point, Rect, Vec2};
 
 /// Segments (or label boxes) kept in cells of a grid, so that asking which

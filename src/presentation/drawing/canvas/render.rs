@@ -6,13 +6,13 @@
 
 use super::label::char_width;
 use super::{ARROW_WIDTH, BOLD, Canvas, Class, MAIN, Prim, THIN};
-use crate::presentation::notation::{Pos, Run};
+use crate::words::notation::{Pos, Run};
 use kurbo::{Point, Vec2};
 use std::fmt::Write as _;
 
 /// Numbers as 0.01 mm, no trailing zeros, no "-0": byte-stable output.
 pub fn fmt(x: f64) -> String {
-    crate::presentation::quantity::fixed((x * 100.0).round() / 100.0, 2)
+    crate::format::fixed((x * 100.0).round() / 100.0, 2)
 }
 
 /// How far a subscript sinks and a superscript rises, in font sizes:

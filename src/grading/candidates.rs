@@ -7,14 +7,15 @@ use super::MAX_TOLERANCE_OF_PLAN;
 use super::answer::{Answer, Given};
 use super::items::{Expected, expect};
 use crate::error::Result;
+use crate::format::num;
 use crate::kinematics::analytic::{Drives, Order};
-use crate::kinematics::construction::text::num;
 use crate::kinematics::construction::{
     Drafting, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
 };
 use crate::kinematics::positions::{Configuration, PositionSolver};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::structure::{AssurGroup, DyadKind};
+use crate::pipeline::Solved;
 
 /// A way the plan may have been built wrong: what a diagnosis names
 /// (typed; its sentence is [`super::Diagnosis::mistake`]).
@@ -231,8 +232,8 @@ pub(super) fn cannot_judge(
     if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
         return Some(format!(
             "its tolerance ({}) exceeds a fifth of the plan ({} across): near a dead point the construction cannot place it",
-            crate::presentation::quantity::format_quantity(tol_mm, "mm"),
-            crate::presentation::quantity::format_quantity(size, "mm")
+            crate::format::format_quantity(tol_mm, "mm"),
+            crate::format::format_quantity(size, "mm")
         ));
     }
     for f in candidates {
@@ -246,8 +247,8 @@ pub(super) fn cannot_judge(
         if moved > e.visible && fits {
             return Some(format!(
                 "within its tolerance ({}) of the right construction and of a mistaken one that moves it by only {}: {}",
-                crate::presentation::quantity::format_quantity(e.tol, e.unit),
-                crate::presentation::quantity::format_quantity(moved, e.unit),
+                crate::format::format_quantity(e.tol, e.unit),
+                crate::format::format_quantity(moved, e.unit),
                 mistake_sentence(f.c, student_mu, &e.what)
             ));
         }

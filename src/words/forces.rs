@@ -5,11 +5,11 @@
 //! (force) M_b, F_b (uk M_зр, ru M_ур: "зрівноважувальний",
 //! "уравновешивающий"). Subscripts are the scene's link ids.
 
-use crate::kinematics::construction::text::Lang;
+use super::notation::Label;
 use crate::kinetostatics::force_plan::{Force, Part};
 use crate::kinetostatics::{Load, Origin};
+use crate::lang::Lang;
 use crate::model::mechanism::Mechanism;
-use crate::presentation::drawing::canvas::Label;
 
 /// The subscript of the balancing moment (force) in `lang`.
 pub fn balancing_sub(lang: Lang) -> &'static str {
@@ -66,6 +66,15 @@ pub fn force(m: &Mechanism, loads: &[Load], f: Force, lang: Lang) -> Option<Labe
         }
         Force::Drive { .. } => Label::new("F", balancing_sub(lang)),
     })
+}
+
+/// The name of a force in the course's notation, as the force sheets
+/// print it (`presentation::force_notation`) in plain text: Φ_2 (inertia
+/// force), M_Φ2 (inertia couple), G_2 (weight), F_5 and M_3 (external),
+/// R_12 (the reaction of link 1 on link 2) with ^τ, ^n for a component,
+/// F_b (the drive force of a cylinder or slider; uk F_зр, ru F_ур).
+pub fn force_name(m: &Mechanism, loads: &[Load], f: Force, lang: Lang) -> String {
+    force(m, loads, f, lang).map_or_else(|| "?".into(), |l| plain(&l))
 }
 
 /// A label as plain text in the lecture's notation (`R^τ_12`), for

@@ -1,8 +1,10 @@
-//! The report as text for the terminal, as JSON, and as an SVG overlay of
-//! the student's points on the correct plan.
+//! A check's verdict (`crate::grading`'s report, data) as text for the
+//! terminal, as JSON, and as an SVG overlay of the student's points on the
+//! correct plan.
 
-use super::answer::{Answer, Given};
-use super::{Judgement, Report};
+use crate::grading::answer::{Answer, Given};
+use crate::grading::forces::ForceReport;
+use crate::grading::{Judgement, Report};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use kurbo::Vec2;
@@ -10,7 +12,7 @@ use kurbo::Vec2;
 /// The report as text for the terminal.
 pub fn to_text(r: &Report) -> String {
     use std::fmt::Write as _;
-    let fmt = crate::presentation::quantity::format_number;
+    let fmt = crate::format::format_number;
     let mut t = String::new();
     let kind = if r.plan == PlanKind::Velocity {
         "velocity"
@@ -22,7 +24,7 @@ pub fn to_text(r: &Report) -> String {
         "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {}",
         r.position,
         fmt(r.mu),
-        crate::presentation::quantity::format_quantity(r.delta, "mm")
+        crate::format::format_quantity(r.delta, "mm")
     );
     if r.worst_angle < 5.0 {
         let _ = writeln!(
@@ -207,8 +209,8 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
 }
 
 /// A typed explanation as JSON: its kind, and which element or factor.
-fn explanation_json(e: super::Explanation) -> serde_json::Value {
-    use super::Explanation as E;
+fn explanation_json(e: crate::grading::Explanation) -> serde_json::Value {
+    use crate::grading::Explanation as E;
     match e {
         E::Mistake { m, at, both } => {
             serde_json::json!({ "kind": format!("{m:?}"), "at": at, "both_plans": both })
@@ -220,4 +222,76 @@ fn explanation_json(e: super::Explanation) -> serde_json::Value {
         E::Branch(g) => serde_json::json!({ "kind": "Branch", "group": g + 1 }),
         E::Scale(f) => serde_json::json!({ "kind": "Scale", "factor": f }),
     }
+}
+
+/// A force plan's report in words.
+pub fn force_to_text(r: &ForceReport) -> String {
+    use std::fmt::Write as _;
+    let mut t = format!(
+        "Force plan of links {}, position {}, μ_F = {} N/mm, δ = {} mm\n",
+        r.links.join(", "),
+        r.position,
+        r.mu,
+        r.delta
+    );
+    for v in &r.verdicts {
+        let verdict = match &v.judgement {
+            Judgement::Right => "right".to_string(),
+            Judgement::Wrong => "WRONG".to_string(),
+            Judgement::CannotJudge(why) => format!("cannot be judged: {why}"),
+        };
+        let _ = writeln!(
+            t,
+            "  {}: given {:.4} {u}, expected {:.4} ± {:.4} {u}: {verdict}",
+            v.what,
+            v.given,
+            v.expected,
+            v.tolerance,
+            u = v.unit
+        );
+    }
+    match &r.diagnosis {
+        Some(d) => {
+            let _ = writeln!(t, "  Diagnosis: the plan was drawn with {d}.");
+        }
+        None if r.wrong() > 0 => {
+            let _ = writeln!(
+                t,
+                "  Diagnosis: no typical mistake explains the wrong items."
+            );
+        }
+        None => {}
+    }
+    t
+}
+
+/// A force plan's report as JSON.
+pub fn force_to_json(r: &ForceReport) -> serde_json::Value {
+    let items: Vec<serde_json::Value> = r
+        .verdicts
+        .iter()
+        .map(|v| {
+            let (verdict, why) = match &v.judgement {
+                Judgement::Right => ("right", None),
+                Judgement::Wrong => ("wrong", None),
+                Judgement::CannotJudge(w) => ("cannot_judge", Some(w.clone())),
+            };
+            serde_json::json!({
+                "pointer": v.pointer, "key": v.key, "what": v.what,
+                "given": v.given, "expected": v.expected, "difference": v.difference,
+                "tolerance": v.tolerance, "unit": v.unit, "verdict": verdict, "why": why,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "plan": "force",
+        "position": r.position,
+        "links": r.links,
+        "mu": r.mu,
+        "delta": r.delta,
+        "items": items,
+        "wrong": r.wrong(),
+        "diagnosis": r.diagnosis,
+        "status": r.status(),
+    })
 }

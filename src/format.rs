@@ -1,5 +1,32 @@
-//! Numbers in messages, to significant digits: a distance of 2e-12 m is
-//! "2e-12 m", never "0.000000 m".
+//! Numbers as mechplan writes them, one family: [`num`] the plans' and
+//! steps' measured values (four significant digits, trailing zeros
+//! dropped); [`format_number`] and [`format_quantity`] numbers in messages,
+//! to significant digits: a distance of 2e-12 m is "2e-12 m", never
+//! "0.000000 m".
+
+/// Numbers as a student writes them: up to 4 significant digits.
+pub fn num(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 9) as usize;
+    let s = format!("{x:.digits$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" { "0".into() } else { s }
+}
+
+/// 1e-8, 2.5e-3: a compact scientific number.
+pub fn sci(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:.1e}");
+    s.replace(".0e", "e")
+}
 
 /// Significant digits of [`format_number`].
 pub const DIGITS: usize = 4;

@@ -11,41 +11,40 @@
 //! By part: the verdicts and the report ([`Judgement`], [`Verdict`],
 //! [`Report`]), the items as a construction expects them (`items`), the
 //! mistaken constructions tried and what cannot be judged
-//! (`candidates`), the diagnosis (`diagnosis`), and the report as text,
-//! JSON and an overlay sheet (`report`).
+//! (`candidates`), the diagnosis (`diagnosis`). The verdict is data: its
+//! text, JSON and overlay sheet are presentation's
+//! (`crate::presentation::verdict`), reading the answer's file the front
+//! door's (`crate::study`).
 
 pub mod answer;
 mod candidates;
 mod diagnosis;
-mod file;
 pub mod forces;
 mod items;
-mod report;
 pub mod svg;
 mod verdict;
 
 pub use candidates::Candidate as Explanation;
-pub use file::{CheckRequest, check_file};
 pub use items::resolve;
-pub use report::{overlay, to_json, to_text};
 pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
 
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::{Lang, sentence};
 use crate::kinematics::construction::{PlanKind, Variant};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::words::construction::{Lang, sentence};
 use answer::Answer;
 use candidates::{Builds, candidates, cannot_judge};
 use diagnosis::diagnose;
 use items::expect;
 
-/// Position `position` (from 1) of `solved`, with its index; a position
-/// the scene does not have is refused, naming the range.
-fn position_of(solved: &[Solved], position: usize) -> Result<(usize, &Solved)> {
+/// Position `position` (from 1) of `solved`; a position the scene does
+/// not have is refused, naming the range.
+fn position_of(solved: &[Solved], position: usize) -> Result<&Solved> {
     position
         .checked_sub(1)
-        .and_then(|k| solved.get(k).map(|s| (k, s)))
+        .and_then(|k| solved.get(k))
         .ok_or_else(|| {
             Error::scene(
                 "/position",
@@ -59,7 +58,7 @@ fn position_of(solved: &[Solved], position: usize) -> Result<(usize, &Solved)> {
 
 /// Check `answer` against the scene's analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
-    let (_, s) = position_of(solved, ans.position)?;
+    let s = position_of(solved, ans.position)?;
     if !an.plans
         || an.order.is_none()
         || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))

@@ -1,7 +1,7 @@
 //! Solving every position asked for: the positions found in order by both
 //! routes, then each one's rates, plans and cross-check.
 
-use super::{Analysis, Corruption, RUN_CHUNK, Solved};
+use super::{Analysis, Position, RUN_CHUNK, Solved};
 use crate::error::{Error, Result};
 use crate::geom::Pose;
 use crate::geom::wrap_pi;
@@ -10,6 +10,7 @@ use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
 use crate::kinematics::construction::build_plans;
 use crate::kinematics::positions::{Configuration, PositionSolver};
+use crate::kinematics::solve::Corruption;
 use crate::model::scene::InputSpec;
 use crate::verification::crosscheck::{ChangedData, Costs, Residuals};
 use kurbo::Vec2;
@@ -62,14 +63,14 @@ impl Analysis {
     /// number. The positions before the first error are handed over; an
     /// error of `f` stops the run and is returned.
     pub fn run_each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        self.run_each_with(&indicatif::ProgressBar::hidden(), f)
+        self.run_each_with(&crate::progress::Silent, f)
     }
 
-    /// As [`Analysis::run_each`], advancing `bar` a position at a time
-    /// (the caller's: a terminal's bar, or a hidden one).
+    /// As [`Analysis::run_each`], telling `progress` of each position
+    /// (the caller's watcher: a terminal's bar, or none).
     pub fn run_each_with(
         &self,
-        bar: &indicatif::ProgressBar,
+        progress: &dyn crate::progress::Progress,
         mut f: impl FnMut(Solved) -> Result<()>,
     ) -> Result<()> {
         let values = self.input_coords()?;
@@ -116,13 +117,21 @@ impl Analysis {
                     residuals: eqs.as_ref(),
                 };
                 let chunk = (from, chunk);
-                self.run_chunk(chunk, rounding, &mut ps, &mut cs, &checks, bar, &mut |s| {
-                    self.same_orientation(&mut orientation, &s)?;
-                    if let Some((probe, last)) = &mut motion {
-                        self.continuous(probe, last, &s)?;
-                    }
-                    f(s)
-                })
+                self.run_chunk(
+                    chunk,
+                    rounding,
+                    &mut ps,
+                    &mut cs,
+                    &checks,
+                    progress,
+                    &mut |s| {
+                        self.same_orientation(&mut orientation, &s)?;
+                        if let Some((probe, last)) = &mut motion {
+                            self.continuous(probe, last, &s)?;
+                        }
+                        f(s)
+                    },
+                )
             })
     }
 
@@ -137,7 +146,7 @@ impl Analysis {
         ps: &mut PositionSolver,
         cs: &mut Option<ConstraintSolver<'a>>,
         checks: &Checks,
-        bar: &indicatif::ProgressBar,
+        progress: &dyn crate::progress::Progress,
         f: &mut impl FnMut(Solved) -> Result<()>,
     ) -> Result<()> {
         let mut placed = Vec::with_capacity(values.len());
@@ -174,7 +183,7 @@ impl Analysis {
                 constraint_time,
             });
         }
-        for s in crate::progress::map_on(&placed, bar, |p| self.finish(p, checks)) {
+        for s in crate::progress::map_on(&placed, progress, |p| self.finish(p, checks)) {
             f(s?)?;
         }
         match stop {
@@ -395,7 +404,7 @@ impl Analysis {
         self.corrupt(&mut config, &mut motion);
         let Some(cs) = &p.constraint else {
             let first = drives.first();
-            let mut solved = Solved {
+            let mut solved = Solved::from(Position {
                 q: first.q,
                 rate: first.rate,
                 rate2: first.rate2,
@@ -406,9 +415,7 @@ impl Analysis {
                 more_analogues,
                 mixed,
                 plans: None,
-                check: None,
-                dynamics: None,
-            };
+            });
             let eqs = checks.residuals.expect("the fast path's equations");
             solved.check = Some(self.residual_check(
                 &solved,
@@ -437,7 +444,7 @@ impl Analysis {
         };
         let plan_time = t2.elapsed().as_secs_f64();
         let first = drives.first();
-        let mut solved = Solved {
+        let mut solved = Solved::from(Position {
             q: first.q,
             rate: first.rate,
             rate2: first.rate2,
@@ -448,9 +455,7 @@ impl Analysis {
             more_analogues,
             mixed,
             plans,
-            check: None,
-            dynamics: None,
-        };
+        });
         let costs = Costs {
             contour_time,
             constraint_time,

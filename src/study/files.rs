@@ -2,9 +2,9 @@
 //! (or "standard output") as [`Error::Write`] (exit status 3 in the
 //! binary), and never half a file: a file is written to a temporary beside
 //! it and renamed into place; on any failure the temporary is removed.
-//! Standard output is held back (in memory, then in a temporary file for
-//! long texts) until the whole text is ready, so that a run refused at a
-//! late position prints nothing.
+//! A text for standard output is held back ([`Spool`]: in memory, then in
+//! a temporary file for long texts) until the whole text is ready, so that
+//! a run refused at a late position prints nothing; the command prints it.
 
 use crate::error::{Error, Result};
 use std::fs::File;
@@ -21,6 +21,7 @@ pub struct Output<'a> {
 }
 
 impl<'a> Output<'a> {
+    /// A writer to `w`, named `name` in its errors.
     pub fn new(w: &'a mut dyn Write, name: &'a str) -> Output<'a> {
         Output { w, name }
     }
@@ -30,6 +31,7 @@ impl<'a> Output<'a> {
         self.write_bytes(text.as_bytes())
     }
 
+    /// Write `bytes`; an error names the target.
     pub fn write_bytes(&mut self, bytes: &[u8]) -> Result<()> {
         self.w
             .write_all(bytes)
@@ -43,38 +45,6 @@ pub fn write_error(name: &str, source: std::io::Error) -> Error {
         path: name.to_string(),
         source,
     }
-}
-
-/// An error for the user on standard error, every line "mechplan: …";
-/// if standard error fails too, the exit status still tells.
-pub fn error(text: &str) {
-    let _ = writeln!(
-        std::io::stderr(),
-        "mechplan: {}",
-        text.replace('\n', "\nmechplan: ")
-    );
-}
-
-/// A note for the user on standard error ("mechplan: note: …"); a note
-/// that cannot be written is lost, the result is not.
-pub fn note(text: &str) {
-    let _ = writeln!(std::io::stderr(), "mechplan: note: {text}");
-}
-
-/// "wrote PATH" lines for the files written.
-pub fn wrote(paths: &[PathBuf]) -> String {
-    paths
-        .iter()
-        .map(|p| format!("wrote {}\n", p.display()))
-        .collect()
-}
-
-/// Print `text` on standard output, checked and flushed.
-pub fn stdout(text: &str) -> Result<()> {
-    let mut o = std::io::stdout().lock();
-    o.write_all(text.as_bytes())
-        .and_then(|()| o.flush())
-        .map_err(|e| write_error(STDOUT, e))
 }
 
 /// Write to a temporary file beside `path`, then rename: never half a file.
@@ -207,6 +177,7 @@ impl Spool {
     /// Bytes kept in memory before spilling to a temporary file.
     pub const MEMORY: usize = 64 << 20;
 
+    /// An empty spool.
     pub fn new() -> Spool {
         Spool {
             mem: Vec::new(),
@@ -234,10 +205,10 @@ impl Spool {
         }
     }
 
-    /// Print everything held on standard output, checked and flushed.
-    pub fn finish(self) -> Result<()> {
-        let mut o = std::io::stdout().lock();
-        let e = |e| write_error(STDOUT, e);
+    /// Hand everything held to `o` (standard output, named `name` in
+    /// errors), checked and flushed.
+    pub fn finish_into(self, o: &mut dyn Write, name: &str) -> Result<()> {
+        let e = |e| write_error(name, e);
         match self.file {
             None => o.write_all(&self.mem).map_err(e)?,
             Some((mut f, name)) => {

@@ -6,8 +6,8 @@ use super::candidates::{Builds, Candidate, Fit, expectations, mistake_sentence};
 use super::items::Expected;
 use super::{Diagnosis, Report};
 use crate::accuracy::ACCURACY;
-use crate::kinematics::construction::text::{Lang, sentence};
 use crate::kinematics::construction::{Mistake, Variant};
+use crate::words::construction::{Lang, sentence};
 
 /// Name the mistake that explains the answer: the candidates whose
 /// construction puts every item within its own tolerance; of those the

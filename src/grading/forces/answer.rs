@@ -40,7 +40,7 @@ pub fn is_force_answer(text: &str) -> bool {
 
 /// Read a force-plan answer, every problem with its JSON pointer.
 pub fn from_json(text: &str) -> Result<ForceAnswer> {
-    crate::verification::check::answer::check_size(text.len() as u64)?;
+    crate::grading::answer::check_size(text.len() as u64)?;
     let v = parse_strict(text).map_err(Error::json)?;
     let mut issues = Vec::new();
     let Some(o) = v.as_object() else {
@@ -164,9 +164,9 @@ fn table(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Vec<(Strin
 
 /// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").
 pub fn is_force_svg(text: &str) -> bool {
-    crate::verification::check::svg::parse(text)
+    crate::grading::svg::parse(text)
         .ok()
-        .is_some_and(|d| crate::verification::check::svg::stated_mu(&d.labels, "_F").is_some())
+        .is_some_and(|d| crate::grading::svg::stated_mu(&d.labels, "_F").is_some())
 }
 
 /// How far from the middle of its vector a force's label may be, mm.
@@ -185,9 +185,8 @@ pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Res
             message: m,
         }])
     };
-    let d = crate::verification::check::svg::parse(text)?;
-    let Some(mu) = mu.or_else(|| crate::verification::check::svg::stated_mu(&d.labels, "_F"))
-    else {
+    let d = crate::grading::svg::parse(text)?;
+    let Some(mu) = mu.or_else(|| crate::grading::svg::stated_mu(&d.labels, "_F")) else {
         return Err(bad(
             "no scale: write \"μ_F = … N/mm\" on the drawing or give --mu".into(),
         ));

@@ -1,16 +1,8 @@
-//! The report rendered: a markdown table and a log-log plot of error
+//! The work-precision report (`crate::verification::precision`) rendered: a markdown table and a log-log plot of error
 //! against run time.
 
-use super::{Report, Row, Stat};
-
-/// 1e-8, 2.5e-3: a compact scientific number.
-pub fn sci(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let s = format!("{x:.1e}");
-    s.replace(".0e", "e")
-}
+use crate::format::sci;
+use crate::verification::precision::{Report, Row, Stat};
 
 /// The report as a markdown table.
 pub fn to_markdown(r: &Report) -> String {

@@ -532,25 +532,13 @@ pub struct Reading {
     pub position: Option<usize>,
 }
 
-/// Read an answer file — JSON, or an SVG drawn in a vector editor (by its
-/// extension or its first character) — refusing one larger than
-/// [`MAX_ANSWER_BYTES`] before reading it; its problems name the file.
-pub fn read(path: &std::path::Path, r: &Reading) -> Result<Answer> {
-    use std::io::Read;
-    let name = path.display().to_string();
-    let io = |source| Error::Io {
-        path: name.clone(),
-        source,
-    };
-    let in_answer = crate::study::in_file(&name);
-    let f = std::fs::File::open(path).map_err(io)?;
-    if let Ok(md) = f.metadata() {
-        check_size(md.len()).map_err(&in_answer)?;
-    }
-    let mut text = String::new();
-    f.take(MAX_ANSWER_BYTES as u64 + 1)
-        .read_to_string(&mut text)
-        .map_err(io)?;
+/// Read an answer's text — JSON, or an SVG drawn in a vector editor
+/// (`svg`: by its file's extension, or when its first character is `<`) —
+/// refusing one larger than [`MAX_ANSWER_BYTES`]; its problems name the
+/// answer (`name`, its file). Reading the file is the front door's
+/// (`crate::study`).
+pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
+    let in_answer = crate::error::in_file(name);
     check_size(text.len() as u64).map_err(&in_answer)?;
     if let Some(d) = r.delta
         && !(d.is_finite() && d > 0.0)
@@ -560,20 +548,17 @@ pub fn read(path: &std::path::Path, r: &Reading) -> Result<Answer> {
             "the pencil precision must be a positive number of mm",
         ));
     }
-    let svg = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
-        || text.trim_start().starts_with('<');
+    let svg = svg || text.trim_start().starts_with('<');
     let mut ans = if svg {
-        crate::verification::check::svg::from_svg(
-            &text,
+        crate::grading::svg::from_svg(
+            text,
             r.mu,
             r.plan,
             r.delta.unwrap_or(0.5),
             r.position.unwrap_or(1),
         )
     } else {
-        from_json(&text)
+        from_json(text)
     }
     .map_err(&in_answer)?;
     if let Some(d) = r.delta {

@@ -15,13 +15,13 @@ pub use answer::{ForceAnswer, from_json, from_svg, is_force_answer, is_force_svg
 
 use super::{Judgement, Verdict};
 use crate::error::{Error, Result};
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
-use crate::kinetostatics::loads::{self, Load, Origin};
-use crate::presentation::force_steps::force_name;
+use crate::kinetostatics::loads::{Load, Origin};
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
+use crate::words::forces::force_name;
 use answer::issue;
-use serde_json::Value;
 
 /// The check of a force plan.
 #[derive(Clone, Debug)]
@@ -66,7 +66,7 @@ fn which_by_names(
         let has: Vec<String> = p
             .vectors
             .iter()
-            .map(|v| key(&force_name(an, loads, v.force, Lang::En)))
+            .map(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)))
             .collect();
         names
             .iter()
@@ -175,12 +175,12 @@ fn expect(
         .vectors
         .iter()
         .rev()
-        .find(|v| key(&force_name(an, loads, v.force, Lang::En)) == k)
+        .find(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)) == k)
         .ok_or_else(|| {
             let names: Vec<String> = plan
                 .vectors
                 .iter()
-                .map(|v| force_name(an, loads, v.force, Lang::En))
+                .map(|v| force_name(&an.mech, loads, v.force, Lang::En))
                 .collect();
             format!(
                 "no force \"{name}\" on this plan (its forces: {})",
@@ -212,15 +212,15 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
 
 /// Check a force-plan answer against the analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
-    let (k, s) = super::position_of(solved, ans.position)?;
+    let s = super::position_of(solved, ans.position)?;
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return Err(Error::scene(
             "/plan",
             "the scene has no force plans to check against: it needs a dynamics object (and no class III group)",
         ));
     };
-    let right_loads = loads::loads(an, s, k);
-    let ans = &with_links(an, &right_loads, &fp.plans, ans)?;
+    let right_loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
+    let ans = &with_links(an, right_loads, &fp.plans, ans)?;
     let Some((w, _)) = which(an, &fp.plans, &ans.links) else {
         let all: Vec<String> = fp
             .plans
@@ -244,15 +244,15 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         let (_, i) = which(an, &fp.plans, &ans.links).expect("the same structure");
         Ok(fp.plans[i].clone())
     };
-    let plan = at_scale(&right_loads)?;
+    let plan = at_scale(right_loads)?;
     // The typical mistakes, as whole plans at the student's scale.
-    let mistaken: Vec<(&str, ForcePlan)> = mistakes(&right_loads)
+    let mistaken: Vec<(&str, ForcePlan)> = mistakes(right_loads)
         .into_iter()
         .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
         .collect();
     let judge = Judge {
         an,
-        loads: &right_loads,
+        loads: right_loads,
         plan: &plan,
         ans,
         mistaken: &mistaken,
@@ -481,76 +481,4 @@ impl Judge<'_> {
             judgement,
         })
     }
-}
-
-/// The report in words.
-pub fn to_text(r: &ForceReport) -> String {
-    use std::fmt::Write as _;
-    let mut t = format!(
-        "Force plan of links {}, position {}, μ_F = {} N/mm, δ = {} mm\n",
-        r.links.join(", "),
-        r.position,
-        r.mu,
-        r.delta
-    );
-    for v in &r.verdicts {
-        let verdict = match &v.judgement {
-            Judgement::Right => "right".to_string(),
-            Judgement::Wrong => "WRONG".to_string(),
-            Judgement::CannotJudge(why) => format!("cannot be judged: {why}"),
-        };
-        let _ = writeln!(
-            t,
-            "  {}: given {:.4} {u}, expected {:.4} ± {:.4} {u}: {verdict}",
-            v.what,
-            v.given,
-            v.expected,
-            v.tolerance,
-            u = v.unit
-        );
-    }
-    match &r.diagnosis {
-        Some(d) => {
-            let _ = writeln!(t, "  Diagnosis: the plan was drawn with {d}.");
-        }
-        None if r.wrong() > 0 => {
-            let _ = writeln!(
-                t,
-                "  Diagnosis: no typical mistake explains the wrong items."
-            );
-        }
-        None => {}
-    }
-    t
-}
-
-/// The report as JSON.
-pub fn to_json(r: &ForceReport) -> Value {
-    let items: Vec<Value> = r
-        .verdicts
-        .iter()
-        .map(|v| {
-            let (verdict, why) = match &v.judgement {
-                Judgement::Right => ("right", None),
-                Judgement::Wrong => ("wrong", None),
-                Judgement::CannotJudge(w) => ("cannot_judge", Some(w.clone())),
-            };
-            serde_json::json!({
-                "pointer": v.pointer, "key": v.key, "what": v.what,
-                "given": v.given, "expected": v.expected, "difference": v.difference,
-                "tolerance": v.tolerance, "unit": v.unit, "verdict": verdict, "why": why,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "plan": "force",
-        "position": r.position,
-        "links": r.links,
-        "mu": r.mu,
-        "delta": r.delta,
-        "items": items,
-        "wrong": r.wrong(),
-        "diagnosis": r.diagnosis,
-        "status": r.status(),
-    })
 }

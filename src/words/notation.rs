@@ -83,6 +83,49 @@ pub fn runs(s: &str) -> Vec<Run> {
     out
 }
 
+/// A label: letters and a subscript.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    pub base: String,
+    pub sub: String,
+    /// A superscript over the subscript (R^τ_12: the component of a
+    /// reaction); empty on most labels.
+    pub sup: String,
+    /// Plain text after the subscript.
+    pub tail: String,
+    /// Further names sharing the label, each with its subscript
+    /// (", o₁, o₂").
+    pub more: Vec<(String, String)>,
+}
+
+impl Label {
+    /// Letters and a subscript.
+    pub fn new(base: impl Into<String>, sub: impl Into<String>) -> Label {
+        Label {
+            base: base.into(),
+            sub: sub.into(),
+            sup: String::new(),
+            tail: String::new(),
+            more: Vec::new(),
+        }
+    }
+    /// Another name at the same place: "p_v, o₁".
+    pub fn and(mut self, base: impl Into<String>, sub: impl Into<String>) -> Label {
+        self.more.push((base.into(), sub.into()));
+        self
+    }
+    /// The superscript stacked over the subscript: R^τ_12.
+    pub fn with_sup(mut self, sup: impl Into<String>) -> Label {
+        self.sup = sup.into();
+        self
+    }
+    /// Plain text after the subscript.
+    pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
+        self.tail = tail.into();
+        self
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

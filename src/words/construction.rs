@@ -4,24 +4,13 @@
 //! language is one `Catalogue` of phrases with named blanks (`{pole}`),
 //! filled by one rendering path.
 
-use super::{Dir, Op, Plan, PlanKind, Why};
+use super::fill;
+use crate::format::num;
+use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PlanLine, Why};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Lang {
-    En,
-    Uk,
-    Ru,
-}
+pub use crate::lang::Lang;
 
 impl Lang {
-    pub fn parse(s: &str) -> Option<Lang> {
-        match s {
-            "en" => Some(Lang::En),
-            "uk" => Some(Lang::Uk),
-            "ru" => Some(Lang::Ru),
-            _ => None,
-        }
-    }
     fn words(self) -> &'static Catalogue {
         match self {
             Lang::En => &EN,
@@ -130,41 +119,6 @@ static RU: Catalogue = Catalogue {
     equations: "Векторные уравнения: {text}.",
 };
 
-/// A phrase with its blanks filled: each `{name}` by the value named so
-/// in `args` (one pass: a value is never filled again).
-fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
-    let mut out = String::with_capacity(phrase.len() + 16 * args.len());
-    let mut rest = phrase;
-    while let Some(open) = rest.find('{') {
-        out.push_str(&rest[..open]);
-        let close = open + rest[open..].find('}').expect("a closed blank");
-        let name = &rest[open + 1..close];
-        let value = args
-            .iter()
-            .find(|(n, _)| *n == name)
-            .unwrap_or_else(|| panic!("no value for the blank {{{name}}}"));
-        out.push_str(value.1);
-        rest = &rest[close + 1..];
-    }
-    out.push_str(rest);
-    out
-}
-
-/// Numbers as a student writes them: up to 4 significant digits.
-pub fn num(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 9) as usize;
-    let s = format!("{x:.digits$}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    };
-    if s == "-0" { "0".into() } else { s }
-}
-
 fn dir(w: &Catalogue, d: &Dir) -> String {
     match d {
         Dir::Perp(seg) => format!("⊥ {seg}"),
@@ -189,69 +143,32 @@ fn sense(w: &Catalogue, x: f64) -> &'static str {
 /// The sentence of step `i` of `plan`.
 pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
     let w = l.words();
-    let p = |k: usize| plan.points[k].name();
     let (unit, rate_unit, mu) = match plan.kind {
         PlanKind::Velocity => (w.unit[0], w.rate_unit[0], "μ_v"),
         PlanKind::Acceleration => (w.unit[1], w.rate_unit[1], "μ_a"),
     };
-    let scale = num(plan.mu);
-    let between = |from: usize, to: usize| num((plan.points[to].at - plan.points[from].at).hypot());
+    let s = Speaker {
+        w,
+        plan,
+        unit,
+        rate_unit,
+        mu,
+        scale: num(plan.mu),
+    };
     match &plan.steps[i].op {
-        Op::Pole { fixed } => {
-            let fixed = if fixed.is_empty() {
-                String::new()
-            } else {
-                format!(" ({})", fixed.join(", "))
-            };
-            fill(
-                w.pole,
-                &[
-                    ("pole", &p(0)),
-                    ("fixed", &fixed),
-                    ("mu", mu),
-                    ("scale", &scale),
-                    ("unit", unit),
-                ],
-            )
-        }
+        Op::Pole { fixed } => s.pole(fixed),
         Op::LayOff {
             from,
             to,
             what,
             value,
             dir: d,
-        } => fill(
-            w.lay_off,
-            &[
-                ("from", &p(*from)),
-                ("to", &p(*to)),
-                ("what", what),
-                ("mu", mu),
-                ("value", &num(*value)),
-                ("scale", &scale),
-                ("mm", &between(*from, *to)),
-                ("dir", &dir(w, d)),
-            ],
-        ),
+        } => s.lay_off((*from, *to), what, *value, d),
         Op::Intersect {
             lines,
             out,
             sin_angle,
-        } => {
-            let ang = sin_angle.clamp(-1.0, 1.0).asin().to_degrees();
-            let (a, b) = (&lines[0], &lines[1]);
-            fill(
-                w.intersect,
-                &[
-                    ("a", &p(a.through)),
-                    ("dir_a", &dir(w, &a.dir)),
-                    ("b", &p(b.through)),
-                    ("dir_b", &dir(w, &b.dir)),
-                    ("out", &p(*out)),
-                    ("angle", &num(ang)),
-                ],
-            )
-        }
+        } => s.intersect(lines, *out, *sin_angle),
         Op::Similar {
             a,
             b,
@@ -261,10 +178,10 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
         } => fill(
             w.similar,
             &[
-                ("a", &p(*a)),
-                ("b", &p(*b)),
-                ("out", &p(*out)),
-                ("plan_fig", &format!("{}{}{}", p(*a), p(*b), p(*out))),
+                ("a", &s.p(*a)),
+                ("b", &s.p(*b)),
+                ("out", &s.p(*out)),
+                ("plan_fig", &format!("{}{}{}", s.p(*a), s.p(*b), s.p(*out))),
                 ("fig", &figure.concat()),
                 ("link", link),
             ],
@@ -278,9 +195,9 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
         } => fill(
             w.divide,
             &[
-                ("a", &p(*a)),
-                ("b", &p(*b)),
-                ("out", &p(*out)),
+                ("a", &s.p(*a)),
+                ("b", &s.p(*b)),
+                ("out", &s.p(*out)),
                 ("x", &figure[2]),
                 ("f0", &figure[0]),
                 ("f1", &figure[1]),
@@ -294,7 +211,7 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             };
             fill(
                 w.coincide,
-                &[("out", &p(*out)), ("with", &p(*with)), ("why", &why)],
+                &[("out", &s.p(*out)), ("with", &s.p(*with)), ("why", &why)],
             )
         }
         Op::Measure {
@@ -304,35 +221,7 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             value,
             length,
             rate,
-        } => {
-            let seg = format!("{}{}", p(*from), p(*to));
-            let base = fill(
-                w.measure,
-                &[
-                    ("seg", &seg),
-                    ("mm", &between(*from, *to)),
-                    ("quantity", quantity),
-                    ("mu", mu),
-                    ("value", &num(*value)),
-                    ("unit", unit),
-                ],
-            );
-            let (Some((name, r, (j, x))), Some(len)) = (rate, length) else {
-                return format!("{base}.");
-            };
-            let value = format!(
-                "{base}; {name} = {quantity}/l_{j}{x} = {} / {} = {} {rate_unit}",
-                num(*value),
-                num(*len),
-                num(r.abs())
-            );
-            if *r == 0.0 {
-                return format!("{value}.");
-            }
-            let args = [("seg", &*seg), ("x", x), ("j", j), ("sense", sense(w, *r))];
-            let why = fill(w.turns, &args);
-            format!("{value}, {} ({why}).", sense(w, *r))
-        }
+        } => s.measure((*from, *to), quantity, *value, *length, rate.as_ref()),
         Op::Same {
             link,
             from_link,
@@ -342,6 +231,121 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             &[("what", what), ("link", link), ("from", from_link)],
         ),
         Op::Equation { text } => fill(w.equations, &[("text", text)]),
+    }
+}
+
+/// What a plan's sentences share: the language's phrases, the plan, its
+/// units and its scale as written.
+struct Speaker<'a> {
+    w: &'static Catalogue,
+    plan: &'a Plan,
+    unit: &'static str,
+    rate_unit: &'static str,
+    mu: &'static str,
+    scale: String,
+}
+
+impl Speaker<'_> {
+    /// A plan point's name.
+    fn p(&self, k: usize) -> String {
+        self.plan.points[k].name()
+    }
+
+    /// A segment's length on the plan, mm, as written.
+    fn between(&self, from: usize, to: usize) -> String {
+        num((self.plan.points[to].at - self.plan.points[from].at).hypot())
+    }
+
+    fn pole(&self, fixed: &[String]) -> String {
+        let fixed = if fixed.is_empty() {
+            String::new()
+        } else {
+            format!(" ({})", fixed.join(", "))
+        };
+        fill(
+            self.w.pole,
+            &[
+                ("pole", &self.p(0)),
+                ("fixed", &fixed),
+                ("mu", self.mu),
+                ("scale", &self.scale),
+                ("unit", self.unit),
+            ],
+        )
+    }
+
+    fn lay_off(&self, (from, to): (usize, usize), what: &str, value: f64, d: &Dir) -> String {
+        fill(
+            self.w.lay_off,
+            &[
+                ("from", &self.p(from)),
+                ("to", &self.p(to)),
+                ("what", what),
+                ("mu", self.mu),
+                ("value", &num(value)),
+                ("scale", &self.scale),
+                ("mm", &self.between(from, to)),
+                ("dir", &dir(self.w, d)),
+            ],
+        )
+    }
+
+    fn intersect(&self, lines: &[PlanLine; 2], out: usize, sin_angle: f64) -> String {
+        let ang = sin_angle.clamp(-1.0, 1.0).asin().to_degrees();
+        let (a, b) = (&lines[0], &lines[1]);
+        fill(
+            self.w.intersect,
+            &[
+                ("a", &self.p(a.through)),
+                ("dir_a", &dir(self.w, &a.dir)),
+                ("b", &self.p(b.through)),
+                ("dir_b", &dir(self.w, &b.dir)),
+                ("out", &self.p(out)),
+                ("angle", &num(ang)),
+            ],
+        )
+    }
+
+    /// A measurement: the value, and with a link's `length` and the
+    /// `rate` it gives ((name, value, (j, x)): ω or ε of link j by its
+    /// point x), the rate and its sense.
+    fn measure(
+        &self,
+        (from, to): (usize, usize),
+        quantity: &str,
+        value: f64,
+        length: Option<f64>,
+        rate: Option<&(String, f64, (String, String))>,
+    ) -> String {
+        let w = self.w;
+        let seg = format!("{}{}", self.p(from), self.p(to));
+        let base = fill(
+            w.measure,
+            &[
+                ("seg", &seg),
+                ("mm", &self.between(from, to)),
+                ("quantity", quantity),
+                ("mu", self.mu),
+                ("value", &num(value)),
+                ("unit", self.unit),
+            ],
+        );
+        let (Some((name, r, (j, x))), Some(len)) = (rate, length) else {
+            return format!("{base}.");
+        };
+        let value = format!(
+            "{base}; {name} = {quantity}/l_{j}{x} = {} / {} = {} {}",
+            num(value),
+            num(len),
+            num(r.abs()),
+            self.rate_unit
+        );
+        if *r == 0.0 {
+            return format!("{value}.");
+        }
+        let args = [("seg", &*seg), ("x", x), ("j", j), ("sense", sense(w, *r))];
+        let why = fill(w.turns, &args);
+        format!("{value}, {} ({why}).", sense(w, *r))
     }
 }
 
