@@ -104,5 +104,10 @@ pub use study::{
 };
 pub use verification::precision::Settings as PrecisionSettings;
 
+/// The README's Rust examples, run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
 pub const DEFAULT_SCENE: &str = include_str!("../fixtures/six_link_fig2_10.json");

@@ -8,7 +8,8 @@ use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Motion;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
-use crate::kinematics::construction::build_plans;
+use crate::kinematics::compiled::{Program, State};
+use crate::kinematics::construction::{Kernel, Plans, build_plans, build_plans_numbers};
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::Corruption;
 use crate::model::scene::InputSpec;
@@ -36,6 +37,11 @@ struct Placed<'a> {
     /// Time of finding the position, seconds, by route (a) and route (b).
     contour_time: f64,
     constraint_time: f64,
+    /// Where the result keeps no plans: the sweep kernel's plans of the
+    /// position, numbers only, for the cross-check (`None` where it
+    /// refused: the one-position build then gives the position's error),
+    /// and their time, seconds.
+    kernel: Option<(Option<Plans>, f64)>,
 }
 
 impl Analysis {
@@ -76,6 +82,26 @@ impl Analysis {
         let values = self.input_coords()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
+        // Route (a) compiled for the mechanism (issue 24): the rates at
+        // every position, and on the fast path its positions in order.
+        // The full path finds them by the interpreted solver, whose
+        // tracked state route (b)'s probes of the way start from.
+        let mut route = Route {
+            program: match self.reference {
+                false => Some(Program::new(m, &self.structure, &self.need)?),
+                true => None,
+            },
+            state: None,
+            kernel: None,
+        };
+        // Plans only checked (a result that keeps none), by the sweep's
+        // kernel where asked (`sweep_kernel`): in the order of the positions.
+        if self.plans && !self.keep_plans && !self.reference && self.sweep_kernel {
+            route.kernel = Some(Kernel::new());
+        }
+        if !self.plans {
+            route.state = route.program.as_ref().map(Program::state);
+        }
         // Route (b) follows the positions where the plans are built; the
         // fast path evaluates its equations at route (a)'s answers.
         let mut cs = self
@@ -117,21 +143,14 @@ impl Analysis {
                     residuals: eqs.as_ref(),
                 };
                 let chunk = (from, chunk);
-                self.run_chunk(
-                    chunk,
-                    rounding,
-                    &mut ps,
-                    &mut cs,
-                    &checks,
-                    progress,
-                    &mut |s| {
-                        self.same_orientation(&mut orientation, &s)?;
-                        if let Some((probe, last)) = &mut motion {
-                            self.continuous(probe, last, &s)?;
-                        }
-                        f(s)
-                    },
-                )
+                let ps = (&mut ps, &mut route);
+                self.run_chunk(chunk, rounding, ps, &mut cs, &checks, progress, &mut |s| {
+                    self.same_orientation(&mut orientation, &s)?;
+                    if let Some((probe, last)) = &mut motion {
+                        self.continuous(probe, last, &s)?;
+                    }
+                    f(s)
+                })
             })
     }
 
@@ -143,7 +162,7 @@ impl Analysis {
         &'a self,
         (from, values): (usize, &[Coords]),
         rounding: &[Coords],
-        ps: &mut PositionSolver,
+        (ps, route): (&mut PositionSolver, &mut Route<'a>),
         cs: &mut Option<ConstraintSolver<'a>>,
         checks: &Checks,
         progress: &dyn crate::progress::Progress,
@@ -153,7 +172,11 @@ impl Analysis {
         let mut stop = None;
         for (i, (&q, &q_rounding)) in values.iter().zip(rounding).enumerate() {
             let t0 = Clock::now();
-            let config = match ps.solve_coords(q) {
+            let config = match (&route.program, &mut route.state) {
+                (Some(prog), Some(st)) => prog.positions_coords(st, q).map(|()| st.config.clone()),
+                _ => ps.solve_coords(q),
+            };
+            let config = match config {
                 Ok(c) => c,
                 Err(e) => {
                     stop = Some(e);
@@ -173,6 +196,10 @@ impl Analysis {
                 }
             }
             let constraint_time = t1.elapsed().as_secs_f64();
+            let kernel = match (&mut route.kernel, self.order) {
+                (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, q, order)),
+                _ => None,
+            };
             placed.push(Placed {
                 index: from + i,
                 q,
@@ -181,9 +208,11 @@ impl Analysis {
                 constraint: cs.clone(),
                 contour_time,
                 constraint_time,
+                kernel,
             });
         }
-        for s in crate::progress::map_on(&placed, progress, |p| self.finish(p, checks)) {
+        let program = route.program.as_ref();
+        for s in crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program)) {
             f(s?)?;
         }
         match stop {
@@ -372,16 +401,23 @@ impl Analysis {
     }
 
     /// One placed position: both routes' rates, the plans, the cross-check
-    /// (on the fast path: route (a)'s rates and their check).
-    fn finish(&self, p: &Placed, checks: &Checks) -> Result<Solved> {
+    /// (on the fast path: route (a)'s rates and their check); route (a)
+    /// by `program` (`None`: interpreted, the reference).
+    fn finish(&self, p: &Placed, checks: &Checks, program: Option<&Program>) -> Result<Solved> {
         let m = &self.mech;
         let rates = self.input_rates();
         let (q, mut config) = (p.q, p.config.clone());
         let drives = self.drives_at(&q);
         let w = drives.len();
         let t0 = Clock::now();
-        let run = |d: Drives, order: Order| {
-            contour::solve(m, &self.structure, &self.need, &config, d, order)
+        let mut st = program.map(|prog| {
+            let mut st = prog.state();
+            st.config.clone_from(&config);
+            (prog, st)
+        });
+        let mut run = |d: Drives, order: Order| match st.as_mut() {
+            Some((prog, st)) => prog.rates(st, d, order).map(|()| st.motion.clone()),
+            None => contour::solve(m, &self.structure, &self.need, &config, d, order),
         };
         let none = || vec![None; m.links.len()];
         let (mut motion, mut analogue) = (none(), none());
@@ -432,17 +468,21 @@ impl Analysis {
         let other = cs.solve_rates_of(&rates, self.order.unwrap_or(Order::Velocity))?;
         let constraint_time = p.constraint_time + t1.elapsed().as_secs_f64();
         let t2 = Clock::now();
+        // Where the result keeps no plans they are only checked: built
+        // numbers only (the same plans to the bit), or by the sweep's
+        // kernel (`Analysis::sweep_kernel`; where it refused, on their own).
+        let lean = !self.keep_plans && !self.reference;
+        let checked = p.kernel.as_ref().and_then(|k| k.0.as_ref());
+        let (setup, d) = (self.setup(), self.drafting);
         let plans = match self.order {
-            Some(order) => Some(build_plans(
-                &self.setup(),
-                &config,
-                drives,
-                order,
-                self.drafting,
-            )?),
-            None => None,
+            Some(order) if checked.is_none() => Some(match lean {
+                true => build_plans_numbers(&setup, &config, drives, order, d)?,
+                false => build_plans(&setup, &config, drives, order, d)?,
+            }),
+            _ => None,
         };
-        let plan_time = t2.elapsed().as_secs_f64();
+        let (plans, lean) = if lean { (None, plans) } else { (plans, None) };
+        let plan_time = t2.elapsed().as_secs_f64() + p.kernel.as_ref().map_or(0.0, |k| k.1);
         let first = drives.first();
         let mut solved = Solved::from(Position {
             q: first.q,
@@ -462,10 +502,33 @@ impl Analysis {
             plan_time,
             conditioning: cs.conditioning,
         };
+        let plans = solved.plans.as_ref().or(lean.as_ref()).or(checked);
         solved.check =
-            Some(self.cross_check(&solved, &other, costs, p.q_rounding, checks.changed)?);
+            Some(self.cross_check(&solved, &other, plans, costs, p.q_rounding, checks.changed)?);
         solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
         Ok(solved)
+    }
+
+    /// The plans of a position by the sweep's kernel `k`, numbers only (as
+    /// the one-position build's, [`Kernel`]), and their time; `None` where
+    /// it refuses.
+    fn kernel_plans(
+        &self,
+        k: &mut Kernel,
+        config: &Configuration,
+        q: Coords,
+        order: Order,
+    ) -> (Option<Plans>, f64) {
+        let t = Clock::now();
+        let drives = self.drives_at(&q);
+        let plans = k
+            .build(&self.setup(), config, drives, order, self.drafting)
+            .ok()
+            .map(|(v, a)| Plans {
+                velocity: v.clone(),
+                acceleration: a.cloned(),
+            });
+        (plans, t.elapsed().as_secs_f64())
     }
 
     /// Put the deliberate error of [`Analysis::corrupt`] (tests only) into
@@ -512,6 +575,16 @@ impl Analysis {
             }
         }
     }
+}
+
+/// Route (a) of a run: the program compiled for the mechanism (`None`:
+/// the interpreted reference, [`Analysis::reference`]), and on the fast
+/// path the state its positions are tracked in; and the sweep's
+/// construction kernel where the result keeps no plans.
+struct Route<'a> {
+    program: Option<Program<'a>>,
+    state: Option<State>,
+    kernel: Option<Kernel>,
 }
 
 /// The checks of a run, made once: the scene with its data changed, and

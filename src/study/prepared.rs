@@ -214,9 +214,15 @@ impl Study {
 
     /// Each position as it is solved, in order, told to the watcher.
     pub(super) fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        self.each_of(&self.analysis, f)
+    }
+
+    /// Each position of `an` (this study's analysis, or a variant of it)
+    /// as it is solved, in order, told to the watcher.
+    fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
         let w = self.watcher.get();
         w.start(self.position_count()?, "positions");
-        let done = self.analysis.run_each_with(w, f);
+        let done = an.run_each_with(w, f);
         w.finish();
         done
     }
@@ -241,11 +247,22 @@ impl Study {
         style: Results,
         out: &mut dyn FnMut(&str) -> Result<()>,
     ) -> Result<()> {
-        let an = &*self.analysis;
+        // A table or CSV prints no plan: its plans are only checked, built
+        // numbers only (`Analysis::keep_plans`: the same plans to the bit).
+        let lean;
+        let an = match style {
+            Results::Table | Results::Csv if self.analysis.keep_plans => {
+                let mut a = (*self.analysis).clone();
+                a.keep_plans = false;
+                lean = a;
+                &lean
+            }
+            _ => &*self.analysis,
+        };
         let style = self.style(style);
         out(&report::text_head(an, style))?;
         let mut count = 0;
-        self.each(|s| {
+        self.each_of(an, |s| {
             out(&report::text_position(an, style, count, &s))?;
             count += 1;
             Ok(())

@@ -16,6 +16,7 @@ use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings, Unknowns};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
+use crate::kinematics::construction::Plans;
 use crate::kinematics::positions::{PositionSolver, describe_input};
 use crate::kinematics::solve::{Analysis, Position};
 use crate::model::mechanism::Mechanism;
@@ -138,13 +139,16 @@ pub(crate) struct Costs {
 
 impl Analysis {
     /// The cross-check of a solved position: route (a) against route (b)
-    /// (`other`), the plans against both, and the data sensitivity; with
-    /// the costs of the position and its bounds. An error (a refusal) when
-    /// the routes disagree or the data's rounding decides the answer.
+    /// (`other`), the plans (`plans`: the position's own, or the sweep
+    /// kernel's where the result keeps none) against both, and the data
+    /// sensitivity; with the costs of the position and its bounds. An
+    /// error (a refusal) when the routes disagree or the data's rounding
+    /// decides the answer.
     pub(crate) fn cross_check(
         &self,
         s: &Position,
         other: &[Option<Motion>],
+        plans: Option<&Plans>,
         costs: Costs,
         q_rounding: Coords,
         changed: &ChangedData,
@@ -152,7 +156,7 @@ impl Analysis {
         let m = &self.mech;
         let (mut d, mut worst) = self.compare(s, other);
         for (route, mo) in [("contour", &s.motion[..]), ("constraint", other)] {
-            let (dp, wp) = self.compare_plans(s, mo);
+            let (dp, wp) = self.compare_plans(s, plans, mo);
             if dp > d || dp.is_nan() {
                 (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
             }
@@ -470,8 +474,13 @@ impl Analysis {
 
     /// Largest relative difference between the plans (measured values × μ)
     /// and an analytic route.
-    fn compare_plans(&self, s: &Position, mo: &[Option<Motion>]) -> (f64, String) {
-        let Some(plans) = &s.plans else {
+    fn compare_plans(
+        &self,
+        s: &Position,
+        plans: Option<&Plans>,
+        mo: &[Option<Motion>],
+    ) -> (f64, String) {
+        let Some(plans) = plans else {
             return (0.0, String::new());
         };
         let m = &self.mech;

@@ -36,10 +36,34 @@ pub struct Analysis {
     /// answer instead of by route (b) followed along the positions
     /// ([`crate::verification::crosscheck`], docs/sweeps.md).
     pub plans: bool,
+    /// Whether each position keeps its plans (`Solved::plans`, named,
+    /// with their steps), as a result that prints or draws them needs;
+    /// `false` where only their check is wanted (`solve`'s table and
+    /// CSV): the plans are then built numbers only, without names or steps
+    /// ([`crate::kinematics::construction::build_plans_numbers`]: the same
+    /// plans to the bit), compared with both routes and dropped.
+    pub keep_plans: bool,
+    /// Where the result keeps no plans, build them by the sweep's
+    /// construction kernel ([`crate::kinematics::construction::Kernel`],
+    /// each plan first at the last position's scale), in the order of the
+    /// positions (benches and tests only): faster, but not the same
+    /// check, since the kernel draws a plan at the neighbouring scale
+    /// where the build alone's first construction at unit scale takes
+    /// other scale-dependent choices (docs/performance.md, issue 24).
+    #[doc(hidden)]
+    pub sweep_kernel: bool,
     /// A deliberate error put into route (a)'s answer, for the tests that
     /// show the cross-check catches it; never set by mechplan itself.
     #[doc(hidden)]
     pub corrupt: Option<Corruption>,
+    /// Run the twins kept as references (tests and benches only): route
+    /// (a) interpreted (`PositionSolver`, `contour::solve`) instead of
+    /// compiled for the mechanism ([`crate::kinematics::compiled`]), and
+    /// the plans named, with their steps, where the result keeps none
+    /// (not numbers only), as before issue 24: the same results, the old
+    /// cost.
+    #[doc(hidden)]
+    pub reference: bool,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
@@ -127,7 +151,10 @@ impl Analysis {
             demand,
             order,
             plans,
+            keep_plans: true,
+            sweep_kernel: false,
             corrupt: None,
+            reference: false,
             drafting,
             mu_l,
         })
