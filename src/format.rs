@@ -50,12 +50,27 @@ pub fn format_number(x: f64) -> String {
         let decimals = (DIGITS as i32 - 1 - exp) as usize;
         format!("{x:.decimals$}")
     } else {
-        let mantissa = if mantissa.contains('.') {
-            mantissa.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            mantissa
-        };
-        format!("{mantissa}e{exp}")
+        format!("{}e{exp}", trim_zeros(mantissa))
+    }
+}
+
+/// `x` to `decimals` places with the trailing zeros (and a bare point)
+/// dropped and no "-0": the drawings' coordinates ("12.5", "0"), the
+/// terminal table's numbers.
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let s = format!("{x:.decimals$}");
+    let s = trim_zeros(&s);
+    if s == "-0" { "0".into() } else { s.into() }
+}
+
+/// A decimal number's text without the trailing zeros of its fraction,
+/// nor its point when nothing follows ("1.2500" → "1.25", "3.0" → "3");
+/// a number without a point as it is.
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
     }
 }
 
@@ -102,5 +117,9 @@ mod tests {
         assert_eq!(format_quantity(0.35, "m"), "0.3500 m");
         assert_eq!(format_quantity(1250.0, "m"), "1.25e3 m");
         assert_eq!(format_quantity(3.0, ""), "3.000");
+        assert_eq!(fixed(12.5, 2), "12.5");
+        assert_eq!(fixed(3.0, 6), "3");
+        assert_eq!(fixed(-0.001, 2), "0");
+        assert_eq!(fixed(-1.26, 1), "-1.3");
     }
 }

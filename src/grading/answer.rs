@@ -144,6 +144,44 @@ fn number(v: &Value, at: &str, issues: &mut Vec<Issue>) -> Option<f64> {
     }
 }
 
+/// A finite number that must be positive (`why` says so when it is not).
+fn positive(v: &Value, at: &str, why: &str, issues: &mut Vec<Issue>) -> Option<f64> {
+    number(v, at, issues).filter(|&x| {
+        let ok = x > 0.0;
+        if !ok {
+            issues.push(issue(at, why));
+        }
+        ok
+    })
+}
+
+/// The answer's `position`: 1 when it gives none; `None` (with its
+/// issue) when it is not a number from 1.
+pub(super) fn position(
+    o: &serde_json::Map<String, Value>,
+    issues: &mut Vec<Issue>,
+) -> Option<usize> {
+    match o.get("position") {
+        None => Some(1),
+        Some(p) => match p.as_u64() {
+            Some(n) if n >= 1 => Some(n as usize),
+            _ => {
+                issues.push(issue("/position", "expected a position number from 1"));
+                None
+            }
+        },
+    }
+}
+
+/// A plan's name in the messages.
+fn plan_name(p: PlanKind) -> &'static str {
+    if p == PlanKind::Velocity {
+        "velocity"
+    } else {
+        "acceleration"
+    }
+}
+
 /// Read an answer JSON. Names are checked against the plan later; here the
 /// file's own shape: known fields, numbers, positive lengths, μ present.
 pub fn from_json(text: &str) -> Result<Answer> {
@@ -174,16 +212,7 @@ pub fn from_json(text: &str) -> Result<Answer> {
             None
         }
     };
-    let position = match o.get("position") {
-        None => Some(1),
-        Some(p) => match p.as_u64() {
-            Some(n) if n >= 1 => Some(n as usize),
-            _ => {
-                issues.push(issue("/position", "expected a position number from 1"));
-                None
-            }
-        },
-    };
+    let position = position(o, &mut issues);
     let mu = match o.get("mu") {
         None => {
             issues.push(issue(
@@ -192,216 +221,21 @@ pub fn from_json(text: &str) -> Result<Answer> {
             ));
             None
         }
-        Some(m) => number(m, "/mu", &mut issues).filter(|&m| {
-            let ok = m > 0.0;
-            if !ok {
-                issues.push(issue("/mu", "a scale must be positive"));
-            }
-            ok
-        }),
+        Some(m) => positive(m, "/mu", "a scale must be positive", &mut issues),
     };
     let delta = match o.get("delta") {
         None => Some(0.5),
-        Some(d) => number(d, "/delta", &mut issues).filter(|&d| {
-            let ok = d > 0.0;
-            if !ok {
-                issues.push(issue("/delta", "the pencil precision must be positive"));
-            }
-            ok
-        }),
+        Some(d) => positive(
+            d,
+            "/delta",
+            "the pencil precision must be positive",
+            &mut issues,
+        ),
     };
-    let mut items = Vec::new();
-    let section = |name: &str, issues: &mut Vec<Issue>| -> Vec<(String, String, Value)> {
-        match o.get(name) {
-            None => Vec::new(),
-            Some(Value::Object(m)) => m
-                .iter()
-                .map(|(k, v)| (format!("/{name}/{}", escape(k)), k.clone(), v.clone()))
-                .collect(),
-            Some(_) => {
-                issues.push(issue(format!("/{name}"), "expected an object"));
-                Vec::new()
-            }
-        }
-    };
-    for (ptr, key, v) in section("segments", &mut issues) {
-        if let Some(mm) = number(&v, &ptr, &mut issues) {
-            if mm < 0.0 {
-                issues.push(issue(
-                    &ptr,
-                    format!("a measured length cannot be negative ({mm} mm)"),
-                ));
-                continue;
-            }
-            items.push(Item {
-                pointer: ptr,
-                key: key.clone(),
-                given: Given::Segment {
-                    from: key.clone(),
-                    to: String::new(),
-                    mm,
-                },
-            });
-        }
-    }
-    for (ptr, key, v) in section("angles", &mut issues) {
-        if let Some(deg) = number(&v, &ptr, &mut issues) {
-            items.push(Item {
-                pointer: ptr,
-                key: key.clone(),
-                given: Given::Angle {
-                    from: key.clone(),
-                    to: String::new(),
-                    deg,
-                },
-            });
-        }
-    }
-    for (ptr, key, v) in section("points", &mut issues) {
-        match v.as_array() {
-            Some(a) if a.len() == 2 => {
-                let (x, y) = (
-                    number(&a[0], &format!("{ptr}/0"), &mut issues),
-                    number(&a[1], &format!("{ptr}/1"), &mut issues),
-                );
-                if let (Some(x), Some(y)) = (x, y) {
-                    items.push(Item {
-                        pointer: ptr,
-                        key: key.clone(),
-                        given: Given::Point {
-                            name: key,
-                            at: [x, y],
-                        },
-                    });
-                }
-            }
-            _ => issues.push(issue(&ptr, "expected [x, y] in mm from the pole")),
-        }
-    }
-    for (ptr, key, v) in section("values", &mut issues) {
-        let value = match &v {
-            Value::String(s) => match parse_with_sense(s) {
-                Ok(x) => Some(x),
-                Err(why) => {
-                    issues.push(issue(&ptr, why));
-                    continue;
-                }
-            },
-            v => v.as_f64().filter(|x| x.is_finite()),
-        };
-        let Some(value) = value else {
-            issues.push(issue(&ptr, "expected a number (signed: counter-clockwise positive) or \"1.2 cw\" / \"1.2 ccw\""));
-            continue;
-        };
-        // A quantity of the other plan is a slip of the file, not of the
-        // plan: refuse it rather than read a_B as v_B.
-        let kind_of = |c: char| match c {
-            'w' | 'v' => PlanKind::Velocity,
-            _ => PlanKind::Acceleration,
-        };
-        if let (Some(p), Some((c, _))) = (plan, quantity(&key))
-            && kind_of(c) != p
-        {
-            issues.push(issue(
-                &ptr,
-                format!(
-                    "\"{key}\" belongs to the {} plan, but this answer is the {} plan",
-                    if kind_of(c) == PlanKind::Velocity {
-                        "velocity"
-                    } else {
-                        "acceleration"
-                    },
-                    if p == PlanKind::Velocity {
-                        "velocity"
-                    } else {
-                        "acceleration"
-                    },
-                ),
-            ));
-            continue;
-        }
-        match quantity(&key) {
-            Some(('w' | 'e', link)) => items.push(Item {
-                pointer: ptr,
-                key,
-                given: Given::Value {
-                    quantity: Quantity::Rate(link),
-                    value,
-                },
-            }),
-            Some((_, point)) => {
-                if value < 0.0 {
-                    issues.push(issue(&ptr, "a magnitude cannot be negative"));
-                    continue;
-                }
-                items.push(Item {
-                    pointer: ptr,
-                    key,
-                    given: Given::Value {
-                        quantity: Quantity::Point(point),
-                        value,
-                    },
-                })
-            }
-            None => issues.push(issue(
-                &ptr,
-                format!("unknown quantity \"{key}\": use v_B, a_D, ω2 (omega2), ε3 (eps3)"),
-            )),
-        }
-    }
+    let mut items = measured_items(o, &mut issues);
+    items.extend(value_items(o, plan, &mut issues));
     // The velocity plan an acceleration plan was drawn from.
-    let (mut mu_v, mut omegas) = (None, Vec::new());
-    match o.get("velocity") {
-        None => {}
-        Some(_) if plan == Some(PlanKind::Velocity) => issues.push(issue(
-            "/velocity",
-            "a velocity plan has no velocity plan of its own: give \"velocity\" with an acceleration plan",
-        )),
-        Some(Value::Object(vo)) => {
-            for k in vo.keys() {
-                if !["mu", "values"].contains(&k.as_str()) {
-                    issues.push(issue(
-                        format!("/velocity/{}", escape(k)),
-                        format!("unknown field \"{k}\" (allowed: mu, values)"),
-                    ));
-                }
-            }
-            if let Some(m) = vo.get("mu") {
-                mu_v = number(m, "/velocity/mu", &mut issues).filter(|&m| {
-                    let ok = m > 0.0;
-                    if !ok {
-                        issues.push(issue("/velocity/mu", "a scale must be positive"));
-                    }
-                    ok
-                });
-            }
-            match vo.get("values") {
-                None => {}
-                Some(Value::Object(vals)) => {
-                    for (k, v) in vals {
-                        let ptr = format!("/velocity/values/{}", escape(k));
-                        let value = match v {
-                            Value::String(s) => parse_with_sense(s).map_err(|w| issues.push(issue(&ptr, w))).ok(),
-                            v => number(v, &ptr, &mut issues),
-                        };
-                        match (quantity(k), value) {
-                            (Some(('w', link)), Some(x)) => omegas.push((link, x)),
-                            (_, None) => {}
-                            _ => issues.push(issue(
-                                &ptr,
-                                format!("\"{k}\": the velocity plan's values here are the links' ω (omega2, ω3)"),
-                            )),
-                        }
-                    }
-                }
-                Some(_) => issues.push(issue("/velocity/values", "expected an object")),
-            }
-        }
-        Some(_) => issues.push(issue(
-            "/velocity",
-            "expected an object: { \"mu\": the velocity plan's scale, \"values\": { \"omega2\": … } }",
-        )),
-    }
+    let (mu_v, omegas) = velocity_plan(o, plan, &mut issues);
     if items.is_empty() && issues.is_empty() {
         issues.push(issue(
             "",
@@ -420,6 +254,237 @@ pub fn from_json(text: &str) -> Result<Answer> {
         mu_v,
         omegas,
     })
+}
+
+/// The entries of the answer's object `name` as (pointer, key, value);
+/// none if it is missing, with an issue if it is not an object.
+fn section(
+    o: &serde_json::Map<String, Value>,
+    name: &str,
+    issues: &mut Vec<Issue>,
+) -> Vec<(String, String, Value)> {
+    match o.get(name) {
+        None => Vec::new(),
+        Some(Value::Object(m)) => m
+            .iter()
+            .map(|(k, v)| (format!("/{name}/{}", escape(k)), k.clone(), v.clone()))
+            .collect(),
+        Some(_) => {
+            issues.push(issue(format!("/{name}"), "expected an object"));
+            Vec::new()
+        }
+    }
+}
+
+/// What the student measured on the plan: the segments (mm, not
+/// negative), the angles (degrees) and the points (mm from the pole).
+fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<Item> {
+    let mut items = Vec::new();
+    for (ptr, key, v) in section(o, "segments", issues) {
+        if let Some(mm) = number(&v, &ptr, issues) {
+            if mm < 0.0 {
+                issues.push(issue(
+                    &ptr,
+                    format!("a measured length cannot be negative ({mm} mm)"),
+                ));
+                continue;
+            }
+            items.push(Item {
+                pointer: ptr,
+                key: key.clone(),
+                given: Given::Segment {
+                    from: key.clone(),
+                    to: String::new(),
+                    mm,
+                },
+            });
+        }
+    }
+    for (ptr, key, v) in section(o, "angles", issues) {
+        if let Some(deg) = number(&v, &ptr, issues) {
+            items.push(Item {
+                pointer: ptr,
+                key: key.clone(),
+                given: Given::Angle {
+                    from: key.clone(),
+                    to: String::new(),
+                    deg,
+                },
+            });
+        }
+    }
+    for (ptr, key, v) in section(o, "points", issues) {
+        match v.as_array() {
+            Some(a) if a.len() == 2 => {
+                let (x, y) = (
+                    number(&a[0], &format!("{ptr}/0"), issues),
+                    number(&a[1], &format!("{ptr}/1"), issues),
+                );
+                if let (Some(x), Some(y)) = (x, y) {
+                    items.push(Item {
+                        pointer: ptr,
+                        key: key.clone(),
+                        given: Given::Point {
+                            name: key,
+                            at: [x, y],
+                        },
+                    });
+                }
+            }
+            _ => issues.push(issue(&ptr, "expected [x, y] in mm from the pole")),
+        }
+    }
+    items
+}
+
+/// The derived values: a number, or a magnitude with its sense.
+fn value_items(
+    o: &serde_json::Map<String, Value>,
+    plan: Option<PlanKind>,
+    issues: &mut Vec<Issue>,
+) -> Vec<Item> {
+    let mut items = Vec::new();
+    for (ptr, key, v) in section(o, "values", issues) {
+        let value = match &v {
+            Value::String(s) => match parse_with_sense(s) {
+                Ok(x) => Some(x),
+                Err(why) => {
+                    issues.push(issue(&ptr, why));
+                    continue;
+                }
+            },
+            v => v.as_f64().filter(|x| x.is_finite()),
+        };
+        let Some(value) = value else {
+            issues.push(issue(&ptr, "expected a number (signed: counter-clockwise positive) or \"1.2 cw\" / \"1.2 ccw\""));
+            continue;
+        };
+        match value_item(plan, ptr, key, value) {
+            Ok(it) => items.push(it),
+            Err(i) => issues.push(i),
+        }
+    }
+    items
+}
+
+/// The value `key` (v_B, ω2 …) of the answer's `plan` as an item.
+fn value_item(
+    plan: Option<PlanKind>,
+    ptr: String,
+    key: String,
+    value: f64,
+) -> std::result::Result<Item, Issue> {
+    // A quantity of the other plan is a slip of the file, not of the
+    // plan: refuse it rather than read a_B as v_B.
+    let kind_of = |c: char| match c {
+        'w' | 'v' => PlanKind::Velocity,
+        _ => PlanKind::Acceleration,
+    };
+    if let (Some(p), Some((c, _))) = (plan, quantity(&key))
+        && kind_of(c) != p
+    {
+        return Err(issue(
+            &ptr,
+            format!(
+                "\"{key}\" belongs to the {} plan, but this answer is the {} plan",
+                plan_name(kind_of(c)),
+                plan_name(p),
+            ),
+        ));
+    }
+    match quantity(&key) {
+        Some(('w' | 'e', link)) => Ok(Item {
+            pointer: ptr,
+            key,
+            given: Given::Value {
+                quantity: Quantity::Rate(link),
+                value,
+            },
+        }),
+        Some((_, point)) => {
+            if value < 0.0 {
+                return Err(issue(&ptr, "a magnitude cannot be negative"));
+            }
+            Ok(Item {
+                pointer: ptr,
+                key,
+                given: Given::Value {
+                    quantity: Quantity::Point(point),
+                    value,
+                },
+            })
+        }
+        None => Err(issue(
+            &ptr,
+            format!("unknown quantity \"{key}\": use v_B, a_D, ω2 (omega2), ε3 (eps3)"),
+        )),
+    }
+}
+
+/// The velocity plan an acceleration answer was drawn from: its scale
+/// and the ω taken from it.
+fn velocity_plan(
+    o: &serde_json::Map<String, Value>,
+    plan: Option<PlanKind>,
+    issues: &mut Vec<Issue>,
+) -> (Option<f64>, Vec<(String, f64)>) {
+    let (mut mu_v, mut omegas) = (None, Vec::new());
+    match o.get("velocity") {
+        None => {}
+        Some(_) if plan == Some(PlanKind::Velocity) => issues.push(issue(
+            "/velocity",
+            "a velocity plan has no velocity plan of its own: give \"velocity\" with an acceleration plan",
+        )),
+        Some(Value::Object(vo)) => {
+            for k in vo.keys() {
+                if !["mu", "values"].contains(&k.as_str()) {
+                    issues.push(issue(
+                        format!("/velocity/{}", escape(k)),
+                        format!("unknown field \"{k}\" (allowed: mu, values)"),
+                    ));
+                }
+            }
+            if let Some(m) = vo.get("mu") {
+                mu_v = positive(m, "/velocity/mu", "a scale must be positive", issues);
+            }
+            match vo.get("values") {
+                None => {}
+                Some(Value::Object(vals)) => omegas = velocity_values(vals, issues),
+                Some(_) => issues.push(issue("/velocity/values", "expected an object")),
+            }
+        }
+        Some(_) => issues.push(issue(
+            "/velocity",
+            "expected an object: { \"mu\": the velocity plan's scale, \"values\": { \"omega2\": … } }",
+        )),
+    }
+    (mu_v, omegas)
+}
+
+/// The ω (link id, signed) the student took from the velocity plan.
+fn velocity_values(
+    vals: &serde_json::Map<String, Value>,
+    issues: &mut Vec<Issue>,
+) -> Vec<(String, f64)> {
+    let mut omegas = Vec::new();
+    for (k, v) in vals {
+        let ptr = format!("/velocity/values/{}", escape(k));
+        let value = match v {
+            Value::String(s) => parse_with_sense(s)
+                .map_err(|w| issues.push(issue(&ptr, w)))
+                .ok(),
+            v => number(v, &ptr, issues),
+        };
+        match (quantity(k), value) {
+            (Some(('w', link)), Some(x)) => omegas.push((link, x)),
+            (_, None) => {}
+            _ => issues.push(issue(
+                &ptr,
+                format!("\"{k}\": the velocity plan's values here are the links' ω (omega2, ω3)"),
+            )),
+        }
+    }
+    omegas
 }
 
 /// "1.2 cw" → −1.2, "1.2 ccw" → 1.2, "-0.4" → −0.4, in any case ("CW");

@@ -17,22 +17,41 @@ use crate::words::construction::{Lang, sentence};
 /// one laid-off length is tried (its factor fitted).
 pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) -> Diagnosis {
     let n = exp.len();
-    let step_of = |f: &Fit| {
-        f.plan.mistake_step.map(|k| {
-            let k = k.min(f.plan.steps.len().saturating_sub(1));
-            (k + 1, sentence(&f.plan, k, Lang::En))
+    one_mistake(r, cands, n)
+        .or_else(|| two_mistakes(b, r, cands, n))
+        .or_else(|| slip(b, r, exp))
+        .unwrap_or(Diagnosis {
+            mistake: None,
+            explanation: None,
+            step: None,
+            explained: 0,
+            alternatives: Vec::new(),
         })
-    };
-    let what_of = |f: &Fit| -> String {
-        f.plan
-            .mistake_step
-            .and_then(|k| f.plan.steps.get(k))
-            .map(|st| match &st.op {
-                crate::kinematics::construction::Op::LayOff { what, .. } => what.clone(),
-                _ => String::from("a vector"),
-            })
-            .unwrap_or_else(|| "a vector".into())
-    };
+}
+
+/// The step where a candidate's mistake enters, with its sentence.
+fn step_of(f: &Fit) -> Option<(usize, String)> {
+    f.plan.mistake_step.map(|k| {
+        let k = k.min(f.plan.steps.len().saturating_sub(1));
+        (k + 1, sentence(&f.plan, k, Lang::En))
+    })
+}
+
+/// What a candidate's mistaken step lays off ("a vector" if it says not).
+fn what_of(f: &Fit) -> String {
+    f.plan
+        .mistake_step
+        .and_then(|k| f.plan.steps.get(k))
+        .map(|st| match &st.op {
+            crate::kinematics::construction::Op::LayOff { what, .. } => what.clone(),
+            _ => String::from("a vector"),
+        })
+        .unwrap_or_else(|| "a vector".into())
+}
+
+/// The candidate that explains all `n` items, named unless another of a
+/// different kind fits about as well (then all of them, "not recognised").
+fn one_mistake(r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
     let mut explaining: Vec<(&Fit, f64)> = cands
         .iter()
         .filter_map(|f| {
@@ -41,43 +60,43 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
         })
         .collect();
     explaining.sort_by(|a, b| a.1.total_cmp(&b.1));
-    if let Some(&(best, misfit)) = explaining.first() {
-        let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f));
-        let name = sentence_of(best);
-        // Explanations of another kind that fit about as well.
-        let mut alternatives: Vec<String> = explaining[1..]
-            .iter()
-            .filter(|(f, m)| {
-                *m <= ACCURACY.distinct_misfit * misfit.max(1e-12) && !same_kind(f.c, best.c)
-            })
-            .map(|(f, _)| sentence_of(f))
-            .collect();
-        alternatives.dedup();
-        let mistake = alternatives.is_empty().then_some(name.clone());
-        if mistake.is_none() {
-            alternatives.insert(0, name);
-        }
-        return Diagnosis {
-            explanation: mistake.is_some().then_some(best.c),
-            mistake,
-            step: step_of(best),
-            explained: n,
-            alternatives,
-        };
+    let &(best, misfit) = explaining.first()?;
+    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f));
+    let name = sentence_of(best);
+    // Explanations of another kind that fit about as well.
+    let mut alternatives: Vec<String> = explaining[1..]
+        .iter()
+        .filter(|(f, m)| {
+            *m <= ACCURACY.distinct_misfit * misfit.max(1e-12) && !same_kind(f.c, best.c)
+        })
+        .map(|(f, _)| sentence_of(f))
+        .collect();
+    alternatives.dedup();
+    let mistake = alternatives.is_empty().then_some(name.clone());
+    if mistake.is_none() {
+        alternatives.insert(0, name);
     }
-    // Two mistakes combined, each everywhere: the pairs of the kinds this
-    // plan can make.
-    let kinds: Vec<Mistake> = {
-        let mut k: Vec<Mistake> = Vec::new();
-        for f in cands {
-            if let Candidate::Mistake { m, both: false, .. } = f.c
-                && !k.contains(&m)
-            {
-                k.push(m);
-            }
+    Some(Diagnosis {
+        explanation: mistake.is_some().then_some(best.c),
+        mistake,
+        step: step_of(best),
+        explained: n,
+        alternatives,
+    })
+}
+
+/// Two mistakes combined, each everywhere: the pairs of the kinds this
+/// plan can make (the candidates'), the one that explains all `n` items
+/// named unless others fit about as well.
+fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
+    let mut kinds: Vec<Mistake> = Vec::new();
+    for f in cands {
+        if let Candidate::Mistake { m, both: false, .. } = f.c
+            && !kinds.contains(&m)
+        {
+            kinds.push(m);
         }
-        k
-    };
+    }
     let mut pairs: Vec<(Fit, f64)> = Vec::new();
     for (i, &x) in kinds.iter().enumerate() {
         for &y in &kinds[i + 1..] {
@@ -103,29 +122,32 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
         }
     }
     pairs.sort_by(|a, b| a.1.total_cmp(&b.1));
-    if let Some((best, misfit)) = pairs.first() {
-        let others = pairs[1..]
-            .iter()
-            .filter(|p| p.1 <= ACCURACY.distinct_misfit * misfit.max(1e-12))
-            .count();
-        let name = mistake_sentence(best.c, r.mu, &what_of(best));
-        return Diagnosis {
-            explanation: (others == 0).then_some(best.c),
-            mistake: (others == 0).then(|| name.clone()),
-            step: step_of(best),
-            explained: n,
-            alternatives: if others == 0 {
-                Vec::new()
-            } else {
-                pairs
-                    .iter()
-                    .take(others + 1)
-                    .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0)))
-                    .collect()
-            },
-        };
-    }
-    // A slip in one length: each laid-off vector in turn, its factor fitted.
+    let (best, misfit) = pairs.first()?;
+    let others = pairs[1..]
+        .iter()
+        .filter(|p| p.1 <= ACCURACY.distinct_misfit * misfit.max(1e-12))
+        .count();
+    let name = mistake_sentence(best.c, r.mu, &what_of(best));
+    Some(Diagnosis {
+        explanation: (others == 0).then_some(best.c),
+        mistake: (others == 0).then(|| name.clone()),
+        step: step_of(best),
+        explained: n,
+        alternatives: if others == 0 {
+            Vec::new()
+        } else {
+            pairs
+                .iter()
+                .take(others + 1)
+                .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0)))
+                .collect()
+        },
+    })
+}
+
+/// A slip in one length: each laid-off vector in turn, its factor fitted;
+/// the one that explains every item best.
+fn slip(b: &Builds, r: &Report, exp: &[Expected]) -> Option<Diagnosis> {
     let mut best: Option<(Fit, f64)> = None;
     if let Ok(count) = b.plan(
         &b.s.config,
@@ -144,22 +166,14 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
             }
         }
     }
-    if let Some((f, _)) = best {
-        return Diagnosis {
-            explanation: Some(f.c),
-            mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f))),
-            step: step_of(&f),
-            explained: n,
-            alternatives: Vec::new(),
-        };
-    }
-    Diagnosis {
-        mistake: None,
-        explanation: None,
-        step: None,
-        explained: 0,
+    let (f, _) = best?;
+    Some(Diagnosis {
+        explanation: Some(f.c),
+        mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f))),
+        step: step_of(&f),
+        explained: exp.len(),
         alternatives: Vec::new(),
-    }
+    })
 }
 
 /// Two candidates that name the same mistake (one element of a kind and

@@ -39,18 +39,26 @@ use candidates::{Builds, candidates, cannot_judge};
 use diagnosis::diagnose;
 use items::expect;
 
+/// Position `position` (from 1) of `solved`; a position the scene does
+/// not have is refused, naming the range.
+fn position_of(solved: &[Solved], position: usize) -> Result<&Solved> {
+    position
+        .checked_sub(1)
+        .and_then(|k| solved.get(k))
+        .ok_or_else(|| {
+            Error::scene(
+                "/position",
+                format!(
+                    "position {position} is not one of the scene's positions: they are numbered from 1 to {}",
+                    solved.len()
+                ),
+            )
+        })
+}
+
 /// Check `answer` against the scene's analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
-    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
-        return Err(Error::scene(
-            "/position",
-            format!(
-                "position {} is not one of the scene's positions: they are numbered from 1 to {}",
-                ans.position,
-                solved.len()
-            ),
-        ));
-    };
+    let s = position_of(solved, ans.position)?;
     if !an.plans
         || an.order.is_none()
         || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))

@@ -170,109 +170,19 @@ pub(super) fn parse(text: &str) -> Result<Drawing> {
     }
     let doc = roxmltree::Document::parse(text)
         .map_err(|e| bad(format!("not a readable SVG file: {e}")))?;
-    let root = doc.root_element();
-    // Root user units → mm: the width (in its unit) over the viewBox width;
-    // without a viewBox, user units are CSS pixels.
-    let width_mm = root
-        .attribute("width")
-        .and_then(|l| l.parse::<svgtypes::Length>().ok())
-        .map(|l| match l.unit {
-            svgtypes::LengthUnit::Mm => l.number,
-            svgtypes::LengthUnit::Cm => l.number * 10.0,
-            svgtypes::LengthUnit::In => l.number * 25.4,
-            svgtypes::LengthUnit::Pt => l.number * 25.4 / 72.0,
-            _ => l.number * 25.4 / 96.0,
-        });
-    let vb = root
-        .attribute("viewBox")
-        .and_then(|v| v.parse::<svgtypes::ViewBox>().ok());
-    let unit = match (vb, width_mm) {
-        (Some(v), Some(w)) if v.w > 0.0 => w / v.w,
-        _ => 25.4 / 96.0,
-    };
-    let origin = vb.map(|v| kurbo::Vec2::new(v.x, v.y)).unwrap_or_default();
-    // The transform from each node's coordinates to the root's: its
-    // parent's (found first, in document order) times its own.
-    let mut transforms: Vec<kurbo::Affine> = Vec::new();
-    for n in doc.descendants() {
-        let parent = n
-            .parent()
-            .map_or(kurbo::Affine::IDENTITY, |p| transforms[p.id().get_usize()]);
-        let own = n
-            .attribute("transform")
-            .and_then(|s| s.parse::<svgtypes::Transform>().ok())
-            .map_or(kurbo::Affine::IDENTITY, |tr| {
-                kurbo::Affine::new([tr.a, tr.b, tr.c, tr.d, tr.e, tr.f])
-            });
-        let id = n.id().get_usize();
-        if transforms.len() <= id {
-            transforms.resize(id + 1, kurbo::Affine::IDENTITY);
-        }
-        transforms[id] = parent * own;
-    }
-    let affine = |n: roxmltree::Node| transforms[n.id().get_usize()];
-    let mm = |p: Point| ((p - origin).to_vec2() * unit).to_point();
-    let num = |n: roxmltree::Node, a: &str| {
-        n.attribute(a)
-            .and_then(|v| v.split_whitespace().next()?.parse::<f64>().ok())
-    };
+    let page = Page::of(&doc);
     let mut labels: Vec<(String, Point)> = Vec::new();
     let mut lines: Vec<Vec<Point>> = Vec::new();
     for n in doc.descendants().filter(|n| n.is_element()) {
         match n.tag_name().name() {
-            "text" => {
-                let content: String = n
-                    .descendants()
-                    .filter(|d| d.is_text())
-                    .filter_map(|d| d.text())
-                    .collect();
-                // The anchor: the text's x, y (or its first tspan's).
-                let pos = n
-                    .descendants()
-                    .filter(|d| d.is_element())
-                    .find_map(|d| Some((num(d, "x")?, num(d, "y")?)));
-                if let Some((x, y)) = pos {
-                    let size = num(n, "font-size").unwrap_or(4.0);
-                    // Middle of the text's first letter, above its baseline.
-                    let at = affine(n) * Point::new(x + 0.3 * size, y - 0.35 * size);
-                    labels.push((content.trim().to_string(), mm(at)));
-                }
-            }
-            "path" => {
-                let t = affine(n);
-                let mut line = Vec::new();
-                for seg in
-                    svgtypes::SimplifyingPathParser::from(n.attribute("d").unwrap_or("")).flatten()
-                {
-                    let p = match seg {
-                        svgtypes::SimplePathSegment::MoveTo { x, y }
-                        | svgtypes::SimplePathSegment::LineTo { x, y } => Some((x, y)),
-                        svgtypes::SimplePathSegment::CurveTo { x, y, .. }
-                        | svgtypes::SimplePathSegment::Quadratic { x, y, .. } => Some((x, y)),
-                        svgtypes::SimplePathSegment::ClosePath => None,
-                    };
-                    match (seg, p) {
-                        // A move starts a new line of the path.
-                        (svgtypes::SimplePathSegment::MoveTo { .. }, Some((x, y))) => {
-                            if !line.is_empty() {
-                                lines.push(std::mem::take(&mut line));
-                            }
-                            line.push(mm(t * Point::new(x, y)));
-                        }
-                        (_, Some((x, y))) => line.push(mm(t * Point::new(x, y))),
-                        _ => {}
-                    }
-                }
-                if !line.is_empty() {
-                    lines.push(line);
-                }
-            }
+            "text" => labels.extend(page.label(n)),
+            "path" => page.path(n, &mut lines),
             "line" => {
-                let t = affine(n);
+                let t = page.affine(n);
                 let mut line = Vec::new();
                 for (x, y) in [("x1", "y1"), ("x2", "y2")] {
                     if let (Some(x), Some(y)) = (num(n, x), num(n, y)) {
-                        line.push(mm(t * Point::new(x, y)));
+                        line.push(page.mm(t * Point::new(x, y)));
                     }
                 }
                 lines.push(line);
@@ -281,6 +191,127 @@ pub(super) fn parse(text: &str) -> Result<Drawing> {
         }
     }
     Ok(Drawing { labels, lines })
+}
+
+/// An attribute's first number.
+fn num(n: roxmltree::Node, a: &str) -> Option<f64> {
+    n.attribute(a)
+        .and_then(|v| v.split_whitespace().next()?.parse::<f64>().ok())
+}
+
+/// A drawing's coordinates: each node's transform to the root's, and the
+/// root's user units in mm from its viewBox's origin.
+struct Page {
+    transforms: Vec<kurbo::Affine>,
+    unit: f64,
+    origin: kurbo::Vec2,
+}
+
+impl Page {
+    fn of(doc: &roxmltree::Document) -> Page {
+        let root = doc.root_element();
+        // Root user units → mm: the width (in its unit) over the viewBox
+        // width; without a viewBox, user units are CSS pixels.
+        let width_mm = root
+            .attribute("width")
+            .and_then(|l| l.parse::<svgtypes::Length>().ok())
+            .map(|l| match l.unit {
+                svgtypes::LengthUnit::Mm => l.number,
+                svgtypes::LengthUnit::Cm => l.number * 10.0,
+                svgtypes::LengthUnit::In => l.number * 25.4,
+                svgtypes::LengthUnit::Pt => l.number * 25.4 / 72.0,
+                _ => l.number * 25.4 / 96.0,
+            });
+        let vb = root
+            .attribute("viewBox")
+            .and_then(|v| v.parse::<svgtypes::ViewBox>().ok());
+        let unit = match (vb, width_mm) {
+            (Some(v), Some(w)) if v.w > 0.0 => w / v.w,
+            _ => 25.4 / 96.0,
+        };
+        let origin = vb.map(|v| kurbo::Vec2::new(v.x, v.y)).unwrap_or_default();
+        // The transform from each node's coordinates to the root's: its
+        // parent's (found first, in document order) times its own.
+        let mut transforms: Vec<kurbo::Affine> = Vec::new();
+        for n in doc.descendants() {
+            let parent = n
+                .parent()
+                .map_or(kurbo::Affine::IDENTITY, |p| transforms[p.id().get_usize()]);
+            let own = n
+                .attribute("transform")
+                .and_then(|s| s.parse::<svgtypes::Transform>().ok())
+                .map_or(kurbo::Affine::IDENTITY, |tr| {
+                    kurbo::Affine::new([tr.a, tr.b, tr.c, tr.d, tr.e, tr.f])
+                });
+            let id = n.id().get_usize();
+            if transforms.len() <= id {
+                transforms.resize(id + 1, kurbo::Affine::IDENTITY);
+            }
+            transforms[id] = parent * own;
+        }
+        Page {
+            transforms,
+            unit,
+            origin,
+        }
+    }
+
+    fn affine(&self, n: roxmltree::Node) -> kurbo::Affine {
+        self.transforms[n.id().get_usize()]
+    }
+
+    /// A root point in mm.
+    fn mm(&self, p: Point) -> Point {
+        ((p - self.origin).to_vec2() * self.unit).to_point()
+    }
+
+    /// A text element's content and where it is: the middle of its first
+    /// letter, above its baseline (its x, y or its first tspan's).
+    fn label(&self, n: roxmltree::Node) -> Option<(String, Point)> {
+        let content: String = n
+            .descendants()
+            .filter(|d| d.is_text())
+            .filter_map(|d| d.text())
+            .collect();
+        // The anchor: the text's x, y (or its first tspan's).
+        let (x, y) = n
+            .descendants()
+            .filter(|d| d.is_element())
+            .find_map(|d| Some((num(d, "x")?, num(d, "y")?)))?;
+        let size = num(n, "font-size").unwrap_or(4.0);
+        // Middle of the text's first letter, above its baseline.
+        let at = self.affine(n) * Point::new(x + 0.3 * size, y - 0.35 * size);
+        Some((content.trim().to_string(), self.mm(at)))
+    }
+
+    /// A path element's lines (a move starts a new one) into `lines`.
+    fn path(&self, n: roxmltree::Node, lines: &mut Vec<Vec<Point>>) {
+        let t = self.affine(n);
+        let mut line = Vec::new();
+        for seg in svgtypes::SimplifyingPathParser::from(n.attribute("d").unwrap_or("")).flatten() {
+            let p = match seg {
+                svgtypes::SimplePathSegment::MoveTo { x, y }
+                | svgtypes::SimplePathSegment::LineTo { x, y } => Some((x, y)),
+                svgtypes::SimplePathSegment::CurveTo { x, y, .. }
+                | svgtypes::SimplePathSegment::Quadratic { x, y, .. } => Some((x, y)),
+                svgtypes::SimplePathSegment::ClosePath => None,
+            };
+            match (seg, p) {
+                // A move starts a new line of the path.
+                (svgtypes::SimplePathSegment::MoveTo { .. }, Some((x, y))) => {
+                    if !line.is_empty() {
+                        lines.push(std::mem::take(&mut line));
+                    }
+                    line.push(self.mm(t * Point::new(x, y)));
+                }
+                (_, Some((x, y))) => line.push(self.mm(t * Point::new(x, y))),
+                _ => {}
+            }
+        }
+        if !line.is_empty() {
+            lines.push(line);
+        }
+    }
 }
 
 /// The scale a drawing states in a text such as "μ_v = 0.01 (m/s)/mm",

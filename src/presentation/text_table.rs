@@ -201,7 +201,5 @@ pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    let s = format!("{x:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
+    crate::format::fixed(x, 6)
 }

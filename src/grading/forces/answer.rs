@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Issue, Result};
 use crate::json::parse_strict;
-use serde_json::Value;
+use serde_json::{Map, Value};
 
 /// A student's force plan.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,40 +57,9 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
             ));
         }
     }
-    let positive = |k: &str, issues: &mut Vec<Issue>| -> Option<f64> {
-        let x = o.get(k)?;
-        match x.as_f64() {
-            Some(x) if x.is_finite() && x > 0.0 => Some(x),
-            _ => {
-                issues.push(issue(&format!("/{k}"), "expected a positive number"));
-                None
-            }
-        }
-    };
-    let position = match o.get("position") {
-        None => 1,
-        Some(p) => match p.as_u64() {
-            Some(n) if n >= 1 => n as usize,
-            _ => {
-                issues.push(issue("/position", "expected a position number from 1"));
-                1
-            }
-        },
-    };
-    let links = match o.get("links").and_then(Value::as_array) {
-        Some(a) if !a.is_empty() && a.iter().all(Value::is_string) => a
-            .iter()
-            .map(|x| x.as_str().unwrap_or_default().to_string())
-            .collect(),
-        _ => {
-            issues.push(issue(
-                "/links",
-                "missing or wrong: the ids of the plan's links, as in the scene (a group's two, or the input link's)",
-            ));
-            Vec::new()
-        }
-    };
-    let mu = positive("mu", &mut issues).filter(|&m| {
+    let position = super::super::answer::position(o, &mut issues).unwrap_or(1);
+    let links = links(o, &mut issues);
+    let mu = positive(o, "mu", &mut issues).filter(|&m| {
         // A scale no drawing has (a subnormal, 10³⁰⁰ N/mm) makes every
         // segment nothing or infinite: refused, never judged.
         let sane = (1e-6..=1e9).contains(&m);
@@ -108,33 +77,11 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
             "missing: the scale μ_F of your force plan (N/mm)",
         ));
     }
-    let delta = positive("delta", &mut issues).unwrap_or(0.5);
-    let mu_l = positive("mu_l", &mut issues);
-    let table = |k: &str, issues: &mut Vec<Issue>| -> Vec<(String, String, f64)> {
-        let Some(x) = o.get(k) else { return Vec::new() };
-        let Some(t) = x.as_object() else {
-            issues.push(issue(
-                &format!("/{k}"),
-                "expected an object of force names to numbers",
-            ));
-            return Vec::new();
-        };
-        t.iter()
-            .filter_map(|(name, x)| {
-                let at = format!("/{k}/{name}");
-                match x.as_f64().filter(|x| x.is_finite()) {
-                    Some(x) => Some((at, name.clone(), x)),
-                    None => {
-                        issues.push(issue(&at, "expected a finite number"));
-                        None
-                    }
-                }
-            })
-            .collect()
-    };
-    let segments = table("segments", &mut issues);
-    let angles = table("angles", &mut issues);
-    let values = table("values", &mut issues);
+    let delta = positive(o, "delta", &mut issues).unwrap_or(0.5);
+    let mu_l = positive(o, "mu_l", &mut issues);
+    let segments = table(o, "segments", &mut issues);
+    let angles = table(o, "angles", &mut issues);
+    let values = table(o, "values", &mut issues);
     for (at, _, x) in &segments {
         if *x < 0.0 {
             issues.push(issue(at, "a segment's length is not negative"));
@@ -159,6 +106,60 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
         angles,
         values,
     })
+}
+
+/// The answer's field `k`, a positive number when given.
+fn positive(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Option<f64> {
+    let x = o.get(k)?;
+    match x.as_f64() {
+        Some(x) if x.is_finite() && x > 0.0 => Some(x),
+        _ => {
+            issues.push(issue(&format!("/{k}"), "expected a positive number"));
+            None
+        }
+    }
+}
+
+/// The ids of the plan's links.
+fn links(o: &Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<String> {
+    match o.get("links").and_then(Value::as_array) {
+        Some(a) if !a.is_empty() && a.iter().all(Value::is_string) => a
+            .iter()
+            .map(|x| x.as_str().unwrap_or_default().to_string())
+            .collect(),
+        _ => {
+            issues.push(issue(
+                "/links",
+                "missing or wrong: the ids of the plan's links, as in the scene (a group's two, or the input link's)",
+            ));
+            Vec::new()
+        }
+    }
+}
+
+/// The answer's object `k` of force names to numbers, as (pointer, name,
+/// number).
+fn table(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Vec<(String, String, f64)> {
+    let Some(x) = o.get(k) else { return Vec::new() };
+    let Some(t) = x.as_object() else {
+        issues.push(issue(
+            &format!("/{k}"),
+            "expected an object of force names to numbers",
+        ));
+        return Vec::new();
+    };
+    t.iter()
+        .filter_map(|(name, x)| {
+            let at = format!("/{k}/{name}");
+            match x.as_f64().filter(|x| x.is_finite()) {
+                Some(x) => Some((at, name.clone(), x)),
+                None => {
+                    issues.push(issue(&at, "expected a finite number"));
+                    None
+                }
+            }
+        })
+        .collect()
 }
 
 /// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").

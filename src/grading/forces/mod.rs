@@ -212,16 +212,7 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
 
 /// Check a force-plan answer against the analysis.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
-    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
-        return Err(Error::scene(
-            "/position",
-            format!(
-                "position {} is not one of the scene's positions: they are numbered from 1 to {}",
-                ans.position,
-                solved.len()
-            ),
-        ));
-    };
+    let s = super::position_of(solved, ans.position)?;
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return Err(Error::scene(
             "/plan",
@@ -229,28 +220,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         ));
     };
     let right_loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
-    // An SVG answer names its forces, not its links: the plan holding them.
-    let mut ans = ans.clone();
-    if ans.links.is_empty() {
-        let names: Vec<String> = ans.segments.iter().map(|x| x.1.clone()).collect();
-        if let Some((_, i)) = which_by_names(an, right_loads, &fp.plans, &names) {
-            ans.links = fp.plans[i]
-                .links
-                .iter()
-                .map(|&l| an.mech.link_id(l).to_string())
-                .collect();
-        } else {
-            return Err(Error::scene(
-                "svg",
-                format!(
-                    "no force plan of position {} has all the forces labelled ({})",
-                    ans.position,
-                    names.join(", ")
-                ),
-            ));
-        }
-    }
-    let ans = &ans;
+    let ans = &with_links(an, right_loads, &fp.plans, ans)?;
     let Some((w, _)) = which(an, &fp.plans, &ans.links) else {
         let all: Vec<String> = fp
             .plans
@@ -276,7 +246,95 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
     };
     let plan = at_scale(right_loads)?;
     // The typical mistakes, as whole plans at the student's scale.
-    let mistakes: Vec<(&str, Vec<Load>)> = vec![
+    let mistaken: Vec<(&str, ForcePlan)> = mistakes(right_loads)
+        .into_iter()
+        .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
+        .collect();
+    let judge = Judge {
+        an,
+        loads: right_loads,
+        plan: &plan,
+        ans,
+        mistaken: &mistaken,
+    };
+    let mut verdicts = Vec::new();
+    let mut issues = Vec::new();
+    let mut explained: Vec<usize> = vec![0; mistaken.len()];
+    let items = [
+        ("segment", &ans.segments, "mm"),
+        ("angle", &ans.angles, "°"),
+        ("value", &ans.values, ""),
+    ];
+    for (kind, list, unit) in items {
+        for (pointer, name, given) in list.iter() {
+            match judge.verdict((kind, unit), pointer, name, *given, &mut explained) {
+                Ok(v) => verdicts.push(v),
+                Err(i) => issues.push(i),
+            }
+        }
+    }
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
+    }
+    let wrong = verdicts
+        .iter()
+        .filter(|v| v.judgement == Judgement::Wrong)
+        .count();
+    let diagnosis = (wrong > 0)
+        .then(|| {
+            mistaken
+                .iter()
+                .zip(&explained)
+                .filter(|(_, n)| **n >= wrong)
+                .max_by_key(|(_, n)| **n)
+                .map(|((what, _), _)| what.to_string())
+        })
+        .flatten();
+    Ok(ForceReport {
+        position: ans.position,
+        links: ans.links.clone(),
+        mu: ans.mu,
+        delta,
+        verdicts,
+        diagnosis,
+    })
+}
+
+/// The answer with its plan's links: an SVG answer names its forces, not
+/// its links, and the plan holding them all gives them.
+fn with_links(
+    an: &Analysis,
+    loads: &[Load],
+    plans: &[ForcePlan],
+    ans: &ForceAnswer,
+) -> Result<ForceAnswer> {
+    let mut ans = ans.clone();
+    if ans.links.is_empty() {
+        let names: Vec<String> = ans.segments.iter().map(|x| x.1.clone()).collect();
+        if let Some((_, i)) = which_by_names(an, loads, plans, &names) {
+            ans.links = plans[i]
+                .links
+                .iter()
+                .map(|&l| an.mech.link_id(l).to_string())
+                .collect();
+        } else {
+            return Err(Error::scene(
+                "svg",
+                format!(
+                    "no force plan of position {} has all the forces labelled ({})",
+                    ans.position,
+                    names.join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(ans)
+}
+
+/// The typical mistakes, each with the loads it draws the plans with:
+/// the inertia forces and couples not reversed, the weights left out.
+fn mistakes(right_loads: &[Load]) -> Vec<(&'static str, Vec<Load>)> {
+    vec![
         (
             "the inertia forces and couples not reversed (m·a_S and J·ε instead of −m·a_S and −J·ε)",
             right_loads
@@ -332,115 +390,95 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
                 })
                 .collect(),
         ),
-    ];
-    let mistaken: Vec<(&str, ForcePlan)> = mistakes
-        .into_iter()
-        .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
-        .collect();
-    let mut verdicts = Vec::new();
-    let mut issues = Vec::new();
-    let mut explained: Vec<usize> = vec![0; mistaken.len()];
-    let items = [
-        ("segment", &ans.segments, "mm"),
-        ("angle", &ans.angles, "°"),
-        ("value", &ans.values, ""),
-    ];
-    for (kind, list, unit) in items {
-        for (pointer, name, given) in list.iter() {
-            let (expected, tol, on_plan) = match expect(an, right_loads, &plan, kind, name, ans) {
-                Ok(e) => e,
-                Err(msg) => {
-                    issues.push(issue(pointer, msg));
-                    continue;
-                }
-            };
-            let unit = match (kind, unit) {
-                ("value", _) if key(name).starts_with('M') => "N·m",
-                ("value", _) => "N",
-                (_, u) => u,
-            };
-            if !(expected.is_finite() && tol.is_finite()) {
-                issues.push(issue(
-                    pointer,
-                    format!(
-                        "cannot be judged at μ_F = {} N/mm: the plan's numbers are not finite there",
-                        ans.mu
-                    ),
-                ));
-                continue;
-            }
-            let diff = difference(kind, *given, expected);
-            let mut also = None;
-            for (j, (what, p)) in mistaken.iter().enumerate() {
-                let Ok((e2, t2, _)) = expect(an, right_loads, p, kind, name, ans) else {
-                    continue;
-                };
-                let apart = difference(kind, e2, expected) > tol;
-                if apart && difference(kind, *given, e2) <= t2 {
-                    explained[j] += 1;
-                    also.get_or_insert(*what);
-                }
-            }
-            let judgement = if diff > tol {
-                Judgement::Wrong
-            } else if kind != "angle" && tol >= expected.abs() {
-                Judgement::CannotJudge(format!(
-                    "the tolerance ({tol:.3} {unit}) is as large as the value itself: the plan is drawn too small to judge it"
-                ))
-            } else if let Some(what) = also {
-                Judgement::CannotJudge(format!(
-                    "a plan drawn with {what} gives it too, within the tolerance"
-                ))
-            } else {
-                Judgement::Right
-            };
-            verdicts.push(Verdict {
-                pointer: pointer.clone(),
-                key: name.clone(),
-                what: format!("{kind} {name}"),
-                expected,
-                given: *given,
-                difference: diff,
-                tolerance: tol,
-                unit,
-                on_plan: on_plan.map(|e| {
-                    (
-                        e,
-                        if kind == "value" {
-                            given / ans.mu
-                        } else {
-                            *given
-                        },
-                    )
-                }),
-                step: None,
-                judgement,
-            });
+    ]
+}
+
+/// What the items are judged against: the plan at the student's scale
+/// with the right loads, and the plans of the typical mistakes.
+struct Judge<'a> {
+    an: &'a Analysis,
+    loads: &'a [Load],
+    plan: &'a ForcePlan,
+    ans: &'a ForceAnswer,
+    mistaken: &'a [(&'a str, ForcePlan)],
+}
+
+impl Judge<'_> {
+    /// The verdict on the item `name` of kind `kind` (its unit `unit`, a
+    /// value's by its name) that gives `given`; counts in `explained` the
+    /// items each mistaken plan explains (when it differs from the right
+    /// one). `Err`: the item cannot be read.
+    fn verdict(
+        &self,
+        (kind, unit): (&str, &'static str),
+        pointer: &str,
+        name: &str,
+        given: f64,
+        explained: &mut [usize],
+    ) -> std::result::Result<Verdict, crate::error::Issue> {
+        let (an, loads, ans) = (self.an, self.loads, self.ans);
+        let (expected, tol, on_plan) =
+            expect(an, loads, self.plan, kind, name, ans).map_err(|msg| issue(pointer, msg))?;
+        let unit = match (kind, unit) {
+            ("value", _) if key(name).starts_with('M') => "N·m",
+            ("value", _) => "N",
+            (_, u) => u,
+        };
+        if !(expected.is_finite() && tol.is_finite()) {
+            return Err(issue(
+                pointer,
+                format!(
+                    "cannot be judged at μ_F = {} N/mm: the plan's numbers are not finite there",
+                    ans.mu
+                ),
+            ));
         }
-    }
-    if !issues.is_empty() {
-        return Err(Error::fields(issues));
-    }
-    let wrong = verdicts
-        .iter()
-        .filter(|v| v.judgement == Judgement::Wrong)
-        .count();
-    let diagnosis = (wrong > 0)
-        .then(|| {
-            mistaken
-                .iter()
-                .zip(&explained)
-                .filter(|(_, n)| **n >= wrong)
-                .max_by_key(|(_, n)| **n)
-                .map(|((what, _), _)| what.to_string())
+        let diff = difference(kind, given, expected);
+        let mut also = None;
+        for (j, (what, p)) in self.mistaken.iter().enumerate() {
+            let Ok((e2, t2, _)) = expect(an, loads, p, kind, name, ans) else {
+                continue;
+            };
+            let apart = difference(kind, e2, expected) > tol;
+            if apart && difference(kind, given, e2) <= t2 {
+                explained[j] += 1;
+                also.get_or_insert(*what);
+            }
+        }
+        let judgement = if diff > tol {
+            Judgement::Wrong
+        } else if kind != "angle" && tol >= expected.abs() {
+            Judgement::CannotJudge(format!(
+                "the tolerance ({tol:.3} {unit}) is as large as the value itself: the plan is drawn too small to judge it"
+            ))
+        } else if let Some(what) = also {
+            Judgement::CannotJudge(format!(
+                "a plan drawn with {what} gives it too, within the tolerance"
+            ))
+        } else {
+            Judgement::Right
+        };
+        Ok(Verdict {
+            pointer: pointer.to_string(),
+            key: name.to_string(),
+            what: format!("{kind} {name}"),
+            expected,
+            given,
+            difference: diff,
+            tolerance: tol,
+            unit,
+            on_plan: on_plan.map(|e| {
+                (
+                    e,
+                    if kind == "value" {
+                        given / ans.mu
+                    } else {
+                        given
+                    },
+                )
+            }),
+            step: None,
+            judgement,
         })
-        .flatten();
-    Ok(ForceReport {
-        position: ans.position,
-        links: ans.links.clone(),
-        mu: ans.mu,
-        delta,
-        verdicts,
-        diagnosis,
-    })
+    }
 }

@@ -117,15 +117,79 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     let size = size(opt);
     let lang = opt.lang;
     let w = words(lang);
-    let (vel_at, acc_at) = chosen(an, solved);
+    let chosen = chosen(an, solved);
+    let fixed = fixed_figures(an, solved, size, lang, &chosen);
+    // The figures drawn at a scale, with their share of the field.
+    let sources = sources(an, solved, &chosen, &fixed);
+    let field = field_of(size);
+    let block = sheet::block(size);
+    let cx = Ctx {
+        an,
+        solved,
+        lang,
+        field,
+    };
+    let mut cache = HashMap::new();
+    // The figures at zooms `z` (one per figure; a figure's target area is
+    // its share of the field times z²), and where they go if they pack.
+    let attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
+        let mut figs: Vec<Figure> = Vec::new();
+        for (i, (src, share)) in sources.iter().enumerate() {
+            let area = *share * z[i] * z[i] * field.area();
+            figs.push(figure(&cx, src, area, &mut cache, i)?);
+        }
+        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
+        let at = pack(&rects, field, block)?;
+        Some(figs.into_iter().zip(at).collect())
+    };
+    let shares: Vec<f64> = sources.iter().map(|s| s.1).collect();
+    let placed = grow(&shares, attempt).ok_or_else(|| {
+        crate::Error::Internal(format!(
+            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
+        ))
+    })?;
+    let mut page = Page::new(size);
+    place(&mut page, &placed);
+    let title = w.course.to_string();
+    // Sheet 1 of 2 when the force analysis sheet follows.
+    let sheets = if position_has_forces(an, solved) {
+        2
+    } else {
+        1
+    };
+    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
+    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
+    Ok(Sheet {
+        name: "course".into(),
+        title,
+        size,
+        scales,
+        svg: page.finish(),
+    })
+}
+
+/// Whether the positions have plans of velocities, and of accelerations.
+fn has_plans(solved: &[Solved]) -> (bool, bool) {
     let has_plans = solved.first().is_some_and(|s| s.plans.is_some());
     let has_acc = solved
         .first()
         .and_then(|s| s.plans.as_ref())
         .is_some_and(|p| p.acceleration.is_some());
-    // The figures at their own size: the diagrams (when the crank turns
-    // fully, or over the stroke of a hydraulic cylinder, the one input)
-    // and the tables.
+    (has_plans, has_acc)
+}
+
+/// The figures at their own size: the diagrams (when the crank turns
+/// fully, or over the stroke of a hydraulic cylinder, the one input) and
+/// the tables of the `chosen` positions' plans.
+fn fixed_figures(
+    an: &Analysis,
+    solved: &[Solved],
+    size: SheetSize,
+    lang: Lang,
+    (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
+) -> Vec<Figure> {
+    let w = words(lang);
+    let (has_plans, has_acc) = has_plans(solved);
     let mut fixed: Vec<Figure> = Vec::new();
     let cylinder = !an.mech.scene.several_inputs() && !super::cylinder::pairs(an).is_empty();
     if (matches!(an.mech.scene.positions, PositionsSpec::Count { .. }) || cylinder)
@@ -146,61 +210,64 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             scales: Vec::new(),
         });
     }
+    let table = |id: &str, at: &[usize], kind: PlanKind, what: &str| Figure {
+        id: id.into(),
+        caption: vec![format!("{}: {}", w.table, what.to_lowercase())],
+        canvas: results(an, solved, at, kind, lang).draw(),
+        scales: Vec::new(),
+    };
     if has_plans {
-        let t = results(an, solved, &vel_at, PlanKind::Velocity, lang);
-        fixed.push(Figure {
-            id: "table-velocity".into(),
-            caption: vec![format!("{}: {}", w.table, w.velocities.to_lowercase())],
-            canvas: t.draw(),
-            scales: Vec::new(),
-        });
+        fixed.push(table(
+            "table-velocity",
+            vel_at,
+            PlanKind::Velocity,
+            w.velocities,
+        ));
     }
     if has_acc && !acc_at.is_empty() {
-        let t = results(an, solved, &acc_at, PlanKind::Acceleration, lang);
-        fixed.push(Figure {
-            id: "table-acceleration".into(),
-            caption: vec![format!("{}: {}", w.table, w.accelerations.to_lowercase())],
-            canvas: t.draw(),
-            scales: Vec::new(),
-        });
+        fixed.push(table(
+            "table-acceleration",
+            acc_at,
+            PlanKind::Acceleration,
+            w.accelerations,
+        ));
     }
-    // The figures drawn at a scale, with their share of the field.
+    fixed
+}
+
+/// The sheet's figures, each with its share of the field: the positions,
+/// the `chosen` positions' plans (drawn at a scale), then the `fixed`
+/// ones (share 0).
+fn sources<'a>(
+    an: &Analysis,
+    solved: &[Solved],
+    (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
+    fixed: &'a [Figure],
+) -> Vec<(Source<'a>, f64)> {
+    let (has_plans, has_acc) = has_plans(solved);
     let mut sources: Vec<(Source, f64)> =
         vec![(Source::Positions(positions::trajectories(an, solved)), 0.34)];
     if has_plans {
         sources.push((Source::Velocities(vel_at.clone()), 0.22));
     }
     if has_acc {
-        for &k in &acc_at {
+        for &k in acc_at {
             sources.push((Source::Acceleration(k), 0.2 / acc_at.len() as f64));
         }
     }
-    for f in &fixed {
+    for f in fixed {
         sources.push((Source::Fixed(f), 0.0));
     }
-    let field = field_of(size);
-    let block = sheet::block(size);
-    let cx = Ctx {
-        an,
-        solved,
-        lang,
-        field,
-    };
-    let mut cache = HashMap::new();
-    // The figures at zooms `z` (one per figure; a figure's target area is
-    // its share of the field times z²), and where they go if they pack.
-    let mut attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
-        let mut figs: Vec<Figure> = Vec::new();
-        for (i, (src, share)) in sources.iter().enumerate() {
-            let area = *share * z[i] * z[i] * field.area();
-            figs.push(figure(&cx, src, area, &mut cache, i)?);
-        }
-        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
-        let at = pack(&rects, field, block)?;
-        Some(figs.into_iter().zip(at).collect())
-    };
-    // Grow the shares together while everything packs …
-    let n = sources.len();
+    sources
+}
+
+/// The placed figures of the largest zooms that pack, `attempt` placing
+/// them at one zoom a figure: the shares grown together while everything
+/// packs (a bisection), then each figure with a share by itself, the
+/// largest share first, by the largest step that still packs (a standard
+/// scale's next value is ×1.25 to ×2 away), in rounds until none grows.
+fn grow<T>(shares: &[f64], mut attempt: impl FnMut(&[f64]) -> Option<T>) -> Option<T> {
+    let n = shares.len();
     let (mut lo, mut hi) = (0.2, 1.8);
     let mut best = None;
     for _ in 0..12 {
@@ -213,12 +280,9 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             None => hi = z,
         }
     }
-    // … then each figure by itself, the largest share first, by the
-    // largest step that still packs (a standard scale's next value is
-    // ×1.25 to ×2 away), in rounds until none grows.
     let mut zs = vec![lo; n];
-    let mut order: Vec<usize> = (0..n).filter(|&i| sources[i].1 > 0.0).collect();
-    order.sort_by(|&a, &b| sources[b].1.total_cmp(&sources[a].1));
+    let mut order: Vec<usize> = (0..n).filter(|&i| shares[i] > 0.0).collect();
+    order.sort_by(|&a, &b| shares[b].total_cmp(&shares[a]));
     for _round in 0..4 {
         let mut grew = false;
         for &i in &order {
@@ -242,29 +306,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             break;
         }
     }
-    let placed = best.ok_or_else(|| {
-        crate::Error::Internal(format!(
-            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
-        ))
-    })?;
-    let mut page = Page::new(size);
-    place(&mut page, &placed);
-    let title = w.course.to_string();
-    // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if position_has_forces(an, solved) {
-        2
-    } else {
-        1
-    };
-    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
-    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
-    Ok(Sheet {
-        name: "course".into(),
-        title,
-        size,
-        scales,
-        svg: page.finish(),
-    })
+    best
 }
 
 /// Write the placed figures on `page`, each a group `fig-<id>`: its

@@ -39,31 +39,31 @@ pub(crate) struct LeverWords {
 }
 
 pub(crate) fn words(lang: Lang) -> LeverWords {
-    match lang {
-        Lang::En => LeverWords {
-            title: "Zhukovsky's lever",
-            balancing: "b",
-            turned: "the plan of velocities turned by 90° ↺ about the pole p",
-            heads: ["force", "F, N", "h, mm", "F·h, N·mm"],
-            input: "input",
-            along: "along the guide",
-        },
-        Lang::Uk => LeverWords {
-            title: "Важіль Жуковського",
-            balancing: "зр",
-            turned: "план швидкостей, повернутий на 90° ↺ навколо полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вхід",
-            along: "уздовж напрямної",
-        },
-        Lang::Ru => LeverWords {
-            title: "Рычаг Жуковского",
-            balancing: "ур",
-            turned: "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вход",
-            along: "вдоль направляющей",
-        },
+    let k = match lang {
+        Lang::En => 0,
+        Lang::Uk => 1,
+        Lang::Ru => 2,
+    };
+    // Each word in English, Ukrainian and Russian.
+    LeverWords {
+        title: [
+            "Zhukovsky's lever",
+            "Важіль Жуковського",
+            "Рычаг Жуковского",
+        ][k],
+        balancing: ["b", "зр", "ур"][k],
+        turned: [
+            "the plan of velocities turned by 90° ↺ about the pole p",
+            "план швидкостей, повернутий на 90° ↺ навколо полюса p",
+            "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
+        ][k],
+        heads: [
+            ["force", "F, N", "h, mm", "F·h, N·mm"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+        ][k],
+        input: ["input", "вхід", "вход"][k],
+        along: ["along the guide", "уздовж напрямної", "вдоль направляющей"][k],
     }
 }
 

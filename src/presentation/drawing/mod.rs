@@ -431,15 +431,13 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
             Some(mu) => (mu, draw(mu).unwrap_or_default()),
             None => fill(lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
         };
-        out.push(Pending {
-            name: "positions".into(),
-            title: w.positions.into(),
-            scale: Some(scale_text("l", mu, "m", opt.lang)),
-            scales: vec![("mu_l", mu)],
-            canvas: c,
-            centre_on: None,
-            table: None,
-        });
+        out.push(pending(
+            "positions".into(),
+            w.positions.into(),
+            scale_text("l", mu, "m", opt.lang),
+            ("mu_l", mu),
+            c,
+        ));
     }
     let mech = if asked(an, solved, "mechanism") && !solved.is_empty() {
         let draw = |mu: f64| Some(mechanism_canvases(an, solved, opt, mu));
@@ -456,65 +454,17 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
         let pos = position_text(an, s, k, opt.lang);
         if k < mech.len() {
             out.push(Pending {
-                name: format!("mechanism_{}", k + 1),
-                title: format!("{}, {pos}", w.mechanism),
-                scale: Some(scale_text("l", mu_l, "m", opt.lang)),
-                scales: vec![("mu_l", mu_l)],
-                canvas: std::mem::take(&mut mech[k]),
                 centre_on,
-                table: None,
+                ..pending(
+                    format!("mechanism_{}", k + 1),
+                    format!("{}, {pos}", w.mechanism),
+                    scale_text("l", mu_l, "m", opt.lang),
+                    ("mu_l", mu_l),
+                    std::mem::take(&mut mech[k]),
+                )
             });
         }
-        // Zhukovsky's lever after the plans and forces of its position.
-        let levers = if asked(an, solved, "lever") && s.dynamics.is_some() {
-            lever::pending(an, s, k, opt)?
-        } else {
-            Vec::new()
-        };
-        for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
-            let Some(plans) = &s.plans else { break };
-            let (name, title) = match kind {
-                PlanKind::Velocity => ("velocity", w.velocities),
-                PlanKind::Acceleration => ("acceleration", w.accelerations),
-            };
-            if !asked(an, solved, name)
-                || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
-            {
-                continue;
-            }
-            let (plan, c, t) = plan_figure(an, s, kind, opt, |plan| {
-                let t = opt.table.then(|| table::plan_table(plan, opt.lang));
-                let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
-                field_size(opt, right)
-            });
-            let (sym, unit, key) = match kind {
-                PlanKind::Velocity => ("v", "m/s", "mu_v"),
-                PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
-            };
-            out.push(Pending {
-                name: format!("{name}_{}", k + 1),
-                title: format!("{title}, {pos}"),
-                scale: Some(scale_text(sym, plan.mu, unit, opt.lang)),
-                scales: vec![(key, plan.mu)],
-                canvas: c,
-                centre_on: None,
-                table: t,
-            });
-        }
-        if asked(an, solved, "forces")
-            && let Some(f) = forces::figure(an, s, opt, field)
-        {
-            out.push(Pending {
-                name: format!("forces_{}", k + 1),
-                title: format!("{}, {pos}", forces::title(opt.lang)),
-                scale: Some(scale_text("l", f.mu_l, "m", opt.lang)),
-                scales: vec![("mu_l", f.mu_l)],
-                canvas: f.canvas,
-                centre_on: None,
-                table: None,
-            });
-        }
-        out.extend(levers);
+        out.extend(position_sheets(an, solved, (k, s), opt, field)?);
     }
     let mut sheets = Vec::new();
     if opt.course || asked(an, solved, "course") {
@@ -532,6 +482,90 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
         sheets.push(d);
     }
     Ok(sheets)
+}
+
+/// A sheet to render: its name, title, scale text and the scale its
+/// figure `canvas` is drawn at; centred on its own bounds, no table.
+fn pending(
+    name: String,
+    title: String,
+    scale: String,
+    scales: (&'static str, f64),
+    canvas: Canvas,
+) -> Pending {
+    Pending {
+        name,
+        title,
+        scale: Some(scale),
+        scales: vec![scales],
+        canvas,
+        centre_on: None,
+        table: None,
+    }
+}
+
+/// The sheets of position `s` (the `k`-th, from 0) after its plan of the
+/// mechanism: the plans asked for, the forces, then Zhukovsky's lever.
+fn position_sheets(
+    an: &Analysis,
+    solved: &[Solved],
+    (k, s): (usize, &Solved),
+    opt: &DrawOptions,
+    field: (f64, f64),
+) -> Result<Vec<Pending>> {
+    let w = words(opt.lang);
+    let pos = position_text(an, s, k, opt.lang);
+    let mut out = Vec::new();
+    // Zhukovsky's lever after the plans and forces of its position.
+    let levers = if asked(an, solved, "lever") && s.dynamics.is_some() {
+        lever::pending(an, s, k, opt)?
+    } else {
+        Vec::new()
+    };
+    for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+        let Some(plans) = &s.plans else { break };
+        let (name, title) = match kind {
+            PlanKind::Velocity => ("velocity", w.velocities),
+            PlanKind::Acceleration => ("acceleration", w.accelerations),
+        };
+        if !asked(an, solved, name)
+            || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
+        {
+            continue;
+        }
+        let (plan, c, t) = plan_figure(an, s, kind, opt, |plan| {
+            let t = opt.table.then(|| table::plan_table(plan, opt.lang));
+            let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
+            field_size(opt, right)
+        });
+        let (sym, unit, key) = match kind {
+            PlanKind::Velocity => ("v", "m/s", "mu_v"),
+            PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
+        };
+        out.push(Pending {
+            table: t,
+            ..pending(
+                format!("{name}_{}", k + 1),
+                format!("{title}, {pos}"),
+                scale_text(sym, plan.mu, unit, opt.lang),
+                (key, plan.mu),
+                c,
+            )
+        });
+    }
+    if asked(an, solved, "forces")
+        && let Some(f) = forces::figure(an, s, opt, field)
+    {
+        out.push(pending(
+            format!("forces_{}", k + 1),
+            format!("{}, {pos}", forces::title(opt.lang)),
+            scale_text("l", f.mu_l, "m", opt.lang),
+            ("mu_l", f.mu_l),
+            f.canvas,
+        ));
+    }
+    out.extend(levers);
+    Ok(out)
 }
 
 fn too_large() -> Error {

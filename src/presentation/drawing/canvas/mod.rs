@@ -168,70 +168,22 @@ pub enum Prim {
 impl Prim {
     /// The primitive with every place `q` it is drawn at moved to `p(q)`;
     /// its sizes (radii, arrowheads, text) as they are.
-    fn placed(self, p: impl Fn(Point) -> Point) -> Prim {
-        match self {
-            Prim::Seg { a, b, class, id } => Prim::Seg {
-                a: p(a),
-                b: p(b),
-                class,
-                id,
-            },
-            Prim::Poly { pts, fill, stroke } => Prim::Poly {
-                pts: pts.into_iter().map(&p).collect(),
-                fill,
-                stroke,
-            },
-            Prim::Path { pts, line } => Prim::Path {
-                pts: pts.into_iter().map(&p).collect(),
-                line,
-            },
-            Prim::Circle {
-                c,
-                r,
-                fill,
-                stroke,
-                id,
-            } => Prim::Circle {
-                c: p(c),
-                r,
-                fill,
-                stroke,
-                id,
-            },
-            Prim::Arrow { tip, dir } => Prim::Arrow { tip: p(tip), dir },
-            Prim::Arc { c, r, a0, sweep } => Prim::Arc {
-                c: p(c),
-                r,
-                a0,
-                sweep,
-            },
-            Prim::Rich {
-                at,
-                runs,
-                size,
-                class,
-                anchor,
-            } => Prim::Rich {
-                at: p(at),
-                runs,
-                size,
-                class,
-                anchor,
-            },
-            Prim::Text {
-                at,
-                label,
-                size,
-                id,
-                class,
-            } => Prim::Text {
-                at: p(at),
-                label,
-                size,
-                id,
-                class,
-            },
+    fn placed(mut self, p: impl Fn(Point) -> Point) -> Prim {
+        match &mut self {
+            Prim::Seg { a, b, .. } => {
+                *a = p(*a);
+                *b = p(*b);
+            }
+            Prim::Poly { pts, .. } | Prim::Path { pts, .. } => {
+                for q in pts.iter_mut() {
+                    *q = p(*q);
+                }
+            }
+            Prim::Circle { c, .. } | Prim::Arc { c, .. } => *c = p(*c),
+            Prim::Arrow { tip, .. } => *tip = p(*tip),
+            Prim::Rich { at, .. } | Prim::Text { at, .. } => *at = p(*at),
         }
+        self
     }
 }
 
