@@ -4,7 +4,7 @@
 //! language is one `Catalogue` of phrases with named blanks (`{pole}`),
 //! filled by one rendering path.
 
-use super::fill;
+use super::catalogue::{ConstructionPhrases as Phrases, fill};
 use crate::format::num;
 use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PlanLine, Why};
 
@@ -12,39 +12,9 @@ pub use crate::lang::Lang;
 
 /// The construction's phrases in `lang`.
 fn words(lang: Lang) -> &'static Phrases {
-    &super::catalogue(lang).construction
+    &super::catalogue::catalogue(lang).construction
 }
 
-/// The phrases of one language. Blanks in braces are filled by [`fill`].
-#[derive(Debug, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Phrases {
-    /// Units of the velocity and the acceleration plan: values, rates.
-    unit: [String; 2],
-    rate_unit: [String; 2],
-    /// Senses of a rate: positive, negative, zero.
-    sense: [String; 3],
-    /// Directions: `{p}`, `{q}`; `{link}`; `{v}`, `{w}`; `{seg}`, `{w}`.
-    toward: String,
-    guide: String,
-    turned: String,
-    perp_sense: String,
-    /// Steps.
-    pole: String,
-    lay_off: String,
-    intersect: String,
-    similar: String,
-    divide: String,
-    coincide: String,
-    /// Why a point coincides: at the pole; `{link}` translates.
-    fixed: String,
-    translates: String,
-    measure: String,
-    /// How a relative segment turns its link.
-    turns: String,
-    same: String,
-    equations: String,
-}
 
 fn dir(w: &Phrases, d: &Dir) -> String {
     match d {

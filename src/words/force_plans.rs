@@ -6,7 +6,7 @@
 //! moment. Each language is one [`Catalogue`] of phrases with named
 //! blanks, filled by one path.
 
-use super::fill;
+use super::catalogue::{ForcePlanPhrases as Phrases, fill};
 use super::forces::force_name;
 use crate::format::num;
 use crate::kinematics::solve::Analysis;
@@ -17,56 +17,10 @@ use crate::model::structure::AssurGroup;
 use kurbo::Vec2;
 use std::fmt::Write as _;
 
-/// The phrases of one language.
-#[derive(Debug, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Phrases {
-    /// The steps' heading and the position's word.
-    pub title: String,
-    /// "position".
-    pub position: String,
-    /// "link", "links" (one, several).
-    links: [String; 2],
-    /// Units: N, mm, N·m, N/mm.
-    newton: String,
-    mm: String,
-    newton_metre: String,
-    per_mm: String,
-    /// `{formula}`, `{links}`.
-    group: String,
-    /// `{ids}`.
-    input_link: String,
-    /// `{at}`, `{what}`, `{f}`, `{value}`, `{n}`.
-    moment: String,
-    /// `{what}`, `{f}`, `{value}`, `{n}`.
-    projection: String,
-    /// `{from}`, `{f}`, `{val}`, `{n}`, `{len}`, `{mm}`, `{dir}`, `{to}`.
-    lay_off: String,
-    /// `{through}`, `{f}`, `{dir}`.
-    line: String,
-    /// `{out}`, `{deg}`.
-    intersect: String,
-    /// `{a}`, `{b}`, `{l}`, `{mm}`, `{f}`, `{mu}`, `{val}`, `{bound}`, `{n}`, `{dir}`.
-    measure: String,
-    /// `{what}`, `{value}`, `{nm}`, `{f}`, `{p}`: the couple of a guide
-    /// with its force placed, and alone.
-    couple_at: String,
-    couple_alone: String,
-    /// `{id}`, `{kind}`, `{b}`, `{value}`, `{unit}`, `{sense}`.
-    balancing: String,
-    /// The balancing moment and force, as `{kind}` says them.
-    kind: [String; 2],
-    /// A moment's senses: counter-clockwise, clockwise.
-    sense: [String; 2],
-    /// The subscript of M_b, F_b.
-    balancing_sub: String,
-    /// "worst intersection angle".
-    worst: String,
-}
 
 /// The phrases of `lang`.
 pub fn words(lang: Lang) -> &'static Phrases {
-    &super::catalogue(lang).force_plans
+    &super::catalogue::catalogue(lang).force_plans
 }
 
 /// A direction as an angle, degrees in [0, 360).
