@@ -3,7 +3,7 @@
 //! how each fits the answer, and the items that cannot be judged because
 //! a mistaken construction fits the answer as well.
 
-use super::MAX_TOLERANCE_OF_PLAN;
+use super::verdict::{Candidate, MAX_TOLERANCE_OF_PLAN};
 use super::answer::{Answer, Given};
 use super::items::{Expected, expect};
 use crate::error::Result;
@@ -16,36 +16,6 @@ use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::Analysis;
 use crate::model::structure::{AssurGroup, DyadKind};
 use crate::pipeline::Solved;
-
-/// A way the plan may have been built wrong: what a diagnosis names
-/// (typed; its sentence is [`super::Diagnosis::mistake`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Candidate {
-    /// A mistake at one decision (`at: Some(n)`, counted in the order of
-    /// the construction) or every one, on the checked plan or on both.
-    Mistake {
-        /// The mistake.
-        m: Mistake,
-        /// Which of its decisions; `None`: every one.
-        at: Option<usize>,
-        /// Made on the velocity plan too (an acceleration answer).
-        both: bool,
-    },
-    /// One vector laid off with a wrong length: the n-th, times `factor`.
-    Slip {
-        /// Which laid-off vector, in the order of the construction.
-        at: usize,
-        /// Its length over the right one.
-        factor: f64,
-    },
-    /// Two mistakes together, each everywhere on the checked plan.
-    Pair(Mistake, Mistake),
-    /// The other assembly branch of group g.
-    Branch(usize),
-    /// Derived values scaled by a factor: μ in mm instead of m (1000 or
-    /// 1/1000), or μ inverted (the factor is 1/μ²).
-    Scale(f64),
-}
 
 /// The discrete mistakes tried, one element at a time and everywhere.
 const MISTAKES: [Mistake; 13] = [

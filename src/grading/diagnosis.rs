@@ -2,7 +2,8 @@
 //! construction that explains every item, clearly better than any other of
 //! another kind; two mistakes together; a slip in one laid-off length.
 
-use super::candidates::{Builds, Candidate, Fit, expectations, mistake_sentence};
+use super::candidates::{Builds, Fit, expectations, mistake_sentence};
+use super::verdict::Candidate;
 use super::items::Expected;
 use super::{Diagnosis, Report};
 use crate::accuracy::ACCURACY;

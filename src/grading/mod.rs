@@ -21,10 +21,11 @@ mod candidates;
 mod diagnosis;
 pub mod forces;
 mod items;
+pub mod read;
 pub mod svg;
 mod verdict;
 
-pub use candidates::Candidate as Explanation;
+pub use verdict::Candidate as Explanation;
 pub use items::resolve;
 pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
 

@@ -1,7 +1,7 @@
 //! What the check says: each item's judgement and verdict, the diagnosis
 //! of a wrong answer, and the report of one answer.
 
-use crate::kinematics::construction::{Plan, PlanKind};
+use crate::kinematics::construction::{Mistake, Plan, PlanKind};
 
 /// What the check says of one item.
 #[derive(Clone, Debug, PartialEq)]
@@ -49,7 +49,7 @@ pub struct Diagnosis {
     /// One sentence naming the mistake; `None`: not recognised.
     pub mistake: Option<String>,
     /// The mistake, typed; `None`: not recognised.
-    pub explanation: Option<super::candidates::Candidate>,
+    pub explanation: Option<Candidate>,
     /// The step of the construction where it enters, and its sentence.
     pub step: Option<(usize, String)>,
     /// How many items the mistaken construction explains.
@@ -105,3 +105,33 @@ impl Report {
 /// nothing: an item whose tolerance exceeds a fifth of the plan cannot be
 /// told from a point elsewhere on it.
 pub const MAX_TOLERANCE_OF_PLAN: f64 = crate::accuracy::ACCURACY.max_tolerance_of_plan;
+
+/// A way the plan may have been built wrong: what a diagnosis names
+/// (typed; its sentence is [`Diagnosis::mistake`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Candidate {
+    /// A mistake at one decision (`at: Some(n)`, counted in the order of
+    /// the construction) or every one, on the checked plan or on both.
+    Mistake {
+        /// The mistake.
+        m: Mistake,
+        /// Which of its decisions; `None`: every one.
+        at: Option<usize>,
+        /// Made on the velocity plan too (an acceleration answer).
+        both: bool,
+    },
+    /// One vector laid off with a wrong length: the n-th, times `factor`.
+    Slip {
+        /// Which laid-off vector, in the order of the construction.
+        at: usize,
+        /// Its length over the right one.
+        factor: f64,
+    },
+    /// Two mistakes together, each everywhere on the checked plan.
+    Pair(Mistake, Mistake),
+    /// The other assembly branch of group g.
+    Branch(usize),
+    /// Derived values scaled by a factor: μ in mm instead of m (1000 or
+    /// 1/1000), or μ inverted (the factor is 1/μ²).
+    Scale(f64),
+}

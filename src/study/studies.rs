@@ -6,8 +6,9 @@
 
 use super::{Solution, Study, Written, files, write_sheets};
 use crate::error::{Error, Result, in_file};
-use crate::grading::answer::{self, Answer, Reading};
+use crate::grading::answer::Answer;
 use crate::grading::forces::{self, ForceAnswer, ForceReport};
+use crate::grading::read::{self, Reading};
 use crate::grading::{self, Report};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
@@ -137,7 +138,7 @@ pub(super) fn parse_answer(
         delta: req.delta,
         position: req.position,
     };
-    Ok(Parsed::Kinematic(answer::from_text(text, name, svg, &r)?))
+    Ok(Parsed::Kinematic(read::from_text(text, name, svg, &r)?))
 }
 
 /// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
