@@ -4,8 +4,8 @@
 //! ([`fmt`]: 0.01 mm, no trailing zeros, no "-0") and every text through
 //! [`xml`], so the output is byte-stable.
 
-use super::label::char_width;
-use super::{ARROW_WIDTH, BOLD, Canvas, Class, MAIN, Prim, THIN};
+use super::label::{Label, char_width};
+use super::primitives::{ARROW_WIDTH, BOLD, Canvas, Class, Line, MAIN, Prim, THIN};
 use crate::words::notation::{Pos, Run};
 use kurbo::{Point, Vec2};
 use std::fmt::Write as _;
@@ -227,7 +227,7 @@ fn seg_svg(out: &mut String, o: Origin, (a, b): (Point, Point), class: Class, id
 }
 
 /// A polyline of one line type, its dashes fitted to its length.
-fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: super::Line) {
+fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: Line) {
     let mut d = String::new();
     for (i, q) in pts.iter().enumerate() {
         d += if i == 0 { "M" } else { " L" };
@@ -275,7 +275,7 @@ fn arc_svg(out: &mut String, o: Origin, c: Point, r: f64, (a0, sweep): (f64, f64
 /// A label's content as tspans: the base with its subscript (a
 /// superscript stacked over the subscript, as the lecture's runs do:
 /// R^τ_12), more names after commas, the tail.
-fn label_svg(label: &super::Label, size: f64) -> String {
+fn label_svg(label: &Label, size: f64) -> String {
     // A subscript, when there is one.
     let sub = |s: &str| {
         if s.is_empty() {
