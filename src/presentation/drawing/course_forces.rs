@@ -13,7 +13,8 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::course::{self, Figure, position};
+use super::course::position;
+use super::pack::{self, Figure};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
@@ -222,8 +223,8 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
     {
         return Ok(None);
     }
-    let size = course::size(opt);
-    let field = course::field_of(size);
+    let size = pack::size(opt);
+    let field = pack::field_of(size);
     let block = sheet::block(size);
     let (fw, fh) = (field.width(), field.height());
     // The boxes shrink together until the figures pack.
@@ -233,7 +234,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         let lever_box = (0.36 * fw * zoom, 0.45 * fh * zoom);
         let figs = figures(an, s, k, opt, (panels, lever_box))?;
         let sizes: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
-        if let Some(at) = course::pack(&sizes, field, block) {
+        if let Some(at) = pack::pack(&sizes, field, block) {
             placed = Some(figs.into_iter().zip(at).collect::<Vec<_>>());
             break;
         }
@@ -244,7 +245,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         ))
     })?;
     let mut page = Page::new(size);
-    course::place(&mut page, &placed);
+    pack::place(&mut page, &placed);
     let name = title(opt.lang);
     page.title_block(&super::title_block(an, opt, name, (2, 2)));
     Ok(Some(Sheet {

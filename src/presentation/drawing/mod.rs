@@ -28,10 +28,12 @@ mod layout;
 pub mod lever;
 pub mod mechanism;
 mod output;
+mod pack;
 pub mod plan;
 pub mod positions;
 pub mod sheet;
 pub mod table;
+mod wall;
 
 #[cfg(feature = "render")]
 pub use export::tree;
