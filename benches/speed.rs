@@ -30,7 +30,20 @@
 //!   velocities, accelerations of the same quantities, no allocation),
 //!   the practical limit for the four-bar fixture;
 //! - `compiled/*`: positions and route (a) by the program compiled for the
-//!   mechanism (`mechplan::compiled::Program`), the same numbers to the bit.
+//!   mechanism (`mechplan::compiled::Program`), the same numbers to the bit;
+//! - `command_fast_path/{interpreted,compiled}`, `command_plan_sweep/*`
+//!   (issue 24): the command's run over 3600 positions of the six-link
+//!   fixture (`Analysis::run_each`, what `solve` calls; each position
+//!   dropped as the writer drops it, nothing written), before and after in
+//!   the same run: the fast path (`want.plans: []`) by route (a)
+//!   interpreted (the reference twin, `Analysis::reference`) and compiled;
+//!   a sweep with plans whose result keeps none (`solve`'s table and CSV)
+//!   with the plans named as before (`builder`), numbers only as now
+//!   (`numbers`), by the sweep's kernel (`kernel`, not taken: it changes
+//!   the table's check line at some positions), and with the plans kept
+//!   (`kept`: the JSON result, route (a) compiled). At the end of the
+//!   groups each variant's time per position, by criterion's median and
+//!   by interleaved rounds, with its ratio to the group's first (before).
 //!
 //! At the end the bench prints the ratios to the limit on the four-bar
 //! (issue 16's targets: route (a) within 2×, the numbers-only kernel
@@ -314,7 +327,12 @@ fn criterion_median(id: &str) -> Option<f64> {
         .unwrap_or_else(|| {
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion")
         });
-    let path = home.join(id.replace('/', "_")).join("new/estimates.json");
+    // A bench of a group is in the group's folder; one named `a/b`
+    // outside a group in `a_b`.
+    let path = [home.join(id), home.join(id.replace('/', "_"))]
+        .into_iter()
+        .map(|p| p.join("new/estimates.json"))
+        .find(|p| p.exists())?;
     let written = std::fs::metadata(&path).ok()?.modified().ok()?;
     if written < *STARTED.get()? {
         return None;
@@ -486,5 +504,135 @@ fn summary(_: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, per_position, draw, positions_sheet, sweep, summary);
+/// The positions of the command benches.
+const COMMAND_POSITIONS: usize = 3600;
+
+/// Issue 24: the command's cost per position before and after, in one run
+/// (see the module's documentation).
+fn command(cr: &mut Criterion) {
+    STARTED.get_or_init(std::time::SystemTime::now);
+    let mut v: serde_json::Value = serde_json::from_str(&text("six_link_fig2_10")).unwrap();
+    let a0 = v["input"]["angle"].as_f64().unwrap();
+    let n = COMMAND_POSITIONS;
+    v["positions"] = serde_json::json!({
+        "angles": (0..n).map(|k| a0 + 360.0 * k as f64 / n as f64).collect::<Vec<_>>()
+    });
+    let full = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    v["want"]["plans"] = serde_json::json!([]);
+    v["want"]["rates"] = serde_json::json!(["velocity", "acceleration"]);
+    let fast = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    assert!(full.plans && !fast.plans);
+    // The run `solve` makes, each position dropped as it is handed over.
+    let run = |an: &Analysis| {
+        let mut count = 0;
+        an.run_each(|s| {
+            black_box(&s);
+            count += 1;
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(count, n);
+    };
+    let with = |an: &Analysis, f: &dyn Fn(&mut Analysis)| {
+        let mut an = an.clone();
+        f(&mut an);
+        an
+    };
+    let groups: [(&str, Vec<(&str, Analysis)>); 2] = [
+        (
+            "command_fast_path",
+            vec![
+                ("interpreted", with(&fast, &|a| a.reference = true)),
+                ("compiled", fast.clone()),
+            ],
+        ),
+        (
+            "command_plan_sweep",
+            vec![
+                (
+                    "builder",
+                    with(&full, &|a| {
+                        a.keep_plans = false;
+                        a.reference = true;
+                    }),
+                ),
+                ("numbers", with(&full, &|a| a.keep_plans = false)),
+                (
+                    "kernel",
+                    with(&full, &|a| {
+                        a.keep_plans = false;
+                        a.sweep_kernel = true;
+                    }),
+                ),
+                ("kept", full.clone()),
+            ],
+        ),
+    ];
+    for (group, variants) in &groups {
+        let mut g = cr.benchmark_group(*group);
+        g.sample_size(10);
+        g.sampling_mode(criterion::SamplingMode::Flat);
+        g.measurement_time(std::time::Duration::from_secs(10));
+        for (name, an) in variants {
+            g.bench_function(*name, |b| b.iter(|| run(an)));
+        }
+        g.finish();
+    }
+    // Per position: criterion's medians, and interleaved rounds (every
+    // variant once a round, the median of the times and of the rounds'
+    // ratios to the group's first: a load that comes and goes slows all
+    // alike).
+    const ROUNDS: usize = 15;
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!();
+    println!(
+        "The command per position ({n} positions of the six-link, {} threads), load average {load}",
+        rayon::current_num_threads()
+    );
+    for (group, variants) in &groups {
+        let mut rounds: Vec<Vec<f64>> = Vec::new();
+        for _ in 0..ROUNDS {
+            let times = variants
+                .iter()
+                .map(|(_, an)| {
+                    let t = std::time::Instant::now();
+                    run(an);
+                    t.elapsed().as_secs_f64() / n as f64 * 1e6
+                })
+                .collect();
+            rounds.push(times);
+        }
+        let median = |f: &dyn Fn(&Vec<f64>) -> f64| {
+            let mut v: Vec<f64> = rounds.iter().map(f).collect();
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        };
+        let first = criterion_median(&format!("{group}/{}", variants[0].0));
+        println!("  {group}: criterion's median; interleaved, {ROUNDS} rounds");
+        for (i, (name, _)) in variants.iter().enumerate() {
+            let crit = criterion_median(&format!("{group}/{name}")).map_or_else(
+                || "        –".to_string(),
+                |t| {
+                    let r = first.map_or(String::new(), |f| format!(" = {:.2}×", t / f));
+                    format!("{:7.1} µs{r}", t / n as f64 / 1000.0)
+                },
+            );
+            println!(
+                "    {name:12} {crit};  {:7.1} µs = {:.2}×",
+                median(&|t| t[i]),
+                median(&|t| t[i] / t[0])
+            );
+        }
+    }
+}
+
+criterion_group!(
+    benches,
+    per_position,
+    draw,
+    positions_sheet,
+    sweep,
+    command,
+    summary
+);
 criterion_main!(benches);

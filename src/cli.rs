@@ -2,9 +2,9 @@
 //! library): the commands and their options, as clap parses them.
 
 use clap::{Parser, Subcommand, ValueEnum};
-use mechplan::construction::PlanKind;
-use mechplan::construction::text::Lang;
-use mechplan::drawing::{self, SheetSize};
+use mechplan::Lang;
+use mechplan::PlanKind;
+use mechplan::{Format as SheetFormat, SheetSize};
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -186,12 +186,12 @@ pub enum DrawFormat {
     Pdf,
 }
 
-impl From<DrawFormat> for drawing::Format {
-    fn from(f: DrawFormat) -> drawing::Format {
+impl From<DrawFormat> for SheetFormat {
+    fn from(f: DrawFormat) -> SheetFormat {
         match f {
-            DrawFormat::Svg => drawing::Format::Svg,
-            DrawFormat::Png => drawing::Format::Png,
-            DrawFormat::Pdf => drawing::Format::Pdf,
+            DrawFormat::Svg => SheetFormat::Svg,
+            DrawFormat::Png => SheetFormat::Png,
+            DrawFormat::Pdf => SheetFormat::Pdf,
         }
     }
 }

@@ -159,3 +159,16 @@ impl Error {
 
 /// mechplan's result type.
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// Name `name` in the messages of an input's problems ("… (in NAME)").
+pub fn in_file(name: &str) -> impl Fn(Error) -> Error + '_ {
+    move |e| match e {
+        Error::Input(Input::Fields(mut v)) => {
+            for i in &mut v {
+                i.message = format!("{} (in {name})", i.message);
+            }
+            Error::fields(v)
+        }
+        e => e,
+    }
+}

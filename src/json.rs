@@ -1,4 +1,5 @@
-//! Strict JSON reading: serde_json keeps the last of two equal keys
+//! JSON: numbers and vectors as result files write them ([`number`],
+//! [`vec2`]), and strict reading: serde_json keeps the last of two equal keys
 //! silently, so a scene with `"A"` twice under `points` would lose a point
 //! without a word. This reader builds the same `serde_json::Value` but
 //! records every repeated key with its JSON pointer.
@@ -125,6 +126,18 @@ fn describe_syntax_error(text: &str, e: &serde_json::Error) -> String {
     } else {
         format!("malformed JSON: {e}")
     }
+}
+
+/// A number for a result file, round-trip-exact but tidy: integers print
+/// as integers, no `-0`.
+pub fn number(x: f64) -> serde_json::Value {
+    let x = if x == 0.0 { 0.0 } else { x };
+    serde_json::json!(x)
+}
+
+/// A vector for a result file: `[x, y]`.
+pub fn vec2(v: kurbo::Vec2) -> serde_json::Value {
+    serde_json::json!([number(v.x), number(v.y)])
 }
 
 #[cfg(test)]

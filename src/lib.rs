@@ -1,62 +1,113 @@
 #![warn(missing_docs)]
-//! mechplan: graphoanalytic kinematic analysis of planar linkages.
+//! mechplan: graphoanalytic kinematic analysis of planar linkages — the
+//! plan of a mechanism, its plans of velocities and accelerations as the
+//! constructions of a TMM course, cross-checked at every position by two
+//! analytic routes, and (with masses and loads) the force analysis.
 //!
-//! The modules follow the data flow of the method of a TMM course
-//! (docs/architecture.md): [`model`] (the scene file, rigid links, Assur
-//! groups) → [`kinematics`] (positions, two analytic routes, the plans as
-//! constructions, the analysis of a scene's positions) → [`kinetostatics`]
-//! (the force analysis, with the scene's `dynamics`) → [`studies`]
-//! (centres, invariants, diagrams) and [`verification`] (checking
-//! hand-drawn plans, the extended-precision reference) → [`presentation`]
-//! (result files, tables, sheets).
+//! The front door is a [`Study`]: a scene file read and made ready. It
+//! solves every position ([`Study::solve`], or one at a time with flat
+//! memory: [`Study::positions`]), whose points and links read by name;
+//! writes the result files to any `io::Write` ([`Study::write_results`]);
+//! draws the lecture's sheets ([`Solution::sheets`] as SVG text,
+//! [`Study::draw`] into a folder); and checks a student's hand-drawn plan
+//! ([`Study::check_answer`]). The library never prints; the `mechplan`
+//! command does.
+//!
+//! ```
+//! use mechplan::Study;
+//!
+//! let study = Study::from_json(mechplan::DEFAULT_SCENE)?;
+//! let solution = study.solve()?;
+//! let b = solution.position(3)?.point("B")?;
+//! let v = b.velocity().expect("the scene asks for velocities");
+//! println!("v_B = {:.3} m/s at ({:.3}, {:.3})", v.hypot(), b.place().x, b.place().y);
+//! # Ok::<(), mechplan::Error>(())
+//! ```
+//!
+//! Features: `render` (PNG and PDF sheets) and `cli` (the command) are on
+//! by default; `default-features = false` builds the analysis alone.
+//! Inside, the modules follow the method's data flow, one direction only
+//! (docs/architecture.md): base → model → kinematics → kinetostatics,
+//! studies, verification → pipeline → words → grading → presentation →
+//! study (this front door).
 
-// The library's internals, by the data flow (docs/architecture.md):
-// public for the tests, benches and fuzz targets, hidden from the API.
-#[doc(hidden)]
-pub mod kinematics;
-#[doc(hidden)]
-pub mod kinetostatics;
-#[doc(hidden)]
-pub mod model;
-#[doc(hidden)]
-pub mod presentation;
-#[doc(hidden)]
-pub mod studies;
-#[doc(hidden)]
-pub mod verification;
+// Without `internals`, items the project's tests reach but the front door
+// does not (the test-only switches, the reference twins of the fast
+// routes) are unused: the same items the dead-code lint passes over when
+// the modules are public, as they are for the tests.
+#![cfg_attr(not(feature = "internals"), allow(dead_code, unused_imports))]
 
-#[doc(hidden)]
-pub mod geom;
-#[doc(hidden)]
-pub mod json;
-#[doc(hidden)]
-pub mod output;
-#[doc(hidden)]
-pub mod progress;
+/// The data-flow modules: private to the API, public to the project's own
+/// tests, benches and fuzz targets with the `internals` feature (no
+/// stability promised there).
+macro_rules! internal_modules {
+    ($($name:ident),* $(,)?) => {$(
+        #[cfg(feature = "internals")]
+        #[doc(hidden)]
+        pub mod $name;
+        #[cfg(not(feature = "internals"))]
+        mod $name;
+    )*};
+}
+
+// Base, then the layers from the lowest (docs/architecture.md).
+internal_modules!(
+    format,
+    geom,
+    json,
+    progress,
+    model,
+    kinematics,
+    kinetostatics,
+    studies,
+    verification,
+    pipeline,
+    words,
+    grading,
+    presentation,
+);
 
 pub mod accuracy;
 pub mod error;
+pub mod lang;
 pub mod study;
 
-// The paths of the first, flat layout, kept: tests, benches and fuzz
-// targets reach the internals by them.
+// The paths of the first, flat layout, kept for the project's tests,
+// benches and fuzz targets.
+#[cfg(feature = "internals")]
 #[doc(hidden)]
-pub use kinematics::{analytic, compiled, construction, positions, solve};
+pub use scene::Scene;
+#[cfg(feature = "internals")]
 #[doc(hidden)]
-pub use model::{mechanism, scene, shape, structure};
-#[doc(hidden)]
-pub use presentation::{drawing, quantity, report};
-#[doc(hidden)]
-pub use studies::{centres, diagrams, frenet, invariants};
-#[doc(hidden)]
-pub use verification::{check, precision, reference};
+pub use {
+    grading as check,
+    kinematics::{analytic, compiled, construction, positions, solve},
+    model::{mechanism, scene, shape, structure},
+    pipeline::Solved,
+    presentation::{drawing, report},
+    solve::Analysis,
+    studies::{centres, diagrams, frenet, invariants},
+    verification::{precision, reference},
+};
 
 pub use error::{Error, Issue, Result};
-pub use scene::Scene;
-pub use solve::{Analysis, Solved};
-pub use study::{DrawRequest, Results, Solution, Study};
+pub use kinematics::construction::PlanKind;
+pub use kurbo::{Point, Vec2};
+pub use lang::Lang;
+pub use presentation::drawing::{Format, Sheet, SheetSize};
+pub use progress::{Progress, Silent};
+pub use study::files::{Spool, write_atomically};
+pub use study::{
+    Centres, CheckRequest, Checked, Diagram, DrawRequest, Invariants, LinkResult, PointResult,
+    PositionResult, Positions, PrecisionReport, Results, Solution, Study, Written, check_file,
+    frenet,
+};
+pub use verification::precision::Settings as PrecisionSettings;
+
+/// The README's Rust examples, run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
 pub const DEFAULT_SCENE: &str = include_str!("../fixtures/six_link_fig2_10.json");
-
-pub use output::write_atomically;

@@ -2,25 +2,44 @@
 //! [`Study`] (the front door every command goes through).
 
 mod cli;
+mod terminal;
 
 use clap::Parser;
 use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
-use mechplan::drawing;
-use mechplan::output::{stdout, wrote};
-use mechplan::study::{Diagram, Precision};
-use mechplan::{DrawRequest, Error, Results, Study};
+use mechplan::Spool;
+use mechplan::{CheckRequest, DrawRequest, Error, Results, Study};
+use std::path::Path;
 use std::process::ExitCode;
+use std::sync::Arc;
+use terminal::{stdout, wrote};
+
+/// A scene file read, long sweeps drawing a bar on a terminal.
+fn study(path: &Path) -> Result<Study, Error> {
+    Ok(Study::from_path(path)?.watched_by(Arc::new(terminal::Bar::default())))
+}
+
+/// The results in `style`: into the file `output`, or held back and
+/// printed when every position is solved.
+fn results(study: &Study, style: Results, output: Option<&Path>) -> Result<(), Error> {
+    match output {
+        Some(path) => study.write_results_to_file(style, path),
+        None => {
+            let mut spool = Spool::new();
+            study.write_results_to_spool(style, &mut spool)?;
+            terminal::print_spool(spool)
+        }
+    }
+}
 
 fn main() -> ExitCode {
     finish(match Cli::parse().command {
         Some(c) => command(c),
         // No arguments: the embedded default scene, solved and drawn.
         None => {
-            let study = Study::default_scene();
-            study
-                .write_results(Results::Table, None)
+            let study = Study::default_scene().watched_by(Arc::new(terminal::Bar::default()));
+            results(&study, Results::Table, None)
                 .and_then(|()| study.draw(&DrawRequest::default()))
-                .and_then(|w| stdout(&wrote(&w)))
+                .and_then(|w| wrote(&w))
                 .map(|()| 0)
         }
     })
@@ -43,7 +62,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 (false, SolveFormat::Csv) => Results::Csv,
                 (false, SolveFormat::Jsonl) => Results::Jsonl,
             };
-            Study::from_path(&scene)?.write_results(style, output.as_deref())?;
+            results(&study(&scene)?, style, output.as_deref())?;
         }
         Command::Draw {
             scene,
@@ -70,7 +89,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 html,
                 course,
             };
-            stdout(&wrote(&Study::from_path(&scene)?.draw(&req)?))?;
+            wrote(&study(&scene)?.draw(&req)?)?;
         }
         Command::Check {
             scene,
@@ -82,7 +101,7 @@ fn command(c: Command) -> Result<u8, Error> {
             plan,
             position,
         } => {
-            let req = mechplan::check::CheckRequest {
+            let req = CheckRequest {
                 json: matches!(format, CheckFormat::Json),
                 overlay: svg,
                 delta,
@@ -90,10 +109,25 @@ fn command(c: Command) -> Result<u8, Error> {
                 plan,
                 position,
             };
-            let (report, status) = mechplan::check::check_file(&scene, &answer, &req)?;
+            let (report, status) = mechplan::check_file(&scene, &answer, &req)?;
             stdout(&report)?;
             return Ok(status);
         }
+        Command::Frenet {
+            output,
+            format,
+            count,
+        } => wrote(&mechplan::frenet(&output, format.into(), count)?)?,
+        study_command => studies(study_command)?,
+    }
+    Ok(0)
+}
+
+/// The studies of a scene: the precision report, the instant centres,
+/// the motion-law invariants, the kinematic diagrams (the other commands
+/// are `command`'s).
+fn studies(c: Command) -> Result<(), Error> {
+    match c {
         Command::Precision {
             scene,
             output,
@@ -101,7 +135,7 @@ fn command(c: Command) -> Result<u8, Error> {
             positions,
             min_time,
         } => {
-            let settings = mechplan::precision::Settings {
+            let settings = mechplan::PrecisionSettings {
                 seeds,
                 positions,
                 min_time,
@@ -111,17 +145,24 @@ fn command(c: Command) -> Result<u8, Error> {
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_else(|| "scene".into());
-            let dir = output.as_deref().map(|d| (d, stem.as_str()));
-            match Study::from_path(&scene)?.precision(&settings, dir)? {
-                Precision::Table(t) => stdout(&t)?,
-                Precision::Written(w) => stdout(&wrote(&w))?,
+            let report = study(&scene)?.precision(&settings)?;
+            match output {
+                Some(dir) => wrote(&report.write_into(&dir, &stem)?),
+                None => stdout(&report.to_markdown()),
             }
         }
         Command::Centres {
             scene,
             position,
             format,
-        } => stdout(&Study::from_path(&scene)?.centres(position, format == Format::Json)?)?,
+        } => {
+            let study = study(&scene)?;
+            let centres = study.centres(position)?;
+            stdout(&match format {
+                Format::Json => terminal::pretty(&centres.to_json()),
+                Format::Table => centres.to_table(),
+            })
+        }
         Command::Invariants {
             scene,
             output,
@@ -130,9 +171,12 @@ fn command(c: Command) -> Result<u8, Error> {
             n,
             format,
         } => {
-            let study = Study::from_path(&scene)?;
-            let json = format == Format::Json;
-            stdout(&study.invariants(output.as_deref(), tolerance, min_dwell, n, json)?)?;
+            let study = study(&scene)?;
+            let inv = study.invariants(output.as_deref(), tolerance, min_dwell, n)?;
+            stdout(&match format {
+                Format::Json => terminal::pretty(&inv.to_json()),
+                Format::Table => inv.to_table(),
+            })
         }
         Command::Diagram {
             scene,
@@ -142,24 +186,19 @@ fn command(c: Command) -> Result<u8, Error> {
             output_dir,
             format,
         } => {
-            let dir = output_dir.as_deref().map(|d| (d, format.into()));
-            let study = Study::from_path(&scene)?;
-            match study.diagram(output.as_deref(), point.as_deref(), n, dir)? {
-                Diagram::Table(t) => stdout(&t)?,
-                Diagram::Written(w) => stdout(&wrote(&w))?,
+            let study = study(&scene)?;
+            let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
+            match output_dir {
+                Some(dir) => wrote(&d.write_into(&dir, format.into())?),
+                None => stdout(&d.to_table()),
             }
         }
-        Command::Frenet {
-            output,
-            format,
-            count,
-        } => stdout(&wrote(&drawing::frenet::write(
-            &output,
-            format.into(),
-            count,
-        )?))?,
+        // `command` runs the others itself.
+        Command::Solve { .. }
+        | Command::Draw { .. }
+        | Command::Check { .. }
+        | Command::Frenet { .. } => Ok(()),
     }
-    Ok(0)
 }
 
 /// The exit status: the command's own (0 success; `check`: 1 an item
@@ -195,7 +234,7 @@ fn finish(result: Result<u8, Error>) -> ExitCode {
             }
         }
     }
-    mechplan::output::error(&e.to_string());
+    terminal::error(&e.to_string());
     ExitCode::from(match e {
         Error::Write { .. } => 3,
         Error::Internal(_) => 5,

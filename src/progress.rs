@@ -1,67 +1,64 @@
-//! Long sweeps: parallel over positions (rayon), with a progress bar on a
-//! terminal (indicatif). Results never depend on either: each position's
-//! work is independent once the positions themselves are found in order,
-//! and the results are gathered in the order of the positions.
+//! Long sweeps: parallel over positions (rayon), and how far they have
+//! come, told to whoever watches ([`Progress`]: the command draws a bar on
+//! a terminal; the library itself never prints). Results never depend on
+//! either: each position's work is independent once the positions
+//! themselves are found in order, and the results are gathered in the
+//! order of the positions.
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use std::io::IsTerminal;
 
 /// From this many items a sweep runs in parallel: fewer do not pay for
 /// waking the thread pool.
 pub const PARALLEL_FROM: usize = 32;
 
-/// From this many items a sweep shows a progress bar (on a terminal only).
-pub const BAR_FROM: usize = 2000;
+/// A watcher of a long sweep: told its length once, then each item done.
+/// The library calls it from several threads at once.
+pub trait Progress: Sync {
+    /// The sweep of `len` items of `what` (e.g. "positions") begins.
+    fn start(&self, _len: usize, _what: &str) {}
+    /// `n` more items are done.
+    fn advance(&self, n: usize);
+    /// The sweep is over (done or stopped by an error).
+    fn finish(&self) {}
+}
 
-/// A progress bar for `len` items of `what`: drawn on standard error when
-/// that is a terminal and the sweep is long, hidden otherwise (pipes, files,
-/// tests).
-pub fn bar(len: usize, what: &str) -> ProgressBar {
-    if len < BAR_FROM || !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
-    }
-    let pb = ProgressBar::new(len as u64);
-    if let Ok(style) = ProgressStyle::with_template("{msg} {wide_bar} {pos}/{len} ({eta} left)") {
-        pb.set_style(style);
-    }
-    pb.set_message(what.to_string());
-    pb
+/// No watcher: the default of every library call.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Silent;
+
+impl Progress for Silent {
+    fn advance(&self, _n: usize) {}
 }
 
 /// `f` over `items`, in parallel for long sweeps, results in the items'
-/// order; with a progress bar for very long ones.
-pub fn map<T: Sync, R: Send>(items: &[T], what: &str, f: impl Fn(&T) -> R + Sync) -> Vec<R> {
-    let pb = bar(items.len(), what);
-    let out = map_on(items, &pb, f);
-    pb.finish_and_clear();
+/// order, told to `progress` as one sweep of `what`.
+pub fn map<T: Sync, R: Send>(
+    items: &[T],
+    what: &str,
+    progress: &dyn Progress,
+    f: impl Fn(&T) -> R + Sync,
+) -> Vec<R> {
+    progress.start(items.len(), what);
+    let out = map_on(items, progress, f);
+    progress.finish();
     out
 }
 
-/// As [`map`], counting on a bar made by the caller (one bar for a sweep
-/// done a part at a time).
+/// As [`map`], counting on a sweep begun by the caller (one sweep done a
+/// part at a time).
 pub fn map_on<T: Sync, R: Send>(
     items: &[T],
-    pb: &ProgressBar,
+    progress: &dyn Progress,
     f: impl Fn(&T) -> R + Sync,
 ) -> Vec<R> {
+    let one = |x: &T| {
+        let r = f(x);
+        progress.advance(1);
+        r
+    };
     if items.len() >= PARALLEL_FROM {
-        items
-            .par_iter()
-            .map(|x| {
-                let r = f(x);
-                pb.inc(1);
-                r
-            })
-            .collect()
+        items.par_iter().map(one).collect()
     } else {
-        items
-            .iter()
-            .map(|x| {
-                let r = f(x);
-                pb.inc(1);
-                r
-            })
-            .collect()
+        items.iter().map(one).collect()
     }
 }

@@ -556,7 +556,12 @@ fn the_velocity_plans_scale_widens_the_normal_points() {
     assert_eq!(ans.mu_v, Some(mu_v));
     assert_eq!(ans.omegas.len(), 1);
     let r = check(&an, &solved, &ans).unwrap();
-    assert_eq!(r.wrong(), 0, "{}", mechplan::check::to_text(&r));
+    assert_eq!(
+        r.wrong(),
+        0,
+        "{}",
+        mechplan::presentation::verdict::to_text(&r)
+    );
     assert!((r.verdicts[0].tolerance - reference.points[n2].err - 0.5).abs() < 1e-9);
 }
 
@@ -687,7 +692,12 @@ fn inkscape_svg_answer_is_read_and_checked() {
     assert_eq!(ans.mu, plan.mu);
     assert_eq!(ans.items.len(), 5);
     let r = check(&an, &solved, &ans).unwrap();
-    assert_eq!(r.wrong(), 0, "{}", mechplan::check::to_text(&r));
+    assert_eq!(
+        r.wrong(),
+        0,
+        "{}",
+        mechplan::presentation::verdict::to_text(&r)
+    );
 }
 
 /// Bad answers get clear messages naming the field.
@@ -815,7 +825,7 @@ fn two_mistakes_together_are_named() {
                     .diagnosis
                     .as_ref()
                     .and_then(|d| d.mistake.clone())
-                    .unwrap_or_else(|| mechplan::check::to_text(&r));
+                    .unwrap_or_else(|| mechplan::presentation::verdict::to_text(&r));
                 assert!(
                     d.contains("Two mistakes")
                         && d.contains("Coriolis")

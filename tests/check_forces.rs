@@ -38,11 +38,11 @@ fn answer_from(an: &Analysis, s: &Solved, k: usize, mu: f64, loads: &[Load]) -> 
     for step in &plan.steps {
         if let ForceStep::Measure(i) = step {
             let v = plan.vectors[*i];
-            let name = mechplan::presentation::force_steps::force_name(
-                an,
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
                 loads,
                 v.force,
-                mechplan::construction::text::Lang::En,
+                mechplan::words::construction::Lang::En,
             );
             let seg = plan.points[v.to] - plan.points[v.from];
             segments.push((
@@ -110,7 +110,7 @@ fn a_plan_read_off_the_construction_is_right() {
             0,
             "position {}: {}",
             k + 1,
-            mechplan::check::forces::to_text(&r)
+            mechplan::presentation::verdict::force_to_text(&r)
         );
         right += usize::from(r.status() == 0);
     }
@@ -153,7 +153,12 @@ fn a_plan_drawn_too_small_cannot_be_judged() {
     let ans = answer_from(&an, &solved[0], 0, 200.0, &loads);
     let r = check(&an, &solved, &ans).unwrap();
     assert_eq!(r.wrong(), 0);
-    assert_eq!(r.status(), 4, "{}", mechplan::check::forces::to_text(&r));
+    assert_eq!(
+        r.status(),
+        4,
+        "{}",
+        mechplan::presentation::verdict::force_to_text(&r)
+    );
 }
 
 #[test]
@@ -356,11 +361,11 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
     let svg = |stretch: Option<&str>| {
         let mut body = String::new();
         for v in &plan.vectors {
-            let name = mechplan::presentation::force_steps::force_name(
-                &an,
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
                 &loads,
                 v.force,
-                mechplan::construction::text::Lang::En,
+                mechplan::words::construction::Lang::En,
             );
             let (a, mut b) = (plan.points[v.from], plan.points[v.to]);
             if stretch == Some(name.as_str()) {
@@ -388,10 +393,19 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
     let ans = mechplan::check::forces::from_svg(&svg(None), None, 0.5, 1).unwrap();
     assert!(ans.segments.len() >= 5, "{:?}", ans.segments);
     let r = check(&an, &solved, &ans).unwrap();
-    assert_eq!(r.wrong(), 0, "{}", mechplan::check::forces::to_text(&r));
+    assert_eq!(
+        r.wrong(),
+        0,
+        "{}",
+        mechplan::presentation::verdict::force_to_text(&r)
+    );
     let ans = mechplan::check::forces::from_svg(&svg(Some("R_05")), None, 0.5, 1).unwrap();
     let r = check(&an, &solved, &ans).unwrap();
-    assert!(r.wrong() >= 1, "{}", mechplan::check::forces::to_text(&r));
+    assert!(
+        r.wrong() >= 1,
+        "{}",
+        mechplan::presentation::verdict::force_to_text(&r)
+    );
     assert!(mechplan::check::forces::is_force_svg(&svg(None)));
     assert!(!mechplan::check::forces::is_force_svg(
         "<svg xmlns=\"http://www.w3.org/2000/svg\"><text x=\"1\" y=\"1\">μ_v = 0.01</text></svg>"

@@ -164,3 +164,86 @@ fn compiled_route_gives_the_interpreted_numbers_to_the_bit() {
     );
     assert!(files >= 70 && positions > 20_000, "{files} {positions}");
 }
+
+/// A position's result without its wall times (`crosscheck.time_s`).
+fn untimed(an: &Analysis, s: &mechplan::Solved) -> serde_json::Value {
+    let mut v = mechplan::report::position_json(an, s);
+    if let Some(c) = v.get_mut("crosscheck").and_then(|c| c.as_object_mut()) {
+        c.remove("time_s");
+    }
+    v
+}
+
+/// Every position's result of `an` as it runs (route (a) compiled) and as
+/// its reference twin runs (route (a) interpreted), or the same error.
+fn same_run(name: &str, an: &mut Analysis) -> usize {
+    an.reference = true;
+    let old = an.run();
+    an.reference = false;
+    let new = an.run();
+    match (old, new) {
+        (Ok(a), Ok(b)) => {
+            assert_eq!(a.len(), b.len(), "{name}");
+            for (k, (a, b)) in a.iter().zip(&b).enumerate() {
+                assert_eq!(
+                    untimed(an, a).to_string(),
+                    untimed(an, b).to_string(),
+                    "{name}, position {}",
+                    k + 1
+                );
+            }
+            a.len()
+        }
+        (Err(a), Err(b)) => {
+            assert_eq!(a.to_string(), b.to_string(), "{name}");
+            0
+        }
+        (a, b) => panic!("{name}: {:?} vs {:?}", a.err(), b.err()),
+    }
+}
+
+/// Issue 24: `solve` runs route (a) compiled: the whole result of every
+/// fixture and stress scene, on the fast path (no plans; its own
+/// positions and 360) and on the full path, is its reference twin's (route (a) interpreted) to the bit, the
+/// errors too.
+#[test]
+fn the_analysis_runs_the_compiled_route_with_the_reference_results() {
+    let (mut runs, mut positions) = (0usize, 0usize);
+    for path in scenes() {
+        let text = std::fs::read_to_string(&path).unwrap();
+        let Ok(v) = serde_json::from_str::<serde_json::Value>(&text) else {
+            continue;
+        };
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        let mut fast = v.clone();
+        if let Some(want) = fast.get_mut("want").and_then(|w| w.as_object_mut()) {
+            let rates = want
+                .get("plans")
+                .cloned()
+                .unwrap_or(serde_json::json!(["velocity", "acceleration"]));
+            want.insert("rates".into(), rates);
+            want.insert("plans".into(), serde_json::json!([]));
+        } else if let Some(o) = fast.as_object_mut() {
+            o.insert(
+                "want".into(),
+                serde_json::json!({ "plans": [], "rates": ["velocity", "acceleration"] }),
+            );
+        }
+        // And the fast path over a sweep of 360 positions, where route
+        // (a) finds the positions in order (class III groups tracked).
+        let mut sweep = fast.clone();
+        sweep["positions"] = serde_json::json!({ "count": 360 });
+        for (path, v) in [("full", v), ("fast", fast), ("fast, 360", sweep)] {
+            let Ok(scene) = Scene::from_json(&v.to_string()) else {
+                continue;
+            };
+            let Ok(mut an) = Analysis::new(scene) else {
+                continue;
+            };
+            runs += 1;
+            positions += same_run(&format!("{name} ({path} path)"), &mut an);
+        }
+    }
+    eprintln!("{runs} runs, {positions} positions the same to the bit");
+    assert!(runs >= 210 && positions > 10_000, "{runs} {positions}");
+}

@@ -212,7 +212,7 @@ fn a_course_sheet_in_ukrainian() {
     });
     let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
     let opt = DrawOptions {
-        lang: mechplan::construction::text::Lang::Uk,
+        lang: mechplan::words::construction::Lang::Uk,
         course: true,
         ..DrawOptions::default()
     };

@@ -264,7 +264,7 @@ fn force_plans_of_every_fixture_with_masses() {
 /// equilibrium's, to the four digits it prints.
 #[test]
 fn force_steps_read_off_the_reactions() {
-    use mechplan::construction::text::Lang;
+    use mechplan::words::construction::Lang;
     for name in FIXTURES {
         let (an, solved) = solved(name);
         for lang in [Lang::En, Lang::Uk, Lang::Ru] {
@@ -334,7 +334,7 @@ fn force_steps_read_off_the_reactions() {
 /// from the text in each language) is the links' equilibrium's.
 #[test]
 fn force_steps_end_with_the_lever() {
-    use mechplan::construction::text::Lang;
+    use mechplan::words::construction::Lang;
     for name in ["worked_slider_crank", "six_link_fig2_10", "shaper_fig2_11"] {
         let (an, solved) = solved(name);
         for (lang, key) in [

@@ -6,9 +6,9 @@
 //! `ForcePlan::points` placed as the sheet places them (its start point's
 //! dot, μ_F as the caption prints it) to 0.01 mm.
 
-use mechplan::construction::text::Lang;
 use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
 use mechplan::kinetostatics::force_plan::ForceStep;
+use mechplan::words::construction::Lang;
 use std::collections::HashMap;
 
 const DYNAMICS: &[&str] = &[

@@ -7,11 +7,11 @@
 
 mod common;
 use common::*;
-use mechplan::construction::text::{Lang, sentence};
 use mechplan::construction::{Op, Plan};
 use mechplan::drawing::canvas::{Canvas, Prim};
 use mechplan::drawing::html::{handout, rich};
 use mechplan::drawing::plan::{draw_steps, made_at};
+use mechplan::words::construction::{Lang, sentence};
 use std::collections::BTreeSet;
 
 fn fixture_handout(name: &str, lang: Lang) -> (Vec<mechplan::Solved>, String) {

@@ -458,7 +458,7 @@ fn several_inputs_in_the_result_file() {
 #[test]
 fn the_cylinder_in_the_steps() {
     let (an, solved) = solve(scene_with(fixture("boom_cylinder"), json!({ "s": [0.1] })));
-    let text = mechplan::report::to_steps(&an, &solved, mechplan::construction::text::Lang::En);
+    let text = mechplan::report::to_steps(&an, &solved, mechplan::words::construction::Lang::En);
     for want in [
         "v_B = v̳_̳C̳ + v̳_̳B̳3̳B̳2̳ + v̲_̲B̲2̲C̲",
         "From p_v lay off p_vr3 = v_B3B2/μ_v",
@@ -472,8 +472,8 @@ fn the_cylinder_in_the_steps() {
         assert!(text.contains(want), "missing {want:?} in\n{text}");
     }
     for lang in [
-        mechplan::construction::text::Lang::Uk,
-        mechplan::construction::text::Lang::Ru,
+        mechplan::words::construction::Lang::Uk,
+        mechplan::words::construction::Lang::Ru,
     ] {
         let t = mechplan::report::to_steps(&an, &solved, lang);
         assert!(t.contains("a^k_B3B2 = 2·ω2·v_B3B2"), "{t}");
@@ -539,7 +539,12 @@ fn a_hand_drawn_boom_plan_is_checked() {
         mechplan::check::answer::from_json(&text).unwrap()
     };
     let right = check(&an, &solved, &answer(good)).unwrap();
-    assert_eq!(right.wrong(), 0, "{}", mechplan::check::to_text(&right));
+    assert_eq!(
+        right.wrong(),
+        0,
+        "{}",
+        mechplan::presentation::verdict::to_text(&right)
+    );
     let r = check(&an, &solved, &answer(&wrong)).unwrap();
     assert!(r.wrong() > 0);
     let d = r.diagnosis.unwrap().mistake.unwrap();
@@ -553,23 +558,20 @@ fn a_hand_drawn_boom_plan_is_checked() {
 fn one_input_features_refuse_several() {
     let study = mechplan::Study::from_json(&fixture("five_bar_two_cranks").to_string()).unwrap();
     let inv = study
-        .invariants(Some("3"), 0.01, 5.0, 360, false)
+        .invariants(Some("3"), 0.01, 5.0, 360)
         .unwrap_err()
         .to_string();
     assert!(
         inv.contains("/input") && inv.contains("several inputs"),
         "{inv}"
     );
-    let dia = study
-        .diagram(Some("3"), None, 12, None)
-        .unwrap_err()
-        .to_string();
+    let dia = study.diagram(Some("3"), None, 12).unwrap_err().to_string();
     assert!(
         dia.contains("/input") && dia.contains("several inputs"),
         "{dia}"
     );
     let pre = study
-        .precision(&mechplan::precision::Settings::default(), None)
+        .precision(&mechplan::precision::Settings::default())
         .unwrap_err()
         .to_string();
     assert!(
@@ -578,10 +580,7 @@ fn one_input_features_refuse_several() {
     );
     // Diagrams of the boom: over the cylinder's stroke, against its slide.
     let boom = mechplan::Study::from_json(&fixture("boom_cylinder").to_string()).unwrap();
-    let mechplan::study::Diagram::Table(t) = boom.diagram(Some("1"), None, 10, None).unwrap()
-    else {
-        unreachable!()
-    };
+    let t = boom.diagram(Some("1"), None, 10).unwrap().to_table();
     assert!(t.contains("over the stroke s3 = -0.15 … 0.35 m"), "{t}");
     let d = mechplan::diagrams::Diagrams::build(
         boom.analysis(),

@@ -52,7 +52,7 @@ fn streamed_text_is_the_document_byte_for_byte() {
     // Several chunks of positions; and no positions at all.
     let v = fixture("six_link_fig2_10");
     let (an, solved) = solve(scene_with(v, serde_json::json!({ "count": 1100 })));
-    assert!(solved.len() > 2 * mechplan::solve::RUN_CHUNK);
+    assert!(solved.len() > 2 * mechplan::pipeline::RUN_CHUNK);
     let whole = serde_json::to_string_pretty(&report::to_json(&an, &solved)).unwrap() + "\n";
     assert_eq!(report::to_text(&an, &solved, Style::Json), whole);
     let none = serde_json::to_string_pretty(&report::to_json(&an, &[])).unwrap() + "\n";
@@ -106,7 +106,7 @@ fn a_long_sweep_runs_in_bounded_memory() {
     let o = limited(&format!("solve '{}' --format json", scene.display()));
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout).unwrap();
-    assert!(text.len() > mechplan::output::Spool::MEMORY);
+    assert!(text.len() > mechplan::study::files::Spool::MEMORY);
     assert_eq!(text.matches("\n      \"input\": {").count(), 20000);
     assert!(text.ends_with("\n  ]\n}\n"));
 }

@@ -71,10 +71,15 @@ fn reference_refined_in_parallel_equals_sequential() {
     let mut re = Reference::new(&an).unwrap();
     let starts: Vec<_> = qs.iter().copied().zip(re.starts(&qs).unwrap()).collect();
     let got = on_threads(2, || {
-        mechplan::progress::map(&starts, "reference", |(q, c)| {
-            let q = mechplan::reference::Real::from_f64(*q);
-            format!("{:?}", re.refine(&q, c).unwrap().links)
-        })
+        mechplan::progress::map(
+            &starts,
+            "reference",
+            &mechplan::progress::Silent,
+            |(q, c)| {
+                let q = mechplan::reference::Real::from_f64(*q);
+                format!("{:?}", re.refine(&q, c).unwrap().links)
+            },
+        )
     });
     assert_eq!(want, got);
 }

@@ -735,3 +735,117 @@ fn the_sweep_kernel_on_the_stiff_catalogue() {
     assert!(scenes >= 10 && same > 0 && settled > 0);
     assert!(other * 100 <= same, "{other} of {same}");
 }
+
+/// Issue 24: where the result keeps no plans (`solve`'s table and CSV,
+/// `Analysis::keep_plans` false) the plans are built numbers only and
+/// only checked: the table and the CSV, every cross-check figure and
+/// bound, and every refusal are those of the named build (the reference
+/// twin), on every fixture's sweep and every stress scene. The sweep's
+/// kernel (`sweep_kernel`, not taken) gives the same CSV, but not the
+/// same table: where it draws a plan at the neighbouring scale its
+/// check's worst quantity can be another (`class3_004` at 14°).
+#[test]
+fn a_sweep_that_keeps_no_plans_checks_them_numbers_only_with_the_same_results() {
+    use mechplan::report::{Style, text_position};
+    let mut scenes: Vec<(String, Value)> = FIXTURES
+        .iter()
+        .map(|name| {
+            let mut v = fixture(name);
+            v["positions"] = sweep(name, &v);
+            (name.to_string(), v)
+        })
+        .collect();
+    let dir = format!("{}/fixtures/stress", env!("CARGO_MANIFEST_DIR"));
+    let mut stress: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    stress.sort();
+    for path in stress {
+        let text = std::fs::read_to_string(&path).unwrap();
+        if let Ok(v) = serde_json::from_str::<Value>(&text) {
+            scenes.push((path.display().to_string(), v));
+        }
+    }
+    // The wall times of a table's cross-check line.
+    let untimed = |t: String| -> String {
+        let mut out = String::new();
+        for (i, part) in t.split(" µs").enumerate() {
+            if i > 0 {
+                out.push_str(" µs");
+            }
+            out.push_str(part.trim_end_matches(|c: char| c.is_ascii_digit()));
+        }
+        out
+    };
+    let (mut runs, mut positions, mut refused) = (0, 0, 0);
+    let mut kernel_differs = Vec::new();
+    for (name, v) in scenes {
+        let Ok(scene) = mechplan::Scene::from_json(&v.to_string()) else {
+            continue;
+        };
+        let Ok(mut an) = Analysis::new(scene) else {
+            continue;
+        };
+        if !an.plans {
+            continue;
+        }
+        an.keep_plans = false;
+        an.reference = true;
+        let old = an.run();
+        an.reference = false;
+        let new = an.run();
+        an.sweep_kernel = true;
+        let swept = an.run();
+        an.sweep_kernel = false;
+        runs += 1;
+        let (old, new, swept) = match (old, new, swept) {
+            (Ok(a), Ok(b), Ok(c)) => (a, b, c),
+            (Err(a), Err(b), Err(c)) => {
+                assert_eq!(a.to_string(), b.to_string(), "{name}");
+                assert_eq!(a.to_string(), c.to_string(), "{name}");
+                refused += 1;
+                continue;
+            }
+            (a, b, c) => panic!("{name}: {:?} vs {:?} vs {:?}", a.err(), b.err(), c.err()),
+        };
+        assert_eq!(old.len(), new.len(), "{name}");
+        for (k, (a, b)) in old.iter().zip(&new).enumerate() {
+            let at = format!("{name}, position {}", k + 1);
+            assert!(a.plans.is_some() && b.plans.is_none(), "{at}");
+            for style in [Style::Table, Style::Csv] {
+                assert_eq!(
+                    untimed(text_position(&an, style, k, a)),
+                    untimed(text_position(&an, style, k, b)),
+                    "{at}"
+                );
+            }
+            let (ca, cb) = (a.check.as_ref().unwrap(), b.check.as_ref().unwrap());
+            assert_eq!(ca.max_rel_diff.to_bits(), cb.max_rel_diff.to_bits(), "{at}");
+            assert_eq!(ca.worst, cb.worst, "{at}");
+            assert_eq!(ca.bound, cb.bound, "{at}");
+            assert_eq!(ca.data_sensitivity, cb.data_sensitivity, "{at}");
+            positions += 1;
+            let c = &swept[k];
+            assert!(c.plans.is_none(), "{at}");
+            assert_eq!(
+                text_position(&an, Style::Csv, k, a),
+                text_position(&an, Style::Csv, k, c),
+                "{at}"
+            );
+            let table = |s| untimed(text_position(&an, Style::Table, k, s));
+            if table(a) != table(c) {
+                kernel_differs.push(at);
+            }
+        }
+    }
+    eprintln!(
+        "{runs} sweeps, {positions} positions alike, {refused} refused alike; the sweep kernel's table differs at {kernel_differs:?}"
+    );
+    assert!(runs >= 50 && positions > 2000, "{runs} {positions}");
+    assert!(
+        kernel_differs.contains(&"class3_004, position 105".to_string()),
+        "{kernel_differs:?}"
+    );
+}

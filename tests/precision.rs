@@ -79,9 +79,9 @@ fn report_on_the_four_bar_has_its_shape() {
     let ch = row(&r.rows, "chords", "N = 360");
     assert!(ch.err[1].unwrap().max < c360.err[1].unwrap().max);
     // The table and the plot.
-    let md = precision::to_markdown(&r);
+    let md = mechplan::presentation::precision::to_markdown(&r);
     assert_eq!(md.lines().count(), 2 + r.rows.len());
-    let svg = precision::to_svg(&r, "four_bar");
+    let svg = mechplan::presentation::precision::to_svg(&r, "four_bar");
     mechplan::drawing::tree(&svg).unwrap();
     assert!(svg.contains("run time per position"));
 }

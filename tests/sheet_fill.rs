@@ -76,7 +76,7 @@ fn drawings_fill_their_field_on_every_sheet_size() {
             };
             let field = sheet::field(size, false, 0.0);
             let mut spans = Vec::new();
-            for s in sheets(study.analysis(), &solution.positions, &opt) {
+            for s in sheets(study.analysis(), solution.solved(), &opt) {
                 let kind = ["mechanism_", "velocity_", "acceleration_"]
                     .into_iter()
                     .find(|k| s.name.starts_with(k));

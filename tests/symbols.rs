@@ -217,11 +217,7 @@ fn symbols_keep_clear_of_each_other() {
     for (name, text) in fixtures() {
         let study = mechplan::Study::from_json(&text).unwrap();
         let solution = study.solve().unwrap();
-        for sheet in sheets(
-            study.analysis(),
-            &solution.positions,
-            &DrawOptions::default(),
-        ) {
+        for sheet in sheets(study.analysis(), solution.solved(), &DrawOptions::default()) {
             if sheet.name == "positions" {
                 continue;
             }

@@ -21,7 +21,7 @@ use crate::kinematics::construction::{
     Drafting, Field, Naming, Plan, Setup, build_plans_in, non_rotating,
 };
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 
@@ -126,7 +126,7 @@ struct Placed {
 /// the kernel builds one (the pole on the frame, the same point on a
 /// translating link, the similar figure on the best pair, the relative
 /// vector of the measured ω from one).
-fn place(an: &Analysis, s: &Solved, plan: &Plan, link: usize, x: Point) -> Result<Placed> {
+fn place(an: &Analysis, s: &Position, plan: &Plan, link: usize, x: Point) -> Result<Placed> {
     let m = &an.mech;
     if link == m.frame() {
         return Ok(Placed {
@@ -206,7 +206,7 @@ fn turned(v: Vec2) -> Vec2 {
 /// The two base points of `link` a couple is put on: its first two
 /// points of distinct places, else its one point and a point one link
 /// size along its local x.
-fn base_points(an: &Analysis, s: &Solved, link: usize) -> ((usize, Point), (Option<usize>, Point)) {
+fn base_points(an: &Analysis, s: &Position, link: usize) -> ((usize, Point), (Option<usize>, Point)) {
     let m = &an.mech;
     let l = &m.links[link];
     let p = l.points[0];
@@ -231,7 +231,7 @@ fn base_points(an: &Analysis, s: &Solved, link: usize) -> ((usize, Point), (Opti
 /// a plan point the kernel built.
 fn velocity_plan(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     input: usize,
     naming: Naming,
     mu_v: Option<f64>,
@@ -269,7 +269,7 @@ fn velocity_plan(
 /// Zhukovsky's lever of every input at solved position `s` for its known
 /// `loads` ([`super::loads::loads`]); `naming` [`Naming::Full`] for a plan
 /// to draw.
-pub fn levers(an: &Analysis, s: &Solved, loads: &[Load], naming: Naming) -> Result<Vec<Lever>> {
+pub fn levers(an: &Analysis, s: &Position, loads: &[Load], naming: Naming) -> Result<Vec<Lever>> {
     (0..an.mech.scene.input_count())
         .map(|i| lever(an, s, loads, i, naming))
         .collect()
@@ -279,7 +279,7 @@ pub fn levers(an: &Analysis, s: &Solved, loads: &[Load], naming: Naming) -> Resu
 /// standard scale (the scene's `want.scales.mu_v` with one input).
 pub fn lever(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     input: usize,
     naming: Naming,
@@ -290,7 +290,7 @@ pub fn lever(
 /// The loads carried onto the lever turned from `plan`, each with its
 /// moment about the pole (a couple as two forces at its link's base
 /// points).
-fn lever_forces(an: &Analysis, s: &Solved, plan: &Plan, loads: &[Load]) -> Result<Vec<LeverForce>> {
+fn lever_forces(an: &Analysis, s: &Position, plan: &Plan, loads: &[Load]) -> Result<Vec<LeverForce>> {
     let mut forces = Vec::new();
     let on_lever =
         |load: usize, part, link, point, origin, x: Point, f: Vec2| -> Result<LeverForce> {
@@ -360,7 +360,7 @@ struct LeverDrive {
 }
 
 /// The balancing force of input `input` on the lever turned from `plan`.
-fn lever_drive(an: &Analysis, s: &Solved, plan: &Plan, input: usize) -> Result<LeverDrive> {
+fn lever_drive(an: &Analysis, s: &Position, plan: &Plan, input: usize) -> Result<LeverDrive> {
     let m = &an.mech;
     Ok(match *m.scene.input_at(input) {
         InputSpec::Crank { link, pivot, .. } => {
@@ -401,7 +401,7 @@ fn lever_drive(an: &Analysis, s: &Solved, plan: &Plan, input: usize) -> Result<L
 /// `mu_v` ((m/s)/mm; `None`: as [`lever`]): a sheet's own scale.
 pub fn lever_at(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     input: usize,
     naming: Naming,
@@ -472,7 +472,7 @@ pub fn lever_at(
 /// would add.
 pub fn check(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     by_links: &[Balancing],
     floors: &[f64],

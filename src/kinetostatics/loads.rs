@@ -4,7 +4,7 @@
 //! (a per-position list at this position's value). The force plans, the
 //! lever of Zhukovsky and both routes of this module read the same list.
 
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use kurbo::{Point, Vec2};
 
 /// What a load is, for the report and the graphical methods built on it.
@@ -74,7 +74,7 @@ pub struct Inertia {
 
 /// Every link's inertia (the links with mass, in the scene's order) at
 /// solved position `s`; `None` without a `dynamics` object.
-pub fn inertia(an: &Analysis, s: &Solved) -> Option<Vec<Inertia>> {
+pub fn inertia(an: &Analysis, s: &Position) -> Option<Vec<Inertia>> {
     let d = an.mech.scene.dynamics.as_ref()?;
     let m = &an.mech;
     let out = d
@@ -100,7 +100,7 @@ pub fn inertia(an: &Analysis, s: &Solved) -> Option<Vec<Inertia>> {
 /// Every known load at solved position `s`, the `k`-th position (from 0)
 /// of the scene: inertia, then weights, then the external loads in the
 /// order written. Empty without a `dynamics` object.
-pub fn loads(an: &Analysis, s: &Solved, k: usize) -> Vec<Load> {
+pub fn loads(an: &Analysis, s: &Position, k: usize) -> Vec<Load> {
     let Some(d) = an.mech.scene.dynamics.as_ref() else {
         return Vec::new();
     };
@@ -159,7 +159,7 @@ pub fn loads(an: &Analysis, s: &Solved, k: usize) -> Vec<Load> {
 /// A tabled force's argument at solved position `s`: its point's
 /// displacement |P − from| (m), and whether the point moves away from
 /// `from` (the working stroke; standing still counts as working).
-pub fn stroke(s: &Solved, link: usize, at: Point, from: Point) -> (f64, bool) {
+pub fn stroke(s: &Position, link: usize, at: Point, from: Point) -> (f64, bool) {
     let d = at - from;
     let v = s.motion[link].map_or(Vec2::ZERO, |mo| mo.velocity(at));
     (d.hypot(), v.dot(d) >= 0.0)
@@ -168,7 +168,7 @@ pub fn stroke(s: &Solved, link: usize, at: Point, from: Point) -> (f64, bool) {
 /// Every tabled force's displacement at solved position `s` within its
 /// table's rows (to a billionth of the table's span), else the pointer of
 /// the first one outside, with the displacement and the rows' range.
-pub fn tables_cover(an: &Analysis, s: &Solved) -> Option<(String, f64, f64, f64)> {
+pub fn tables_cover(an: &Analysis, s: &Position) -> Option<(String, f64, f64, f64)> {
     let d = an.mech.scene.dynamics.as_ref()?;
     let m = &an.mech;
     d.forces.iter().enumerate().find_map(|(i, f)| {

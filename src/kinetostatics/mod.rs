@@ -15,7 +15,7 @@ pub mod power;
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use kurbo::{Point, Vec2};
 pub use loads::{Inertia, Load, Origin};
 
@@ -73,6 +73,10 @@ impl Balancing {
 /// The force analysis of one position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dynamics {
+    /// Every known load: inertia, then weights, then the external loads
+    /// in the order written ([`loads::loads`]), found once here for every
+    /// reader (the force plans' words, sheets and checks).
+    pub loads: Vec<Load>,
     /// Every link with mass, in the scene's order.
     pub inertia: Vec<Inertia>,
     /// Every revolute pair, in `Mechanism::revolutes`' order.
@@ -105,7 +109,7 @@ pub struct Dynamics {
 /// scene; `None` when the scene has no `dynamics`. Refused (an error
 /// naming the position) where the equilibrium equations are singular or
 /// ill-conditioned, or the two routes disagree.
-pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> {
+pub fn analyse(an: &Analysis, s: &Position, k: usize) -> Result<Option<Dynamics>> {
     let Some(inertia) = loads::inertia(an, s) else {
         return Ok(None);
     };
@@ -166,6 +170,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
     };
     let lever = lever::check(an, s, &loads, &balancing, &floors)?;
     Ok(Some(Dynamics {
+        loads,
         force_plans,
         force_plans_diff,
         inertia,
@@ -184,7 +189,7 @@ pub fn analyse(an: &Analysis, s: &Solved, k: usize) -> Result<Option<Dynamics>> 
 /// position `s`, from the links' equilibrium `x`.
 fn revolute_reactions(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     x: &newton_euler::Unknowns,
 ) -> Vec<RevoluteReaction> {
     let m = &an.mech;
@@ -239,7 +244,7 @@ fn force_scale(
 /// where its normal force is not null against `scale`.
 fn guide_reactions(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     x: &newton_euler::Unknowns,
     scale: f64,
 ) -> Vec<GuideReaction> {
@@ -295,7 +300,7 @@ fn balancing_diff(balancing: &[Balancing], vp: &power::VirtualPower, floors: &[f
 /// `accuracy::max_balancing_diff`.
 fn plans(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     x: &newton_euler::Unknowns,
     scale: f64,

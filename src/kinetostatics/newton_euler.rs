@@ -15,7 +15,7 @@ use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::perp;
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 use nalgebra::{DMatrix, DVector};
@@ -43,7 +43,7 @@ pub struct Unknowns {
 
 /// The geometry of prismatic pair `k` at a position: the slider's point Q
 /// on the line, the guide's direction u and its left normal n.
-pub fn guide_frame(an: &Analysis, s: &Solved, k: usize) -> (Point, Vec2, Vec2) {
+pub fn guide_frame(an: &Analysis, s: &Position, k: usize) -> (Point, Vec2, Vec2) {
     let m = &an.mech;
     let pr = &m.prismatics[k];
     let q = s.config.point(m, pr.slider, pr.point);
@@ -54,7 +54,7 @@ pub fn guide_frame(an: &Analysis, s: &Solved, k: usize) -> (Point, Vec2, Vec2) {
 /// The system's columns and rows, and how loads enter them.
 struct System<'a> {
     an: &'a Analysis,
-    s: &'a Solved,
+    s: &'a Position,
     /// First row of each link's three equations (None: the frame).
     row: Vec<Option<usize>>,
     /// The length that turns moments into forces.
@@ -93,7 +93,7 @@ impl System<'_> {
 
 /// Solve the equilibrium of every moving link at solved position `s`
 /// under the known `loads`.
-pub fn solve(an: &Analysis, s: &Solved, loads: &[Load]) -> Result<Unknowns> {
+pub fn solve(an: &Analysis, s: &Position, loads: &[Load]) -> Result<Unknowns> {
     let m = &an.mech;
     let sc = &m.scene;
     let mut row = vec![None; m.links.len()];

@@ -9,7 +9,7 @@
 //! generalised force, its partial velocities.
 
 use super::loads::Load;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 
 /// The balancing moment (crank, N·m) or force (driving slider, N) of each
 /// input by virtual power, with the sum of the magnitudes of its power's
@@ -21,7 +21,7 @@ pub struct VirtualPower {
 }
 
 /// [`VirtualPower`] of `loads` at solved position `s`.
-pub fn balancing(an: &Analysis, s: &Solved, loads: &[Load]) -> VirtualPower {
+pub fn balancing(an: &Analysis, s: &Position, loads: &[Load]) -> VirtualPower {
     let w = an.mech.scene.input_count();
     let mut out = VirtualPower {
         balancing: Vec::with_capacity(w),

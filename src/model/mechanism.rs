@@ -424,7 +424,7 @@ fn prismatic(
             format!(
                 "point \"{}\" is {} off its guide line in the sketch; a slider's point lies on its guide",
                 scene.points[s.point].name,
-                crate::presentation::quantity::format_quantity(off.abs(), "m")
+                crate::format::format_quantity(off.abs(), "m")
             ),
         );
     }

@@ -24,8 +24,8 @@
 //! sensitivity check rebuilds the shapes from data moved by a few units of
 //! rounding with the same decisions: rounding must not change the rule.
 
+use crate::format::format_quantity as quantity;
 use crate::model::scene::Scene;
-use crate::presentation::quantity::format_quantity as quantity;
 use kurbo::{Point, Vec2};
 
 /// Unit roundoff of f64 (half the machine epsilon).

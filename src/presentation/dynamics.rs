@@ -2,7 +2,7 @@
 //! `dynamics` (`inertia`, `pairs`, `balancing`) and mechplan's `check`
 //! (docs/scene-format.md, docs/kinetostatics.md).
 
-use super::report::{num, vec2};
+use crate::json::{number as num, vec2};
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::{Balancing, Dynamics};
 use serde_json::{Map, Value, json};

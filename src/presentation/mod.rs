@@ -1,16 +1,19 @@
-//! Presentation: the result file and the terminal's table ([`report`]),
-//! the tables of results as data, for the terminal and the handout alike
-//! ([`tables`]), the sheets and the handout ([`drawing`]), quantities in
-//! messages ([`quantity`]), the force analysis in the result ([`dynamics`]).
+//! Presentation: reads a finished solution and writes it for people,
+//! never solving again. The result file and the terminal's table
+//! ([`report`]), the tables of results as data, for the terminal and the
+//! handout alike ([`tables`]), the sheets and the handout ([`drawing`]),
+//! the force analysis in the result ([`dynamics`]) and in steps
+//! ([`force_steps`]), a check's verdict as text, JSON and an overlay
+//! ([`verdict`]), the work-precision report's table and plot
+//! ([`precision`]), the studies' tables ([`studies`]).
 
 pub mod drawing;
 pub mod dynamics;
-pub mod force_notation;
 pub mod force_steps;
-pub mod notation;
-pub mod quantity;
+pub mod precision;
 pub mod report;
 mod steps;
 pub mod studies;
 pub mod tables;
 mod text_table;
+pub mod verdict;

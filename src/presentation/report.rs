@@ -1,31 +1,23 @@
-//! Results as the contract's JSON (`shared/spec/scene-format.md`, result
-//! section; additions in `docs/scene-format.md`), as a terminal table (the
+//! Results as the JSON of `docs/scene-format.md` ("The result files"),
+//! as a terminal table (the
 //! tables of [`super::tables`], the handout's too, written as text) and
 //! as the construction's steps.
 
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
-use crate::verification::crosscheck::Method;
+use crate::pipeline::Solved;
+use crate::verification::crosscheck::{CrossCheck, Method};
+use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};
 
 pub use super::steps::to_steps;
 use super::steps::{steps_head, steps_position};
+use crate::json::{number as num, vec2};
 pub(crate) use super::text_table::group_kinds;
 pub use super::text_table::to_table;
 use super::text_table::{table_head, table_position};
-
-/// Round-trip-exact but tidy: integers print as integers, no `-0`.
-pub(super) fn num(x: f64) -> Value {
-    let x = if x == 0.0 { 0.0 } else { x };
-    json!(x)
-}
-
-pub(super) fn vec2(v: kurbo::Vec2) -> Value {
-    json!([num(v.x), num(v.y)])
-}
 
 fn deg(a: f64) -> f64 {
     wrap_pi(a).to_degrees()
@@ -112,117 +104,33 @@ fn json_head(an: &Analysis) -> Map<String, Value> {
     doc
 }
 
+/// What a position's entries hold: first-order rates (`vel`), second-order
+/// ones (`acc`), and the analogues by input (`several`).
+#[derive(Clone, Copy)]
+struct Orders {
+    vel: bool,
+    acc: bool,
+    several: bool,
+}
+
+impl Orders {
+    fn of(an: &Analysis) -> Orders {
+        Orders {
+            vel: an.order.is_some(),
+            acc: an.order == Some(Order::Acceleration),
+            several: an.mech.scene.several_inputs(),
+        }
+    }
+}
+
 /// One position of the result document.
 pub fn position_json(an: &Analysis, s: &Solved) -> Value {
-    let m = &an.mech;
-    let vel = an.order.is_some();
-    let acc = an.order == Some(Order::Acceleration);
-    let several = m.scene.several_inputs();
+    let want = Orders::of(an);
     let mut o = Map::new();
-    let inputs: Vec<Value> = m
-        .scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| match spec {
-            InputSpec::Crank { .. } => json!({ "angle": num(d.q.to_degrees()), "omega": num(d.rate), "epsilon": num(d.rate2) }),
-            InputSpec::Slider { .. } => json!({ "s": num(d.q), "v": num(d.rate), "a": num(d.rate2) }),
-        })
-        .collect();
-    o.insert(
-        "input".into(),
-        if several {
-            Value::Array(inputs)
-        } else {
-            inputs.into_iter().next().expect("one input")
-        },
-    );
-    let mut pts = Map::new();
-    for &p in &an.points {
-        let ps = s.point(an, p);
-        let (at, st, an_) = (ps.at, ps.rates, ps.analogue);
-        let mut e = Map::new();
-        e.insert("p".into(), json!([num(at.x), num(at.y)]));
-        if vel {
-            let (v, a) = st.unwrap();
-            let (vq, aq) = match s.point_partials(an, p).filter(|_| several) {
-                // Several inputs: ∂P/∂q_i, and ∂²P/∂q_i∂q_j by rows.
-                Some(pp) => (
-                    Value::Array(pp.first.iter().map(|x| vec2(*x)).collect()),
-                    matrix(pp.second.as_deref(), vec2),
-                ),
-                None => {
-                    let (vq, aq) = an_.unwrap();
-                    (vec2(vq), vec2(aq))
-                }
-            };
-            let rates = [("v", vec2(v)), ("a", vec2(a))];
-            let analogues = [("v_q", vq), ("a_q", aq)];
-            insert_rates(&mut e, acc, [rates, analogues]);
-        }
-        pts.insert(m.point_name(p).to_string(), Value::Object(e));
-    }
-    o.insert("points".into(), Value::Object(pts));
-    let mut links = Map::new();
-    for l in 0..m.links.len() {
-        if !an.link(l) {
-            continue;
-        }
-        let mut e = Map::new();
-        // The local x-axis runs from the link's first point to its
-        // second (a one-point slider: along its guide), as the
-        // contract defines a link's angle.
-        e.insert("angle".into(), num(deg(s.config.pose(l).angle)));
-        if vel {
-            let mo = s.motion[l].unwrap();
-            let (pq, pqq) = match s.link_partials(l).filter(|_| several) {
-                Some(pp) => (
-                    Value::Array(pp.first.iter().map(|x| num(*x)).collect()),
-                    matrix(pp.second.as_deref(), num),
-                ),
-                None => {
-                    let aq = s.analogue[l].unwrap();
-                    (num(aq.omega), num(aq.epsilon))
-                }
-            };
-            let rates = [("omega", num(mo.omega)), ("epsilon", num(mo.epsilon))];
-            let analogues = [("phi_q", pq), ("phi_qq", pqq)];
-            insert_rates(&mut e, acc, [rates, analogues]);
-        }
-        links.insert(m.link_id(l).to_string(), Value::Object(e));
-    }
-    o.insert("links".into(), Value::Object(links));
-    let slides: Vec<Value> = s
-        .slides(an)
-        .iter()
-        .map(|sl| {
-            let pr = &m.prismatics[sl.pair];
-            let mut e = Map::new();
-            e.insert("slider".into(), json!(m.link_id(pr.slider)));
-            e.insert("guide".into(), json!(m.link_id(pr.guide)));
-            e.insert("point".into(), json!(m.point_name(pr.point)));
-            e.insert("s".into(), num(sl.s));
-            let (s_q, s_qq) = if several {
-                (
-                    Value::Array(sl.s_qs.iter().map(|x| num(*x)).collect()),
-                    matrix(Some(&sl.s_qqs), num),
-                )
-            } else {
-                (num(sl.s_q), num(sl.s_qq))
-            };
-            if vel {
-                e.insert("v".into(), num(sl.v));
-                e.insert("s_q".into(), s_q);
-            }
-            if acc {
-                e.insert("a".into(), num(sl.a));
-                e.insert("s_qq".into(), s_qq);
-                if pr.guide != m.frame() {
-                    e.insert("coriolis".into(), vec2(sl.coriolis));
-                }
-            }
-            Value::Object(e)
-        })
-        .collect();
+    o.insert("input".into(), inputs_json(an, s, want));
+    o.insert("points".into(), points_json(an, s, want));
+    o.insert("links".into(), links_json(an, s, want));
+    let slides = slides_json(an, s, want);
     if !slides.is_empty() {
         o.insert("sliders".into(), Value::Array(slides));
     }
@@ -235,50 +143,177 @@ pub fn position_json(an: &Analysis, s: &Solved) -> Value {
         o.insert("plans".into(), Value::Object(pl));
     }
     if let Some(c) = &s.check {
-        let mut check = match c.method {
-            Method::Routes => json!({
-                "max_rel_diff": num(c.max_rel_diff),
-                "worst": c.worst,
-                "conditioning": num(c.conditioning),
-                "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
-            }),
-            // The fast path: route (b)'s equations at route (a)'s answer.
-            Method::Residuals { .. } => json!({
-                "method": "residuals",
-                "max_rel_residual": num(c.max_rel_diff),
-                "worst": c.worst,
-                "conditioning": num(c.conditioning),
-                "time_s": { "contour": num(c.contour_time), "check": num(c.constraint_time) },
-            }),
-        };
-        if let Some(sens) = c.data_sensitivity {
-            check["data_sensitivity"] = num(sens);
-        }
-        if let Method::Residuals { linear_data } = c.method {
-            check["data_check"] = json!(if linear_data { "linear" } else { "solved" });
-        }
-        if let Some(b) = &c.bound {
-            let mut fields = vec![("p", b.p), ("angle", b.angle)];
-            if vel {
-                fields.extend([("v", b.v), ("omega", b.omega)]);
-                fields.extend([("v_q", b.v_q), ("phi_q", b.phi_q)]);
-            }
-            if acc {
-                fields.extend([("a", b.a), ("epsilon", b.epsilon)]);
-                fields.extend([("a_q", b.a_q), ("phi_qq", b.phi_qq)]);
-            }
-            let bound: Map<String, Value> = fields
-                .into_iter()
-                .map(|(k, x)| (k.to_string(), num(x)))
-                .collect();
-            check["bound"] = Value::Object(bound);
-        }
-        o.insert("crosscheck".into(), check);
+        o.insert("crosscheck".into(), crosscheck_json(c, want));
     }
     if let Some(d) = &s.dynamics {
         o.insert("dynamics".into(), super::dynamics::dynamics_json(an, d));
     }
     Value::Object(o)
+}
+
+/// A position's inputs: the one input's object, or an array of them.
+fn inputs_json(an: &Analysis, s: &Solved, want: Orders) -> Value {
+    let inputs: Vec<Value> = an
+        .mech
+        .scene
+        .inputs()
+        .zip(s.drives.iter())
+        .map(|(spec, d)| match spec {
+            InputSpec::Crank { .. } => json!({ "angle": num(d.q.to_degrees()), "omega": num(d.rate), "epsilon": num(d.rate2) }),
+            InputSpec::Slider { .. } => json!({ "s": num(d.q), "v": num(d.rate), "a": num(d.rate2) }),
+        })
+        .collect();
+    if want.several {
+        Value::Array(inputs)
+    } else {
+        inputs.into_iter().next().expect("one input")
+    }
+}
+
+/// The wanted points of a position by name: place, rates and analogues.
+fn points_json(an: &Analysis, s: &Solved, want: Orders) -> Value {
+    let m = &an.mech;
+    let mut pts = Map::new();
+    for &p in &an.points {
+        let ps = s.point(an, p);
+        let (at, st, an_) = (ps.at, ps.rates, ps.analogue);
+        let mut e = Map::new();
+        e.insert("p".into(), json!([num(at.x), num(at.y)]));
+        if want.vel {
+            let (v, a) = st.unwrap();
+            let (vq, aq) = match s.point_partials(an, p).filter(|_| want.several) {
+                // Several inputs: ∂P/∂q_i, and ∂²P/∂q_i∂q_j by rows.
+                Some(pp) => (
+                    Value::Array(pp.first.iter().map(|x| vec2(*x)).collect()),
+                    matrix(pp.second.as_deref(), vec2),
+                ),
+                None => {
+                    let (vq, aq) = an_.unwrap();
+                    (vec2(vq), vec2(aq))
+                }
+            };
+            let rates = [("v", vec2(v)), ("a", vec2(a))];
+            let analogues = [("v_q", vq), ("a_q", aq)];
+            insert_rates(&mut e, want.acc, [rates, analogues]);
+        }
+        pts.insert(m.point_name(p).to_string(), Value::Object(e));
+    }
+    Value::Object(pts)
+}
+
+/// The solved links of a position by id: angle, rates and analogues.
+fn links_json(an: &Analysis, s: &Solved, want: Orders) -> Value {
+    let m = &an.mech;
+    let mut links = Map::new();
+    for l in 0..m.links.len() {
+        if !an.link(l) {
+            continue;
+        }
+        let mut e = Map::new();
+        // The local x-axis runs from the link's first point to its
+        // second (a one-point slider: along its guide), as the
+        // contract defines a link's angle.
+        e.insert("angle".into(), num(deg(s.config.pose(l).angle)));
+        if want.vel {
+            let mo = s.motion[l].unwrap();
+            let (pq, pqq) = match s.link_partials(l).filter(|_| want.several) {
+                Some(pp) => (
+                    Value::Array(pp.first.iter().map(|x| num(*x)).collect()),
+                    matrix(pp.second.as_deref(), num),
+                ),
+                None => {
+                    let aq = s.analogue[l].unwrap();
+                    (num(aq.omega), num(aq.epsilon))
+                }
+            };
+            let rates = [("omega", num(mo.omega)), ("epsilon", num(mo.epsilon))];
+            let analogues = [("phi_q", pq), ("phi_qq", pqq)];
+            insert_rates(&mut e, want.acc, [rates, analogues]);
+        }
+        links.insert(m.link_id(l).to_string(), Value::Object(e));
+    }
+    Value::Object(links)
+}
+
+/// The sliders of a position: each slide along its guide with its rates
+/// and analogues (and the Coriolis acceleration on a moving guide).
+fn slides_json(an: &Analysis, s: &Solved, want: Orders) -> Vec<Value> {
+    let m = &an.mech;
+    s.slides(an)
+        .iter()
+        .map(|sl| {
+            let pr = &m.prismatics[sl.pair];
+            let mut e = Map::new();
+            e.insert("slider".into(), json!(m.link_id(pr.slider)));
+            e.insert("guide".into(), json!(m.link_id(pr.guide)));
+            e.insert("point".into(), json!(m.point_name(pr.point)));
+            e.insert("s".into(), num(sl.s));
+            let (s_q, s_qq) = if want.several {
+                (
+                    Value::Array(sl.s_qs.iter().map(|x| num(*x)).collect()),
+                    matrix(Some(&sl.s_qqs), num),
+                )
+            } else {
+                (num(sl.s_q), num(sl.s_qq))
+            };
+            if want.vel {
+                e.insert("v".into(), num(sl.v));
+                e.insert("s_q".into(), s_q);
+            }
+            if want.acc {
+                e.insert("a".into(), num(sl.a));
+                e.insert("s_qq".into(), s_qq);
+                if pr.guide != m.frame() {
+                    e.insert("coriolis".into(), vec2(sl.coriolis));
+                }
+            }
+            Value::Object(e)
+        })
+        .collect()
+}
+
+/// A position's cross-check of the routes (or the fast path's residuals),
+/// with the data sensitivity and the bounds when found.
+fn crosscheck_json(c: &CrossCheck, want: Orders) -> Value {
+    let mut check = match c.method {
+        Method::Routes => json!({
+            "max_rel_diff": num(c.max_rel_diff),
+            "worst": c.worst,
+            "conditioning": num(c.conditioning),
+            "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
+        }),
+        // The fast path: route (b)'s equations at route (a)'s answer.
+        Method::Residuals { .. } => json!({
+            "method": "residuals",
+            "max_rel_residual": num(c.max_rel_diff),
+            "worst": c.worst,
+            "conditioning": num(c.conditioning),
+            "time_s": { "contour": num(c.contour_time), "check": num(c.constraint_time) },
+        }),
+    };
+    if let Some(sens) = c.data_sensitivity {
+        check["data_sensitivity"] = num(sens);
+    }
+    if let Method::Residuals { linear_data } = c.method {
+        check["data_check"] = json!(if linear_data { "linear" } else { "solved" });
+    }
+    if let Some(b) = &c.bound {
+        let mut fields = vec![("p", b.p), ("angle", b.angle)];
+        if want.vel {
+            fields.extend([("v", b.v), ("omega", b.omega)]);
+            fields.extend([("v_q", b.v_q), ("phi_q", b.phi_q)]);
+        }
+        if want.acc {
+            fields.extend([("a", b.a), ("epsilon", b.epsilon)]);
+            fields.extend([("a_q", b.a_q), ("phi_qq", b.phi_qq)]);
+        }
+        let bound: Map<String, Value> = fields
+            .into_iter()
+            .map(|(k, x)| (k.to_string(), num(x)))
+            .collect();
+        check["bound"] = Value::Object(bound);
+    }
+    check
 }
 
 /// What `solve` prints.
@@ -319,8 +354,7 @@ fn csv_num(x: f64) -> String {
 /// `epsilon_N` as wanted.
 pub fn csv_head(an: &Analysis) -> String {
     let m = &an.mech;
-    let vel = an.order.is_some();
-    let acc = an.order == Some(Order::Acceleration);
+    let Orders { vel, acc, .. } = Orders::of(an);
     let mut cols = vec!["position".to_string()];
     for spec in m.scene.inputs() {
         let id = m.link_id(spec.link());
@@ -358,8 +392,7 @@ pub fn csv_head(an: &Analysis) -> String {
 /// numbers as the JSON result writes them.
 pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
     let m = &an.mech;
-    let vel = an.order.is_some();
-    let acc = an.order == Some(Order::Acceleration);
+    let Orders { vel, acc, .. } = Orders::of(an);
     let mut row = Vec::with_capacity(64);
     row.push((k + 1).to_string());
     for (spec, d) in m.scene.inputs().zip(s.drives.iter()) {
@@ -483,60 +516,4 @@ fn plan_json(plan: &crate::kinematics::construction::Plan) -> Value {
         "delta": num(plan.delta),
         "measured": measured,
     })
-}
-
-/// The inputs of a position in short: "φ1 = 30°", "s = 0.1 m"; several
-/// with their links' ids: "φ1 = 30°, φ4 = 120°", "s3 = 0.1 m, s6 = 0 m".
-pub fn input_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
-    let m = &an.mech;
-    let several = m.scene.several_inputs();
-    m.scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| {
-            let id = m.link_id(spec.link());
-            match spec {
-                InputSpec::Crank { .. } => format!(
-                    "φ{} = {}°",
-                    if several { id } else { "1" },
-                    num(d.q.to_degrees().rem_euclid(360.0))
-                ),
-                InputSpec::Slider { .. } => {
-                    format!("s{} = {} m", if several { id } else { "" }, num(d.q))
-                }
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-/// The inputs' rates of a position in short: "ω1 = 10 rad/s, ε1 = 0
-/// rad/s²", several with their links' ids.
-pub fn drive_words(an: &Analysis, s: &Solved) -> String {
-    use crate::kinematics::construction::text::num;
-    let m = &an.mech;
-    let several = m.scene.several_inputs();
-    m.scene
-        .inputs()
-        .zip(s.drives.iter())
-        .map(|(spec, d)| {
-            let id = m.link_id(spec.link());
-            match spec {
-                InputSpec::Crank { .. } => {
-                    let k = if several { id } else { "1" };
-                    format!(
-                        "ω{k} = {} rad/s, ε{k} = {} rad/s²",
-                        num(d.rate),
-                        num(d.rate2)
-                    )
-                }
-                InputSpec::Slider { .. } => {
-                    let k = if several { id } else { "" };
-                    format!("v{k} = {} m/s, a{k} = {} m/s²", num(d.rate), num(d.rate2))
-                }
-            }
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
 }

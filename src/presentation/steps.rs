@@ -3,9 +3,10 @@
 //! measured values with their drafting bounds, and with `dynamics` the
 //! force plans and the lever ([`super::force_steps`]).
 
-use super::report::input_words;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::words::inputs::input_words;
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 use std::fmt::Write as _;
 
 /// The constructions as numbered lecture-style steps (`solve --steps`).
@@ -29,7 +30,8 @@ pub(super) fn steps_head(an: &Analysis) -> String {
 
 /// The steps of position `i` (from 0).
 pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) -> String {
-    use crate::kinematics::construction::text::{num, sentence};
+    use crate::format::num;
+    use crate::words::construction::sentence;
     let mut t = String::new();
     let (title_v, title_a, worst, bound_word) = match lang {
         Lang::En => (

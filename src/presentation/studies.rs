@@ -2,8 +2,10 @@
 //! kinematic diagrams, the motion-law invariants (the studies themselves
 //! compute numbers only).
 
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+
 use crate::model::mechanism::Mechanism;
+use crate::pipeline::Solved;
 use crate::studies::centres::{How, Place, find, name};
 use crate::studies::diagrams::{Diagrams, central};
 use crate::studies::invariants::{Phase, Settings};
@@ -131,8 +133,8 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
     let start = if d.stroke {
         format!(
             "over the stroke {x} = {} … {} m of the driving slider",
-            crate::kinematics::construction::text::num(d.phi0),
-            crate::kinematics::construction::text::num(d.phi0 + d.h * d.n as f64)
+            crate::format::num(d.phi0),
+            crate::format::num(d.phi0 + d.h * d.n as f64)
         )
     } else {
         format!(
@@ -153,7 +155,7 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
             (None, false) => "its angle",
         },
         d.n,
-        crate::kinematics::construction::text::num(d.mu_s),
+        crate::format::num(d.mu_s),
         d.mu_phi,
         d.h1,
         d.h2,

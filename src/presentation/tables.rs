@@ -12,10 +12,12 @@
 //! drawings show). Numbers are kept as numbers: each medium writes them
 //! in its own way.
 
+use crate::format::num;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::{Lang, num};
 use crate::kinematics::construction::{Measured, Plan, PlanKind, Plans};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 
 /// What a column holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

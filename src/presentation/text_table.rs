@@ -4,10 +4,11 @@
 
 use super::tables::{self, Cell, Kind, Table};
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::verification::crosscheck::Method;
+use crate::words::construction::Lang;
 use std::fmt::Write as _;
 
 /// The sense of rotation, "-" for a value that is zero up to rounding
@@ -200,7 +201,5 @@ pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    let s = format!("{x:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
+    crate::format::fixed(x, 6)
 }

@@ -16,8 +16,9 @@ use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings, Unknowns};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
+use crate::kinematics::construction::Plans;
 use crate::kinematics::positions::{PositionSolver, describe_input};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::model::mechanism::Mechanism;
 use kurbo::Point;
 
@@ -138,13 +139,16 @@ pub(crate) struct Costs {
 
 impl Analysis {
     /// The cross-check of a solved position: route (a) against route (b)
-    /// (`other`), the plans against both, and the data sensitivity; with
-    /// the costs of the position and its bounds. An error (a refusal) when
-    /// the routes disagree or the data's rounding decides the answer.
+    /// (`other`), the plans (`plans`: the position's own, or the sweep
+    /// kernel's where the result keeps none) against both, and the data
+    /// sensitivity; with the costs of the position and its bounds. An
+    /// error (a refusal) when the routes disagree or the data's rounding
+    /// decides the answer.
     pub(crate) fn cross_check(
         &self,
-        s: &Solved,
+        s: &Position,
         other: &[Option<Motion>],
+        plans: Option<&Plans>,
         costs: Costs,
         q_rounding: Coords,
         changed: &ChangedData,
@@ -152,7 +156,7 @@ impl Analysis {
         let m = &self.mech;
         let (mut d, mut worst) = self.compare(s, other);
         for (route, mo) in [("contour", &s.motion[..]), ("constraint", other)] {
-            let (dp, wp) = self.compare_plans(s, mo);
+            let (dp, wp) = self.compare_plans(s, plans, mo);
             if dp > d || dp.is_nan() {
                 (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
             }
@@ -218,7 +222,7 @@ impl Analysis {
     /// on the changed data as [`Analysis::cross_check`] does.
     pub(crate) fn residual_check(
         &self,
-        s: &Solved,
+        s: &Position,
         eqs: &Residuals,
         contour_time: f64,
         q_rounding: Coords,
@@ -283,7 +287,7 @@ impl Analysis {
     /// again decides).
     fn linear_sensitivity(
         &self,
-        s: &Solved,
+        s: &Position,
         u: &Unknowns,
         eqs: &Residuals,
         q_rounding: Coords,
@@ -311,7 +315,7 @@ impl Analysis {
     }
 
     /// The bounds of a solved position ([`Bounds`]).
-    fn bounds(&self, s: &Solved, conditioning: f64, diff: f64, sens: f64) -> Bounds {
+    fn bounds(&self, s: &Position, conditioning: f64, diff: f64, sens: f64) -> Bounds {
         let m = &self.mech;
         let size = m.size;
         let rel = BOUND_ROUNDINGS * f64::EPSILON / conditioning + 4.0 * diff + 4.0 * sens;
@@ -420,7 +424,7 @@ impl Analysis {
     /// not assemble here, or the answer moves by more than [`MAX_REL_DIFF`].
     fn data_sensitivity(
         &self,
-        s: &Solved,
+        s: &Position,
         q_rounding: Coords,
         changed: &ChangedData,
     ) -> std::result::Result<f64, String> {
@@ -470,8 +474,13 @@ impl Analysis {
 
     /// Largest relative difference between the plans (measured values × μ)
     /// and an analytic route.
-    fn compare_plans(&self, s: &Solved, mo: &[Option<Motion>]) -> (f64, String) {
-        let Some(plans) = &s.plans else {
+    fn compare_plans(
+        &self,
+        s: &Position,
+        plans: Option<&Plans>,
+        mo: &[Option<Motion>],
+    ) -> (f64, String) {
+        let Some(plans) = plans else {
             return (0.0, String::new());
         };
         let m = &self.mech;
@@ -519,14 +528,19 @@ impl Analysis {
     }
 
     /// Largest relative difference between route (a) and route (b).
-    fn compare(&self, s: &Solved, other: &[Option<Motion>]) -> (f64, String) {
+    fn compare(&self, s: &Position, other: &[Option<Motion>]) -> (f64, String) {
         self.compare_with(s, other, &self.mech)
     }
 
     /// As [`Analysis::compare`], the other motions belonging to mechanism
     /// `om` (the same links and points, its own shapes: a scene with its
     /// data changed).
-    fn compare_with(&self, s: &Solved, other: &[Option<Motion>], om: &Mechanism) -> (f64, String) {
+    fn compare_with(
+        &self,
+        s: &Position,
+        other: &[Option<Motion>],
+        om: &Mechanism,
+    ) -> (f64, String) {
         let m = &self.mech;
         let mut worst = (0.0f64, String::from("none"));
         let mut note = |d: f64, what: String| {

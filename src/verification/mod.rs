@@ -1,9 +1,9 @@
-//! Verification: the cross-check of the analysis at every position
-//! ([`crosscheck`]), checking hand-drawn plans ([`check`]), the
-//! extended-precision reference ([`reference`](mod@reference)) and the work-precision
-//! report built on it ([`precision`]).
+//! Verification of the analysis: the cross-check at every position
+//! ([`crosscheck`]), the extended-precision reference
+//! ([`reference`](mod@reference)) and the work-precision report built on
+//! it ([`precision`]). Checking a student's hand-drawn plan is grading
+//! (`crate::grading`), above the pipeline.
 
-pub mod check;
 pub mod crosscheck;
 pub mod precision;
 pub mod reference;

@@ -1,10 +1,9 @@
 #!/usr/bin/env python3
 """mpref -- an independent high-precision reference solver for mechplan scenes.
 
-Written only from the contract (shared/spec/scene-format.md) and mechplan's
-documented additions (docs/scene-format.md); it shares no code and no formulas
-with mechplan.  mechplan solves group by group (Assur groups, closed forms,
-plans); this solver knows nothing of groups:
+Written only from the scene format's description (docs/scene-format.md); it
+shares no code and no formulas with mechplan.  mechplan solves group by group
+(Assur groups, closed forms, plans); this solver knows nothing of groups:
 
   * the scene is read exactly: every JSON number is kept as its decimal text
     and becomes a Fraction (mm -> m exactly); degrees -> radians at the

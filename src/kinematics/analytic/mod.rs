@@ -215,6 +215,8 @@ impl std::ops::DerefMut for Drives {
 /// (and, as [`crate::kinematics::construction::PlanKind`], which plan).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Order {
+    /// Velocities only.
     Velocity,
+    /// Velocities and accelerations.
     Acceleration,
 }

@@ -25,7 +25,7 @@
 //! `builder` (the drafting operations and the order of the construction),
 //! `point` (a point of a link from what the plan knows of it), `input`,
 //! `dyad`, `triad` (the groups), `record` (the steps in ids, and their
-//! naming), [`text`] (the steps in words), [`scale`].
+//! naming), [`scale`]. The steps in words are `crate::words::construction`.
 
 mod builder;
 mod dyad;
@@ -34,7 +34,6 @@ pub mod plan;
 mod point;
 mod record;
 pub mod scale;
-pub mod text;
 mod triad;
 
 pub use plan::{

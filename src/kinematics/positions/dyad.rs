@@ -12,7 +12,7 @@ use crate::error::{Error, Result};
 use crate::geom::{LineCut, Pose, circle_circle, circle_line, intersect_lines, rotate};
 use crate::model::mechanism::Mechanism;
 use crate::model::structure::{AssurGroup, Conn, Cylinder, Dyad, DyadKind, Structure};
-use crate::presentation::quantity::format_quantity as quantity;
+use crate::format::format_quantity as quantity;
 use kurbo::{Point, Vec2};
 
 /// The constant h and the pins for the rocking-guide (RPR) closed form:

@@ -1,11 +1,11 @@
-//! The whole analysis of a scene: which groups the wanted output needs,
-//! the input values of the positions (with the extreme position found
-//! exactly for `positions.count`), both analytic routes and the plans at
-//! every position (`run_each`). Their cross-check is verification:
-//! [`crate::verification::crosscheck`] (its types re-exported here).
+//! A scene made ready for the analysis ([`Analysis`]: mechanism,
+//! structure, what is wanted), the input values of the positions (with the
+//! extreme position found exactly for `positions.count`), and what the
+//! kinematics gives at one position ([`Position`]). Solving every position
+//! in order, with the cross-check and the forces, is the pipeline's
+//! (`crate::pipeline`).
 
 mod inputs;
-mod run;
 
 use crate::error::Result;
 use crate::geom::perp;
@@ -17,8 +17,6 @@ use crate::model::mechanism::Mechanism;
 use crate::model::scene::Scene;
 use crate::model::structure::{Structure, analyse};
 use kurbo::{Point, Vec2};
-
-pub use crate::verification::crosscheck::{BOUND_ROUNDINGS, Bounds, CrossCheck, MAX_REL_DIFF};
 
 /// A scene made ready: mechanism, structure, and what is to be computed.
 ///
@@ -38,10 +36,34 @@ pub struct Analysis {
     /// answer instead of by route (b) followed along the positions
     /// ([`crate::verification::crosscheck`], docs/sweeps.md).
     pub plans: bool,
+    /// Whether each position keeps its plans (`Solved::plans`, named,
+    /// with their steps), as a result that prints or draws them needs;
+    /// `false` where only their check is wanted (`solve`'s table and
+    /// CSV): the plans are then built numbers only, without names or steps
+    /// ([`crate::kinematics::construction::build_plans_numbers`]: the same
+    /// plans to the bit), compared with both routes and dropped.
+    pub keep_plans: bool,
+    /// Where the result keeps no plans, build them by the sweep's
+    /// construction kernel ([`crate::kinematics::construction::Kernel`],
+    /// each plan first at the last position's scale), in the order of the
+    /// positions (benches and tests only): faster, but not the same
+    /// check, since the kernel draws a plan at the neighbouring scale
+    /// where the build alone's first construction at unit scale takes
+    /// other scale-dependent choices (docs/performance.md, issue 24).
+    #[doc(hidden)]
+    pub sweep_kernel: bool,
     /// A deliberate error put into route (a)'s answer, for the tests that
     /// show the cross-check catches it; never set by mechplan itself.
     #[doc(hidden)]
     pub corrupt: Option<Corruption>,
+    /// Run the twins kept as references (tests and benches only): route
+    /// (a) interpreted (`PositionSolver`, `contour::solve`) instead of
+    /// compiled for the mechanism ([`crate::kinematics::compiled`]), and
+    /// the plans named, with their steps, where the result keeps none
+    /// (not numbers only), as before issue 24: the same results, the old
+    /// cost.
+    #[doc(hidden)]
+    pub reference: bool,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
@@ -69,14 +91,10 @@ pub enum Corruption {
     Acceleration(f64),
 }
 
-/// Positions found and finished at a time by [`Analysis::run_each`]:
-/// enough to keep both cores busy, few enough that a sweep of the largest
-/// count allowed needs no more memory than a short one.
-pub const RUN_CHUNK: usize = 512;
-
-/// One solved position.
+/// One position as the kinematics solves it: the inputs' values, the
+/// configuration, route (a)'s motions and transfer functions, the plans.
 #[derive(Clone, Debug)]
-pub struct Solved {
+pub struct Position {
     /// The (first) input's coordinate (rad or m) and its rates.
     pub q: f64,
     pub rate: f64,
@@ -101,10 +119,6 @@ pub struct Solved {
     pub mixed: Vec<Vec<Option<Motion>>>,
     /// The plans of velocities and accelerations, as constructions.
     pub plans: Option<Plans>,
-    pub check: Option<CrossCheck>,
-    /// The force analysis (with the scene's `dynamics`), after the
-    /// cross-check has passed the motion it starts from.
-    pub dynamics: Option<crate::kinetostatics::Dynamics>,
 }
 
 impl Analysis {
@@ -137,7 +151,10 @@ impl Analysis {
             demand,
             order,
             plans,
+            keep_plans: true,
+            sweep_kernel: false,
             corrupt: None,
+            reference: false,
             drafting,
             mu_l,
         })
@@ -155,7 +172,7 @@ impl Analysis {
     /// construction on the same configuration, up to the plan of `order`.
     pub fn plans_at_scales(
         &self,
-        s: &Solved,
+        s: &Position,
         order: Order,
         mu_v: Option<f64>,
         mu_a: Option<f64>,
@@ -217,7 +234,42 @@ pub struct Slide {
     pub s_qqs: Vec<Vec<f64>>,
 }
 
-impl Solved {
+/// Route (a)'s answers at a position besides its configuration: the
+/// motions, and the transfer functions of each input and each pair of
+/// inputs (see [`Position`]'s fields of the same names).
+#[derive(Clone, Debug, Default)]
+pub struct Motions {
+    /// The links' motions at the inputs' rates.
+    pub motion: Vec<Option<Motion>>,
+    /// At unit rate of the first input, the others standing.
+    pub analogue: Vec<Option<Motion>>,
+    /// At unit rate of each further input.
+    pub more_analogues: Vec<Vec<Option<Motion>>>,
+    /// At unit rates of each pair of inputs.
+    pub mixed: Vec<Vec<Option<Motion>>>,
+}
+
+impl Position {
+    /// A position of its inputs' `drives`, its configuration, route (a)'s
+    /// motions and (where built) its plans.
+    pub fn new(drives: Drives, config: Configuration, m: Motions, plans: Option<Plans>) -> Position {
+        let first = drives.first();
+        Position {
+            q: first.q,
+            rate: first.rate,
+            rate2: first.rate2,
+            drives,
+            config,
+            motion: m.motion,
+            analogue: m.analogue,
+            more_analogues: m.more_analogues,
+            mixed: m.mixed,
+            plans,
+        }
+    }
+}
+
+impl Position {
     /// The transfer functions of input `i`: route (a) at unit rate of
     /// input i, the others standing.
     pub fn analogue_of(&self, i: usize) -> &[Option<Motion>] {

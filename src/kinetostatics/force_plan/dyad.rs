@@ -8,7 +8,7 @@ use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
 use super::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
 use crate::geom::perp;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::kinetostatics::newton_euler::guide_frame;
 use crate::model::structure::{Conn, Dyad, Joint};
 use kurbo::{Point, Vec2};
@@ -32,7 +32,7 @@ impl Outer {
     }
 }
 
-fn outer(an: &Analysis, s: &Solved, c: &Conn, link: usize) -> Outer {
+fn outer(an: &Analysis, s: &Position, c: &Conn, link: usize) -> Outer {
     match c.joint {
         Joint::R(p) => Outer::Pin {
             point: p,
@@ -50,7 +50,7 @@ fn outer(an: &Analysis, s: &Solved, c: &Conn, link: usize) -> Outer {
 #[allow(clippy::too_many_arguments)]
 pub(super) fn group_plan(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     d: &Dyad,
     (known, out): (&mut Vec<Applied>, &mut ForcePlans),
     (delta, scale): (f64, ScaleOf),
@@ -264,7 +264,7 @@ pub(super) fn reaction(from: usize, to: usize, joint: Joint, part: Part) -> Forc
 #[allow(clippy::too_many_arguments)]
 fn dyad_polygon(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     d: &Dyad,
     sides: &[Vec<usize>; 2],
     known: &[Applied],
@@ -368,7 +368,7 @@ fn outer_point(o: &Outer) -> Option<usize> {
 #[allow(clippy::too_many_arguments)]
 fn cylinder_pair(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     d: &Dyad,
     c: crate::model::structure::Cylinder,
     known: &[Applied],

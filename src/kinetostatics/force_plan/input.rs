@@ -6,7 +6,7 @@ use super::dyad::{couple_step, reaction};
 use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
 use super::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::kinetostatics::newton_euler::guide_frame;
 use crate::model::scene::InputSpec;
 use crate::model::structure::Joint;
@@ -17,7 +17,7 @@ use kurbo::Vec2;
 /// turns or slides on.
 pub(super) fn input_plan(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     i: usize,
     (known, out): (&mut Vec<Applied>, &mut ForcePlans),
     (delta, scale): (f64, ScaleOf),

@@ -34,7 +34,7 @@ use super::newton_euler::guide_frame;
 use crate::error::{Error, Result};
 use crate::kinematics::construction::Field;
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::{Analysis, Position};
 use crate::model::structure::{AssurGroup, InputRole, Joint, Stage};
 use kurbo::{Point, Vec2};
 
@@ -79,7 +79,7 @@ impl Side<'_> {
 
 /// The force plans of every group and input at solved position `s`
 /// under `loads`, from the last group attached back to the inputs.
-pub fn solve(an: &Analysis, s: &Solved, loads: &[Load], delta: f64) -> Result<ForcePlans> {
+pub fn solve(an: &Analysis, s: &Position, loads: &[Load], delta: f64) -> Result<ForcePlans> {
     solve_at(an, s, loads, delta, None)
 }
 
@@ -99,7 +99,7 @@ pub enum Which {
 /// fits the default field.
 pub fn solve_at(
     an: &Analysis,
-    s: &Solved,
+    s: &Position,
     loads: &[Load],
     delta: f64,
     fixed: Option<(Which, f64)>,
@@ -168,7 +168,7 @@ pub fn solve_at(
 /// in pair `joint` in the mechanism's conventions.
 #[allow(clippy::too_many_arguments)]
 fn record(
-    (an, s): (&Analysis, &Solved),
+    (an, s): (&Analysis, &Position),
     out: &mut ForcePlans,
     joint: Joint,
     from: usize,

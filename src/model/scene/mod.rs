@@ -1,5 +1,5 @@
-//! The scene file (contract: `shared/spec/scene-format.md`, extensions in
-//! `docs/scene-format.md`): reading and validating it completely, every
+//! The scene file (described completely in `docs/scene-format.md`):
+//! reading and validating it completely, every
 //! problem reported with its JSON pointer. All numbers are converted to SI
 //! (m, rad) here, so nothing downstream knows about units.
 //!
@@ -324,14 +324,5 @@ impl Scene {
             Some(s) if r.issues.is_empty() => Ok(s),
             _ => Err(Error::fields(r.issues)),
         }
-    }
-
-    /// Read a scene file from disk.
-    pub fn from_path(path: &std::path::Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-            path: path.display().to_string(),
-            source,
-        })?;
-        Scene::from_json(&text)
     }
 }

@@ -3,9 +3,10 @@
 
 use super::canvas::Label;
 use super::table::{self, number};
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 
 /// The words of the sheets' headings.
 pub(crate) struct Words {

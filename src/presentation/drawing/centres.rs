@@ -5,7 +5,8 @@
 //! that none is silently dropped.
 
 use super::canvas::{Canvas, Class, Label, SMALL};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
 use crate::studies::centres::{self, Place};
 use kurbo::{Point, Rect, Vec2};
 

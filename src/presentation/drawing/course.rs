@@ -13,34 +13,20 @@
 //! scales allow.
 
 use super::canvas::{Canvas, SMALL};
+use super::pack::{CAPTION, Figure, GAP, field_of, pack, place, round3, size};
 use super::sheet::{self, Page};
 use super::table::{self, Ruled, number, unit};
 use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::construction::{Plan, PlanKind};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
-
-/// The space between figures, and between a caption and its figure, mm.
-const GAP: f64 = 8.0;
-/// The caption's line height, mm.
-const CAPTION: f64 = 6.0;
-/// Caption font size, mm.
-const CAPTION_FONT: f64 = 3.5;
-
-/// The sheet size of the course sheet: A2 when asked, else A1.
-pub fn size(opt: &DrawOptions) -> SheetSize {
-    if opt.sheet == SheetSize::A2 {
-        SheetSize::A2
-    } else {
-        SheetSize::A1
-    }
-}
 
 /// Which positions' plans the sheet shows (numbers from 1): the velocity
 /// plans of every position (of every k-th beyond 24 positions) unless
@@ -74,34 +60,6 @@ pub fn chosen(an: &Analysis, solved: &[Solved]) -> (Vec<usize>, Vec<usize>) {
     (velocity, acceleration)
 }
 
-/// A figure of the sheet: a caption over a drawing, and the scales it is
-/// drawn at.
-#[derive(Clone)]
-pub(super) struct Figure {
-    pub id: String,
-    pub caption: Vec<String>,
-    pub canvas: Canvas,
-    pub scales: Vec<(&'static str, f64)>,
-}
-
-impl Figure {
-    /// Width and height with the caption, mm.
-    pub fn size(&self) -> (f64, f64) {
-        let b = self.canvas.bounds();
-        let cw = self
-            .caption
-            .iter()
-            .map(|c| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(c), CAPTION_FONT)
-            })
-            .fold(0.0, f64::max);
-        (
-            b.width().max(cw),
-            b.height() + CAPTION * self.caption.len() as f64 + 2.0,
-        )
-    }
-}
-
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
     Positions(positions::Trajectories),
@@ -118,15 +76,79 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     let size = size(opt);
     let lang = opt.lang;
     let w = words(lang);
-    let (vel_at, acc_at) = chosen(an, solved);
+    let chosen = chosen(an, solved);
+    let fixed = fixed_figures(an, solved, size, lang, &chosen);
+    // The figures drawn at a scale, with their share of the field.
+    let sources = sources(an, solved, &chosen, &fixed);
+    let field = field_of(size);
+    let block = sheet::block(size);
+    let cx = Ctx {
+        an,
+        solved,
+        lang,
+        field,
+    };
+    let mut cache = HashMap::new();
+    // The figures at zooms `z` (one per figure; a figure's target area is
+    // its share of the field times z²), and where they go if they pack.
+    let attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
+        let mut figs: Vec<Figure> = Vec::new();
+        for (i, (src, share)) in sources.iter().enumerate() {
+            let area = *share * z[i] * z[i] * field.area();
+            figs.push(figure(&cx, src, area, &mut cache, i)?);
+        }
+        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
+        let at = pack(&rects, field, block)?;
+        Some(figs.into_iter().zip(at).collect())
+    };
+    let shares: Vec<f64> = sources.iter().map(|s| s.1).collect();
+    let placed = grow(&shares, attempt).ok_or_else(|| {
+        crate::Error::Internal(format!(
+            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
+        ))
+    })?;
+    let mut page = Page::new(size);
+    place(&mut page, &placed);
+    let title = w.course.to_string();
+    // Sheet 1 of 2 when the force analysis sheet follows.
+    let sheets = if position_has_forces(an, solved) {
+        2
+    } else {
+        1
+    };
+    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
+    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
+    Ok(Sheet {
+        name: "course".into(),
+        title,
+        size,
+        scales,
+        svg: page.finish(),
+    })
+}
+
+/// Whether the positions have plans of velocities, and of accelerations.
+fn has_plans(solved: &[Solved]) -> (bool, bool) {
     let has_plans = solved.first().is_some_and(|s| s.plans.is_some());
     let has_acc = solved
         .first()
         .and_then(|s| s.plans.as_ref())
         .is_some_and(|p| p.acceleration.is_some());
-    // The figures at their own size: the diagrams (when the crank turns
-    // fully, or over the stroke of a hydraulic cylinder, the one input)
-    // and the tables.
+    (has_plans, has_acc)
+}
+
+/// The figures at their own size: the diagrams (when the crank turns
+/// fully, or over the stroke of a hydraulic cylinder, the one input) and
+/// the tables of the `chosen` positions' plans.
+fn fixed_figures(
+    an: &Analysis,
+    solved: &[Solved],
+    size: SheetSize,
+    lang: Lang,
+    (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
+) -> Vec<Figure> {
+    let w = words(lang);
+    let (has_plans, has_acc) = has_plans(solved);
     let mut fixed: Vec<Figure> = Vec::new();
     let cylinder = !an.mech.scene.several_inputs() && !super::cylinder::pairs(an).is_empty();
     if (matches!(an.mech.scene.positions, PositionsSpec::Count { .. }) || cylinder)
@@ -147,61 +169,64 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             scales: Vec::new(),
         });
     }
+    let table = |id: &str, at: &[usize], kind: PlanKind, what: &str| Figure {
+        id: id.into(),
+        caption: vec![format!("{}: {}", w.table, what.to_lowercase())],
+        canvas: results(an, solved, at, kind, lang).draw(),
+        scales: Vec::new(),
+    };
     if has_plans {
-        let t = results(an, solved, &vel_at, PlanKind::Velocity, lang);
-        fixed.push(Figure {
-            id: "table-velocity".into(),
-            caption: vec![format!("{}: {}", w.table, w.velocities.to_lowercase())],
-            canvas: t.draw(),
-            scales: Vec::new(),
-        });
+        fixed.push(table(
+            "table-velocity",
+            vel_at,
+            PlanKind::Velocity,
+            w.velocities,
+        ));
     }
     if has_acc && !acc_at.is_empty() {
-        let t = results(an, solved, &acc_at, PlanKind::Acceleration, lang);
-        fixed.push(Figure {
-            id: "table-acceleration".into(),
-            caption: vec![format!("{}: {}", w.table, w.accelerations.to_lowercase())],
-            canvas: t.draw(),
-            scales: Vec::new(),
-        });
+        fixed.push(table(
+            "table-acceleration",
+            acc_at,
+            PlanKind::Acceleration,
+            w.accelerations,
+        ));
     }
-    // The figures drawn at a scale, with their share of the field.
+    fixed
+}
+
+/// The sheet's figures, each with its share of the field: the positions,
+/// the `chosen` positions' plans (drawn at a scale), then the `fixed`
+/// ones (share 0).
+fn sources<'a>(
+    an: &Analysis,
+    solved: &[Solved],
+    (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
+    fixed: &'a [Figure],
+) -> Vec<(Source<'a>, f64)> {
+    let (has_plans, has_acc) = has_plans(solved);
     let mut sources: Vec<(Source, f64)> =
         vec![(Source::Positions(positions::trajectories(an, solved)), 0.34)];
     if has_plans {
         sources.push((Source::Velocities(vel_at.clone()), 0.22));
     }
     if has_acc {
-        for &k in &acc_at {
+        for &k in acc_at {
             sources.push((Source::Acceleration(k), 0.2 / acc_at.len() as f64));
         }
     }
-    for f in &fixed {
+    for f in fixed {
         sources.push((Source::Fixed(f), 0.0));
     }
-    let field = field_of(size);
-    let block = sheet::block(size);
-    let cx = Ctx {
-        an,
-        solved,
-        lang,
-        field,
-    };
-    let mut cache = HashMap::new();
-    // The figures at zooms `z` (one per figure; a figure's target area is
-    // its share of the field times z²), and where they go if they pack.
-    let mut attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
-        let mut figs: Vec<Figure> = Vec::new();
-        for (i, (src, share)) in sources.iter().enumerate() {
-            let area = *share * z[i] * z[i] * field.area();
-            figs.push(figure(&cx, src, area, &mut cache, i)?);
-        }
-        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
-        let at = pack(&rects, field, block)?;
-        Some(figs.into_iter().zip(at).collect())
-    };
-    // Grow the shares together while everything packs …
-    let n = sources.len();
+    sources
+}
+
+/// The placed figures of the largest zooms that pack, `attempt` placing
+/// them at one zoom a figure: the shares grown together while everything
+/// packs (a bisection), then each figure with a share by itself, the
+/// largest share first, by the largest step that still packs (a standard
+/// scale's next value is ×1.25 to ×2 away), in rounds until none grows.
+fn grow<T>(shares: &[f64], mut attempt: impl FnMut(&[f64]) -> Option<T>) -> Option<T> {
+    let n = shares.len();
     let (mut lo, mut hi) = (0.2, 1.8);
     let mut best = None;
     for _ in 0..12 {
@@ -214,12 +239,9 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             None => hi = z,
         }
     }
-    // … then each figure by itself, the largest share first, by the
-    // largest step that still packs (a standard scale's next value is
-    // ×1.25 to ×2 away), in rounds until none grows.
     let mut zs = vec![lo; n];
-    let mut order: Vec<usize> = (0..n).filter(|&i| sources[i].1 > 0.0).collect();
-    order.sort_by(|&a, &b| sources[b].1.total_cmp(&sources[a].1));
+    let mut order: Vec<usize> = (0..n).filter(|&i| shares[i] > 0.0).collect();
+    order.sort_by(|&a, &b| shares[b].total_cmp(&shares[a]));
     for _round in 0..4 {
         let mut grew = false;
         for &i in &order {
@@ -243,62 +265,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
             break;
         }
     }
-    let placed = best.ok_or_else(|| {
-        crate::Error::Internal(format!(
-            "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
-        ))
-    })?;
-    let mut page = Page::new(size);
-    place(&mut page, &placed);
-    let title = w.course.to_string();
-    // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if super::course_forces::position_has_forces(an, solved) {
-        2
-    } else {
-        1
-    };
-    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
-    let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
-    Ok(Sheet {
-        name: "course".into(),
-        title,
-        size,
-        scales,
-        svg: page.finish(),
-    })
-}
-
-/// Write the placed figures on `page`, each a group `fig-<id>`: its
-/// caption lines centred over it, the drawing under them.
-pub(super) fn place(page: &mut Page, placed: &[(Figure, Point)]) {
-    for (f, at) in placed {
-        let (fw, _) = f.size();
-        let b = f.canvas.bounds();
-        page.push(&format!("<g class=\"figure\" id=\"fig-{}\">\n", f.id));
-        let mut cap = Canvas::default();
-        for (i, t) in f.caption.iter().enumerate() {
-            cap.rich(
-                Point::new(fw / 2.0, -CAPTION * (i as f64 + 1.0) + 1.5),
-                t,
-                CAPTION_FONT,
-                "caption",
-                "middle",
-            );
-        }
-        page.write_canvas(&cap, at.x, at.y);
-        // The drawing under its caption, centred across the figure's width.
-        let top = at.y + CAPTION * f.caption.len() as f64 + 2.0;
-        let ox = at.x + (fw - b.width()) / 2.0 - b.x0;
-        page.write_canvas(&f.canvas, ox, top + b.y1);
-        page.push("</g>\n");
-    }
-}
-
-/// The field of the course sheet: inside the frame, with no heading band
-/// (the sheet's name is in the title block).
-pub(super) fn field_of(size: SheetSize) -> Rect {
-    let f = sheet::frame(size);
-    f.inset(-sheet::PAD)
+    best
 }
 
 /// What the figures need to be drawn.
@@ -551,101 +518,25 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
     Ruled { head, rows }
 }
 
-/// Three significant digits, as a table of a course project gives them.
-fn round3(x: f64) -> f64 {
-    if x == 0.0 || !x.is_finite() {
-        return x;
-    }
-    let p = 10f64.powi(2 - x.abs().log10().floor() as i32);
-    (x * p).round() / p
+/// The position the force analysis sheet analyses (from 0): the first
+/// position with an acceleration plan after the first, else the first.
+pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
+    let (_, acc) = chosen(an, solved);
+    acc.iter()
+        .copied()
+        .find(|&k| k > 1)
+        .or(acc.first().copied())
+        .unwrap_or(1)
+        .clamp(1, solved.len().max(1))
+        - 1
 }
 
-/// Place rectangles `sizes` (w × h, mm) in `field` (page coordinates,
-/// y down) clear of `block`, largest first, each where its bottom stays
-/// highest and then leftmost (a skyline packer): their top left corners,
-/// or `None` when one does not fit.
-pub fn pack(sizes: &[(f64, f64)], field: Rect, block: Rect) -> Option<Vec<Point>> {
-    // Largest first, by area, by height, by width: the first order that
-    // packs.
-    // Of those that pack, the one whose figures end highest: it leaves the
-    // most room to grow.
-    let keys: [fn((f64, f64)) -> f64; 3] = [|(w, h)| w * h, |(_, h)| h, |(w, _)| w];
-    keys.iter()
-        .filter_map(|key| {
-            let mut order: Vec<usize> = (0..sizes.len()).collect();
-            order.sort_by(|&a, &b| key(sizes[b]).total_cmp(&key(sizes[a])));
-            let at = pack_in_order(sizes, &order, field, block)?;
-            let bottom = at
-                .iter()
-                .zip(sizes)
-                .map(|(p, (_, h))| p.y + h)
-                .fold(f64::MIN, f64::max);
-            Some((bottom, at))
-        })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, at)| at)
-}
-
-/// [`pack`] in one order.
-fn pack_in_order(
-    sizes: &[(f64, f64)],
-    order: &[usize],
-    field: Rect,
-    block: Rect,
-) -> Option<Vec<Point>> {
-    // The skyline: x-intervals with the depth filled so far.
-    let mut sky: Vec<(f64, f64, f64)> = vec![(field.x0, field.x1, field.y0)];
-    let mut placed: Vec<Rect> = Vec::new();
-    let mut out = vec![Point::ZERO; sizes.len()];
-    let block = block.inset(GAP / 2.0);
-    for &i in order {
-        let (w, h) = (sizes[i].0 + GAP, sizes[i].1 + GAP);
-        let mut xs: Vec<f64> = sky.iter().map(|s| s.0).collect();
-        xs.extend(sky.iter().map(|s| s.1 - w));
-        xs.push(field.x1 - w);
-        xs.push(block.x0 - w);
-        let mut best: Option<(f64, f64, f64)> = None;
-        for x in xs {
-            if x < field.x0 - 1e-9 || x + w > field.x1 + 1e-9 {
-                continue;
-            }
-            let y = sky
-                .iter()
-                .filter(|s| s.1 > x + 1e-9 && s.0 < x + w - 1e-9)
-                .map(|s| s.2)
-                .fold(field.y0, f64::max);
-            let r = Rect::new(x, y, x + w, y + h);
-            if r.y1 > field.y1 + 1e-9 || r.intersect(block).area() > 0.0 {
-                continue;
-            }
-            if placed.iter().any(|p| p.intersect(r).area() > 1e-9) {
-                continue;
-            }
-            if best.is_none_or(|(bx, by, _)| (y + h, x) < (by, bx)) {
-                best = Some((x, y + h, y));
-            }
-        }
-        let (x, _, y) = best?;
-        let r = Rect::new(x, y, x + w, y + h);
-        placed.push(r);
-        out[i] = Point::new(x + GAP / 2.0, y + GAP / 2.0);
-        // Raise the skyline under the new rectangle.
-        let mut next = Vec::new();
-        for &(a, b, d) in &sky {
-            if b <= r.x0 || a >= r.x1 {
-                next.push((a, b, d));
-                continue;
-            }
-            if a < r.x0 {
-                next.push((a, r.x0, d));
-            }
-            if b > r.x1 {
-                next.push((r.x1, b, d));
-            }
-        }
-        next.push((r.x0, r.x1, r.y1));
-        next.sort_by(|p, q| p.0.total_cmp(&q.0));
-        sky = next;
-    }
-    Some(out)
+/// Whether the second sheet is drawn: the analysed position has force
+/// plans.
+pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
+    !solved.is_empty()
+        && solved[position(an, solved)]
+            .dynamics
+            .as_ref()
+            .is_some_and(|d| d.force_plans.is_some())
 }

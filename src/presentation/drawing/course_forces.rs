@@ -13,16 +13,18 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::course::{self, Figure, chosen};
+use super::course::position;
+use super::pack::{self, Figure};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};
 use super::{DrawOptions, Sheet, fill, forces, lever, lower_scale};
 use crate::error::Result;
 use crate::kinematics::construction::Naming;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::Balancing;
 use crate::kinetostatics::lever::lever_at;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
 use kurbo::Point;
 
 /// The caption's line height, mm.
@@ -35,18 +37,6 @@ pub fn title(lang: Lang) -> &'static str {
         Lang::Uk => "Силовий аналіз механізму",
         Lang::Ru => "Силовой анализ механизма",
     }
-}
-
-/// The position the sheet analyses (from 0); see the module's comment.
-pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
-    let (_, acc) = chosen(an, solved);
-    acc.iter()
-        .copied()
-        .find(|&k| k > 1)
-        .or(acc.first().copied())
-        .unwrap_or(1)
-        .clamp(1, solved.len().max(1))
-        - 1
 }
 
 /// The reactions and the balancing moment (force) of position `s` by each
@@ -74,7 +64,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     for (i, r) in d.revolutes.iter().enumerate() {
         let name = format!(
             "R{}, {}",
-            super::super::force_notation::pair_sub(m.link_id(r.first), m.link_id(r.second)),
+            crate::words::forces::pair_sub(m.link_id(r.first), m.link_id(r.second)),
             m.point_name(r.point)
         );
         let by_plan = fp
@@ -91,7 +81,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     for (i, p) in d.prismatics.iter().enumerate() {
         let name = format!(
             "R{} ⊥",
-            super::super::force_notation::pair_sub(m.link_id(p.guide), m.link_id(p.slider))
+            crate::words::forces::pair_sub(m.link_id(p.guide), m.link_id(p.slider))
         );
         let by_plan = fp
             .and_then(|f| f.prismatic[i])
@@ -105,7 +95,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
         ]);
     }
     for (i, b) in d.balancing.iter().enumerate() {
-        let sub = super::super::force_notation::balancing_sub(lang);
+        let sub = crate::words::forces::balancing_sub(lang);
         let (name, unit) = match b {
             Balancing::Moment(_) => (
                 format!("M_{sub}"),
@@ -147,7 +137,7 @@ fn figures(
     let lang = opt.lang;
     let pos = super::position_text(an, s, k, lang);
     let mut out = Vec::new();
-    if let Some(f) = forces::figure(an, s, k, opt, panels) {
+    if let Some(f) = forces::figure(an, s, opt, panels) {
         out.push(Figure {
             id: "forces".into(),
             caption: vec![
@@ -158,10 +148,10 @@ fn figures(
             scales: vec![("mu_l", f.mu_l)],
         });
     }
-    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let w = lever::words(lang);
     for input in 0..an.mech.scene.input_count() {
-        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let draw = |l: &crate::kinetostatics::lever::Lever| {
             let mu_f = lever::force_scale(l);
             let mut c = Canvas::default();
@@ -173,7 +163,7 @@ fn figures(
         });
         let lower = lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, lever_box);
         let rebuild = |mu: f64| {
-            let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+            let l = lever_at(an, s, loads, input, Naming::Full, Some(mu)).ok()?;
             let c = draw(&l);
             Some((l, c))
         };
@@ -219,16 +209,6 @@ fn figures(
     Ok(out)
 }
 
-/// Whether the second sheet is drawn: the analysed position has force
-/// plans.
-pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
-    !solved.is_empty()
-        && solved[position(an, solved)]
-            .dynamics
-            .as_ref()
-            .is_some_and(|d| d.force_plans.is_some())
-}
-
 /// The second course sheet; `None` without force plans.
 pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
     if solved.is_empty() {
@@ -243,8 +223,8 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
     {
         return Ok(None);
     }
-    let size = course::size(opt);
-    let field = course::field_of(size);
+    let size = pack::size(opt);
+    let field = pack::field_of(size);
     let block = sheet::block(size);
     let (fw, fh) = (field.width(), field.height());
     // The boxes shrink together until the figures pack.
@@ -254,7 +234,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         let lever_box = (0.36 * fw * zoom, 0.45 * fh * zoom);
         let figs = figures(an, s, k, opt, (panels, lever_box))?;
         let sizes: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
-        if let Some(at) = course::pack(&sizes, field, block) {
+        if let Some(at) = pack::pack(&sizes, field, block) {
             placed = Some(figs.into_iter().zip(at).collect::<Vec<_>>());
             break;
         }
@@ -265,7 +245,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         ))
     })?;
     let mut page = Page::new(size);
-    course::place(&mut page, &placed);
+    pack::place(&mut page, &placed);
     let name = title(opt.lang);
     page.title_block(&super::title_block(an, opt, name, (2, 2)));
     Ok(Some(Sheet {

@@ -8,8 +8,9 @@
 
 use super::canvas::{Canvas, Class, MAIN};
 use crate::geom::perp;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use kurbo::Point;
 
 /// Half the barrel's width, mm.

@@ -9,9 +9,9 @@
 use super::canvas::{Canvas, Class, Label, SMALL};
 use super::table::{number, unit};
 use super::{DrawOptions, Sheet, page_svg};
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::studies::diagrams::{DENSE, Diagrams};
+use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
 /// The gap between two diagrams, mm.
@@ -58,39 +58,107 @@ fn symbol(an: &Analysis, d: &Diagrams) -> String {
 
 /// The three diagrams on one canvas, their scales under them.
 pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
-    let m = &an.mech;
     let mut c = Canvas::default();
-    let mm = unit("mm", lang);
-    let dx = d.h / d.mu_phi;
-    let n = d.n;
-    let l = dx * n as f64;
-    let x = |k: f64| k * dx;
-    // Vertical extents of the three curves (mm), for stacking.
-    let s_mm: Vec<f64> = d.s.iter().map(|v| v / d.mu_s).collect();
-    let ext = |v: &mut dyn Iterator<Item = f64>| {
-        v.fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)))
-    };
-    let es = ext(&mut s_mm
-        .iter()
-        .copied()
-        .chain(d.dense.iter().map(|p| p.0 / d.mu_s)));
-    let ev = ext(&mut d
-        .y1
-        .iter()
-        .copied()
-        .chain(d.dense.iter().map(|p| p.1 / d.mu_v)));
-    let ea = ext(&mut d
-        .y2
-        .iter()
-        .copied()
-        .chain(d.dense.iter().map(|p| p.2 / d.mu_a)));
-    let oy_s = 0.0;
-    let oy_v = oy_s + es.0 - GAP - ev.1;
-    let oy_a = oy_v + ev.0 - GAP - ea.1;
+    let st = Stack::new(an, d, lang);
     let sym = symbol(an, d);
-    let unit_ = unit(if d.slide { "m" } else { "rad" }, lang);
-    let _ = m;
-    let divisions = |c: &mut Canvas, oy: f64, pole: Option<(f64, &str)>, name: &str| {
+    // The ordinate axis, through all three diagrams.
+    c.seg(
+        Point::new(0.0, st.bottom),
+        Point::new(0.0, st.top),
+        Class::Thin,
+    );
+    c.arrow(Point::new(0.0, st.top), Vec2::new(0.0, 1.0));
+    // Displacement: the curve, its points 0, 1′, 2′ … and the chords.
+    st.divisions(&mut c, st.oy[0], None, &sym);
+    st.displacement(&mut c);
+    // Velocity analogue: P1's rays parallel to the chords, their ordinates
+    // carried to the midpoints, the curve through them.
+    st.divisions(&mut c, st.oy[1], Some((d.h1, "P1")), &format!("{sym}′"));
+    st.velocity(&mut c);
+    // Acceleration analogue from the velocity diagram's chords, with P2.
+    st.divisions(&mut c, st.oy[2], Some((d.h2, "P2")), &format!("{sym}″"));
+    st.acceleration(&mut c);
+    st.scales(&mut c, &sym);
+    c.place_pending();
+    c
+}
+
+/// The three diagrams stacked: the abscissa's division (mm) and length,
+/// the displacements in mm, each diagram's ordinate origin (displacement,
+/// velocity, acceleration) and the ordinate axis' ends.
+struct Stack<'a> {
+    an: &'a Analysis,
+    d: &'a Diagrams,
+    lang: Lang,
+    dx: f64,
+    l: f64,
+    s_mm: Vec<f64>,
+    oy: [f64; 3],
+    top: f64,
+    bottom: f64,
+}
+
+impl<'a> Stack<'a> {
+    fn new(an: &'a Analysis, d: &'a Diagrams, lang: Lang) -> Stack<'a> {
+        let dx = d.h / d.mu_phi;
+        let l = dx * d.n as f64;
+        // Vertical extents of the three curves (mm), for stacking.
+        let s_mm: Vec<f64> = d.s.iter().map(|v| v / d.mu_s).collect();
+        let ext = |v: &mut dyn Iterator<Item = f64>| {
+            v.fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)))
+        };
+        let es = ext(&mut s_mm
+            .iter()
+            .copied()
+            .chain(d.dense.iter().map(|p| p.0 / d.mu_s)));
+        let ev = ext(&mut d
+            .y1
+            .iter()
+            .copied()
+            .chain(d.dense.iter().map(|p| p.1 / d.mu_v)));
+        let ea = ext(&mut d
+            .y2
+            .iter()
+            .copied()
+            .chain(d.dense.iter().map(|p| p.2 / d.mu_a)));
+        let oy_s = 0.0;
+        let oy_v = oy_s + es.0 - GAP - ev.1;
+        let oy_a = oy_v + ev.0 - GAP - ea.1;
+        Stack {
+            an,
+            d,
+            lang,
+            dx,
+            l,
+            s_mm,
+            oy: [oy_s, oy_v, oy_a],
+            top: oy_s + es.1 + 8.0,
+            bottom: oy_a + ea.0 - 4.0,
+        }
+    }
+
+    /// The abscissa of division `k` (fractional between divisions), mm.
+    fn x(&self, k: f64) -> f64 {
+        k * self.dx
+    }
+
+    /// The analytic curve `f` (mm) of the dense samples over the abscissa
+    /// at ordinate origin `oy`.
+    fn dense_pts(&self, f: &dyn Fn(&(f64, f64, f64)) -> f64, oy: f64) -> Vec<Point> {
+        self.d
+            .dense
+            .iter()
+            .enumerate()
+            .map(|(j, p)| Point::new(self.x(j as f64 / DENSE as f64), oy + f(p)))
+            .collect()
+    }
+
+    /// A diagram's abscissa at `oy` with its divisions numbered, its name
+    /// and, for an analogue, its pole `pole` (distance H, name) left of
+    /// the origin.
+    fn divisions(&self, c: &mut Canvas, oy: f64, pole: Option<(f64, &str)>, name: &str) {
+        let (an, d, lang, l) = (self.an, self.d, self.lang, self.l);
+        let n = d.n;
         let left = pole.map(|(h, _)| -h).unwrap_or(0.0) - 4.0;
         c.seg(Point::new(left, oy), Point::new(l + 8.0, oy), Class::Thin);
         c.arrow(Point::new(l + 8.0, oy), Vec2::new(1.0, 0.0));
@@ -103,7 +171,7 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
         );
         let step = n.div_ceil(12);
         for k in 0..=n {
-            let p = Point::new(x(k as f64), oy);
+            let p = Point::new(self.x(k as f64), oy);
             c.seg(
                 p - Vec2::new(0.0, 1.0),
                 p + Vec2::new(0.0, 1.0),
@@ -127,6 +195,7 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
             let p = Point::new(-h, oy);
             c.dot(p, pname.to_string());
             c.label_later(p, Label::new("P", &pname[1..]), SMALL, None);
+            let mm = unit("mm", lang);
             c.label_later(
                 Point::new(-h / 2.0, oy),
                 Label::new("H", &pname[1..]).with_tail(format!(" = {} {mm}", number(h, lang))),
@@ -134,105 +203,110 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
                 None,
             );
         }
-    };
-    // The ordinate axis, through all three diagrams.
-    let top = oy_s + es.1 + 8.0;
-    let bottom = oy_a + ea.0 - 4.0;
-    c.seg(Point::new(0.0, bottom), Point::new(0.0, top), Class::Thin);
-    c.arrow(Point::new(0.0, top), Vec2::new(0.0, 1.0));
-    // Displacement: the curve, its points 0, 1′, 2′ … and the chords.
-    divisions(&mut c, oy_s, None, &sym);
-    let dense_pts = |f: &dyn Fn(&(f64, f64, f64)) -> f64, oy: f64| -> Vec<Point> {
-        d.dense
-            .iter()
-            .enumerate()
-            .map(|(j, p)| Point::new(x(j as f64 / DENSE as f64), oy + f(p)))
-            .collect()
-    };
-    let curve = |c: &mut Canvas, pts: &[Point], class: Class| {
-        for w in pts.windows(2) {
-            c.seg(w[0], w[1], class);
+    }
+
+    /// The displacement curve, its points and chords.
+    fn displacement(&self, c: &mut Canvas) {
+        let (d, oy_s) = (self.d, self.oy[0]);
+        curve(c, &self.dense_pts(&|p| p.0 / d.mu_s, oy_s), Class::Main);
+        for k in 0..d.n {
+            let (a, b) = (
+                Point::new(self.x(k as f64), oy_s + self.s_mm[k]),
+                Point::new(self.x(k as f64 + 1.0), oy_s + self.s_mm[k + 1]),
+            );
+            c.seg(a, b, Class::Thin);
+            c.dot(a, format!("s{k}"));
         }
-    };
-    curve(&mut c, &dense_pts(&|p| p.0 / d.mu_s, oy_s), Class::Main);
-    for k in 0..n {
-        let (a, b) = (
-            Point::new(x(k as f64), oy_s + s_mm[k]),
-            Point::new(x(k as f64 + 1.0), oy_s + s_mm[k + 1]),
-        );
-        c.seg(a, b, Class::Thin);
-        c.dot(a, format!("s{k}"));
     }
-    // Velocity analogue: P1's rays parallel to the chords, their ordinates
-    // carried to the midpoints, the curve through them.
-    divisions(&mut c, oy_v, Some((d.h1, "P1")), &format!("{sym}′"));
-    let mut graphical = Vec::new();
-    for (k, &y) in d.y1.iter().enumerate() {
-        let on_axis = Point::new(0.0, oy_v + y);
-        c.seg(Point::new(-d.h1, oy_v), on_axis, Class::Thin);
-        let at = Point::new(x(k as f64 + 0.5), oy_v + y);
-        c.seg(on_axis, at, Class::Thin);
-        c.dot(at, format!("v{k}"));
-        graphical.push(at);
-    }
-    curve(&mut c, &graphical, Class::Main);
-    curve(&mut c, &dense_pts(&|p| p.1 / d.mu_v, oy_v), Class::Thin);
-    // Acceleration analogue from the velocity diagram's chords, with P2.
-    divisions(&mut c, oy_a, Some((d.h2, "P2")), &format!("{sym}″"));
-    let mut graphical = Vec::new();
-    for (k, &y) in
-        d.y2.iter()
-            .enumerate()
-            .chain(std::iter::once((n, &d.y2[0])))
-    {
-        let on_axis = Point::new(0.0, oy_a + y);
-        if k < n {
-            c.seg(Point::new(-d.h2, oy_a), on_axis, Class::Thin);
+
+    /// The velocity analogue: P1's rays, the ordinates carried to the
+    /// interval midpoints, the curve through them, the analytic one thin.
+    fn velocity(&self, c: &mut Canvas) {
+        let (d, oy_v) = (self.d, self.oy[1]);
+        let mut graphical = Vec::new();
+        for (k, &y) in d.y1.iter().enumerate() {
+            let on_axis = Point::new(0.0, oy_v + y);
+            c.seg(Point::new(-d.h1, oy_v), on_axis, Class::Thin);
+            let at = Point::new(self.x(k as f64 + 0.5), oy_v + y);
+            c.seg(on_axis, at, Class::Thin);
+            c.dot(at, format!("v{k}"));
+            graphical.push(at);
         }
-        let at = Point::new(x(k as f64), oy_a + y);
-        c.seg(on_axis, at, Class::Thin);
-        c.dot(at, format!("a{k}"));
-        graphical.push(at);
+        curve(c, &graphical, Class::Main);
+        curve(c, &self.dense_pts(&|p| p.1 / d.mu_v, oy_v), Class::Thin);
     }
-    curve(&mut c, &graphical, Class::Main);
-    curve(&mut c, &dense_pts(&|p| p.2 / d.mu_a, oy_a), Class::Thin);
-    // The scales, as the lecture writes them.
-    let (x, per, span) = if d.stroke {
-        let (a, b, _) = d.abscissa(an);
-        (a + &b, "m", number(d.h * n as f64, lang))
-    } else {
-        ("φ".to_string(), "rad", "2π".to_string())
-    };
-    let lines = [
-        format!(
-            "μ_{sym} = {} {unit_}/{mm},  μ_{x} = {span}/{} = {} {}/{mm}",
-            number(d.mu_s, lang),
-            number(l, lang),
-            number(d.mu_phi, lang),
-            unit(per, lang)
-        ),
-        format!(
-            "μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {} ({unit_}/{})/{mm}",
-            number(d.mu_v, lang),
-            unit(per, lang)
-        ),
-        format!(
-            "μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {} ({unit_}/{}²)/{mm}",
-            number(d.mu_a, lang),
-            unit(per, lang)
-        ),
-    ];
-    for (i, t) in lines.iter().enumerate() {
-        c.rich(
-            Point::new(0.0, bottom - 8.0 - 5.0 * i as f64),
-            t,
-            SMALL,
-            "",
-            "start",
-        );
+
+    /// The acceleration analogue: P2's rays, the ordinates carried to the
+    /// nodes, the curve through them, the analytic one thin.
+    fn acceleration(&self, c: &mut Canvas) {
+        let (d, oy_a, n) = (self.d, self.oy[2], self.d.n);
+        let mut graphical = Vec::new();
+        for (k, &y) in
+            d.y2.iter()
+                .enumerate()
+                .chain(std::iter::once((n, &d.y2[0])))
+        {
+            let on_axis = Point::new(0.0, oy_a + y);
+            if k < n {
+                c.seg(Point::new(-d.h2, oy_a), on_axis, Class::Thin);
+            }
+            let at = Point::new(self.x(k as f64), oy_a + y);
+            c.seg(on_axis, at, Class::Thin);
+            c.dot(at, format!("a{k}"));
+            graphical.push(at);
+        }
+        curve(c, &graphical, Class::Main);
+        curve(c, &self.dense_pts(&|p| p.2 / d.mu_a, oy_a), Class::Thin);
     }
-    c.place_pending();
-    c
+
+    /// The scales under the diagrams, as the lecture writes them.
+    fn scales(&self, c: &mut Canvas, sym: &str) {
+        let (an, d, lang, l) = (self.an, self.d, self.lang, self.l);
+        let n = d.n;
+        let mm = unit("mm", lang);
+        let unit_ = unit(if d.slide { "m" } else { "rad" }, lang);
+        let (x, per, span) = if d.stroke {
+            let (a, b, _) = d.abscissa(an);
+            (a + &b, "m", number(d.h * n as f64, lang))
+        } else {
+            ("φ".to_string(), "rad", "2π".to_string())
+        };
+        let lines = [
+            format!(
+                "μ_{sym} = {} {unit_}/{mm},  μ_{x} = {span}/{} = {} {}/{mm}",
+                number(d.mu_s, lang),
+                number(l, lang),
+                number(d.mu_phi, lang),
+                unit(per, lang)
+            ),
+            format!(
+                "μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {} ({unit_}/{})/{mm}",
+                number(d.mu_v, lang),
+                unit(per, lang)
+            ),
+            format!(
+                "μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {} ({unit_}/{}²)/{mm}",
+                number(d.mu_a, lang),
+                unit(per, lang)
+            ),
+        ];
+        for (i, t) in lines.iter().enumerate() {
+            c.rich(
+                Point::new(0.0, self.bottom - 8.0 - 5.0 * i as f64),
+                t,
+                SMALL,
+                "",
+                "start",
+            );
+        }
+    }
+}
+
+/// A polyline through `pts`, segment by segment.
+fn curve(c: &mut Canvas, pts: &[Point], class: Class) {
+    for w in pts.windows(2) {
+        c.seg(w[0], w[1], class);
+    }
 }
 
 /// The diagrams sheet a scene asks for (`want.drawings` has "diagrams"):

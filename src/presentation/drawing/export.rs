@@ -1,111 +1,24 @@
-//! Sheets out of the program: SVG as it is, PNG (resvg), PDF (svg2pdf) one
-//! file per sheet and one book of every sheet, and the manifest
-//! (`sheets.json`) that says which files a run wrote, so that the next
-//! run into the same folder can remove the sheets of its own it no longer
-//! draws.
+//! Sheets as bytes: SVG as it is, PNG (resvg), PDF (svg2pdf) one file per
+//! sheet and one book of every sheet, and the manifest (`sheets.json`)
+//! that says which files a run wrote, so that the next run into the same
+//! folder can remove the sheets of its own it no longer draws. Writing
+//! them is the front door's (`crate::study`).
 
 use super::{Format, Sheet};
-use crate::error::{Error, Result};
-use std::path::{Path, PathBuf};
+#[cfg(feature = "render")]
+pub use render::{pdf, pdf_book, png, tree};
+#[cfg(not(feature = "render"))]
+pub use unrendered::{pdf, pdf_book, png};
+use std::path::PathBuf;
 
 /// The manifest's file name.
 pub const MANIFEST: &str = "sheets.json";
 /// The PDF book's file name (`--format pdf`).
 pub const BOOK: &str = "sheets.pdf";
 
-/// A font database with the system's fonts (DejaVu on the project's machines).
-fn options() -> usvg::Options<'static> {
-    let mut o = usvg::Options::default();
-    o.fontdb_mut().load_system_fonts();
-    o.font_family = "DejaVu Sans".into();
-    o
-}
-
-/// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
-pub fn tree(svg: &str) -> Result<usvg::Tree> {
-    usvg::Tree::from_str(svg, &options())
-        .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
-}
-
-/// Render a sheet to PNG at `dpi`.
-pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    let size = tree.size();
-    // usvg sizes the sheet in CSS pixels (96 per inch).
-    let k = (dpi / 96.0) as f32;
-    let (pw, ph) = (
-        (size.width() * k).ceil() as u32,
-        (size.height() * k).ceil() as u32,
-    );
-    let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
-        .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
-    resvg::render(
-        &tree,
-        tiny_skia::Transform::from_scale(k, k),
-        &mut pixmap.as_mut(),
-    );
-    pixmap
-        .encode_png()
-        .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
-}
-
-/// Convert a sheet to PDF.
-pub fn pdf(svg: &str) -> Result<Vec<u8>> {
-    let tree = tree(svg)?;
-    svg2pdf::to_pdf(
-        &tree,
-        svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions::default(),
-    )
-    .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
-}
-
-/// Every sheet as a page of one PDF, each page the size of its sheet:
-/// each sheet becomes a form XObject (svg2pdf) drawn over its page.
-pub fn pdf_book(sheets: &[Sheet]) -> Result<Vec<u8>> {
-    use pdf_writer::{Content, Finish, Name, Pdf, Rect, Ref};
-    let mut alloc = Ref::new(1);
-    let catalog = alloc.bump();
-    let tree_id = alloc.bump();
-    let mut pdf = Pdf::new();
-    let mut pages = Vec::new();
-    let mut chunks = Vec::new();
-    for s in sheets {
-        let t = tree(&s.svg)?;
-        // CSS pixels (96 per inch) to points (72 per inch).
-        let (w, h) = (t.size().width() * 0.75, t.size().height() * 0.75);
-        let (chunk, id) = svg2pdf::to_chunk(&t, svg2pdf::ConversionOptions::default())
-            .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))?;
-        let mut map = std::collections::HashMap::new();
-        let chunk = chunk.renumber(|old| *map.entry(old).or_insert_with(|| alloc.bump()));
-        let svg_id = map[&id];
-        let (page, content) = (alloc.bump(), alloc.bump());
-        let mut c = Content::new();
-        c.transform([w, 0.0, 0.0, h, 0.0, 0.0]);
-        c.x_object(Name(b"S1"));
-        pdf.stream(content, &c.finish());
-        let mut p = pdf.page(page);
-        p.media_box(Rect::new(0.0, 0.0, w, h));
-        p.parent(tree_id);
-        p.contents(content);
-        p.resources().x_objects().pair(Name(b"S1"), svg_id);
-        p.finish();
-        pages.push(page);
-        chunks.push(chunk);
-    }
-    pdf.catalog(catalog).pages(tree_id);
-    pdf.pages(tree_id)
-        .kids(pages.iter().copied())
-        .count(pages.len() as i32);
-    for c in &chunks {
-        pdf.extend(c);
-    }
-    Ok(pdf.finish())
-}
-
 /// The manifest of a run: every file written, each sheet's title and
 /// scales.
-fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
+pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
     let name = |p: &PathBuf| {
         p.file_name()
             .map(|n| n.to_string_lossy().into_owned())
@@ -135,128 +48,128 @@ fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
 }
 
-/// The files an earlier run listed in `dir`'s manifest.
-fn listed(dir: &Path) -> Vec<String> {
-    let Ok(text) = std::fs::read_to_string(dir.join(MANIFEST)) else {
-        return Vec::new();
-    };
-    let Ok(v) = serde_json::from_str::<serde_json::Value>(&text) else {
-        return Vec::new();
-    };
-    let mut out: Vec<String> = v["sheets"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter_map(|s| s["file"].as_str().map(str::to_string))
-        .collect();
-    if let Some(b) = v["book"].as_str() {
-        out.push(b.to_string());
-    }
-    // Only plain file names in the folder itself: a manifest is no
-    // licence to remove anything elsewhere.
-    out.retain(|f| !f.is_empty() && !f.contains(['/', '\\']) && f != ".." && f != ".");
-    out
-}
+/// Rendering with resvg and svg2pdf (the `render` feature).
+#[cfg(feature = "render")]
+mod render {
+    use super::Sheet;
+    use crate::error::{Error, Result};
 
-/// Write every sheet into `dir` in `format` (with the PDF book of them
-/// all for PDF) and the manifest, all or nothing: every file is rendered,
-/// then written to a temporary beside its place, and only when all are
-/// written are they renamed into place; a failure removes every temporary
-/// of this run ([`crate::output::write_files_atomically`]). Then the
-/// sheets an earlier run listed in the manifest and this one did not
-/// write are removed, each named in a note. Returns the paths written.
-pub fn write_sheets(
-    sheets: &[Sheet],
-    dir: &Path,
-    format: Format,
-    dpi: f64,
-) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    let before = listed(dir);
-    // Render everything first, so that a failure writes nothing.
-    let mut files = Vec::new();
-    for s in sheets {
-        let (ext, bytes) = match format {
-            Format::Svg => ("svg", s.svg.clone().into_bytes()),
-            Format::Png => ("png", png(&s.svg, dpi)?),
-            Format::Pdf => ("pdf", pdf(&s.svg)?),
-        };
-        files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
+    /// A font database with the system's fonts (DejaVu on the project's machines).
+    fn options() -> usvg::Options<'static> {
+        let mut o = usvg::Options::default();
+        o.fontdb_mut().load_system_fonts();
+        o.font_family = "DejaVu Sans".into();
+        o
     }
-    let paths: Vec<PathBuf> = files.iter().map(|(p, _)| p.clone()).collect();
-    if format == Format::Pdf && sheets.len() > 1 {
-        files.push((dir.join(BOOK), pdf_book(sheets)?));
+
+    /// Parse a sheet's SVG with usvg (for PNG, PDF and the rendered checks).
+    pub fn tree(svg: &str) -> Result<usvg::Tree> {
+        usvg::Tree::from_str(svg, &options())
+            .map_err(|e| Error::Internal(format!("the drawing is not valid SVG: {e}")))
     }
-    files.push((
-        dir.join(MANIFEST),
-        manifest(sheets, &paths, format).into_bytes(),
-    ));
-    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
-    crate::output::write_files_atomically(&refs)?;
-    let written: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
-    let removed: Vec<String> = before
-        .into_iter()
-        .map(|old| dir.join(old))
-        .filter(|p| !written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
-        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-        .collect();
-    if !removed.is_empty() {
-        crate::output::note(&format!(
-            "removed {} sheet file(s) of an earlier run in {} that this run does not draw: {}",
-            removed.len(),
-            dir.display(),
-            abbreviate(&removed)
-        ));
+
+    /// Render a sheet to PNG at `dpi`.
+    pub fn png(svg: &str, dpi: f64) -> Result<Vec<u8>> {
+        let tree = tree(svg)?;
+        let size = tree.size();
+        // usvg sizes the sheet in CSS pixels (96 per inch).
+        let k = (dpi / 96.0) as f32;
+        let (pw, ph) = (
+            (size.width() * k).ceil() as u32,
+            (size.height() * k).ceil() as u32,
+        );
+        let mut pixmap = tiny_skia::Pixmap::new(pw, ph)
+            .ok_or_else(|| Error::structure("the sheet is too large to render"))?;
+        resvg::render(
+            &tree,
+            tiny_skia::Transform::from_scale(k, k),
+            &mut pixmap.as_mut(),
+        );
+        pixmap
+            .encode_png()
+            .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
     }
-    // Sheets by the names this program gives, neither written now nor
-    // listed by a manifest (an older version's): said, left alone.
-    if let Ok(entries) = std::fs::read_dir(dir) {
-        let mut stale: Vec<String> = entries
-            .filter_map(|e| e.ok())
-            .map(|e| e.path())
-            .filter(|p| p.is_file() && !written.contains(p) && looks_like_a_sheet(p))
-            .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-            .collect();
-        stale.sort();
-        if !stale.is_empty() {
-            crate::output::note(&format!(
-                "{} sheet file(s) in {} are not from this run (no manifest lists them; left as they are): {}",
-                stale.len(),
-                dir.display(),
-                abbreviate(&stale)
-            ));
+
+    /// Convert a sheet to PDF.
+    pub fn pdf(svg: &str) -> Result<Vec<u8>> {
+        let tree = tree(svg)?;
+        svg2pdf::to_pdf(
+            &tree,
+            svg2pdf::ConversionOptions::default(),
+            svg2pdf::PageOptions::default(),
+        )
+        .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
+    }
+
+    /// Every sheet as a page of one PDF, each page the size of its sheet:
+    /// each sheet becomes a form XObject (svg2pdf) drawn over its page.
+    pub fn pdf_book(sheets: &[Sheet]) -> Result<Vec<u8>> {
+        use pdf_writer::{Content, Finish, Name, Pdf, Rect, Ref};
+        let mut alloc = Ref::new(1);
+        let catalog = alloc.bump();
+        let tree_id = alloc.bump();
+        let mut pdf = Pdf::new();
+        let mut pages = Vec::new();
+        let mut chunks = Vec::new();
+        for s in sheets {
+            let t = tree(&s.svg)?;
+            // CSS pixels (96 per inch) to points (72 per inch).
+            let (w, h) = (t.size().width() * 0.75, t.size().height() * 0.75);
+            let (chunk, id) = svg2pdf::to_chunk(&t, svg2pdf::ConversionOptions::default())
+                .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))?;
+            let mut map = std::collections::HashMap::new();
+            let chunk = chunk.renumber(|old| *map.entry(old).or_insert_with(|| alloc.bump()));
+            let svg_id = map[&id];
+            let (page, content) = (alloc.bump(), alloc.bump());
+            let mut c = Content::new();
+            c.transform([w, 0.0, 0.0, h, 0.0, 0.0]);
+            c.x_object(Name(b"S1"));
+            pdf.stream(content, &c.finish());
+            let mut p = pdf.page(page);
+            p.media_box(Rect::new(0.0, 0.0, w, h));
+            p.parent(tree_id);
+            p.contents(content);
+            p.resources().x_objects().pair(Name(b"S1"), svg_id);
+            p.finish();
+            pages.push(page);
+            chunks.push(chunk);
         }
-    }
-    Ok(written)
-}
-
-/// The first names of a list and how many more.
-fn abbreviate(names: &[String]) -> String {
-    if names.len() <= 6 {
-        names.join(", ")
-    } else {
-        format!("{} and {} more", names[..5].join(", "), names.len() - 5)
+        pdf.catalog(catalog).pages(tree_id);
+        pdf.pages(tree_id)
+            .kids(pages.iter().copied())
+            .count(pages.len() as i32);
+        for c in &chunks {
+            pdf.extend(c);
+        }
+        Ok(pdf.finish())
     }
 }
 
-/// Whether a file is named as this program names its sheets.
-fn looks_like_a_sheet(p: &Path) -> bool {
-    let (Some(stem), Some(ext)) = (
-        p.file_stem().and_then(|s| s.to_str()),
-        p.extension().and_then(|s| s.to_str()),
-    ) else {
-        return false;
-    };
-    if !matches!(ext, "svg" | "png" | "pdf") {
-        return false;
+/// Without the `render` feature, PNG and PDF are refused by name.
+#[cfg(not(feature = "render"))]
+mod unrendered {
+    use super::Sheet;
+    use crate::error::{Error, Result};
+
+    fn refused(format: &str) -> Error {
+        Error::scene(
+            "format",
+            format!("{format} sheets need mechplan built with its `render` feature (on by default); this build writes SVG only"),
+        )
     }
-    let numbered = |prefix: &str| {
-        stem.strip_prefix(prefix)
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-    };
-    matches!(stem, "positions" | "diagrams" | "course" | "sheets")
-        || ["mechanism_", "velocity_", "acceleration_"]
-            .iter()
-            .any(|p| numbered(p))
+
+    /// Refused: PNG needs the `render` feature.
+    pub fn png(_svg: &str, _dpi: f64) -> Result<Vec<u8>> {
+        Err(refused("PNG"))
+    }
+
+    /// Refused: PDF needs the `render` feature.
+    pub fn pdf(_svg: &str) -> Result<Vec<u8>> {
+        Err(refused("PDF"))
+    }
+
+    /// Refused: PDF needs the `render` feature.
+    pub fn pdf_book(_sheets: &[Sheet]) -> Result<Vec<u8>> {
+        Err(refused("PDF"))
+    }
 }

@@ -9,11 +9,11 @@
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
-use crate::kinetostatics::force_plan::ForcePlan;
-use crate::kinetostatics::loads;
-use crate::presentation::force_notation as names;
+use crate::kinematics::solve::Analysis;
+use crate::kinetostatics::force_plan::{Force, ForcePlan};
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
+use crate::words::forces as names;
 use kurbo::{Point, Rect, Vec2};
 
 /// The gap between panels and between a free body and its polygon, mm.
@@ -150,12 +150,11 @@ impl Columns {
     }
 }
 
-/// The figure of position `s` (the `k`-th, from 0) on a field of
-/// `field` mm; `None` without force plans.
+/// The figure of position `s` on a field of `field` mm; `None` without
+/// force plans.
 pub fn figure(
     an: &Analysis,
     s: &Solved,
-    k: usize,
     opt: &DrawOptions,
     field: (f64, f64),
 ) -> Option<Figure> {
@@ -165,13 +164,13 @@ pub fn figure(
     if plans.is_empty() {
         return None;
     }
-    let loads = loads::loads(an, s, k);
+    let loads = &d.loads;
     let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
     let scene = |i: usize| Scene {
         an,
         s,
         d,
-        loads: &loads,
+        loads,
         lang: opt.lang,
         tag: &tags[i],
     };
@@ -193,15 +192,53 @@ pub fn figure(
         .fold((0.0f64, 0.0f64), |a, r| {
             (a.0.max(r.width()), a.1.max(r.height()))
         });
-    // One column, or two: whichever draws the free bodies larger.
-    let bounds = |cs: &Vec<Canvas>| cs.iter().map(|c| c.bounds()).collect::<Vec<Rect>>();
+    let (layout, mu_l, cs) = best_layout(plans.len(), field, real, bodies)?;
+    let boxes = bounds(&cs);
+    let name = |f| names::force(&an.mech, loads, f, opt.lang);
+    let mut out = Canvas::default();
+    let mut mu_f = Vec::new();
+    for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {
+        let panel = layout.panel(i, &boxes);
+        let caption = caption(an, plan, opt.lang);
+        if let Some(mu) = draw_panel(
+            &mut out,
+            (plan, &tags[i]),
+            &name,
+            body,
+            panel,
+            caption,
+            opt.lang,
+        ) {
+            mu_f.push(mu);
+        }
+    }
+    Some(Figure {
+        canvas: out,
+        mu_l,
+        mu_f,
+    })
+}
+
+/// The drawings' boxes.
+fn bounds(cs: &[Canvas]) -> Vec<Rect> {
+    cs.iter().map(|c| c.bounds()).collect()
+}
+
+/// The layout of `count` panels on `field` that draws the free bodies
+/// largest (their real extent `real`, m; `bodies` draws them at a μ_l):
+/// one column or two, the free bodies taking half to 70 % of a column
+/// (standard μ_l are up to ×2 apart, so a little more room can halve
+/// μ_l); with its μ_l and the free bodies drawn.
+fn best_layout(
+    count: usize,
+    field: (f64, f64),
+    real: (f64, f64),
+    bodies: impl Fn(f64) -> Vec<Canvas>,
+) -> Option<(Columns, f64, Vec<Canvas>)> {
     let mut best: Option<(Columns, f64, Vec<Canvas>)> = None;
-    // One column or two, the free bodies taking half to 70 % of a
-    // column: the layout that draws them largest (standard μ_l are up to
-    // ×2 apart, so a little more room can halve μ_l).
     let layouts = [1, 2]
         .into_iter()
-        .filter(|&c| c <= plans.len())
+        .filter(|&c| c <= count)
         .flat_map(|cols| SHARES.map(|share| (cols, share)));
     for (cols, share) in layouts {
         let layout = Columns { cols, field, share };
@@ -237,63 +274,64 @@ pub fn figure(
             }
         }
     }
-    let (layout, mu_l, cs) = best?;
-    let boxes = bounds(&cs);
-    let name = |f| names::force(&an.mech, &loads, f, opt.lang);
-    let mut out = Canvas::default();
-    let mut mu_f = Vec::new();
-    for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {
-        let (corner, (bw, bh), (pw, ph)) = layout.panel(i, &boxes);
-        let top = corner.y - CAPTION;
-        // The polygon at the largest standard μ_F that fills its box.
-        let (lo, hi) = plan
-            .points
-            .iter()
-            .fold((Vec2::ZERO, Vec2::ZERO), |(lo, hi), p| {
-                (
-                    Vec2::new(lo.x.min(p.x), lo.y.min(p.y)),
-                    Vec2::new(hi.x.max(p.x), hi.y.max(p.y)),
-                )
-            });
-        let lower = lower_scale((hi.x - lo.x) * plan.mu, (hi.y - lo.y) * plan.mu, (pw, ph));
-        let polygon = |mu: f64| {
-            let mut c = Canvas::default();
-            force_polygon::draw(plan, &name, &mut c, plan.mu / mu, &tags[i]);
-            Some(c)
-        };
-        let Some((mu, poly)) = fill(lower, (pw, ph), polygon, |c| c.bounds()) else {
-            continue;
-        };
-        mu_f.push(mu);
-        out.text(
-            Point::new(corner.x, corner.y - FONT),
-            Label::new(caption(an, plan, opt.lang), ""),
-            FONT,
-            "caption",
-        );
-        let centre_in = |c: &Canvas, r: Rect| {
-            let b = c.bounds();
-            r.center() - b.center()
-        };
-        let d = centre_in(body, Rect::new(corner.x, top - bh, corner.x + bw, top));
-        out.append(body, d.x, d.y);
-        let px = corner.x + bw + GAP;
-        let d = centre_in(&poly, Rect::new(px, top - ph, px + pw, top));
-        out.append(&poly, d.x, d.y);
-        // μ_F under the polygon, with an id the checks read it by.
-        let scale = scale_label(mu, opt.lang);
-        let b = poly.bounds();
-        out.prims.push(Prim::Text {
-            at: Point::new(b.x0 + d.x, b.y0 + d.y - SCALE_LINE + 1.5),
-            label: scale,
-            size: FONT,
-            id: Some(format!("{}-mu", tags[i])),
-            class: "scale",
+    best
+}
+
+/// Draw one panel into `out`: the `caption`, the free body `body` in its
+/// box and the polygon of `plan` (ids tagged `tag`) at the largest
+/// standard μ_F that fills its box, with μ_F under it; returns that μ_F
+/// (`None`, and no panel, when no scale fits).
+fn draw_panel(
+    out: &mut Canvas,
+    (plan, tag): (&ForcePlan, &str),
+    name: &dyn Fn(Force) -> Option<Label>,
+    body: &Canvas,
+    (corner, (bw, bh), (pw, ph)): (Point, (f64, f64), (f64, f64)),
+    caption: String,
+    lang: Lang,
+) -> Option<f64> {
+    let top = corner.y - CAPTION;
+    // The polygon at the largest standard μ_F that fills its box.
+    let (lo, hi) = plan
+        .points
+        .iter()
+        .fold((Vec2::ZERO, Vec2::ZERO), |(lo, hi), p| {
+            (
+                Vec2::new(lo.x.min(p.x), lo.y.min(p.y)),
+                Vec2::new(hi.x.max(p.x), hi.y.max(p.y)),
+            )
         });
-    }
-    Some(Figure {
-        canvas: out,
-        mu_l,
-        mu_f,
-    })
+    let lower = lower_scale((hi.x - lo.x) * plan.mu, (hi.y - lo.y) * plan.mu, (pw, ph));
+    let polygon = |mu: f64| {
+        let mut c = Canvas::default();
+        force_polygon::draw(plan, name, &mut c, plan.mu / mu, tag);
+        Some(c)
+    };
+    let (mu, poly) = fill(lower, (pw, ph), polygon, |c| c.bounds())?;
+    out.text(
+        Point::new(corner.x, corner.y - FONT),
+        Label::new(caption, ""),
+        FONT,
+        "caption",
+    );
+    let centre_in = |c: &Canvas, r: Rect| {
+        let b = c.bounds();
+        r.center() - b.center()
+    };
+    let d = centre_in(body, Rect::new(corner.x, top - bh, corner.x + bw, top));
+    out.append(body, d.x, d.y);
+    let px = corner.x + bw + GAP;
+    let d = centre_in(&poly, Rect::new(px, top - ph, px + pw, top));
+    out.append(&poly, d.x, d.y);
+    // μ_F under the polygon, with an id the checks read it by.
+    let scale = scale_label(mu, lang);
+    let b = poly.bounds();
+    out.prims.push(Prim::Text {
+        at: Point::new(b.x0 + d.x, b.y0 + d.y - SCALE_LINE + 1.5),
+        label: scale,
+        size: FONT,
+        id: Some(format!("{tag}-mu")),
+        class: "scale",
+    });
+    Some(mu)
 }

@@ -12,14 +12,15 @@
 use super::canvas::{Canvas, Class, FONT, Label, Line, MAIN, SMALL};
 use super::{cylinder, mechanism};
 use crate::geom::perp;
-use crate::kinematics::construction::text::Lang;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep, Part};
 use crate::kinetostatics::newton_euler::guide_frame;
 use crate::kinetostatics::{Dynamics, Load};
 use crate::model::scene::InputSpec;
 use crate::model::structure::Joint;
-use crate::presentation::force_notation as names;
+use crate::pipeline::Solved;
+use crate::words::construction::Lang;
+use crate::words::forces as names;
 use kurbo::{Point, Vec2};
 use std::f64::consts::PI;
 
@@ -82,27 +83,58 @@ pub fn extent(sc: &Scene, plan: &ForcePlan) -> kurbo::Rect {
 
 /// Draw the free body of `plan` at `mu_l` (m/mm), labels placed.
 pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
-    let (an, s) = (sc.an, sc.s);
-    let m = &an.mech;
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    let ours = |l: usize| plan.links.contains(&l);
-    let joint = |p: usize| m.links_of_point(p).len() >= 2;
-    let is_mass = |p: usize| !joint(p) && m.point_name(p).starts_with('S');
-    // The links' lines (and their directions from each point, which the
-    // couples' arcs keep clear of).
+    let lines = links(sc, plan, c, &to);
+    prismatics(sc, plan, c, mu_l, &to);
+    points(sc, plan, c, &to);
+    let arrows = arrows(sc, plan, &to);
+    let size = extent(sc, plan);
+    let longest =
+        (ARROW_SHARE * size.width().hypot(size.height()) / mu_l).clamp(LONGEST.0, LONGEST.1);
+    draw_arrows(c, &arrows, longest, sc.tag);
+    let mut busy = lines;
+    busy.extend(arrows.iter().map(|a| (a.at, a.at + a.f)));
+    for (i, (centre, value, label)) in couples(sc, plan, &to).into_iter().enumerate() {
+        couple(
+            c,
+            centre,
+            value,
+            label,
+            &busy,
+            format!("{}-couple-{i}", sc.tag),
+        );
+    }
+    c.place_pending();
+}
+
+/// Whether point `p` is a pair of two links or more.
+fn joint(sc: &Scene, p: usize) -> bool {
+    sc.an.mech.links_of_point(p).len() >= 2
+}
+
+/// Whether point `p` is a centre of mass: a point of one link named S….
+fn is_mass(sc: &Scene, p: usize) -> bool {
+    !joint(sc, p) && sc.an.mech.point_name(p).starts_with('S')
+}
+
+/// Draw the links of `plan` as the plan of the mechanism does, with their
+/// numbers; returns their lines (the couples' arcs keep clear of them).
+fn links(
+    sc: &Scene,
+    plan: &ForcePlan,
+    c: &mut Canvas,
+    to: &dyn Fn(Point) -> Point,
+) -> Vec<(Point, Point)> {
+    let (m, s) = (&sc.an.mech, sc.s);
     let mut lines: Vec<(Point, Point)> = Vec::new();
     for &l in &plan.links {
         let xy: Vec<Point> = m.links[l]
             .points
             .iter()
-            .filter(|&&p| !is_mass(p))
+            .filter(|&&p| !is_mass(sc, p))
             .map(|&p| to(s.config.point(m, l, p)))
             .collect();
-        if xy.len() >= 3 {
-            c.poly(xy.clone(), "#d9d9d9", MAIN);
-        } else if xy.len() == 2 {
-            c.seg(xy[0], xy[1], Class::Main);
-        }
+        mechanism::link_body(c, &xy);
         for i in 0..xy.len() {
             for j in i + 1..xy.len() {
                 lines.push((xy[i], xy[j]));
@@ -110,9 +142,8 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
         }
         for &p in &m.links[l].points {
             let q = to(s.config.point(m, l, p));
-            let on = xy.len() == 2
-                && (xy[1] - xy[0]).cross(q - xy[0]).abs() <= 1e-6 * (xy[1] - xy[0]).hypot2();
-            if is_mass(p) && xy.len() == 2 && !on {
+            let on = xy.len() == 2 && mechanism::on_body(&xy, q);
+            if is_mass(sc, p) && xy.len() == 2 && !on {
                 c.seg(xy[0], q, Class::Main);
                 lines.push((xy[0], q));
             }
@@ -129,11 +160,23 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
             Some(format!("{}-link-{}", sc.tag, m.link_id(l))),
         );
     }
-    // Prismatic pairs at the group: the slot of a guide link in it, the
-    // axis of a guide cut away, the slider's block; a cylinder inside the
-    // group by its symbol.
+    lines
+}
+
+/// Prismatic pairs at the group: the slot of a guide link in it, the axis
+/// of a guide cut away, the slider's block; a cylinder inside the group by
+/// its symbol.
+fn prismatics(
+    sc: &Scene,
+    plan: &ForcePlan,
+    c: &mut Canvas,
+    mu_l: f64,
+    to: &dyn Fn(Point) -> Point,
+) {
+    let (an, s) = (sc.an, sc.s);
+    let ours = |l: usize| plan.links.contains(&l);
     let cylinders = cylinder::pairs(an);
-    for (k, pr) in m.prismatics.iter().enumerate() {
+    for (k, pr) in an.mech.prismatics.iter().enumerate() {
         let (slider, guide) = (ours(pr.slider), ours(pr.guide));
         if !slider && !guide {
             continue;
@@ -152,21 +195,15 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
             c.path(vec![q - u * 14.0, q + u * 14.0], Line::DashDot);
         }
         if slider {
-            let n = perp(u);
             let (a, b) = BLOCK;
-            c.poly(
-                vec![
-                    q - u * a - n * b,
-                    q + u * a - n * b,
-                    q + u * a + n * b,
-                    q - u * a + n * b,
-                ],
-                "white",
-                MAIN,
-            );
+            c.poly(mechanism::block_corners(q, u, a, b).to_vec(), "white", MAIN);
         }
     }
-    // The points of the links: pairs, centres of mass, others.
+}
+
+/// The points of the links: pairs, centres of mass, others, named.
+fn points(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, to: &dyn Fn(Point) -> Point) {
+    let (m, s) = (&sc.an.mech, sc.s);
     let mut seen: Vec<usize> = Vec::new();
     for &l in &plan.links {
         for &p in &m.links[l].points {
@@ -175,31 +212,18 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
             }
             seen.push(p);
             let at = to(s.config.point(m, l, p));
-            if joint(p) {
-                c.circle(at, 1.2, "white", MAIN);
-            } else if is_mass(p) {
-                mechanism::centre_of_mass(c, at);
-            } else {
-                c.circle(at, 0.6, "black", 0.0);
-            }
+            mechanism::point_symbol(c, at, joint(sc, p), is_mass(sc, p));
             let name = m.point_name(p);
-            let split = name
-                .find(|ch: char| ch.is_ascii_digit() || ch == '_')
-                .unwrap_or(name.len());
-            c.label_later(
-                at,
-                Label::new(&name[..split], name[split..].trim_start_matches('_')),
-                FONT,
-                Some(format!("{}-point-{name}", sc.tag)),
-            );
+            mechanism::point_label(c, at, name, format!("{}-point-{name}", sc.tag));
         }
     }
-    let arrows = arrows(sc, plan, &to);
-    let size = extent(sc, plan);
-    let longest =
-        (ARROW_SHARE * size.width().hypot(size.height()) / mu_l).clamp(LONGEST.0, LONGEST.1);
-    draw_arrows(c, &arrows, longest, sc.tag);
-    // Couples: the loads' and the input's balancing moment.
+}
+
+/// The couples on the links of `plan`: the loads' and the input's
+/// balancing moment, each at its centre with its value and name.
+fn couples(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<(Point, f64, Label)> {
+    let (m, s) = (&sc.an.mech, sc.s);
+    let ours = |l: usize| plan.links.contains(&l);
     let mut couples: Vec<(Point, f64, Label)> = Vec::new();
     for l in sc.loads {
         if let Load::Couple { link, m: mc, .. } = *l
@@ -235,19 +259,7 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
             ));
         }
     }
-    let mut busy = lines;
-    busy.extend(arrows.iter().map(|a| (a.at, a.at + a.f)));
-    for (i, (centre, value, label)) in couples.into_iter().enumerate() {
-        couple(
-            c,
-            centre,
-            value,
-            label,
-            &busy,
-            format!("{}-couple-{i}", sc.tag),
-        );
-    }
-    c.place_pending();
+    couples
 }
 
 /// The centre of a link's points (where a couple on a link without a

@@ -194,19 +194,3 @@ pub fn sheets(count: usize, opt: &DrawOptions) -> Vec<Sheet> {
         })
         .collect()
 }
-
-/// Write the sheets of `count` segments per revolution into `dir`: the
-/// files written.
-pub fn write(
-    dir: &std::path::Path,
-    format: super::Format,
-    count: usize,
-) -> crate::Result<Vec<std::path::PathBuf>> {
-    if !(2..=10_000).contains(&count) {
-        return Err(crate::Error::scene(
-            "count",
-            "must be from 2 to 10000 segments",
-        ));
-    }
-    super::write_sheets(&sheets(count, &DrawOptions::default()), dir, format, 150.0)
-}

@@ -20,16 +20,16 @@
 
 use super::canvas::{Canvas, Prim, fmt, xml};
 use super::{mechanism, plan, scale_label, words};
-use crate::error::Result;
-use crate::kinematics::construction::text::{Lang, num, sentence};
+use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
+use crate::words::construction::{Lang, sentence};
 use kurbo::Point;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 /// Words of the page around the drawings.
 struct Ui {
@@ -105,7 +105,7 @@ fn ui(l: Lang) -> Ui {
 /// dropped (with a combining underline right after them); the rest of the
 /// text is kept, escaped.
 pub fn rich(s: &str) -> String {
-    use crate::presentation::notation::{Pos, runs};
+    use crate::words::notation::{Pos, runs};
     runs(s)
         .into_iter()
         .map(|(p, t)| match p {
@@ -364,7 +364,7 @@ fn label_versions(
 /// "φ1 = 235.8°" or "s = 0.1 m".
 fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::input_words(an, s);
+        return crate::words::inputs::input_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!("φ1 = {}°", num(s.q.to_degrees().rem_euclid(360.0))),
@@ -375,7 +375,7 @@ fn input_text(an: &Analysis, s: &Solved, l: Lang) -> String {
 /// The drive at a position: "ω1 = −10 rad/s, ε1 = 0 rad/s²".
 fn drive_text(an: &Analysis, s: &Solved, l: Lang) -> String {
     if an.mech.scene.several_inputs() {
-        return crate::presentation::report::drive_words(an, s);
+        return crate::words::inputs::drive_words(an, s);
     }
     match an.mech.scene.input {
         InputSpec::Crank { .. } => format!(
@@ -501,7 +501,34 @@ fn cell_html(c: &Cell) -> String {
 /// by step with their sentences in `lang`.
 pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
     let w = ui(lang);
-    let sheet_words = words(lang);
+    let mut h = page_head(an, solved, lang, &w);
+    let _ = write!(
+        h,
+        "<div class=\"board\" id=\"board\">\n<div class=\"where\"><span id=\"where\"></span><span id=\"counter\"></span></div>\n<div class=\"sentence\" id=\"sentence\" aria-live=\"polite\"></div>\n<div class=\"controls\"><button type=\"button\" id=\"first\" title=\"Home\">⇤ {}</button><button type=\"button\" id=\"prev\" title=\"←\">◀ {}</button><button type=\"button\" id=\"next\" class=\"primary\" title=\"→\">{} ▶</button><button type=\"button\" id=\"last\" title=\"End\">{} ⇥</button><span class=\"hint\">{}</span></div>\n</div>\n",
+        w.start, w.prev, w.next, w.all, w.keys
+    );
+    if solved.iter().all(|s| s.plans.is_none()) {
+        let _ = writeln!(h, "<p class=\"none\">{}</p>", w.no_plans);
+    }
+    h.push_str("<main>\n");
+    let mechs = mechanism_canvases(an, solved);
+    let frame = mechs
+        .iter()
+        .map(|c| c.bounds())
+        .reduce(|a, b| a.union(b))
+        .unwrap_or_default();
+    let frame = Fit::new(frame, 4.0);
+    for (k, s) in solved.iter().enumerate() {
+        position_section(&mut h, an, (k, s), lang, (&mechs[k], &frame));
+    }
+    h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
+    let _ = write!(h, "<script>\n{JS}</script>\n</body>\n</html>\n");
+    h
+}
+
+/// The page up to its board: the head (style, the errors' script), the
+/// title, the structure and a tab per position.
+fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &Ui) -> String {
     let m = &an.mech;
     let title = if m.scene.title.is_empty() {
         "mechplan".to_string()
@@ -549,102 +576,95 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
         );
     }
     h.push_str("</nav>\n</header>\n");
-    let _ = write!(
-        h,
-        "<div class=\"board\" id=\"board\">\n<div class=\"where\"><span id=\"where\"></span><span id=\"counter\"></span></div>\n<div class=\"sentence\" id=\"sentence\" aria-live=\"polite\"></div>\n<div class=\"controls\"><button type=\"button\" id=\"first\" title=\"Home\">⇤ {}</button><button type=\"button\" id=\"prev\" title=\"←\">◀ {}</button><button type=\"button\" id=\"next\" class=\"primary\" title=\"→\">{} ▶</button><button type=\"button\" id=\"last\" title=\"End\">{} ⇥</button><span class=\"hint\">{}</span></div>\n</div>\n",
-        w.start, w.prev, w.next, w.all, w.keys
-    );
-    if solved.iter().all(|s| s.plans.is_none()) {
-        let _ = writeln!(h, "<p class=\"none\">{}</p>", w.no_plans);
-    }
-    h.push_str("<main>\n");
-    let mechs = mechanism_canvases(an, solved);
-    let frame = mechs
-        .iter()
-        .map(|c| c.bounds())
-        .reduce(|a, b| a.union(b))
-        .unwrap_or_default();
-    let frame = Fit::new(frame, 4.0);
-    for (k, s) in solved.iter().enumerate() {
-        let pos = k + 1;
-        let heading = format!(
-            "{} {pos}: {}; {}",
-            w.position,
-            input_text(an, s, lang),
-            drive_text(an, s, lang)
-        );
-        let _ = writeln!(
-            h,
-            "<section class=\"position\" id=\"pos-{pos}\" data-pos=\"{pos}\">\n<h2>{}</h2>\n<div class=\"figs\">",
-            rich(&heading)
-        );
-        let mu_l = scale_label("l", an.mu_l, "m", lang);
-        let _ = write!(
-            h,
-            "<figure class=\"fig mech\"><figcaption><b>{}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}</div></figure>\n",
-            sheet_words.mechanism,
-            label_html(&mu_l),
-            mechanism_svg(
-                &mechs[k],
-                &frame,
-                &format!("p{pos}m-"),
-                sheet_words.mechanism
-            )
-        );
-        if let Some(plans) = &s.plans {
-            for (kind, title, plan) in [
-                ("v", sheet_words.velocities, Some(&plans.velocity)),
-                ("a", sheet_words.accelerations, plans.acceleration.as_ref()),
-            ] {
-                let Some(plan) = plan else { continue };
-                let (sym, u) = match plan.kind {
-                    PlanKind::Velocity => ("v", "m/s"),
-                    PlanKind::Acceleration => ("a", "m/s²"),
-                };
-                let scale = scale_label(sym, plan.mu, u, lang);
-                let _ = write!(
-                    h,
-                    "<figure class=\"fig plan\" id=\"pos-{pos}-{kind}\" data-pos=\"{pos}\" data-kind=\"{kind}\" data-steps=\"{}\" data-title=\"{}, {} {pos}\">\n<figcaption><b>{title}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}<p class=\"placeholder\">{}</p></div>\n",
-                    plan.steps.len(),
-                    xml(title),
-                    xml(&w.position.to_lowercase()),
-                    label_html(&scale),
-                    plan_svg(plan, an, &format!("p{pos}{kind}-"), title),
-                    w.after
-                );
-                let _ = writeln!(
-                    h,
-                    "<details class=\"steps\" open><summary>{}</summary><ol class=\"log\">",
-                    w.steps_title
-                );
-                for i in 0..plan.steps.len() {
-                    let _ = writeln!(
-                        h,
-                        "<li data-step=\"{}\">{}</li>",
-                        i + 1,
-                        rich(&sentence(plan, i, lang))
-                    );
-                }
-                h.push_str("</ol></details>\n</figure>\n");
-            }
-        }
-        h.push_str("</div>\n");
-        let _ = writeln!(h, "<h3>{}</h3>", w.results);
-        h.push_str(&tables(an, s, lang));
-        h.push_str("</section>\n");
-    }
-    h.push_str("</main>\n<pre id=\"selftest\" hidden></pre>\n");
-    let _ = write!(h, "<script>\n{JS}</script>\n</body>\n</html>\n");
     h
 }
 
-/// Write `dir/handout.html` (atomically); returns its path.
-pub fn write_handout(an: &Analysis, solved: &[Solved], lang: Lang, dir: &Path) -> Result<PathBuf> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::output::write_error(&dir.display().to_string(), e))?;
-    let path = dir.join("handout.html");
-    crate::write_atomically(&path, handout(an, solved, lang).as_bytes())?;
-    Ok(path)
+/// Position `k` (from 0) `s`: its heading, the plan of the mechanism (its
+/// canvas `mech` in the handout's `frame`), the plans step by step, the
+/// result tables.
+fn position_section(
+    h: &mut String,
+    an: &Analysis,
+    (k, s): (usize, &Solved),
+    lang: Lang,
+    (mech, frame): (&Canvas, &Fit),
+) {
+    let w = ui(lang);
+    let sheet_words = words(lang);
+    let pos = k + 1;
+    let heading = format!(
+        "{} {pos}: {}; {}",
+        w.position,
+        input_text(an, s, lang),
+        drive_text(an, s, lang)
+    );
+    let _ = writeln!(
+        h,
+        "<section class=\"position\" id=\"pos-{pos}\" data-pos=\"{pos}\">\n<h2>{}</h2>\n<div class=\"figs\">",
+        rich(&heading)
+    );
+    let mu_l = scale_label("l", an.mu_l, "m", lang);
+    let _ = write!(
+        h,
+        "<figure class=\"fig mech\"><figcaption><b>{}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}</div></figure>\n",
+        sheet_words.mechanism,
+        label_html(&mu_l),
+        mechanism_svg(mech, frame, &format!("p{pos}m-"), sheet_words.mechanism)
+    );
+    if let Some(plans) = &s.plans {
+        for (kind, title, plan) in [
+            ("v", sheet_words.velocities, Some(&plans.velocity)),
+            ("a", sheet_words.accelerations, plans.acceleration.as_ref()),
+        ] {
+            let Some(plan) = plan else { continue };
+            plan_figure(h, an, plan, (pos, kind, title), lang);
+        }
+    }
+    h.push_str("</div>\n");
+    let _ = writeln!(h, "<h3>{}</h3>", w.results);
+    h.push_str(&tables(an, s, lang));
+    h.push_str("</section>\n");
+}
+
+/// A plan of position `pos` (`kind` "v" or "a", its `title`) drawn step by
+/// step, with the list of its steps' sentences.
+fn plan_figure(
+    h: &mut String,
+    an: &Analysis,
+    plan: &Plan,
+    (pos, kind, title): (usize, &str, &str),
+    lang: Lang,
+) {
+    let w = ui(lang);
+    let (sym, u) = match plan.kind {
+        PlanKind::Velocity => ("v", "m/s"),
+        PlanKind::Acceleration => ("a", "m/s²"),
+    };
+    let scale = scale_label(sym, plan.mu, u, lang);
+    let _ = write!(
+        h,
+        "<figure class=\"fig plan\" id=\"pos-{pos}-{kind}\" data-pos=\"{pos}\" data-kind=\"{kind}\" data-steps=\"{}\" data-title=\"{}, {} {pos}\">\n<figcaption><b>{title}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}<p class=\"placeholder\">{}</p></div>\n",
+        plan.steps.len(),
+        xml(title),
+        xml(&w.position.to_lowercase()),
+        label_html(&scale),
+        plan_svg(plan, an, &format!("p{pos}{kind}-"), title),
+        w.after
+    );
+    let _ = writeln!(
+        h,
+        "<details class=\"steps\" open><summary>{}</summary><ol class=\"log\">",
+        w.steps_title
+    );
+    for i in 0..plan.steps.len() {
+        let _ = writeln!(
+            h,
+            "<li data-step=\"{}\">{}</li>",
+            i + 1,
+            rich(&sentence(plan, i, lang))
+        );
+    }
+    h.push_str("</ol></details>\n</figure>\n");
 }
 
 /// Errors of the page's script, collected for `#selftest` (in the head,

@@ -9,10 +9,10 @@
 use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
 use crate::kinematics::construction::scale::standard_scale;
-use crate::kinematics::construction::text::Lang;
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::lever::{Lever, LeverForce, Part};
 use crate::kinetostatics::{Balancing, Origin};
+use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
 /// The longest force arrow, as a share of the lever's extent: forces
@@ -39,31 +39,31 @@ pub(crate) struct LeverWords {
 }
 
 pub(crate) fn words(lang: Lang) -> LeverWords {
-    match lang {
-        Lang::En => LeverWords {
-            title: "Zhukovsky's lever",
-            balancing: "b",
-            turned: "the plan of velocities turned by 90° ↺ about the pole p",
-            heads: ["force", "F, N", "h, mm", "F·h, N·mm"],
-            input: "input",
-            along: "along the guide",
-        },
-        Lang::Uk => LeverWords {
-            title: "Важіль Жуковського",
-            balancing: "зр",
-            turned: "план швидкостей, повернутий на 90° ↺ навколо полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вхід",
-            along: "уздовж напрямної",
-        },
-        Lang::Ru => LeverWords {
-            title: "Рычаг Жуковского",
-            balancing: "ур",
-            turned: "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
-            heads: ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            input: "вход",
-            along: "вдоль направляющей",
-        },
+    let k = match lang {
+        Lang::En => 0,
+        Lang::Uk => 1,
+        Lang::Ru => 2,
+    };
+    // Each word in English, Ukrainian and Russian.
+    LeverWords {
+        title: [
+            "Zhukovsky's lever",
+            "Важіль Жуковського",
+            "Рычаг Жуковского",
+        ][k],
+        balancing: ["b", "зр", "ур"][k],
+        turned: [
+            "the plan of velocities turned by 90° ↺ about the pole p",
+            "план швидкостей, повернутий на 90° ↺ навколо полюса p",
+            "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
+        ][k],
+        heads: [
+            ["force", "F, N", "h, mm", "F·h, N·mm"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
+        ][k],
+        input: ["input", "вхід", "вход"][k],
+        along: ["along the guide", "уздовж напрямної", "вдоль направляющей"][k],
     }
 }
 
@@ -358,19 +358,19 @@ pub(crate) fn input_text(l: &Lever, lang: Lang) -> String {
 /// it fixes one for a single input).
 pub(super) fn pending(
     an: &Analysis,
-    s: &crate::kinematics::solve::Solved,
+    s: &crate::pipeline::Solved,
     k: usize,
     opt: &super::DrawOptions,
 ) -> crate::error::Result<Vec<super::Pending>> {
     use crate::kinematics::construction::Naming;
     use crate::kinetostatics::lever::lever_at;
-    let loads = crate::kinetostatics::loads::loads(an, s, k);
+    let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let pos = super::position_text(an, s, k, opt.lang);
     let w = words(opt.lang);
     let several = an.mech.scene.several_inputs();
     let mut out = Vec::new();
     for input in 0..an.mech.scene.input_count() {
-        let first = lever_at(an, s, &loads, input, Naming::Full, None)?;
+        let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let figure = |l: &Lever| {
             let mu_f = force_scale(l);
             let mut c = Canvas::default();
@@ -389,7 +389,7 @@ pub(super) fn pending(
             });
             let lower = super::lower_scale(e.width() * first.mu_v, e.height() * first.mu_v, field);
             let rebuild = |mu: f64| {
-                let l = lever_at(an, s, &loads, input, Naming::Full, Some(mu)).ok()?;
+                let l = lever_at(an, s, loads, input, Naming::Full, Some(mu)).ok()?;
                 let f = figure(&l);
                 Some((l, f))
             };

@@ -5,9 +5,12 @@
 //! centres of mass.
 
 use super::canvas::{Canvas, Class, FONT, Label, MAIN, SMALL, THIN};
+use super::wall::{BLOCK, Block, Wall, crossing_at, draw_wall};
 use crate::geom::perp;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use kurbo::{Point, Vec2};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
@@ -65,320 +68,410 @@ pub fn draw_over(
     mu_l: f64,
     with_labels: bool,
 ) {
-    let m = &an.mech;
-    let frame = m.frame();
-    let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    let place = |l: usize, p: usize| to(s.config.point(m, l, p));
-    let at_point = |p: usize| {
-        let l = m
-            .links_of_point(p)
-            .into_iter()
-            .find(|&l| an.link(l))
-            .unwrap_or(frame);
-        place(l, p)
-    };
-    let joints: Vec<bool> = (0..m.scene.points.len())
-        .map(|p| m.links_of_point(p).len() >= 2)
-        .collect();
-    let is_mass = |p: usize| !joints[p] && m.point_name(p).starts_with('S');
-    let shown: Vec<Point> = (0..m.scene.points.len())
-        .filter(|&p| m.links_of_point(p).iter().any(|&l| an.link(l)))
-        .map(at_point)
-        .collect();
-    let centre = Point::new(
-        shown.iter().map(|p| p.x).sum::<f64>() / shown.len().max(1) as f64,
-        shown.iter().map(|p| p.y).sum::<f64>() / shown.len().max(1) as f64,
-    );
+    let sc = Scheme::new(an, s, mu_l);
     // The slots of guides on moving links (a kulisa), under the links; a
     // hydraulic cylinder (a driving slider on a moving guide) is drawn by
     // its own symbol instead.
     let cylinders = super::cylinder::pairs(an);
-    let mut bodies: Vec<(Point, Point)> = Vec::new();
-    for (k, pr) in m.prismatics.iter().enumerate() {
-        if !an.link(pr.slider) || !an.link(pr.guide) || pr.guide == frame || cylinders.contains(&k)
-        {
-            continue;
-        }
-        let q = place(pr.slider, pr.point);
-        let u = s.config.pose(pr.guide).dir(pr.line_dir);
-        // A one-point link carrying a slot (a sliding yoke) is drawn as the
-        // slot itself, reaching its own point, so that the slot and the
-        // yoke read as one link.
-        let (mut lo, mut hi) = (-10.0f64, 10.0f64);
-        if m.links[pr.guide].points.len() == 1 {
-            let t = (place(pr.guide, m.links[pr.guide].points[0]) - q).dot(u);
-            lo = lo.min(t - 3.0);
-            hi = hi.max(t + 3.0);
-        }
-        c.seg(q + u * lo, q + u * hi, Class::Main);
-        bodies.push((q + u * lo, q + u * hi));
-    }
+    let mut bodies = sc.slots(c, &cylinders);
     // The links' lines, known before the fixed guides are hatched, so that
     // a guide's hatching goes to the side fewer of them cross.
-    for (l, link) in m.links.iter().enumerate() {
-        if l == frame || !an.link(l) {
-            continue;
-        }
-        let xy: Vec<Point> = link
-            .points
-            .iter()
-            .filter(|&&p| !is_mass(p))
-            .map(|&p| place(l, p))
-            .collect();
-        for i in 0..xy.len() {
-            for j in i + 1..xy.len() {
-                bodies.push((xy[i], xy[j]));
-            }
-        }
+    sc.link_lines(&mut bodies);
+    let blocks = sc.blocks(&cylinders);
+    let centre = sc.centre();
+    for wall in sc.walls(stroke) {
+        draw_wall(c, wall, &bodies, &blocks, centre);
     }
-    // Slider blocks: those on the frame's guides first; a block at the
-    // point of one already drawn (the two blocks of a PRP group, pinned
-    // together) nests inside it, smaller, instead of crossing it. Known
-    // before the walls are hatched, drawn over the links.
-    let mut order: Vec<&crate::model::mechanism::Prismatic> = m
-        .prismatics
-        .iter()
-        .enumerate()
-        .filter(|(k, pr)| an.link(pr.slider) && an.link(pr.guide) && !cylinders.contains(k))
-        .map(|(_, pr)| pr)
-        .collect();
-    order.sort_by_key(|pr| pr.guide != frame);
-    let mut blocks: Vec<(usize, Point, [Point; 4])> = Vec::new();
-    for pr in order {
-        let q = place(pr.slider, pr.point);
-        let u = s.config.pose(pr.guide).dir(pr.line_dir);
-        let n = perp(u);
-        let inner = blocks.iter().filter(|b| (b.1 - q).hypot() < 1e-6).count();
-        let k = 0.55f64.powi(inner as i32);
-        let (a, b) = (BLOCK.0 * k, BLOCK.1 * k);
-        let corners = [
-            q - u * a - n * b,
-            q + u * a - n * b,
-            q + u * a + n * b,
-            q - u * a + n * b,
-        ];
-        blocks.push((pr.slider, q, corners));
-    }
-    // The frame's guides: one line and one hatched wall for all the
-    // sliders on one line (two pistons in one cylinder share their wall).
-    let mut walls: Vec<Wall> = Vec::new();
-    for pr in &m.prismatics {
-        if !an.link(pr.slider) || pr.guide != frame {
-            continue;
-        }
-        let q = place(pr.slider, pr.point);
-        let u = s.config.pose(pr.guide).dir(pr.line_dir);
-        let i = match walls
-            .iter()
-            .position(|w| w.1.cross(u).abs() < 1e-9 && w.1.cross(q - w.0).abs() < 1e-6)
-        {
-            Some(i) => i,
-            None => {
-                walls.push((q, u, Vec::new()));
-                walls.len() - 1
-            }
-        };
-        walls[i].2.push((pr.slider, q));
-        for o in stroke {
-            let p = o.config.point(m, pr.slider, pr.point);
-            walls[i]
-                .2
-                .push((pr.slider, Point::new(p.x / mu_l, p.y / mu_l)));
-        }
-    }
-    for (o, u, on) in walls {
-        let ts = on.iter().map(|&(_, q)| (q - o).dot(u));
-        let (lo, hi) = ts.fold((f64::MAX, f64::MIN), |(a, b), t| (a.min(t), b.max(t)));
-        let (lo, hi) = (lo - GUIDE_HALF, hi + GUIDE_HALF);
-        c.seg(o + u * lo, o + u * hi, Class::Main);
-        // The wall beyond its own blocks, on the side fewer lines and
-        // other blocks cross; they pass the wall through gaps in it.
-        let n = perp(u);
-        let gaps = |side: f64| {
-            let (near, far) = (side * WALL, side * (WALL + HATCH));
-            let (b0, b1) = (o + u * lo + n * near, o + u * hi + n * near);
-            let mut gaps: Vec<(f64, f64)> = bodies
-                .iter()
-                .filter_map(|&(p, q)| {
-                    let t0 = crossing_at(p, q, b0, b1);
-                    let t1 = crossing_at(p, q, b0 + n * (far - near), b1 + n * (far - near));
-                    t0.or(t1).map(|t| lo + t * (hi - lo))
-                })
-                .map(|t| (t - 1.2, t + 1.2))
-                .collect();
-            for (l, _, b) in &blocks {
-                if on.iter().any(|&(sl, _)| sl == *l) {
-                    continue;
-                }
-                // Across the wall's band: the block's extent across and along.
-                let across = b.iter().map(|&p| (p - o).dot(n));
-                let (a0, a1) = across.fold((f64::MAX, f64::MIN), |(x, y), v| (x.min(v), y.max(v)));
-                if a1 < near.min(far) - 0.3 || a0 > near.max(far) + 0.3 {
-                    continue;
-                }
-                let along = b.iter().map(|&p| (p - o).dot(u));
-                let (t0, t1) = along.fold((f64::MAX, f64::MIN), |(x, y), v| (x.min(v), y.max(v)));
-                gaps.push((t0 - 0.6, t1 + 0.6));
-            }
-            gaps
-        };
-        let (above, below) = (gaps(1.0), gaps(-1.0));
-        let cut = |g: &[(f64, f64)]| g.iter().map(|g| g.1 - g.0).sum::<f64>();
-        let toward_centre = (centre - o).dot(n);
-        let side = if (cut(&above) - cut(&below)).abs() > 1e-9 {
-            if cut(&above) < cut(&below) { 1.0 } else { -1.0 }
-        } else if toward_centre > 0.0 {
-            -1.0
-        } else {
-            1.0
-        };
-        let gaps = if side > 0.0 { above } else { below };
-        let free = |t: f64| !gaps.iter().any(|g| (g.0..=g.1).contains(&t));
-        // The wall's line, in pieces between the gaps.
-        let at = |t: f64| o + u * t + n * side * WALL;
-        let steps = ((hi - lo) / 0.25).ceil() as usize;
-        let mut start: Option<f64> = None;
-        for k in 0..=steps {
-            let t = lo + (hi - lo) * k as f64 / steps as f64;
-            match (free(t), start) {
-                (true, None) => start = Some(t),
-                (false, Some(t0)) => {
-                    c.seg(at(t0), at(t - (hi - lo) / steps as f64), Class::Hatch);
-                    start = None;
-                }
-                _ => {}
-            }
-        }
-        if let Some(t0) = start {
-            c.seg(at(t0), at(hi), Class::Hatch);
-        }
-        let count = ((hi - lo) / 3.0).round().max(1.0) as usize;
-        for k in 0..=count {
-            let t = lo + (hi - lo) * k as f64 / count as f64;
-            // The stroke leans back along the wall: its foot must be free.
-            if !free(t) || !free(t - HATCH) {
-                continue;
-            }
-            let p = at(t);
-            c.seg(p, p + (n * side - u) * HATCH, Class::Hatch);
-        }
-    }
-    // Links.
-    for (l, link) in m.links.iter().enumerate() {
-        if l == frame || !an.link(l) {
-            continue;
-        }
-        let pts: Vec<usize> = link
-            .points
-            .iter()
-            .copied()
-            .filter(|&p| !is_mass(p))
-            .collect();
-        let xy: Vec<Point> = pts.iter().map(|&p| place(l, p)).collect();
-        if xy.len() >= 3 {
-            c.poly(xy.clone(), "#d9d9d9", MAIN);
-        } else if xy.len() == 2 {
-            c.seg(xy[0], xy[1], Class::Main);
-        }
-        // Centres of mass lie on their links: draw the link to them.
-        for &p in &link.points {
-            if is_mass(p) && xy.len() == 2 {
-                let q = place(l, p);
-                let on = (xy[1] - xy[0]).cross(q - xy[0]).abs() <= 1e-6 * (xy[1] - xy[0]).hypot2();
-                if !on {
-                    c.seg(xy[0], q, Class::Main);
-                }
-            }
-        }
-        // Link number beside the middle of its first segment.
-        let mid = if xy.len() >= 2 {
-            xy[0].midpoint(xy[1])
-        } else {
-            xy.first().copied().unwrap_or(Point::ORIGIN) + Vec2::new(0.0, 4.0)
-        };
-        c.label_later(
-            mid,
-            Label::new(link.id.clone(), ""),
-            SMALL,
-            Some(format!("link-{}", link.id)),
-        );
-    }
+    sc.links(c);
     for (_, _, corners) in &blocks {
         c.poly(corners.to_vec(), "white", MAIN);
     }
     super::cylinder::draw(an, s, c, mu_l);
-    // The unit directions of the links leaving point `p` (to their other
-    // points), and each fixed pivot's support as drawn.
-    let leaving = |p: usize| -> Vec<Vec2> {
-        let at = at_point(p);
-        m.links_of_point(p)
+    let supports = sc.pairs(c, &bodies, with_labels);
+    sc.inputs(c, &bodies, &supports);
+}
+
+/// The corners of a slider block of half length `a` and half width `b`
+/// about `q`, its length along the unit `u`.
+pub(crate) fn block_corners(q: Point, u: Vec2, a: f64, b: f64) -> [Point; 4] {
+    let n = perp(u);
+    [
+        q - u * a - n * b,
+        q + u * a - n * b,
+        q + u * a + n * b,
+        q - u * a + n * b,
+    ]
+}
+
+/// A link's body through its points `xy` (centres of mass left out): a
+/// shaded polygon for three points or more, a line for two.
+pub(crate) fn link_body(c: &mut Canvas, xy: &[Point]) {
+    if xy.len() >= 3 {
+        c.poly(xy.to_vec(), "#d9d9d9", MAIN);
+    } else if xy.len() == 2 {
+        c.seg(xy[0], xy[1], Class::Main);
+    }
+}
+
+/// Whether `q` lies on the line of a two-point link's body `xy`.
+pub(crate) fn on_body(xy: &[Point], q: Point) -> bool {
+    (xy[1] - xy[0]).cross(q - xy[0]).abs() <= 1e-6 * (xy[1] - xy[0]).hypot2()
+}
+
+/// A point of a moving link: a revolute pair's circle, a centre of mass,
+/// or a dot.
+pub(crate) fn point_symbol(c: &mut Canvas, at: Point, joint: bool, mass: bool) {
+    if joint {
+        c.circle(at, 1.2, "white", MAIN);
+    } else if mass {
+        centre_of_mass(c, at);
+    } else {
+        c.circle(at, 0.6, "black", 0.0);
+    }
+}
+
+/// A point's name at `at`, its letters and their index apart ("O1" as O
+/// with 1 under it, "S_2" as S with 2).
+pub(crate) fn point_label(c: &mut Canvas, at: Point, name: &str, id: String) {
+    let split = name
+        .find(|ch: char| ch.is_ascii_digit() || ch == '_')
+        .unwrap_or(name.len());
+    c.label_later(
+        at,
+        Label::new(&name[..split], name[split..].trim_start_matches('_')),
+        FONT,
+        Some(id),
+    );
+}
+
+/// The mechanism at one position as its scheme draws it: the places of
+/// its points on the sheet (mm) and which points are pairs.
+struct Scheme<'a> {
+    an: &'a Analysis,
+    s: &'a Solved,
+    m: &'a Mechanism,
+    frame: usize,
+    mu_l: f64,
+    /// Per point: a pair of two links or more.
+    joints: Vec<bool>,
+}
+
+impl<'a> Scheme<'a> {
+    fn new(an: &'a Analysis, s: &'a Solved, mu_l: f64) -> Scheme<'a> {
+        let m = &an.mech;
+        let joints: Vec<bool> = (0..m.scene.points.len())
+            .map(|p| m.links_of_point(p).len() >= 2)
+            .collect();
+        Scheme {
+            an,
+            s,
+            m,
+            frame: m.frame(),
+            mu_l,
+            joints,
+        }
+    }
+
+    /// A real place (m) on the sheet (mm).
+    fn to(&self, p: Point) -> Point {
+        Point::new(p.x / self.mu_l, p.y / self.mu_l)
+    }
+
+    /// Point `p` of link `l` on the sheet.
+    fn place(&self, l: usize, p: usize) -> Point {
+        self.to(self.s.config.point(self.m, l, p))
+    }
+
+    /// Point `p` on the sheet, as the first drawn link holding it has it.
+    fn at_point(&self, p: usize) -> Point {
+        let l = self
+            .m
+            .links_of_point(p)
             .into_iter()
-            .filter(|&l| l != frame && an.link(l))
-            .flat_map(|l| m.links[l].points.iter().map(move |&q| (l, q)))
-            .filter(|&(_, q)| q != p)
-            .map(|(l, q)| place(l, q) - at)
-            .filter(|d| d.hypot() > 1e-9)
-            .map(|d| d.normalize())
+            .find(|&l| self.an.link(l))
+            .unwrap_or(self.frame);
+        self.place(l, p)
+    }
+
+    /// A centre of mass: a point of one link named S….
+    fn is_mass(&self, p: usize) -> bool {
+        !self.joints[p] && self.m.point_name(p).starts_with('S')
+    }
+
+    /// The moving links drawn, with their indices.
+    fn moving(&self) -> impl Iterator<Item = (usize, &'a crate::model::mechanism::Link)> + '_ {
+        (self.m.links.iter().enumerate()).filter(|&(l, _)| l != self.frame && self.an.link(l))
+    }
+
+    /// The places of link `l`'s points but its centres of mass: the
+    /// corners of its body.
+    fn body(&self, l: usize) -> Vec<Point> {
+        self.m.links[l]
+            .points
+            .iter()
+            .filter(|&&p| !self.is_mass(p))
+            .map(|&p| self.place(l, p))
             .collect()
-    };
-    let mut supports: Vec<Option<Vec2>> = vec![None; m.scene.points.len()];
-    // Pairs and points.
-    for (p, &joint) in joints.iter().enumerate() {
-        let ls = m.links_of_point(p);
-        let moving = ls.iter().any(|&l| an.link(l) && l != frame);
-        if !(moving || ls.contains(&frame) && joint) {
-            continue;
+    }
+
+    /// The middle of the points drawn.
+    fn centre(&self) -> Point {
+        let m = self.m;
+        let shown: Vec<Point> = (0..m.scene.points.len())
+            .filter(|&p| m.links_of_point(p).iter().any(|&l| self.an.link(l)))
+            .map(|p| self.at_point(p))
+            .collect();
+        Point::new(
+            shown.iter().map(|p| p.x).sum::<f64>() / shown.len().max(1) as f64,
+            shown.iter().map(|p| p.y).sum::<f64>() / shown.len().max(1) as f64,
+        )
+    }
+
+    /// Draw the slots of the guides on moving links (but the cylinders');
+    /// returns them as the first lines drawn.
+    fn slots(&self, c: &mut Canvas, cylinders: &[usize]) -> Vec<(Point, Point)> {
+        let (m, an) = (self.m, self.an);
+        let mut bodies: Vec<(Point, Point)> = Vec::new();
+        for (k, pr) in m.prismatics.iter().enumerate() {
+            if !an.link(pr.slider)
+                || !an.link(pr.guide)
+                || pr.guide == self.frame
+                || cylinders.contains(&k)
+            {
+                continue;
+            }
+            let q = self.place(pr.slider, pr.point);
+            let u = self.s.config.pose(pr.guide).dir(pr.line_dir);
+            // A one-point link carrying a slot (a sliding yoke) is drawn as
+            // the slot itself, reaching its own point, so that the slot and
+            // the yoke read as one link.
+            let (mut lo, mut hi) = (-10.0f64, 10.0f64);
+            if m.links[pr.guide].points.len() == 1 {
+                let t = (self.place(pr.guide, m.links[pr.guide].points[0]) - q).dot(u);
+                lo = lo.min(t - 3.0);
+                hi = hi.max(t + 3.0);
+            }
+            c.seg(q + u * lo, q + u * hi, Class::Main);
+            bodies.push((q + u * lo, q + u * hi));
         }
-        let at = at_point(p);
-        if ls.contains(&frame) && joint {
-            let down = base_direction(&leaving(p), at, &bodies);
-            supports[p] = Some(down);
-            pivot(c, at, down);
-        } else if joint {
-            c.circle(at, 1.2, "white", MAIN);
-        } else if is_mass(p) {
-            centre_of_mass(c, at);
-        } else {
-            c.circle(at, 0.6, "black", 0.0);
+        bodies
+    }
+
+    /// The lines between every two points of each moving link, into
+    /// `bodies`.
+    fn link_lines(&self, bodies: &mut Vec<(Point, Point)>) {
+        for (l, _) in self.moving() {
+            let xy = self.body(l);
+            for i in 0..xy.len() {
+                for j in i + 1..xy.len() {
+                    bodies.push((xy[i], xy[j]));
+                }
+            }
         }
-        if with_labels {
-            let name = m.point_name(p);
-            let split = name
-                .find(|ch: char| ch.is_ascii_digit() || ch == '_')
-                .unwrap_or(name.len());
+    }
+
+    /// Slider blocks: those on the frame's guides first; a block at the
+    /// point of one already placed (the two blocks of a PRP group, pinned
+    /// together) nests inside it, smaller, instead of crossing it. Known
+    /// before the walls are hatched, drawn over the links.
+    fn blocks(&self, cylinders: &[usize]) -> Vec<Block> {
+        let (m, an, frame) = (self.m, self.an, self.frame);
+        let mut order: Vec<&crate::model::mechanism::Prismatic> = m
+            .prismatics
+            .iter()
+            .enumerate()
+            .filter(|(k, pr)| an.link(pr.slider) && an.link(pr.guide) && !cylinders.contains(k))
+            .map(|(_, pr)| pr)
+            .collect();
+        order.sort_by_key(|pr| pr.guide != frame);
+        let mut blocks: Vec<Block> = Vec::new();
+        for pr in order {
+            let q = self.place(pr.slider, pr.point);
+            let u = self.s.config.pose(pr.guide).dir(pr.line_dir);
+            let inner = blocks.iter().filter(|b| (b.1 - q).hypot() < 1e-6).count();
+            let k = 0.55f64.powi(inner as i32);
+            let (a, b) = (BLOCK.0 * k, BLOCK.1 * k);
+            blocks.push((pr.slider, q, block_corners(q, u, a, b)));
+        }
+        blocks
+    }
+
+    /// The frame's guides: one line and one hatched wall for all the
+    /// sliders on one line (two pistons in one cylinder share their wall),
+    /// with the sliders' places in every position of `stroke` too.
+    fn walls(&self, stroke: &[Solved]) -> Vec<Wall> {
+        let m = self.m;
+        let mut walls: Vec<Wall> = Vec::new();
+        for pr in &m.prismatics {
+            if !self.an.link(pr.slider) || pr.guide != self.frame {
+                continue;
+            }
+            let q = self.place(pr.slider, pr.point);
+            let u = self.s.config.pose(pr.guide).dir(pr.line_dir);
+            let i = match walls
+                .iter()
+                .position(|w| w.1.cross(u).abs() < 1e-9 && w.1.cross(q - w.0).abs() < 1e-6)
+            {
+                Some(i) => i,
+                None => {
+                    walls.push((q, u, Vec::new()));
+                    walls.len() - 1
+                }
+            };
+            walls[i].2.push((pr.slider, q));
+            for o in stroke {
+                let p = o.config.point(m, pr.slider, pr.point);
+                walls[i].2.push((pr.slider, self.to(p)));
+            }
+        }
+        walls
+    }
+
+    /// Draw the moving links: bodies, the lines to their centres of mass
+    /// and the links' numbers.
+    fn links(&self, c: &mut Canvas) {
+        for (l, link) in self.moving() {
+            let xy = self.body(l);
+            link_body(c, &xy);
+            // Centres of mass lie on their links: draw the link to them.
+            for &p in &link.points {
+                if self.is_mass(p) && xy.len() == 2 {
+                    let q = self.place(l, p);
+                    if !on_body(&xy, q) {
+                        c.seg(xy[0], q, Class::Main);
+                    }
+                }
+            }
+            // Link number beside the middle of its first segment.
+            let mid = if xy.len() >= 2 {
+                xy[0].midpoint(xy[1])
+            } else {
+                xy.first().copied().unwrap_or(Point::ORIGIN) + Vec2::new(0.0, 4.0)
+            };
             c.label_later(
-                at,
-                Label::new(&name[..split], name[split..].trim_start_matches('_')),
-                FONT,
-                Some(format!("point-{name}")),
+                mid,
+                Label::new(link.id.clone(), ""),
+                SMALL,
+                Some(format!("link-{}", link.id)),
             );
         }
     }
-    // The inputs' motion: ω1 (and ε1) as arcs about each crank's pivot.
-    for (i, spec) in m.scene.inputs().enumerate() {
-        let InputSpec::Crank {
-            link, pivot: pv, ..
-        } = *spec
-        else {
-            continue;
-        };
-        let (w, e) = (s.drives[i].rate, s.drives[i].rate2);
-        let o = at_point(pv);
-        let other = m.links[link]
-            .points
-            .iter()
-            .copied()
-            .find(|&p| p != pv)
-            .unwrap();
-        let crank = (place(link, other) - o).atan2();
-        // The arcs go where nothing else is about the pivot: clear of the
-        // links there and of the support and its hatching.
-        let mut busy: Vec<(f64, f64)> = leaving(pv).iter().map(|d| (d.atan2(), 0.35)).collect();
+
+    /// The unit directions of the moving links leaving point `p` (to their
+    /// other points).
+    fn leaving(&self, p: usize) -> Vec<Vec2> {
+        let at = self.at_point(p);
+        self.m
+            .links_of_point(p)
+            .into_iter()
+            .filter(|&l| l != self.frame && self.an.link(l))
+            .flat_map(|l| self.m.links[l].points.iter().map(move |&q| (l, q)))
+            .filter(|&(_, q)| q != p)
+            .map(|(l, q)| self.place(l, q) - at)
+            .filter(|d| d.hypot() > 1e-9)
+            .map(|d| d.normalize())
+            .collect()
+    }
+
+    /// Draw the pairs and points (fixed pivots on their bases), named when
+    /// `with_labels`; returns each fixed pivot's support as drawn.
+    fn pairs(
+        &self,
+        c: &mut Canvas,
+        bodies: &[(Point, Point)],
+        with_labels: bool,
+    ) -> Vec<Option<Vec2>> {
+        let (m, frame) = (self.m, self.frame);
+        let mut supports: Vec<Option<Vec2>> = vec![None; m.scene.points.len()];
+        for (p, &joint) in self.joints.iter().enumerate() {
+            let ls = m.links_of_point(p);
+            let moving = ls.iter().any(|&l| self.an.link(l) && l != frame);
+            if !(moving || ls.contains(&frame) && joint) {
+                continue;
+            }
+            let at = self.at_point(p);
+            if ls.contains(&frame) && joint {
+                let down = base_direction(&self.leaving(p), at, bodies);
+                supports[p] = Some(down);
+                pivot(c, at, down);
+            } else {
+                point_symbol(c, at, joint, self.is_mass(p));
+            }
+            if with_labels {
+                let name = m.point_name(p);
+                point_label(c, at, name, format!("point-{name}"));
+            }
+        }
+        supports
+    }
+
+    /// The inputs' motion: ω1 (and ε1) as arcs about each crank's pivot,
+    /// clear of the links there (`bodies`) and of its support.
+    fn inputs(&self, c: &mut Canvas, bodies: &[(Point, Point)], supports: &[Option<Vec2>]) {
+        let m = self.m;
+        for (i, spec) in m.scene.inputs().enumerate() {
+            let InputSpec::Crank {
+                link, pivot: pv, ..
+            } = *spec
+            else {
+                continue;
+            };
+            let (w, e) = (self.s.drives[i].rate, self.s.drives[i].rate2);
+            let o = self.at_point(pv);
+            let other = m.links[link]
+                .points
+                .iter()
+                .copied()
+                .find(|&p| p != pv)
+                .unwrap();
+            let crank = (self.place(link, other) - o).atan2();
+            let busy = self.busy_about(pv, o, bodies, supports);
+            let (mid, room) = free_arc(&busy, crank + std::f64::consts::PI);
+            for (k, (val, name)) in [(w, "ω"), (e, "ε")].into_iter().enumerate() {
+                if val == 0.0 {
+                    continue;
+                }
+                // On the far side of the pivot from the crank, as textbooks
+                // draw it, when that side is free.
+                let r = 6.0 + 3.5 * k as f64;
+                let sweep = room.min(1.6) * val.signum();
+                let a0 = mid - sweep / 2.0;
+                c.arc(o, r, a0, sweep);
+                let end = a0 + sweep;
+                let tip = o + Vec2::from_angle(end) * r;
+                let tangent = perp(Vec2::from_angle(end)) * val.signum();
+                c.arrow(tip, tangent);
+                c.label_later(
+                    o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 2.0),
+                    Label::new(name, m.link_id(link)),
+                    FONT,
+                    Some(if i == 0 {
+                        format!("input-{name}")
+                    } else {
+                        format!("input-{name}{}", m.link_id(link))
+                    }),
+                );
+            }
+        }
+    }
+
+    /// The directions taken about pivot `pv` at `o` (with their half
+    /// widths, rad), where the input's arcs must not go: the links there,
+    /// the support and its hatching, other lines passing by.
+    fn busy_about(
+        &self,
+        pv: usize,
+        o: Point,
+        bodies: &[(Point, Point)],
+        supports: &[Option<Vec2>],
+    ) -> Vec<(f64, f64)> {
+        let mut busy: Vec<(f64, f64)> =
+            self.leaving(pv).iter().map(|d| (d.atan2(), 0.35)).collect();
         if let Some(down) = supports[pv] {
             busy.push((down.atan2(), 0.95));
         }
         // Other lines passing where the arcs would go.
-        for &(p, q) in &bodies {
+        for &(p, q) in bodies {
             for k in 0..=48 {
                 let x = p + (q - p) * (k as f64 / 48.0);
                 let r = (x - o).hypot();
@@ -387,58 +480,8 @@ pub fn draw_over(
                 }
             }
         }
-        let (mid, room) = free_arc(&busy, crank + std::f64::consts::PI);
-        for (k, (val, name)) in [(w, "ω"), (e, "ε")].into_iter().enumerate() {
-            if val == 0.0 {
-                continue;
-            }
-            // On the far side of the pivot from the crank, as textbooks
-            // draw it, when that side is free.
-            let r = 6.0 + 3.5 * k as f64;
-            let sweep = room.min(1.6) * val.signum();
-            let a0 = mid - sweep / 2.0;
-            c.arc(o, r, a0, sweep);
-            let end = a0 + sweep;
-            let tip = o + Vec2::from_angle(end) * r;
-            let tangent = perp(Vec2::from_angle(end)) * val.signum();
-            c.arrow(tip, tangent);
-            c.label_later(
-                o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 2.0),
-                Label::new(name, m.link_id(link)),
-                FONT,
-                Some(if i == 0 {
-                    format!("input-{name}")
-                } else {
-                    format!("input-{name}{}", m.link_id(link))
-                }),
-            );
-        }
+        busy
     }
-}
-
-/// A fixed guide's wall: a point of its line, its direction, and the
-/// sliders on it with their points.
-type Wall = (Point, Vec2, Vec<(usize, Point)>);
-
-/// Half the length of a fixed guide's line beyond its sliders (mm).
-const GUIDE_HALF: f64 = 18.0;
-/// A slider block's half length and half width (mm).
-const BLOCK: (f64, f64) = (5.0, 3.0);
-/// How far a fixed guide's wall lies from its line: beyond the blocks.
-const WALL: f64 = BLOCK.1 + 1.2;
-/// The depth of a wall's hatching (mm).
-const HATCH: f64 = 1.6;
-
-/// Where segment `p`–`q` crosses segment `a`–`b`, as a share of `a`–`b`.
-fn crossing_at(p: Point, q: Point, a: Point, b: Point) -> Option<f64> {
-    let (r, s) = (q - p, b - a);
-    let den = r.cross(s);
-    if den.abs() < 1e-12 {
-        return None;
-    }
-    let t = (a - p).cross(s) / den;
-    let v = (a - p).cross(r) / den;
-    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&v)).then_some(v)
 }
 
 /// Which way a fixed pivot's base stands, given the unit directions of the

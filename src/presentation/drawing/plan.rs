@@ -42,144 +42,183 @@ pub fn made_at(plan: &Plan) -> Vec<Option<usize>> {
 /// label: the step that made the point, the first made of a shared
 /// label's points). For drawing a plan step by step (the HTML handout).
 pub fn draw_steps(plan: &Plan, c: &mut Canvas, reported: &[usize]) -> Vec<usize> {
-    let start = c.prims.len();
-    let mut steps: Vec<usize> = Vec::new();
-    let mut tag = |c: &Canvas, k: usize| steps.resize(c.prims.len() - start, k);
-    let made = made_at(plan);
-    let made_of = |members: &[usize]| members.iter().filter_map(|&i| made[i]).min().unwrap_or(0);
-    let at = |i: usize| plan.points[i].at.to_point();
-    let mut used = vec![false; plan.points.len()];
-    used[0] = true;
+    let mut d = Steps {
+        plan,
+        start: c.prims.len(),
+        steps: Vec::new(),
+        used: vec![false; plan.points.len()],
+        drawn: Vec::new(),
+    };
+    d.used[0] = true;
     // Construction lines and shaded figures first (under the vectors).
-    for (k, step) in plan.steps.iter().enumerate() {
-        match &step.op {
-            Op::Intersect { lines, out, .. } => {
-                for l in lines {
-                    let (a, x) = (at(l.through), at(*out));
-                    let d = if (x - a).hypot() > 1e-9 {
-                        (x - a).normalize()
-                    } else {
-                        l.unit
-                    };
-                    c.path(vec![a - d * 3.0, x + d * OVERSHOOT], Line::Dashed);
-                    used[l.through] = true;
-                }
-                used[*out] = true;
-            }
-            Op::Similar { a, b, out, .. } => {
-                c.prims.push(super::canvas::Prim::Poly {
-                    pts: vec![at(*a), at(*b), at(*out)],
-                    fill: "#e3e3e3",
-                    stroke: 0.25,
-                });
-                used[*out] = true;
-            }
-            _ => {}
-        }
-        tag(c, k);
-    }
-    // Vectors: laid-off components, relative segments (of rotation and of
-    // sliding along a guide), absolute vectors; each drawn once.
-    let mut drawn: Vec<(usize, usize)> = Vec::new();
-    let mut vector =
-        |c: &mut Canvas, from: usize, to: usize, class: Class, used: &mut Vec<bool>| {
-            if drawn.contains(&(from, to)) {
-                return;
-            }
-            drawn.push((from, to));
-            c.vector(
-                at(from),
-                at(to),
-                class,
-                Some(format!(
-                    "vec-{}-{}",
-                    plan.points[from].key, plan.points[to].key
-                )),
-            );
-            used[from] = true;
-            used[to] = true;
-        };
-    for (k, step) in plan.steps.iter().enumerate() {
-        match &step.op {
-            Op::LayOff { from, to, .. } => vector(
-                c,
-                *from,
-                *to,
-                if *from == 0 {
-                    Class::Main
-                } else {
-                    Class::Vector
-                },
-                &mut used,
-            ),
-            Op::Intersect { lines, out, .. } => {
-                for l in lines {
-                    if matches!(l.dir, Dir::Guide(_)) {
-                        vector(c, l.through, *out, Class::Vector, &mut used);
-                    }
-                }
-            }
-            Op::Measure {
-                from,
-                to,
-                rate: Some(_),
-                ..
-            } => vector(c, *from, *to, Class::Vector, &mut used),
-            Op::Measure {
-                from: 0,
-                to,
-                rate: None,
-                ..
-            } => vector(c, 0, *to, Class::Main, &mut used),
-            Op::Divide { out, .. } | Op::Coincide { out, .. } => used[*out] = true,
-            _ => {}
-        }
-        tag(c, k);
-    }
-    // The segments divided by similarity (ab for s₂ on AB): on an
-    // acceleration plan no vector joins a and b, and s₂ would float.
-    for (k, step) in plan.steps.iter().enumerate() {
-        if let Op::Divide { a, b, .. } = step.op {
-            let joined = drawn.contains(&(a, b)) || drawn.contains(&(b, a));
-            if !joined && (at(a) - at(b)).hypot() > 1e-6 {
-                c.seg(at(a), at(b), Class::Thin);
-                drawn.push((a, b));
-                used[a] = true;
-                used[b] = true;
-            }
-        }
-        tag(c, k);
-    }
+    d.construction(c);
+    d.vectors(c);
+    d.divided(c);
     for &p in reported {
         if let Some(i) = plan.of_point[p] {
-            used[i] = true;
+            d.used[i] = true;
         }
     }
-    // Labels: points at one place share one label ("p_v, o₁, o₂").
-    let mut groups: Vec<(Point, Vec<usize>)> = Vec::new();
-    for (i, u) in used.iter().enumerate() {
-        if !u {
-            continue;
-        }
-        let p = at(i);
-        match groups.iter_mut().find(|g| (g.0 - p).hypot() < 0.05) {
-            Some(g) => g.1.push(i),
-            None => groups.push((p, vec![i])),
+    d.labels(c);
+    d.steps
+}
+
+/// A plan being drawn: the step of each primitive added since `start`,
+/// the plan points shown (`used`) and the vectors drawn.
+struct Steps<'a> {
+    plan: &'a Plan,
+    start: usize,
+    steps: Vec<usize>,
+    used: Vec<bool>,
+    drawn: Vec<(usize, usize)>,
+}
+
+impl Steps<'_> {
+    /// The primitives added since the last tag are step `k`'s.
+    fn tag(&mut self, c: &Canvas, k: usize) {
+        self.steps.resize(c.prims.len() - self.start, k);
+    }
+
+    fn at(&self, i: usize) -> Point {
+        self.plan.points[i].at.to_point()
+    }
+
+    /// The construction lines (thin, a little past their intersection)
+    /// and the similar figures, shaded.
+    fn construction(&mut self, c: &mut Canvas) {
+        for (k, step) in self.plan.steps.iter().enumerate() {
+            match &step.op {
+                Op::Intersect { lines, out, .. } => {
+                    for l in lines {
+                        let (a, x) = (self.at(l.through), self.at(*out));
+                        let d = if (x - a).hypot() > 1e-9 {
+                            (x - a).normalize()
+                        } else {
+                            l.unit
+                        };
+                        c.path(vec![a - d * 3.0, x + d * OVERSHOOT], Line::Dashed);
+                        self.used[l.through] = true;
+                    }
+                    self.used[*out] = true;
+                }
+                Op::Similar { a, b, out, .. } => {
+                    c.prims.push(super::canvas::Prim::Poly {
+                        pts: vec![self.at(*a), self.at(*b), self.at(*out)],
+                        fill: "#e3e3e3",
+                        stroke: 0.25,
+                    });
+                    self.used[*out] = true;
+                }
+                _ => {}
+            }
+            self.tag(c, k);
         }
     }
-    for (p, members) in &groups {
-        c.dot(*p, format!("pt-{}", plan.points[members[0]].key));
-        tag(c, made_of(members));
-    }
-    for (p, members) in groups {
-        let first = &plan.points[members[0]];
-        let mut label = Label::new(first.label.0.clone(), first.label.1.clone());
-        for &i in &members[1..] {
-            let q = &plan.points[i];
-            label = label.and(q.label.0.clone(), q.label.1.clone());
+
+    /// The vector `from` → `to`, once.
+    fn vector(&mut self, c: &mut Canvas, from: usize, to: usize, class: Class) {
+        if self.drawn.contains(&(from, to)) {
+            return;
         }
-        c.label(p, label, FONT, Some(format!("label-{}", first.key)));
-        tag(c, made_of(&members));
+        self.drawn.push((from, to));
+        let p = &self.plan.points;
+        c.vector(
+            self.at(from),
+            self.at(to),
+            class,
+            Some(format!("vec-{}-{}", p[from].key, p[to].key)),
+        );
+        self.used[from] = true;
+        self.used[to] = true;
     }
-    steps
+
+    /// Vectors: laid-off components, relative segments (of rotation and
+    /// of sliding along a guide), absolute vectors; each drawn once.
+    fn vectors(&mut self, c: &mut Canvas) {
+        for (k, step) in self.plan.steps.iter().enumerate() {
+            match &step.op {
+                Op::LayOff { from, to, .. } => {
+                    let class = if *from == 0 {
+                        Class::Main
+                    } else {
+                        Class::Vector
+                    };
+                    self.vector(c, *from, *to, class);
+                }
+                Op::Intersect { lines, out, .. } => {
+                    for l in lines {
+                        if matches!(l.dir, Dir::Guide(_)) {
+                            self.vector(c, l.through, *out, Class::Vector);
+                        }
+                    }
+                }
+                Op::Measure {
+                    from,
+                    to,
+                    rate: Some(_),
+                    ..
+                } => self.vector(c, *from, *to, Class::Vector),
+                Op::Measure {
+                    from: 0,
+                    to,
+                    rate: None,
+                    ..
+                } => self.vector(c, 0, *to, Class::Main),
+                Op::Divide { out, .. } | Op::Coincide { out, .. } => self.used[*out] = true,
+                _ => {}
+            }
+            self.tag(c, k);
+        }
+    }
+
+    /// The segments divided by similarity (ab for s₂ on AB): on an
+    /// acceleration plan no vector joins a and b, and s₂ would float.
+    fn divided(&mut self, c: &mut Canvas) {
+        for (k, step) in self.plan.steps.iter().enumerate() {
+            if let Op::Divide { a, b, .. } = step.op {
+                let joined = self.drawn.contains(&(a, b)) || self.drawn.contains(&(b, a));
+                if !joined && (self.at(a) - self.at(b)).hypot() > 1e-6 {
+                    c.seg(self.at(a), self.at(b), Class::Thin);
+                    self.drawn.push((a, b));
+                    self.used[a] = true;
+                    self.used[b] = true;
+                }
+            }
+            self.tag(c, k);
+        }
+    }
+
+    /// The shown points' dots and labels: points at one place share one
+    /// label ("p_v, o₁, o₂"), of the step that made the first of them.
+    fn labels(&mut self, c: &mut Canvas) {
+        let plan = self.plan;
+        let made = made_at(plan);
+        let made_of =
+            |members: &[usize]| members.iter().filter_map(|&i| made[i]).min().unwrap_or(0);
+        let mut groups: Vec<(Point, Vec<usize>)> = Vec::new();
+        for (i, u) in self.used.iter().enumerate() {
+            if !u {
+                continue;
+            }
+            let p = self.at(i);
+            match groups.iter_mut().find(|g| (g.0 - p).hypot() < 0.05) {
+                Some(g) => g.1.push(i),
+                None => groups.push((p, vec![i])),
+            }
+        }
+        for (p, members) in &groups {
+            c.dot(*p, format!("pt-{}", plan.points[members[0]].key));
+            self.tag(c, made_of(members));
+        }
+        for (p, members) in groups {
+            let first = &plan.points[members[0]];
+            let mut label = Label::new(first.label.0.clone(), first.label.1.clone());
+            for &i in &members[1..] {
+                let q = &plan.points[i];
+                label = label.and(q.label.0.clone(), q.label.1.clone());
+            }
+            c.label(p, label, FONT, Some(format!("label-{}", first.key)));
+            self.tag(c, made_of(&members));
+        }
+    }
 }

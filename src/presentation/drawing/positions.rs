@@ -4,8 +4,10 @@
 
 use super::canvas::{Canvas, Label, Line, SMALL};
 use crate::kinematics::positions::PositionSolver;
-use crate::kinematics::solve::{Analysis, Solved};
+use crate::kinematics::solve::Analysis;
+use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
+use crate::pipeline::Solved;
 use kurbo::Point;
 
 /// The trajectories of the coupler points (m), computed once for every
@@ -14,6 +16,15 @@ pub struct Trajectories {
     paths: Vec<Vec<Point>>,
     /// The crank's pivot and radius, m, when it turns fully.
     circle: Option<(Point, f64)>,
+}
+
+/// The input link's point off the frame (a crank's end), if it has one.
+fn crank_tip(m: &Mechanism) -> Option<usize> {
+    m.links[m.scene.input.link()]
+        .points
+        .iter()
+        .copied()
+        .find(|&p| !m.links_of_point(p).contains(&m.frame()))
 }
 
 /// The positions sheet's drawing of `solved` at `mu_l`, with the
@@ -26,11 +37,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
     super::mechanism::draw_over(an, &solved[0], solved, c, mu_l, true);
     let input = m.scene.input.link();
-    let tip = m.links[input]
-        .points
-        .iter()
-        .copied()
-        .find(|&p| !m.links_of_point(p).contains(&m.frame()));
+    let tip = crank_tip(m);
     let every = numbering_step(solved.len());
     for (k, s) in solved.iter().enumerate() {
         if k > 0 {
@@ -161,11 +168,7 @@ pub fn trajectories(an: &Analysis, solved: &[Solved]) -> Trajectories {
             .collect();
     }
     let input = m.scene.input.link();
-    let tip = m.links[input]
-        .points
-        .iter()
-        .copied()
-        .find(|&p| !m.links_of_point(p).contains(&m.frame()));
+    let tip = crank_tip(m);
     let circle = match (&m.scene.input, tip) {
         (InputSpec::Crank { pivot, .. }, Some(p)) if full_turn => {
             let o = solved[0].config.point(m, m.frame(), *pivot);

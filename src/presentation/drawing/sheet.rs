@@ -7,8 +7,8 @@
 
 use super::SheetSize;
 use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, xml};
-use crate::kinematics::construction::text::Lang;
 use crate::model::scene::SheetInfo;
+use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::fmt::Write as _;
 
@@ -89,9 +89,7 @@ impl Page {
         // One line if it fits at 5 mm, else a smaller font.
         let size = [5.0, FONT, SMALL]
             .into_iter()
-            .find(|&s| {
-                super::canvas::runs_width(&crate::presentation::notation::runs(title), s) <= width
-            })
+            .find(|&s| super::canvas::runs_width(&crate::words::notation::runs(title), s) <= width)
             .unwrap_or(SMALL);
         c.rich(Point::new(0.0, 0.0), title, size, "heading", "start");
         if let Some(s) = scale {
@@ -103,110 +101,138 @@ impl Page {
     /// The main title block, form 1, in the frame's bottom right corner.
     pub fn title_block(&mut self, t: &TitleBlock) {
         let f = frame(self.size);
-        let (x1, y1) = (f.x1, f.y1);
-        // Form 1 is given from the block's bottom right corner: `x` to the
-        // left, `y` up.
-        let p = |x: f64, y: f64| (fmt(x1 - x), fmt(y1 - y));
-        let mut s = String::new();
-        let mut line = |x0: f64, y0: f64, x1_: f64, y1_: f64, w: f64| {
-            let (a, b) = p(x0, y0);
-            let (c, d) = p(x1_, y1_);
-            let _ = writeln!(
-                s,
-                r#"<line class="title-block" x1="{a}" y1="{b}" x2="{c}" y2="{d}" stroke="black" stroke-width="{}"/>"#,
-                fmt(w)
-            );
+        let mut b = Block {
+            x1: f.x1,
+            y1: f.y1,
+            s: String::new(),
         };
+        b.rules();
+        b.fill(t, self.size);
+        self.body.push_str(&b.s);
+    }
+
+    pub fn finish(mut self) -> String {
+        self.body.push_str("</svg>\n");
+        self.body
+    }
+}
+
+/// The main title block being written. Form 1 is given from the block's
+/// bottom right corner (`x1`, `y1` on the page): `x` to the left, `y` up.
+struct Block {
+    x1: f64,
+    y1: f64,
+    s: String,
+}
+
+impl Block {
+    /// The page place of the form's (`x`, `y`).
+    fn p(&self, x: f64, y: f64) -> (String, String) {
+        (fmt(self.x1 - x), fmt(self.y1 - y))
+    }
+
+    fn line(&mut self, (x0, y0): (f64, f64), (x1, y1): (f64, f64), w: f64) {
+        let (a, b) = self.p(x0, y0);
+        let (c, d) = self.p(x1, y1);
+        let _ = writeln!(
+            self.s,
+            r#"<line class="title-block" x1="{a}" y1="{b}" x2="{c}" y2="{d}" stroke="black" stroke-width="{}"/>"#,
+            fmt(w)
+        );
+    }
+
+    /// Text `what` (nothing if empty) at the form's (`x`, `y`).
+    fn text(&mut self, (x, y): (f64, f64), size: f64, anchor: &str, what: &str, class: &str) {
+        if what.is_empty() {
+            return;
+        }
+        let (a, b) = self.p(x, y);
+        let anchor = if anchor == "start" {
+            String::new()
+        } else {
+            format!(r#" text-anchor="{anchor}""#)
+        };
+        let _ = writeln!(
+            self.s,
+            r#"<text class="{class}" x="{a}" y="{b}" font-size="{}"{anchor}>{}</text>"#,
+            fmt(size),
+            xml(what)
+        );
+    }
+
+    /// The form's lines: main, then thin (the rows of the left part, the
+    /// cells of the letter).
+    fn rules(&mut self) {
         let main = FRAME;
-        // Main lines.
-        line(BLOCK_W, 55.0, 0.0, 55.0, main);
-        line(BLOCK_W, 55.0, BLOCK_W, 0.0, main);
-        line(120.0, 40.0, 0.0, 40.0, main);
-        line(BLOCK_W, 35.0, 120.0, 35.0, main);
-        line(50.0, 35.0, 0.0, 35.0, main);
-        line(BLOCK_W, 30.0, 120.0, 30.0, main);
-        line(50.0, 20.0, 0.0, 20.0, main);
-        line(120.0, 15.0, 0.0, 15.0, main);
-        line(178.0, 55.0, 178.0, 30.0, main);
+        for ((x0, y0), (x1, y1)) in [
+            ((BLOCK_W, 55.0), (0.0, 55.0)),
+            ((BLOCK_W, 55.0), (BLOCK_W, 0.0)),
+            ((120.0, 40.0), (0.0, 40.0)),
+            ((BLOCK_W, 35.0), (120.0, 35.0)),
+            ((50.0, 35.0), (0.0, 35.0)),
+            ((BLOCK_W, 30.0), (120.0, 30.0)),
+            ((50.0, 20.0), (0.0, 20.0)),
+            ((120.0, 15.0), (0.0, 15.0)),
+            ((178.0, 55.0), (178.0, 30.0)),
+        ] {
+            self.line((x0, y0), (x1, y1), main);
+        }
         for x in [168.0, 145.0, 130.0, 120.0] {
-            line(x, 55.0, x, 0.0, main);
+            self.line((x, 55.0), (x, 0.0), main);
         }
-        line(50.0, 40.0, 50.0, 0.0, main);
-        line(35.0, 40.0, 35.0, 20.0, main);
-        line(18.0, 40.0, 18.0, 20.0, main);
-        line(30.0, 20.0, 30.0, 15.0, main);
-        // Thin lines: the rows of the left part, the cells of the letter.
+        self.line((50.0, 40.0), (50.0, 0.0), main);
+        self.line((35.0, 40.0), (35.0, 20.0), main);
+        self.line((18.0, 40.0), (18.0, 20.0), main);
+        self.line((30.0, 20.0), (30.0, 15.0), main);
         for y in [50.0, 45.0, 40.0, 25.0, 20.0, 15.0, 10.0, 5.0] {
-            line(BLOCK_W, y, 120.0, y, THIN);
+            self.line((BLOCK_W, y), (120.0, y), THIN);
         }
-        line(45.0, 35.0, 45.0, 20.0, THIN);
-        line(40.0, 35.0, 40.0, 20.0, THIN);
+        self.line((45.0, 35.0), (45.0, 20.0), THIN);
+        self.line((40.0, 35.0), (40.0, 20.0), THIN);
+    }
+
+    /// The form's words in `t.lang` and its fields from `t`, the format
+    /// `size` under the frame.
+    fn fill(&mut self, t: &TitleBlock, size: SheetSize) {
         let w = words(t.lang);
-        let mut text = |x: f64, y: f64, size: f64, anchor: &str, what: &str, class: &str| {
-            if what.is_empty() {
-                return;
-            }
-            let (a, b) = p(x, y);
-            let anchor = if anchor == "start" {
-                String::new()
-            } else {
-                format!(r#" text-anchor="{anchor}""#)
-            };
-            let _ = writeln!(
-                s,
-                r#"<text class="{class}" x="{a}" y="{b}" font-size="{}"{anchor}>{}</text>"#,
-                fmt(size),
-                xml(what)
-            );
+        let small = |b: &mut Block, at: (f64, f64), anchor: &str, what: &str| {
+            b.text(at, 2.0, anchor, what, "title-block");
         };
         // Headings of the columns (baselines 1.5 mm above a 5 mm row's
         // bottom, centred in their cells).
-        let heads = [
-            (181.5, w.change),
-            (173.0, w.sheet),
-            (156.5, w.document),
-            (137.5, w.signature),
-            (125.0, w.date),
-        ];
-        for (x, h) in heads {
-            text(x, 31.3, 2.0, "middle", h, "title-block");
+        for (x, h) in [181.5, 173.0, 156.5, 137.5, 125.0].into_iter().zip(w.heads) {
+            small(self, (x, 31.3), "middle", h);
         }
-        let roles = [
-            (26.3, w.author, t.author.as_deref()),
-            (21.3, w.checker, t.checker.as_deref()),
-            (16.3, w.technical, None),
-            (6.3, w.norm, None),
-            (1.3, w.approved, None),
-        ];
-        for (y, role, who) in roles {
-            text(184.0, y, 2.0, "start", role, "title-block");
+        let who = [t.author.as_deref(), t.checker.as_deref(), None, None, None];
+        for ((y, role), who) in [26.3, 21.3, 16.3, 6.3, 1.3]
+            .into_iter()
+            .zip(w.roles)
+            .zip(who)
+        {
+            small(self, (184.0, y), "start", role);
             if let Some(n) = who {
-                text(167.0, y, 2.5, "start", &fit(n, 18), "title-block-field");
+                self.text((167.0, y), 2.5, "start", &fit(n, 18), "title-block-field");
             }
         }
-        text(42.5, 36.3, 2.0, "middle", w.letter, "title-block");
-        text(26.5, 36.3, 2.0, "middle", w.mass, "title-block");
-        text(9.0, 36.3, 2.0, "middle", w.scale, "title-block");
-        text(
-            49.0,
-            16.3,
-            2.0,
+        for (x, cell) in [42.5, 26.5, 9.0].into_iter().zip(w.cells) {
+            small(self, (x, 36.3), "middle", cell);
+        }
+        // "Sheet 1": the sheet column's word and this sheet's number.
+        small(
+            self,
+            (49.0, 16.3),
             "start",
-            &format!("{} {}", w.sheet, t.sheet.0),
-            "title-block",
+            &format!("{} {}", w.heads[1], t.sheet.0),
         );
-        text(
-            29.0,
-            16.3,
-            2.0,
+        small(
+            self,
+            (29.0, 16.3),
             "start",
             &format!("{} {}", w.sheets, t.sheet.1),
-            "title-block",
         );
         // The fields.
-        text(
-            60.0,
-            45.5,
+        self.text(
+            (60.0, 45.5),
             5.0,
             "middle",
             &fit(&t.designation, 30),
@@ -216,20 +242,18 @@ impl Page {
         for (i, l) in title.iter().enumerate() {
             let n = title.len() as f64;
             let y = 27.5 + 2.6 * (n - 1.0) - 5.2 * i as f64;
-            text(85.0, y, 3.5, "middle", l, "drawing-title");
+            self.text((85.0, y), 3.5, "middle", l, "drawing-title");
         }
-        text(
-            9.0,
-            26.3,
+        self.text(
+            (9.0, 26.3),
             3.5,
             "middle",
             &fit(&t.scale, 8),
             "title-block-field",
         );
         for (i, l) in wrap(&t.organisation, 22, 2).iter().enumerate() {
-            text(
-                25.0,
-                9.0 - 4.5 * i as f64,
+            self.text(
+                (25.0, 9.0 - 4.5 * i as f64),
                 3.5,
                 "middle",
                 l,
@@ -237,20 +261,13 @@ impl Page {
             );
         }
         // Under the frame: the format, as ГОСТ 2.104 writes it there.
-        text(
-            40.0,
-            -3.8,
+        self.text(
+            (40.0, -3.8),
             2.5,
             "start",
-            &format!("{} {:?}", w.format, self.size),
+            &format!("{} {size:?}", w.format),
             "title-block",
         );
-        self.body.push_str(&s);
-    }
-
-    pub fn finish(mut self) -> String {
-        self.body.push_str("</svg>\n");
-        self.body
     }
 }
 
@@ -345,77 +362,45 @@ fn wrap(s: &str, width: usize, lines: usize) -> Vec<String> {
     out.into_iter().map(|l| fit(&l, width)).collect()
 }
 
-/// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian).
+/// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian),
+/// by where they stand.
 struct Words {
-    change: &'static str,
-    sheet: &'static str,
+    /// The columns' headings: change, sheet, document, signature, date.
+    heads: [&'static str; 5],
+    /// The rows' roles: drawn, checked, technical control, standards
+    /// control, approved.
+    roles: [&'static str; 5],
+    /// Over the letter, the mass and the scale.
+    cells: [&'static str; 3],
+    /// "Sheets" (their count) and "Format".
     sheets: &'static str,
-    document: &'static str,
-    signature: &'static str,
-    date: &'static str,
-    author: &'static str,
-    checker: &'static str,
-    technical: &'static str,
-    norm: &'static str,
-    approved: &'static str,
-    letter: &'static str,
-    mass: &'static str,
-    scale: &'static str,
     format: &'static str,
 }
 
 fn words(l: Lang) -> Words {
-    match l {
-        Lang::Ru => Words {
-            change: "Изм.",
-            sheet: "Лист",
-            sheets: "Листов",
-            document: "№ докум.",
-            signature: "Подп.",
-            date: "Дата",
-            author: "Разраб.",
-            checker: "Пров.",
-            technical: "Т.контр.",
-            norm: "Н.контр.",
-            approved: "Утв.",
-            letter: "Лит.",
-            mass: "Масса",
-            scale: "Масштаб",
-            format: "Формат",
-        },
-        Lang::Uk => Words {
-            change: "Зм.",
-            sheet: "Арк.",
-            sheets: "Аркушів",
-            document: "№ докум.",
-            signature: "Підп.",
-            date: "Дата",
-            author: "Розроб.",
-            checker: "Перев.",
-            technical: "Т.контр.",
-            norm: "Н.контр.",
-            approved: "Затв.",
-            letter: "Літ.",
-            mass: "Маса",
-            scale: "Масштаб",
-            format: "Формат",
-        },
-        Lang::En => Words {
-            change: "Rev.",
-            sheet: "Sheet",
-            sheets: "Sheets",
-            document: "Doc. No.",
-            signature: "Sign.",
-            date: "Date",
-            author: "Drawn",
-            checker: "Checked",
-            technical: "Tech.",
-            norm: "Std. ctrl.",
-            approved: "Approved",
-            letter: "Letter",
-            mass: "Mass",
-            scale: "Scale",
-            format: "Format",
-        },
+    let k = match l {
+        Lang::En => 0,
+        Lang::Uk => 1,
+        Lang::Ru => 2,
+    };
+    // Each group in English, Ukrainian and Russian.
+    Words {
+        heads: [
+            ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"],
+            ["Зм.", "Арк.", "№ докум.", "Підп.", "Дата"],
+            ["Изм.", "Лист", "№ докум.", "Подп.", "Дата"],
+        ][k],
+        roles: [
+            ["Drawn", "Checked", "Tech.", "Std. ctrl.", "Approved"],
+            ["Розроб.", "Перев.", "Т.контр.", "Н.контр.", "Затв."],
+            ["Разраб.", "Пров.", "Т.контр.", "Н.контр.", "Утв."],
+        ][k],
+        cells: [
+            ["Letter", "Mass", "Scale"],
+            ["Літ.", "Маса", "Масштаб"],
+            ["Лит.", "Масса", "Масштаб"],
+        ][k],
+        sheets: ["Sheets", "Аркушів", "Листов"][k],
+        format: ["Format", "Формат", "Формат"][k],
     }
 }

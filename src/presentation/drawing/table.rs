@@ -5,9 +5,10 @@
 //! sign.
 
 use super::canvas::{Canvas, Line, SMALL, runs_width};
-use crate::kinematics::construction::text::{Lang, num};
+use crate::format::num;
 use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PointId};
-use crate::presentation::notation::runs;
+use crate::words::construction::Lang;
+use crate::words::notation::runs;
 use kurbo::Point;
 
 /// Row height and the space around a cell's text, mm.

@@ -1,8 +1,9 @@
 //! The measurement: every method run on the scene's positions, its errors
 //! against the extended-precision reference and its run time, as rows.
 
-use super::{Report, Row, Settings, Stat, sci};
+use super::{Report, Row, Settings, Stat};
 use crate::error::{Error, Result};
+use crate::format::sci;
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings as NewtonSettings};
 use crate::kinematics::analytic::{Drive, Motion, Order, contour};
@@ -121,8 +122,18 @@ fn time_per_call(min_time: f64, mut f: impl FnMut() -> Result<()>) -> Result<f64
     Ok(best)
 }
 
-/// Run every method on the scene.
+/// Run every method on the scene (as [`run_watched`], watched by no one).
 pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
+    run_watched(an, set, &crate::progress::Silent)
+}
+
+/// Run every method on the scene, the reference solutions' sweep told
+/// to `progress`.
+pub fn run_watched(
+    an: &Analysis,
+    set: &Settings,
+    progress: &dyn crate::progress::Progress,
+) -> Result<Report> {
     let m = &an.mech;
     if m.scene.several_inputs() {
         return Err(Error::scene(
@@ -142,7 +153,7 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     let links: Vec<usize> = (0..m.links.len())
         .filter(|&l| an.link(l) && l != m.frame())
         .collect();
-    let truth = truths(an, &qs, &links)?;
+    let truth = truths(an, &qs, &links, progress)?;
     let bench = Bench {
         an,
         set,
@@ -183,12 +194,18 @@ pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
 }
 
 /// The reference at every evaluation position `qs`: the starts in order
-/// (on the sketch's branch), then each refined on its own, in parallel.
-fn truths(an: &Analysis, qs: &[f64], links: &[usize]) -> Result<Vec<Truth>> {
+/// (on the sketch's branch), then each refined on its own, in parallel,
+/// the sweep told to `progress`.
+fn truths(
+    an: &Analysis,
+    qs: &[f64],
+    links: &[usize],
+    progress: &dyn crate::progress::Progress,
+) -> Result<Vec<Truth>> {
     let m = &an.mech;
     let mut re = Reference::new(an)?;
     let starts: Vec<(f64, Configuration)> = qs.iter().copied().zip(re.starts(qs)?).collect();
-    crate::progress::map(&starts, "reference", |(q, c)| -> Result<Truth> {
+    crate::progress::map(&starts, "reference", progress, |(q, c)| -> Result<Truth> {
         let st: RefState = re.refine(&Real::from_f64(*q), c)?;
         let q = *q;
         let points: Vec<_> = an.points.iter().map(|&p| st.point(an, p)).collect();

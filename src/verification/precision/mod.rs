@@ -24,13 +24,11 @@
 //! positions (and seeds) and the items.
 //!
 //! The measurement gives rows of numbers (`measure`); the report's table
-//! and plot render them (`render`).
+//! and plot are presentation's (`crate::presentation::precision`).
 
 mod measure;
-mod render;
 
-pub use measure::run;
-pub use render::{sci, time_str, to_markdown, to_svg};
+pub use measure::{run, run_watched};
 
 /// What to run.
 #[derive(Clone, Debug)]

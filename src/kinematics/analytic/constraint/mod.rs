@@ -256,7 +256,7 @@ impl<'a> ConstraintSolver<'a> {
         } else {
             Err(format!(
                 "Newton's method did not converge (residual {})",
-                crate::presentation::quantity::format_quantity(r, "")
+                crate::format::format_quantity(r, "")
             ))
         }
     }

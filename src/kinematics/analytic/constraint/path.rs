@@ -280,7 +280,7 @@ impl ConstraintSolver<'_> {
         format!(
             "the assembly cannot be followed past {} (steps down to {}{unit} do not converge on it)",
             describe_input(m, &path.at(x)),
-            crate::presentation::quantity::format_quantity(h, "")
+            crate::format::format_quantity(h, "")
         )
     }
 }

@@ -4,7 +4,8 @@
 //! both the placing of labels and the writing of SVG measure text by, so
 //! that a label's box and its drawn text agree.
 
-use crate::presentation::notation::{Pos, Run};
+pub use crate::words::Label;
+use crate::words::notation::{Pos, Run};
 
 /// Advance width of a glyph of DejaVu Sans in em, a little generous.
 pub(super) fn char_width(c: char) -> f64 {
@@ -43,21 +44,6 @@ pub fn runs_width(rs: &[Run], size: f64) -> f64 {
     total
 }
 
-/// A label: letters and a subscript.
-#[derive(Clone, Debug)]
-pub struct Label {
-    pub base: String,
-    pub sub: String,
-    /// A superscript over the subscript (R^τ_12: the component of a
-    /// reaction); empty on most labels.
-    pub sup: String,
-    /// Plain text after the subscript.
-    pub tail: String,
-    /// Further names sharing the label, each with its subscript
-    /// (", o₁, o₂").
-    pub more: Vec<(String, String)>,
-}
-
 impl Label {
     /// A bare number: a link's or a position's.
     pub(super) fn is_number(&self) -> bool {
@@ -69,29 +55,6 @@ impl Label {
             && self.more.is_empty()
     }
 
-    pub fn new(base: impl Into<String>, sub: impl Into<String>) -> Label {
-        Label {
-            base: base.into(),
-            sub: sub.into(),
-            sup: String::new(),
-            tail: String::new(),
-            more: Vec::new(),
-        }
-    }
-    /// Another name at the same place: "p_v, o₁".
-    pub fn and(mut self, base: impl Into<String>, sub: impl Into<String>) -> Label {
-        self.more.push((base.into(), sub.into()));
-        self
-    }
-    /// The superscript stacked over the subscript: R^τ_12.
-    pub fn with_sup(mut self, sup: impl Into<String>) -> Label {
-        self.sup = sup.into();
-        self
-    }
-    pub fn with_tail(mut self, tail: impl Into<String>) -> Label {
-        self.tail = tail.into();
-        self
-    }
     /// How much higher than a plain label's its box reaches (mm): a
     /// superscript stands above the capitals.
     pub fn rise(&self, size: f64) -> f64 {

@@ -4,22 +4,15 @@
 //! ([`fmt`]: 0.01 mm, no trailing zeros, no "-0") and every text through
 //! [`xml`], so the output is byte-stable.
 
-use super::label::char_width;
-use super::{ARROW_WIDTH, BOLD, Canvas, Class, MAIN, Prim, THIN};
-use crate::presentation::notation::{Pos, Run};
+use super::label::{Label, char_width};
+use super::primitives::{ARROW_WIDTH, BOLD, Canvas, Class, Line, MAIN, Prim, THIN};
+use crate::words::notation::{Pos, Run};
 use kurbo::{Point, Vec2};
 use std::fmt::Write as _;
 
 /// Numbers as 0.01 mm, no trailing zeros, no "-0": byte-stable output.
 pub fn fmt(x: f64) -> String {
-    let r = (x * 100.0).round() / 100.0;
-    let s = format!("{r:.2}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" || s.is_empty() {
-        "0".to_string()
-    } else {
-        s.to_string()
-    }
+    crate::format::fixed((x * 100.0).round() / 100.0, 2)
 }
 
 /// How far a subscript sinks and a superscript rises, in font sizes:
@@ -89,41 +82,12 @@ impl Canvas {
     /// Write the primitives as SVG elements, drawing coordinates mapped to
     /// the page by x ↦ ox + x, y ↦ oy − y.
     pub fn write(&self, out: &mut String, ox: f64, oy: f64) {
-        let px = |p: Point| format!("{} {}", fmt(ox + p.x), fmt(oy - p.y));
+        let o = Origin { ox, oy };
         for p in &self.prims {
             match p {
-                Prim::Seg { a, b, class, id } => {
-                    let w = match class {
-                        Class::Thin | Class::Hatch => THIN,
-                        Class::Bold => BOLD,
-                        Class::Main | Class::Vector => MAIN,
-                    };
-                    let cls = match class {
-                        Class::Main => "main",
-                        Class::Vector => "vector",
-                        Class::Thin => "thin",
-                        Class::Hatch => "hatch",
-                        Class::Bold => "bold",
-                    };
-                    // A student's marks (check --svg) in red.
-                    let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
-                        "#c00000"
-                    } else {
-                        "black"
-                    };
-                    let id = id_attr(id);
-                    let _ = writeln!(
-                        out,
-                        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="{color}" stroke-width="{}" stroke-linecap="round"/>"#,
-                        fmt(ox + a.x),
-                        fmt(oy - a.y),
-                        fmt(ox + b.x),
-                        fmt(oy - b.y),
-                        fmt(w)
-                    );
-                }
+                Prim::Seg { a, b, class, id } => seg_svg(out, o, (*a, *b), *class, id),
                 Prim::Poly { pts, fill, stroke } => {
-                    let d: Vec<String> = pts.iter().map(|q| px(*q)).collect();
+                    let d: Vec<String> = pts.iter().map(|q| o.xy(*q)).collect();
                     let stroke = stroke_attr(*stroke);
                     let _ = writeln!(
                         out,
@@ -143,63 +107,24 @@ impl Canvas {
                     let _ = writeln!(
                         out,
                         r#"<circle{id} cx="{}" cy="{}" r="{}" fill="{fill}"{stroke}/>"#,
-                        fmt(ox + c.x),
-                        fmt(oy - c.y),
+                        o.x(*c),
+                        o.y(*c),
                         fmt(*r)
                     );
                 }
-                Prim::Path { pts, line } => {
-                    let mut d = String::new();
-                    for (i, q) in pts.iter().enumerate() {
-                        d += if i == 0 { "M" } else { " L" };
-                        d += &px(*q);
-                    }
-                    let len: f64 = pts.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
-                    let dash = line.dash_array(len);
-                    let dash = if dash.is_empty() {
-                        String::new()
-                    } else {
-                        let v: Vec<String> = dash.iter().map(|x| fmt(*x)).collect();
-                        format!(r#" stroke-dasharray="{}""#, v.join(" "))
-                    };
-                    let _ = writeln!(
-                        out,
-                        r#"<path class="{}" d="{d}" fill="none" stroke="black" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
-                        line.class(),
-                        fmt(line.width())
-                    );
-                }
+                Prim::Path { pts, line } => path_svg(out, o, pts, *line),
                 Prim::Arrow { tip, dir } => {
                     let back = *tip - *dir;
                     let n = Vec2::new(-dir.y, dir.x) * ARROW_WIDTH;
                     let _ = writeln!(
                         out,
                         r#"<polygon class="arrow" points="{} {} {}" fill="black"/>"#,
-                        px(*tip),
-                        px(back + n),
-                        px(back - n)
+                        o.xy(*tip),
+                        o.xy(back + n),
+                        o.xy(back - n)
                     );
                 }
-                Prim::Arc { c, r, a0, sweep } => {
-                    let p0 = *c + Vec2::from_angle(*a0) * *r;
-                    let p1 = *c + Vec2::from_angle(a0 + sweep) * *r;
-                    // In page coordinates y is flipped: a CCW sweep is sweep-flag 0.
-                    let large = if sweep.abs() > std::f64::consts::PI {
-                        1
-                    } else {
-                        0
-                    };
-                    let flag = if *sweep > 0.0 { 0 } else { 1 };
-                    let _ = writeln!(
-                        out,
-                        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
-                        px(p0),
-                        fmt(*r),
-                        fmt(*r),
-                        px(p1),
-                        fmt(THIN)
-                    );
-                }
+                Prim::Arc { c, r, a0, sweep } => arc_svg(out, o, *c, *r, (*a0, *sweep)),
                 Prim::Rich {
                     at,
                     runs,
@@ -215,8 +140,8 @@ impl Canvas {
                     let _ = writeln!(
                         out,
                         r#"<text class="{class}" x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
-                        fmt(ox + at.x),
-                        fmt(oy - at.y),
+                        o.x(*at),
+                        o.y(*at),
                         fmt(*size),
                         runs_svg(runs, *size)
                     );
@@ -229,40 +154,6 @@ impl Canvas {
                     class,
                 } => {
                     let id = id_attr(id);
-                    // A subscript, when there is one.
-                    let sub = |s: &str| {
-                        if s.is_empty() {
-                            String::new()
-                        } else {
-                            format!(
-                                r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
-                                fmt(size * 0.7),
-                                xml(s)
-                            )
-                        }
-                    };
-                    let more: String = label
-                        .more
-                        .iter()
-                        .map(|(b, s)| format!("<tspan>, {}</tspan>{}", xml(b), sub(s)))
-                        .collect();
-                    // A superscript stacks over the subscript, as the
-                    // lecture's runs do (R^τ_12); else the base as it is.
-                    let (base, sub) = if label.sup.is_empty() {
-                        (xml(&label.base), sub(&label.sub))
-                    } else {
-                        let rs = vec![
-                            (Pos::Base, label.base.clone()),
-                            (Pos::Sup, label.sup.clone()),
-                            (Pos::Sub, label.sub.clone()),
-                        ];
-                        (runs_svg(&rs, *size), String::new())
-                    };
-                    let tail = if label.tail.is_empty() {
-                        String::new()
-                    } else {
-                        format!("<tspan>{}</tspan>", xml(&label.tail))
-                    };
                     let fill = if *class == "student" {
                         r##" fill="#c00000""##
                     } else {
@@ -270,16 +161,154 @@ impl Canvas {
                     };
                     let _ = writeln!(
                         out,
-                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}{sub}{more}{tail}</text>"#,
-                        fmt(ox + at.x),
-                        fmt(oy - at.y),
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}</text>"#,
+                        o.x(*at),
+                        o.y(*at),
                         fmt(*size),
-                        base
+                        label_svg(label, *size)
                     );
                 }
             }
         }
     }
+}
+
+/// Where the drawing's origin is on the page: a drawing point (x, y) is
+/// written at (ox + x, oy − y).
+#[derive(Clone, Copy)]
+struct Origin {
+    ox: f64,
+    oy: f64,
+}
+
+impl Origin {
+    fn x(self, p: Point) -> String {
+        fmt(self.ox + p.x)
+    }
+    fn y(self, p: Point) -> String {
+        fmt(self.oy - p.y)
+    }
+    /// "x y" on the page.
+    fn xy(self, p: Point) -> String {
+        format!("{} {}", self.x(p), self.y(p))
+    }
+}
+
+/// A segment `ab` as a line of its class's weight; a student's marks
+/// (check --svg, ids "student-…") in red.
+fn seg_svg(out: &mut String, o: Origin, (a, b): (Point, Point), class: Class, id: &Option<String>) {
+    let w = match class {
+        Class::Thin | Class::Hatch => THIN,
+        Class::Bold => BOLD,
+        Class::Main | Class::Vector => MAIN,
+    };
+    let cls = match class {
+        Class::Main => "main",
+        Class::Vector => "vector",
+        Class::Thin => "thin",
+        Class::Hatch => "hatch",
+        Class::Bold => "bold",
+    };
+    let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
+        "#c00000"
+    } else {
+        "black"
+    };
+    let id = id_attr(id);
+    let _ = writeln!(
+        out,
+        r#"<line class="{cls}"{id} x1="{}" y1="{}" x2="{}" y2="{}" stroke="{color}" stroke-width="{}" stroke-linecap="round"/>"#,
+        o.x(a),
+        o.y(a),
+        o.x(b),
+        o.y(b),
+        fmt(w)
+    );
+}
+
+/// A polyline of one line type, its dashes fitted to its length.
+fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: Line) {
+    let mut d = String::new();
+    for (i, q) in pts.iter().enumerate() {
+        d += if i == 0 { "M" } else { " L" };
+        d += &o.xy(*q);
+    }
+    let len: f64 = pts.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+    let dash = line.dash_array(len);
+    let dash = if dash.is_empty() {
+        String::new()
+    } else {
+        let v: Vec<String> = dash.iter().map(|x| fmt(*x)).collect();
+        format!(r#" stroke-dasharray="{}""#, v.join(" "))
+    };
+    let _ = writeln!(
+        out,
+        r#"<path class="{}" d="{d}" fill="none" stroke="black" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
+        line.class(),
+        fmt(line.width())
+    );
+}
+
+/// A thin circular arc about `c` of radius `r` from angle `a0` swept by
+/// `sweep` (rad, CCW positive).
+fn arc_svg(out: &mut String, o: Origin, c: Point, r: f64, (a0, sweep): (f64, f64)) {
+    let p0 = c + Vec2::from_angle(a0) * r;
+    let p1 = c + Vec2::from_angle(a0 + sweep) * r;
+    // In page coordinates y is flipped: a CCW sweep is sweep-flag 0.
+    let large = if sweep.abs() > std::f64::consts::PI {
+        1
+    } else {
+        0
+    };
+    let flag = if sweep > 0.0 { 0 } else { 1 };
+    let _ = writeln!(
+        out,
+        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
+        o.xy(p0),
+        fmt(r),
+        fmt(r),
+        o.xy(p1),
+        fmt(THIN)
+    );
+}
+
+/// A label's content as tspans: the base with its subscript (a
+/// superscript stacked over the subscript, as the lecture's runs do:
+/// R^τ_12), more names after commas, the tail.
+fn label_svg(label: &Label, size: f64) -> String {
+    // A subscript, when there is one.
+    let sub = |s: &str| {
+        if s.is_empty() {
+            String::new()
+        } else {
+            format!(
+                r#"<tspan baseline-shift="sub" font-size="{}">{}</tspan>"#,
+                fmt(size * 0.7),
+                xml(s)
+            )
+        }
+    };
+    let more: String = label
+        .more
+        .iter()
+        .map(|(b, s)| format!("<tspan>, {}</tspan>{}", xml(b), sub(s)))
+        .collect();
+    let (base, sub) = if label.sup.is_empty() {
+        (xml(&label.base), sub(&label.sub))
+    } else {
+        let rs = vec![
+            (Pos::Base, label.base.clone()),
+            (Pos::Sup, label.sup.clone()),
+            (Pos::Sub, label.sub.clone()),
+        ];
+        (runs_svg(&rs, size), String::new())
+    };
+    let tail = if label.tail.is_empty() {
+        String::new()
+    } else {
+        format!("<tspan>{}</tspan>", xml(&label.tail))
+    };
+    format!("{base}{sub}{more}{tail}")
 }
 
 /// ` id="…"` of an element that has an id, else nothing.

@@ -1,0 +1,234 @@
+//! Reading a student's force plan: a JSON answer (`"plan": "force"`) or
+//! a drawing from a vector editor that states μ_F.
+
+use crate::error::{Error, Issue, Result};
+use crate::json::parse_strict;
+use serde_json::{Map, Value};
+
+/// A student's force plan.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceAnswer {
+    pub position: usize,
+    /// The links of the plan (a group's, or the input link).
+    pub links: Vec<String>,
+    /// μ_F, N/mm.
+    pub mu: f64,
+    /// Pencil precision δ, mm.
+    pub delta: f64,
+    /// μ_l of the student's drawing of the mechanism (m/mm): the arms of
+    /// the moment equations were measured on it.
+    pub mu_l: Option<f64>,
+    /// (JSON pointer, force key, given).
+    pub segments: Vec<(String, String, f64)>,
+    pub angles: Vec<(String, String, f64)>,
+    pub values: Vec<(String, String, f64)>,
+}
+
+pub(super) fn issue(at: &str, msg: impl Into<String>) -> Issue {
+    Issue {
+        pointer: at.to_string(),
+        message: msg.into(),
+    }
+}
+
+/// Whether an answer's text is a force plan's (`"plan": "force"`).
+pub fn is_force_answer(text: &str) -> bool {
+    serde_json::from_str::<Value>(text)
+        .ok()
+        .is_some_and(|v| v.get("plan").and_then(Value::as_str) == Some("force"))
+}
+
+/// Read a force-plan answer, every problem with its JSON pointer.
+pub fn from_json(text: &str) -> Result<ForceAnswer> {
+    crate::grading::answer::check_size(text.len() as u64)?;
+    let v = parse_strict(text).map_err(Error::json)?;
+    let mut issues = Vec::new();
+    let Some(o) = v.as_object() else {
+        return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
+    };
+    const FIELDS: [&str; 10] = [
+        "plan", "position", "links", "mu", "delta", "mu_l", "segments", "angles", "values", "title",
+    ];
+    for k in o.keys() {
+        if !FIELDS.contains(&k.as_str()) {
+            issues.push(issue(
+                &format!("/{k}"),
+                format!("unknown field \"{k}\" (allowed: {})", FIELDS.join(", ")),
+            ));
+        }
+    }
+    let position = super::super::answer::position(o, &mut issues).unwrap_or(1);
+    let links = links(o, &mut issues);
+    let mu = positive(o, "mu", &mut issues).filter(|&m| {
+        // A scale no drawing has (a subnormal, 10³⁰⁰ N/mm) makes every
+        // segment nothing or infinite: refused, never judged.
+        let sane = (1e-6..=1e9).contains(&m);
+        if !sane {
+            issues.push(issue(
+                "/mu",
+                format!("μ_F = {m} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"),
+            ));
+        }
+        sane
+    });
+    if !o.contains_key("mu") {
+        issues.push(issue(
+            "/mu",
+            "missing: the scale μ_F of your force plan (N/mm)",
+        ));
+    }
+    let delta = positive(o, "delta", &mut issues).unwrap_or(0.5);
+    let mu_l = positive(o, "mu_l", &mut issues);
+    let segments = table(o, "segments", &mut issues);
+    let angles = table(o, "angles", &mut issues);
+    let values = table(o, "values", &mut issues);
+    for (at, _, x) in &segments {
+        if *x < 0.0 {
+            issues.push(issue(at, "a segment's length is not negative"));
+        }
+    }
+    if segments.is_empty() && angles.is_empty() && values.is_empty() {
+        issues.push(issue(
+            "",
+            "nothing to check: give segments (mm), angles (degrees) or values (N, N·m)",
+        ));
+    }
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
+    }
+    Ok(ForceAnswer {
+        position,
+        links,
+        mu: mu.expect("checked"),
+        delta,
+        mu_l,
+        segments,
+        angles,
+        values,
+    })
+}
+
+/// The answer's field `k`, a positive number when given.
+fn positive(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Option<f64> {
+    let x = o.get(k)?;
+    match x.as_f64() {
+        Some(x) if x.is_finite() && x > 0.0 => Some(x),
+        _ => {
+            issues.push(issue(&format!("/{k}"), "expected a positive number"));
+            None
+        }
+    }
+}
+
+/// The ids of the plan's links.
+fn links(o: &Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<String> {
+    match o.get("links").and_then(Value::as_array) {
+        Some(a) if !a.is_empty() && a.iter().all(Value::is_string) => a
+            .iter()
+            .map(|x| x.as_str().unwrap_or_default().to_string())
+            .collect(),
+        _ => {
+            issues.push(issue(
+                "/links",
+                "missing or wrong: the ids of the plan's links, as in the scene (a group's two, or the input link's)",
+            ));
+            Vec::new()
+        }
+    }
+}
+
+/// The answer's object `k` of force names to numbers, as (pointer, name,
+/// number).
+fn table(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Vec<(String, String, f64)> {
+    let Some(x) = o.get(k) else { return Vec::new() };
+    let Some(t) = x.as_object() else {
+        issues.push(issue(
+            &format!("/{k}"),
+            "expected an object of force names to numbers",
+        ));
+        return Vec::new();
+    };
+    t.iter()
+        .filter_map(|(name, x)| {
+            let at = format!("/{k}/{name}");
+            match x.as_f64().filter(|x| x.is_finite()) {
+                Some(x) => Some((at, name.clone(), x)),
+                None => {
+                    issues.push(issue(&at, "expected a finite number"));
+                    None
+                }
+            }
+        })
+        .collect()
+}
+
+/// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").
+pub fn is_force_svg(text: &str) -> bool {
+    crate::grading::svg::parse(text)
+        .ok()
+        .is_some_and(|d| crate::grading::svg::stated_mu(&d.labels, "_F").is_some())
+}
+
+/// How far from the middle of its vector a force's label may be, mm.
+const SNAP_MM: f64 = 10.0;
+
+/// A force plan drawn in a vector editor: its vectors as lines (a path or
+/// a line element each, or a path's segments), each labelled with the
+/// force's name (`R_34`, `R34`, `Φ4` …) near its middle, and the scale
+/// written on it ("μ_F = 2 N/mm"; `mu` overrides). Read: each label's
+/// nearest segment (by its middle, within 10 mm) gives the force's length;
+/// the plan is the one whose forces the labels name (no `links` needed).
+pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Result<ForceAnswer> {
+    let bad = |m: String| {
+        Error::fields(vec![Issue {
+            pointer: "svg".into(),
+            message: m,
+        }])
+    };
+    let d = crate::grading::svg::parse(text)?;
+    let Some(mu) = mu.or_else(|| crate::grading::svg::stated_mu(&d.labels, "_F")) else {
+        return Err(bad(
+            "no scale: write \"μ_F = … N/mm\" on the drawing or give --mu".into(),
+        ));
+    };
+    if !(mu.is_finite() && (1e-6..=1e9).contains(&mu)) {
+        return Err(bad(format!(
+            "μ_F = {mu} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"
+        )));
+    }
+    let segments: Vec<(kurbo::Point, kurbo::Point)> = d
+        .lines
+        .iter()
+        .flat_map(|l| l.windows(2).map(|w| (w[0], w[1])))
+        .filter(|(a, b)| (*b - *a).hypot() > 0.0)
+        .collect();
+    let mut items = Vec::new();
+    for (name, at) in &d.labels {
+        if name.is_empty() || name.contains('=') {
+            continue;
+        }
+        let nearest = segments
+            .iter()
+            .map(|(a, b)| ((a.midpoint(*b) - *at).hypot(), (*b - *a).hypot()))
+            .filter(|(dist, _)| dist.is_finite() && *dist <= SNAP_MM)
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((_, len)) = nearest {
+            items.push((format!("svg: label {name}"), name.clone(), len));
+        }
+    }
+    if items.is_empty() {
+        return Err(bad(
+            "no force's label next to the middle of a line: label each vector with its force's name (R_34 …)".into(),
+        ));
+    }
+    Ok(ForceAnswer {
+        position,
+        links: Vec::new(),
+        mu,
+        delta,
+        mu_l: None,
+        segments: items,
+        angles: Vec::new(),
+        values: Vec::new(),
+    })
+}

@@ -1,0 +1,266 @@
+//! The answer's items as a construction expects them: the plan point a
+//! name stands for, each item's expected value, tolerance and the least
+//! difference the pencil can show.
+
+use super::answer::{self, Given, Quantity};
+use crate::error::Issue;
+use crate::kinematics::construction::{Plan, PlanKind};
+use crate::kinematics::solve::Analysis;
+use kurbo::Vec2;
+
+/// Resolve a name of the answer to a plan point: the pole's names, named
+/// points (their lower-case names), construction points (n2, k3, b3 or
+/// their keys n_2, k_3, b_3).
+pub fn resolve(plan: &Plan, name: &str) -> Option<usize> {
+    let n = name.trim().to_lowercase();
+    if ["p", "pv", "p_v", "pa", "p_a", "π"].contains(&n.as_str()) {
+        return Some(0);
+    }
+    let named = |p: &crate::kinematics::construction::PlanPoint| p.key.to_lowercase() == n;
+    if let Some(i) = plan.points.iter().position(named) {
+        return Some(i);
+    }
+    plan.points
+        .iter()
+        .position(|p| p.name().to_lowercase() == n || p.key.replace('_', "").to_lowercase() == n)
+}
+
+/// One item on one plan: what it is, its expected value and tolerance,
+/// the given value (compared modulo a turn for directions), the unit, how
+/// small a difference the pencil can show in that unit, the item in mm on
+/// the plan, and the plan point whose step draws it.
+pub(super) struct Expected {
+    pub(super) what: String,
+    pub(super) expected: f64,
+    pub(super) given: f64,
+    pub(super) tol: f64,
+    pub(super) unit: &'static str,
+    /// The pencil precision δ in the item's unit: a mistake that moves the
+    /// item by less cannot be seen on paper.
+    pub(super) visible: f64,
+    /// (expected, given) in mm on the plan.
+    pub(super) on_plan: Option<(f64, f64)>,
+    pub(super) point: Option<usize>,
+    /// For a point: where this plan has it (mm from the pole).
+    pub(super) place: Option<Vec2>,
+}
+
+impl Expected {
+    /// How far another construction's expectation of this item is from
+    /// this one's.
+    pub(super) fn moved(&self, other: &Expected) -> f64 {
+        match (self.place, other.place) {
+            (Some(a), Some(b)) => (a - b).hypot(),
+            _ => (self.expected - other.expected).abs(),
+        }
+    }
+}
+
+/// The expected value and tolerance of an item on `plan`; `Err` names an
+/// unknown letter or link.
+pub(super) fn expect(
+    an: &Analysis,
+    plan: &Plan,
+    it: &answer::Item,
+    delta: f64,
+) -> std::result::Result<Expected, Issue> {
+    let on = On {
+        an,
+        plan,
+        it,
+        delta,
+    };
+    match &it.given {
+        Given::Segment { from, mm, .. } => on.segment(from, *mm),
+        Given::Angle { from, deg, .. } => on.angle(from, *deg),
+        Given::Point { name, at } => on.point(name, *at),
+        Given::Value {
+            quantity: Quantity::Point(name),
+            value,
+        } => on.point_value(name, *value),
+        Given::Value {
+            quantity: Quantity::Rate(id),
+            value,
+        } => on.rate(id, *value),
+    }
+}
+
+/// An item `it` on `plan`, the pencil precision `delta`.
+struct On<'a> {
+    an: &'a Analysis,
+    plan: &'a Plan,
+    it: &'a answer::Item,
+    delta: f64,
+}
+
+impl On<'_> {
+    /// The item's problem `message`.
+    fn issue(&self, message: String) -> Issue {
+        Issue {
+            pointer: self.it.pointer.clone(),
+            message,
+        }
+    }
+
+    fn unknown(&self, n: &str) -> Issue {
+        self.issue(format!(
+            "unknown plan point \"{n}\" (this plan has: {})",
+            names(self.plan)
+        ))
+    }
+
+    /// The two plan points of segment `key`.
+    fn ends(&self, key: &str) -> std::result::Result<(usize, usize), Issue> {
+        let plan = self.plan;
+        let known = |s: &str| resolve(plan, s).is_some();
+        let (a, b) = answer::split_segment(key, &known).ok_or_else(|| {
+            self.issue(format!("cannot read \"{key}\" as two plan points; write them with a space, e.g. \"p_v b\" ({})", names(plan)))
+        })?;
+        Ok((
+            resolve(plan, &a).ok_or_else(|| self.unknown(&a))?,
+            resolve(plan, &b).ok_or_else(|| self.unknown(&b))?,
+        ))
+    }
+
+    /// A measured segment, mm.
+    fn segment(&self, from: &str, mm: f64) -> std::result::Result<Expected, Issue> {
+        let (p, delta) = (&self.plan.points, self.delta);
+        let (a, b) = self.ends(from)?;
+        let len = (p[b].at - p[a].at).hypot();
+        Ok(Expected {
+            what: format!("segment {}{}", p[a].name(), p[b].name()),
+            expected: len,
+            given: mm,
+            tol: p[a].err + p[b].err + delta,
+            unit: "mm",
+            visible: delta,
+            on_plan: Some((len, mm)),
+            point: Some(a.max(b)),
+            place: None,
+        })
+    }
+
+    /// A segment's direction, degrees, compared modulo a turn.
+    fn angle(&self, from: &str, deg: f64) -> std::result::Result<Expected, Issue> {
+        let (p, delta) = (&self.plan.points, self.delta);
+        let (a, b) = self.ends(from)?;
+        let d = p[b].at - p[a].at;
+        let len = d.hypot();
+        let deg_of = |mm: f64| {
+            if len > 0.0 {
+                (mm / len).min(std::f64::consts::PI).to_degrees()
+            } else {
+                180.0
+            }
+        };
+        let exp = d.atan2().to_degrees();
+        // Compare directions modulo a turn.
+        let given = exp + crate::geom::wrap_pi((deg - exp).to_radians()).to_degrees();
+        Ok(Expected {
+            what: format!("direction of {}{}", p[a].name(), p[b].name()),
+            expected: exp,
+            given,
+            tol: deg_of(p[a].err + p[b].err + delta),
+            unit: "°",
+            visible: deg_of(delta),
+            on_plan: None,
+            point: Some(a.max(b)),
+            place: None,
+        })
+    }
+
+    /// A plan point's place, mm from the pole.
+    fn point(&self, name: &str, at: [f64; 2]) -> std::result::Result<Expected, Issue> {
+        let (p, delta) = (&self.plan.points, self.delta);
+        let i = resolve(self.plan, name).ok_or_else(|| self.unknown(name))?;
+        // Distance from the expected place is the difference; "expected" 0.
+        let d = (Vec2::new(at[0], at[1]) - p[i].at).hypot();
+        Ok(Expected {
+            what: format!("point {} (off its place)", p[i].name()),
+            expected: 0.0,
+            given: d,
+            tol: p[i].err + delta,
+            unit: "mm",
+            visible: delta,
+            on_plan: Some((0.0, d)),
+            point: Some(i),
+            place: Some(p[i].at),
+        })
+    }
+
+    /// |v_X| or |a_X| of a named point.
+    fn point_value(&self, name: &str, value: f64) -> std::result::Result<Expected, Issue> {
+        let (plan, delta) = (self.plan, self.delta);
+        let (p, mu) = (&plan.points, plan.mu);
+        let m = &self.an.mech;
+        let pi = m
+            .scene
+            .point_index(name)
+            .ok_or_else(|| self.issue(format!("unknown point \"{name}\"")))?;
+        let i = plan.of_point[pi]
+            .ok_or_else(|| self.issue(format!("point \"{name}\" is not on this plan")))?;
+        let (sym, unit) = if plan.kind == PlanKind::Velocity {
+            ("v", "m/s")
+        } else {
+            ("a", "m/s²")
+        };
+        let len = p[i].at.hypot();
+        Ok(Expected {
+            what: format!("{sym}_{name}"),
+            expected: len * mu,
+            given: value,
+            tol: (p[i].err + delta) * mu,
+            unit,
+            visible: delta * mu,
+            on_plan: Some((len, value / mu)),
+            point: Some(i),
+            place: None,
+        })
+    }
+
+    /// ω or ε of a link (signed where the plan shows the sense).
+    fn rate(&self, id: &str, value: f64) -> std::result::Result<Expected, Issue> {
+        let (plan, delta) = (self.plan, self.delta);
+        let mu = plan.mu;
+        let m = &self.an.mech;
+        let l = m
+            .scene
+            .link_index(id)
+            .ok_or_else(|| self.issue(format!("unknown link \"{id}\"")))?;
+        let (r, bound) = plan.rates[l]
+            .ok_or_else(|| self.issue(format!("link {id} is not constructed on this plan")))?;
+        let (sym, unit) = if plan.kind == PlanKind::Velocity {
+            ("ω", "rad/s")
+        } else {
+            ("ε", "rad/s²")
+        };
+        let len = plan.rate_len[l];
+        let measured = plan
+            .measured
+            .iter()
+            .find(|q| q.quantity == format!("{sym}{id}"));
+        // A sense that cannot be read off this plan: magnitudes only.
+        let (r, given) = if plan.rate_sense[l] {
+            (r, value)
+        } else {
+            (r.abs(), value.abs())
+        };
+        Ok(Expected {
+            what: format!("{sym}{id}"),
+            expected: r,
+            given,
+            tol: bound,
+            unit,
+            visible: if len > 0.0 { delta * mu / len } else { bound },
+            on_plan: (len > 0.0).then(|| (r.abs() * len / mu, value.abs() * len / mu)),
+            point: measured.map(|q| q.to),
+            place: None,
+        })
+    }
+}
+
+fn names(plan: &Plan) -> String {
+    let mut v: Vec<String> = plan.points.iter().map(|p| p.name()).collect();
+    v.dedup();
+    v.join(", ")
+}

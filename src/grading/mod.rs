@@ -1,0 +1,137 @@
+//! Checking hand-drawn plans: the student's answer item by item against
+//! the construction at the student's own scale, with a tolerance from the
+//! drafting-error model of the best-conditioned construction (pencil
+//! precision δ propagated through it), a verdict that is never "right"
+//! where the tolerance cannot tell the right answer from a typical mistake,
+//! and a diagnosis by model selection: the plan rebuilt with each typical
+//! mistake, made at one element or everywhere, and the one whose
+//! construction explains the answer within its own tolerance, clearly
+//! better than any other, named with the step where it enters.
+//!
+//! By part: the verdicts and the report ([`Judgement`], [`Verdict`],
+//! [`Report`]), the items as a construction expects them (`items`), the
+//! mistaken constructions tried and what cannot be judged
+//! (`candidates`), the diagnosis (`diagnosis`). The verdict is data: its
+//! text, JSON and overlay sheet are presentation's
+//! (`crate::presentation::verdict`), reading the answer's file the front
+//! door's (`crate::study`).
+
+pub mod answer;
+mod candidates;
+mod diagnosis;
+pub mod forces;
+mod items;
+pub mod read;
+pub mod svg;
+mod verdict;
+
+pub use verdict::Candidate as Explanation;
+pub use items::resolve;
+pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
+
+use crate::error::{Error, Result};
+use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::{PlanKind, Variant};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::words::construction::{Lang, sentence};
+use answer::Answer;
+use candidates::{Builds, candidates, cannot_judge};
+use diagnosis::diagnose;
+use items::expect;
+
+/// Position `position` (from 1) of `solved`; a position the scene does
+/// not have is refused, naming the range.
+fn position_of(solved: &[Solved], position: usize) -> Result<&Solved> {
+    position
+        .checked_sub(1)
+        .and_then(|k| solved.get(k))
+        .ok_or_else(|| {
+            Error::scene(
+                "/position",
+                format!(
+                    "position {position} is not one of the scene's positions: they are numbered from 1 to {}",
+                    solved.len()
+                ),
+            )
+        })
+}
+
+/// Check `answer` against the scene's analysis.
+pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
+    let s = position_of(solved, ans.position)?;
+    if !an.plans
+        || an.order.is_none()
+        || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))
+    {
+        return Err(Error::scene(
+            "/plan",
+            "the scene's want.plans does not include this plan",
+        ));
+    }
+    for (id, _) in &ans.omegas {
+        if an.mech.scene.link_index(id).is_none() {
+            return Err(Error::scene(
+                format!("/velocity/values/omega{id}"),
+                format!("unknown link \"{id}\""),
+            ));
+        }
+    }
+    let b = Builds { an, s, ans };
+    let plan = b.plan(&s.config, Variant::default())?;
+    let mut exp = Vec::new();
+    let mut issues = Vec::new();
+    for it in &ans.items {
+        match expect(an, &plan, it, ans.delta) {
+            Ok(e) => exp.push(e),
+            Err(i) => issues.push(i),
+        }
+    }
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
+    }
+    let candidates = candidates(&b, &plan, &exp);
+    // The plan's size: the farthest of its points from the pole.
+    let size = plan.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+    let mut verdicts = Vec::new();
+    for (k, (it, e)) in ans.items.iter().zip(&exp).enumerate() {
+        let difference = (e.given - e.expected).abs();
+        let judgement = if difference > e.tol {
+            Judgement::Wrong
+        } else {
+            cannot_judge(k, e, size, plan.mu, &candidates, ans.mu)
+                .map(Judgement::CannotJudge)
+                .unwrap_or(Judgement::Right)
+        };
+        verdicts.push(Verdict {
+            pointer: it.pointer.clone(),
+            key: it.key.clone(),
+            what: e.what.clone(),
+            expected: e.expected,
+            given: e.given,
+            difference,
+            tolerance: e.tol,
+            unit: e.unit,
+            on_plan: e.on_plan,
+            step: e
+                .point
+                .and_then(|i| plan.step_of(i))
+                .map(|k| (k + 1, sentence(&plan, k, Lang::En))),
+            judgement,
+        });
+    }
+    let mut report = Report {
+        plan: ans.plan,
+        position: ans.position,
+        mu: ans.mu,
+        delta: ans.delta,
+        worst_angle: plan.worst_angle_deg(),
+        diagnosis: None,
+        verdicts,
+        plan_built: plan,
+    };
+    if report.wrong() > 0 {
+        report.diagnosis = Some(diagnose(&b, &report, &exp, &candidates));
+    }
+    Ok(report)
+}

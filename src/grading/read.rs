@@ -1,0 +1,55 @@
+//! An answer's text read, JSON or a drawing (SVG), with what the command
+//! line says over it ([`Reading`]).
+
+use super::answer::{Answer, check_size, from_json};
+use crate::error::{Error, Result};
+use crate::kinematics::construction::PlanKind;
+
+/// What the command line may say about an answer: an SVG's scale and plan
+/// where the drawing does not state them, the pencil's δ, the position
+/// (each overrides the answer's own).
+#[derive(Clone, Debug, Default)]
+pub struct Reading {
+    pub mu: Option<f64>,
+    pub plan: Option<PlanKind>,
+    pub delta: Option<f64>,
+    pub position: Option<usize>,
+}
+
+/// Read an answer's text — JSON, or an SVG drawn in a vector editor
+/// (`svg`: by its file's extension, or when its first character is `<`) —
+/// refusing one larger than [`super::answer::MAX_ANSWER_BYTES`]; its problems name the
+/// answer (`name`, its file). Reading the file is the front door's
+/// (`crate::study`).
+pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
+    let in_answer = crate::error::in_file(name);
+    check_size(text.len() as u64).map_err(&in_answer)?;
+    if let Some(d) = r.delta
+        && !(d.is_finite() && d > 0.0)
+    {
+        return Err(Error::scene(
+            "delta",
+            "the pencil precision must be a positive number of mm",
+        ));
+    }
+    let svg = svg || text.trim_start().starts_with('<');
+    let mut ans = if svg {
+        super::svg::from_svg(
+            text,
+            r.mu,
+            r.plan,
+            r.delta.unwrap_or(0.5),
+            r.position.unwrap_or(1),
+        )
+    } else {
+        from_json(text)
+    }
+    .map_err(&in_answer)?;
+    if let Some(d) = r.delta {
+        ans.delta = d;
+    }
+    if let Some(p) = r.position {
+        ans.position = p;
+    }
+    Ok(ans)
+}

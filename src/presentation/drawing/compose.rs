@@ -1,0 +1,416 @@
+//! The sheets a scene asks for, composed: which drawings, at which
+//! scales, on which sheet size; each position's mechanism, velocity and
+//! acceleration plans, the positions sheet, the course sheets, the force
+//! sheets and the levers.
+
+use super::canvas::Canvas;
+use super::layout::{
+    Pending, field_size, fill, fits, lower_scale, mechanism_canvases, mechanism_extent, render,
+    union,
+};
+use super::output::{DrawOptions, Sheet, SheetSize};
+use super::{course, course_forces, diagram, forces, lever, plan, positions, sheet, table};
+use super::{position_text, scale_text, words};
+use crate::error::{Error, Result};
+use crate::kinematics::analytic::Order;
+use crate::kinematics::construction::{Plan, PlanKind};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use kurbo::{Point, Rect};
+
+/// Whether the scene asks for drawing `d` (`want.drawings`; by default the
+/// plan of the mechanism and the plans wanted, plus the positions sheet
+/// when there are several positions).
+fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
+    let want = &an.mech.scene.want.drawings;
+    if want.is_empty() {
+        let has_vel = solved.first().is_some_and(|s| s.plans.is_some());
+        let has_acc = solved
+            .first()
+            .and_then(|s| s.plans.as_ref())
+            .is_some_and(|p| p.acceleration.is_some());
+        match d {
+            "mechanism" => true,
+            "velocity" => has_vel,
+            "acceleration" => has_acc,
+            "positions" => solved.len() > 1,
+            "lever" => solved.first().is_some_and(|s| s.dynamics.is_some()),
+            "forces" => solved
+                .first()
+                .and_then(|s| s.dynamics.as_ref())
+                .is_some_and(|d| d.force_plans.is_some()),
+            _ => false,
+        }
+    } else {
+        want.iter().any(|w| w == d)
+    }
+}
+
+/// The drawings a scene asks for (`want.drawings`; by default the plan
+/// of the mechanism and the plans wanted, plus the positions sheet when
+/// there are several positions), one sheet per drawing and position, on
+/// `opt.sheet`, each figure at the scale that fills its field; a μ_l the
+/// scene fixes that does not fit is replaced by the one that fills (the
+/// sheets say which). `mechplan draw` uses [`sheets_on`], which refuses
+/// instead.
+pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
+    match sheets_on(an, solved, opt, &[opt.sheet]) {
+        Ok((s, _)) => s,
+        Err(_) => compose(an, solved, opt, Scale::Fill).unwrap_or_default(),
+    }
+}
+
+/// How the mechanism's scale is chosen.
+#[derive(Clone, Copy, PartialEq)]
+enum Scale {
+    /// The scene's μ_l (`want.scales.mu_l`) when it gives one.
+    Scene,
+    /// Chosen to fill, whatever the scene says.
+    Fill,
+}
+
+/// The sheets, on the first of `sizes` whose field holds the mechanism's
+/// drawings at the μ_l the scene fixes (without one, the first size: the
+/// scale then fills it); with it, the size used. When a fixed μ_l fits
+/// none: a refusal with the reason (the drawing's size at that μ_l, the
+/// field's size, the smallest standard μ_l that fits the first of
+/// `sizes`, and the smallest sheet that would hold it).
+pub fn sheets_on(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    sizes: &[SheetSize],
+) -> Result<(Vec<Sheet>, SheetSize)> {
+    let first = sizes.first().copied().unwrap_or(opt.sheet);
+    let Some(mu_l) = an.mech.scene.want.scales.mu_l else {
+        let opt = DrawOptions {
+            sheet: first,
+            ..*opt
+        };
+        return Ok((compose(an, solved, &opt, Scale::Scene)?, first));
+    };
+    let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
+    let u = mechanism_union(an, solved, opt, mu_l, t.as_ref());
+    for &size in sizes {
+        let opt = DrawOptions {
+            sheet: size,
+            ..*opt
+        };
+        if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
+            return Ok((compose(an, solved, &opt, Scale::Scene)?, size));
+        }
+    }
+    Err(misfit(an, solved, opt, sizes, u, mu_l, t.as_ref()))
+}
+
+/// The extent of the mechanism's drawings at `mu_l`: every position's
+/// plan of the mechanism and, with trajectories `t`, the positions sheet.
+fn mechanism_union(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    mu_l: f64,
+    t: Option<&positions::Trajectories>,
+) -> Rect {
+    let mut u = union(&mechanism_canvases(an, solved, opt, mu_l));
+    if let Some(t) = t {
+        let mut c = Canvas::default();
+        positions::draw(an, solved, t, &mut c, mu_l);
+        u = u.union(c.bounds());
+    }
+    u
+}
+
+/// Why the mechanism's drawings at the scene's μ_l do not fit any of
+/// `sizes`, and what would.
+fn misfit(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    sizes: &[SheetSize],
+    u: Rect,
+    mu_l: f64,
+    t: Option<&positions::Trajectories>,
+) -> Error {
+    use crate::format::format_quantity as q;
+    let first = sizes.first().copied().unwrap_or(opt.sheet);
+    let last = sizes.last().copied().unwrap_or(opt.sheet);
+    let area_of = |sheet| field_size(&DrawOptions { sheet, ..*opt }, 0.0);
+    let (aw, ah) = area_of(first);
+    let e = mechanism_extent(an, solved);
+    let mu = fill(
+        lower_scale(e.width(), e.height(), (aw, ah)),
+        (aw, ah),
+        |mu| Some(mechanism_union(an, solved, opt, mu, t)),
+        |r| *r,
+    )
+    .map(|(mu, _)| mu)
+    .unwrap_or(f64::NAN);
+    // The smallest sheet holding it at this μ_l, beyond those tried.
+    let bigger = SheetSize::ALL
+        .into_iter()
+        .filter(|s| !sizes.contains(s))
+        .find(|&s| s.mm().0 > last.mm().0 && fits(u, area_of(s)));
+    let field = if sizes.len() > 1 {
+        let (w, h) = area_of(last);
+        format!(
+            "larger than the field of every sheet up to {last:?} ({} × {})",
+            q(w, "mm"),
+            q(h, "mm")
+        )
+    } else {
+        format!(
+            "larger than the field of sheet {first:?} ({} × {})",
+            q(aw, "mm"),
+            q(ah, "mm")
+        )
+    };
+    let mut msg = format!(
+        "the drawing of the mechanism at μ_l = {mu_l} m/mm (want.scales.mu_l) is {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
+        q(u.width(), "mm"),
+        q(u.height(), "mm"),
+    );
+    if let Some(s) = bigger {
+        msg += &format!(", or draw on --sheet {s:?}");
+    }
+    msg += ", or leave μ_l to mechplan (it fills the sheet)";
+    Error::scene("/want/scales/mu_l", msg)
+}
+
+/// Compose the sheets on `opt.sheet`: the positions sheet, and per
+/// position the plan of the mechanism and the plans asked for; the course
+/// sheet when asked; the diagrams sheet when asked.
+fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
+    let w = words(opt.lang);
+    let fixed_l = match how {
+        Scale::Scene => an.mech.scene.want.scales.mu_l,
+        Scale::Fill => None,
+    };
+    let mut out: Vec<Pending> = Vec::new();
+    let field = field_size(opt, 0.0);
+    let extent = mechanism_extent(an, solved);
+    let lower = lower_scale(extent.width(), extent.height(), field);
+    if asked(an, solved, "positions") && !solved.is_empty() {
+        let t = positions::trajectories(an, solved);
+        let draw = |mu: f64| {
+            let mut c = Canvas::default();
+            positions::draw(an, solved, &t, &mut c, mu);
+            Some(c)
+        };
+        let (mu, c) = match fixed_l {
+            Some(mu) => (mu, draw(mu).unwrap_or_default()),
+            None => fill(lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
+        };
+        out.push(pending(
+            "positions".into(),
+            w.positions.into(),
+            scale_text("l", mu, "m", opt.lang),
+            ("mu_l", mu),
+            c,
+        ));
+    }
+    let mech = if asked(an, solved, "mechanism") && !solved.is_empty() {
+        let draw = |mu: f64| Some(mechanism_canvases(an, solved, opt, mu));
+        Some(match fixed_l {
+            Some(mu) => (mu, mechanism_canvases(an, solved, opt, mu)),
+            None => fill(lower, field, draw, |cs| union(cs)).ok_or_else(too_large)?,
+        })
+    } else {
+        None
+    };
+    let (mu_l, mut mech) = mech.map_or((0.0, Vec::new()), |(mu, cs)| (mu, cs));
+    let centre_on = (!mech.is_empty()).then(|| union(&mech));
+    for (k, s) in solved.iter().enumerate() {
+        let pos = position_text(an, s, k, opt.lang);
+        if k < mech.len() {
+            out.push(Pending {
+                centre_on,
+                ..pending(
+                    format!("mechanism_{}", k + 1),
+                    format!("{}, {pos}", w.mechanism),
+                    scale_text("l", mu_l, "m", opt.lang),
+                    ("mu_l", mu_l),
+                    std::mem::take(&mut mech[k]),
+                )
+            });
+        }
+        out.extend(position_sheets(an, solved, (k, s), opt, field)?);
+    }
+    let mut sheets = Vec::new();
+    if opt.course || asked(an, solved, "course") {
+        sheets.push(course::sheet(an, solved, opt)?);
+        if let Some(f) = course_forces::sheet(an, solved, opt)? {
+            sheets.push(f);
+        }
+    }
+    let n = out.len();
+    let lead = sheets.len();
+    for (i, p) in out.into_iter().enumerate() {
+        sheets.push(render(an, opt, p, (lead + i + 1, lead + n)));
+    }
+    if let Some(d) = diagram::wanted(an, opt)? {
+        sheets.push(d);
+    }
+    Ok(sheets)
+}
+
+/// A sheet to render: its name, title, scale text and the scale its
+/// figure `canvas` is drawn at; centred on its own bounds, no table.
+fn pending(
+    name: String,
+    title: String,
+    scale: String,
+    scales: (&'static str, f64),
+    canvas: Canvas,
+) -> Pending {
+    Pending {
+        name,
+        title,
+        scale: Some(scale),
+        scales: vec![scales],
+        canvas,
+        centre_on: None,
+        table: None,
+    }
+}
+
+/// The sheets of position `s` (the `k`-th, from 0) after its plan of the
+/// mechanism: the plans asked for, the forces, then Zhukovsky's lever.
+fn position_sheets(
+    an: &Analysis,
+    solved: &[Solved],
+    (k, s): (usize, &Solved),
+    opt: &DrawOptions,
+    field: (f64, f64),
+) -> Result<Vec<Pending>> {
+    let w = words(opt.lang);
+    let pos = position_text(an, s, k, opt.lang);
+    let mut out = Vec::new();
+    // Zhukovsky's lever after the plans and forces of its position.
+    let levers = if asked(an, solved, "lever") && s.dynamics.is_some() {
+        lever::pending(an, s, k, opt)?
+    } else {
+        Vec::new()
+    };
+    for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+        let Some(plans) = &s.plans else { break };
+        let (name, title) = match kind {
+            PlanKind::Velocity => ("velocity", w.velocities),
+            PlanKind::Acceleration => ("acceleration", w.accelerations),
+        };
+        if !asked(an, solved, name)
+            || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
+        {
+            continue;
+        }
+        let (plan, c, t) = plan_figure(an, s, kind, opt, |plan| {
+            let t = opt.table.then(|| table::plan_table(plan, opt.lang));
+            let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
+            field_size(opt, right)
+        });
+        let (sym, unit, key) = match kind {
+            PlanKind::Velocity => ("v", "m/s", "mu_v"),
+            PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
+        };
+        out.push(Pending {
+            table: t,
+            ..pending(
+                format!("{name}_{}", k + 1),
+                format!("{title}, {pos}"),
+                scale_text(sym, plan.mu, unit, opt.lang),
+                (key, plan.mu),
+                c,
+            )
+        });
+    }
+    if asked(an, solved, "forces")
+        && let Some(f) = forces::figure(an, s, opt, field)
+    {
+        out.push(pending(
+            format!("forces_{}", k + 1),
+            format!("{}, {pos}", forces::title(opt.lang)),
+            scale_text("l", f.mu_l, "m", opt.lang),
+            ("mu_l", f.mu_l),
+            f.canvas,
+        ));
+    }
+    out.extend(levers);
+    Ok(out)
+}
+
+fn too_large() -> Error {
+    Error::Internal("no standard scale up to a million times the first fits the sheet".into())
+}
+
+/// A plan of position `s` at the scale that fills the field `field(plan)`
+/// gives for it (the scene's scale where it fixes one): the plan, its
+/// drawing and the table for it.
+fn plan_figure(
+    an: &Analysis,
+    s: &Solved,
+    kind: PlanKind,
+    opt: &DrawOptions,
+    field: impl Fn(&Plan) -> (f64, f64),
+) -> (Plan, Canvas, Option<table::Ruled>) {
+    let solved_plan = || {
+        let p = s.plans.as_ref().expect("a plan asked for");
+        match kind {
+            PlanKind::Velocity => p.velocity.clone(),
+            PlanKind::Acceleration => p.acceleration.clone().expect("an acceleration plan"),
+        }
+    };
+    let draw = |plan: &Plan| {
+        let mut c = Canvas::default();
+        plan::draw(plan, &mut c, &an.points);
+        c
+    };
+    let table = |plan: &Plan| opt.table.then(|| table::plan_table(plan, opt.lang));
+    let fixed = match kind {
+        PlanKind::Velocity => an.drafting.mu_v,
+        PlanKind::Acceleration => an.drafting.mu_a,
+    };
+    let p0 = solved_plan();
+    if fixed.is_some() {
+        let c = draw(&p0);
+        let t = table(&p0);
+        return (p0, c, t);
+    }
+    let f = field(&p0);
+    let (lo, hi) = p0.points.iter().fold(
+        (Point::new(0.0, 0.0), Point::new(0.0, 0.0)),
+        |(lo, hi), q| {
+            let a = q.at.to_point();
+            (
+                Point::new(lo.x.min(a.x), lo.y.min(a.y)),
+                Point::new(hi.x.max(a.x), hi.y.max(a.y)),
+            )
+        },
+    );
+    let lower = lower_scale((hi.x - lo.x) * p0.mu, (hi.y - lo.y) * p0.mu, f);
+    let rebuild = |mu: f64| -> Option<(Plan, Canvas)> {
+        let (order, mv, ma) = match kind {
+            PlanKind::Velocity => (Order::Velocity, Some(mu), None),
+            PlanKind::Acceleration => (Order::Acceleration, None, Some(mu)),
+        };
+        let p = an.plans_at_scales(s, order, mv, ma).ok()?;
+        let plan = match kind {
+            PlanKind::Velocity => p.velocity,
+            PlanKind::Acceleration => p.acceleration?,
+        };
+        let c = draw(&plan);
+        Some((plan, c))
+    };
+    match fill(lower, f, rebuild, |(_, c)| c.bounds()) {
+        Some((_, (plan, c))) => {
+            let t = table(&plan);
+            (plan, c, t)
+        }
+        // A plan all at the pole (everything at rest) or one that cannot
+        // be built again: the solver's own.
+        None => {
+            let c = draw(&p0);
+            let t = table(&p0);
+            (p0, c, t)
+        }
+    }
+}

@@ -1,0 +1,63 @@
+//! `check SCENE ANSWER` as one call: the two files read (the answer JSON
+//! or SVG, refused when larger than the grading reads), the answer
+//! checked ([`super::Solution::check_answer`]), the overlay written when
+//! asked, and the report as text or JSON with its exit status. The binary
+//! only parses its arguments.
+
+use super::Study;
+use super::studies::{self, CheckRequest};
+use crate::error::{Error, Result, in_file};
+use crate::grading::answer::{self, MAX_ANSWER_BYTES};
+use std::path::Path;
+
+/// Check `answer` against `scene`: the report, and the exit status (0
+/// right, 1 wrong, 4 some items cannot be judged).
+pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(String, u8)> {
+    let name = answer.display().to_string();
+    let svg = answer
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+    let text = read_answer(answer)?;
+    let parsed = studies::parse_answer(&text, &name, svg, req)?;
+    let study = Study::from_path(scene)?;
+    studies::position_of(&study, &parsed, &name, req)?;
+    let checked = studies::check_parsed(&study.solve()?, parsed)?;
+    if let Some(out) = &req.overlay
+        && let Some(overlay) = checked.overlay()
+    {
+        super::files::write_atomically(out, overlay.as_bytes())?;
+    }
+    let text = if req.json {
+        pretty(&checked.to_json())
+    } else {
+        checked.to_text()
+    };
+    Ok((text, checked.status()))
+}
+
+/// An answer file's text, refusing one larger than [`MAX_ANSWER_BYTES`]
+/// before it is read whole; its problems name the file.
+fn read_answer(path: &Path) -> Result<String> {
+    use std::io::Read;
+    let name = path.display().to_string();
+    let io = |source| Error::Io {
+        path: name.clone(),
+        source,
+    };
+    let f = std::fs::File::open(path).map_err(io)?;
+    if let Ok(md) = f.metadata() {
+        answer::check_size(md.len()).map_err(in_file(&name))?;
+    }
+    let mut text = String::new();
+    f.take(MAX_ANSWER_BYTES as u64 + 1)
+        .read_to_string(&mut text)
+        .map_err(io)?;
+    Ok(text)
+}
+
+/// Pretty JSON with a final newline.
+fn pretty(v: &serde_json::Value) -> String {
+    let mut t = serde_json::to_string_pretty(v).expect("JSON of numbers and strings");
+    t.push('\n');
+    t
+}

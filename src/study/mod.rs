@@ -1,0 +1,56 @@
+//! The library's front door: a [`Study`] is a scene read and made ready;
+//! it solves, reports, draws and checks. Everything the `mechplan` command
+//! does is one call here, so another program does it the same way. This
+//! is the only module that reads or writes files; the library never
+//! prints (the command does, `src/terminal.rs`).
+//!
+//! ```
+//! use mechplan::Study;
+//!
+//! // The lecture's six-link mechanism, embedded in the crate.
+//! let study = Study::from_json(mechplan::DEFAULT_SCENE)?;
+//! let solution = study.solve()?;
+//! // The slider D's velocity at the first position, by route (a) …
+//! let d = solution.position(1)?.point("D")?;
+//! let v = d.velocity().expect("the scene asks for velocities");
+//! // … and as measured on the velocity plan: the same, within its bound.
+//! let measured = d.measured_velocity().expect("the scene asks for plans");
+//! assert!((v - measured).hypot() < 1e-9);
+//! // The result file, as `mechplan solve --format json` writes it.
+//! let json = solution.to_json();
+//! assert_eq!(json["mechplan"], 1);
+//! # Ok::<(), mechplan::Error>(())
+//! ```
+//!
+//! Parameters that the command line shows as options are named here by
+//! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
+
+mod check_file;
+pub mod files;
+mod prepared;
+mod sheets;
+mod solution;
+mod studies;
+
+pub use check_file::check_file;
+pub use prepared::{DrawRequest, Results, Study, read};
+pub use sheets::{Written, write_sheets};
+pub use solution::{LinkResult, PointResult, PositionResult, Positions, Solution};
+pub use studies::{
+    Centres, CheckRequest, Checked, Diagram, Invariants, KinematicCheck, PrecisionReport,
+};
+
+pub use crate::error::in_file;
+
+use crate::error::{Error, Result};
+use crate::presentation::drawing::{self, DrawOptions};
+use std::path::Path;
+
+/// positions at `count` segments per revolution, written into `dir`.
+pub fn frenet(dir: &Path, format: drawing::Format, count: usize) -> Result<Written> {
+    if !(2..=10_000).contains(&count) {
+        return Err(Error::scene("count", "must be from 2 to 10000 segments"));
+    }
+    let sheets = drawing::frenet::sheets(count, &DrawOptions::default());
+    write_sheets(&sheets, dir, format, 150.0)
+}

@@ -1,0 +1,318 @@
+//! A scene read and made ready ([`Study`]): what it asks for, the
+//! watcher of its long sweeps, and its results streamed as text. Solving
+//! into typed results is `solution`'s, the studies `studies`'.
+
+use super::files;
+use crate::error::{Error, Result, in_file};
+use crate::kinematics::solve::Analysis;
+use crate::lang::Lang;
+use crate::model::scene::Scene;
+use crate::pipeline::Solved;
+use crate::presentation::drawing::{Format, SheetSize};
+use crate::presentation::report;
+use crate::progress::{Progress, Silent};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// A scene read and made ready to solve.
+#[derive(Clone, Debug)]
+pub struct Study {
+    pub(super) analysis: Arc<Analysis>,
+    pub(super) watcher: Watcher,
+}
+
+/// Who is told how far a long sweep has come (none by default).
+#[derive(Clone, Default)]
+pub(super) struct Watcher(Option<Arc<dyn Progress + Send>>);
+
+impl Watcher {
+    pub(super) fn get(&self) -> &dyn Progress {
+        match &self.0 {
+            Some(w) => &**w,
+            None => &Silent,
+        }
+    }
+}
+
+impl std::fmt::Debug for Watcher {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "Watcher(..)"
+        } else {
+            "Watcher(none)"
+        })
+    }
+}
+
+/// How `solve` writes its result.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Results {
+    /// The fixed-width table.
+    Table,
+    /// The result file of the contract.
+    Json,
+    /// A row per position: the input values, the wanted points' places
+    /// and rates, the solved links' angles and rates (docs/scene-format.md,
+    /// "CSV and JSONL results").
+    Csv,
+    /// A line per position: the position's object of the JSON result.
+    Jsonl,
+    /// The construction as numbered lecture-style steps.
+    Steps(Option<Lang>),
+}
+
+/// What `draw` makes.
+#[derive(Clone, Debug)]
+pub struct DrawRequest {
+    /// The folder written into.
+    pub dir: PathBuf,
+    /// The sheets' file format.
+    pub format: Format,
+    /// Resolution of PNG sheets, dots per inch (10 to 1200).
+    pub dpi: f64,
+    /// The sheet size asked for; `None`: A4 (for a μ_l the scene fixes,
+    /// the smallest of A4, A3, A2, A1 that holds the mechanism at it).
+    pub sheet: Option<SheetSize>,
+    /// The language of the annotations (default: the scene's).
+    pub lang: Option<Lang>,
+    /// A title block on every sheet.
+    pub title_block: bool,
+    /// The table of measured segments on the plans.
+    pub table: bool,
+    /// The instant centres on the plans of the mechanism.
+    pub centres: bool,
+    /// The step-by-step HTML handout instead of the sheets.
+    pub html: bool,
+    /// The course sheet (A1, or A2 with `sheet`), besides the sheets the
+    /// scene asks for.
+    pub course: bool,
+}
+
+impl Default for DrawRequest {
+    fn default() -> Self {
+        DrawRequest {
+            dir: PathBuf::from("mechplan-out"),
+            format: Format::Svg,
+            dpi: 150.0,
+            sheet: None,
+            lang: None,
+            title_block: false,
+            table: false,
+            centres: false,
+            html: false,
+            course: false,
+        }
+    }
+}
+
+impl DrawRequest {
+    /// Refused before anything is solved: a resolution out of range.
+    pub(super) fn validate(&self) -> Result<()> {
+        if !(self.dpi.is_finite() && (10.0..=1200.0).contains(&self.dpi)) {
+            return Err(Error::scene(
+                "dpi",
+                format!("{} is not a resolution from 10 to 1200 dpi", self.dpi),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Read a file whole, an error naming it if it cannot be read.
+pub fn read(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path).map_err(|source| Error::Io {
+        path: path.display().to_string(),
+        source,
+    })
+}
+
+impl Study {
+    /// A scene from its JSON text (the scene file's format:
+    /// docs/scene-format.md). Every problem of the scene is reported at
+    /// once, each with its JSON pointer.
+    ///
+    /// ```
+    /// // A four-bar: link 0 the frame (the first link), crank 1 turned
+    /// // at 10 rad/s from 45°, coupler 2, rocker 3; lengths in m.
+    /// let study = mechplan::Study::from_json(r#"{
+    ///   "mechplan": 1,
+    ///   "units": { "length": "m", "angle": "deg" },
+    ///   "points": { "O1": [0, 0], "A": [0.0707, 0.0707],
+    ///               "B": [0.3402, 0.2940], "O3": [0.4, 0] },
+    ///   "links": { "0": { "points": ["O1", "O3"] },
+    ///              "1": { "points": ["O1", "A"] },
+    ///              "2": { "points": ["A", "B"] },
+    ///              "3": { "points": ["O3", "B"] } },
+    ///   "lengths": { "O1-A": 0.1, "A-B": 0.35, "O3-B": 0.3 },
+    ///   "input": { "link": "1", "pivot": "O1", "angle": 45, "omega": 10 }
+    /// }"#)?;
+    /// assert_eq!(study.position_count()?, 1);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn from_json(text: &str) -> Result<Study> {
+        Ok(Study {
+            analysis: Arc::new(Analysis::new(Scene::from_json(text)?)?),
+            watcher: Watcher::default(),
+        })
+    }
+
+    /// A scene from its JSON text, its problems saying `name` (a file).
+    pub fn named(text: &str, name: &str) -> Result<Study> {
+        Study::from_json(text).map_err(in_file(name))
+    }
+
+    /// A scene file.
+    pub fn from_path(path: &Path) -> Result<Study> {
+        Study::named(&read(path)?, &path.display().to_string())
+    }
+
+    /// The embedded default scene: the lecture's six-link mechanism.
+    pub fn default_scene() -> Study {
+        Study::named(crate::DEFAULT_SCENE, "the embedded default scene")
+            .expect("the embedded scene is valid")
+    }
+
+    /// The same study, telling `watcher` how far its long sweeps have
+    /// come (the command's progress bar; the library itself prints
+    /// nothing).
+    pub fn watched_by(mut self, watcher: Arc<dyn Progress + Send>) -> Study {
+        self.watcher = Watcher(Some(watcher));
+        self
+    }
+
+    /// The analysis: mechanism, structure, what is wanted (the internals,
+    /// for the project's own tests).
+    #[cfg(feature = "internals")]
+    pub fn analysis(&self) -> &Analysis {
+        &self.analysis
+    }
+
+    /// The scene's language for annotations (`want.lang`).
+    pub fn lang(&self) -> Lang {
+        Lang::parse(&self.analysis.mech.scene.want.lang).unwrap_or(Lang::En)
+    }
+
+    /// How many positions the scene asks for.
+    pub fn position_count(&self) -> Result<usize> {
+        Ok(self.analysis.input_values()?.len())
+    }
+
+    /// Is `position` (from 1) one of the scene's? An error naming
+    /// `parameter` and the range if not.
+    pub fn position_in_range(&self, parameter: &str, position: usize) -> Result<()> {
+        let count = self.position_count()?;
+        if (1..=count).contains(&position) {
+            return Ok(());
+        }
+        Err(Error::scene(
+            parameter,
+            format!(
+                "position {position} is not one of the scene's positions: they are numbered from 1 to {count}"
+            ),
+        ))
+    }
+
+    /// Each position as it is solved, in order, told to the watcher.
+    pub(super) fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        self.each_of(&self.analysis, f)
+    }
+
+    /// Each position of `an` (this study's analysis, or a variant of it)
+    /// as it is solved, in order, told to the watcher.
+    fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+        let w = self.watcher.get();
+        w.start(self.position_count()?, "positions");
+        let done = an.run_each_with(w, f);
+        w.finish();
+        done
+    }
+
+    /// The result style of the report module for `style`.
+    fn style(&self, style: Results) -> report::Style {
+        match style {
+            Results::Table => report::Style::Table,
+            Results::Json => report::Style::Json,
+            Results::Csv => report::Style::Csv,
+            Results::Jsonl => report::Style::Jsonl,
+            Results::Steps(lang) => report::Style::Steps(lang.unwrap_or_else(|| self.lang())),
+        }
+    }
+
+    /// Every position's results in `style`, handed to `out` a piece at a
+    /// time: each position's text as soon as it is solved, the position
+    /// then dropped, so that a long sweep costs no more memory than a
+    /// short one.
+    fn stream_results(
+        &self,
+        style: Results,
+        out: &mut dyn FnMut(&str) -> Result<()>,
+    ) -> Result<()> {
+        // A table or CSV prints no plan: its plans are only checked, built
+        // numbers only (`Analysis::keep_plans`: the same plans to the bit).
+        let lean;
+        let an = match style {
+            Results::Table | Results::Csv if self.analysis.keep_plans => {
+                let mut a = (*self.analysis).clone();
+                a.keep_plans = false;
+                lean = a;
+                &lean
+            }
+            _ => &*self.analysis,
+        };
+        let style = self.style(style);
+        out(&report::text_head(an, style))?;
+        let mut count = 0;
+        self.each_of(an, |s| {
+            out(&report::text_position(an, style, count, &s))?;
+            count += 1;
+            Ok(())
+        })?;
+        out(&report::text_tail(an, style, count))
+    }
+
+    /// Write the results of every position in `style` to `out` as they
+    /// are solved (flat memory however many positions). A position that
+    /// cannot be solved stops the run with its error, what was written
+    /// before it staying written: for all or nothing, write into a file
+    /// ([`Study::write_results_to_file`]) or a [`files::Spool`].
+    ///
+    /// ```
+    /// use mechplan::{Results, Study};
+    /// let mut csv = Vec::new();
+    /// Study::default_scene().write_results(Results::Csv, &mut csv)?;
+    /// let text = String::from_utf8(csv).unwrap();
+    /// assert!(text.lines().count() > 1);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn write_results(&self, style: Results, out: &mut dyn std::io::Write) -> Result<()> {
+        let mut o = files::Output::new(out, "the output");
+        self.stream_results(style, &mut |t| o.write(t))?;
+        out.flush().map_err(|e| files::write_error("the output", e))
+    }
+
+    /// Write the results of every position in `style` into the file
+    /// `path`, all or nothing (a temporary beside it, renamed into place
+    /// when the last position is written).
+    pub fn write_results_to_file(&self, style: Results, path: &Path) -> Result<()> {
+        files::write_atomically_with(path, |o| self.stream_results(style, &mut |t| o.write(t)))
+    }
+
+    /// The results of every position in `style`, held back in `spool`
+    /// (memory, then a temporary file) to be printed when all are solved.
+    pub fn write_results_to_spool(&self, style: Results, spool: &mut files::Spool) -> Result<()> {
+        self.stream_results(style, &mut |t| spool.write(t))
+    }
+
+    /// A link by its id, or the default output (the last group's last link).
+    pub(super) fn link(&self, parameter: &str, id: Option<&str>) -> Result<usize> {
+        let an = &self.analysis;
+        match id {
+            Some(id) => {
+                an.mech.scene.link_index(id).ok_or_else(|| {
+                    Error::scene(parameter, format!("the scene has no link \"{id}\""))
+                })
+            }
+            None => Ok(crate::studies::invariants::default_output(an)),
+        }
+    }
+}

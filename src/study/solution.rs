@@ -1,0 +1,439 @@
+//! A study's positions solved: all of them in memory ([`Solution`]) or
+//! one at a time ([`Positions`], flat memory however many), each read by
+//! name ([`PositionResult::point`], [`PositionResult::link`]).
+
+use super::prepared::Watcher;
+use super::{DrawRequest, Study, Written, files, write_sheets};
+use crate::error::{Error, Result};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use crate::presentation::drawing::{self, DrawOptions, Sheet, SheetSize};
+use crate::presentation::report;
+use kurbo::{Point, Vec2};
+use std::borrow::Cow;
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
+use std::thread::JoinHandle;
+
+/// The positions of a study, solved: both routes, the plans, their
+/// cross-check and (with `dynamics`) the forces at every one.
+#[derive(Clone, Debug)]
+pub struct Solution<'a> {
+    study: &'a Study,
+    positions: Vec<Solved>,
+}
+
+impl<'a> Solution<'a> {
+    pub(super) fn new(study: &'a Study, positions: Vec<Solved>) -> Solution<'a> {
+        Solution { study, positions }
+    }
+
+    /// The study solved.
+    pub fn study(&self) -> &'a Study {
+        self.study
+    }
+
+    /// How many positions.
+    pub fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Whether there are none (a scene always has at least one).
+    pub fn is_empty(&self) -> bool {
+        self.positions.is_empty()
+    }
+
+    /// Position `number` (from 1, as the result files count them); an
+    /// error naming the range if there is none.
+    pub fn position(&self, number: usize) -> Result<PositionResult<'_>> {
+        let s = number
+            .checked_sub(1)
+            .and_then(|k| self.positions.get(k))
+            .ok_or_else(|| {
+                Error::scene(
+                    "position",
+                    format!(
+                        "position {number} is not one of the scene's positions: they are numbered from 1 to {}",
+                        self.positions.len()
+                    ),
+                )
+            })?;
+        Ok(PositionResult {
+            an: &self.study.analysis,
+            solved: Cow::Borrowed(s),
+            number,
+        })
+    }
+
+    /// Every position, in order.
+    pub fn iter(&self) -> impl Iterator<Item = PositionResult<'_>> {
+        self.positions
+            .iter()
+            .enumerate()
+            .map(|(k, s)| PositionResult {
+                an: &self.study.analysis,
+                solved: Cow::Borrowed(s),
+                number: k + 1,
+            })
+    }
+
+    /// The solved positions themselves (the internals, for the project's
+    /// own tests).
+    #[cfg(feature = "internals")]
+    pub fn solved(&self) -> &[Solved] {
+        &self.positions
+    }
+
+    pub(super) fn an(&self) -> &'a Analysis {
+        &self.study.analysis
+    }
+
+    pub(super) fn all(&self) -> &[Solved] {
+        &self.positions
+    }
+
+    /// The result file (`mechplan solve --format json`).
+    pub fn to_json(&self) -> serde_json::Value {
+        report::to_json(self.an(), &self.positions)
+    }
+
+    /// The sheets `req` asks for, as SVG text (nothing written; see
+    /// [`Solution::draw`] for files): each figure at the largest standard
+    /// scale that fills its sheet. A sheet size asked for is the only one
+    /// tried; else A4, or (for a μ_l the scene fixes) the smallest sheet
+    /// that holds the mechanism's drawings at it, the second of the pair.
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// let (sheets, _size) = study.solve()?.sheets(&mechplan::DrawRequest::default())?;
+    /// assert!(sheets.iter().any(|s| s.name == "velocity_1"));
+    /// assert!(sheets[0].svg.starts_with("<svg"));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn sheets(&self, req: &DrawRequest) -> Result<(Vec<Sheet>, SheetSize)> {
+        req.validate()?;
+        let sizes = match req.sheet {
+            Some(s) => vec![s],
+            None => SheetSize::ALL.to_vec(),
+        };
+        let opt = DrawOptions {
+            sheet: sizes[0],
+            lang: req.lang.unwrap_or_else(|| self.study.lang()),
+            title_block: req.title_block,
+            table: req.table,
+            centres: req.centres,
+            course: req.course,
+        };
+        drawing::sheets_on(self.an(), &self.positions, &opt, &sizes)
+    }
+
+    /// Draw the sheets (or the handout) into `req.dir`: the files written
+    /// and the notes for the user.
+    pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
+        req.validate()?;
+        let an = self.an();
+        if req.html {
+            let lang = req.lang.unwrap_or_else(|| self.study.lang());
+            std::fs::create_dir_all(&req.dir)
+                .map_err(|e| files::write_error(&req.dir.display().to_string(), e))?;
+            let path = req.dir.join("handout.html");
+            let page = drawing::html::handout(an, &self.positions, lang);
+            files::write_files_atomically(&[(path.clone(), page.as_bytes())])?;
+            return Ok(Written {
+                files: vec![path],
+                notes: Vec::new(),
+            });
+        }
+        let (sheets, sheet) = self.sheets(req)?;
+        let mut notes = Vec::new();
+        let asked = req.sheet.unwrap_or(SheetSize::A4);
+        if sheet != asked {
+            notes.push(format!(
+                "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {asked:?}: drawn on {sheet:?}",
+                an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
+            ));
+        }
+        let mut written = write_sheets(&sheets, &req.dir, req.format, req.dpi)?;
+        notes.append(&mut written.notes);
+        written.notes = notes;
+        Ok(written)
+    }
+}
+
+/// One solved position, read by name.
+#[derive(Clone, Debug)]
+pub struct PositionResult<'a> {
+    an: &'a Analysis,
+    solved: Cow<'a, Solved>,
+    number: usize,
+}
+
+impl PositionResult<'_> {
+    /// The position's number, from 1.
+    pub fn number(&self) -> usize {
+        self.number
+    }
+
+    /// Every input's coordinate (a crank's angle in rad, a slider's or a
+    /// cylinder's displacement in m), in the scene's order of inputs.
+    pub fn inputs(&self) -> Vec<f64> {
+        self.solved.drives.iter().map(|d| d.q).collect()
+    }
+
+    /// Point `name` of the scene at this position; an error naming it if
+    /// the scene has no such point or does not report it (a point on no
+    /// link the scene's output needs).
+    pub fn point(&self, name: &str) -> Result<PointResult> {
+        let m = &self.an.mech;
+        let unknown = || Error::scene("point", format!("the scene has no point \"{name}\""));
+        let p = m.scene.point_index(name).ok_or_else(unknown)?;
+        if !self.an.points.contains(&p) {
+            return Err(Error::scene(
+                "point",
+                format!(
+                    "point \"{name}\" is on no link the scene's output needs: it is not solved"
+                ),
+            ));
+        }
+        let st = self.solved.point(self.an, p);
+        let plans = self.solved.plans.as_ref();
+        Ok(PointResult {
+            place: st.at,
+            rates: st.rates,
+            analogue: st.analogue,
+            measured: (
+                plans.and_then(|pl| pl.velocity.value_of(p)),
+                plans.and_then(|pl| pl.acceleration.as_ref()?.value_of(p)),
+            ),
+        })
+    }
+
+    /// Link `id` of the scene at this position; an error naming it if the
+    /// scene has no such link or does not solve it.
+    pub fn link(&self, id: &str) -> Result<LinkResult> {
+        let m = &self.an.mech;
+        let l = m
+            .scene
+            .link_index(id)
+            .ok_or_else(|| Error::scene("link", format!("the scene has no link \"{id}\"")))?;
+        if !self.an.link(l) {
+            return Err(Error::scene(
+                "link",
+                format!("link \"{id}\" is not needed for the scene's output: it is not solved"),
+            ));
+        }
+        let motion = self.solved.motion.get(l).copied().flatten();
+        Ok(LinkResult {
+            angle: self.solved.config.pose(l).angle,
+            rates: motion.map(|mo| (mo.omega, mo.epsilon)),
+        })
+    }
+
+    /// The balancing moment (N·m, of a crank) or force (N, of a slider or
+    /// cylinder) of every input, by the links' equilibrium; `None` without
+    /// the scene's `dynamics`.
+    pub fn balancing(&self) -> Option<Vec<f64>> {
+        let d = self.solved.dynamics.as_ref()?;
+        Some(d.balancing.iter().map(|b| b.value()).collect())
+    }
+
+    /// The position's object of the result file (a line of
+    /// `--format jsonl`).
+    pub fn to_json(&self) -> serde_json::Value {
+        report::position_json(self.an, &self.solved)
+    }
+
+    /// The solved position itself (the internals, for the project's own
+    /// tests).
+    #[cfg(feature = "internals")]
+    pub fn solved(&self) -> &Solved {
+        &self.solved
+    }
+}
+
+/// A point at one position: its place, velocity and acceleration by the
+/// analytic route, and as measured on the plans.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointResult {
+    place: Point,
+    rates: Option<(Vec2, Vec2)>,
+    analogue: Option<(Vec2, Vec2)>,
+    measured: (Option<Vec2>, Option<Vec2>),
+}
+
+impl PointResult {
+    /// Where the point is, m.
+    pub fn place(&self) -> Point {
+        self.place
+    }
+    /// Its velocity, m/s; `None` where the scene asks for no velocities.
+    pub fn velocity(&self) -> Option<Vec2> {
+        self.rates.map(|r| r.0)
+    }
+    /// Its acceleration, m/s²; `None` where the scene asks for none.
+    pub fn acceleration(&self) -> Option<Vec2> {
+        self.rates.map(|r| r.1)
+    }
+    /// Its velocity analogue dP/dq (of the first input): the velocity at
+    /// unit input rate.
+    pub fn velocity_analogue(&self) -> Option<Vec2> {
+        self.analogue.map(|r| r.0)
+    }
+    /// Its velocity as measured on the velocity plan (segment × μ_v), as
+    /// the construction drew it; `None` without plans.
+    pub fn measured_velocity(&self) -> Option<Vec2> {
+        self.measured.0
+    }
+    /// Its acceleration as measured on the acceleration plan (segment ×
+    /// μ_a); `None` without that plan.
+    pub fn measured_acceleration(&self) -> Option<Vec2> {
+        self.measured.1
+    }
+}
+
+/// A link at one position: its angle and rates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LinkResult {
+    angle: f64,
+    rates: Option<(f64, f64)>,
+}
+
+impl LinkResult {
+    /// The angle its frame has turned through from the x axis, rad.
+    pub fn angle(&self) -> f64 {
+        self.angle
+    }
+    /// Its angular velocity ω, rad/s, counter-clockwise positive; `None`
+    /// where the scene asks for no velocities.
+    pub fn omega(&self) -> Option<f64> {
+        self.rates.map(|r| r.0)
+    }
+    /// Its angular acceleration ε, rad/s².
+    pub fn epsilon(&self) -> Option<f64> {
+        self.rates.map(|r| r.1)
+    }
+}
+
+/// The positions of a study, solved one at a time as they are read: a
+/// worker thread solves them (in parallel a chunk at a time) at most a
+/// chunk ahead of the reader, so memory stays flat however many positions
+/// the scene sweeps ([`Study::positions`]). The first position that
+/// cannot be solved comes as an error, and ends the iteration. Dropping
+/// the iterator stops the worker.
+pub struct Positions<'a> {
+    study: &'a Study,
+    next: usize,
+    rx: Option<Receiver<Result<Solved>>>,
+    worker: Option<JoinHandle<()>>,
+}
+
+impl Study {
+    /// Solve every position, all kept in memory (for a long sweep, see
+    /// [`Study::positions`], which keeps none).
+    pub fn solve(&self) -> Result<Solution<'_>> {
+        Ok(Solution::new(self, self.solved()?))
+    }
+
+    /// Every position solved, in order.
+    pub(super) fn solved(&self) -> Result<Vec<Solved>> {
+        let mut out = Vec::new();
+        self.each(|s| {
+            out.push(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// Draw the sheets (or the handout) into `req.dir`: the files written
+    /// and the notes for the user.
+    pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
+        req.validate()?;
+        self.solve()?.draw(req)
+    }
+
+    /// Every position, solved as it is read (flat memory; see
+    /// [`Positions`]).
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// let mut fastest = 0.0_f64;
+    /// for position in study.positions() {
+    ///     let d = position?.point("D")?;
+    ///     fastest = fastest.max(d.velocity().unwrap().hypot());
+    /// }
+    /// assert!(fastest > 0.0);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn positions(&self) -> Positions<'_> {
+        let (tx, rx) = sync_channel(crate::pipeline::RUN_CHUNK);
+        let an = Arc::clone(&self.analysis);
+        let watcher = self.watcher.clone();
+        let worker = std::thread::spawn(move || run_into(&an, &watcher, &tx));
+        Positions {
+            study: self,
+            next: 0,
+            rx: Some(rx),
+            worker: Some(worker),
+        }
+    }
+}
+
+/// The worker of [`Positions`]: every position sent in order, then the
+/// error that stopped the run (none when the reader has gone).
+fn run_into(an: &Analysis, watcher: &Watcher, tx: &SyncSender<Result<Solved>>) {
+    let w = watcher.get();
+    if let Ok(n) = an.input_values().map(|v| v.len()) {
+        w.start(n, "positions");
+    }
+    let gone = || Error::Internal("the reader of the positions has gone".into());
+    let done = an.run_each_with(w, |s| tx.send(Ok(s)).map_err(|_| gone()));
+    w.finish();
+    if let Err(e) = done {
+        // Sending fails only when the reader has gone: nobody to tell.
+        let _ = tx.send(Err(e));
+    }
+}
+
+impl<'a> Iterator for Positions<'a> {
+    type Item = Result<PositionResult<'a>>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let got = self.rx.as_ref()?.recv().ok();
+        match got {
+            Some(Ok(s)) => {
+                self.next += 1;
+                Some(Ok(PositionResult {
+                    an: &self.study.analysis,
+                    solved: Cow::Owned(s),
+                    number: self.next,
+                }))
+            }
+            Some(Err(e)) => {
+                self.rx = None;
+                Some(Err(e))
+            }
+            None => {
+                self.rx = None;
+                None
+            }
+        }
+    }
+}
+
+impl Drop for Positions<'_> {
+    fn drop(&mut self) {
+        // The worker's next send fails and the run stops there.
+        self.rx = None;
+        if let Some(w) = self.worker.take() {
+            let _ = w.join();
+        }
+    }
+}
+
+impl std::fmt::Debug for Positions<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Positions")
+            .field("next", &self.next)
+            .finish_non_exhaustive()
+    }
+}

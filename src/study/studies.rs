@@ -1,0 +1,502 @@
+//! The studies a solution serves besides its result file, each as a typed
+//! result that renders itself as a table or JSON: a checked answer
+//! ([`Checked`]), the instant centres ([`Centres`]), the motion-law
+//! invariants ([`Invariants`]), the kinematic diagrams ([`Diagram`]), the
+//! work-precision report ([`PrecisionReport`]).
+
+use super::{Solution, Study, Written, files, write_sheets};
+use crate::error::{Error, Result, in_file};
+use crate::grading::answer::Answer;
+use crate::grading::forces::{self, ForceAnswer, ForceReport};
+use crate::grading::read::{self, Reading};
+use crate::grading::{self, Report};
+use crate::kinematics::construction::PlanKind;
+use crate::kinematics::solve::Analysis;
+use crate::presentation::drawing::{self, DrawOptions, Format, Sheet};
+use crate::presentation::{precision as precision_text, studies as tables, verdict};
+use crate::studies::diagrams::Diagrams;
+use crate::studies::invariants::{self, Phase, Settings};
+use crate::verification::precision;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// What the command line says besides the two files: each override
+/// replaces what the answer says.
+#[derive(Clone, Debug, Default)]
+pub struct CheckRequest {
+    /// The report as JSON (else text).
+    pub json: bool,
+    /// Where to write the overlay of a kinematic plan (`--svg`).
+    pub overlay: Option<PathBuf>,
+    /// The pencil's precision δ, mm (`--delta`), over the answer's own.
+    pub delta: Option<f64>,
+    /// The plan's scale μ (`--mu`), over the answer's own.
+    pub mu: Option<f64>,
+    /// Which plan the answer is (`--plan`), over the answer's own.
+    pub plan: Option<PlanKind>,
+    /// The position (`--position`, from 1), over the answer's own.
+    pub position: Option<usize>,
+}
+
+/// An answer read, before it is checked.
+impl Study {
+    /// Check a student's answer, JSON or SVG (`svg`: an SVG drawing by its
+    /// file's extension; a text starting with `<` is one too), its
+    /// problems naming `name` (the answer's file). A plan of velocities or
+    /// accelerations, or a force plan (`"plan": "force"`, or a drawing
+    /// stating μ_F).
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// // A student read v_B = 0.3 m/s off a velocity plan drawn at
+    /// // μ_v = 0.01 (m/s)/mm, at position 2.
+    /// let answer = r#"{ "plan": "velocity", "position": 2, "mu": 0.01,
+    ///                   "values": { "v_B": 0.3 } }"#;
+    /// let checked = study.check_answer(answer, "answer.json", false)?;
+    /// assert_eq!(checked.wrong(), 1); // v_B is 0.83 m/s there
+    /// assert!(checked.to_text().contains("WRONG"));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn check_answer(&self, text: &str, name: &str, svg: bool) -> Result<Checked> {
+        self.solve()?
+            .check_answer(text, name, svg, &CheckRequest::default())
+    }
+
+    /// The instant centres of every position (or of `position`, from 1).
+    pub fn centres(&self, position: Option<usize>) -> Result<Centres<'_>> {
+        self.solve()?.into_centres(position)
+    }
+
+    /// The phases and motion-law invariants of link `output` (its id;
+    /// default: the last group's last link): `tolerance` the dwell
+    /// tolerance E (a fraction of the stroke, 0 to 0.5), `min_dwell_deg`
+    /// the shortest dwell reported, `n` the grid's steps per revolution.
+    pub fn invariants(
+        &self,
+        output: Option<&str>,
+        tolerance: f64,
+        min_dwell_deg: f64,
+        n: usize,
+    ) -> Result<Invariants<'_>> {
+        invariants(self, output, tolerance, min_dwell_deg, n)
+    }
+
+    /// The kinematic diagrams of link `output` (or of point `point` along
+    /// its path) by the chord method over `n` intervals.
+    pub fn diagram(
+        &self,
+        output: Option<&str>,
+        point: Option<&str>,
+        n: usize,
+    ) -> Result<Diagram<'_>> {
+        diagram(self, output, point, n)
+    }
+
+    /// The work-precision report: every method's error against an
+    /// extended-precision reference, and its run time.
+    pub fn precision(
+        &self,
+        settings: &crate::verification::precision::Settings,
+    ) -> Result<PrecisionReport> {
+        precision(self, settings)
+    }
+}
+
+pub(super) enum Parsed {
+    /// A plan of velocities or accelerations.
+    Kinematic(Answer),
+    /// A force plan.
+    Force(ForceAnswer),
+}
+
+impl Parsed {
+    /// The position the answer is of (from 1), and whether the command
+    /// line said it (else the answer did).
+    fn position(&self, req: &CheckRequest) -> (usize, bool) {
+        let own = match self {
+            Parsed::Kinematic(a) => a.position,
+            Parsed::Force(a) => a.position,
+        };
+        (req.position.unwrap_or(own), req.position.is_some())
+    }
+}
+
+/// Read an answer's text (see [`Study::check_answer`]) with the
+/// command line's overrides `req`.
+pub(super) fn parse_answer(
+    text: &str,
+    name: &str,
+    svg: bool,
+    req: &CheckRequest,
+) -> Result<Parsed> {
+    if let Some(f) = parse_force_answer(text, name, svg, req)? {
+        return Ok(Parsed::Force(f));
+    }
+    let r = Reading {
+        mu: req.mu,
+        plan: req.plan,
+        delta: req.delta,
+        position: req.position,
+    };
+    Ok(Parsed::Kinematic(read::from_text(text, name, svg, &r)?))
+}
+
+/// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
+/// SVG drawing that states μ_F) with the overrides that apply to it;
+/// `None` for a kinematic answer.
+fn parse_force_answer(
+    text: &str,
+    name: &str,
+    drawn: bool,
+    req: &CheckRequest,
+) -> Result<Option<ForceAnswer>> {
+    let mut ans = if drawn {
+        if !forces::is_force_svg(text) {
+            return Ok(None);
+        }
+        let (delta, position) = (req.delta.unwrap_or(0.5), req.position.unwrap_or(1));
+        forces::from_svg(text, req.mu, delta, position)
+    } else {
+        if !forces::is_force_answer(text) {
+            return Ok(None);
+        }
+        forces::from_json(text)
+    }
+    .map_err(in_file(name))?;
+    if let Some(d) = req.delta {
+        if !(d.is_finite() && d > 0.0) {
+            return Err(Error::scene(
+                "delta",
+                "the pencil precision must be a positive number of mm",
+            ));
+        }
+        ans.delta = d;
+    }
+    if req.plan.is_some() {
+        return Err(Error::scene(
+            "plan",
+            "the answer is a force plan (\"plan\": \"force\"): --plan names a plan of velocities or accelerations",
+        ));
+    }
+    if let Some(m) = req.mu {
+        if !(m.is_finite() && (1e-6..=1e9).contains(&m)) {
+            return Err(Error::scene(
+                "mu",
+                "μ_F must be a number of N/mm between 1e-6 and 1e9",
+            ));
+        }
+        ans.mu = m;
+    }
+    if req.overlay.is_some() {
+        return Err(Error::scene(
+            "svg",
+            "the overlay (--svg) is drawn for plans of velocities and accelerations only",
+        ));
+    }
+    if let Some(p) = req.position {
+        ans.position = p;
+    }
+    Ok(Some(ans))
+}
+
+/// The answer's position is one of the scene's: an error naming the
+/// option, or the answer's field in its file (`name`).
+pub(super) fn position_of(
+    study: &Study,
+    parsed: &Parsed,
+    name: &str,
+    req: &CheckRequest,
+) -> Result<()> {
+    match parsed.position(req) {
+        (p, true) => study.position_in_range("position", p),
+        (p, false) => study
+            .position_in_range("/position", p)
+            .map_err(in_file(name)),
+    }
+}
+
+/// Check an answer read against the solved positions.
+pub(super) fn check_parsed(sol: &Solution, parsed: Parsed) -> Result<Checked> {
+    Ok(match parsed {
+        Parsed::Kinematic(ans) => {
+            let report = grading::check(sol.an(), sol.all(), &ans)?;
+            Checked::Kinematic(Box::new(KinematicCheck {
+                analysis: Arc::clone(&sol.study().analysis),
+                answer: ans,
+                report,
+            }))
+        }
+        Parsed::Force(ans) => Checked::Force(forces::check(sol.an(), sol.all(), &ans)?),
+    })
+}
+
+/// A student's answer checked, item by item (see
+/// [`Study::check_answer`]).
+#[derive(Clone, Debug)]
+pub enum Checked {
+    /// A plan of velocities or accelerations.
+    Kinematic(Box<KinematicCheck>),
+    /// A force plan.
+    Force(ForceReport),
+}
+
+/// A plan of velocities or accelerations checked: the verdicts, and what
+/// the overlay is drawn from.
+#[derive(Clone, Debug)]
+pub struct KinematicCheck {
+    analysis: Arc<Analysis>,
+    answer: Answer,
+    /// The verdicts, item by item, and the diagnosis.
+    pub report: Report,
+}
+
+impl Checked {
+    /// The exit status of `mechplan check`: 0 every item right, 1 an
+    /// item wrong, 4 none wrong but some cannot be judged here.
+    pub fn status(&self) -> u8 {
+        match self {
+            Checked::Kinematic(k) => k.report.status(),
+            Checked::Force(r) => r.status(),
+        }
+    }
+    /// How many items are wrong.
+    pub fn wrong(&self) -> usize {
+        match self {
+            Checked::Kinematic(k) => k.report.wrong(),
+            Checked::Force(r) => r.wrong(),
+        }
+    }
+    /// The report in words, as `mechplan check` prints it.
+    pub fn to_text(&self) -> String {
+        match self {
+            Checked::Kinematic(k) => verdict::to_text(&k.report),
+            Checked::Force(r) => verdict::force_to_text(r),
+        }
+    }
+    /// The report as JSON (`mechplan check --format json`).
+    pub fn to_json(&self) -> serde_json::Value {
+        match self {
+            Checked::Kinematic(k) => verdict::to_json(&k.report),
+            Checked::Force(r) => verdict::force_to_json(r),
+        }
+    }
+    /// The overlay of a kinematic plan's answer: the student's points
+    /// over the right plan, as an SVG sheet; `None` for a force plan.
+    pub fn overlay(&self) -> Option<String> {
+        match self {
+            Checked::Kinematic(k) => Some(verdict::overlay(&k.analysis, &k.answer, &k.report)),
+            Checked::Force(_) => None,
+        }
+    }
+}
+
+/// The instant centres of every two links, at every position or one.
+#[derive(Clone, Debug)]
+pub struct Centres<'a> {
+    solution: Solution<'a>,
+    position: Option<usize>,
+}
+
+impl<'a> Solution<'a> {
+    /// Check a student's answer against these positions (see
+    /// [`Study::check_answer`]); `req` overrides what the answer says.
+    pub fn check_answer(
+        &self,
+        text: &str,
+        name: &str,
+        svg: bool,
+        req: &CheckRequest,
+    ) -> Result<Checked> {
+        let parsed = parse_answer(text, name, svg, req)?;
+        position_of(self.study(), &parsed, name, req)?;
+        check_parsed(self, parsed)
+    }
+
+    /// The instant centres (of `position`, from 1, or of every position).
+    pub fn into_centres(self, position: Option<usize>) -> Result<Centres<'a>> {
+        if let Some(p) = position {
+            self.study().position_in_range("position", p)?;
+        }
+        Ok(Centres {
+            solution: self,
+            position,
+        })
+    }
+}
+
+impl Centres<'_> {
+    /// As `mechplan centres` prints them.
+    pub fn to_table(&self) -> String {
+        tables::centres_table(self.solution.an(), self.solution.all(), self.position)
+    }
+    /// As `mechplan centres --format json` writes them.
+    pub fn to_json(&self) -> serde_json::Value {
+        tables::centres_json(self.solution.an(), self.solution.all(), self.position)
+    }
+}
+
+/// The phases of an output (recess, dwell, approach) and their motion-law
+/// invariants.
+#[derive(Clone, Debug)]
+pub struct Invariants<'a> {
+    study: &'a Study,
+    settings: Settings,
+    phases: Vec<Phase>,
+}
+
+pub(super) fn invariants<'a>(
+    study: &'a Study,
+    output: Option<&str>,
+    tolerance: f64,
+    min_dwell_deg: f64,
+    n: usize,
+) -> Result<Invariants<'a>> {
+    if !(tolerance.is_finite() && (0.0..0.5).contains(&tolerance)) {
+        return Err(Error::scene(
+            "tolerance",
+            "must be a fraction of the stroke from 0 to 0.5",
+        ));
+    }
+    if !(min_dwell_deg.is_finite() && (0.0..360.0).contains(&min_dwell_deg)) {
+        return Err(Error::scene("min-dwell", "must be from 0 to 360 degrees"));
+    }
+    if !(36..=1_000_000).contains(&n) {
+        return Err(Error::scene("n", "must be from 36 to 1000000 steps"));
+    }
+    let settings = Settings {
+        output: study.link("output", output)?,
+        tolerance,
+        min_dwell: min_dwell_deg.to_radians(),
+        n,
+    };
+    let phases = invariants::phases(&study.analysis, &settings)?;
+    Ok(Invariants {
+        study,
+        settings,
+        phases,
+    })
+}
+
+impl Invariants<'_> {
+    /// How many phases.
+    pub fn len(&self) -> usize {
+        self.phases.len()
+    }
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.phases.is_empty()
+    }
+    /// As `mechplan invariants` prints them.
+    pub fn to_table(&self) -> String {
+        tables::invariants_table(&self.study.analysis, &self.settings, &self.phases)
+    }
+    /// As `mechplan invariants --format json` writes them.
+    pub fn to_json(&self) -> serde_json::Value {
+        tables::invariants_json(&self.study.analysis, &self.settings, &self.phases)
+    }
+}
+
+/// The kinematic diagrams of an output by the chord method.
+#[derive(Clone, Debug)]
+pub struct Diagram<'a> {
+    study: &'a Study,
+    diagrams: Diagrams,
+}
+
+pub(super) fn diagram<'a>(
+    study: &'a Study,
+    output: Option<&str>,
+    point: Option<&str>,
+    n: usize,
+) -> Result<Diagram<'a>> {
+    if !(4..=3600).contains(&n) {
+        return Err(Error::scene("n", "must be from 4 to 3600 intervals"));
+    }
+    let an = &*study.analysis;
+    let out = study.link("output", output)?;
+    let diagrams = match point {
+        Some(name) => {
+            let p = an.mech.scene.point_index(name).ok_or_else(|| {
+                Error::scene("point", format!("the scene has no point \"{name}\""))
+            })?;
+            Diagrams::build_point(an, p, n, drawing::diagram::LENGTH)?
+        }
+        None => Diagrams::build(an, out, n, drawing::diagram::LENGTH)?,
+    };
+    Ok(Diagram { study, diagrams })
+}
+
+impl Diagram<'_> {
+    /// The table of the diagrams and their errors (`mechplan diagram`).
+    pub fn to_table(&self) -> String {
+        tables::diagrams_table(&self.study.analysis, &self.diagrams)
+    }
+    /// The diagrams' sheet (SVG).
+    pub fn sheet(&self) -> Sheet {
+        drawing::diagram::sheet(
+            &self.study.analysis,
+            &self.diagrams,
+            &DrawOptions::default(),
+        )
+    }
+    /// The sheet written into `dir` in `format`.
+    pub fn write_into(&self, dir: &Path, format: Format) -> Result<Written> {
+        write_sheets(&[self.sheet()], dir, format, 150.0)
+    }
+}
+
+/// The work-precision report of a scene.
+#[derive(Clone, Debug)]
+pub struct PrecisionReport(precision::Report);
+
+pub(super) fn precision(study: &Study, settings: &precision::Settings) -> Result<PrecisionReport> {
+    if !(settings.min_time.is_finite() && settings.min_time > 0.0) {
+        return Err(Error::scene(
+            "min-time",
+            "must be a positive number of seconds",
+        ));
+    }
+    Ok(PrecisionReport(precision::run_watched(
+        &study.analysis,
+        settings,
+        study.watcher.get(),
+    )?))
+}
+
+impl PrecisionReport {
+    /// The report's table (Markdown).
+    pub fn to_markdown(&self) -> String {
+        precision_text::to_markdown(&self.0)
+    }
+    /// The plot of error against run time (SVG) titled `title`.
+    pub fn to_svg(&self, title: &str) -> String {
+        precision_text::to_svg(&self.0, title)
+    }
+    /// The table, the plot (SVG) and its picture (PNG) written into `dir`
+    /// as `stem.md`, `stem.svg`, `stem.png`.
+    pub fn write_into(&self, dir: &Path, stem: &str) -> Result<Written> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| files::write_error(&dir.display().to_string(), e))?;
+        let table = self.to_markdown();
+        let svg = self.to_svg(&format!("{stem}: error against run time"));
+        let png = drawing::png(&svg, 150.0)?;
+        let files: Vec<(PathBuf, &[u8])> = [
+            ("md", table.as_bytes()),
+            ("svg", svg.as_bytes()),
+            ("png", png.as_slice()),
+        ]
+        .into_iter()
+        .map(|(ext, bytes)| (dir.join(format!("{stem}.{ext}")), bytes))
+        .collect();
+        files::write_files_atomically(&files)?;
+        Ok(Written {
+            files: files.into_iter().map(|(p, _)| p).collect(),
+            notes: Vec::new(),
+        })
+    }
+    /// The rows of numbers (the internals, for the project's own tests).
+    #[cfg(feature = "internals")]
+    pub fn report(&self) -> &precision::Report {
+        &self.0
+    }
+}

@@ -1,0 +1,19 @@
+//! The words: every phrase mechplan writes, by language ([`Lang`]). The
+//! mathematics (names of points, vectors, numbers) is the same in every
+//! language; only the words change, each language one catalogue of
+//! phrases with named blanks ([`catalogue::fill`]). [`construction`] the steps of the
+//! plans, [`force_plans`] the steps of the force plans, [`forces`] the
+//! names of forces, [`notation`] the lecture's notation as runs of text
+//! and labels, [`inputs`] a position's inputs in short.
+
+pub mod catalogue;
+pub mod construction;
+pub mod force_plans;
+pub mod forces;
+pub mod inputs;
+pub mod notation;
+
+pub use crate::lang::Lang;
+
+pub use catalogue::{Catalogue, catalogue};
+pub use notation::Label;
