@@ -2,7 +2,7 @@
 //! exact values they are (units recovered, exact values where given),
 //! the links' rigid shapes by the contract's rule, the prismatic pairs.
 
-use super::{Exact, Real, V2};
+use super::real::{Real, V2};
 use crate::kinematics::analytic::equations::Prism;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::{Direction, Scene, Through};
@@ -240,4 +240,13 @@ pub(super) fn prisms(
         });
     }
     prism
+}
+
+/// The exact values of some of the scene's numbers, by point name and
+/// length key ("A-B"), where the file can only hold their f64 roundings
+/// (√3 and the like): the reference is then that of the exact mechanism.
+#[derive(Clone, Debug, Default)]
+pub struct Exact {
+    pub points: Vec<(String, Real, Real)>,
+    pub lengths: Vec<(String, Real)>,
 }
