@@ -5,106 +5,12 @@
 //! `units` is about the drawing, as `omega` is always rad/s.
 
 use super::reader::{Reader, kind, ptr};
-use super::{LinkSpec, NamedPoint};
+use super::spec::{
+    DynamicsSpec, ForceSpec, ForceTable, LinkMass, LinkSpec, MAX_MOVING_LINKS, MomentSpec,
+    NamedPoint, PerPosition,
+};
 use kurbo::Vec2;
 use serde_json::Value;
-
-/// The most moving links the force analysis takes: its equilibrium
-/// system is dense, 3 equations a link (an LU of 600 × 600 at every
-/// position).
-pub const MAX_MOVING_LINKS: usize = 200;
-
-/// The scene's `dynamics`: gravity, masses, external loads.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DynamicsSpec {
-    /// The acceleration of gravity, m/s² (absent: no gravity, [0, 0]).
-    pub g: Vec2,
-    /// The links with mass, in the order written.
-    pub links: Vec<LinkMass>,
-    pub forces: Vec<ForceSpec>,
-    pub moments: Vec<MomentSpec>,
-}
-
-/// A link's mass `m` (kg), its moment of inertia `j` about its centre
-/// (kg·m²) and the centre, a point of the link.
-#[derive(Clone, Debug, PartialEq)]
-pub struct LinkMass {
-    pub link: usize,
-    pub m: f64,
-    pub j: f64,
-    pub centre: usize,
-}
-
-/// A value the same at every position, or one per position (a working
-/// resistance over the stroke, an indicator diagram's gas force).
-#[derive(Clone, Debug, PartialEq)]
-pub enum PerPosition<T> {
-    Constant(T),
-    List(Vec<T>),
-}
-
-impl<T: Copy> PerPosition<T> {
-    /// The value at position `k` (from 0).
-    pub fn at(&self, k: usize) -> T {
-        match self {
-            PerPosition::Constant(x) => *x,
-            PerPosition::List(v) => v[k],
-        }
-    }
-}
-
-/// An external force `f` (N) on `link` at its point `point`: given (one
-/// value, or one per position), or by a table against the displacement
-/// of its point (`table`, when `Some`: then `f` is not read).
-#[derive(Clone, Debug, PartialEq)]
-pub struct ForceSpec {
-    pub link: usize,
-    pub point: usize,
-    pub f: PerPosition<Vec2>,
-    pub table: Option<ForceTable>,
-}
-
-/// A force against the displacement of its point, s = |P − `from`| (m):
-/// a working resistance over the stroke, a gas force over the piston's
-/// travel. `working` while the point moves away from `from`, `back` while
-/// it moves toward it (zero when the table gives none), linear between
-/// the rows; a position whose s falls outside the rows is refused.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ForceTable {
-    pub from: kurbo::Point,
-    /// Increasing displacements, m.
-    pub s: Vec<f64>,
-    pub working: Vec<Vec2>,
-    pub back: Vec<Vec2>,
-}
-
-impl ForceTable {
-    /// The force at displacement `s` (clamped to the rows), on the
-    /// working stroke or back.
-    pub fn at(&self, s: f64, working: bool) -> Vec2 {
-        let f = if working { &self.working } else { &self.back };
-        if f.is_empty() {
-            return Vec2::ZERO;
-        }
-        let n = self.s.len();
-        if s <= self.s[0] {
-            return f[0];
-        }
-        if s >= self.s[n - 1] {
-            return f[n - 1];
-        }
-        let i = self.s.partition_point(|&x| x <= s).clamp(1, n - 1);
-        let t = (s - self.s[i - 1]) / (self.s[i] - self.s[i - 1]);
-        f[i - 1] + (f[i] - f[i - 1]) * t
-    }
-}
-
-/// An external couple `m` (N·m, counter-clockwise positive) on `link`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MomentSpec {
-    pub link: usize,
-    pub m: PerPosition<f64>,
-}
 
 impl Reader {
     /// Read `dynamics`; `positions` is the number of positions the scene
