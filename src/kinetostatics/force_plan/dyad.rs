@@ -5,7 +5,7 @@
 
 use super::draft::Draft;
 use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
-use super::{Applied, ScaleOf, Side, record};
+use super::known::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
 use crate::geom::perp;
 use crate::kinematics::solve::{Analysis, Position};

@@ -4,7 +4,7 @@
 use super::draft::Draft;
 use super::dyad::{couple_step, reaction};
 use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
-use super::{Applied, ScaleOf, Side, record};
+use super::known::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
 use crate::kinematics::solve::{Analysis, Position};
 use crate::kinetostatics::newton_euler::guide_frame;

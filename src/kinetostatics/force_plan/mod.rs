@@ -25,66 +25,25 @@
 mod draft;
 mod dyad;
 mod input;
+mod known;
 mod plan;
 
+use known::Applied;
 pub use plan::{Drawn, DrawnLine, Force, ForcePlan, ForcePlans, ForceStep, Part};
 
 use super::loads::Load;
-use super::newton_euler::guide_frame;
 use crate::error::{Error, Result};
 use crate::kinematics::construction::Field;
 use crate::kinematics::positions::describe_input;
 use crate::kinematics::solve::{Analysis, Position};
-use crate::model::structure::{AssurGroup, InputRole, Joint, Stage};
+use crate::model::structure::{AssurGroup, InputRole, Stage};
 use kurbo::{Point, Vec2};
-
-/// A force known on a link: a load, or a reaction found (of a later group
-/// on this link).
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Applied {
-    pub link: usize,
-    pub at: Point,
-    pub f: Vec2,
-    pub couple: f64,
-    pub force: Force,
-}
-
-impl Applied {
-    fn moment_about(&self, p: Point) -> f64 {
-        (self.at - p).cross(self.f) + self.couple
-    }
-}
-
-/// What acts on a set of links: its forces (the polygon's vectors, in
-/// order) and its moment about any point.
-pub(super) struct Side<'a> {
-    pub links: Vec<usize>,
-    pub known: &'a [Applied],
-}
-
-impl Side<'_> {
-    fn has(&self, l: usize) -> bool {
-        self.links.contains(&l)
-    }
-    fn forces(&self) -> impl Iterator<Item = &Applied> {
-        self.known.iter().filter(|a| self.has(a.link))
-    }
-    fn sum(&self) -> Vec2 {
-        self.forces().fold(Vec2::ZERO, |s, a| s + a.f)
-    }
-    fn moment_about(&self, p: Point) -> f64 {
-        self.forces().map(|a| a.moment_about(p)).sum()
-    }
-}
 
 /// The force plans of every group and input at solved position `s`
 /// under `loads`, from the last group attached back to the inputs.
 pub fn solve(an: &Analysis, s: &Position, loads: &[Load], delta: f64) -> Result<ForcePlans> {
     solve_at(an, s, loads, delta, None)
 }
-
-/// The scale a plan is drawn at, from its points at unit scale.
-type ScaleOf<'a> = &'a dyn Fn(&[Vec2]) -> f64;
 
 /// Which plan: a group's (index into `Structure::groups`) or an input
 /// link's (the scene's order of inputs).
@@ -164,44 +123,3 @@ pub fn solve_at(
     Ok(out)
 }
 
-/// Record the reaction `r` (with couple `c`) of link `from` on link `to`
-/// in pair `joint` in the mechanism's conventions.
-#[allow(clippy::too_many_arguments)]
-fn record(
-    (an, s): (&Analysis, &Position),
-    out: &mut ForcePlans,
-    joint: Joint,
-    from: usize,
-    to: usize,
-    r: Vec2,
-    c: f64,
-) {
-    let m = &an.mech;
-    match joint {
-        Joint::R(p) => {
-            if let Some(k) = m
-                .revolutes
-                .iter()
-                .position(|rv| rv.point == p && (rv.a, rv.b) == (from, to))
-            {
-                out.revolute[k] = Some(r);
-            } else if let Some(k) = m
-                .revolutes
-                .iter()
-                .position(|rv| rv.point == p && (rv.a, rv.b) == (to, from))
-            {
-                out.revolute[k] = Some(-r);
-            }
-        }
-        Joint::P(k) => {
-            // The guide's force on the slider, along the guide's left normal.
-            let (_, _, n) = guide_frame(an, s, k);
-            let (r, c) = if m.prismatics[k].slider == to {
-                (r, c)
-            } else {
-                (-r, -c)
-            };
-            out.prismatic[k] = Some((r.dot(n), c));
-        }
-    }
-}
