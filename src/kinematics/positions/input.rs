@@ -2,7 +2,8 @@
 //! frame, the link a driving pair places on its known link; the input
 //! coordinates the sketch shows.
 
-use super::{Coords, sketch};
+use super::configuration::sketch;
+use crate::kinematics::analytic::Coords;
 use crate::geom::Pose;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;

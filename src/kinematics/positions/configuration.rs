@@ -1,0 +1,122 @@
+//! A configuration (the poses of the links solved), and the geometry every
+//! group's closed form shares: a point of a link, a pair's point, the
+//! angle across a pair, a slider's line, a link placed by two of its points.
+
+use crate::geom::{Pose, rotate};
+use crate::model::mechanism::Mechanism;
+use crate::model::scene::InputSpec;
+use crate::model::structure::Joint;
+use kurbo::{Point, Vec2};
+
+/// The poses of the links solved so far (None: not needed, not computed).
+#[derive(Clone, Debug)]
+pub struct Configuration {
+    pub poses: Vec<Option<Pose>>,
+}
+
+impl Configuration {
+    #[inline]
+    pub fn pose(&self, link: usize) -> Pose {
+        self.poses[link].expect("link solved before use")
+    }
+    /// World position of `point` as carried by `link`.
+    #[inline]
+    pub fn point(&self, m: &Mechanism, link: usize, point: usize) -> Point {
+        self.pose(link).apply(m.local(link, point))
+    }
+}
+
+/// Describe the input values for messages: "φ = 123.4°" or "s = 0.05 m",
+/// in the shortest decimal that is the value (near a limit, positions a
+/// nano-degree apart must read apart); several inputs each with its link's
+/// id: "φ1 = 30°, φ4 = 120°".
+pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
+    let several = m.scene.several_inputs();
+    q.iter()
+        .zip(m.scene.inputs())
+        .map(|(&q, spec)| {
+            let id = if several { m.link_id(spec.link()) } else { "" };
+            match spec {
+                InputSpec::Crank { .. } => format!("φ{id} = {}°", q.to_degrees()),
+                InputSpec::Slider { .. } => format!("s{id} = {q} m"),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+pub(super) fn sketch(m: &Mechanism, p: usize) -> Point {
+    m.scene.points[p].sketch
+}
+
+pub(crate) fn point_of(j: Joint) -> usize {
+    match j {
+        Joint::R(p) => p,
+        Joint::P(_) => unreachable!("a revolute pair was expected"),
+    }
+}
+
+pub(crate) fn pair_of(j: Joint) -> usize {
+    match j {
+        Joint::P(k) => k,
+        Joint::R(_) => unreachable!("a prismatic pair was expected"),
+    }
+}
+
+/// Angle of `moving` given the angle of `known` across prismatic pair `k`.
+pub(crate) fn angle_across(m: &Mechanism, k: usize, known: usize, known_angle: f64) -> f64 {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        known_angle + pr.delta
+    } else {
+        known_angle - pr.delta
+    }
+}
+
+/// The world line on which the local point `x` of link `moving` (at angle
+/// `theta`) must lie, because of prismatic pair `k` with the posed link `known`.
+pub fn slide_line(
+    m: &Mechanism,
+    k: usize,
+    known: usize,
+    known_pose: &Pose,
+    theta: f64,
+    x: Vec2,
+) -> crate::geom::Line {
+    let pr = &m.prismatics[k];
+    if pr.guide == known {
+        crate::geom::Line {
+            point: known_pose.apply(pr.line_point) + rotate(x - pr.slider_local, theta),
+            dir: known_pose.dir(pr.line_dir),
+        }
+    } else {
+        crate::geom::Line {
+            point: known_pose.apply(pr.slider_local) + rotate(x - pr.line_point, theta),
+            dir: rotate(pr.line_dir, theta),
+        }
+    }
+}
+
+/// The guide direction of pair `k` in the sketch.
+pub(super) fn sketch_guide_dir(m: &Mechanism, k: usize) -> Vec2 {
+    let pr = &m.prismatics[k];
+    m.links[pr.guide].sketch_pose.dir(pr.line_dir)
+}
+
+/// Pose a link by two points at local places `lp`, `lq` at known world
+/// places.
+pub(super) fn set_by_two_local(
+    c: &mut Configuration,
+    link: usize,
+    lp: Vec2,
+    at_p: Point,
+    lq: Vec2,
+    at_q: Point,
+) {
+    let (w, l) = (at_q - at_p, lq - lp);
+    let angle = w.atan2() - l.atan2();
+    // The turn from l to w: its cosine and sine straight from the vectors.
+    let norm = w.hypot() * l.hypot();
+    let turn = (l.dot(w) / norm, l.cross(w) / norm);
+    c.poses[link] = Some(Pose::through_turned(at_p, lp, angle, turn));
+}
