@@ -5,7 +5,7 @@
 //! inverse and product operation for operation, so the rates are the same
 //! to the bit and a plain dyad's rates skip the general loop.
 
-use super::rates::{Contour, PairTwist, Src, Walk};
+use super::twists::{Contour, PairTwist, Src, Walk};
 use crate::accuracy::ACCURACY;
 use crate::kinematics::analytic::contour::{self, Twist, bracket};
 use crate::kinematics::analytic::{Motion, Order};
@@ -20,9 +20,9 @@ use kurbo::Vec2;
 #[derive(Clone, Debug)]
 pub(super) struct Dyad3 {
     pub(super) group: usize,
-    links: [usize; 2],
-    ends: [usize; 2],
-    pairs: [PairTwist; 3],
+    pub(super) links: [usize; 2],
+    pub(super) ends: [usize; 2],
+    pub(super) pairs: [PairTwist; 3],
 }
 
 impl Dyad3 {

@@ -31,20 +31,22 @@
 //! [`dyad3`] a dyad's contour written out in scalars; this module holds
 //! the [`Program`], its [`State`] and the public calls.
 
+mod twists;
 mod dyad3;
 mod place;
 mod rates;
 
 use crate::error::Result;
 use crate::geom::Pose;
-use crate::kinematics::analytic::contour::{driven_pair, dyad_contours, triad_contours};
+use crate::kinematics::analytic::contour::{self, driven_pair, dyad_contours, triad_contours};
 use crate::kinematics::analytic::{Coords, Drive, Drives, Motion, Order};
 use crate::kinematics::positions::{
-    self, Branches, Configuration, CrankFrame, Tracking, crank_frame, sketch_input,
+    self, Branches, Configuration, CrankFrame, Tracking, crank_frame, sketch_input, triad_error,
 };
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
 use crate::model::structure::{AssurGroup, Step, Structure};
+use kurbo::{Point, Vec2};
 use dyad3::Dyad3;
 use place::{Place, dyad_place};
 use rates::{Rate, compile_contour};
@@ -281,5 +283,158 @@ fn group_steps(
             let rate = Rate::Triad(Box::new(g));
             (Place::Triad { group: gi }, rate)
         }
+    }
+}
+
+impl Program<'_> {
+    /// [`Program::positions_at`], the coordinates by reference.
+    pub(super) fn place(&self, st: &mut State, q: &[f64]) -> Result<()> {
+        let (m, s) = (self.m, self.s);
+        let c = &mut st.config;
+        c.poses[m.frame()] = Some(Pose::IDENTITY);
+        for step in &self.place {
+            match step {
+                Place::Crank {
+                    input,
+                    link,
+                    at,
+                    local,
+                    offset,
+                } => c.poses[*link] = Some(Pose::through(*at, *local, q[*input] - offset)),
+                Place::Slider {
+                    input,
+                    link,
+                    q0,
+                    dir,
+                    local,
+                    delta,
+                    turn,
+                } => {
+                    c.poses[*link] = Some(Pose::through_turned(
+                        *q0 + *dir * q[*input],
+                        *local,
+                        *delta,
+                        *turn,
+                    ))
+                }
+                Place::Chained(ch) => {
+                    let kp = c.pose(ch.known);
+                    c.poses[ch.other] = Some(positions::place_across(
+                        m,
+                        ch.pair,
+                        ch.known,
+                        &kp,
+                        q[ch.input],
+                    ));
+                }
+                Place::Rrr(g) => {
+                    if !g.place(c) {
+                        self.dyad(c, g.group, q)?;
+                    }
+                }
+                Place::Rrp(g) => {
+                    if !g.place(c) {
+                        self.dyad(c, g.group, q)?;
+                    }
+                }
+                Place::Rpr(g) => {
+                    if !g.place(c) {
+                        self.dyad(c, g.group, q)?;
+                    }
+                }
+                Place::Dyad { group } => self.dyad(c, *group, q)?,
+                Place::Triad { group } => {
+                    let AssurGroup::Triad(t) = &s.groups[*group] else {
+                        unreachable!("a class III group")
+                    };
+                    let pose = positions::solve_triad(m, t, st.triad_pose[*group], c)
+                        .map_err(|why| triad_error(m, s, *group, q, why))?;
+                    st.triad_pose[*group] = pose;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Dyad `gi` by the interpreted closed form (its tolerances, its errors).
+    #[cold]
+    fn dyad(&self, c: &mut Configuration, gi: usize, q: &[f64]) -> Result<()> {
+        let (m, s) = (self.m, self.s);
+        let AssurGroup::Dyad(d) = &s.groups[gi] else {
+            unreachable!("a class II group")
+        };
+        positions::solve_group_dyad(m, s, gi, d, self.branches.sign[gi], q, c)
+    }
+}
+impl Program<'_> {
+    /// [`Program::rates`], the drives by reference.
+    pub(super) fn rates_of(&self, st: &mut State, drives: &[Drive], order: Order) -> Result<()> {
+        let m = self.m;
+        let (c, out) = (&st.config, &mut st.motion);
+        for step in &self.rate {
+            match step {
+                Rate::Frame => {
+                    out[m.frame()] = Some(Motion::from_point(
+                        c.pose(m.frame()),
+                        Point::ORIGIN,
+                        Vec2::ZERO,
+                        Vec2::ZERO,
+                        0.0,
+                        0.0,
+                    ))
+                }
+                Rate::Crank { input, link, pivot } => {
+                    let d = drives[*input];
+                    let o = c.pose(m.frame()).apply(*pivot);
+                    out[*link] = Some(Motion::from_point(
+                        c.pose(*link),
+                        o,
+                        Vec2::ZERO,
+                        Vec2::ZERO,
+                        d.rate,
+                        d.rate2,
+                    ));
+                }
+                Rate::Slider { input, link, dir } => {
+                    let d = drives[*input];
+                    let pose = c.pose(*link);
+                    let u = c.pose(m.frame()).dir(*dir);
+                    out[*link] = Some(Motion::from_point(
+                        pose,
+                        pose.origin,
+                        u * d.rate,
+                        u * d.rate2,
+                        0.0,
+                        0.0,
+                    ));
+                }
+                Rate::Chained(ch) => {
+                    let kmo = out[ch.known].expect("solved before");
+                    out[ch.other] =
+                        Some(contour::chained_motion(m, c, *ch, &kmo, drives[ch.input]));
+                }
+                Rate::Dyad3(g) => {
+                    if g.run(c, out, order).is_none() {
+                        return Err(self.singular(g.group, drives));
+                    }
+                }
+                Rate::Dyad(g) => {
+                    if g.run(c, out, drives, order).is_none() {
+                        return Err(self.singular(g.group, drives));
+                    }
+                }
+                Rate::Triad(g) => {
+                    if g.run(c, out, drives, order).is_none() {
+                        return Err(self.singular(g.group, drives));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    #[cold]
+    fn singular(&self, gi: usize, drives: &[Drive]) -> crate::error::Error {
+        contour::singular(self.m, &self.s.groups[gi], &Drives::new(drives))
     }
 }

@@ -6,26 +6,24 @@
 //! dyad) goes to the interpreted solver, so the numbers and the errors are
 //! those of [`crate::kinematics::positions`].
 
-use super::{Program, State};
 use crate::accuracy::ACCURACY;
-use crate::error::Result;
 use crate::geom::{Line, Pose, circle_circle, circle_line};
-use crate::kinematics::positions::{self, Configuration, pair_of, point_of, triad_error};
+use crate::kinematics::positions::{self, Configuration, pair_of, point_of};
 use crate::model::mechanism::Mechanism;
-use crate::model::structure::{AssurGroup, Chained, DyadKind};
+use crate::model::structure::{Chained, DyadKind};
 use kurbo::{Point, Vec2};
 
 /// The angle and the length of a constant local segment (the one a link
 /// is posed by): `atan2` and `hypot` done once.
 #[derive(Clone, Copy, Debug)]
-struct Segment {
-    v: Vec2,
-    angle: f64,
-    len: f64,
+pub(super) struct Segment {
+    pub(super) v: Vec2,
+    pub(super) angle: f64,
+    pub(super) len: f64,
 }
 
 impl Segment {
-    fn new(v: Vec2) -> Segment {
+    pub(super) fn new(v: Vec2) -> Segment {
         Segment {
             v,
             angle: v.atan2(),
@@ -36,7 +34,7 @@ impl Segment {
     /// segment (from `lp`) onto `at_q − at_p`: the interpreted
     /// `set_by_two_local` with its constant half done.
     #[inline(always)]
-    fn pose(&self, lp: Vec2, at_p: Point, at_q: Point) -> Pose {
+    pub(super) fn pose(&self, lp: Vec2, at_p: Point, at_q: Point) -> Pose {
         let (w, l) = (at_q - at_p, self.v);
         let angle = w.atan2() - self.angle;
         let norm = w.hypot() * self.len;
@@ -48,8 +46,8 @@ impl Segment {
 /// A point of a link: the link and the point's local coordinates on it.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct On {
-    link: usize,
-    local: Vec2,
+    pub(super) link: usize,
+    pub(super) local: Vec2,
 }
 
 impl On {
@@ -69,65 +67,65 @@ impl On {
 /// at C.
 #[derive(Clone, Debug)]
 pub(super) struct Rrr {
-    group: usize,
-    sign: f64,
-    links: [usize; 2],
-    b: On,
-    d: On,
+    pub(super) group: usize,
+    pub(super) sign: f64,
+    pub(super) links: [usize; 2],
+    pub(super) b: On,
+    pub(super) d: On,
     /// B and C on link 1, D and C on link 2.
-    b1: Vec2,
-    d2: Vec2,
-    seg1: Segment,
-    seg2: Segment,
+    pub(super) b1: Vec2,
+    pub(super) d2: Vec2,
+    pub(super) seg1: Segment,
+    pub(super) seg2: Segment,
 }
 
 /// A class II group RRP: the circle about B meets the guide line.
 #[derive(Clone, Debug)]
 pub(super) struct Rrp {
-    group: usize,
-    sign: f64,
-    links: [usize; 2],
-    b: On,
-    b1: Vec2,
-    seg1: Segment,
-    r1: f64,
+    pub(super) group: usize,
+    pub(super) sign: f64,
+    pub(super) links: [usize; 2],
+    pub(super) b: On,
+    pub(super) b1: Vec2,
+    pub(super) seg1: Segment,
+    pub(super) r1: f64,
     /// The known link K2 of the guide pair, and whether it is the guide.
-    k2: usize,
-    k2_guide: bool,
-    delta: f64,
+    pub(super) k2: usize,
+    pub(super) k2_guide: bool,
+    pub(super) delta: f64,
     /// The point of K2 the line is drawn from (the line's point on the
     /// guide, the slider's point on the slider) and the offset of C from
     /// the other's in link 2 (turned by link 2's angle).
-    anchor: Vec2,
-    offset: Vec2,
-    line_dir: Vec2,
+    pub(super) anchor: Vec2,
+    pub(super) offset: Vec2,
+    pub(super) line_dir: Vec2,
     /// C on link 2.
-    c2: Vec2,
+    pub(super) c2: Vec2,
 }
 
 /// A class II group RPR: the rocking guide's angle in closed form.
 #[derive(Clone, Debug)]
 pub(super) struct Rpr {
-    group: usize,
-    sign: f64,
-    guide: usize,
-    slider: usize,
+    pub(super) group: usize,
+    pub(super) sign: f64,
+    pub(super) guide: usize,
+    pub(super) slider: usize,
     /// The guide's and the slider's pins on their known links, and on
     /// the guide and the slider.
-    jg: On,
-    js: On,
-    jg_local: Vec2,
-    js_local: Vec2,
-    h: f64,
-    alpha: f64,
-    delta: f64,
+    pub(super) jg: On,
+    pub(super) js: On,
+    pub(super) jg_local: Vec2,
+    pub(super) js_local: Vec2,
+    pub(super) h: f64,
+    pub(super) alpha: f64,
+    pub(super) delta: f64,
 }
 
 impl Rrr {
     /// Place the group by its plain closed form; `false` where it cannot
     /// (the interpreted form decides).
     #[inline(always)]
-    fn place(&self, c: &mut Configuration) -> bool {
+    pub(super) fn place(&self, c: &mut Configuration) -> bool {
         let (b, dd) = (self.b.world(c), self.d.world(c));
         match circle_circle(b, self.seg1.len, dd, self.seg2.len, self.sign, -1.0) {
             Some(x) => {
@@ -143,7 +141,7 @@ impl Rrr {
 impl Rrp {
     /// Place the group by its plain closed form; `false` where it cannot.
     #[inline(always)]
-    fn place(&self, c: &mut Configuration) -> bool {
+    pub(super) fn place(&self, c: &mut Configuration) -> bool {
         let b = self.b.world(c);
         let kp = c.pose(self.k2);
         let th2 = if self.k2_guide {
@@ -178,7 +176,7 @@ impl Rrp {
 impl Rpr {
     /// Place the group by its plain closed form; `false` where it cannot.
     #[inline(always)]
-    fn place(&self, c: &mut Configuration) -> bool {
+    pub(super) fn place(&self, c: &mut Configuration) -> bool {
         let (jg, js) = (self.jg.world(c), self.js.world(c));
         let w = js - jg;
         let dist = w.hypot();
@@ -240,87 +238,6 @@ pub(super) enum Place {
     Triad {
         group: usize,
     },
-}
-
-impl Program<'_> {
-    /// [`Program::positions_at`], the coordinates by reference.
-    pub(super) fn place(&self, st: &mut State, q: &[f64]) -> Result<()> {
-        let (m, s) = (self.m, self.s);
-        let c = &mut st.config;
-        c.poses[m.frame()] = Some(Pose::IDENTITY);
-        for step in &self.place {
-            match step {
-                Place::Crank {
-                    input,
-                    link,
-                    at,
-                    local,
-                    offset,
-                } => c.poses[*link] = Some(Pose::through(*at, *local, q[*input] - offset)),
-                Place::Slider {
-                    input,
-                    link,
-                    q0,
-                    dir,
-                    local,
-                    delta,
-                    turn,
-                } => {
-                    c.poses[*link] = Some(Pose::through_turned(
-                        *q0 + *dir * q[*input],
-                        *local,
-                        *delta,
-                        *turn,
-                    ))
-                }
-                Place::Chained(ch) => {
-                    let kp = c.pose(ch.known);
-                    c.poses[ch.other] = Some(positions::place_across(
-                        m,
-                        ch.pair,
-                        ch.known,
-                        &kp,
-                        q[ch.input],
-                    ));
-                }
-                Place::Rrr(g) => {
-                    if !g.place(c) {
-                        self.dyad(c, g.group, q)?;
-                    }
-                }
-                Place::Rrp(g) => {
-                    if !g.place(c) {
-                        self.dyad(c, g.group, q)?;
-                    }
-                }
-                Place::Rpr(g) => {
-                    if !g.place(c) {
-                        self.dyad(c, g.group, q)?;
-                    }
-                }
-                Place::Dyad { group } => self.dyad(c, *group, q)?,
-                Place::Triad { group } => {
-                    let AssurGroup::Triad(t) = &s.groups[*group] else {
-                        unreachable!("a class III group")
-                    };
-                    let pose = positions::solve_triad(m, t, st.triad_pose[*group], c)
-                        .map_err(|why| triad_error(m, s, *group, q, why))?;
-                    st.triad_pose[*group] = pose;
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// Dyad `gi` by the interpreted closed form (its tolerances, its errors).
-    #[cold]
-    fn dyad(&self, c: &mut Configuration, gi: usize, q: &[f64]) -> Result<()> {
-        let (m, s) = (self.m, self.s);
-        let AssurGroup::Dyad(d) = &s.groups[gi] else {
-            unreachable!("a class II group")
-        };
-        positions::solve_group_dyad(m, s, gi, d, self.branches.sign[gi], q, c)
-    }
 }
 
 /// The step that places dyad `gi`: its kind's closed form with its
