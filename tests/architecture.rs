@@ -589,3 +589,23 @@ fn has_word(code: &str, pat: &str) -> bool {
             || before == Some('e') && (pat.starts_with("print"))
     })
 }
+
+/// Every phrase is in the words' catalogues: outside `words` and `lang`
+/// no code names a language other than the default English, so that a
+/// new language is its catalogue file and its `Lang`.
+#[test]
+fn phrases_live_in_the_words_catalogues() {
+    let mut found = Vec::new();
+    for (file, text) in &sources() {
+        if file.starts_with("words/") || file == "lang.rs" {
+            continue;
+        }
+        let c = code(text);
+        for l in ["Lang::Uk", "Lang::Ru"] {
+            if c.contains(l) {
+                found.push(format!("{file}: {l}"));
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}

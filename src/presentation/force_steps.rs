@@ -52,11 +52,9 @@ fn lever_words(an: &Analysis, s: &Solved, loads: &[Load], lang: Lang, t: &mut St
     let Ok(levers) = crate::kinetostatics::lever::levers(an, s, loads, Naming::Full) else {
         return;
     };
-    let (head, arm) = match lang {
-        Lang::En => ("Zhukovsky's lever", "arm"),
-        Lang::Uk => ("Важіль Жуковського", "плече"),
-        Lang::Ru => ("Рычаг Жуковского", "плечо"),
-    };
+    let w = &crate::words::catalogue(lang).lever;
+    let units = &crate::words::catalogue(lang).force_plans;
+    let (head, arm) = (&w.title, &w.arm);
     for l in &levers {
         let mu_f = sheet::force_scale(l);
         let caption = sheet::caption(an, l, mu_f, lang);
@@ -71,16 +69,12 @@ fn lever_words(an: &Analysis, s: &Solved, loads: &[Load], lang: Lang, t: &mut St
                 "{n:>5}. {} = {} {}, {arm} h = {} {}: {}·h = {} {}.",
                 row[0],
                 row[1],
-                if lang == Lang::En { "N" } else { "Н" },
+                units.newton,
                 row[2],
-                if lang == Lang::En { "mm" } else { "мм" },
+                units.mm,
                 row[0].split(' ').next().unwrap_or(""),
                 row[3],
-                if lang == Lang::En {
-                    "N·mm"
-                } else {
-                    "Н·мм"
-                },
+                units.newton_millimetre,
             );
         }
         for line in &caption[1..] {

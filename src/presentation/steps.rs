@@ -33,26 +33,9 @@ pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) ->
     use crate::format::num;
     use crate::words::construction::sentence;
     let mut t = String::new();
-    let (title_v, title_a, worst, bound_word) = match lang {
-        Lang::En => (
-            "Plan of velocities",
-            "Plan of accelerations",
-            "worst intersection angle",
-            "drafting bound",
-        ),
-        Lang::Uk => (
-            "План швидкостей",
-            "План прискорень",
-            "найменший кут перетину",
-            "похибка побудови",
-        ),
-        Lang::Ru => (
-            "План скоростей",
-            "План ускорений",
-            "наименьший угол пересечения",
-            "погрешность построения",
-        ),
-    };
+    let c = crate::words::catalogue(lang);
+    let (title_v, title_a) = (&c.sheets.velocities, &c.sheets.accelerations);
+    let (worst, bound_word) = (&c.force_plans.worst, &c.sheets.drafting_bound);
     let Some(plans) = &s.plans else { return t };
     let input = input_words(an, s);
     for (title, plan) in [
@@ -60,16 +43,12 @@ pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) ->
         (title_a, plans.acceleration.as_ref()),
     ] {
         let Some(plan) = plan else { continue };
-        let position = match lang {
-            Lang::En => "position",
-            Lang::Uk => "положення",
-            Lang::Ru => "положение",
-        };
+        let position = &c.sheets.position;
         let _ = writeln!(t, "\n{title}, {position} {}, {input}", i + 1);
         for k in 0..plan.steps.len() {
             let _ = writeln!(t, "{:>3}. {}", k + 1, sentence(plan, k, lang));
         }
-        let mm = if lang == Lang::En { "mm" } else { "мм" };
+        let mm = &c.force_plans.mm;
         let _ = writeln!(
             t,
             "     {worst}: {}°; δ = {} {mm}",

@@ -17,6 +17,7 @@ use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Measured, Plan, PlanKind, Plans};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
+use crate::words::catalogue::TablePhrases;
 use crate::words::construction::Lang;
 
 /// What a column holds.
@@ -93,47 +94,17 @@ pub struct Table {
     pub groups: Vec<Group>,
 }
 
-/// Words of the tables, each in English, Ukrainian and Russian.
-const POINTS: [&str; 3] = ["Points", "Точки", "Точки"];
-const LINKS: [&str; 3] = ["Links", "Ланки", "Звенья"];
-const MEASURED: [&str; 3] = [
-    "Measured on the plans",
-    "Виміряно на планах",
-    "Измерено на планах",
-];
-const POINT: [&str; 3] = ["point", "точка", "точка"];
-const LINK: [&str; 3] = ["link", "ланка", "звено"];
-const SEGMENT: [&str; 3] = ["segment", "відрізок", "отрезок"];
-const VALUE: [&str; 3] = [
-    "value ± drafting bound",
-    "величина ± похибка побудови",
-    "величина ± погрешность построения",
-];
-const WORST: [&str; 3] = [
-    "worst intersection angle",
-    "найменший кут перетину",
-    "наименьший угол пересечения",
-];
-
-/// A word in language `l`.
-fn word(w: [&'static str; 3], l: Lang) -> &'static str {
-    match l {
-        Lang::En => w[0],
-        Lang::Uk => w[1],
-        Lang::Ru => w[2],
-    }
+/// The tables' words in `l` (its catalogue's).
+fn words(l: Lang) -> &'static TablePhrases {
+    &crate::words::catalogue(l).tables
 }
 
 /// A unit in language `l`: "м/с²" for "m/s²".
 pub fn unit(u: &str, l: Lang) -> String {
-    match l {
-        Lang::En => u.to_string(),
-        _ => u
-            .replace("rad", "рад")
-            .replace("mm", "мм")
-            .replace('m', "м")
-            .replace('s', "с"),
-    }
+    let letters = &crate::words::catalogue(l).units.letters;
+    letters
+        .iter()
+        .fold(u.to_string(), |u, [si, own]| u.replace(si.as_str(), own))
 }
 
 fn column(kind: Kind, head: &str, u: Option<&str>, l: Lang) -> Column {
@@ -180,7 +151,7 @@ fn table(caption: &str, mut columns: Vec<Column>, wide: usize, rows: Vec<Vec<Cel
 /// stay in English.
 pub fn points(an: &Analysis, s: &Solved, l: Lang) -> Table {
     let columns = vec![
-        column(Kind::Name, word(POINT, l), None, l),
+        column(Kind::Name, &words(l).point, None, l),
         column(Kind::Coordinate, "x", Some("m"), l),
         column(Kind::Coordinate, "y", Some("m"), l),
         column(Kind::Magnitude, "|v|", Some("m/s"), l),
@@ -211,7 +182,7 @@ pub fn points(an: &Analysis, s: &Solved, l: Lang) -> Table {
             row
         })
         .collect();
-    table(word(POINTS, l), columns, 3 + 2 * orders(an), rows)
+    table(&words(l).points, columns, 3 + 2 * orders(an), rows)
 }
 
 /// The largest |ω| and |ε| of the links at a position: the scales below
@@ -230,7 +201,7 @@ fn rate_scales(s: &Solved) -> (f64, f64) {
 pub fn links(an: &Analysis, s: &Solved, l: Lang) -> Table {
     let m = &an.mech;
     let columns = vec![
-        column(Kind::Name, word(LINK, l), None, l),
+        column(Kind::Name, &words(l).link, None, l),
         column(Kind::Angle, "angle", Some("°"), l),
         column(Kind::Rate, "ω", Some("rad/s"), l),
         column(Kind::Rate, "ε", Some("rad/s²"), l),
@@ -248,7 +219,7 @@ pub fn links(an: &Analysis, s: &Solved, l: Lang) -> Table {
             row
         })
         .collect();
-    table(word(LINKS, l), columns, 2 + orders(an), rows)
+    table(&words(l).links, columns, 2 + orders(an), rows)
 }
 
 /// A measured segment's name: its ends' names run together ("p_vb", "ab").
@@ -280,7 +251,7 @@ pub fn measured(plans: &Plans, titles: [&str; 2], l: Lang) -> Table {
         .map(|(plan, title)| {
             let title = format!(
                 "{title}: {} {}°, δ = {} {mm}",
-                word(WORST, l),
+                &words(l).worst,
                 num(plan.worst_angle_deg()),
                 num(plan.delta)
             );
@@ -318,12 +289,12 @@ pub fn measured(plans: &Plans, titles: [&str; 2], l: Lang) -> Table {
         })
         .collect();
     Table {
-        caption: word(MEASURED, l).to_string(),
+        caption: words(l).measured.to_string(),
         class: Some("measured"),
         columns: vec![
             column(Kind::Name, "", None, l),
-            column(Kind::Segment, word(SEGMENT, l), Some("mm"), l),
-            column(Kind::Measured, word(VALUE, l), None, l),
+            column(Kind::Segment, &words(l).segment, Some("mm"), l),
+            column(Kind::Measured, &words(l).value, None, l),
         ],
         groups,
     }

@@ -37,6 +37,18 @@ pub struct Catalogue {
     pub construction: ConstructionPhrases,
     /// The force plans' steps.
     pub force_plans: ForcePlanPhrases,
+    /// The sheets' words.
+    pub sheets: SheetPhrases,
+    /// The handout's words.
+    pub handout: HandoutPhrases,
+    /// The title block's words.
+    pub title_block: TitleBlockPhrases,
+    /// Zhukovsky's lever's words.
+    pub lever: LeverPhrases,
+    /// The result tables' words.
+    pub tables: TablePhrases,
+    /// How the language writes numbers and units.
+    pub units: UnitPhrases,
 }
 
 /// The catalogue of `lang`, read once.
@@ -110,9 +122,11 @@ pub struct ForcePlanPhrases {
     /// "link", "links" (one, several).
     pub(super) links: [String; 2],
     /// Units: N, mm, N·m, N/mm.
-    pub(super) newton: String,
-    pub(super) mm: String,
-    pub(super) newton_metre: String,
+    pub newton: String,
+    pub mm: String,
+    pub newton_metre: String,
+    /// N·mm (a moment on the lever).
+    pub newton_millimetre: String,
     pub(super) per_mm: String,
     /// `{formula}`, `{links}`.
     pub(super) group: String,
@@ -143,5 +157,136 @@ pub struct ForcePlanPhrases {
     /// The subscript of M_b, F_b.
     pub(super) balancing_sub: String,
     /// "worst intersection angle".
-    pub(super) worst: String,
+    pub worst: String,
+}
+
+/// The sheets' words (headings, captions, tables' heads).
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SheetPhrases {
+    /// The sheets' headings: the plan of the mechanism, the plans, the positions, "position", the course sheet, the results table.
+    pub mechanism: String,
+    pub velocities: String,
+    pub accelerations: String,
+    pub positions: String,
+    pub position: String,
+    pub course: String,
+    pub table: String,
+    /// The course sheet's heading of the plans of velocities.
+    pub velocity_plans: String,
+    /// The head of the course sheet's results table.
+    pub quantity_unit: String,
+    /// The heads of a plan's table of measured segments.
+    pub plan_table: [String; 4],
+    /// The steps' word for a value's drafting bound.
+    pub drafting_bound: String,
+    /// What diagrams are of: a point along its path (`{p}`), a slider or a link (`{id}`); the heading's words, and the chords.
+    pub diagram_point: String,
+    pub diagram_slider: String,
+    pub diagram_link: String,
+    pub diagrams_of: String,
+    pub chords: String,
+    /// The course's force analysis sheet: its title, its results table's heads, the lever's table and the reactions' captions.
+    pub force_analysis: String,
+    pub reactions_table: [String; 5],
+    pub forces_on_lever: String,
+    pub reactions_title: String,
+    /// The force sheets' title, and a panel's: a group, the input link.
+    pub force_sheets: String,
+    pub group: String,
+    pub input_link: String,
+}
+
+/// The handout page's words around its drawings.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HandoutPhrases {
+    /// The step buttons, the keys' hint, the headings of a position's section.
+    pub prev: String,
+    pub next: String,
+    pub start: String,
+    pub all: String,
+    pub step: String,
+    pub of: String,
+    pub keys: String,
+    pub position: String,
+    pub after: String,
+    pub no_plans: String,
+    pub results: String,
+    pub steps_title: String,
+    pub structure: String,
+}
+
+/// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian),
+/// by where they stand.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TitleBlockPhrases {
+    /// The columns' headings: change, sheet, document, signature, date.
+    pub heads: [String; 5],
+    /// The rows' roles: drawn, checked, technical control, standards
+    /// control, approved.
+    pub roles: [String; 5],
+    /// Over the letter, the mass and the scale.
+    pub cells: [String; 3],
+    /// "Sheets" (their count) and "Format".
+    pub sheets: String,
+    /// "Format".
+    pub format: String,
+}
+
+/// Zhukovsky's lever's words: its title, a force's arm, the balancing
+/// force's subscript, the turned plan, its table's heads, an input, along
+/// the guide.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LeverPhrases {
+    /// "Zhukovsky's lever".
+    pub title: String,
+    /// A force's arm on the lever.
+    pub arm: String,
+    /// The subscript of the balancing force and moment (F_b, M_b).
+    pub balancing: String,
+    /// The plan of velocities turned by 90°.
+    pub turned: String,
+    /// The table's heads: force, F, h, F·h.
+    pub heads: [String; 4],
+    /// "input".
+    pub input: String,
+    /// "along the guide".
+    pub along: String,
+}
+
+/// The result tables' words.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TablePhrases {
+    /// The tables' captions: points, links, measured on the plans.
+    pub points: String,
+    /// "Links".
+    pub links: String,
+    /// "Measured on the plans".
+    pub measured: String,
+    /// The columns: point, link, segment, value ± bound; the worst angle.
+    pub point: String,
+    /// "link".
+    pub link: String,
+    /// "segment".
+    pub segment: String,
+    /// "value ± drafting bound".
+    pub value: String,
+    /// "worst intersection angle".
+    pub worst: String,
+}
+
+/// How a language writes numbers and units: its decimal mark, and the
+/// letters of the SI units it writes its own way, replaced in order
+/// ("rad" before "m", "mm" before "m").
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UnitPhrases {
+    /// "." or ",".
+    pub decimal: String,
+    /// (SI letters, the language's), in the order they are replaced.
+    pub letters: Vec<[String; 2]>,
 }

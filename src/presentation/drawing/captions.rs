@@ -7,47 +7,11 @@ use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
+use crate::words::catalogue::SheetPhrases;
 
-/// The words of the sheets' headings.
-pub(crate) struct Words {
-    pub mechanism: &'static str,
-    pub velocities: &'static str,
-    pub accelerations: &'static str,
-    pub positions: &'static str,
-    pub position: &'static str,
-    pub course: &'static str,
-    pub table: &'static str,
-}
-pub(crate) fn words(lang: Lang) -> Words {
-    match lang {
-        Lang::En => Words {
-            mechanism: "Plan of the mechanism",
-            velocities: "Plan of velocities",
-            accelerations: "Plan of accelerations",
-            positions: "Positions of the mechanism",
-            position: "position",
-            course: "Kinematic analysis of the mechanism",
-            table: "Results",
-        },
-        Lang::Uk => Words {
-            mechanism: "План механізму",
-            velocities: "План швидкостей",
-            accelerations: "План прискорень",
-            positions: "Положення механізму",
-            position: "положення",
-            course: "Кінематичний аналіз механізму",
-            table: "Результати",
-        },
-        Lang::Ru => Words {
-            mechanism: "План механизма",
-            velocities: "План скоростей",
-            accelerations: "План ускорений",
-            positions: "Положения механизма",
-            position: "положение",
-            course: "Кинематический анализ механизма",
-            table: "Результаты",
-        },
-    }
+/// The sheets' words in `lang` (its catalogue's).
+pub(crate) fn words(lang: Lang) -> &'static SheetPhrases {
+    &crate::words::catalogue(lang).sheets
 }
 /// "position 1, φ1 = 30°" (the input link's own number), localised.
 pub(crate) fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {

@@ -203,7 +203,7 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
         };
         out.push(pending(
             "positions".into(),
-            w.positions.into(),
+            w.positions.clone(),
             scale_text("l", mu, "m", opt.lang),
             ("mu_l", mu),
             c,
@@ -295,8 +295,8 @@ fn position_sheets(
     for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
         let Some(plans) = &s.plans else { break };
         let (name, title) = match kind {
-            PlanKind::Velocity => ("velocity", w.velocities),
-            PlanKind::Acceleration => ("acceleration", w.accelerations),
+            PlanKind::Velocity => ("velocity", &w.velocities[..]),
+            PlanKind::Acceleration => ("acceleration", &w.accelerations[..]),
         };
         if !asked(an, solved, name)
             || (kind == PlanKind::Acceleration && plans.acceleration.is_none())

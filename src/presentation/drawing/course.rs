@@ -180,7 +180,7 @@ fn fixed_figures(
             "table-velocity",
             vel_at,
             PlanKind::Velocity,
-            w.velocities,
+            &w.velocities,
         ));
     }
     if has_acc && !acc_at.is_empty() {
@@ -188,7 +188,7 @@ fn fixed_figures(
             "table-acceleration",
             acc_at,
             PlanKind::Acceleration,
-            w.accelerations,
+            &w.accelerations,
         ));
     }
     fixed
@@ -452,11 +452,7 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
 
 /// "Plans of velocities", localised.
 fn plural_velocities(l: Lang) -> &'static str {
-    match l {
-        Lang::En => "Plans of velocities",
-        Lang::Uk => "Плани швидкостей",
-        Lang::Ru => "Планы скоростей",
-    }
+    &super::words(l).velocity_plans
 }
 
 /// A plan's extent in its own mm, the pole included.
@@ -494,11 +490,7 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
         }
         values.push(m);
     }
-    let head_q = match lang {
-        Lang::En => "quantity, unit",
-        Lang::Uk => "величина, од.",
-        Lang::Ru => "величина, ед.",
-    };
+    let head_q = &super::words(lang).quantity_unit;
     let mut head = vec![head_q.to_string()];
     head.extend(at.iter().map(|k| k.to_string()));
     let rows = names

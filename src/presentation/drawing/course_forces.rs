@@ -32,11 +32,7 @@ const CAPTION: f64 = 6.0;
 
 /// The sheet's name in the title block.
 pub fn title(lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => "Force analysis of the mechanism",
-        Lang::Uk => "Силовий аналіз механізму",
-        Lang::Ru => "Силовой анализ механизма",
-    }
+    &crate::words::catalogue(lang).sheets.force_analysis
 }
 
 /// The reactions and the balancing moment (force) of position `s` by each
@@ -44,11 +40,11 @@ pub fn title(lang: Lang) -> &'static str {
 fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     let d = s.dynamics.as_ref()?;
     let m = &an.mech;
-    let (pair, value, angle, plans, lever) = match lang {
-        Lang::En => ("pair", "equilibrium", "angle, °", "force plans", "lever"),
-        Lang::Uk => ("пара", "рівновага", "кут, °", "плани сил", "важіль"),
-        Lang::Ru => ("пара", "равновесие", "угол, °", "планы сил", "рычаг"),
-    };
+    let [pair, value, angle, plans, lever] = crate::words::catalogue(lang)
+        .sheets
+        .reactions_table
+        .each_ref()
+        .map(|s| s.as_str());
     let head = vec![
         pair.into(),
         value.into(),
@@ -59,7 +55,7 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     let deg = |v: kurbo::Vec2| number((v.y.atan2(v.x).to_degrees() * 10.0).round() / 10.0, lang);
     let n3 = |x: f64| number(round3(x), lang);
     let fp = d.force_plans.as_ref();
-    let newton = if lang == Lang::En { "N" } else { "Н" };
+    let newton = &crate::words::catalogue(lang).force_plans.newton;
     let mut rows = Vec::new();
     for (i, r) in d.revolutes.iter().enumerate() {
         let name = format!(
@@ -96,12 +92,10 @@ fn results(an: &Analysis, s: &Solved, lang: Lang) -> Option<Ruled> {
     }
     for (i, b) in d.balancing.iter().enumerate() {
         let sub = crate::words::forces::balancing_sub(lang);
+        let units = &crate::words::catalogue(lang).force_plans;
         let (name, unit) = match b {
-            Balancing::Moment(_) => (
-                format!("M_{sub}"),
-                if lang == Lang::En { "N·m" } else { "Н·м" },
-            ),
-            Balancing::Force(_) => (format!("F_{sub}"), if lang == Lang::En { "N" } else { "Н" }),
+            Balancing::Moment(_) => (format!("M_{sub}"), &units.newton_metre),
+            Balancing::Force(_) => (format!("F_{sub}"), &units.newton),
         };
         let by_plan = fp.and_then(|f| f.drives[i]).map_or("—".into(), n3);
         let lever = d.lever.get(i).map_or("—".into(), |v| n3(*v));
@@ -181,11 +175,7 @@ fn figures(
             canvas: c,
             scales: vec![("mu_v", l.mu_v)],
         });
-        let forces_on = match lang {
-            Lang::En => "The forces on the lever",
-            Lang::Uk => "Сили на важелі",
-            Lang::Ru => "Силы на рычаге",
-        };
+        let forces_on = &crate::words::catalogue(lang).sheets.forces_on_lever;
         out.push(Figure {
             id: format!("lever-table-{}", input + 1),
             caption: vec![forces_on.to_string()],
@@ -194,11 +184,7 @@ fn figures(
         });
     }
     if let Some(t) = results(an, s, lang) {
-        let head = match lang {
-            Lang::En => "Reactions and the balancing moment",
-            Lang::Uk => "Реакції та зрівноважувальний момент",
-            Lang::Ru => "Реакции и уравновешивающий момент",
-        };
+        let head = &crate::words::catalogue(lang).sheets.reactions_title;
         out.push(Figure {
             id: "reactions".into(),
             caption: vec![head.into()],

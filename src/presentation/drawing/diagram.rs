@@ -11,6 +11,7 @@ use super::table::{number, unit};
 use super::{DrawOptions, Sheet, page_svg};
 use crate::kinematics::solve::Analysis;
 use crate::studies::diagrams::{DENSE, Diagrams};
+use crate::words::catalogue::fill;
 use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
@@ -28,22 +29,13 @@ pub fn title(an: &Analysis, d: &Diagrams, lang: Lang) -> String {
     let m = &an.mech;
     let sym = symbol(an, d);
     let n = d.n;
-    let what = match (lang, d.point, d.slide) {
-        (Lang::En, Some(p), _) => format!("point {} along its path", m.point_name(p)),
-        (Lang::En, None, true) => format!("slider {}", m.link_id(d.output)),
-        (Lang::En, None, false) => format!("link {}", m.link_id(d.output)),
-        (Lang::Uk, Some(p), _) => format!("точки {} уздовж її траєкторії", m.point_name(p)),
-        (Lang::Uk, None, true) => format!("повзуна {}", m.link_id(d.output)),
-        (Lang::Uk, None, false) => format!("ланки {}", m.link_id(d.output)),
-        (Lang::Ru, Some(p), _) => format!("точки {} вдоль её траектории", m.point_name(p)),
-        (Lang::Ru, None, true) => format!("ползуна {}", m.link_id(d.output)),
-        (Lang::Ru, None, false) => format!("звена {}", m.link_id(d.output)),
+    let w = &crate::words::catalogue(lang).sheets;
+    let what = match (d.point, d.slide) {
+        (Some(p), _) => fill(&w.diagram_point, &[("p", m.point_name(p))]),
+        (None, true) => fill(&w.diagram_slider, &[("id", m.link_id(d.output))]),
+        (None, false) => fill(&w.diagram_link, &[("id", m.link_id(d.output))]),
     };
-    let (head, chords) = match lang {
-        Lang::En => ("Kinematic diagrams of", "chords"),
-        Lang::Uk => ("Кінематичні діаграми", "хорди"),
-        Lang::Ru => ("Кинематические диаграммы", "хорды"),
-    };
+    let (head, chords) = (&w.diagrams_of, &w.chords);
     format!("{head} {what}: {sym}, {sym}′, {sym}″ (N = {n}, {chords})")
 }
 

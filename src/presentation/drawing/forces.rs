@@ -33,11 +33,7 @@ pub struct Figure {
 
 /// The heading's words: "Force analysis".
 pub fn title(lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => "Force analysis",
-        Lang::Uk => "Силовий розрахунок",
-        Lang::Ru => "Силовой расчёт",
-    }
+    &crate::words::catalogue(lang).sheets.force_sheets
 }
 
 /// A panel's caption: "Group (2, 3), RRR", "Input link 1".
@@ -52,19 +48,11 @@ fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
                 }
                 _ => String::new(),
             };
-            let word = match lang {
-                Lang::En => "Group",
-                Lang::Uk => "Група",
-                Lang::Ru => "Группа",
-            };
+            let word = &crate::words::catalogue(lang).sheets.group;
             format!("{word} ({}){kind}", ids.join(", "))
         }
         None => {
-            let word = match lang {
-                Lang::En => "Input link",
-                Lang::Uk => "Вхідна ланка",
-                Lang::Ru => "Входное звено",
-            };
+            let word = &crate::words::catalogue(lang).sheets.input_link;
             format!("{word} {}", ids.join(", "))
         }
     }
@@ -72,7 +60,7 @@ fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
 
 /// "μ_F = 20 N/mm" (uk, ru: "Н/мм", the decimal comma).
 pub fn scale_label(mu: f64, lang: Lang) -> Label {
-    let newton = if lang == Lang::En { "N" } else { "Н" };
+    let newton = &crate::words::catalogue(lang).force_plans.newton;
     Label::new("μ", "F").with_tail(format!(
         " = {} {newton}/{}",
         table::number(mu, lang),

@@ -27,75 +27,14 @@ use crate::model::scene::InputSpec;
 use crate::pipeline::Solved;
 use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
+use crate::words::catalogue::HandoutPhrases;
 use crate::words::construction::{Lang, sentence};
 use kurbo::Point;
 use std::fmt::Write as _;
 
-/// Words of the page around the drawings.
-struct Ui {
-    prev: &'static str,
-    next: &'static str,
-    start: &'static str,
-    all: &'static str,
-    step: &'static str,
-    of: &'static str,
-    keys: &'static str,
-    position: &'static str,
-    after: &'static str,
-    no_plans: &'static str,
-    results: &'static str,
-    steps_title: &'static str,
-    structure: &'static str,
-}
-
-fn ui(l: Lang) -> Ui {
-    match l {
-        Lang::En => Ui {
-            prev: "Previous",
-            next: "Next",
-            start: "From the start",
-            all: "All steps",
-            step: "step",
-            of: "of",
-            keys: "keys ← →, Home, End",
-            position: "Position",
-            after: "drawn after the plan of velocities",
-            no_plans: "The scene asks for no plans of velocities or accelerations.",
-            results: "Results",
-            steps_title: "Construction",
-            structure: "Structure",
-        },
-        Lang::Uk => Ui {
-            prev: "Назад",
-            next: "Далі",
-            start: "Спочатку",
-            all: "Усі кроки",
-            step: "крок",
-            of: "з",
-            keys: "клавіші ← →, Home, End",
-            position: "Положення",
-            after: "будується після плану швидкостей",
-            no_plans: "Сцена не вимагає планів швидкостей чи прискорень.",
-            results: "Результати",
-            steps_title: "Побудова",
-            structure: "Будова",
-        },
-        Lang::Ru => Ui {
-            prev: "Назад",
-            next: "Далее",
-            start: "Сначала",
-            all: "Все шаги",
-            step: "шаг",
-            of: "из",
-            keys: "клавиши ← →, Home, End",
-            position: "Положение",
-            after: "строится после плана скоростей",
-            no_plans: "Сцена не требует планов скоростей и ускорений.",
-            results: "Результаты",
-            steps_title: "Построение",
-            structure: "Строение",
-        },
-    }
+/// Words of the page around the drawings (the language's catalogue).
+fn ui(l: Lang) -> &'static HandoutPhrases {
+    &crate::words::catalogue(l).handout
 }
 
 /// A sentence (or a quantity's name) as HTML, in the lecture's notation:
@@ -416,7 +355,7 @@ fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
         let titles = words(l);
         h += &table_html(&tables::measured(
             plans,
-            [titles.velocities, titles.accelerations],
+            [&titles.velocities[..], &titles.accelerations[..]],
             l,
         ));
     }
@@ -501,7 +440,7 @@ fn cell_html(c: &Cell) -> String {
 /// by step with their sentences in `lang`.
 pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
     let w = ui(lang);
-    let mut h = page_head(an, solved, lang, &w);
+    let mut h = page_head(an, solved, lang, w);
     let _ = write!(
         h,
         "<div class=\"board\" id=\"board\">\n<div class=\"where\"><span id=\"where\"></span><span id=\"counter\"></span></div>\n<div class=\"sentence\" id=\"sentence\" aria-live=\"polite\"></div>\n<div class=\"controls\"><button type=\"button\" id=\"first\" title=\"Home\">⇤ {}</button><button type=\"button\" id=\"prev\" title=\"←\">◀ {}</button><button type=\"button\" id=\"next\" class=\"primary\" title=\"→\">{} ▶</button><button type=\"button\" id=\"last\" title=\"End\">{} ⇥</button><span class=\"hint\">{}</span></div>\n</div>\n",
@@ -528,18 +467,14 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
 
 /// The page up to its board: the head (style, the errors' script), the
 /// title, the structure and a tab per position.
-fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &Ui) -> String {
+fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -> String {
     let m = &an.mech;
     let title = if m.scene.title.is_empty() {
         "mechplan".to_string()
     } else {
         m.scene.title.clone()
     };
-    let code = match lang {
-        Lang::En => "en",
-        Lang::Uk => "uk",
-        Lang::Ru => "ru",
-    };
+    let code = lang.code();
     let structure = format!(
         "{}: W = {}, {} [{}]",
         w.structure,
@@ -556,8 +491,8 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &Ui) -> String {
     let _ = writeln!(
         h,
         "<body data-word-step=\"{}\" data-word-of=\"{}\">",
-        xml(w.step),
-        xml(w.of)
+        xml(&w.step),
+        xml(&w.of)
     );
     let _ = writeln!(
         h,
@@ -609,12 +544,12 @@ fn position_section(
         "<figure class=\"fig mech\"><figcaption><b>{}</b> <span class=\"scale\">{}</span></figcaption>\n<div class=\"paper\">{}</div></figure>\n",
         sheet_words.mechanism,
         label_html(&mu_l),
-        mechanism_svg(mech, frame, &format!("p{pos}m-"), sheet_words.mechanism)
+        mechanism_svg(mech, frame, &format!("p{pos}m-"), &sheet_words.mechanism)
     );
     if let Some(plans) = &s.plans {
         for (kind, title, plan) in [
-            ("v", sheet_words.velocities, Some(&plans.velocity)),
-            ("a", sheet_words.accelerations, plans.acceleration.as_ref()),
+            ("v", &sheet_words.velocities[..], Some(&plans.velocity)),
+            ("a", &sheet_words.accelerations[..], plans.acceleration.as_ref()),
         ] {
             let Some(plan) = plan else { continue };
             plan_figure(h, an, plan, (pos, kind, title), lang);

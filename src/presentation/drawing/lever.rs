@@ -12,6 +12,7 @@ use crate::kinematics::construction::scale::standard_scale;
 use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::lever::{Lever, LeverForce, Part};
 use crate::kinetostatics::{Balancing, Origin};
+use crate::words::catalogue::LeverPhrases;
 use crate::words::construction::Lang;
 use kurbo::{Point, Vec2};
 
@@ -27,53 +28,15 @@ const VISIBLE: f64 = 0.8;
 /// its arrow unreadable, its arm would only crowd the lever.
 const SHORTEST: f64 = 1.5;
 
-/// The sheet's words.
-pub(crate) struct LeverWords {
-    pub title: &'static str,
-    /// The subscript of the balancing force and moment (F_b, M_b).
-    balancing: &'static str,
-    turned: &'static str,
-    heads: [&'static str; 4],
-    input: &'static str,
-    along: &'static str,
-}
-
-pub(crate) fn words(lang: Lang) -> LeverWords {
-    let k = match lang {
-        Lang::En => 0,
-        Lang::Uk => 1,
-        Lang::Ru => 2,
-    };
-    // Each word in English, Ukrainian and Russian.
-    LeverWords {
-        title: [
-            "Zhukovsky's lever",
-            "Важіль Жуковського",
-            "Рычаг Жуковского",
-        ][k],
-        balancing: ["b", "зр", "ур"][k],
-        turned: [
-            "the plan of velocities turned by 90° ↺ about the pole p",
-            "план швидкостей, повернутий на 90° ↺ навколо полюса p",
-            "план скоростей, повёрнутый на 90° ↺ вокруг полюса p",
-        ][k],
-        heads: [
-            ["force", "F, N", "h, mm", "F·h, N·mm"],
-            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-            ["сила", "F, Н", "h, мм", "F·h, Н·мм"],
-        ][k],
-        input: ["input", "вхід", "вход"][k],
-        along: ["along the guide", "уздовж напрямної", "вдоль направляющей"][k],
-    }
+/// The lever's words in `lang` (its catalogue's).
+pub(crate) fn words(lang: Lang) -> &'static LeverPhrases {
+    &crate::words::catalogue(lang).lever
 }
 
 /// A unit in the language, the newton included (Н).
 fn unit(u: &str, lang: Lang) -> String {
     let u = super::table::unit(u, lang);
-    match lang {
-        Lang::En => u,
-        _ => u.replace('N', "Н"),
-    }
+    u.replace('N', &crate::words::catalogue(lang).force_plans.newton)
 }
 
 /// The name of a force on the lever in the course's notation, as the
@@ -211,7 +174,7 @@ pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
     let mut feet = Vec::new();
     let fb = l.dir_b * l.f_b;
     if fb != Vec2::ZERO {
-        let label = Label::new("F", w.balancing);
+        let label = Label::new("F", &w.balancing[..]);
         force(c, (l.at_b, fb), mu_f, label, &mut feet, lang);
     }
     for f in &l.forces {
@@ -262,12 +225,12 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
     let w = words(lang);
     let n = |x: f64| number(x, lang);
     let u = |s: &str| unit(s, lang);
-    let b = w.balancing;
+    let b = &w.balancing;
     let sum: f64 = l.forces.iter().map(|f| f.moment).sum();
     let mut out = vec![
         format!(
             "{}: μ_v = {} ({})/{}, μ_F = {} {}/{}",
-            w.turned,
+            &w.turned,
             n(l.mu_v),
             u("m/s"),
             u("mm"),

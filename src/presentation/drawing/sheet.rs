@@ -8,6 +8,7 @@
 use super::SheetSize;
 use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, xml};
 use crate::model::scene::SheetInfo;
+use crate::words::catalogue::TitleBlockPhrases;
 use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::fmt::Write as _;
@@ -200,13 +201,13 @@ impl Block {
         };
         // Headings of the columns (baselines 1.5 mm above a 5 mm row's
         // bottom, centred in their cells).
-        for (x, h) in [181.5, 173.0, 156.5, 137.5, 125.0].into_iter().zip(w.heads) {
+        for (x, h) in [181.5, 173.0, 156.5, 137.5, 125.0].into_iter().zip(&w.heads) {
             small(self, (x, 31.3), "middle", h);
         }
         let who = [t.author.as_deref(), t.checker.as_deref(), None, None, None];
         for ((y, role), who) in [26.3, 21.3, 16.3, 6.3, 1.3]
             .into_iter()
-            .zip(w.roles)
+            .zip(&w.roles)
             .zip(who)
         {
             small(self, (184.0, y), "start", role);
@@ -214,7 +215,7 @@ impl Block {
                 self.text((167.0, y), 2.5, "start", &fit(n, 18), "title-block-field");
             }
         }
-        for (x, cell) in [42.5, 26.5, 9.0].into_iter().zip(w.cells) {
+        for (x, cell) in [42.5, 26.5, 9.0].into_iter().zip(&w.cells) {
             small(self, (x, 36.3), "middle", cell);
         }
         // "Sheet 1": the sheet column's word and this sheet's number.
@@ -362,45 +363,7 @@ fn wrap(s: &str, width: usize, lines: usize) -> Vec<String> {
     out.into_iter().map(|l| fit(&l, width)).collect()
 }
 
-/// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian),
-/// by where they stand.
-struct Words {
-    /// The columns' headings: change, sheet, document, signature, date.
-    heads: [&'static str; 5],
-    /// The rows' roles: drawn, checked, technical control, standards
-    /// control, approved.
-    roles: [&'static str; 5],
-    /// Over the letter, the mass and the scale.
-    cells: [&'static str; 3],
-    /// "Sheets" (their count) and "Format".
-    sheets: &'static str,
-    format: &'static str,
-}
-
-fn words(l: Lang) -> Words {
-    let k = match l {
-        Lang::En => 0,
-        Lang::Uk => 1,
-        Lang::Ru => 2,
-    };
-    // Each group in English, Ukrainian and Russian.
-    Words {
-        heads: [
-            ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"],
-            ["Зм.", "Арк.", "№ докум.", "Підп.", "Дата"],
-            ["Изм.", "Лист", "№ докум.", "Подп.", "Дата"],
-        ][k],
-        roles: [
-            ["Drawn", "Checked", "Tech.", "Std. ctrl.", "Approved"],
-            ["Розроб.", "Перев.", "Т.контр.", "Н.контр.", "Затв."],
-            ["Разраб.", "Пров.", "Т.контр.", "Н.контр.", "Утв."],
-        ][k],
-        cells: [
-            ["Letter", "Mass", "Scale"],
-            ["Літ.", "Маса", "Масштаб"],
-            ["Лит.", "Масса", "Масштаб"],
-        ][k],
-        sheets: ["Sheets", "Аркушів", "Листов"][k],
-        format: ["Format", "Формат", "Формат"][k],
-    }
+/// The title block's words in `l` (its catalogue's).
+fn words(l: Lang) -> &'static TitleBlockPhrases {
+    &crate::words::catalogue(l).title_block
 }

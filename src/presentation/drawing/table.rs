@@ -111,10 +111,7 @@ impl Ruled {
 pub fn number(x: f64, l: Lang) -> String {
     // The minus sign of typesetting (−), not the hyphen.
     let s = num(x).replace('-', "\u{2212}");
-    match l {
-        Lang::En => s,
-        _ => s.replace('.', ","),
-    }
+    s.replace('.', &crate::words::catalogue(l).units.decimal)
 }
 
 /// A unit in the language: м/с, рад/с².
@@ -124,11 +121,7 @@ pub fn unit(u: &str, l: Lang) -> String {
 
 /// The words of the tables.
 fn heads(l: Lang) -> [&'static str; 4] {
-    match l {
-        Lang::En => ["quantity", "segment", "length, mm", "value"],
-        Lang::Uk => ["величина", "відрізок", "довжина, мм", "значення"],
-        Lang::Ru => ["величина", "отрезок", "длина, мм", "значение"],
-    }
+    crate::words::catalogue(l).sheets.plan_table.each_ref().map(|s| s.as_str())
 }
 
 /// An angular rate's magnitude as printed, with its sense (none when it
