@@ -96,6 +96,7 @@ pub use kurbo::{Point, Vec2};
 pub use lang::Lang;
 pub use presentation::drawing::{Format, Sheet, SheetSize};
 pub use progress::{Progress, Silent};
+pub use study::DEFAULT_SCENE;
 pub use study::files::{Spool, write_atomically};
 pub use study::{
     Centres, CheckRequest, Checked, Diagram, DrawRequest, Invariants, LinkResult, PointResult,
@@ -108,6 +109,3 @@ pub use verification::precision::Settings as PrecisionSettings;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
-
-/// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
-pub const DEFAULT_SCENE: &str = include_str!("../fixtures/six_link_fig2_10.json");

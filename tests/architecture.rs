@@ -342,6 +342,16 @@ fn violations(sources: &BTreeMap<String, String>) -> Vec<String> {
         let code = without_unit_tests(&code(text));
         let mut used: BTreeSet<String> = BTreeSet::new();
         for p in named_paths(&code, &me) {
+            // The crate root's re-exports are the API's, not a way round
+            // the layers: inside, a path names its module.
+            if let Some(first) = p.first()
+                && first.starts_with(|c: char| c.is_uppercase())
+            {
+                problems.push(format!(
+                    "{file}: uses crate::{} through the crate root",
+                    p.join("::")
+                ));
+            }
             if let Some(first) = p.first()
                 && let Some(theirs) = layer(first)
                 && first != &top
@@ -467,6 +477,18 @@ fn an_upward_import_and_a_cycle_are_caught() {
     assert!(
         v.iter()
             .any(|p| p.contains(&key) && p.contains("crate::presentation::report")),
+        "{v:?}"
+    );
+    // A path through the crate root's re-exports.
+    let mut house = sources();
+    house
+        .get_mut("geom.rs")
+        .unwrap()
+        .push_str("\nfn refuse() -> crate::Error { unreachable!() }\n");
+    let v = violations(&house);
+    assert!(
+        v.iter()
+            .any(|p| p.contains("geom.rs") && p.contains("through the crate root")),
         "{v:?}"
     );
     // Two files of one layer naming each other.

@@ -33,7 +33,7 @@ mod solution;
 mod studies;
 
 pub use check_file::check_file;
-pub use prepared::{DrawRequest, Results, Study, read};
+pub use prepared::{DEFAULT_SCENE, DrawRequest, Results, Study, read};
 pub use sheets::{Written, write_sheets};
 pub use solution::{LinkResult, PointResult, PositionResult, Positions, Solution};
 pub use studies::{

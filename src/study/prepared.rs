@@ -118,6 +118,9 @@ impl DrawRequest {
     }
 }
 
+/// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
+pub const DEFAULT_SCENE: &str = include_str!("../../fixtures/six_link_fig2_10.json");
+
 /// Read a file whole, an error naming it if it cannot be read.
 pub fn read(path: &Path) -> Result<String> {
     std::fs::read_to_string(path).map_err(|source| Error::Io {
@@ -168,7 +171,7 @@ impl Study {
 
     /// The embedded default scene: the lecture's six-link mechanism.
     pub fn default_scene() -> Study {
-        Study::named(crate::DEFAULT_SCENE, "the embedded default scene")
+        Study::named(DEFAULT_SCENE, "the embedded default scene")
             .expect("the embedded scene is valid")
     }
 

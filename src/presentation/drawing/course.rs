@@ -103,7 +103,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     };
     let shares: Vec<f64> = sources.iter().map(|s| s.1).collect();
     let placed = grow(&shares, attempt).ok_or_else(|| {
-        crate::Error::Internal(format!(
+        crate::error::Error::Internal(format!(
             "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
         ))
     })?;

@@ -226,7 +226,7 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Opti
         }
     }
     let placed = placed.ok_or_else(|| {
-        crate::Error::Internal(format!(
+        crate::error::Error::Internal(format!(
             "the force analysis sheet's figures do not pack on {size:?}"
         ))
     })?;
