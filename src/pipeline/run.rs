@@ -73,8 +73,9 @@ impl Analysis {
         self.run_each_with(&crate::progress::Silent, f)
     }
 
-    /// As [`Analysis::run_each`], telling `progress` of each position
-    /// (the caller's watcher: a terminal's bar, or none).
+    /// As [`Analysis::run_each`], telling `progress` of the sweep (its
+    /// length, once the input values are found) and of each position (the
+    /// caller's watcher: a terminal's bar, or none).
     pub fn run_each_with(
         &self,
         progress: &dyn crate::progress::Progress,
@@ -124,7 +125,8 @@ impl Analysis {
         let w = m.scene.input_count();
         // (Made a chunk at a time: a sweep's memory is its input values.)
         let rounded = m.scene.input_rounding.len() == values.len() * w;
-        values
+        progress.start(values.len(), "positions");
+        let done = values
             .chunks(RUN_CHUNK)
             .enumerate()
             .try_for_each(|(k, chunk)| {
@@ -152,7 +154,9 @@ impl Analysis {
                     }
                     f(s)
                 })
-            })
+            });
+        progress.finish();
+        done
     }
 
     /// One chunk of [`Analysis::run_each`] (the number of its first

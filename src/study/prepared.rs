@@ -223,11 +223,7 @@ impl Study {
     /// Each position of `an` (this study's analysis, or a variant of it)
     /// as it is solved, in order, told to the watcher.
     fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        let w = self.watcher.get();
-        w.start(self.position_count()?, "positions");
-        let done = an.run_each_with(w, f);
-        w.finish();
-        done
+        an.run_each_with(self.watcher.get(), f)
     }
 
     /// The result style of the report module for `style`.

@@ -381,13 +381,8 @@ impl Study {
 /// The worker of [`Positions`]: every position sent in order, then the
 /// error that stopped the run (none when the reader has gone).
 fn run_into(an: &Analysis, watcher: &Watcher, tx: &SyncSender<Result<Solved>>) {
-    let w = watcher.get();
-    if let Ok(n) = an.input_values().map(|v| v.len()) {
-        w.start(n, "positions");
-    }
     let gone = || Error::Internal("the reader of the positions has gone".into());
-    let done = an.run_each_with(w, |s| tx.send(Ok(s)).map_err(|_| gone()));
-    w.finish();
+    let done = an.run_each_with(watcher.get(), |s| tx.send(Ok(s)).map_err(|_| gone()));
     if let Err(e) = done {
         // Sending fails only when the reader has gone: nobody to tell.
         let _ = tx.send(Err(e));

@@ -119,8 +119,8 @@ impl Step<'_> {
                 let at = about_words(self.an, (*about, *about_name));
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
-                let args = [("at", &*at), ("what", &what), ("f", &f), ("value", &value)];
-                fill(&w.moment, &[args[0], args[1], args[2], args[3], ("n", n)])
+                let args = [("at", &*at), ("what", &what), ("f", &f), ("value", &value), ("n", n)];
+                fill(&w.moment, &args)
             }
             ForceStep::Projection {
                 links,
@@ -171,14 +171,14 @@ impl Step<'_> {
             } => {
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
-                let args = [("what", &*what), ("value", &value), ("nm", &w.newton_metre), ("f", &f)];
-                match at {
-                    Some(p) => {
-                        let p = format!("({}, {})", num(p.x), num(p.y));
-                        fill(&w.couple_at, &[args[0], args[1], args[2], args[3], ("p", &p)])
-                    }
-                    None => fill(&w.couple_alone, &args),
-                }
+                // Where the guide's force acts, when it is not zero.
+                let p = at.map_or(String::new(), |p| format!("({}, {})", num(p.x), num(p.y)));
+                let phrase = if at.is_some() { &w.couple_at } else { &w.couple_alone };
+                let nm = &w.newton_metre;
+                fill(
+                    phrase,
+                    &[("what", &what), ("value", &value), ("nm", nm), ("f", &f), ("p", &p)],
+                )
             }
             ForceStep::Balancing { input, value } => self.balancing(*input, *value),
         }
