@@ -4,12 +4,14 @@
 //! handout alike ([`tables`]), the sheets and the handout ([`drawing`]),
 //! the force analysis in the result ([`dynamics`]) and in steps
 //! ([`force_steps`]), a check's verdict as text, JSON and an overlay
-//! ([`verdict`]), the work-precision report's table and plot
+//! ([`verdict`]), a group of answers' gradebook and summary page
+//! ([`gradebook`]), the work-precision report's table and plot
 //! ([`precision`]), the studies' tables ([`studies`]).
 
 pub mod drawing;
 pub mod dynamics;
 pub mod force_steps;
+pub mod gradebook;
 pub mod precision;
 pub mod report;
 mod steps;

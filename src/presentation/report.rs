@@ -333,7 +333,7 @@ pub enum Style {
 
 /// A CSV field: as it is, or in double quotes (doubled inside) when it
 /// holds a comma, a quote or a line break (RFC 4180).
-fn csv_field(s: &str) -> String {
+pub fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {
