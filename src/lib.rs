@@ -10,8 +10,9 @@
 //! writes the result files to any `io::Write` ([`Study::write_results`]);
 //! draws the lecture's sheets ([`Solution::sheets`] as SVG text,
 //! [`Study::draw`] into a folder); and checks a student's hand-drawn plan
-//! ([`Study::check_answer`]). The library never prints; the `mechplan`
-//! command does.
+//! ([`Study::check_answer`]), or a whole group of them into a gradebook
+//! ([`check_group`]). The library never prints; the `mechplan` command
+//! does.
 //!
 //! ```
 //! use mechplan::Study;
@@ -99,9 +100,9 @@ pub use progress::{Progress, Silent};
 pub use study::DEFAULT_SCENE;
 pub use study::files::{Spool, write_atomically};
 pub use study::{
-    Centres, CheckRequest, Checked, Diagram, DrawRequest, Invariants, LinkResult, PointResult,
-    PositionResult, Positions, PrecisionReport, Results, Solution, Study, Written, check_file,
-    frenet,
+    Centres, CheckRequest, Checked, Diagram, DrawRequest, Grade, GradeRow, Graded, Invariants,
+    LinkResult, PointResult, PositionResult, Positions, PrecisionReport, Results, Solution, Study,
+    Totals, Written, check_file, check_group, frenet,
 };
 pub use verification::precision::Settings as PrecisionSettings;
 

@@ -37,7 +37,7 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
 
 /// An answer file's text, refusing one larger than [`MAX_ANSWER_BYTES`]
 /// before it is read whole; its problems name the file.
-fn read_answer(path: &Path) -> Result<String> {
+pub(super) fn read_answer(path: &Path) -> Result<String> {
     use std::io::Read;
     let name = path.display().to_string();
     let io = |source| Error::Io {

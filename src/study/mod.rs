@@ -27,12 +27,14 @@
 
 mod check_file;
 pub mod files;
+mod group;
 mod prepared;
 mod sheets;
 mod solution;
 mod studies;
 
 pub use check_file::check_file;
+pub use group::{GRADEBOOK, Graded, OVERLAYS, SUMMARY, check_group, is_group};
 pub use prepared::{DEFAULT_SCENE, DrawRequest, Results, Study, read};
 pub use sheets::{Written, write_sheets};
 pub use solution::{LinkResult, PointResult, PositionResult, Positions, Solution};
@@ -41,6 +43,7 @@ pub use studies::{
 };
 
 pub use crate::error::in_file;
+pub use crate::presentation::gradebook::{Counts, Grade, GradeRow, Totals};
 
 use crate::error::{Error, Result};
 use crate::presentation::drawing::{self, DrawOptions};
