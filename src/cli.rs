@@ -38,12 +38,19 @@ pub enum Command {
         #[arg(long, value_parser = lang)]
         lang: Option<Lang>,
     },
-    /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written.
+    /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written. Several ANSWERs or a folder: a group, graded into OUT/gradebook.csv, OUT/summary.html and OUT/overlays/ (exit 2 if an answer is unreadable, else 1 if one is wrong, else 4 if one cannot be judged).
     Check {
         /// The scene file.
         scene: PathBuf,
-        /// The student's answer: JSON (docs/check.md) or an SVG drawn in a vector editor.
-        answer: PathBuf,
+        /// The student's answer: JSON (docs/check.md) or an SVG drawn in a vector editor; or
+        /// several, or a folder of them (its *.json and *.svg files): a group.
+        #[arg(required = true, value_name = "ANSWER")]
+        answers: Vec<PathBuf>,
+        /// A group's output folder: gradebook.csv, summary.html, overlays/ (default:
+        /// mechplan-check; given with a single answer, that answer is a group of one).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// text, or json (a group: one JSON array of the answers' reports).
         #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
         format: CheckFormat,
         /// Write an SVG overlaying the student's points on the correct plan.

@@ -93,7 +93,8 @@ fn command(c: Command) -> Result<u8, Error> {
         }
         Command::Check {
             scene,
-            answer,
+            answers,
+            output,
             format,
             svg,
             delta,
@@ -109,7 +110,17 @@ fn command(c: Command) -> Result<u8, Error> {
                 plan,
                 position,
             };
-            let (report, status) = mechplan::check_file(&scene, &answer, &req)?;
+            if mechplan::study::is_group(&answers, output.is_some()) {
+                let out = output.unwrap_or_else(|| "mechplan-check".into());
+                let bar = terminal::Bar::shown_from(1);
+                let graded = mechplan::check_group(&scene, &answers, &req, &out, &bar)?;
+                stdout(&match req.json {
+                    true => terminal::pretty(&graded.to_json()),
+                    false => graded.to_text(),
+                })?;
+                return Ok(graded.status());
+            }
+            let (report, status) = mechplan::check_file(&scene, &answers[0], &req)?;
             stdout(&report)?;
             return Ok(status);
         }

@@ -67,12 +67,33 @@ pub const BAR_FROM: usize = 2000;
 
 /// A progress bar on standard error for long sweeps, when it is a
 /// terminal; nothing for short sweeps, pipes, files and tests.
-#[derive(Default)]
-pub struct Bar(Mutex<Option<ProgressBar>>);
+pub struct Bar {
+    /// From this many items the bar is shown.
+    from: usize,
+    bar: Mutex<Option<ProgressBar>>,
+}
+
+impl Default for Bar {
+    /// A bar for sweeps of positions: from [`BAR_FROM`] items.
+    fn default() -> Bar {
+        Bar::shown_from(BAR_FROM)
+    }
+}
+
+impl Bar {
+    /// A bar shown from `from` items (answers of a group, each checked
+    /// far slower than a position is solved: from the first).
+    pub fn shown_from(from: usize) -> Bar {
+        Bar {
+            from,
+            bar: Mutex::new(None),
+        }
+    }
+}
 
 impl Progress for Bar {
     fn start(&self, len: usize, what: &str) {
-        if len < BAR_FROM || !std::io::stderr().is_terminal() {
+        if len < self.from || !std::io::stderr().is_terminal() {
             return;
         }
         let pb = ProgressBar::new(len as u64);
@@ -81,19 +102,19 @@ impl Progress for Bar {
             pb.set_style(style);
         }
         pb.set_message(what.to_string());
-        if let Ok(mut b) = self.0.lock() {
+        if let Ok(mut b) = self.bar.lock() {
             *b = Some(pb);
         }
     }
     fn advance(&self, n: usize) {
-        if let Ok(b) = self.0.lock()
+        if let Ok(b) = self.bar.lock()
             && let Some(pb) = b.as_ref()
         {
             pb.inc(n as u64);
         }
     }
     fn finish(&self) {
-        if let Ok(mut b) = self.0.lock()
+        if let Ok(mut b) = self.bar.lock()
             && let Some(pb) = b.take()
         {
             pb.finish_and_clear();
