@@ -1,0 +1,548 @@
+//! `check SCENE DIR` (docs/check.md, "A group at once"): a folder of 30
+//! answers of the six-link with loads — plans of velocities and
+//! accelerations read off the construction with a little noise (one drawn
+//! as an SVG), points moved, the crank's velocity reversed, force plans
+//! right, wrong and drawn too small, a broken JSON and an unknown letter —
+//! graded in one run. The gradebook is read back with a CSV parser that
+//! is not mechplan's, every file's grade is the one it was built with,
+//! the overlays and the summary page's links are there, and the exit
+//! status is the group's (2 with an unreadable answer, 1 with a wrong one,
+//! 4 with one that cannot be judged, 0). Plus what a group refuses, the
+//! default output folder and an output that cannot be written.
+
+use serde_json::{Value, json};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const SCENE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/fixtures/dynamics/six_link_fig2_10.json"
+);
+
+/// The gradebook's header, in order.
+const COLUMNS: [&str; 9] = [
+    "file",
+    "plan",
+    "position",
+    "grade",
+    "mistakes",
+    "right",
+    "wrong",
+    "undecided",
+    "message",
+];
+
+/// The binary on `args`, in `cwd`: its exit status, standard output and
+/// standard error.
+fn run_in(cwd: &Path, args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .current_dir(cwd)
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    run_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
+}
+
+/// A fresh folder for one test.
+fn fresh(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mechplan-group-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The scene's result file (`solve --format json`): the plans' points and
+/// the reactions the answers are read off.
+fn solved() -> Value {
+    let (code, out, err) = run(&["solve", SCENE, "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// A pencil's noise, the same every run: uniform in ±0.1 mm.
+struct Noise(u64);
+
+impl Noise {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.2
+    }
+}
+
+/// What an answer was built to be.
+#[derive(Clone, Debug)]
+struct Built {
+    grade: &'static str,
+    /// `velocity`, `acceleration`, `force`; empty when unreadable.
+    plan: &'static str,
+    position: usize,
+    /// A piece of the mistakes' column ("" for none expected).
+    mistake: &'static str,
+    /// A piece of the message (unreadable answers).
+    message: &'static str,
+}
+
+impl Built {
+    fn new(grade: &'static str, plan: &'static str, position: usize) -> Built {
+        Built {
+            grade,
+            plan,
+            position,
+            mistake: "",
+            message: "",
+        }
+    }
+    fn kinematic(&self) -> bool {
+        matches!(self.plan, "velocity" | "acceleration")
+    }
+}
+
+/// A plan's points `names` at position `k` (from 1), as a student reads
+/// them off: each coordinate within 0.1 mm.
+fn points(doc: &Value, kind: &str, k: usize, names: &[&str], noise: &mut Noise) -> Value {
+    let plan = &doc["positions"][k - 1]["plans"][kind];
+    let mut pts = serde_json::Map::new();
+    for n in names {
+        let p = &plan["points"][*n];
+        let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+        pts.insert(n.to_string(), json!([x + noise.next(), y + noise.next()]));
+    }
+    json!({ "plan": kind, "position": k, "mu": plan["mu"], "points": pts })
+}
+
+/// The reactions of group (4, 5) at position `k` (from 1): R_34 at C,
+/// R_54 at D, the guide's R_05 on the slider, in N.
+fn reactions(doc: &Value, k: usize) -> BTreeMap<&'static str, f64> {
+    let mut out = BTreeMap::new();
+    let norm = |v: &Value| v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap());
+    for pair in doc["positions"][k - 1]["dynamics"]["pairs"]
+        .as_array()
+        .unwrap()
+    {
+        if pair["slider"] == "5" {
+            out.insert("R_05", norm(&pair["N"]));
+        } else if pair["point"] == "C" {
+            out.insert("R_34", norm(&pair["R"]));
+        } else if pair["point"] == "D" {
+            out.insert("R_54", norm(&pair["R"]));
+        }
+    }
+    assert_eq!(out.len(), 3);
+    out
+}
+
+/// A force plan's answer of group (4, 5) at μ_F = `mu`, R_34 times
+/// `factor`.
+fn force(doc: &Value, k: usize, mu: f64, factor: f64) -> Value {
+    let mut values = serde_json::Map::new();
+    for (name, v) in reactions(doc, k) {
+        let f = if name == "R_34" { factor } else { 1.0 };
+        values.insert(name.into(), json!(v * f));
+    }
+    json!({ "plan": "force", "position": k, "links": ["4", "5"], "mu": mu, "values": values })
+}
+
+/// The velocity plan at position 1 drawn in a vector editor: the pole and
+/// the ends of p_v a and p_v s2, labelled, with μ written on the sheet.
+fn drawn_svg(doc: &Value) -> String {
+    let plan = &doc["positions"][0]["plans"]["velocity"];
+    let pole = (60.0, 120.0);
+    let mut body = String::new();
+    for k in ["p_v", "a", "s2"] {
+        let (x, y) = if k == "p_v" {
+            (0.0, 0.0)
+        } else {
+            let p = &plan["points"][k];
+            (p[0].as_f64().unwrap() + 0.05, p[1].as_f64().unwrap() - 0.05)
+        };
+        let (gx, gy) = (pole.0 + x, pole.1 - y);
+        if k != "p_v" {
+            body.push_str(&format!(
+                r#"<path d="M {} {} L {gx} {gy}" stroke="black" fill="none"/>"#,
+                pole.0, pole.1
+            ));
+        }
+        body.push_str(&format!(
+            r#"<text x="{}" y="{}" font-size="4">{k}</text>"#,
+            gx + 2.0,
+            gy - 2.0
+        ));
+    }
+    format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="210mm" height="297mm" viewBox="0 0 210 297">{body}<text x="20" y="20" font-size="5">μ = {}</text></svg>"#,
+        plan["mu"]
+    )
+}
+
+/// The file name with `&`, quotes and angle brackets that the summary
+/// must escape.
+const ODD: &str = "right-v04 \"smith\" & <jones>.json";
+
+/// Write the 30 answers into `dir` (and two files the group must not
+/// take); what each was built to be, by file name.
+fn build_group(dir: &Path) -> BTreeMap<String, Built> {
+    let doc = solved();
+    let mut noise = Noise(2024);
+    let mut built = BTreeMap::new();
+    let mut put = |name: &str, text: String, b: Built| {
+        std::fs::write(dir.join(name), text).unwrap();
+        built.insert(name.to_string(), b);
+    };
+    let all = ["a", "b", "c", "d", "s2", "s3", "s4"];
+    let abcd = ["a", "b", "c", "d"];
+    // Right: velocity plans where the construction judges every point,
+    // the acceleration plan at position 3, each with all its points and
+    // with a, b, c, d only; and the SVG drawing.
+    for k in [1, 4, 5, 7, 8, 10] {
+        for (tag, names) in [("all", &all[..]), ("abcd", &abcd[..])] {
+            let name = if k == 4 && tag == "abcd" {
+                ODD.to_string()
+            } else {
+                format!("right-v{k:02}-{tag}.json")
+            };
+            let a = points(&doc, "velocity", k, names, &mut noise);
+            put(&name, a.to_string(), Built::new("right", "velocity", k));
+        }
+    }
+    for (tag, names) in [("all", &all[..]), ("abcd", &abcd[..])] {
+        let mut a = points(&doc, "acceleration", 3, names, &mut noise);
+        a["velocity"] = json!({ "mu": doc["positions"][2]["plans"]["velocity"]["mu"] });
+        put(
+            &format!("right-a03-{tag}.json"),
+            a.to_string(),
+            Built::new("right", "acceleration", 3),
+        );
+    }
+    put(
+        "right-drawn.svg",
+        drawn_svg(&doc),
+        Built::new("right", "velocity", 1),
+    );
+    // Wrong: the slider's point d moved 15 mm along the guide …
+    for k in [2, 5, 8, 11] {
+        let mut a = points(&doc, "velocity", k, &abcd, &mut noise);
+        let x = a["points"]["d"][0].as_f64().unwrap();
+        a["points"]["d"][0] = json!(x + 15.0);
+        put(
+            &format!("wrong-moved-v{k:02}.json"),
+            a.to_string(),
+            Built::new("wrong", "velocity", k),
+        );
+    }
+    // … and the whole plan turned through the pole: the crank's velocity
+    // laid off against ω1, a mistake the diagnosis names with its step.
+    for k in [4, 9] {
+        let mut a = points(&doc, "velocity", k, &abcd, &mut noise);
+        for n in abcd {
+            let p = a["points"][n].clone();
+            a["points"][n] = json!([-p[0].as_f64().unwrap(), -p[1].as_f64().unwrap()]);
+        }
+        let mut b = Built::new("wrong", "velocity", k);
+        b.mistake = "against the sense of ω1";
+        put(&format!("wrong-reversed-v{k:02}.json"), a.to_string(), b);
+    }
+    // Force plans: right at 2 N/mm, R_34 half as long again (wrong), and
+    // drawn at 200 N/mm, too small to tell (cannot be judged).
+    for k in [2, 6] {
+        put(
+            &format!("force-right-{k:02}.json"),
+            force(&doc, k, 2.0, 1.0).to_string(),
+            Built::new("right", "force", k),
+        );
+    }
+    put(
+        "force-wrong-04.json",
+        force(&doc, 4, 2.0, 1.5).to_string(),
+        Built::new("wrong", "force", 4),
+    );
+    for k in [6, 9] {
+        put(
+            &format!("force-small-{k:02}.json"),
+            force(&doc, k, 200.0, 1.0).to_string(),
+            Built::new("cannot be judged", "force", k),
+        );
+    }
+    // Acceleration plans where the construction cannot tell the right
+    // points from a mistake's.
+    for (k, names) in [(5, &all[..]), (11, &abcd[..])] {
+        put(
+            &format!("undecided-a{k:02}.json"),
+            points(&doc, "acceleration", k, names, &mut noise).to_string(),
+            Built::new("cannot be judged", "acceleration", k),
+        );
+    }
+    // Unreadable: broken JSON, and a letter the plan has not.
+    let mut b = Built::new("unreadable", "", 0);
+    b.message = "malformed JSON";
+    put(
+        "unreadable-broken.json",
+        r#"{"plan": "velocity", "mu": 0.01, "points": {"#.into(),
+        b,
+    );
+    let mut b = Built::new("unreadable", "", 0);
+    b.message = "/points/q: unknown plan point \"q\"";
+    put(
+        "unreadable-letter.json",
+        json!({ "plan": "velocity", "position": 4, "mu": 0.01, "points": { "q": [1, 2] } })
+            .to_string(),
+        b,
+    );
+    // Not answers of the group: another kind of file, and a folder
+    // (not searched).
+    std::fs::write(dir.join("notes.txt"), "not an answer").unwrap();
+    std::fs::create_dir_all(dir.join("older")).unwrap();
+    std::fs::write(dir.join("older/old.json"), "{}").unwrap();
+    assert_eq!(built.len(), 30);
+    built
+}
+
+/// The gradebook read back by the csv crate: its header and its records.
+fn gradebook(path: &Path) -> Vec<BTreeMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(header, COLUMNS);
+    r.records()
+        .map(|rec| {
+            let rec = rec.unwrap();
+            header
+                .iter()
+                .cloned()
+                .zip(rec.iter().map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+/// A file name as the summary links it: percent-encoded but for the
+/// unreserved characters.
+fn encoded(name: &str) -> String {
+    name.bytes()
+        .map(|b| {
+            if b.is_ascii_alphanumeric() || b"-._~/".contains(&b) {
+                (b as char).to_string()
+            } else {
+                format!("%{b:02X}")
+            }
+        })
+        .collect()
+}
+
+fn stem(name: &str) -> &str {
+    Path::new(name).file_stem().unwrap().to_str().unwrap()
+}
+
+#[test]
+fn a_folder_of_thirty_answers_is_graded_at_once() {
+    let dir = fresh("thirty");
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    let built = build_group(&answers);
+    let out = dir.join("graded");
+    let (code, stdout, stderr) = run(&[
+        "check",
+        SCENE,
+        answers.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "an unreadable answer: status 2\n{stdout}{stderr}");
+    let count = |g: &str| built.values().filter(|b| b.grade == g).count();
+    assert_eq!((count("right"), count("wrong")), (17, 7));
+    assert!(
+        stdout.contains(&format!(
+            "30 answers: 17 right, 7 wrong, {} cannot be judged, 2 unreadable",
+            count("cannot be judged")
+        )),
+        "{stdout}"
+    );
+    assert!(stdout.contains(&format!("wrote {}", out.join("gradebook.csv").display())));
+    let rows = gradebook(&out.join("gradebook.csv"));
+    assert_eq!(rows.len(), 30);
+    // In the order of the files' names, each as it was built.
+    let names: Vec<&String> = rows.iter().map(|r| &r["file"]).collect();
+    let sorted: Vec<&String> = built.keys().collect();
+    assert_eq!(names, sorted);
+    for r in &rows {
+        let b = &built[&r["file"]];
+        let f = &r["file"];
+        assert_eq!(r["grade"], b.grade, "{f}: {r:?}");
+        assert_eq!(r["plan"], b.plan, "{f}");
+        if b.grade == "unreadable" {
+            assert!(r["message"].contains(b.message), "{f}: {r:?}");
+            for c in ["position", "mistakes", "right", "wrong", "undecided"] {
+                assert_eq!(r[c], "", "{f}: {c}");
+            }
+            continue;
+        }
+        assert_eq!(r["message"], "", "{f}");
+        assert_eq!(r["position"], b.position.to_string(), "{f}");
+        let n = |c: &str| r[c].parse::<usize>().unwrap();
+        match b.grade {
+            "right" => assert!(n("right") > 0 && n("wrong") + n("undecided") == 0, "{f}"),
+            "wrong" => assert!(n("wrong") > 0, "{f}"),
+            _ => assert!(n("wrong") == 0 && n("undecided") > 0, "{f}"),
+        }
+        // A mistake is named only where something is wrong, with its
+        // step where the diagnosis has one.
+        assert_eq!(r["mistakes"].is_empty(), b.grade != "wrong", "{f}: {r:?}");
+        assert!(r["mistakes"].contains(b.mistake), "{f}: {r:?}");
+        if !b.mistake.is_empty() {
+            assert!(r["mistakes"].starts_with("step "), "{f}: {r:?}");
+        }
+    }
+    // An overlay for every kinematic answer checked, none for the others.
+    let overlays = out.join("overlays");
+    let kinematic: Vec<&String> = built
+        .iter()
+        .filter(|(_, b)| b.kinematic())
+        .map(|(n, _)| n)
+        .collect();
+    assert_eq!(
+        std::fs::read_dir(&overlays).unwrap().count(),
+        kinematic.len()
+    );
+    let page = std::fs::read_to_string(out.join("summary.html")).unwrap();
+    for name in &kinematic {
+        let svg = std::fs::read_to_string(overlays.join(format!("{}.svg", stem(name)))).unwrap();
+        assert!(
+            svg.starts_with("<svg") && svg.contains("student-"),
+            "{name}"
+        );
+        let link = format!("href=\"overlays/{}.svg\"", encoded(stem(name)));
+        assert!(page.contains(&link), "{link}");
+    }
+    assert_eq!(page.matches("href=").count(), kinematic.len());
+    // Every text escaped, the scene named, the totals on top, nothing
+    // fetched.
+    assert!(page.contains("right-v04 &quot;smith&quot; &amp; &lt;jones&gt;.json"));
+    assert!(!page.contains("<jones>"));
+    assert!(page.contains("Scene: ") && page.contains("six_link_fig2_10.json"));
+    assert!(page.contains("<b>17</b>right") && page.contains("<b>2</b>unreadable"));
+    assert!(!page.contains("<script") && !page.contains("http://") && !page.contains("https://"));
+    // No temporary left behind.
+    for d in [&out, &overlays] {
+        for e in std::fs::read_dir(d).unwrap() {
+            let n = e.unwrap().file_name();
+            assert!(!n.to_string_lossy().contains(".tmp"), "{n:?}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Files given one by one are a group too; its status is its worst
+/// answer's; the JSON format is one array of the reports.
+#[test]
+fn files_given_are_a_group_with_the_worst_status() {
+    let dir = fresh("files");
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    build_group(&answers);
+    let path = |n: &str| answers.join(n).display().to_string();
+    let out = dir.join("out").display().to_string();
+    let group = |files: &[&str], extra: &[&str]| {
+        let paths: Vec<String> = files.iter().map(|f| path(f)).collect();
+        let mut args = vec!["check", SCENE];
+        args.extend(paths.iter().map(String::as_str));
+        args.extend(["-o", out.as_str()]);
+        args.extend(extra);
+        run(&args)
+    };
+    let right = "right-v05-all.json";
+    let wrong = "wrong-moved-v08.json";
+    let undecided = "force-small-09.json";
+    let (code, stdout, err) = group(&[right, wrong, undecided], &[]);
+    assert_eq!(code, 1, "{stdout}{err}");
+    let rows = gradebook(&Path::new(&out).join("gradebook.csv"));
+    let files: Vec<&str> = rows.iter().map(|r| r["file"].as_str()).collect();
+    assert_eq!(files, [path(right), path(wrong), path(undecided)]);
+    assert_eq!(group(&[right, undecided], &[]).0, 4);
+    assert_eq!(group(&[right, "right-drawn.svg"], &[]).0, 0);
+    // One file with an output folder: a group of one.
+    let (code, stdout, _) = group(&[right], &[]);
+    assert_eq!(code, 0);
+    assert!(stdout.starts_with("1 answer: 1 right,"), "{stdout}");
+    // --format json: the reports, one array.
+    let (code, stdout, _) = group(&[right, "unreadable-broken.json"], &["--format", "json"]);
+    assert_eq!(code, 2);
+    let v: Value = serde_json::from_str(&stdout).unwrap();
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), 2);
+    assert_eq!(a[0]["grade"], "right");
+    assert_eq!(a[0]["report"]["status"], 0);
+    assert_eq!(a[1]["grade"], "unreadable");
+    assert!(a[1]["message"].as_str().unwrap().contains("malformed JSON"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// What a group refuses (exit 2, nothing written): `--svg`, a position
+/// the scene has not, a folder without answers, a bad scene; an output
+/// that cannot be written is status 3; without `-o` the results go to
+/// `mechplan-check` in the working folder.
+#[test]
+fn refusals_and_the_default_output() {
+    let dir = fresh("refusals");
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    let a = answers.join("a.json");
+    let b = answers.join("b.json");
+    let doc = solved();
+    let mut noise = Noise(7);
+    for p in [&a, &b] {
+        let ans = points(&doc, "velocity", 4, &["a", "b", "c", "d"], &mut noise);
+        std::fs::write(p, ans.to_string()).unwrap();
+    }
+    let (a, b, ad) = (
+        a.to_str().unwrap(),
+        b.to_str().unwrap(),
+        answers.to_str().unwrap(),
+    );
+    let out = dir.join("out");
+    let o = out.to_str().unwrap();
+    let (code, _, err) = run(&["check", SCENE, a, b, "-o", o, "--svg", "x.svg"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--svg"), "{err}");
+    let (code, _, err) = run(&["check", SCENE, ad, "-o", o, "--position", "13"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--position") && err.contains("1 to 12"),
+        "{err}"
+    );
+    let empty = dir.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    let (code, _, err) = run(&["check", SCENE, empty.to_str().unwrap(), "-o", o]);
+    assert_eq!(code, 2);
+    assert!(err.contains("no *.json or *.svg"), "{err}");
+    let bad_scene = dir.join("scene.json");
+    std::fs::write(&bad_scene, "{").unwrap();
+    let (code, _, _) = run(&["check", bad_scene.to_str().unwrap(), ad, "-o", o]);
+    assert_eq!(code, 2);
+    assert!(!out.exists(), "nothing written on bad input");
+    // An output folder under a file cannot be made.
+    let (code, _, err) = run(&["check", SCENE, ad, "-o", &format!("{a}/out")]);
+    assert_eq!(code, 3, "{err}");
+    // The default output folder, in the working folder.
+    let (code, stdout, err) = run_in(&dir, &["check", SCENE, ad]);
+    assert_eq!(code, 0, "{stdout}{err}");
+    assert!(
+        stdout.contains("wrote mechplan-check/gradebook.csv"),
+        "{stdout}"
+    );
+    assert_eq!(
+        gradebook(&dir.join("mechplan-check/gradebook.csv")).len(),
+        2
+    );
+    assert!(dir.join("mechplan-check/overlays/b.svg").is_file());
+    let _ = std::fs::remove_dir_all(&dir);
+}
