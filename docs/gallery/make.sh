@@ -129,6 +129,9 @@ cp "$tmp/cfs/course_forces.png" "$out/course_forces_shaper_fig2_11_uk.png"
 # The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
 # every dynamics fixture, the six-link's position 2 in Ukrainian too.
 bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"
+# The summary page of a group of answers graded at once (check SCENE DIR),
+# photographed when a headless Chromium is at hand.
+bash docs/gallery/check_group.sh "$tmp" >> "$index.tmp"
 # The fill table (tests/sheet_fill.rs writes it between its markers).
 {
   echo "## How much of its field a drawing spans"
