@@ -94,7 +94,7 @@ impl Graded {
 
 /// Whether `check`'s answers are a group: several, or a folder, or one
 /// file with an output folder asked for (`output`); else one answer,
-/// checked as [`super::check_file`] does.
+/// checked as [`check_file`](fn@super::check_file) does.
 pub fn is_group(answers: &[PathBuf], output: bool) -> bool {
     answers.len() != 1 || output || answers[0].is_dir()
 }
