@@ -2,7 +2,9 @@
 //! [`vec2`]), and strict reading: serde_json keeps the last of two equal keys
 //! silently, so a scene with `"A"` twice under `points` would lose a point
 //! without a word. This reader builds the same `serde_json::Value` but
-//! records every repeated key with its JSON pointer.
+//! records every repeated key with its JSON pointer; a number serde_json
+//! stops at (`NaN`, `Infinity`, `1e999`) is located by its field
+//! ([`locate_bad_numbers`]), for scenes and answers alike.
 
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde_json::{Map, Number, Value};
@@ -126,6 +128,77 @@ fn describe_syntax_error(text: &str, e: &serde_json::Error) -> String {
     } else {
         format!("malformed JSON: {e}")
     }
+}
+
+/// serde_json stops at `NaN`, `Infinity` or `1e999` with only a line and
+/// column, but the contract names the field. Put a marker string in place of
+/// each such number and read the text again: where a marker lands in the tree
+/// is the field's JSON pointer. `None` when the text has no such number, more
+/// than a few, or other syntax errors besides (the plain message then stands).
+pub fn locate_bad_numbers(text: &str) -> Option<Vec<String>> {
+    const MARK: &str = r"\u0001mechplan-bad-number-";
+    let mut text = text.to_owned();
+    let mut found = Vec::new();
+    let value = loop {
+        let e = match serde_json::from_str::<Value>(&text) {
+            Ok(v) => break v,
+            Err(e) if found.len() < 32 => e,
+            Err(_) => return None,
+        };
+        // serde_json's column is 1-based, in bytes, and falls inside the token.
+        let line_start: usize = text
+            .split_inclusive('\n')
+            .take(e.line().saturating_sub(1))
+            .map(str::len)
+            .sum();
+        let at = line_start + e.column().saturating_sub(1);
+        let b = text.as_bytes();
+        let tok = |c: u8| c.is_ascii_alphanumeric() || matches!(c, b'+' | b'-' | b'.');
+        if at >= b.len() || !tok(b[at]) {
+            return None;
+        }
+        let start = (0..at).rev().find(|&i| !tok(b[i])).map_or(0, |i| i + 1);
+        let end = (at..b.len()).find(|&i| !tok(b[i])).unwrap_or(b.len());
+        let token = text[start..end].to_owned();
+        if token.parse::<f64>().map_or(true, f64::is_finite) {
+            return None;
+        }
+        text.replace_range(start..end, &format!("\"{MARK}{}\"", found.len()));
+        found.push((token, e.line()));
+    };
+    fn walk(v: &Value, at: &str, out: &mut Vec<(usize, String)>) {
+        match v {
+            Value::String(s) => {
+                if let Some(k) = s
+                    .strip_prefix("\u{1}mechplan-bad-number-")
+                    .and_then(|k| k.parse().ok())
+                {
+                    out.push((k, at.to_owned()));
+                }
+            }
+            Value::Array(a) => a
+                .iter()
+                .enumerate()
+                .for_each(|(i, x)| walk(x, &format!("{at}/{i}"), out)),
+            Value::Object(o) => o
+                .iter()
+                .for_each(|(k, x)| walk(x, &format!("{at}/{}", escape(k)), out)),
+            _ => {}
+        }
+    }
+    let mut at = Vec::new();
+    walk(&value, "", &mut at);
+    at.sort();
+    let msgs: Vec<String> = at
+        .into_iter()
+        .filter_map(|(k, pointer)| {
+            let (token, line) = found.get(k)?;
+            Some(format!(
+                "{pointer}: non-finite number {token} (line {line}); every number must be finite"
+            ))
+        })
+        .collect();
+    (!msgs.is_empty()).then_some(msgs)
 }
 
 /// A number for a result file, round-trip-exact but tidy: integers print

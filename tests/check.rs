@@ -134,6 +134,12 @@ fn items_of(
         };
         let mm = ((p.points[ib].at - p.points[ia].at).hypot() + noise()).max(0.0);
         let key = format!("{} {}", a.key, b.key);
+        // A segment measured for two rates is given once: an answer gives
+        // each thing once (a second is refused as given twice). The noise
+        // is drawn all the same, so the catalogue's draws stay as they were.
+        if out.iter().any(|it| it.key == key) {
+            continue;
+        }
         out.push(Item {
             pointer: format!("/segments/{key}"),
             key: key.clone(),

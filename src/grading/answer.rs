@@ -2,7 +2,7 @@
 //! drawn in a vector editor, read into items to check.
 
 use crate::error::{Error, Issue, Result};
-use crate::json::{escape, parse_strict};
+use crate::json::{escape, locate_bad_numbers, parse_strict};
 use crate::kinematics::construction::PlanKind;
 use serde_json::Value;
 
@@ -60,6 +60,69 @@ pub struct Answer {
 /// The largest answer file read, JSON or SVG (8 MiB): a hand-drawn plan
 /// is a few kilobytes; a file beyond this is refused before it is read.
 pub const MAX_ANSWER_BYTES: usize = 8 << 20;
+
+/// The farthest a plan point may be from the pole, and the longest
+/// segment, mm: no sheet is 10 m across (A0 is 1.19 m); a larger number is
+/// a slip of the file, not a drawing.
+pub const MAX_PLAN_MM: f64 = 10_000.0;
+
+/// The coarsest pencil precision δ, mm: a δ of centimetres would accept
+/// any plan.
+pub const MAX_DELTA_MM: f64 = 10.0;
+
+/// The scales μ a plan may have, (m/s)/mm or (m/s²)/mm: outside this no
+/// drawing is a plan of a real mechanism (at 10⁻⁶, 1 m/s is 1 km long).
+pub const MU_RANGE: (f64, f64) = (1e-6, 1e6);
+
+/// The largest direction written, degrees either way (two turns).
+pub const MAX_ANGLE_DEG: f64 = 720.0;
+
+/// The largest value written (SI units: m/s, m/s², rad/s, rad/s²): a
+/// thousand times any machine's, so μ in the wrong units is still
+/// diagnosed.
+pub const MAX_VALUE: f64 = 1e12;
+
+/// The issue of a scale `mu` at `pointer`, if it is not one a plan has.
+pub fn mu_issue(mu: f64, pointer: &str) -> Option<Issue> {
+    let (lo, hi) = MU_RANGE;
+    (!(mu.is_finite() && (lo..=hi).contains(&mu))).then(|| {
+        issue(
+            pointer,
+            format!(
+                "μ = {} is not a plan's scale: μ is a number of (m/s)/mm or (m/s²)/mm from {lo:e} to {hi:e}",
+                shown(mu)
+            ),
+        )
+    })
+}
+
+/// The issue of a pencil precision `delta` (mm) at `pointer`, if it is
+/// not one.
+pub fn delta_issue(delta: f64, pointer: &str) -> Option<Issue> {
+    (!(delta.is_finite() && delta > 0.0 && delta <= MAX_DELTA_MM)).then(|| {
+        issue(
+            pointer,
+            format!(
+                "δ = {} mm is not a pencil's precision: it is more than 0 and at most {MAX_DELTA_MM} mm",
+                shown(delta)
+            ),
+        )
+    })
+}
+
+/// The issue of a plan coordinate `x` (mm) at `pointer`, if it is off
+/// any sheet.
+pub fn coordinate_issue(x: f64, pointer: &str) -> Option<Issue> {
+    (!(x.is_finite() && x.abs() <= MAX_PLAN_MM)).then(|| {
+        issue(
+            pointer,
+            format!(
+                "{} mm is off any sheet: a plan point is at most {MAX_PLAN_MM} mm from the pole",
+                shown(x)
+            ),
+        )
+    })
+}
 
 /// The refusal of an answer of `bytes` bytes, if it is too large.
 pub fn check_size(bytes: u64) -> Result<()> {
@@ -138,9 +201,46 @@ fn number(v: &Value, at: &str, issues: &mut Vec<Issue>) -> Option<f64> {
     match v.as_f64() {
         Some(x) if x.is_finite() => Some(x),
         _ => {
-            issues.push(issue(at, "expected a finite number"));
+            let found = match v {
+                Value::String(s) => format!("the text \"{s}\""),
+                Value::Null => "null".into(),
+                Value::Bool(b) => b.to_string(),
+                Value::Array(_) => "a list".into(),
+                Value::Object(_) => "an object".into(),
+                Value::Number(n) => n.to_string(),
+            };
+            issues.push(issue(
+                at,
+                format!("expected a finite number, found {found}"),
+            ));
             None
         }
+    }
+}
+
+/// A finite number of at most `limit` either way; beyond it the issue
+/// `why` says of the number as written.
+fn bounded(
+    v: &Value,
+    at: &str,
+    limit: f64,
+    why: impl Fn(&str) -> String,
+    issues: &mut Vec<Issue>,
+) -> Option<f64> {
+    let x = number(v, at, issues)?;
+    if x.abs() > limit {
+        issues.push(issue(at, why(&shown(x))));
+        return None;
+    }
+    Some(x)
+}
+
+/// A number as a message shows it: `1e300`, not its 301 digits.
+fn shown(x: f64) -> String {
+    if x != 0.0 && !(1e-4..1e6).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
     }
 }
 
@@ -164,9 +264,12 @@ pub(super) fn position(
     match o.get("position") {
         None => Some(1),
         Some(p) => match p.as_u64() {
-            Some(n) if n >= 1 => Some(n as usize),
+            Some(n) if n >= 1 => Some(usize::try_from(n).unwrap_or(usize::MAX)),
             _ => {
-                issues.push(issue("/position", "expected a position number from 1"));
+                issues.push(issue(
+                    "/position",
+                    format!("expected a whole position number from 1, found {p}"),
+                ));
                 None
             }
         },
@@ -186,7 +289,7 @@ fn plan_name(p: PlanKind) -> &'static str {
 /// file's own shape: known fields, numbers, positive lengths, μ present.
 pub fn from_json(text: &str) -> Result<Answer> {
     check_size(text.len() as u64)?;
-    let v = parse_strict(text).map_err(Error::json)?;
+    let v = parse_strict(text).map_err(|e| Error::json(locate_bad_numbers(text).unwrap_or(e)))?;
     let mut issues = Vec::new();
     let Some(o) = v.as_object() else {
         return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
@@ -221,7 +324,8 @@ pub fn from_json(text: &str) -> Result<Answer> {
             ));
             None
         }
-        Some(m) => positive(m, "/mu", "a scale must be positive", &mut issues),
+        Some(m) => positive(m, "/mu", "a scale must be positive", &mut issues)
+            .filter(|&m| keep(mu_issue(m, "/mu"), &mut issues)),
     };
     let delta = match o.get("delta") {
         None => Some(0.5),
@@ -230,7 +334,8 @@ pub fn from_json(text: &str) -> Result<Answer> {
             "/delta",
             "the pencil precision must be positive",
             &mut issues,
-        ),
+        )
+        .filter(|&d| keep(delta_issue(d, "/delta"), &mut issues)),
     };
     let mut items = measured_items(o, &mut issues);
     items.extend(value_items(o, plan, &mut issues));
@@ -254,6 +359,17 @@ pub fn from_json(text: &str) -> Result<Answer> {
         mu_v,
         omegas,
     })
+}
+
+/// Record `problem` if there is one; whether there was none.
+fn keep(problem: Option<Issue>, issues: &mut Vec<Issue>) -> bool {
+    match problem {
+        Some(i) => {
+            issues.push(i);
+            false
+        }
+        None => true,
+    }
 }
 
 /// The entries of the answer's object `name` as (pointer, key, value);
@@ -281,7 +397,10 @@ fn section(
 fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<Item> {
     let mut items = Vec::new();
     for (ptr, key, v) in section(o, "segments", issues) {
-        if let Some(mm) = number(&v, &ptr, issues) {
+        let longest = |x: &str| {
+            format!("{x} mm is longer than any sheet: a segment is at most {MAX_PLAN_MM} mm")
+        };
+        if let Some(mm) = bounded(&v, &ptr, MAX_PLAN_MM, longest, issues) {
             if mm < 0.0 {
                 issues.push(issue(
                     &ptr,
@@ -301,7 +420,10 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
         }
     }
     for (ptr, key, v) in section(o, "angles", issues) {
-        if let Some(deg) = number(&v, &ptr, issues) {
+        let turns = |x: &str| {
+            format!("{x}° is not a direction as written: give it in degrees from -{MAX_ANGLE_DEG} to {MAX_ANGLE_DEG}")
+        };
+        if let Some(deg) = bounded(&v, &ptr, MAX_ANGLE_DEG, turns, issues) {
             items.push(Item {
                 pointer: ptr,
                 key: key.clone(),
@@ -316,10 +438,12 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
     for (ptr, key, v) in section(o, "points", issues) {
         match v.as_array() {
             Some(a) if a.len() == 2 => {
-                let (x, y) = (
-                    number(&a[0], &format!("{ptr}/0"), issues),
-                    number(&a[1], &format!("{ptr}/1"), issues),
-                );
+                let mut coordinate = |k: usize| {
+                    let at = format!("{ptr}/{k}");
+                    number(&a[k], &at, issues)
+                        .filter(|&x| keep(coordinate_issue(x, &at), issues))
+                };
+                let (x, y) = (coordinate(0), coordinate(1));
                 if let (Some(x), Some(y)) = (x, y) {
                     items.push(Item {
                         pointer: ptr,
@@ -359,12 +483,26 @@ fn value_items(
             issues.push(issue(&ptr, "expected a number (signed: counter-clockwise positive) or \"1.2 cw\" / \"1.2 ccw\""));
             continue;
         };
+        if let Some(i) = value_issue(value, &ptr) {
+            issues.push(i);
+            continue;
+        }
         match value_item(plan, ptr, key, value) {
             Ok(it) => items.push(it),
             Err(i) => issues.push(i),
         }
     }
     items
+}
+
+/// The issue of a value `x` (SI) at `pointer`, if it is absurd.
+fn value_issue(x: f64, pointer: &str) -> Option<Issue> {
+    (x.abs() > MAX_VALUE).then(|| {
+        issue(
+            pointer,
+            format!("{} is absurd: a value is at most {MAX_VALUE:e} (m/s, m/s², rad/s, rad/s²)", shown(x)),
+        )
+    })
 }
 
 /// The value `key` (v_B, ω2 …) of the answer's `plan` as an item.
@@ -445,7 +583,8 @@ fn velocity_plan(
                 }
             }
             if let Some(m) = vo.get("mu") {
-                mu_v = positive(m, "/velocity/mu", "a scale must be positive", issues);
+                mu_v = positive(m, "/velocity/mu", "a scale must be positive", issues)
+                    .filter(|&m| keep(mu_issue(m, "/velocity/mu"), issues));
             }
             match vo.get("values") {
                 None => {}
@@ -466,7 +605,8 @@ fn velocity_values(
     vals: &serde_json::Map<String, Value>,
     issues: &mut Vec<Issue>,
 ) -> Vec<(String, f64)> {
-    let mut omegas = Vec::new();
+    let mut omegas: Vec<(String, f64)> = Vec::new();
+    let mut pointers: Vec<String> = Vec::new();
     for (k, v) in vals {
         let ptr = format!("/velocity/values/{}", escape(k));
         let value = match v {
@@ -474,9 +614,23 @@ fn velocity_values(
                 .map_err(|w| issues.push(issue(&ptr, w)))
                 .ok(),
             v => number(v, &ptr, issues),
-        };
+        }
+        .filter(|&x| keep(value_issue(x, &ptr), issues));
         match (quantity(k), value) {
-            (Some(('w', link)), Some(x)) => omegas.push((link, x)),
+            (Some(('w', link)), Some(_)) if omegas.iter().any(|(l, _)| *l == link) => {
+                let first = omegas.iter().position(|(l, _)| *l == link).unwrap_or(0);
+                issues.push(issue(
+                    &ptr,
+                    format!(
+                        "ω{link} is given twice (also {}); give each once",
+                        pointers[first]
+                    ),
+                ));
+            }
+            (Some(('w', link)), Some(x)) => {
+                omegas.push((link, x));
+                pointers.push(ptr);
+            }
             (_, None) => {}
             _ => issues.push(issue(
                 &ptr,

@@ -2,19 +2,37 @@
 //! name stands for, each item's expected value, tolerance and the least
 //! difference the pencil can show.
 
-use super::answer::{self, Given, Quantity};
+use super::answer::{self, Given, Item, Quantity};
 use crate::error::Issue;
+use crate::format::num;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use kurbo::Vec2;
+use std::collections::{HashMap, HashSet};
 
-/// Resolve a name of the answer to a plan point: the pole's names, named
+/// The plan whose pole `name` is, if it names one pole only: `p_v` (`pv`)
+/// the velocity plan's, `p_a` (`pa`) the acceleration plan's; `p` and `π`
+/// are either's.
+pub(super) fn pole_of(name: &str) -> Option<PlanKind> {
+    match name.trim().to_lowercase().as_str() {
+        "pv" | "p_v" => Some(PlanKind::Velocity),
+        "pa" | "p_a" => Some(PlanKind::Acceleration),
+        _ => None,
+    }
+}
+
+/// Resolve a name of the answer to a plan point: the pole's names (`p`,
+/// `π`, and `p_v`, `pv` on a velocity plan, `p_a`, `pa` on an
+/// acceleration plan: the other plan's pole is not this one's), named
 /// points (their lower-case names), construction points (n2, k3, b3 or
 /// their keys n_2, k_3, b_3).
 pub fn resolve(plan: &Plan, name: &str) -> Option<usize> {
     let n = name.trim().to_lowercase();
-    if ["p", "pv", "p_v", "pa", "p_a", "π"].contains(&n.as_str()) {
+    if ["p", "π"].contains(&n.as_str()) {
         return Some(0);
+    }
+    if let Some(kind) = pole_of(&n) {
+        return (kind == plan.kind).then_some(0);
     }
     let named = |p: &crate::kinematics::construction::PlanPoint| p.key.to_lowercase() == n;
     if let Some(i) = plan.points.iter().position(named) {
@@ -193,17 +211,30 @@ impl On<'_> {
         let (plan, delta) = (self.plan, self.delta);
         let (p, mu) = (&plan.points, plan.mu);
         let m = &self.an.mech;
-        let pi = m
-            .scene
-            .point_index(name)
-            .ok_or_else(|| self.issue(format!("unknown point \"{name}\"")))?;
-        let i = plan.of_point[pi]
-            .ok_or_else(|| self.issue(format!("point \"{name}\" is not on this plan")))?;
         let (sym, unit) = if plan.kind == PlanKind::Velocity {
             ("v", "m/s")
         } else {
             ("a", "m/s²")
         };
+        let values = || {
+            let on: Vec<String> = (0..m.scene.points.len())
+                .filter(|&q| plan.of_point[q].is_some())
+                .map(|q| format!("{sym}_{}", m.point_name(q)))
+                .collect();
+            on.join(", ")
+        };
+        let pi = m.scene.point_index(name).ok_or_else(|| {
+            self.issue(format!(
+                "unknown point \"{name}\" (this plan gives: {})",
+                values()
+            ))
+        })?;
+        let i = plan.of_point[pi].ok_or_else(|| {
+            self.issue(format!(
+                "point \"{name}\" is not on this plan (it gives: {})",
+                values()
+            ))
+        })?;
         let len = p[i].at.hypot();
         Ok(Expected {
             what: format!("{sym}_{name}"),
@@ -223,17 +254,30 @@ impl On<'_> {
         let (plan, delta) = (self.plan, self.delta);
         let mu = plan.mu;
         let m = &self.an.mech;
-        let l = m
-            .scene
-            .link_index(id)
-            .ok_or_else(|| self.issue(format!("unknown link \"{id}\"")))?;
-        let (r, bound) = plan.rates[l]
-            .ok_or_else(|| self.issue(format!("link {id} is not constructed on this plan")))?;
         let (sym, unit) = if plan.kind == PlanKind::Velocity {
             ("ω", "rad/s")
         } else {
             ("ε", "rad/s²")
         };
+        let rates = || {
+            let on: Vec<String> = (0..plan.rates.len())
+                .filter(|&l| plan.rates[l].is_some())
+                .map(|l| format!("{sym}{}", m.link_id(l)))
+                .collect();
+            on.join(", ")
+        };
+        let l = m.scene.link_index(id).ok_or_else(|| {
+            self.issue(format!(
+                "unknown link \"{id}\" (this plan gives: {})",
+                rates()
+            ))
+        })?;
+        let (r, bound) = plan.rates[l].ok_or_else(|| {
+            self.issue(format!(
+                "link {id} is not constructed on this plan (it gives: {})",
+                rates()
+            ))
+        })?;
         let len = plan.rate_len[l];
         let measured = plan
             .measured
@@ -259,8 +303,142 @@ impl On<'_> {
     }
 }
 
-fn names(plan: &Plan) -> String {
+pub(super) fn names(plan: &Plan) -> String {
     let mut v: Vec<String> = plan.points.iter().map(|p| p.name()).collect();
     v.dedup();
     v.join(", ")
+}
+
+/// What an item gives, whatever its spelling: a plan point's place, a
+/// segment's length or direction (its two ends either way round), a
+/// point's value (by the scene's point), a link's rate.
+#[derive(Clone, Copy, Debug, Hash, PartialEq, Eq)]
+enum Said {
+    Point(usize),
+    Segment(usize, usize),
+    Angle(usize, usize),
+    Value(usize),
+    Rate(usize),
+}
+
+/// What item `it` gives on `plan`, and its name in a message; `None` for
+/// an item whose names do not resolve (`expect` says why).
+fn said(an: &Analysis, plan: &Plan, it: &Item) -> Option<(Said, String)> {
+    let p = &plan.points;
+    let ends = |key: &str| {
+        let known = |s: &str| resolve(plan, s).is_some();
+        let (a, b) = answer::split_segment(key, &known)?;
+        let (a, b) = (resolve(plan, &a)?, resolve(plan, &b)?);
+        Some(((a.min(b), a.max(b)), format!("{} {}", p[a].name(), p[b].name())))
+    };
+    let rate_sym = if plan.kind == PlanKind::Velocity {
+        "ω"
+    } else {
+        "ε"
+    };
+    let value_sym = if plan.kind == PlanKind::Velocity {
+        "v"
+    } else {
+        "a"
+    };
+    let scene = &an.mech.scene;
+    Some(match &it.given {
+        Given::Point { name, .. } => {
+            let i = resolve(plan, name)?;
+            (Said::Point(i), format!("point {}", p[i].name()))
+        }
+        Given::Segment { from, .. } => {
+            let ((a, b), n) = ends(from)?;
+            (Said::Segment(a, b), format!("segment {n}"))
+        }
+        Given::Angle { from, .. } => {
+            let ((a, b), n) = ends(from)?;
+            (Said::Angle(a, b), format!("the direction of {n}"))
+        }
+        Given::Value {
+            quantity: Quantity::Point(name),
+            ..
+        } => (
+            Said::Value(scene.point_index(name)?),
+            format!("{value_sym}_{name}"),
+        ),
+        Given::Value {
+            quantity: Quantity::Rate(id),
+            ..
+        } => (
+            Said::Rate(scene.link_index(id)?),
+            format!("{rate_sym}{id}"),
+        ),
+    })
+}
+
+/// Items of `items` that give what an earlier one gives, under the same
+/// or another spelling (`n2` and `n_2`, `p_v b` and `b p_v`, `v_B` and
+/// `vB`, `omega2` and `ω2`): one issue per thing given more than once, at
+/// the second item, naming the others. A drawing's labels of one point at
+/// the same line end are one point labelled twice, not a problem; at
+/// different ends they give two places, named in the message.
+pub(super) fn given_twice(an: &Analysis, plan: &Plan, items: &[Item]) -> Vec<Issue> {
+    let drawn = |it: &Item| it.pointer.starts_with("svg");
+    let place = |it: &Item| match it.given {
+        Given::Point { at, .. } => Some(at),
+        _ => None,
+    };
+    // Per thing given: its name, the items that give it, and the places of
+    // the drawing's labels of it (bits of x and y).
+    let mut groups: Vec<(String, Vec<usize>, HashSet<[u64; 2]>)> = Vec::new();
+    let mut seen: HashMap<Said, usize> = HashMap::new();
+    for (k, it) in items.iter().enumerate() {
+        let Some((what, name)) = said(an, plan, it) else {
+            continue;
+        };
+        let g = *seen.entry(what).or_insert_with(|| {
+            groups.push((name, Vec::new(), HashSet::new()));
+            groups.len() - 1
+        });
+        let label = place(it)
+            .filter(|_| drawn(it))
+            .map(|[x, y]| [x.to_bits(), y.to_bits()]);
+        if label.is_none_or(|at| groups[g].2.insert(at)) {
+            groups[g].1.push(k);
+        }
+    }
+    let mut issues = Vec::new();
+    for (name, ks, _) in groups.into_iter().filter(|(_, ks, _)| ks.len() > 1) {
+        let pointer = items[ks[1]].pointer.clone();
+        let times = match ks.len() {
+            2 => "twice".to_string(),
+            n => format!("{n} times"),
+        };
+        let others: Vec<&str> = ks
+            .iter()
+            .map(|&k| items[k].pointer.as_str())
+            .filter(|&q| q != pointer)
+            .collect();
+        let mut also = others.iter().take(3).copied().collect::<Vec<_>>().join(", ");
+        if others.len() > 3 {
+            also.push_str(&format!(" and {} more", others.len() - 3));
+        }
+        let mut message = format!("{name} is given {times}");
+        if !also.is_empty() {
+            message.push_str(&format!(" (also {also})"));
+        }
+        if ks.iter().all(|&k| drawn(&items[k])) {
+            let places: Vec<String> = ks
+                .iter()
+                .take(3)
+                .filter_map(|&k| place(&items[k]))
+                .map(|[x, y]| format!("({}, {})", num(x), num(y)))
+                .collect();
+            message.push_str(&format!(
+                ", by labels at different line ends: {}{} mm from the pole; label each point once",
+                places.join(", "),
+                if ks.len() > 3 { " …" } else { "" }
+            ));
+        } else {
+            message.push_str("; give each once");
+        }
+        issues.push(Issue { pointer, message });
+    }
+    issues
 }

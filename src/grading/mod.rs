@@ -11,13 +11,16 @@
 //! By part: the verdicts and the report ([`Judgement`], [`Verdict`],
 //! [`Report`]), the items as a construction expects them (`items`), the
 //! mistaken constructions tried and what cannot be judged
-//! (`candidates`), the diagnosis (`diagnosis`). The verdict is data: its
+//! (`candidates`), the diagnosis (`diagnosis`), an answer refused before
+//! it is judged: a name of the other plan, a thing given twice, points
+//! drawn at another position (`consistency`). The verdict is data: its
 //! text, JSON and overlay sheet are presentation's
 //! (`crate::presentation::verdict`), reading the answer's file the front
 //! door's (`crate::study`).
 
 pub mod answer;
 mod candidates;
+mod consistency;
 mod diagnosis;
 pub mod forces;
 mod items;
@@ -77,6 +80,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
             ));
         }
     }
+    consistency::refuse_inconsistent(an, solved, ans)?;
     let b = Builds { an, s, ans };
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();

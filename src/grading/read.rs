@@ -1,7 +1,7 @@
 //! An answer's text read, JSON or a drawing (SVG), with what the command
 //! line says over it ([`Reading`]).
 
-use super::answer::{Answer, check_size, from_json};
+use super::answer::{Answer, check_size, delta_issue, from_json};
 use crate::error::{Error, Result};
 use crate::kinematics::construction::PlanKind;
 
@@ -24,13 +24,8 @@ pub struct Reading {
 pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
     let in_answer = crate::error::in_file(name);
     check_size(text.len() as u64).map_err(&in_answer)?;
-    if let Some(d) = r.delta
-        && !(d.is_finite() && d > 0.0)
-    {
-        return Err(Error::scene(
-            "delta",
-            "the pencil precision must be a positive number of mm",
-        ));
+    if let Some(i) = r.delta.and_then(|d| delta_issue(d, "delta")) {
+        return Err(Error::fields(vec![i]));
     }
     let svg = svg || text.trim_start().starts_with('<');
     let mut ans = if svg {

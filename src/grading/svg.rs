@@ -15,7 +15,7 @@ use super::answer::{Answer, Given, Item, check_size};
 use crate::error::{Error, Issue, Result};
 use crate::kinematics::construction::PlanKind;
 use kurbo::Point;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The deepest nesting of elements read (an editor's layers and groups
 /// nest a few levels; 20 000 nested groups overflowed the parser's stack).
@@ -143,9 +143,6 @@ impl Ends {
     }
 }
 
-/// Read an SVG answer. `mu`, `plan` come from the command line or the
-/// answer JSON when the drawing does not state them ("μ = 0.01" text, and
-/// the pole's label p_v / p_a).
 /// What a drawing holds: its text labels (their text and where they are,
 /// mm, y down as drawn) and its lines (each path or line element's
 /// points in order, mm). Every problem names `svg`.
@@ -156,12 +153,7 @@ pub(super) struct Drawing {
 
 /// Parse an answer drawn in a vector editor into its labels and lines.
 pub(super) fn parse(text: &str) -> Result<Drawing> {
-    let bad = |m: String| {
-        Error::fields(vec![Issue {
-            pointer: "svg".into(),
-            message: m,
-        }])
-    };
+    let bad = |m: String| whole(&m);
     check_size(text.len() as u64)?;
     if let Some((_, line)) = too_deep(text, MAX_DEPTH) {
         return Err(bad(format!(
@@ -331,6 +323,25 @@ pub(super) fn stated_mu(labels: &[(String, Point)], prefix: &str) -> Option<f64>
     })
 }
 
+/// The names of the pole a drawing may have.
+const POLE_NAMES: [&str; 5] = ["p_v", "pv", "p", "p_a", "pa"];
+
+fn is_pole(name: &str) -> bool {
+    POLE_NAMES.contains(&name.to_lowercase().as_str())
+}
+
+/// A problem of the drawing as a whole: no pointer ("svg" would be read as
+/// the option --svg); the file is named by the caller.
+fn whole(message: &str) -> Error {
+    Error::fields(vec![Issue {
+        pointer: String::new(),
+        message: message.into(),
+    }])
+}
+
+/// Read an SVG answer. `mu`, `plan` come from the command line when the
+/// drawing does not state them (a "μ = 0.01" text, and the pole's label
+/// p_v / p_a); a plan asked that the pole's label contradicts is refused.
 pub fn from_svg(
     text: &str,
     mu: Option<f64>,
@@ -338,56 +349,119 @@ pub fn from_svg(
     delta: f64,
     position: usize,
 ) -> Result<Answer> {
-    let bad = |m: String| {
-        Error::fields(vec![Issue {
-            pointer: "svg".into(),
-            message: m,
-        }])
-    };
     let Drawing { labels, lines } = parse(text)?;
     let ends: Vec<Point> = lines.into_iter().flatten().collect();
-    // μ from a text such as "μ_v = 0.01 (m/s)/mm" when not given.
-    let mu = mu.or_else(|| stated_mu(&labels, ""));
+    // μ from a text such as "μ_v = 0.01 (m/s)/mm" when not given: a
+    // scale no plan has is refused where it is said (the option, or the
+    // drawing).
+    let (mu, said) = match mu {
+        Some(m) => (Some(m), "mu"),
+        None => (stated_mu(&labels, ""), "svg: label μ"),
+    };
     let Some(mu) = mu else {
-        return Err(bad(
-            "no scale: give --mu or write \"μ = …\" on the drawing".into()
+        return Err(whole(
+            "no scale: give --mu or write \"μ = …\" on the drawing",
         ));
     };
-    let pole_names = ["p_v", "pv", "p", "p_a", "pa"];
-    let pole_label = labels
-        .iter()
-        .find(|(s, _)| pole_names.contains(&s.to_lowercase().as_str()))
-        .cloned();
-    let Some((pole_name, pole_at)) = pole_label else {
-        return Err(bad("no pole: label the pole p_v (or p_a)".into()));
+    if let Some(i) = super::answer::mu_issue(mu, said) {
+        return Err(Error::fields(vec![i]));
+    }
+    let Some((pole_name, pole_at)) = labels.iter().find(|(s, _)| is_pole(s)).cloned() else {
+        return Err(whole("no pole: label the pole p_v (or p_a)"));
     };
-    let plan = plan.or(match pole_name.to_lowercase().as_str() {
+    let plan = plan_of(&pole_name, plan)?;
+    let ends = Ends::new(ends);
+    let Some(pole) = ends.snap(pole_at) else {
+        return Err(whole("the pole's label is not next to any line's end"));
+    };
+    // The pole labelled again at another line end: which is the pole?
+    let other_pole = labels
+        .iter()
+        .filter(|(s, _)| is_pole(s))
+        .find_map(|(s, at)| ends.snap(*at).filter(|e| *e != pole).map(|e| (s, e)));
+    if let Some((s, e)) = other_pole {
+        let rel = e - pole;
+        return Err(Error::scene(
+            format!("svg: label {s}"),
+            format!(
+                "the pole is given twice, by labels at different line ends: (0, 0) and ({}, {}) mm from the first; label the pole once",
+                crate::format::num(rel.x),
+                crate::format::num(-rel.y)
+            ),
+        ));
+    }
+    Ok(Answer {
+        plan,
+        position,
+        mu,
+        delta,
+        items: points(&labels, &ends, pole)?,
+        mu_v: None,
+        omegas: Vec::new(),
+    })
+}
+
+/// The plan a drawing is of: `asked` (--plan), else the one the pole's
+/// label `pole` names; the two must agree (a velocity plan's pole is p_v,
+/// an acceleration plan's p_a).
+fn plan_of(pole: &str, asked: Option<PlanKind>) -> Result<PlanKind> {
+    let labelled = match pole.to_lowercase().as_str() {
         "p_v" | "pv" => Some(PlanKind::Velocity),
         "p_a" | "pa" => Some(PlanKind::Acceleration),
         _ => None,
-    });
-    let Some(plan) = plan else {
-        return Err(bad(
-            "which plan is it? label the pole p_v or p_a, or give --plan".into(),
-        ));
     };
-    let ends = Ends::new(ends);
-    let snap = |at: Point| ends.snap(at);
-    let Some(pole) = snap(pole_at) else {
-        return Err(bad("the pole's label is not next to any line's end".into()));
+    let name = |k: PlanKind| {
+        if k == PlanKind::Velocity {
+            "velocity"
+        } else {
+            "acceleration"
+        }
     };
-    let mut items = Vec::new();
-    for (name, at) in &labels {
-        if name.is_empty()
-            || pole_names.contains(&name.to_lowercase().as_str())
-            || name.contains('=')
-        {
+    match (asked, labelled) {
+        (Some(p), Some(l)) if p != l => Err(Error::scene(
+            "plan",
+            format!(
+                "the plan asked is the {} plan, but the drawing's pole is labelled \"{pole}\", the {} plan's pole: give --plan {} or label the pole {}",
+                name(p),
+                name(l),
+                name(l),
+                if p == PlanKind::Velocity { "p_v" } else { "p_a" }
+            ),
+        )),
+        (Some(p), _) | (None, Some(p)) => Ok(p),
+        (None, None) => Err(whole(
+            "which plan is it? label the pole p_v or p_a, or give --plan",
+        )),
+    }
+}
+
+/// The labelled points of a drawing: each label (but the pole's and
+/// texts with "=") at the line end nearest to it, mm from the `pole`'s
+/// end, y up; a place off any sheet is refused.
+fn points(labels: &[(String, Point)], ends: &Ends, pole: Point) -> Result<Vec<Item>> {
+    let mut items: Vec<Item> = Vec::new();
+    let mut issues = Vec::new();
+    // The labels read so far: (name in lower case, place's bits).
+    let mut read: HashSet<(String, [u64; 2])> = HashSet::new();
+    for (name, at) in labels {
+        if name.is_empty() || is_pole(name) || name.contains('=') {
             continue;
         }
-        let Some(e) = snap(*at) else { continue };
+        let Some(e) = ends.snap(*at) else { continue };
         let rel = e - pole;
+        // One label at the same line end twice (a copied text) is one
+        // point labelled twice; at another end it gives a second place,
+        // refused when the names are resolved (`items::given_twice`).
+        if !read.insert((name.to_lowercase(), [rel.x.to_bits(), (-rel.y).to_bits()])) {
+            continue;
+        }
+        let pointer = format!("svg: label {name}");
+        let far = [rel.x, rel.y]
+            .iter()
+            .find_map(|&x| super::answer::coordinate_issue(x, &pointer));
+        issues.extend(far);
         items.push(Item {
-            pointer: format!("svg: label {name}"),
+            pointer,
             key: name.clone(),
             given: Given::Point {
                 name: name.clone(),
@@ -395,18 +469,13 @@ pub fn from_svg(
             },
         });
     }
-    if items.is_empty() {
-        return Err(bad("no labelled points next to line ends were found".into()));
+    if !issues.is_empty() {
+        return Err(Error::fields(issues));
     }
-    Ok(Answer {
-        plan,
-        position,
-        mu,
-        delta,
-        items,
-        mu_v: None,
-        omegas: Vec::new(),
-    })
+    if items.is_empty() {
+        return Err(whole("no labelled points next to line ends were found"));
+    }
+    Ok(items)
 }
 
 #[cfg(test)]

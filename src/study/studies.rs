@@ -164,11 +164,8 @@ fn parse_force_answer(
     }
     .map_err(in_file(name))?;
     if let Some(d) = req.delta {
-        if !(d.is_finite() && d > 0.0) {
-            return Err(Error::scene(
-                "delta",
-                "the pencil precision must be a positive number of mm",
-            ));
+        if let Some(i) = crate::grading::answer::delta_issue(d, "delta") {
+            return Err(Error::fields(vec![i]));
         }
         ans.delta = d;
     }

@@ -2,7 +2,7 @@
 //! a drawing from a vector editor that states μ_F.
 
 use crate::error::{Error, Issue, Result};
-use crate::json::parse_strict;
+use crate::json::{locate_bad_numbers, parse_strict};
 use serde_json::{Map, Value};
 
 /// A student's force plan.
@@ -41,7 +41,7 @@ pub fn is_force_answer(text: &str) -> bool {
 /// Read a force-plan answer, every problem with its JSON pointer.
 pub fn from_json(text: &str) -> Result<ForceAnswer> {
     crate::grading::answer::check_size(text.len() as u64)?;
-    let v = parse_strict(text).map_err(Error::json)?;
+    let v = parse_strict(text).map_err(|e| Error::json(locate_bad_numbers(text).unwrap_or(e)))?;
     let mut issues = Vec::new();
     let Some(o) = v.as_object() else {
         return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
@@ -77,7 +77,14 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
             "missing: the scale μ_F of your force plan (N/mm)",
         ));
     }
-    let delta = positive(o, "delta", &mut issues).unwrap_or(0.5);
+    let delta = positive(o, "delta", &mut issues)
+        .filter(|&d| {
+            let bad = super::super::answer::delta_issue(d, "/delta");
+            let ok = bad.is_none();
+            issues.extend(bad);
+            ok
+        })
+        .unwrap_or(0.5);
     let mu_l = positive(o, "mu_l", &mut issues);
     let segments = table(o, "segments", &mut issues);
     let angles = table(o, "angles", &mut issues);
@@ -179,9 +186,11 @@ const SNAP_MM: f64 = 10.0;
 /// nearest segment (by its middle, within 10 mm) gives the force's length;
 /// the plan is the one whose forces the labels name (no `links` needed).
 pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Result<ForceAnswer> {
+    // A problem of the drawing as a whole: no pointer ("svg" would be
+    // read as the option --svg); the file is named by the caller.
     let bad = |m: String| {
         Error::fields(vec![Issue {
-            pointer: "svg".into(),
+            pointer: String::new(),
             message: m,
         }])
     };

@@ -5,7 +5,7 @@
 //!
 //! The types are here; the reader, by section of the file: `reader` (the
 //! top level, the units and the getters every section uses), `numbers`
-//! (numbers, angles and their rounding, non-finite numbers located),
+//! (numbers, angles and their rounding),
 //! `links` (points and links), `sliders` (prismatic pairs and their
 //! guide lines), `lengths`, `input`, `positions`, `want`, `dynamics`.
 
@@ -22,8 +22,7 @@ mod spec;
 mod want;
 
 use crate::error::{Error, Result};
-use crate::json::parse_strict;
-use numbers::locate_bad_numbers;
+use crate::json::{locate_bad_numbers, parse_strict};
 use reader::Reader;
 pub use spec::*;
 

@@ -1,0 +1,185 @@
+//! Is the answer one answer, of the plan and the position it states?
+//! Refused before anything is judged (bad input, each problem at its
+//! field): a name of the other plan (`k3`, a Coriolis point, or the pole
+//! `p_a` in a velocity answer; `p_v` in an acceleration answer), a name no
+//! plan has, a thing given twice under two spellings (`n2` and `n_2`),
+//! and points that do not fit the position the answer states but fit
+//! another position of the scene well.
+//!
+//! Cost: one plan build at the stated position (the check builds it again;
+//! a plan build is a small part of a check, whose diagnosis builds dozens),
+//! and only when the answer gives at least two points that do not all fit
+//! there, one more plan build at each other position of the scene
+//! (docs/check.md measures it).
+
+use super::answer::{Answer, Given, Item};
+use super::candidates::Builds;
+use super::items::{expect, given_twice, names, pole_of, resolve};
+use crate::error::{Error, Issue, Result};
+use crate::kinematics::construction::{Plan, PlanKind, PointId, Variant};
+use crate::kinematics::solve::Analysis;
+use crate::pipeline::Solved;
+use kurbo::Vec2;
+
+/// How much better another position must fit the answer's points than
+/// the stated one (Σ distance/tolerance) for the answer to be refused as
+/// drawn at that position.
+pub(super) const BETTER_FIT: f64 = 10.0;
+
+/// Refuse an answer whose names are of the other plan or of no plan, that
+/// gives a thing twice, or whose points fit another position of the scene
+/// instead of the one it states. A position the scene does not have, or a
+/// plan it cannot build, is left to [`super::check`] to refuse.
+pub(super) fn refuse_inconsistent(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<()> {
+    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
+        return Ok(());
+    };
+    let Ok(plan) = (Builds { an, s, ans }).plan(&s.config, Variant::default()) else {
+        return Ok(());
+    };
+    let other = s.plans.as_ref().and_then(|p| match ans.plan {
+        PlanKind::Velocity => p.acceleration.as_ref(),
+        PlanKind::Acceleration => Some(&p.velocity),
+    });
+    let mut issues = Vec::new();
+    for it in &ans.items {
+        if let Some(i) = of_the_other_plan(&plan, other, it) {
+            issues.push(i);
+        } else if let Err(i) = expect(an, &plan, it, ans.delta) {
+            issues.push(i);
+        }
+    }
+    issues.extend(given_twice(an, &plan, &ans.items));
+    if issues.is_empty()
+        && let Some(i) = another_position(an, solved, ans, &plan)
+    {
+        issues.push(i);
+    }
+    if issues.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::fields(issues))
+    }
+}
+
+/// The plan points item `it` names (a segment's two ends, split where
+/// each half is a point of `plan` or of `other`).
+fn names_of(plan: &Plan, other: Option<&Plan>, it: &Item) -> Vec<String> {
+    let known = |s: &str| {
+        resolve(plan, s).is_some()
+            || pole_of(s).is_some()
+            || other.is_some_and(|o| resolve(o, s).is_some())
+    };
+    match &it.given {
+        Given::Point { name, .. } => vec![name.clone()],
+        Given::Segment { from, .. } | Given::Angle { from, .. } => {
+            super::answer::split_segment(from, &known)
+                .map(|(a, b)| vec![a, b])
+                .unwrap_or_default()
+        }
+        Given::Value { .. } => Vec::new(),
+    }
+}
+
+/// The issue of item `it` if it names a point that `plan` does not have
+/// but the other plan of the position (`other`) does: the pole of the
+/// other plan, or an acceleration plan's construction point (`n2`, `k3`)
+/// in a velocity answer. The message names where the answer says its
+/// plan: `/plan`, or a drawing's pole label and `--plan`.
+fn of_the_other_plan(plan: &Plan, other: Option<&Plan>, it: &Item) -> Option<Issue> {
+    let (this, that) = match plan.kind {
+        PlanKind::Velocity => ("velocity", "acceleration"),
+        PlanKind::Acceleration => ("acceleration", "velocity"),
+    };
+    let name = names_of(plan, other, it)
+        .into_iter()
+        .find(|n| resolve(plan, n).is_none() && other_has(plan, other, n))?;
+    let what = match other.and_then(|o| resolve(o, &name).map(|i| o.points[i].id)) {
+        Some(PointId::Coriolis { .. }) => " (a Coriolis point)",
+        Some(PointId::Normal { .. }) => " (the end of a normal component)",
+        _ if pole_of(&name).is_some() => " (its pole)",
+        _ => "",
+    };
+    let said = if it.pointer.starts_with("svg") {
+        format!("this drawing is a {this} plan (by --plan or its pole's label)")
+    } else {
+        format!("/plan says \"{this}\"")
+    };
+    Some(Issue {
+        pointer: it.pointer.clone(),
+        message: format!(
+            "\"{name}\" belongs to the {that} plan{what}, but {said}: if the answer is the {that} plan, say so; else name the {this} plan's points ({})",
+            names(plan)
+        ),
+    })
+}
+
+/// Is `name` a point of the other plan than `plan`: its pole, or a point
+/// of `other`?
+fn other_has(plan: &Plan, other: Option<&Plan>, name: &str) -> bool {
+    pole_of(name).is_some_and(|k| k != plan.kind) || other.is_some_and(|o| resolve(o, name).is_some())
+}
+
+/// How the answer's points fit `plan`: Σ distance/tolerance over them, and
+/// whether each is within its tolerance; `None` if a name does not
+/// resolve there.
+fn fit(plan: &Plan, points: &[(&str, [f64; 2])], delta: f64) -> Option<(f64, bool)> {
+    let (mut misfit, mut within) = (0.0, true);
+    for (name, at) in points {
+        let p = &plan.points[resolve(plan, name)?];
+        let d = (Vec2::new(at[0], at[1]) - p.at).hypot() / (p.err + delta);
+        misfit += d;
+        within &= d <= 1.0;
+    }
+    Some((misfit, within))
+}
+
+/// The refusal of an answer whose points (two or more) do not fit the
+/// stated position's `plan` but fit another position's within their
+/// tolerances, [`BETTER_FIT`] times better: the position it was drawn at.
+/// Every other position's plan is built (at the student's μ) only when
+/// the stated one does not fit.
+fn another_position(
+    an: &Analysis,
+    solved: &[Solved],
+    ans: &Answer,
+    plan: &Plan,
+) -> Option<Issue> {
+    let points: Vec<(&str, [f64; 2])> = ans
+        .items
+        .iter()
+        .filter_map(|it| match &it.given {
+            Given::Point { name, at } => Some((name.as_str(), *at)),
+            _ => None,
+        })
+        .collect();
+    if points.len() < 2 {
+        return None;
+    }
+    let (stated, within) = fit(plan, &points, ans.delta)?;
+    if within {
+        return None;
+    }
+    let mut best: Option<(usize, f64)> = None;
+    for (k, s) in solved.iter().enumerate() {
+        if k + 1 == ans.position {
+            continue;
+        }
+        let Ok(p) = (Builds { an, s, ans }).plan(&s.config, Variant::default()) else {
+            continue;
+        };
+        if let Some((m, true)) = fit(&p, &points, ans.delta)
+            && best.is_none_or(|(_, b)| m < b)
+        {
+            best = Some((k + 1, m));
+        }
+    }
+    let (k, m) = best?;
+    (stated > BETTER_FIT * m).then(|| Issue {
+        pointer: "/position".into(),
+        message: format!(
+            "the answer fits position {k}, not position {} it states; give \"position\": {k} or --position {k}",
+            ans.position
+        ),
+    })
+}
