@@ -8,9 +8,11 @@ use super::answer::{Answer, Given};
 use super::items::{Expected, expect};
 use crate::error::Result;
 use crate::format::num;
+use crate::lang::Lang;
+use crate::words::check;
 use crate::kinematics::analytic::{Drives, Order};
 use crate::kinematics::construction::{
-    Drafting, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
+    self, Drafting, Drawing, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
 };
 use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::Analysis;
@@ -18,7 +20,7 @@ use crate::model::structure::{AssurGroup, DyadKind};
 use crate::pipeline::Solved;
 
 /// The discrete mistakes tried, one element at a time and everywhere.
-const MISTAKES: [Mistake; 13] = [
+pub(super) const MISTAKES: [Mistake; 14] = [
     Mistake::CoriolisReversed,
     Mistake::CoriolisForgotten,
     Mistake::CoriolisFactorOne,
@@ -32,60 +34,45 @@ const MISTAKES: [Mistake; 13] = [
     Mistake::Epsilon1Added,
     Mistake::OmegaWrongLink,
     Mistake::OmegaWrongSense,
+    Mistake::NeighbourLink,
 ];
 
-pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str) -> String {
-    let one = |at: Option<usize>, every: &str, single: &str| -> String {
-        if at.is_some() {
-            single.to_string()
-        } else {
-            every.to_string()
-        }
-    };
+/// The mistake of candidate `c` in one sentence in `lang` (`what`: the
+/// vector a slip lays off; `mu`: the student's scale).
+pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str, lang: Lang) -> String {
+    let w = check::phrases(lang);
     match c {
-        Candidate::Mistake { m, at, .. } => match m {
-            Mistake::CoriolisReversed => one(at, "The Coriolis acceleration is turned the wrong way: turn the relative velocity by 90° in the sense of ω of the guide.", "One Coriolis acceleration is turned the wrong way: turn the relative velocity by 90° in the sense of ω of the guide."),
-            Mistake::CoriolisForgotten => "The Coriolis acceleration is forgotten: a point sliding on a rotating guide has a^k = 2·ω·v_rel.".into(),
-            Mistake::CoriolisFactorOne => "The Coriolis acceleration is taken as ω·v_rel: it is 2·ω·v_rel.".into(),
-            Mistake::NormalFromCentre => one(at, "Normal components are laid off from the centre instead of toward it: a^n points from the point to the centre of its rotation.", "One normal component is laid off from the centre instead of toward it: a^n points from the point to the centre of its rotation."),
-            Mistake::NormalForgotten => one(at, "The normal components ω²·l are forgotten.", "A normal component ω²·l is forgotten."),
-            Mistake::MirroredFigure => one(at, "The similar figures are mirrored: their letters must run around them in the same order as around the link.", "A similar figure is mirrored: its letters must run around it in the same order as around the link."),
-            Mistake::WrongPerpendicular => "A perpendicular is drawn to the wrong link: v_CB is ⊥ BC, v_CD is ⊥ CD.".into(),
-            Mistake::TangentialParallel => one(at, "The relative (tangential) components are drawn parallel to the links instead of perpendicular to them.", "A relative (tangential) component is drawn parallel to its link instead of perpendicular to it."),
-            Mistake::WrongLink => "A point is taken on the wrong link: the guide's point (b₃) is not the slider's point (b₂); they differ by the relative sliding.".into(),
-            Mistake::Epsilon1Forgotten => "The crank's tangential acceleration ε1·l is forgotten (ε1 ≠ 0).".into(),
-            Mistake::Epsilon1Added => "A tangential acceleration of the crank is added although ε1 = 0.".into(),
-            Mistake::OmegaWrongLink => one(at, "The normal components ω²·l use ω of the crank instead of each link's own ω.", "A normal component ω²·l uses ω of the crank instead of the link's own ω."),
-            Mistake::OmegaWrongSense => "The crank's velocity is laid off against the sense of ω1.".into(),
-            Mistake::Slip => "A vector is laid off with a wrong length.".into(),
-        },
-        Candidate::Slip { factor, .. } => format!(
-            "A slip in one length: {what} is laid off {} times its right length (an arithmetic or measuring slip).",
-            num(factor)
+        Candidate::Mistake { m, at, .. } => check::mistake(lang, m, at.is_some()).to_string(),
+        Candidate::Slip { factor, .. } => check::fill(
+            &w.slip_of,
+            &[("what", what), ("factor", &crate::format::num(factor))],
         ),
-        Candidate::Pair(x, y) => {
-            let one = |m| {
-                mistake_sentence(
-                    Candidate::Mistake { m, at: None, both: false },
-                    mu,
-                    what,
-                )
-            };
-            format!("Two mistakes together: {} {}", one(x), one(y))
-        }
-        Candidate::Branch(_) => "The mechanism is assembled on the other branch (a group drawn mirrored on the plan of the mechanism).".into(),
+        Candidate::Pair(x, y) => check::fill(
+            &w.pair,
+            &[
+                ("first", check::mistake(lang, x, false)),
+                ("second", check::mistake(lang, y, false)),
+            ],
+        ),
+        Candidate::Branch(_) => w.branch.clone(),
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
-            "The scale μ is applied in the wrong units (mm instead of m, or the reverse): the derived values are off by 1000.".into()
+            w.scale_units.clone()
         }
-        Candidate::Scale(_) => format!("The scale μ is inverted: values are segment/μ instead of segment·μ (μ = {}).", num(mu)),
+        Candidate::Scale(_) => check::fill(&w.scale_inverted, &[("mu", &num(mu))]),
     }
 }
+
+/// The relative error of an angular velocity the student states: its
+/// rounding to three significant digits.
+const STATED_RATE_ROUNDING: f64 = 5e-3;
 
 /// What the plans of one answer are built from.
 pub(super) struct Builds<'a> {
     pub(super) an: &'a Analysis,
     pub(super) s: &'a Solved,
     pub(super) ans: &'a Answer,
+    /// The language of the report's sentences.
+    pub(super) lang: Lang,
 }
 
 impl Builds<'_> {
@@ -97,6 +84,26 @@ impl Builds<'_> {
     /// velocity plan at the student's μ; an acceleration plan at the
     /// student's μ on their velocity plan (its μ_v, their measured ω).
     pub(super) fn plan(&self, c: &Configuration, variant: Variant) -> Result<Plan> {
+        self.build(c, variant, None)
+    }
+
+    /// [`Builds::plan`] replayed with the student's points `given` in
+    /// place of the constructed ones ([`construction::replay`]).
+    pub(super) fn replay(
+        &self,
+        c: &Configuration,
+        variant: Variant,
+        given: &Drawing,
+    ) -> Result<Plan> {
+        self.build(c, variant, Some(given))
+    }
+
+    fn build(
+        &self,
+        c: &Configuration,
+        variant: Variant,
+        given: Option<&Drawing>,
+    ) -> Result<Plan> {
         let (ans, st) = (self.ans, self.an.setup());
         let d = Drafting {
             mu_v: Some(ans.mu),
@@ -105,6 +112,10 @@ impl Builds<'_> {
             variant,
         };
         if ans.plan == PlanKind::Velocity {
+            if let Some(given) = given {
+                let kind = (PlanKind::Velocity, None);
+                return construction::replay(&st, c, self.drive(), kind, d, given.clone());
+            }
             return Ok(build_plans(&st, c, self.drive(), Order::Velocity, d)?.velocity);
         }
         let dv = Drafting {
@@ -116,7 +127,11 @@ impl Builds<'_> {
             if let Some(l) = self.an.mech.scene.link_index(id)
                 && let Some(r) = vel.rates[l].as_mut()
             {
-                r.0 = *w;
+                // The ω the student states is the ω their normals were
+                // computed with: its own error is its rounding (three
+                // significant digits, as a student writes it), not the
+                // velocity plan's drafting error.
+                *r = (*w, STATED_RATE_ROUNDING * w.abs());
             }
         }
         let da = Drafting {
@@ -124,7 +139,13 @@ impl Builds<'_> {
             mu_a: Some(ans.mu),
             ..d
         };
-        build_acceleration(&st, c, self.drive(), &vel, da)
+        match given {
+            Some(given) => {
+                let kind = (PlanKind::Acceleration, Some(&vel));
+                construction::replay(&st, c, self.drive(), kind, da, given.clone())
+            }
+            None => build_acceleration(&st, c, self.drive(), &vel, da),
+        }
     }
 }
 
@@ -180,31 +201,33 @@ pub(super) fn expectations(b: &Builds, p: &Plan, factor: f64) -> Option<Vec<Expe
 pub(super) fn cannot_judge(
     k: usize,
     e: &Expected,
-    size: f64,
-    mu: f64,
+    (size, mu): (f64, f64),
     candidates: &[Fit],
     student_mu: f64,
+    lang: Lang,
 ) -> Option<String> {
-    let tol_mm = match e.unit {
-        "mm" => e.tol,
-        "°" => None?,
-        _ => e
-            .on_plan
-            .map(|(x, _)| {
-                if e.expected != 0.0 {
-                    e.tol * x / e.expected.abs()
-                } else {
-                    e.tol / mu
-                }
-            })
-            .unwrap_or(e.tol / mu),
+    let w = check::phrases(lang);
+    let quantity = crate::format::format_quantity;
+    // An item's tolerance in mm on the plan.
+    let mm = |e: &Expected| match e.unit {
+        "mm" => Some(e.tol),
+        "°" => None,
+        _ => Some(
+            e.on_plan
+                .map(|(x, _)| {
+                    if e.expected != 0.0 {
+                        e.tol * x / e.expected.abs()
+                    } else {
+                        e.tol / mu
+                    }
+                })
+                .unwrap_or(e.tol / mu),
+        ),
     };
-    if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
-        return Some(format!(
-            "its tolerance ({}) exceeds a fifth of the plan ({} across): near a dead point the construction cannot place it",
-            crate::format::format_quantity(tol_mm, "mm"),
-            crate::format::format_quantity(size, "mm")
-        ));
+    let tol_mm = mm(e)?;
+    if size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
+        let (tol, size) = (quantity(tol_mm, "mm"), quantity(size, "mm"));
+        return Some(check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]));
     }
     for f in candidates {
         let other = &f.items[k];
@@ -212,14 +235,20 @@ pub(super) fn cannot_judge(
         // The whole answer fits a mistaken construction within its own
         // tolerances, and that construction moves this item visibly: the
         // answer cannot tell which was drawn. (An answer that contradicts
-        // the mistake anywhere rules it out.)
+        // the mistake anywhere rules it out; a construction whose own
+        // tolerance exceeds a fifth of the plan judges nothing and is no
+        // candidate.)
         let fits = f.score().0 == f.items.len();
-        if moved > e.visible && fits {
-            return Some(format!(
-                "within its tolerance ({}) of the right construction and of a mistaken one that moves it by only {}: {}",
-                crate::format::format_quantity(e.tol, e.unit),
-                crate::format::format_quantity(moved, e.unit),
-                mistake_sentence(f.c, student_mu, &e.what)
+        let judges = mm(other).is_none_or(|t| t <= MAX_TOLERANCE_OF_PLAN * size);
+        if moved > e.visible && fits && judges {
+            let mistake = mistake_sentence(f.c, student_mu, &e.what, lang);
+            return Some(check::fill(
+                &w.ambiguous,
+                &[
+                    ("tol", &quantity(e.tol, e.unit)),
+                    ("moved", &quantity(moved, e.unit)),
+                    ("mistake", &mistake),
+                ],
             ));
         }
     }

@@ -34,7 +34,12 @@ pub(super) fn refuse_inconsistent(an: &Analysis, solved: &[Solved], ans: &Answer
     let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Ok(());
     };
-    let Ok(plan) = (Builds { an, s, ans }).plan(&s.config, Variant::default()) else {
+    let Ok(plan) = (Builds {
+        an,
+        s,
+        ans,
+        lang: crate::lang::Lang::En,
+    }).plan(&s.config, Variant::default()) else {
         return Ok(());
     };
     let other = s.plans.as_ref().and_then(|p| match ans.plan {
@@ -165,7 +170,12 @@ fn another_position(
         if k + 1 == ans.position {
             continue;
         }
-        let Ok(p) = (Builds { an, s, ans }).plan(&s.config, Variant::default()) else {
+        let Ok(p) = (Builds {
+        an,
+        s,
+        ans,
+        lang: crate::lang::Lang::En,
+    }).plan(&s.config, Variant::default()) else {
             continue;
         };
         if let Some((m, true)) = fit(&p, &points, ans.delta)

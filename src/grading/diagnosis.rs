@@ -18,7 +18,7 @@ use crate::words::construction::{Lang, sentence};
 /// one laid-off length is tried (its factor fitted).
 pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) -> Diagnosis {
     let n = exp.len();
-    one_mistake(r, cands, n)
+    one_mistake(b, r, cands, n)
         .or_else(|| two_mistakes(b, r, cands, n))
         .or_else(|| slip(b, r, exp))
         .unwrap_or(Diagnosis {
@@ -31,10 +31,10 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
 }
 
 /// The step where a candidate's mistake enters, with its sentence.
-fn step_of(f: &Fit) -> Option<(usize, String)> {
+fn step_of(f: &Fit, lang: Lang) -> Option<(usize, String)> {
     f.plan.mistake_step.map(|k| {
         let k = k.min(f.plan.steps.len().saturating_sub(1));
-        (k + 1, sentence(&f.plan, k, Lang::En))
+        (k + 1, sentence(&f.plan, k, lang))
     })
 }
 
@@ -52,7 +52,7 @@ fn what_of(f: &Fit) -> String {
 
 /// The candidate that explains all `n` items, named unless another of a
 /// different kind fits about as well (then all of them, "not recognised").
-fn one_mistake(r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
+fn one_mistake(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
     let mut explaining: Vec<(&Fit, f64)> = cands
         .iter()
         .filter_map(|f| {
@@ -62,7 +62,7 @@ fn one_mistake(r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
         .collect();
     explaining.sort_by(|a, b| a.1.total_cmp(&b.1));
     let &(best, misfit) = explaining.first()?;
-    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f));
+    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f), b.lang);
     let name = sentence_of(best);
     // Explanations of another kind that fit about as well.
     let mut alternatives: Vec<String> = explaining[1..]
@@ -80,7 +80,7 @@ fn one_mistake(r: &Report, cands: &[Fit], n: usize) -> Option<Diagnosis> {
     Some(Diagnosis {
         explanation: mistake.is_some().then_some(best.c),
         mistake,
-        step: step_of(best),
+        step: step_of(best, b.lang),
         explained: n,
         alternatives,
     })
@@ -128,11 +128,11 @@ fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagn
         .iter()
         .filter(|p| p.1 <= ACCURACY.distinct_misfit * misfit.max(1e-12))
         .count();
-    let name = mistake_sentence(best.c, r.mu, &what_of(best));
+    let name = mistake_sentence(best.c, r.mu, &what_of(best), b.lang);
     Some(Diagnosis {
         explanation: (others == 0).then_some(best.c),
         mistake: (others == 0).then(|| name.clone()),
-        step: step_of(best),
+        step: step_of(best, b.lang),
         explained: n,
         alternatives: if others == 0 {
             Vec::new()
@@ -140,7 +140,7 @@ fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagn
             pairs
                 .iter()
                 .take(others + 1)
-                .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0)))
+                .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0), b.lang))
                 .collect()
         },
     })
@@ -170,8 +170,8 @@ fn slip(b: &Builds, r: &Report, exp: &[Expected]) -> Option<Diagnosis> {
     let (f, _) = best?;
     Some(Diagnosis {
         explanation: Some(f.c),
-        mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f))),
-        step: step_of(&f),
+        mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f), b.lang)),
+        step: step_of(&f, b.lang),
         explained: exp.len(),
         alternatives: Vec::new(),
     })

@@ -28,15 +28,17 @@ pub(super) fn pole_of(name: &str) -> Option<PlanKind> {
 /// their keys n_2, k_3, b_3).
 pub fn resolve(plan: &Plan, name: &str) -> Option<usize> {
     let n = name.trim().to_lowercase();
+    // A point of the scene named like the pole (the piston P: `p`) is that
+    // point; the pole is then `p_v` or `p_a`.
+    let named = |p: &crate::kinematics::construction::PlanPoint| p.key.to_lowercase() == n;
+    if let Some(i) = plan.points.iter().skip(1).position(named) {
+        return Some(i + 1);
+    }
     if ["p", "π"].contains(&n.as_str()) {
         return Some(0);
     }
     if let Some(kind) = pole_of(&n) {
         return (kind == plan.kind).then_some(0);
-    }
-    let named = |p: &crate::kinematics::construction::PlanPoint| p.key.to_lowercase() == n;
-    if let Some(i) = plan.points.iter().position(named) {
-        return Some(i);
     }
     plan.points
         .iter()

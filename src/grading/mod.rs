@@ -25,12 +25,17 @@ mod diagnosis;
 pub mod forces;
 mod items;
 pub mod read;
+mod relative;
+mod steps;
 pub mod svg;
 mod verdict;
 
 pub use verdict::Candidate as Explanation;
 pub use items::resolve;
-pub use verdict::{Diagnosis, Judgement, MAX_TOLERANCE_OF_PLAN, Report, Verdict};
+pub use verdict::{
+    Diagnosis, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
+    StepVerdict, Verdict,
+};
 
 use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
@@ -60,8 +65,45 @@ fn position_of(solved: &[Solved], position: usize) -> Result<&Solved> {
         })
 }
 
-/// Check `answer` against the scene's analysis.
+/// Check `answer` against the scene's analysis: an answer that draws
+/// points step by step from the student's own points (the steps'
+/// verdicts decide; the comparison with the true plan is the second
+/// opinion), one that gives only segments and values against the true
+/// plan.
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
+    check_in(an, solved, ans, Lang::En)
+}
+
+/// [`check`] with the steps quoted in `lang`.
+pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> Result<Report> {
+    let mut report = against_true_plan(an, solved, ans, lang)?;
+    let s = position_of(solved, ans.position)?;
+    let b = Builds { an, s, ans, lang };
+    let Some(steps) = steps::judge(&b, &report.plan_built, lang)? else {
+        return Ok(report);
+    };
+    let second = SecondOpinion::of(&report, &steps, lang);
+    report.verdicts = relative::verdicts(&b, &report, &steps);
+    report.diagnosis = steps.mistakes.first().map(|f| Diagnosis {
+        mistake: f.mistake.clone(),
+        explanation: f.explanation,
+        step: Some(f.step.clone()),
+        explained: f.points.len(),
+        alternatives: f.alternatives.clone(),
+    });
+    report.second_opinion = Some(second);
+    report.steps = Some(steps);
+    Ok(report)
+}
+
+/// Every item of `answer` against the true plan at the student's scale,
+/// with the tolerance accumulated along the whole construction.
+fn against_true_plan(
+    an: &Analysis,
+    solved: &[Solved],
+    ans: &Answer,
+    lang: Lang,
+) -> Result<Report> {
     let s = position_of(solved, ans.position)?;
     if !an.plans
         || an.order.is_none()
@@ -81,7 +123,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         }
     }
     consistency::refuse_inconsistent(an, solved, ans)?;
-    let b = Builds { an, s, ans };
+    let b = Builds { an, s, ans, lang };
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();
     let mut issues = Vec::new();
@@ -103,7 +145,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         let judgement = if difference > e.tol {
             Judgement::Wrong
         } else {
-            cannot_judge(k, e, size, plan.mu, &candidates, ans.mu)
+            cannot_judge(k, e, (size, plan.mu), &candidates, ans.mu, lang)
                 .map(Judgement::CannotJudge)
                 .unwrap_or(Judgement::Right)
         };
@@ -120,7 +162,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
             step: e
                 .point
                 .and_then(|i| plan.step_of(i))
-                .map(|k| (k + 1, sentence(&plan, k, Lang::En))),
+                .map(|k| (k + 1, sentence(&plan, k, lang))),
             judgement,
         });
     }
@@ -133,6 +175,9 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
         diagnosis: None,
         verdicts,
         plan_built: plan,
+        steps: None,
+        second_opinion: None,
+        lang,
     };
     if report.wrong() > 0 {
         report.diagnosis = Some(diagnose(&b, &report, &exp, &candidates));

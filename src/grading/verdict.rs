@@ -2,6 +2,7 @@
 //! of a wrong answer, and the report of one answer.
 
 use crate::kinematics::construction::{Mistake, Plan, PlanKind};
+use kurbo::Vec2;
 
 /// What the check says of one item.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,6 +71,62 @@ pub struct Report {
     pub diagnosis: Option<Diagnosis>,
     /// The correct plan at the student's scale (for the overlay).
     pub plan_built: Plan,
+    /// Step by step from the student's own points (an answer that draws
+    /// points): the verdict that decides.
+    pub steps: Option<StepReport>,
+    /// Beside the steps' verdict, the comparison with the true plan.
+    pub second_opinion: Option<SecondOpinion>,
+    /// The language of its sentences.
+    pub lang: crate::lang::Lang,
+}
+
+/// The comparison of the answer with the true plan (tolerances
+/// accumulated along the whole construction), beside the steps' verdict:
+/// its counts, and where the two disagree, why.
+#[derive(Clone, Debug)]
+pub struct SecondOpinion {
+    pub right: usize,
+    pub wrong: usize,
+    pub unjudged: usize,
+    /// What it names, if anything.
+    pub mistake: Option<String>,
+    /// Why it disagrees with the steps' verdict; `None`: it agrees.
+    pub disagreement: Option<String>,
+}
+
+impl SecondOpinion {
+    /// The true plan's verdict `global` beside the steps' `steps`.
+    pub fn of(global: &Report, steps: &StepReport, lang: crate::lang::Lang) -> SecondOpinion {
+        let w = crate::words::check::phrases(lang);
+        let fill = crate::words::check::fill;
+        let wrong = global.wrong();
+        let disagreement = match steps.grade() {
+            Grade::Wrong if wrong == 0 => {
+                let k = steps
+                    .steps
+                    .iter()
+                    .find(|s| s.judgement == Judgement::Wrong)
+                    .map_or(0, |s| s.step.0);
+                Some(fill(&w.disagreement_steps_wrong, &[("step", &k.to_string())]))
+            }
+            Grade::Right | Grade::CannotJudge if wrong > 0 => {
+                let what = global
+                    .verdicts
+                    .iter()
+                    .find(|v| v.judgement == Judgement::Wrong)
+                    .map_or(String::new(), |v| v.what.clone());
+                Some(fill(&w.disagreement_steps_right, &[("what", &what)]))
+            }
+            _ => None,
+        };
+        SecondOpinion {
+            right: global.right(),
+            wrong,
+            unjudged: global.unjudged(),
+            mistake: global.diagnosis.as_ref().and_then(|d| d.mistake.clone()),
+            disagreement,
+        }
+    }
 }
 
 impl Report {
@@ -135,3 +192,86 @@ pub enum Candidate {
     /// 1/1000), or μ inverted (the factor is 1/μ²).
     Scale(f64),
 }
+
+/// The verdict on one point the student drew, at the step that draws it.
+#[derive(Clone, Debug)]
+pub struct StepVerdict {
+    /// The step (1-based) and its sentence.
+    pub step: (usize, String),
+    /// The point's name ("b", "n2").
+    pub point: String,
+    /// Where the step puts it from the student's own earlier points, mm
+    /// from the pole (of the right constructions, the nearest).
+    pub predicted: Vec2,
+    /// Where the student drew it.
+    pub given: Vec2,
+    /// |given − predicted|, mm.
+    pub off: f64,
+    /// The step's own tolerance, mm.
+    pub tolerance: f64,
+    pub judgement: Judgement,
+    /// The mistake that explains it (an index into
+    /// [`StepReport::mistakes`]), when it is wrong.
+    pub mistake: Option<usize>,
+}
+
+/// A mistake found at a step, with the drawn points it puts off their
+/// place (each step after it judged from the student's own points).
+#[derive(Clone, Debug)]
+pub struct Found {
+    /// The mistake, typed; `None`: the step is wrong but no typical
+    /// mistake explains it.
+    pub explanation: Option<Candidate>,
+    /// The mistake in one sentence; `None`: not recognised.
+    pub mistake: Option<String>,
+    /// The step where it enters (1-based) and that step's sentence as the
+    /// right construction says it.
+    pub step: (usize, String),
+    /// The drawn points it puts off their place.
+    pub points: Vec<String>,
+    /// Other explanations as good, when the drawing cannot tell them apart.
+    pub alternatives: Vec<String>,
+}
+
+/// The grade of an answer as a teacher gives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Grade {
+    /// Every step right.
+    Right,
+    /// Wrong at one or more steps (each mistake counted once).
+    Wrong,
+    /// No step wrong, but some cannot be told from a mistake at this
+    /// position and scale.
+    CannotJudge,
+}
+
+/// The step-by-step verdict of one answer.
+#[derive(Clone, Debug)]
+pub struct StepReport {
+    /// One verdict per point the student drew, in the order of the
+    /// construction.
+    pub steps: Vec<StepVerdict>,
+    /// The mistakes found, in the order of their steps.
+    pub mistakes: Vec<Found>,
+    /// The replayed plan: the student's points where they drew them, the
+    /// others predicted from them (the answer's other items are judged on
+    /// it).
+    pub replay: Plan,
+}
+
+impl StepReport {
+    pub fn grade(&self) -> Grade {
+        if self.steps.iter().any(|s| s.judgement == Judgement::Wrong) {
+            Grade::Wrong
+        } else if self
+            .steps
+            .iter()
+            .any(|s| matches!(s.judgement, Judgement::CannotJudge(_)))
+        {
+            Grade::CannotJudge
+        } else {
+            Grade::Right
+        }
+    }
+}
+

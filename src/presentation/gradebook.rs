@@ -115,7 +115,20 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
     match outcome {
         Outcome::Kinematic(r) => {
             let mut mistakes = Vec::new();
-            if let Some(d) = &r.diagnosis {
+            if let Some(steps) = &r.steps {
+                // Judged step by step: every mistake at its step.
+                for f in &steps.mistakes {
+                    let k = f.step.0;
+                    match &f.mistake {
+                        Some(m) => mistakes.push(format!("step {k}: {m}")),
+                        None => {
+                            mistakes.push(format!("step {k}: not recognised"));
+                            mistakes
+                                .extend(f.alternatives.iter().map(|a| format!("maybe: {a}")));
+                        }
+                    }
+                }
+            } else if let Some(d) = &r.diagnosis {
                 match &d.mistake {
                     Some(m) => mistakes.push(match &d.step {
                         Some((k, _)) => format!("step {k}: {m}"),

@@ -4,110 +4,214 @@
 
 use crate::grading::answer::{Answer, Given};
 use crate::grading::forces::ForceReport;
-use crate::grading::{Judgement, Report};
+use crate::grading::{Grade, Judgement, Report, StepReport};
+use crate::words::catalogue::CheckPhrases;
+use crate::words::check::{self, fill};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use kurbo::Vec2;
 
-/// The report as text for the terminal.
+/// The report as text for the terminal, in the report's language: the
+/// grade, the steps judged from the student's own points and the
+/// mistakes found at them (an answer that draws points), the items, and
+/// beside them the comparison with the true plan.
 pub fn to_text(r: &Report) -> String {
     use std::fmt::Write as _;
-    let fmt = crate::format::format_number;
+    let w = check::phrases(r.lang);
+    let fmt = |x: f64| crate::format::format_number(x);
     let mut t = String::new();
-    let kind = if r.plan == PlanKind::Velocity {
-        "velocity"
-    } else {
-        "acceleration"
-    };
+    let kind = &w.plan[usize::from(r.plan == PlanKind::Acceleration)];
     let _ = writeln!(
         t,
-        "Check of the {kind} plan, position {}, μ = {}, pencil precision δ = {}",
-        r.position,
-        fmt(r.mu),
-        crate::format::format_quantity(r.delta, "mm")
+        "{}",
+        fill(
+            &w.title,
+            &[
+                ("plan", kind),
+                ("position", &r.position.to_string()),
+                ("mu", &fmt(r.mu)),
+                ("delta", &crate::format::format_quantity(r.delta, "mm")),
+            ],
+        )
     );
     if r.worst_angle < 5.0 {
-        let _ = writeln!(
-            t,
-            "note: lines of this construction meet at {}°; tolerances are wide here (near a dead centre)",
-            fmt(r.worst_angle)
-        );
+        let _ = writeln!(t, "{}", fill(&w.dead_centre, &[("angle", &fmt(r.worst_angle))]));
     }
+    if let Some(steps) = &r.steps {
+        steps_text(&mut t, w, steps);
+    }
+    let _ = writeln!(t, "{}", w.items_heading);
+    let c = &w.items_columns;
     let _ = writeln!(
         t,
-        "  {:<24} {:>12} {:>12} {:>12} {:>12}  verdict",
-        "item", "expected", "given", "difference", "tolerance"
+        "  {:<32} {:>12} {:>12} {:>12} {:>12}  {}",
+        c[0], c[1], c[2], c[3], c[4], c[5]
     );
     for v in &r.verdicts {
-        let verdict = match &v.judgement {
-            Judgement::Right => "RIGHT",
-            Judgement::Wrong => "WRONG",
-            Judgement::CannotJudge(_) => "CANNOT BE JUDGED",
-        };
         let _ = writeln!(
             t,
-            "  {:<24} {:>12} {:>12} {:>12} {:>12}  {} {}",
+            "  {:<32} {:>12} {:>12} {:>12} {:>12}  {} {}",
             v.what,
             fmt(v.expected),
             fmt(v.given),
             fmt(v.difference),
             fmt(v.tolerance),
             v.unit,
-            verdict
+            verdict_word(w, &v.judgement)
         );
-        if !v.ok() {
-            if let Some((e, g)) = v.on_plan
-                && v.unit != "mm"
-            {
-                let _ = writeln!(
-                    t,
-                    "      on the plan: {} mm expected, {} mm given",
-                    fmt(e),
-                    fmt(g)
-                );
-            }
-            if let Some((k, s)) = &v.step {
-                let _ = writeln!(t, "      drawn at step {k}: {s}");
-            }
-            if let Judgement::CannotJudge(why) = &v.judgement {
-                let _ = writeln!(t, "      cannot be judged at this position: {why}");
-            }
+        if v.ok() {
+            continue;
+        }
+        if let Some((e, g)) = v.on_plan
+            && v.unit != "mm"
+        {
+            let (e, g) = (fmt(e), fmt(g));
+            let _ = writeln!(t, "      {}", fill(&w.on_plan, &[("expected", &e), ("given", &g)]));
+        }
+        if let Some((k, s)) = &v.step {
+            let k = k.to_string();
+            let _ = writeln!(t, "      {}", fill(&w.drawn_at, &[("step", &k), ("sentence", s)]));
+        }
+        if let Judgement::CannotJudge(why) = &v.judgement {
+            let _ = writeln!(t, "      {}", fill(&w.cannot_judge_why, &[("why", why)]));
         }
     }
     let _ = writeln!(
         t,
-        "total: {} of {} right, {} wrong, {} cannot be judged",
-        r.right(),
-        r.verdicts.len(),
-        r.wrong(),
-        r.unjudged()
+        "{}",
+        fill(
+            &w.total,
+            &[
+                ("right", &r.right().to_string()),
+                ("count", &r.verdicts.len().to_string()),
+                ("wrong", &r.wrong().to_string()),
+                ("unjudged", &r.unjudged().to_string()),
+            ],
+        )
     );
-    if let Some(d) = &r.diagnosis {
-        match &d.mistake {
-            Some(m) => {
-                let _ = writeln!(t, "likely mistake: {m}");
-                if let Some((k, s)) = &d.step {
-                    let _ = writeln!(t, "  it enters at step {k}: {s}");
-                }
-            }
-            None if !d.alternatives.is_empty() => {
-                let _ = writeln!(
-                    t,
-                    "mistake not recognised: these explain the answer equally well:"
-                );
-                for a in &d.alternatives {
-                    let _ = writeln!(t, "  - {a}");
-                }
-            }
-            None => {
-                let _ = writeln!(
-                    t,
-                    "mistake not recognised: no typical mistake explains these answers"
-                );
+    match &r.second_opinion {
+        Some(o) => {
+            let counts = [
+                ("right", o.right.to_string()),
+                ("wrong", o.wrong.to_string()),
+                ("unjudged", o.unjudged.to_string()),
+            ];
+            let counts: Vec<(&str, &str)> = counts.iter().map(|(k, v)| (*k, v.as_str())).collect();
+            let verdict = match &o.disagreement {
+                None => w.second_agrees.clone(),
+                Some(why) => fill(&w.second_disagrees, &[("why", why)]),
+            };
+            let _ = writeln!(t, "{} {verdict}", fill(&w.second_opinion, &counts));
+        }
+        None => diagnosis_text(&mut t, w, r),
+    }
+    t
+}
+
+/// The word of a judgement.
+fn verdict_word<'a>(w: &'a CheckPhrases, j: &Judgement) -> &'a str {
+    match j {
+        Judgement::Right => &w.verdicts[0],
+        Judgement::Wrong => &w.verdicts[1],
+        Judgement::CannotJudge(_) => &w.verdicts[2],
+    }
+}
+
+/// The grade, the steps judged from the student's own points, and the
+/// mistakes found at them.
+fn steps_text(t: &mut String, w: &CheckPhrases, steps: &StepReport) {
+    use std::fmt::Write as _;
+    let fmt = |x: f64| crate::format::format_number(x);
+    let grade = match steps.grade() {
+        Grade::Right => w.grade_right.clone(),
+        Grade::CannotJudge => w.grade_cannot_judge.clone(),
+        Grade::Wrong if steps.mistakes.len() == 1 => {
+            let f = &steps.mistakes[0];
+            let mistake = f.mistake.clone().unwrap_or_else(|| w.not_recognised.clone());
+            fill(
+                &w.grade_wrong_one,
+                &[("step", &f.step.0.to_string()), ("mistake", &mistake)],
+            )
+        }
+        Grade::Wrong => fill(
+            &w.grade_wrong_many,
+            &[("count", &steps.mistakes.len().to_string())],
+        ),
+    };
+    let _ = writeln!(t, "{grade}");
+    let _ = writeln!(t, "{}", w.steps_heading);
+    let c = &w.steps_columns;
+    let _ = writeln!(t, "  {:>5}  {:<8} {:>10} {:>14}  {}", c[0], c[1], c[2], c[3], c[4]);
+    for s in &steps.steps {
+        let mut verdict = verdict_word(w, &s.judgement).to_string();
+        if let Some(n) = s.mistake {
+            let n = (n + 1).to_string();
+            verdict = format!("{verdict} ({})", fill(&w.mistake_of_step, &[("n", &n)]));
+        }
+        let _ = writeln!(
+            t,
+            "  {:>5}  {:<8} {:>10} {:>14}  {verdict}",
+            s.step.0,
+            s.point,
+            fmt(s.off),
+            fmt(s.tolerance)
+        );
+        if let Judgement::CannotJudge(why) = &s.judgement {
+            let _ = writeln!(t, "         {}", fill(&w.cannot_judge_why, &[("why", why)]));
+        }
+    }
+    if steps.mistakes.is_empty() {
+        return;
+    }
+    let _ = writeln!(t, "{}", w.mistakes_heading);
+    for (n, f) in steps.mistakes.iter().enumerate() {
+        let mistake = f.mistake.clone().unwrap_or_else(|| w.not_recognised.clone());
+        let _ = writeln!(
+            t,
+            "  {}",
+            fill(
+                &w.mistake_line,
+                &[
+                    ("n", &(n + 1).to_string()),
+                    ("step", &f.step.0.to_string()),
+                    ("mistake", &mistake),
+                ],
+            )
+        );
+        let _ = writeln!(t, "     {}", fill(&w.mistake_step, &[("sentence", &f.step.1)]));
+        let points = f.points.join(", ");
+        let _ = writeln!(t, "     {}", fill(&w.mistake_points, &[("points", &points)]));
+        if f.mistake.is_none() && !f.alternatives.is_empty() {
+            let _ = writeln!(t, "     {}", w.alternatives);
+            for a in &f.alternatives {
+                let _ = writeln!(t, "       - {a}");
             }
         }
     }
-    t
+}
+
+/// The diagnosis of an answer judged against the true plan only.
+fn diagnosis_text(t: &mut String, w: &CheckPhrases, r: &Report) {
+    use std::fmt::Write as _;
+    let Some(d) = &r.diagnosis else { return };
+    match &d.mistake {
+        Some(m) => {
+            let _ = writeln!(t, "{}", fill(&w.likely_mistake, &[("mistake", m)]));
+            if let Some((k, s)) = &d.step {
+                let k = k.to_string();
+                let _ = writeln!(t, "  {}", fill(&w.enters_at, &[("step", &k), ("sentence", s)]));
+            }
+        }
+        None if !d.alternatives.is_empty() => {
+            let _ = writeln!(t, "{}", w.alternatives_items);
+            for a in &d.alternatives {
+                let _ = writeln!(t, "  - {a}");
+            }
+        }
+        None => {
+            let _ = writeln!(t, "{}", w.not_recognised_items);
+        }
+    }
 }
 
 /// The report as JSON.
@@ -141,7 +245,39 @@ pub fn to_json(r: &Report) -> serde_json::Value {
             "alternatives": d.alternatives,
             "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
         })),
+        "grade": r.steps.as_ref().map(|s| match s.grade() {
+            Grade::Right => "right",
+            Grade::Wrong => "wrong",
+            Grade::CannotJudge => "cannot be judged",
+        }),
+        "steps": r.steps.as_ref().map(|st| st.steps.iter().map(|s| serde_json::json!({
+            "step": s.step.0, "step_text": s.step.1, "point": s.point,
+            "given": [s.given.x, s.given.y], "predicted": [s.predicted.x, s.predicted.y],
+            "off": s.off, "tolerance": s.tolerance,
+            "judgement": judgement_word(&s.judgement),
+            "reason": match &s.judgement { Judgement::CannotJudge(w) => Some(w.clone()), _ => None },
+            "mistake": s.mistake.map(|n| n + 1),
+        })).collect::<Vec<_>>()),
+        "mistakes": r.steps.as_ref().map(|st| st.mistakes.iter().map(|f| serde_json::json!({
+            "step": f.step.0, "step_text": f.step.1, "mistake": f.mistake,
+            "recognised": f.mistake.is_some(),
+            "explanation": f.explanation.map(explanation_json),
+            "points": f.points, "alternatives": f.alternatives,
+        })).collect::<Vec<_>>()),
+        "second_opinion": r.second_opinion.as_ref().map(|o| serde_json::json!({
+            "right": o.right, "wrong": o.wrong, "cannot_be_judged": o.unjudged,
+            "mistake": o.mistake, "agrees": o.disagreement.is_none(), "disagreement": o.disagreement,
+        })),
     })
+}
+
+/// A judgement in the report's JSON.
+fn judgement_word(j: &Judgement) -> &'static str {
+    match j {
+        Judgement::Right => "right",
+        Judgement::Wrong => "wrong",
+        Judgement::CannotJudge(_) => "cannot be judged",
+    }
 }
 
 /// An SVG sheet with the correct plan (black) and the student's points

@@ -7,7 +7,7 @@ use std::sync::OnceLock;
 
 /// A phrase with its blanks filled: each `{name}` by the value named so
 /// in `args` (one pass: a value is never filled again).
-pub(crate) fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
+pub fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
     let mut out = String::with_capacity(phrase.len() + 16 * args.len());
     let mut rest = phrase;
     while let Some(open) = rest.find('{') {
@@ -49,6 +49,8 @@ pub struct Catalogue {
     pub tables: TablePhrases,
     /// How the language writes numbers and units.
     pub units: UnitPhrases,
+    /// The check of a student's plan: its report and the mistakes it names.
+    pub check: CheckPhrases,
 }
 
 /// The catalogue of `lang`, read once.
@@ -292,4 +294,106 @@ pub struct UnitPhrases {
     pub decimal: String,
     /// (SI letters, the language's), in the order they are replaced.
     pub letters: Vec<[String; 2]>,
+}
+
+/// The check's report. Blanks in braces are filled by [`fill`].
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CheckPhrases {
+    /// `{plan}`, `{position}`, `{mu}`, `{delta}`.
+    pub title: String,
+    /// The velocity plan's and the acceleration plan's word.
+    pub plan: [String; 2],
+    /// `{angle}`.
+    pub dead_centre: String,
+    pub grade_right: String,
+    /// `{step}`, `{mistake}`.
+    pub grade_wrong_one: String,
+    /// `{count}`.
+    pub grade_wrong_many: String,
+    pub grade_cannot_judge: String,
+    pub steps_heading: String,
+    pub steps_columns: [String; 5],
+    /// Right, wrong, cannot be judged.
+    pub verdicts: [String; 3],
+    /// `{n}`.
+    pub mistake_of_step: String,
+    pub mistakes_heading: String,
+    /// `{n}`, `{step}`, `{mistake}`.
+    pub mistake_line: String,
+    /// `{sentence}`.
+    pub mistake_step: String,
+    /// `{points}`.
+    pub mistake_points: String,
+    pub not_recognised: String,
+    pub alternatives: String,
+    pub items_heading: String,
+    pub items_columns: [String; 6],
+    /// `{expected}`, `{given}`.
+    pub on_plan: String,
+    /// `{step}`, `{sentence}`.
+    pub drawn_at: String,
+    /// `{why}`.
+    pub cannot_judge_why: String,
+    /// `{right}`, `{count}`, `{wrong}`, `{unjudged}`.
+    pub total: String,
+    /// `{right}`, `{wrong}`, `{unjudged}`.
+    pub second_opinion: String,
+    pub second_agrees: String,
+    /// `{why}`.
+    pub second_disagrees: String,
+    /// `{step}`.
+    pub disagreement_steps_wrong: String,
+    /// `{what}`.
+    pub disagreement_steps_right: String,
+    /// `{mistake}`.
+    pub likely_mistake: String,
+    /// `{step}`, `{sentence}`.
+    pub enters_at: String,
+    pub not_recognised_items: String,
+    pub alternatives_items: String,
+    /// `{name}`.
+    pub point_from_own: String,
+    /// `{tol}`, `{size}`.
+    pub too_wide_step: String,
+    pub too_wide: String,
+    /// `{tol}`, `{moved}`, `{mistake}`, `{k}`, `{mu}`.
+    pub ambiguous_step: String,
+    /// `{tol}`, `{moved}`, `{mistake}`.
+    pub ambiguous: String,
+    /// `{mistake}`.
+    pub on_velocity_plan: String,
+    /// Each typical mistake: made at one decision, made everywhere.
+    pub mistakes: MistakePhrases,
+    /// `{what}`, `{factor}`.
+    pub slip_of: String,
+    /// `{first}`, `{second}`.
+    pub pair: String,
+    pub branch: String,
+    pub scale_units: String,
+    /// `{mu}`.
+    pub scale_inverted: String,
+    pub a_vector: String,
+}
+
+/// Each typical mistake in one sentence: made at one decision, made at
+/// every one.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MistakePhrases {
+    pub coriolis_reversed: [String; 2],
+    pub coriolis_forgotten: [String; 2],
+    pub coriolis_factor_one: [String; 2],
+    pub normal_from_centre: [String; 2],
+    pub normal_forgotten: [String; 2],
+    pub mirrored_figure: [String; 2],
+    pub wrong_perpendicular: [String; 2],
+    pub tangential_parallel: [String; 2],
+    pub wrong_link: [String; 2],
+    pub epsilon1_forgotten: [String; 2],
+    pub epsilon1_added: [String; 2],
+    pub omega_wrong_link: [String; 2],
+    pub omega_wrong_sense: [String; 2],
+    pub slip: [String; 2],
+    pub neighbour_link: [String; 2],
 }

@@ -7,6 +7,7 @@
 //! and labels, [`inputs`] a position's inputs in short.
 
 pub mod catalogue;
+pub mod check;
 pub mod construction;
 pub mod force_plans;
 pub mod forces;

@@ -5,7 +5,7 @@
 //! order of attachment, the measured values).
 
 use super::plan::{
-    Known, Measured, Mistake, Plan, PlanKind, PlanPoint, PointId, Quantity, Setup, Variant,
+    Drawing, Judged, Known, Measured, Mistake, Plan, PlanKind, PlanPoint, PointId, Quantity, Setup, Variant,
     non_rotating,
 };
 use super::record::{Act, Name, Product, Rate, Ray, Reading, Relation, Seg, Way, What, key_label};
@@ -53,6 +53,8 @@ pub(super) struct Tools {
     pub normal_of: Vec<Option<usize>>,
     /// A scratch list of a link's known points (local place, plan point).
     pub scratch: Vec<(Vec2, usize)>,
+    /// A replay's student drawing; empty in every other build.
+    pub given: Drawing,
 }
 
 impl Tools {
@@ -68,6 +70,7 @@ impl Tools {
             reported_on,
             normal_of: vec![None; m.links.len()],
             scratch: Vec::new(),
+            given: Drawing::default(),
         }
     }
 }
@@ -154,8 +157,45 @@ impl<'a> Builder<'a> {
             .unwrap_or(0.0)
     }
 
+    /// In a replay, where the student drew the next plan point of `id`.
+    #[inline]
+    pub fn given(&self, id: PointId) -> Option<Vec2> {
+        if self.t.given.points.is_empty() {
+            return None;
+        }
+        let nth = self.plan.points.iter().filter(|p| p.id == id).count();
+        self.t
+            .given
+            .points
+            .iter()
+            .find(|g| g.0 == id && g.1 == nth)
+            .map(|g| g.2)
+    }
+
+    /// A new plan point `id` where the construction puts it, with its
+    /// error radius; in a replay, a point the student drew is judged
+    /// against that place and then taken where the student drew it, read
+    /// to δ: every later step starts from the student's own points.
     #[inline]
     pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
+        let (at, err) = match self.given(id) {
+            Some(given) => {
+                let nth = self.plan.points.iter().filter(|p| p.id == id).count();
+                self.plan.judged.push(Judged {
+                    id,
+                    nth,
+                    point: self.plan.points.len(),
+                    predicted: at,
+                    tol: err + self.plan.delta,
+                    given,
+                    others: Vec::new(),
+                    lines: Vec::new(),
+                    step: self.taken,
+                });
+                (given, self.plan.delta)
+            }
+            None => (at, err),
+        };
         self.plan.points.push(PlanPoint {
             id,
             key: String::new(),
@@ -288,11 +328,27 @@ impl<'a> Builder<'a> {
         }
         let n = self.plan.decisions;
         self.plan.decisions += 1;
-        if self.variant.at.is_some_and(|at| at != n) {
+        let among = self.variant.among;
+        if among != 0 {
+            if n >= 64 || among & (1 << n) == 0 {
+                return false;
+            }
+        } else if self.variant.at.is_some_and(|at| at != n) {
             return false;
         }
         self.plan.mistake_step.get_or_insert(self.taken);
         true
+    }
+
+    /// The sense of a normal component ω²·r laid off along r = X − J:
+    /// −1 (toward the centre J), or +1 where the mistake of laying it off
+    /// from the centre is being made at this decision.
+    pub fn normal_sense(&mut self) -> f64 {
+        if self.making(Mistake::NormalFromCentre) {
+            1.0
+        } else {
+            -1.0
+        }
     }
 
     /// The new plan point `id` where lines `a` and `b` meet.
@@ -314,7 +370,16 @@ impl<'a> Builder<'a> {
             ));
         };
         let err = a.err.hypot(b.err) / sin_angle;
+        let delta = self.plan.delta;
+        let lines = [&a, &b].map(|r| {
+            let l = drawn(r);
+            (l.point.to_vec2(), l.dir, r.err + delta)
+        });
         let out = self.add_point(id, at.to_vec2(), err);
+        if let Some(j) = self.plan.judged.last_mut().filter(|j| j.point == out) {
+            // A replay judges the student's point by the two lines.
+            j.lines = lines.to_vec();
+        }
         self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
         self.step(|| Act::Intersect {
             lines: [a, b],

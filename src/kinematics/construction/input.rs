@@ -49,9 +49,21 @@ impl Builder<'_> {
                     } else if rate2 == 0.0 && self.making(Mistake::Epsilon1Added) {
                         rate2 = w * w;
                     }
+                    // The crank's normal component: forgotten, or laid off
+                    // from the centre, as the students do.
+                    let forgotten = w != 0.0 && self.making(Mistake::NormalForgotten);
+                    let toward = if forgotten || w == 0.0 {
+                        0.0
+                    } else {
+                        self.normal_sense()
+                    };
                     if rate2 != 0.0 {
                         self.step(|| Act::Equation(Eqn::CrankAcceleration { a: an, o: on }));
-                        let n = self.normal(0, -r * (w * w), link, (an, on), seg, 0.0);
+                        let n = if forgotten {
+                            0
+                        } else {
+                            self.normal(0, r * (toward * w * w), link, (an, on), seg, 0.0)
+                        };
                         let tangential = What::Component {
                             sup: 't',
                             x: an,
@@ -74,7 +86,8 @@ impl Builder<'_> {
                             j: on,
                             is: Product::squared(omega, seg),
                         };
-                        self.lay_off(0, -r * (w * w), normal, Way::Toward((an, on)), id, 0.0)
+                        let v = r * (toward * w * w);
+                        self.lay_off(0, v, normal, Way::Toward((an, on)), id, 0.0)
                     }
                 };
                 self.register(link, a, idx);

@@ -37,7 +37,7 @@ pub mod scale;
 mod triad;
 
 pub use plan::{
-    Dir, Drafting, Known, Measured, Mistake, Op, Plan, PlanKind, PlanLine, PlanPoint, Plans,
+    Dir, Drafting, Drawing, Judged, Known, Measured, Mistake, Op, Plan, PlanKind, PlanLine, PlanPoint, Plans,
     PointId, Quantity, Setup, Step, Variant, Why, non_rotating,
 };
 pub use scale::Field;
@@ -191,6 +191,31 @@ pub fn build_acceleration(
         fresh,
         None,
     )?;
+    record::narrate(&mut plan, &tools.acts, st);
+    Ok(plan)
+}
+
+/// A student's drawing replayed: the plan of `kind` (on the velocity plan
+/// `vel` for an acceleration plan) at the scale `d` fixes, each point the
+/// student drew (`given`) judged at the step that draws it from their own
+/// earlier points ([`Plan::judged`]) and then taken where they drew it,
+/// so that no earlier step's error is carried into a later one.
+pub fn replay(
+    st: &Setup,
+    c: &Configuration,
+    drive: impl Into<Drives>,
+    (kind, vel): (PlanKind, Option<&Plan>),
+    d: Drafting,
+    given: Drawing,
+) -> Result<Plan> {
+    let drive = drive.into();
+    debug_assert!(d.mu(kind).is_some(), "a replay is at the student's scale");
+    let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
+    let mut tools = Tools::new(st);
+    tools.given = given;
+    let field = Field::default();
+    let fresh = (&mut plan, &mut tools);
+    construct(st, c, drive, (kind, vel), &d, &field, Naming::Full, fresh, None)?;
     record::narrate(&mut plan, &tools.acts, st);
     Ok(plan)
 }

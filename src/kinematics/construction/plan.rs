@@ -251,6 +251,109 @@ pub struct Plan {
     /// With a deliberate mistake: how many decisions of its kind the
     /// construction took (whether made wrong or not).
     pub decisions: usize,
+    /// A replay of a student's drawing ([`super::replay`]): each point the
+    /// student drew, judged at the step that draws it from the student's
+    /// own earlier points.
+    pub judged: Vec<Judged>,
+    /// The pair of leashes each class III group took its special point
+    /// on, in the order of the construction.
+    pub triads: Vec<(usize, usize, usize)>,
+}
+
+/// What a replay takes from a student's drawing ([`super::replay`]).
+#[derive(Clone, Debug, Default)]
+pub struct Drawing {
+    /// The `nth` plan point of an id, where the student drew it (mm from
+    /// the pole).
+    pub points: Vec<(PointId, usize, Vec2)>,
+    /// The pairs of leashes the right plan's class III groups took: where
+    /// the student's points do not tell which pair they used, the same
+    /// (so that a special point σ they measured is the same point).
+    pub triads: Vec<(usize, usize, usize)>,
+}
+
+/// A point a student drew, as the construction's step that draws it
+/// predicts it from the student's own earlier points (a replay puts the
+/// student's points in place of the constructed ones, so nothing of an
+/// earlier step's error is carried into this one).
+#[derive(Clone, Debug)]
+pub struct Judged {
+    pub id: PointId,
+    /// Which plan point of that id (a link may have several normal points).
+    pub nth: usize,
+    /// Its index in the plan.
+    pub point: usize,
+    /// Where the step puts it, mm from the pole.
+    pub predicted: Vec2,
+    /// The step's own tolerance: the error radius of the prediction from
+    /// the points it uses (each read to δ), the pencil's δ per operation,
+    /// the error of a value that enters, and δ for reading the point.
+    pub tol: f64,
+    /// Where the student drew it.
+    pub given: Vec2,
+    /// The same point by another right construction (a similar figure on
+    /// another pair of known points): place and tolerance.
+    pub others: Vec<(Vec2, f64)>,
+    /// For a point where two lines meet, the lines as drawn through the
+    /// student's points (a point on it, its direction, and how far a point
+    /// read off it may lie from it: the line's own error and δ for the
+    /// reading): the point is judged by its distance from each, which the
+    /// angle between them does not blow up.
+    pub lines: Vec<(Vec2, Vec2, f64)>,
+    /// The builder's step count when it was drawn (the step's index).
+    pub step: usize,
+}
+
+impl Judged {
+    /// How far the student's point is from what this step draws, over the
+    /// step's tolerance (≤ 1: it fits): the larger of its distances from
+    /// the two lines over theirs, or the least distance from a right
+    /// construction's place over that construction's tolerance.
+    pub fn misfit(&self) -> f64 {
+        self.misfit_at(self.given)
+    }
+    /// [`Judged::misfit`] of a point at `at`.
+    pub fn misfit_at(&self, at: Vec2) -> f64 {
+        if !self.lines.is_empty() {
+            return self
+                .lines
+                .iter()
+                .map(|&(p, u, tol)| (at - p).cross(u).abs() / tol.max(1e-300))
+                .fold(0.0, f64::max);
+        }
+        std::iter::once((self.predicted, self.tol))
+            .chain(self.others.iter().copied())
+            .map(|(p, tol)| (at - p).hypot() / tol.max(1e-300))
+            .fold(f64::INFINITY, f64::min)
+    }
+    /// How far a point at `at` is from what this step draws, mm (from the
+    /// farther of the two lines, or from the nearest right place), and
+    /// that measure's tolerance.
+    pub fn apart(&self, at: Vec2) -> (f64, f64) {
+        if !self.lines.is_empty() {
+            return self
+                .lines
+                .iter()
+                .map(|&(p, u, tol)| ((at - p).cross(u).abs(), tol))
+                .fold((0.0, 0.0), |a, b| if b.0 / b.1 > a.0 / a.1.max(1e-300) { b } else { a });
+        }
+        std::iter::once((self.predicted, self.tol))
+            .chain(self.others.iter().copied())
+            .map(|(p, tol)| ((at - p).hypot(), tol))
+            .min_by(|a, b| (a.0 / a.1).total_cmp(&(b.0 / b.1)))
+            .expect("one prediction")
+    }
+    /// The prediction of the construction that fits best, with its
+    /// tolerance.
+    pub fn nearest(&self) -> (Vec2, f64) {
+        std::iter::once((self.predicted, self.tol))
+            .chain(self.others.iter().copied())
+            .min_by(|a, b| {
+                ((self.given - a.0).hypot() / a.1.max(1e-300))
+                    .total_cmp(&((self.given - b.0).hypot() / b.1.max(1e-300)))
+            })
+            .expect("one prediction")
+    }
 }
 
 impl Plan {
@@ -274,6 +377,8 @@ impl Plan {
             of_point: vec![None; m.scene.points.len()],
             mistake_step: None,
             decisions: 0,
+            judged: Vec::new(),
+            triads: Vec::new(),
         }
     }
     /// Empty the plan, at scale `mu` (its buffers kept).
@@ -290,6 +395,8 @@ impl Plan {
         self.worst_sin = 1.0;
         self.mistake_step = None;
         self.decisions = 0;
+        self.judged.clear();
+        self.triads.clear();
     }
     /// The plan point of the material point of `link` at `local`.
     pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
@@ -309,6 +416,46 @@ impl Plan {
             Op::Pole { .. } => idx == 0,
             _ => false,
         })
+    }
+    /// Where the construction puts plan point `i`: its place, or in a
+    /// replay, for a point the student drew, where the step predicts it.
+    pub fn place(&self, i: usize) -> Vec2 {
+        self.judged
+            .iter()
+            .find(|j| j.point == i)
+            .map_or(self.points[i].at, |j| j.predicted)
+    }
+    /// The first step where `other` (the same construction with a
+    /// mistake) draws something else than this plan: another operation,
+    /// or a point put elsewhere (by more than a millionth of the plan's
+    /// size, or a measured value off by a millionth of it). The step
+    /// where the mistake enters, found from the two drawings alone.
+    pub fn first_difference(&self, other: &Plan) -> Option<usize> {
+        let size = self.points.iter().map(|p| p.at.hypot()).fold(1.0, f64::max);
+        let out = |op: &Op| match op {
+            Op::LayOff { to, .. } => Some(*to),
+            Op::Intersect { out, .. }
+            | Op::Similar { out, .. }
+            | Op::Divide { out, .. }
+            | Op::Coincide { out, .. } => Some(*out),
+            _ => None,
+        };
+        for (k, (a, b)) in self.steps.iter().zip(&other.steps).enumerate() {
+            if std::mem::discriminant(&a.op) != std::mem::discriminant(&b.op) {
+                return Some(k);
+            }
+            if let (Some(i), Some(j)) = (out(&a.op), out(&b.op))
+                && (self.place(i) - other.place(j)).hypot() > 1e-6 * size
+            {
+                return Some(k);
+            }
+            if let (Op::Measure { value: x, .. }, Op::Measure { value: y, .. }) = (&a.op, &b.op)
+                && (x - y).abs() > 1e-6 * (x.abs() + y.abs()).max(1e-300)
+            {
+                return Some(k);
+            }
+        }
+        (self.steps.len() != other.steps.len()).then_some(self.steps.len().min(other.steps.len()))
     }
     pub fn point(&self, key: &str) -> Option<&PlanPoint> {
         self.points.iter().find(|p| p.key == key)
@@ -399,6 +546,10 @@ pub enum Mistake {
     /// One vector laid off with a wrong length (an arithmetic or measuring
     /// slip): its length times [`Variant::factor`].
     Slip,
+    /// A point of a link placed by the figure of a neighbouring link (one
+    /// sharing a joint with it): S₂ of the coupler built on the rocker's
+    /// points as if it were the rocker's.
+    NeighbourLink,
 }
 
 /// How to build a plan besides the standard way: with a mistake, or with
@@ -421,6 +572,10 @@ pub struct Variant {
     /// Seed of the pencil noise: each laid-off point, each line and each
     /// constructed point moves by at most δ.
     pub jitter: Option<u64>,
+    /// The decisions (bit n: the n-th) the mistake is made at, where it
+    /// is made at several but not at all (both lines of one point drawn
+    /// wrong); 0: as `at` says.
+    pub among: u64,
 }
 
 impl Default for Variant {
@@ -432,6 +587,7 @@ impl Default for Variant {
             factor: 1.0,
             also: None,
             jitter: None,
+            among: 0,
         }
     }
 }

@@ -146,12 +146,22 @@ impl Builder<'_> {
             !known.is_empty(),
             "a link is constructed only after one of its points"
         );
+        if let PointId::Named(_) = id
+            && let Some(out) = self.on_neighbour(link, x, id, figure)
+        {
+            learn(self, out);
+            return out;
+        }
         let out = match self.best_construction(link, local, x, known) {
             Construction::Figure { a, b, ratio, err } => {
                 let ((la, pa), (lb, pb)) = (known[a], known[b]);
                 let mut ratio = ratio;
-                let collinear = matches!(err, FigureErr::Divide(_));
-                if !collinear && ratio.y != 0.0 && self.making(Mistake::MirroredFigure) {
+                // (Mirrored or not is the figure's own shape, whichever
+                // way its point is drawn.)
+                let collinear = ratio.y.abs() <= ACCURACY.collinear_ratio * ratio.hypot().max(1.0);
+                let mirrored =
+                    !collinear && ratio.y != 0.0 && self.making(Mistake::MirroredFigure);
+                if mirrored {
                     ratio.y = -ratio.y;
                 }
                 let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
@@ -174,6 +184,12 @@ impl Builder<'_> {
                     }
                 };
                 let out = self.add_point(id, at, e);
+                if self.plan.judged.last().is_some_and(|j| j.point == out) {
+                    // A replay: the same point by the figure on any other
+                    // pair of the link's known points is as right.
+                    let others = self.figures(local, known, mirrored);
+                    self.plan.judged.last_mut().expect("just judged").others = others;
+                }
                 self.step(|| Act::Figure {
                     a: pa,
                     b: pb,
@@ -187,6 +203,89 @@ impl Builder<'_> {
         };
         learn(self, out);
         out
+    }
+
+    /// The places of the material point of `link` at `local` by the figure
+    /// similar to the link's on every pair of its `known` points
+    /// (`mirrored`: each figure mirrored), each with its tolerance: the
+    /// error radius as [`Builder::best_construction`] reckons it, plus δ
+    /// for reading the point.
+    fn figures(&self, local: Vec2, known: &[(Vec2, usize)], mirrored: bool) -> Vec<(Vec2, f64)> {
+        let (delta, pts) = (self.plan.delta, &self.plan.points);
+        let mut out = Vec::new();
+        for a in 0..known.len() {
+            for b in a + 1..known.len() {
+                let ((la, pa), (lb, pb)) = (known[a], known[b]);
+                let ab = lb - la;
+                if ab.hypot2() == 0.0 {
+                    continue;
+                }
+                let mut ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+                let moved =
+                    (Vec2::new(1.0, 0.0) - ratio).hypot() * pts[pa].err + ratio.hypot() * pts[pb].err;
+                let (a_at, b_at) = (pts[pa].at, pts[pb].at);
+                let plan_ab = (b_at - a_at).hypot();
+                let divide = moved + delta + ratio.y.abs() * plan_ab;
+                if mirrored {
+                    ratio.y = -ratio.y;
+                }
+                let at = a_at + (b_at - a_at).rotate_scale(ratio);
+                let (ca, cb) = (at - a_at, at - b_at);
+                let s = if ca.hypot() * cb.hypot() > 0.0 {
+                    (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
+                } else {
+                    1.0
+                };
+                let arcs = moved + std::f64::consts::SQRT_2 * delta / s.max(1e-300);
+                out.push((at, divide.min(arcs) + delta));
+            }
+        }
+        out
+    }
+
+    /// The mistake of placing a named point of `link` by the figure of a
+    /// neighbouring link (the first rotating link sharing a joint with it
+    /// whose figure the plan knows by two points), where it is made: the
+    /// plan point, else `None` (no neighbour, or the decision taken right).
+    fn on_neighbour(&mut self, link: usize, x: Point, id: PointId, figure: Name) -> Option<usize> {
+        if self.variant.mistake != Some(Mistake::NeighbourLink)
+            && self.variant.also != Some(Mistake::NeighbourLink)
+        {
+            return None;
+        }
+        let m = self.m();
+        let shares = |l: usize| m.links[l].points.iter().any(|p| m.links[link].points.contains(p));
+        let (nb, (la, pa), (lb, pb)) = (0..m.links.len())
+            .filter(|&l| l != link && l != m.frame() && !self.t.nr[l] && shares(l))
+            .find_map(|l| {
+                let mut on = self.plan.body.iter().filter(|k| k.link == l);
+                let (a, b) = (on.next()?, on.next()?);
+                Some((l, (a.local, a.point), (b.local, b.point)))
+            })?;
+        if !self.making(Mistake::NeighbourLink) {
+            return None;
+        }
+        let ab = lb - la;
+        let ratio = (self.local(nb, x) - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+        let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
+        let at = a_at + (b_at - a_at).rotate_scale(ratio);
+        let err = self.plan.points[pa].err + self.plan.points[pb].err + self.plan.delta;
+        let out = self.add_point(id, at, err);
+        let fig = self.record.then(|| {
+            [
+                self.known_name(nb, (la, pa)),
+                self.known_name(nb, (lb, pb)),
+                figure,
+            ]
+        });
+        self.step(|| Act::Figure {
+            a: pa,
+            b: pb,
+            out,
+            figure: fig.expect("named when recorded"),
+            by: By::Similar { link: nb },
+        });
+        Some(out)
     }
 
     /// From one known point A of `link` (local place, plan point) and the
@@ -309,7 +408,10 @@ impl Builder<'_> {
                 }
             }
         }
-        if let Some((_, rate_err)) = self.plan.rates[link] {
+        // A replay draws a point of a link the way the student did, by
+        // its figure where the link has two known points.
+        let replay = !self.t.given.points.is_empty() && best.is_some();
+        if let Some((_, rate_err)) = self.plan.rates[link].filter(|_| !replay) {
             for (a, &(la, pa)) in known.iter().enumerate() {
                 let r = (x - self.c.pose(link).apply(la)).hypot();
                 let e = if self.vel_kind() {

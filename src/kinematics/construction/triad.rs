@@ -2,7 +2,7 @@
 
 use super::builder::Builder;
 use super::dyad::{At, Side};
-use super::plan::PointId;
+use super::plan::{Mistake, PointId};
 use super::record::{Act, Eqn, Name, Ray, Way};
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
@@ -10,6 +10,9 @@ use crate::geom::{Line, LineCut, perp};
 use crate::kinematics::positions::describe_input;
 use crate::model::structure::{Joint, Triad};
 use kurbo::Point;
+
+/// A pair of leashes (i, j) and the third, k.
+type Pair = (usize, usize, usize);
 
 /// The pairs of leashes a special point can be taken on, and the third.
 const PAIRS: [(usize, usize, usize); 3] = [(0, 1, 2), (0, 2, 1), (1, 2, 0)];
@@ -29,20 +32,40 @@ impl Builder<'_> {
             self.t.normal_of.clone(),
             self.rng.clone(),
         );
-        let (start, mark) = (self.plan.points.len(), self.t.acts.len());
-        let mut best: Option<(f64, (usize, usize, usize))> = None;
+        let (start, mark, taken) = (self.plan.points.len(), self.t.acts.len(), self.taken);
+        let judged = self.plan.judged.len();
+        let mut best: Option<((f64, f64), Pair)> = None;
         let mut first_err = None;
         for pair in PAIRS {
             (*self.plan, self.t.normal_of, self.rng) = saved.clone();
             self.t.acts.truncate(mark);
+            self.taken = taken;
             match self.triad_by(t, Some(pair)) {
                 Ok(()) => {
                     let worst = self.plan.points[start..]
                         .iter()
                         .map(|p| p.err)
                         .fold(0.0, f64::max);
-                    if best.is_none_or(|b| worst < b.0) {
-                        best = Some((worst, pair));
+                    // A replay takes the pair on which the student drew
+                    // their special point, where they drew one: the
+                    // student may have taken any pair.
+                    let fit = self.plan.judged[judged..]
+                        .iter()
+                        .find(|j| matches!(j.id, PointId::Special { .. }))
+                        .map_or(0.0, |j| j.misfit().max(1.0));
+                    // Where the student's points fit several pairs alike,
+                    // the right plan's pair (its special point is the σ
+                    // they measured).
+                    let hint = self.t.given.triads.get(self.plan.triads.len());
+                    let worst = if hint.is_some_and(|&h| h == pair) {
+                        -1.0
+                    } else {
+                        worst
+                    };
+                    let score = (fit, worst);
+                    if best.is_none_or(|b| score.0 < b.0.0 || (score.0 == b.0.0 && score.1 < b.0.1))
+                    {
+                        best = Some((score, pair));
                     }
                 }
                 Err(e) => {
@@ -52,8 +75,12 @@ impl Builder<'_> {
         }
         (*self.plan, self.t.normal_of, self.rng) = saved;
         self.t.acts.truncate(mark);
+        self.taken = taken;
         match best {
-            Some((_, pair)) => self.triad_by(t, Some(pair)),
+            Some((_, pair)) => {
+                self.plan.triads.push(pair);
+                self.triad_by(t, Some(pair))
+            }
             // No pair constructs: the error of the best-angled one.
             None => self
                 .triad_by(t, None)
@@ -124,7 +151,12 @@ impl Builder<'_> {
         });
         // The line for S from leash n: through e_n (+ normals) ⊥ E_n J_n.
         let line_for_s = |b: &mut Builder, n: usize| -> Ray {
-            let u = perp(jw[n] - e[n].1);
+            let axis = jw[n] - e[n].1;
+            let u = if b.making(Mistake::TangentialParallel) {
+                axis
+            } else {
+                perp(axis)
+            };
             let seg = (e[n].2, jn[n]);
             if b.vel_kind() {
                 return b.line(e[n].0, u, Way::Perp(seg));
@@ -133,16 +165,18 @@ impl Builder<'_> {
             let leash = t.leashes[n];
             let (wl, wb) = (b.omega(leash), b.omega(t.base));
             let r1 = jw[n] - e[n].1;
-            if wl != 0.0 {
+            if wl != 0.0 && !b.making(Mistake::NormalForgotten) {
                 let err = 2.0 * wl.abs() * b.omega_err(leash) * r1.hypot();
                 let (x, j) = (jn[n], e[n].2);
-                from = b.normal(from, -r1 * (wl * wl), leash, (x, j), (j, x), err);
+                let toward = b.normal_sense();
+                from = b.normal(from, r1 * (toward * wl * wl), leash, (x, j), (j, x), err);
             }
             let r2 = sw - jw[n];
-            if wb != 0.0 && r2.hypot() > 0.0 {
+            if wb != 0.0 && r2.hypot() > 0.0 && !b.making(Mistake::NormalForgotten) {
                 let err = 2.0 * wb.abs() * b.omega_err(t.base) * r2.hypot();
                 let xj = (sname, jn[n]);
-                from = b.normal(from, -r2 * (wb * wb), t.base, xj, xj, err);
+                let toward = b.normal_sense();
+                from = b.normal(from, r2 * (toward * wb * wb), t.base, xj, xj, err);
             }
             b.line(from, u, Way::Perp(seg))
         };

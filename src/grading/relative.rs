@@ -1,0 +1,92 @@
+//! The answer's items judged relative to the student's own drawing: a
+//! drawn point by the step that draws it ([`super::steps`]), a segment, a
+//! direction or a value on the replayed plan (the student's points where
+//! they drew them, the others predicted from those), so a value read off
+//! a point drawn wrong is judged as a reading, not as the mistake again.
+
+use super::candidates::Builds;
+use super::items::{expect, resolve};
+use super::verdict::{Judgement, MAX_TOLERANCE_OF_PLAN, Report, StepReport, Verdict};
+use super::answer::Given;
+use crate::format::format_quantity;
+use crate::words::check;
+
+/// The verdicts of the answer's items, in its order: drawn points from
+/// their steps, the other items on the replay; an item the replay cannot
+/// place keeps the true plan's verdict (`global`).
+pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<Verdict> {
+    let (standard, replay) = (&global.plan_built, &steps.replay);
+    let w = check::phrases(b.lang);
+    let size = standard
+        .points
+        .iter()
+        .map(|p| p.at.hypot())
+        .fold(0.0, f64::max);
+    b.ans
+        .items
+        .iter()
+        .zip(&global.verdicts)
+        .map(|(it, g)| {
+            if let Given::Point { name, .. } = &it.given {
+                let step = resolve(standard, name).and_then(|i| {
+                    let id = standard.points[i].id;
+                    let nth = standard.points[..i].iter().filter(|p| p.id == id).count();
+                    let k = replay
+                        .judged
+                        .iter()
+                        .position(|j| j.id == id && j.nth == nth)?;
+                    Some(&steps.steps[k])
+                });
+                return match step {
+                    Some(s) => Verdict {
+                        pointer: it.pointer.clone(),
+                        key: it.key.clone(),
+                        what: check::fill(&w.point_from_own, &[("name", &s.point)]),
+                        expected: 0.0,
+                        given: s.off,
+                        difference: s.off,
+                        tolerance: s.tolerance,
+                        unit: "mm",
+                        on_plan: Some((0.0, s.off)),
+                        step: Some(s.step.clone()),
+                        judgement: s.judgement.clone(),
+                    },
+                    None => g.clone(),
+                };
+            }
+            let Ok(e) = expect(b.an, replay, it, b.ans.delta) else {
+                return g.clone();
+            };
+            let difference = (e.given - e.expected).abs();
+            let tol_mm = e.on_plan.map_or(0.0, |(x, _)| {
+                if e.expected != 0.0 {
+                    e.tol * x / e.expected.abs()
+                } else {
+                    0.0
+                }
+            });
+            let tol_mm = if e.unit == "mm" { e.tol } else { tol_mm };
+            let judgement = if difference > e.tol {
+                Judgement::Wrong
+            } else if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
+                let (tol, size) = (format_quantity(tol_mm, "mm"), format_quantity(size, "mm"));
+                Judgement::CannotJudge(check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]))
+            } else {
+                Judgement::Right
+            };
+            Verdict {
+                pointer: it.pointer.clone(),
+                key: it.key.clone(),
+                what: e.what.clone(),
+                expected: e.expected,
+                given: e.given,
+                difference,
+                tolerance: e.tol,
+                unit: e.unit,
+                on_plan: e.on_plan,
+                step: g.step.clone(),
+                judgement,
+            }
+        })
+        .collect()
+}
