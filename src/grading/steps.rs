@@ -159,6 +159,14 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
         }
         steps.push(v);
     }
+    // The mistakes in the order of the steps where they enter.
+    let mut order: Vec<usize> = (0..mistakes.len()).collect();
+    order.sort_by_key(|&i| mistakes[i].step.0);
+    for v in &mut steps {
+        v.mistake = v.mistake.map(|m| order.iter().position(|&i| i == m).expect("a mistake"));
+    }
+    let mut mistakes: Vec<Option<Found>> = mistakes.into_iter().map(Some).collect();
+    let mistakes = order.iter().map(|&i| mistakes[i].take().expect("once")).collect();
     Ok(Some(StepReport {
         steps,
         mistakes,

@@ -156,11 +156,32 @@ impl Builder<'_> {
             Construction::Figure { a, b, ratio, err } => {
                 let ((la, pa), (lb, pb)) = (known[a], known[b]);
                 let mut ratio = ratio;
-                // (Mirrored or not is the figure's own shape, whichever
-                // way its point is drawn.)
-                let collinear = ratio.y.abs() <= ACCURACY.collinear_ratio * ratio.hypot().max(1.0);
-                let mirrored =
-                    !collinear && ratio.y != 0.0 && self.making(Mistake::MirroredFigure);
+                // A figure can be mirrored when the point is off the line
+                // of some pair of the link's known points (its own shape,
+                // whichever pair it is drawn on): one decision per point.
+                let off_line = |&(la, _): &(Vec2, usize), &(lb, _): &(Vec2, usize)| {
+                    let ab = lb - la;
+                    let r = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+                    ab.hypot2() > 0.0 && r.y.abs() > ACCURACY.collinear_ratio * r.hypot().max(1.0)
+                };
+                let shaped = known
+                    .iter()
+                    .enumerate()
+                    .any(|(i, p)| known[i + 1..].iter().any(|q| off_line(p, q)));
+                let mirrored = shaped && self.making(Mistake::MirroredFigure);
+                let ((la, pa), (lb, pb)) = if mirrored && !off_line(&known[a], &known[b]) {
+                    // Mirrored, the figure is drawn on a pair the point is
+                    // off the line of (on its own pair it would not change).
+                    let (i, j) = (0..known.len())
+                        .flat_map(|i| (i + 1..known.len()).map(move |j| (i, j)))
+                        .find(|&(i, j)| off_line(&known[i], &known[j]))
+                        .expect("shaped");
+                    let ab = known[j].0 - known[i].0;
+                    ratio = (local - known[i].0).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+                    (known[i], known[j])
+                } else {
+                    ((la, pa), (lb, pb))
+                };
                 if mirrored {
                     ratio.y = -ratio.y;
                 }
@@ -269,7 +290,10 @@ impl Builder<'_> {
         let ratio = (self.local(nb, x) - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
         let (a_at, b_at) = (self.plan.points[pa].at, self.plan.points[pb].at);
         let at = a_at + (b_at - a_at).rotate_scale(ratio);
-        let err = self.plan.points[pa].err + self.plan.points[pb].err + self.plan.delta;
+        // The figure moves with its base (an extension grows its error by
+        // its ratio), plus the pencil's δ.
+        let (ea, eb) = (self.plan.points[pa].err, self.plan.points[pb].err);
+        let err = (Vec2::new(1.0, 0.0) - ratio).hypot() * ea + ratio.hypot() * eb + self.plan.delta;
         let out = self.add_point(id, at, err);
         let fig = self.record.then(|| {
             [
