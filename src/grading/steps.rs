@@ -477,11 +477,12 @@ impl Judge<'_> {
             let d = t.entry(e).expect("applies").predicted - e.predicted;
             let factor = 1.0 + (e.given - e.predicted).dot(d) / d.hypot2();
             // A slip is a length misread or miscomputed, not another
-            // vector: a factor beyond 50 or below 1/50 is no slip.
+            // vector: a factor beyond 50 or below 1/50, or a vector turned
+            // back (a negative one), is no slip.
             if [0.0, -1.0, 0.5, 1.0]
                 .iter()
                 .any(|&x| (factor - x).abs() < 0.02)
-                || !(0.02..=50.0).contains(&factor.abs())
+                || !(0.02..=50.0).contains(&factor)
             {
                 continue;
             }
