@@ -10,6 +10,30 @@ use crate::accuracy::ACCURACY;
 use crate::geom::perp;
 use kurbo::{Point, Vec2};
 
+/// The complex ratio ρ of the point at `local` on the pair at `la`, `lb`
+/// (a + ρ·(b − a)), when the point is off their line: a figure on that
+/// pair has a shape, and can be mirrored.
+fn off_line_ratio(local: Vec2, la: Vec2, lb: Vec2) -> Option<Vec2> {
+    let ab = lb - la;
+    if ab.hypot2() == 0.0 {
+        return None;
+    }
+    let r = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
+    (r.y.abs() > ACCURACY.collinear_ratio * r.hypot().max(1.0)).then_some(r)
+}
+
+fn off_line(local: Vec2, la: Vec2, lb: Vec2) -> bool {
+    off_line_ratio(local, la, lb).is_some()
+}
+
+/// The first pair of the link's `known` points the point at `local` is
+/// off the line of, with its ratio.
+fn off_line_pair(local: Vec2, known: &[(Vec2, usize)]) -> Option<(usize, usize, Vec2)> {
+    (0..known.len())
+        .flat_map(|i| (i + 1..known.len()).map(move |j| (i, j)))
+        .find_map(|(i, j)| off_line_ratio(local, known[i].0, known[j].0).map(|r| (i, j, r)))
+}
+
 /// How a point of a link is placed ([`Builder::best_construction`]).
 #[derive(Clone, Copy, Debug)]
 enum Construction {
@@ -156,31 +180,17 @@ impl Builder<'_> {
             Construction::Figure { a, b, ratio, err } => {
                 let ((la, pa), (lb, pb)) = (known[a], known[b]);
                 let mut ratio = ratio;
-                // A figure can be mirrored when the point is off the line
-                // of some pair of the link's known points (its own shape,
-                // whichever pair it is drawn on): one decision per point.
-                let off_line = |&(la, _): &(Vec2, usize), &(lb, _): &(Vec2, usize)| {
-                    let ab = lb - la;
-                    let r = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
-                    ab.hypot2() > 0.0 && r.y.abs() > ACCURACY.collinear_ratio * r.hypot().max(1.0)
-                };
-                let shaped = known
-                    .iter()
-                    .enumerate()
-                    .any(|(i, p)| known[i + 1..].iter().any(|q| off_line(p, q)));
+                // One decision per point that has a shape on some pair.
+                let shaped = off_line_pair(local, known).is_some();
                 let mirrored = shaped && self.making(Mistake::MirroredFigure);
-                let ((la, pa), (lb, pb)) = if mirrored && !off_line(&known[a], &known[b]) {
+                let ((la, pa), (lb, pb)) = match off_line_pair(local, known) {
                     // Mirrored, the figure is drawn on a pair the point is
                     // off the line of (on its own pair it would not change).
-                    let (i, j) = (0..known.len())
-                        .flat_map(|i| (i + 1..known.len()).map(move |j| (i, j)))
-                        .find(|&(i, j)| off_line(&known[i], &known[j]))
-                        .expect("shaped");
-                    let ab = known[j].0 - known[i].0;
-                    ratio = (local - known[i].0).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
-                    (known[i], known[j])
-                } else {
-                    ((la, pa), (lb, pb))
+                    Some((i, j, r)) if mirrored && !off_line(local, known[a].0, known[b].0) => {
+                        ratio = r;
+                        (known[i], known[j])
+                    }
+                    _ => ((la, pa), (lb, pb)),
                 };
                 if mirrored {
                     ratio.y = -ratio.y;
