@@ -318,6 +318,31 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
             }
         }
     }
+    // Judged step by step: where each step puts the point from the
+    // student's own earlier points, within its tolerance (a thin circle),
+    // and for a wrong step a line from there to where the student drew it.
+    if let Some(steps) = &r.steps {
+        use crate::presentation::drawing::canvas::Prim;
+        for v in &steps.steps {
+            let at = kurbo::Point::new(v.predicted.x, v.predicted.y);
+            c.prims.push(Prim::Circle {
+                c: at,
+                r: v.tolerance,
+                fill: "none",
+                stroke: 0.25,
+                id: Some(format!("step-{}-{}", v.step.0, v.point)),
+            });
+            if v.judgement == Judgement::Wrong {
+                let given = kurbo::Point::new(v.given.x, v.given.y);
+                c.prims.push(Prim::Seg {
+                    a: at,
+                    b: given,
+                    class: Class::Thin,
+                    id: Some(format!("wrong-step-{}", v.step.0)),
+                });
+            }
+        }
+    }
     let title = format!(
         "Check: {} plan, position {} — {} of {} right{}",
         if r.plan == PlanKind::Velocity {
@@ -330,8 +355,11 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
         r.verdicts.len(),
         r.diagnosis
             .as_ref()
-            .and_then(|d| d.mistake.as_ref())
-            .map(|m| format!(" — {m}"))
+            .and_then(|d| d.mistake.as_ref().map(|m| (m, d.step.as_ref())))
+            .map(|(m, step)| match step {
+                Some((k, _)) => format!(" — step {k}: {m}"),
+                None => format!(" — {m}"),
+            })
             .unwrap_or_default()
     );
     crate::presentation::drawing::page_svg(
