@@ -7,7 +7,7 @@ use super::verdict::Candidate;
 use super::items::Expected;
 use super::{Diagnosis, Report};
 use crate::accuracy::ACCURACY;
-use crate::kinematics::construction::{Mistake, Variant};
+use crate::kinematics::construction::{Mistake, Plan, Variant};
 use crate::words::construction::{Lang, sentence};
 
 /// Name the mistake that explains the answer: the candidates whose
@@ -30,12 +30,26 @@ pub(super) fn diagnose(b: &Builds, r: &Report, exp: &[Expected], cands: &[Fit]) 
         })
 }
 
-/// The step where a candidate's mistake enters, with its sentence.
-fn step_of(f: &Fit, lang: Lang) -> Option<(usize, String)> {
-    f.plan.mistake_step.map(|k| {
-        let k = k.min(f.plan.steps.len().saturating_sub(1));
-        (k + 1, sentence(&f.plan, k, lang))
-    })
+/// The step where a candidate's mistake enters (the first where its
+/// construction draws something else than the right one, `right`), with
+/// the right construction's sentence for it: the step drawn wrong or left
+/// out (for a step the mistake adds, the added step's own).
+fn step_of(f: &Fit, right: &Plan, lang: Lang) -> Option<(usize, String)> {
+    let k = right.first_difference(&f.plan).or(f.plan.mistake_step)?;
+    let adds = matches!(
+        f.c,
+        Candidate::Mistake {
+            m: Mistake::Epsilon1Added,
+            ..
+        }
+    );
+    let plan = if adds || k >= right.steps.len() {
+        &f.plan
+    } else {
+        right
+    };
+    let k = k.min(plan.steps.len().saturating_sub(1));
+    Some((k + 1, sentence(plan, k, lang)))
 }
 
 /// What a candidate's mistaken step lays off ("a vector" if it says not).
@@ -80,7 +94,7 @@ fn one_mistake(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagno
     Some(Diagnosis {
         explanation: mistake.is_some().then_some(best.c),
         mistake,
-        step: step_of(best, b.lang),
+        step: step_of(best, &r.plan_built, b.lang),
         explained: n,
         alternatives,
     })
@@ -132,7 +146,7 @@ fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagn
     Some(Diagnosis {
         explanation: (others == 0).then_some(best.c),
         mistake: (others == 0).then(|| name.clone()),
-        step: step_of(best, b.lang),
+        step: step_of(best, &r.plan_built, b.lang),
         explained: n,
         alternatives: if others == 0 {
             Vec::new()
@@ -171,7 +185,7 @@ fn slip(b: &Builds, r: &Report, exp: &[Expected]) -> Option<Diagnosis> {
     Some(Diagnosis {
         explanation: Some(f.c),
         mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f), b.lang)),
-        step: step_of(&f, b.lang),
+        step: step_of(&f, &r.plan_built, b.lang),
         explained: exp.len(),
         alternatives: Vec::new(),
     })
