@@ -823,3 +823,49 @@ fn the_worked_example_in_the_docs() {
         );
     }
 }
+
+/// A forgotten a^n_BA is named at the step that should have laid it off,
+/// quoting that step (not the next normal component's).
+#[test]
+fn a_forgotten_normal_quotes_its_own_step() {
+    let all = scenes();
+    let (_, an, solved) = all.iter().find(|s| s.0 == "six_link_fig2_10").unwrap();
+    let s = &solved[1];
+    let plans = s.plans.as_ref().unwrap();
+    let kind = PlanKind::Acceleration;
+    let mus = (plans.acceleration.as_ref().unwrap().mu, plans.velocity.mu);
+    let reference = drawn(an, s, kind, mus, Variant::default()).unwrap();
+    // Decision 0 is the crank's normal, 1 the coupler's a^n_BA.
+    let variant = Variant {
+        mistake: Some(Mistake::NormalForgotten),
+        at: Some(1),
+        on: Some(kind),
+        ..Variant::default()
+    };
+    let (bad, omegas) = drawn_with_velocity(an, s, kind, mus, variant).unwrap();
+    let points = points_of(&bad, &reference, false, None);
+    let r = check(
+        an,
+        solved,
+        &answer(kind, mus, 2, &points, an, &reference, omegas),
+    )
+    .unwrap();
+    let found = &r.steps.as_ref().unwrap().mistakes[0];
+    let text = mechplan::presentation::verdict::to_text(&r);
+    assert!(
+        found
+            .mistake
+            .as_deref()
+            .is_some_and(|m| m.contains("forgotten")),
+        "{text}"
+    );
+    assert!(
+        found.step.1.contains("a^n_BA") && !found.step.1.contains("a^n_BO2"),
+        "{}: {text}",
+        found.step.1
+    );
+    assert_eq!(
+        found.step.0,
+        first_difference(&reference, &bad).unwrap() + 1
+    );
+}
