@@ -69,6 +69,10 @@ pub enum Command {
         /// Which of the scene's positions, from 1 (default: the answer file's, else 1).
         #[arg(long)]
         position: Option<usize>,
+        /// Language of the report: en, uk or ru (default: the scene's want.lang); JSON keeps
+        /// its keys and judgements in English.
+        #[arg(long, value_parser = lang)]
+        lang: Option<Lang>,
     },
     /// Draw the plan of the mechanism, the plans of velocities and accelerations (and positions) as sheets; with dynamics, the force sheets and Zhukovsky's lever too.
     Draw {

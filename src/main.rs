@@ -101,6 +101,7 @@ fn command(c: Command) -> Result<u8, Error> {
             mu,
             plan,
             position,
+            lang,
         } => {
             let req = CheckRequest {
                 json: matches!(format, CheckFormat::Json),
@@ -109,6 +110,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 mu,
                 plan,
                 position,
+                lang,
             };
             if mechplan::study::is_group(&answers, output.is_some()) {
                 let out = output.unwrap_or_else(|| "mechplan-check".into());

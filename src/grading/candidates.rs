@@ -10,6 +10,7 @@ use crate::error::Result;
 use crate::format::num;
 use crate::lang::Lang;
 use crate::words::check;
+use crate::words::numbers::{decimals, quantity};
 use crate::kinematics::analytic::{Drives, Order};
 use crate::kinematics::construction::{
     self, Drafting, Drawing, Mistake, Plan, PlanKind, Variant, build_acceleration, build_plans,
@@ -45,7 +46,7 @@ pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str, lang: Lang) ->
         Candidate::Mistake { m, at, .. } => check::mistake(lang, m, at.is_some()).to_string(),
         Candidate::Slip { factor, .. } => check::fill(
             &w.slip_of,
-            &[("what", what), ("factor", &crate::format::num(factor))],
+            &[("what", what), ("factor", &decimals(&num(factor), lang))],
         ),
         Candidate::Pair(x, y) => check::fill(
             &w.pair,
@@ -58,7 +59,7 @@ pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str, lang: Lang) ->
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
             w.scale_units.clone()
         }
-        Candidate::Scale(_) => check::fill(&w.scale_inverted, &[("mu", &num(mu))]),
+        Candidate::Scale(_) => check::fill(&w.scale_inverted, &[("mu", &decimals(&num(mu), lang))]),
     }
 }
 
@@ -181,7 +182,7 @@ pub(super) fn expectations(b: &Builds, p: &Plan, factor: f64) -> Option<Vec<Expe
         .items
         .iter()
         .map(|it| {
-            let mut e = expect(b.an, p, it, b.ans.delta).ok()?;
+            let mut e = expect(b.an, p, it, b.ans.delta, b.lang).ok()?;
             if matches!(it.given, Given::Value { .. }) {
                 e.expected *= factor;
                 e.tol *= factor.abs();
@@ -207,7 +208,7 @@ pub(super) fn cannot_judge(
     lang: Lang,
 ) -> Option<String> {
     let w = check::phrases(lang);
-    let quantity = crate::format::format_quantity;
+    let quantity = |x: f64, unit: &str| quantity(x, unit, lang);
     // An item's tolerance in mm on the plan.
     let mm = |e: &Expected| match e.unit {
         "mm" => Some(e.tol),

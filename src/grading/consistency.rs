@@ -18,6 +18,7 @@ use super::items::{expect, given_twice, names, pole_of, resolve};
 use crate::error::{Error, Issue, Result};
 use crate::kinematics::construction::{Plan, PlanKind, PointId, Variant};
 use crate::kinematics::solve::Analysis;
+use crate::lang::Lang;
 use crate::pipeline::Solved;
 use kurbo::Vec2;
 
@@ -30,16 +31,16 @@ pub(super) const BETTER_FIT: f64 = 10.0;
 /// gives a thing twice, or whose points fit another position of the scene
 /// instead of the one it states. A position the scene does not have, or a
 /// plan it cannot build, is left to [`super::check`] to refuse.
-pub(super) fn refuse_inconsistent(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<()> {
+pub(super) fn refuse_inconsistent(
+    an: &Analysis,
+    solved: &[Solved],
+    ans: &Answer,
+    lang: Lang,
+) -> Result<()> {
     let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Ok(());
     };
-    let Ok(plan) = (Builds {
-        an,
-        s,
-        ans,
-        lang: crate::lang::Lang::En,
-    }).plan(&s.config, Variant::default()) else {
+    let Ok(plan) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
         return Ok(());
     };
     let other = s.plans.as_ref().and_then(|p| match ans.plan {
@@ -50,13 +51,13 @@ pub(super) fn refuse_inconsistent(an: &Analysis, solved: &[Solved], ans: &Answer
     for it in &ans.items {
         if let Some(i) = of_the_other_plan(&plan, other, it) {
             issues.push(i);
-        } else if let Err(i) = expect(an, &plan, it, ans.delta) {
+        } else if let Err(i) = expect(an, &plan, it, ans.delta, lang) {
             issues.push(i);
         }
     }
     issues.extend(given_twice(an, &plan, &ans.items));
     if issues.is_empty()
-        && let Some(i) = another_position(an, solved, ans, &plan)
+        && let Some(i) = another_position(an, solved, ans, &plan, lang)
     {
         issues.push(i);
     }
@@ -149,6 +150,7 @@ fn another_position(
     solved: &[Solved],
     ans: &Answer,
     plan: &Plan,
+    lang: Lang,
 ) -> Option<Issue> {
     let points: Vec<(&str, [f64; 2])> = ans
         .items
@@ -170,12 +172,7 @@ fn another_position(
         if k + 1 == ans.position {
             continue;
         }
-        let Ok(p) = (Builds {
-        an,
-        s,
-        ans,
-        lang: crate::lang::Lang::En,
-    }).plan(&s.config, Variant::default()) else {
+        let Ok(p) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
             continue;
         };
         if let Some((m, true)) = fit(&p, &points, ans.delta)

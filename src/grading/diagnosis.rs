@@ -8,7 +8,8 @@ use super::items::Expected;
 use super::{Diagnosis, Report};
 use crate::accuracy::ACCURACY;
 use crate::kinematics::construction::{Mistake, Plan, Variant};
-use crate::words::construction::{Lang, sentence};
+use crate::lang::Lang;
+use crate::words::check;
 
 /// Name the mistake that explains the answer: the candidates whose
 /// construction puts every item within its own tolerance; of those the
@@ -49,19 +50,21 @@ fn step_of(f: &Fit, right: &Plan, lang: Lang) -> Option<(usize, String)> {
         right
     };
     let k = k.min(plan.steps.len().saturating_sub(1));
-    Some((k + 1, sentence(plan, k, lang)))
+    Some((k + 1, check::step(plan, k, lang)))
 }
 
-/// What a candidate's mistaken step lays off ("a vector" if it says not).
-fn what_of(f: &Fit) -> String {
+/// What a candidate's mistaken step lays off ("a vector" in `lang` if it
+/// says not).
+fn what_of(f: &Fit, lang: Lang) -> String {
+    let a_vector = || check::phrases(lang).a_vector.clone();
     f.plan
         .mistake_step
         .and_then(|k| f.plan.steps.get(k))
         .map(|st| match &st.op {
             crate::kinematics::construction::Op::LayOff { what, .. } => what.clone(),
-            _ => String::from("a vector"),
+            _ => a_vector(),
         })
-        .unwrap_or_else(|| "a vector".into())
+        .unwrap_or_else(a_vector)
 }
 
 /// The candidate that explains all `n` items, named unless another of a
@@ -76,7 +79,7 @@ fn one_mistake(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagno
         .collect();
     explaining.sort_by(|a, b| a.1.total_cmp(&b.1));
     let &(best, misfit) = explaining.first()?;
-    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f), b.lang);
+    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f, b.lang), b.lang);
     let name = sentence_of(best);
     // Explanations of another kind that fit about as well.
     let mut alternatives: Vec<String> = explaining[1..]
@@ -142,7 +145,7 @@ fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagn
         .iter()
         .filter(|p| p.1 <= ACCURACY.distinct_misfit * misfit.max(1e-12))
         .count();
-    let name = mistake_sentence(best.c, r.mu, &what_of(best), b.lang);
+    let name = mistake_sentence(best.c, r.mu, &what_of(best, b.lang), b.lang);
     Some(Diagnosis {
         explanation: (others == 0).then_some(best.c),
         mistake: (others == 0).then(|| name.clone()),
@@ -154,7 +157,7 @@ fn two_mistakes(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagn
             pairs
                 .iter()
                 .take(others + 1)
-                .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0), b.lang))
+                .map(|p| mistake_sentence(p.0.c, r.mu, &what_of(&p.0, b.lang), b.lang))
                 .collect()
         },
     })
@@ -184,7 +187,7 @@ fn slip(b: &Builds, r: &Report, exp: &[Expected]) -> Option<Diagnosis> {
     let (f, _) = best?;
     Some(Diagnosis {
         explanation: Some(f.c),
-        mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f), b.lang)),
+        mistake: Some(mistake_sentence(f.c, r.mu, &what_of(&f, b.lang), b.lang)),
         step: step_of(&f, &r.plan_built, b.lang),
         explained: exp.len(),
         alternatives: Vec::new(),

@@ -7,6 +7,9 @@ use crate::error::Issue;
 use crate::format::num;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
+use crate::lang::Lang;
+use crate::words::catalogue::CheckPhrases;
+use crate::words::check;
 use kurbo::Vec2;
 use std::collections::{HashMap, HashSet};
 
@@ -76,19 +79,21 @@ impl Expected {
     }
 }
 
-/// The expected value and tolerance of an item on `plan`; `Err` names an
-/// unknown letter or link.
+/// The expected value and tolerance of an item on `plan`, named in
+/// `lang`; `Err` names an unknown letter or link.
 pub(super) fn expect(
     an: &Analysis,
     plan: &Plan,
     it: &answer::Item,
     delta: f64,
+    lang: Lang,
 ) -> std::result::Result<Expected, Issue> {
     let on = On {
         an,
         plan,
         it,
         delta,
+        lang,
     };
     match &it.given {
         Given::Segment { from, mm, .. } => on.segment(from, *mm),
@@ -105,12 +110,13 @@ pub(super) fn expect(
     }
 }
 
-/// An item `it` on `plan`, the pencil precision `delta`.
+/// An item `it` on `plan`, the pencil precision `delta`, named in `lang`.
 struct On<'a> {
     an: &'a Analysis,
     plan: &'a Plan,
     it: &'a answer::Item,
     delta: f64,
+    lang: Lang,
 }
 
 impl On<'_> {
@@ -120,6 +126,17 @@ impl On<'_> {
             pointer: self.it.pointer.clone(),
             message,
         }
+    }
+
+    /// The item's name in the report's language: `phrase` of the check's
+    /// phrases with its one blank `blank` filled by `value`.
+    fn named(
+        &self,
+        phrase: impl Fn(&CheckPhrases) -> &String,
+        blank: &str,
+        value: &str,
+    ) -> String {
+        check::fill(phrase(check::phrases(self.lang)), &[(blank, value)])
     }
 
     fn unknown(&self, n: &str) -> Issue {
@@ -148,7 +165,7 @@ impl On<'_> {
         let (a, b) = self.ends(from)?;
         let len = (p[b].at - p[a].at).hypot();
         Ok(Expected {
-            what: format!("segment {}{}", p[a].name(), p[b].name()),
+            what: self.named(|w| &w.item_segment, "seg", &format!("{}{}", p[a].name(), p[b].name())),
             expected: len,
             given: mm,
             tol: p[a].err + p[b].err + delta,
@@ -177,7 +194,7 @@ impl On<'_> {
         // Compare directions modulo a turn.
         let given = exp + crate::geom::wrap_pi((deg - exp).to_radians()).to_degrees();
         Ok(Expected {
-            what: format!("direction of {}{}", p[a].name(), p[b].name()),
+            what: self.named(|w| &w.item_direction, "seg", &format!("{}{}", p[a].name(), p[b].name())),
             expected: exp,
             given,
             tol: deg_of(p[a].err + p[b].err + delta),
@@ -196,7 +213,7 @@ impl On<'_> {
         // Distance from the expected place is the difference; "expected" 0.
         let d = (Vec2::new(at[0], at[1]) - p[i].at).hypot();
         Ok(Expected {
-            what: format!("point {} (off its place)", p[i].name()),
+            what: self.named(|w| &w.item_point, "name", &p[i].name()),
             expected: 0.0,
             given: d,
             tol: p[i].err + delta,

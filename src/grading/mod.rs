@@ -42,7 +42,8 @@ use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{PlanKind, Variant};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
-use crate::words::construction::{Lang, sentence};
+use crate::lang::Lang;
+use crate::words::check::step as quoted_step;
 use answer::Answer;
 use candidates::{Builds, candidates, cannot_judge};
 use diagnosis::diagnose;
@@ -74,7 +75,9 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
     check_in(an, solved, ans, Lang::En)
 }
 
-/// [`check`] with the steps quoted in `lang`.
+/// [`check`] in `lang`: every sentence of the report (the grade, the
+/// mistakes, the reasons, the items' names, the steps quoted) in that
+/// language, its numbers with the language's decimal mark.
 pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> Result<Report> {
     let mut report = against_true_plan(an, solved, ans, lang)?;
     let s = position_of(solved, ans.position)?;
@@ -122,13 +125,13 @@ fn against_true_plan(
             ));
         }
     }
-    consistency::refuse_inconsistent(an, solved, ans)?;
+    consistency::refuse_inconsistent(an, solved, ans, lang)?;
     let b = Builds { an, s, ans, lang };
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();
     let mut issues = Vec::new();
     for it in &ans.items {
-        match expect(an, &plan, it, ans.delta) {
+        match expect(an, &plan, it, ans.delta, lang) {
             Ok(e) => exp.push(e),
             Err(i) => issues.push(i),
         }
@@ -162,7 +165,7 @@ fn against_true_plan(
             step: e
                 .point
                 .and_then(|i| plan.step_of(i))
-                .map(|k| (k + 1, sentence(&plan, k, lang))),
+                .map(|k| (k + 1, quoted_step(&plan, k, lang))),
             judgement,
         });
     }

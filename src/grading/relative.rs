@@ -8,8 +8,8 @@ use super::candidates::Builds;
 use super::items::{expect, resolve};
 use super::verdict::{Judgement, MAX_TOLERANCE_OF_PLAN, Report, StepReport, Verdict};
 use super::answer::Given;
-use crate::format::format_quantity;
 use crate::words::check;
+use crate::words::numbers::quantity;
 
 /// The verdicts of the answer's items, in its order: drawn points from
 /// their steps, the other items on the replay; an item the replay cannot
@@ -54,7 +54,7 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
                     None => g.clone(),
                 };
             }
-            let Ok(e) = expect(b.an, replay, it, b.ans.delta) else {
+            let Ok(e) = expect(b.an, replay, it, b.ans.delta, b.lang) else {
                 return g.clone();
             };
             let difference = (e.given - e.expected).abs();
@@ -69,7 +69,7 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
             let judgement = if difference > e.tol {
                 Judgement::Wrong
             } else if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
-                let (tol, size) = (format_quantity(tol_mm, "mm"), format_quantity(size, "mm"));
+                let (tol, size) = (quantity(tol_mm, "mm", b.lang), quantity(size, "mm", b.lang));
                 Judgement::CannotJudge(check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]))
             } else {
                 Judgement::Right

@@ -22,12 +22,12 @@ use super::items::resolve;
 use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, StepReport, StepVerdict};
 use crate::accuracy::ACCURACY;
 use crate::error::Result;
-use crate::format::{format_number, format_quantity};
 use crate::kinematics::construction::{Drawing, Judged, Mistake, Plan, PlanKind, Variant};
 use crate::kinematics::positions::PositionSolver;
 use crate::model::structure::{AssurGroup, DyadKind};
+use crate::lang::Lang;
 use crate::words::check;
-use crate::words::construction::{Lang, sentence};
+use crate::words::numbers::{decimals, quantity};
 use kurbo::Vec2;
 
 /// The points the answer draws, as a replay takes them: the `nth` plan
@@ -130,7 +130,7 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
         if e.misfit() <= 1.0 && tolerance > MAX_TOLERANCE_OF_PLAN * size {
             // Predicted from points far back (the student drew few), near
             // a dead point: the step cannot place it.
-            let (tol, size) = (format_quantity(tolerance, "mm"), format_quantity(size, "mm"));
+            let (tol, size) = (quantity(tolerance, "mm", lang), quantity(size, "mm", lang));
             let w = check::phrases(lang);
             let why = check::fill(&w.too_wide_step, &[("tol", &tol), ("size", &size)]);
             v.judgement = Judgement::CannotJudge(why);
@@ -178,7 +178,12 @@ impl Judge<'_> {
     /// Step `k` (from 0) of the right construction: its number and sentence.
     fn step(&self, k: usize) -> (usize, String) {
         let k = k.min(self.plain.steps.len().saturating_sub(1));
-        (k + 1, sentence(self.plain, k, self.lang))
+        (k + 1, check::step(self.plain, k, self.lang))
+    }
+
+    /// A number of a sentence, with the language's decimal mark.
+    fn number(&self, x: f64) -> String {
+        decimals(&crate::format::format_number(x), self.lang)
     }
 
     /// Every typical mistake at each of its decisions (and, for an
@@ -350,11 +355,11 @@ impl Judge<'_> {
         Some(check::fill(
             &check::phrases(self.lang).ambiguous_step,
             &[
-                ("tol", &format_quantity(tol, "mm")),
-                ("moved", &format_quantity(*moved, "mm")),
+                ("tol", &quantity(tol, "mm", self.lang)),
+                ("moved", &quantity(*moved, "mm", self.lang)),
                 ("mistake", &self.sentence(t)),
-                ("k", &format_number((k * 10.0).ceil() / 10.0)),
-                ("mu", &format_number(mu / k)),
+                ("k", &self.number((k * 10.0).ceil() / 10.0)),
+                ("mu", &self.number(mu / k)),
             ],
         ))
     }
@@ -372,7 +377,7 @@ impl Judge<'_> {
             }
         );
         if adds && t.enters < t.plan.steps.len() {
-            return (t.enters + 1, sentence(&t.plan, t.enters, self.lang));
+            return (t.enters + 1, check::step(&t.plan, t.enters, self.lang));
         }
         self.step(t.enters)
     }
@@ -380,7 +385,7 @@ impl Judge<'_> {
     fn sentence(&self, t: &Try) -> String {
         let what = match self.plain.steps.get(t.enters).map(|s| &s.op) {
             Some(crate::kinematics::construction::Op::LayOff { what, .. }) => what.clone(),
-            _ => "a vector".to_string(),
+            _ => check::phrases(self.lang).a_vector.clone(),
         };
         let s = mistake_sentence(t.c, self.b.ans.mu, &what, self.lang);
         match t.c {

@@ -101,10 +101,7 @@ fn words(l: Lang) -> &'static TablePhrases {
 
 /// A unit in language `l`: "м/с²" for "m/s²".
 pub fn unit(u: &str, l: Lang) -> String {
-    let letters = &crate::words::catalogue(l).units.letters;
-    letters
-        .iter()
-        .fold(u.to_string(), |u, [si, own]| u.replace(si.as_str(), own))
+    crate::words::numbers::unit(u, l)
 }
 
 fn column(kind: Kind, head: &str, u: Option<&str>, l: Lang) -> Column {

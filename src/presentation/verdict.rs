@@ -6,7 +6,9 @@ use crate::grading::answer::{Answer, Given};
 use crate::grading::forces::ForceReport;
 use crate::grading::{Grade, Judgement, Report, StepReport};
 use crate::words::catalogue::CheckPhrases;
+use crate::lang::Lang;
 use crate::words::check::{self, fill};
+use crate::words::numbers::{decimals, quantity, unit};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use kurbo::Vec2;
@@ -14,11 +16,12 @@ use kurbo::Vec2;
 /// The report as text for the terminal, in the report's language: the
 /// grade, the steps judged from the student's own points and the
 /// mistakes found at them (an answer that draws points), the items, and
-/// beside them the comparison with the true plan.
+/// beside them the comparison with the true plan. Its numbers are
+/// written with the language's decimal mark, its units in its letters.
 pub fn to_text(r: &Report) -> String {
     use std::fmt::Write as _;
     let w = check::phrases(r.lang);
-    let fmt = |x: f64| crate::format::format_number(x);
+    let fmt = |x: f64| number(x, r.lang);
     let mut t = String::new();
     let kind = &w.plan[usize::from(r.plan == PlanKind::Acceleration)];
     let _ = writeln!(
@@ -30,7 +33,7 @@ pub fn to_text(r: &Report) -> String {
                 ("plan", kind),
                 ("position", &r.position.to_string()),
                 ("mu", &fmt(r.mu)),
-                ("delta", &crate::format::format_quantity(r.delta, "mm")),
+                ("delta", &quantity(r.delta, "mm", r.lang)),
             ],
         )
     );
@@ -38,7 +41,7 @@ pub fn to_text(r: &Report) -> String {
         let _ = writeln!(t, "{}", fill(&w.dead_centre, &[("angle", &fmt(r.worst_angle))]));
     }
     if let Some(steps) = &r.steps {
-        steps_text(&mut t, w, steps);
+        steps_text(&mut t, w, steps, r.lang);
     }
     let _ = writeln!(t, "{}", w.items_heading);
     let c = &w.items_columns;
@@ -56,7 +59,7 @@ pub fn to_text(r: &Report) -> String {
             fmt(v.given),
             fmt(v.difference),
             fmt(v.tolerance),
-            v.unit,
+            unit(v.unit, r.lang),
             verdict_word(w, &v.judgement)
         );
         if v.ok() {
@@ -108,6 +111,12 @@ pub fn to_text(r: &Report) -> String {
     t
 }
 
+/// A number of the text report: [`crate::format::format_number`]'s
+/// digits with the language's decimal mark.
+fn number(x: f64, lang: Lang) -> String {
+    decimals(&crate::format::format_number(x), lang)
+}
+
 /// The word of a judgement.
 fn verdict_word<'a>(w: &'a CheckPhrases, j: &Judgement) -> &'a str {
     match j {
@@ -119,9 +128,9 @@ fn verdict_word<'a>(w: &'a CheckPhrases, j: &Judgement) -> &'a str {
 
 /// The grade, the steps judged from the student's own points, and the
 /// mistakes found at them.
-fn steps_text(t: &mut String, w: &CheckPhrases, steps: &StepReport) {
+fn steps_text(t: &mut String, w: &CheckPhrases, steps: &StepReport, lang: Lang) {
     use std::fmt::Write as _;
-    let fmt = |x: f64| crate::format::format_number(x);
+    let fmt = |x: f64| number(x, lang);
     let grade = match steps.grade() {
         Grade::Right => w.grade_right.clone(),
         Grade::CannotJudge => w.grade_cannot_judge.clone(),
@@ -343,25 +352,19 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
             }
         }
     }
-    let title = format!(
-        "Check: {} plan, position {} — {} of {} right{}",
-        if r.plan == PlanKind::Velocity {
-            "velocity"
-        } else {
-            "acceleration"
-        },
-        r.position,
-        r.right(),
-        r.verdicts.len(),
-        r.diagnosis
-            .as_ref()
-            .and_then(|d| d.mistake.as_ref().map(|m| (m, d.step.as_ref())))
-            .map(|(m, step)| match step {
-                Some((k, _)) => format!(" — step {k}: {m}"),
-                None => format!(" — {m}"),
-            })
-            .unwrap_or_default()
+    let w = check::phrases(r.lang);
+    let mut title = fill(
+        &w.overlay_title,
+        &[
+            ("plan", &w.plan[usize::from(r.plan == PlanKind::Acceleration)]),
+            ("position", &r.position.to_string()),
+            ("right", &r.right().to_string()),
+            ("count", &r.verdicts.len().to_string()),
+        ],
     );
+    if let Some(m) = r.diagnosis.as_ref().and_then(|d| d.mistake.as_ref()) {
+        title.push_str(&format!(" — {m}"));
+    }
     crate::presentation::drawing::page_svg(
         "check".into(),
         title,

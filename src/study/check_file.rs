@@ -21,7 +21,7 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
     let parsed = studies::parse_answer(&text, &name, svg, req)?;
     let study = Study::from_path(scene)?;
     studies::position_of(&study, &parsed, &name, req)?;
-    let checked = studies::check_parsed(&study.solve()?, parsed)?;
+    let checked = studies::check_parsed(&study.solve()?, parsed, req.lang)?;
     if let Some(out) = &req.overlay
         && let Some(overlay) = checked.overlay()
     {

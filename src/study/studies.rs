@@ -12,6 +12,7 @@ use crate::grading::read::{self, Reading};
 use crate::grading::{self, Report};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
+use crate::lang::Lang;
 use crate::presentation::drawing::{self, DrawOptions, Format, Sheet};
 use crate::presentation::{precision as precision_text, studies as tables, verdict};
 use crate::studies::diagrams::Diagrams;
@@ -36,6 +37,10 @@ pub struct CheckRequest {
     pub plan: Option<PlanKind>,
     /// The position (`--position`, from 1), over the answer's own.
     pub position: Option<usize>,
+    /// The language of a kinematic plan's report (`--lang`): its
+    /// sentences, and its numbers' decimal mark in the text; default: the
+    /// scene's `want.lang`. The JSON's keys and judgements stay English.
+    pub lang: Option<Lang>,
 }
 
 /// An answer read, before it is checked.
@@ -44,7 +49,9 @@ impl Study {
     /// file's extension; a text starting with `<` is one too), its
     /// problems naming `name` (the answer's file). A plan of velocities or
     /// accelerations, or a force plan (`"plan": "force"`, or a drawing
-    /// stating μ_F).
+    /// stating μ_F). The report is in the scene's `want.lang`; another
+    /// language is asked by [`CheckRequest::lang`] (through
+    /// [`Solution::check_answer`]).
     ///
     /// ```
     /// let study = mechplan::Study::default_scene();
@@ -212,11 +219,13 @@ pub(super) fn position_of(
     }
 }
 
-/// Check an answer read against the solved positions.
-pub(super) fn check_parsed(sol: &Solution, parsed: Parsed) -> Result<Checked> {
+/// Check an answer read against the solved positions, its report in
+/// `lang` (default: the scene's `want.lang`).
+pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -> Result<Checked> {
     Ok(match parsed {
         Parsed::Kinematic(ans) => {
-            let report = grading::check(sol.an(), sol.all(), &ans)?;
+            let lang = lang.unwrap_or_else(|| sol.study().lang());
+            let report = grading::check_in(sol.an(), sol.all(), &ans, lang)?;
             Checked::Kinematic(Box::new(KinematicCheck {
                 analysis: Arc::clone(&sol.study().analysis),
                 answer: ans,
@@ -306,7 +315,7 @@ impl<'a> Solution<'a> {
     ) -> Result<Checked> {
         let parsed = parse_answer(text, name, svg, req)?;
         position_of(self.study(), &parsed, name, req)?;
-        check_parsed(self, parsed)
+        check_parsed(self, parsed, req.lang)
     }
 
     /// The instant centres (of `position`, from 1, or of every position).

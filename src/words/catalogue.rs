@@ -374,6 +374,13 @@ pub struct CheckPhrases {
     /// `{mu}`.
     pub scale_inverted: String,
     pub a_vector: String,
+    /// The items' names: a segment (`{seg}`), its direction (`{seg}`), a
+    /// point off its place (`{name}`).
+    pub item_segment: String,
+    pub item_direction: String,
+    pub item_point: String,
+    /// The overlay's title: `{plan}`, `{position}`, `{right}`, `{count}`.
+    pub overlay_title: String,
 }
 
 /// Each typical mistake in one sentence: made at one decision, made at

@@ -4,7 +4,8 @@
 //! phrases with named blanks ([`catalogue::fill`]). [`construction`] the steps of the
 //! plans, [`force_plans`] the steps of the force plans, [`forces`] the
 //! names of forces, [`notation`] the lecture's notation as runs of text
-//! and labels, [`inputs`] a position's inputs in short.
+//! and labels, [`inputs`] a position's inputs in short, [`numbers`] the
+//! language's decimal mark and units' letters.
 
 pub mod catalogue;
 pub mod check;
@@ -13,6 +14,7 @@ pub mod force_plans;
 pub mod forces;
 pub mod inputs;
 pub mod notation;
+pub mod numbers;
 
 pub use crate::lang::Lang;
 

@@ -110,8 +110,7 @@ impl Ruled {
 /// Russian (the lecture writes 0,001 м/мм).
 pub fn number(x: f64, l: Lang) -> String {
     // The minus sign of typesetting (−), not the hyphen.
-    let s = num(x).replace('-', "\u{2212}");
-    s.replace('.', &crate::words::catalogue(l).units.decimal)
+    crate::words::numbers::decimals(&num(x).replace('-', "\u{2212}"), l)
 }
 
 /// A unit in the language: м/с, рад/с².
