@@ -391,7 +391,7 @@ fn seen(
 /// cannot be judged, and the fewest rejected answers whose mistake is
 /// named at its step, in per cent.
 const UNDECIDED_PERCENT: usize = 15;
-const NAMED_PERCENT: usize = 92;
+const NAMED_PERCENT: usize = 94;
 
 #[derive(Default)]
 struct Counts {
