@@ -74,6 +74,11 @@ pub struct Accuracy {
     /// Two explanations of a wrong answer are told apart only when one's
     /// misfit is this many times the other's.
     pub distinct_misfit: f64,
+    /// Of two mistakes of different kinds that both put a wrong step's
+    /// point within their tolerance, the better is named when the other's
+    /// misfit (distance over tolerance) is more than this many times its
+    /// own; else both are listed, not recognised.
+    pub step_distinct_misfit: f64,
     /// The force analysis: the smallest reciprocal condition number (1-norm)
     /// of the scaled equilibrium system; below it its rounding (ε/rcond)
     /// could exceed `max_rel_diff` and the position is refused.
@@ -111,6 +116,7 @@ pub const ACCURACY: Accuracy = Accuracy {
     bound_roundings: 256.0,
     max_tolerance_of_plan: 0.2,
     distinct_misfit: 2.0,
+    step_distinct_misfit: 1.5,
     min_force_conditioning: f64::EPSILON / 1e-6,
     max_balancing_diff: 1e-6,
     null_normal_force: 1e-9,

@@ -391,7 +391,7 @@ fn seen(
 /// cannot be judged, and the fewest rejected answers whose mistake is
 /// named at its step, in per cent.
 const UNDECIDED_PERCENT: usize = 15;
-const NAMED_PERCENT: usize = 94;
+const NAMED_PERCENT: usize = 95;
 
 #[derive(Default)]
 struct Counts {

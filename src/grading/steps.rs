@@ -70,11 +70,6 @@ impl Try {
     }
 }
 
-/// Of two mistakes of different kinds that both put a wrong point within
-/// their tolerance, the better is named when the other's misfit is more
-/// than this many times its own; else both are listed, not recognised.
-const STEP_DISTINCT_MISFIT: f64 = 1.5;
-
 /// What the judge works with: the builds, the student's points, the
 /// plain replay, the right plan's size (mm) and the language.
 struct Judge<'a> {
@@ -413,7 +408,7 @@ impl Judge<'_> {
             let mut alternatives: Vec<String> = by_fit[1..]
                 .iter()
                 .filter(|f| {
-                    f.1 <= STEP_DISTINCT_MISFIT * misfit.max(0.05)
+                    f.1 <= ACCURACY.step_distinct_misfit * misfit.max(0.05)
                         && !same_kind(f.0.c, best.c)
                 })
                 .map(|f| self.sentence(f.0))

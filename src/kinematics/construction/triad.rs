@@ -36,6 +36,12 @@ impl Builder<'_> {
         let judged = self.plan.judged.len();
         let mut best: Option<((f64, f64), Pair)> = None;
         let mut first_err = None;
+        // The pair is the right construction's: a deliberate mistake is
+        // made on it, not allowed to choose another (its decisions are
+        // then the same lines in every build).
+        let variant = self.variant;
+        self.variant.mistake = None;
+        self.variant.also = None;
         for pair in PAIRS {
             (*self.plan, self.t.normal_of, self.rng) = saved.clone();
             self.t.acts.truncate(mark);
@@ -76,6 +82,7 @@ impl Builder<'_> {
         (*self.plan, self.t.normal_of, self.rng) = saved;
         self.t.acts.truncate(mark);
         self.taken = taken;
+        self.variant = variant;
         match best {
             Some((_, pair)) => {
                 self.plan.triads.push(pair);
