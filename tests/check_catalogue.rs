@@ -869,3 +869,50 @@ fn a_forgotten_normal_quotes_its_own_step() {
         first_difference(&reference, &bad).unwrap() + 1
     );
 }
+
+/// The grade counts every item: points drawn right with a value read off
+/// them wrong is wrong (as the exit status says); a pole drawn away from
+/// the origin is refused, not silently moved.
+#[test]
+fn the_grade_counts_every_item_and_the_pole_is_the_origin() {
+    let all = scenes();
+    let (_, an, solved) = all.iter().find(|s| s.0 == "six_link_fig2_10").unwrap();
+    let s = &solved[1];
+    let plans = s.plans.as_ref().unwrap();
+    let kind = PlanKind::Velocity;
+    let mus = (plans.velocity.mu, plans.velocity.mu);
+    let reference = drawn(an, s, kind, mus, Variant::default()).unwrap();
+    let points = points_of(&reference, &reference, false, None);
+    let mut a = answer(kind, mus, 2, &points, an, &reference, Vec::new());
+    let right = check(an, solved, &a).unwrap();
+    assert_ne!(right.status(), 1, "the exact answer is not wrong");
+    // v_B read 1.5 times too long.
+    let vb = a.items.iter_mut().find(|i| i.key == "v_B").unwrap();
+    if let Given::Value { value, .. } = &mut vb.given {
+        *value *= 1.5;
+    }
+    let r = check(an, solved, &a).unwrap();
+    let text = mechplan::presentation::verdict::to_text(&r);
+    assert_eq!(r.status(), 1, "{text}");
+    assert!(
+        text.contains("Grade: WRONG") && !text.contains("Grade: RIGHT"),
+        "{text}"
+    );
+    let json = mechplan::presentation::verdict::to_json(&r);
+    assert_eq!(json["grade"], "wrong");
+    // The pole at [5, 5]: refused, naming its field.
+    let mut a = answer(kind, mus, 2, &points, an, &reference, Vec::new());
+    a.items.push(Item {
+        pointer: "/points/p_v".into(),
+        key: "p_v".into(),
+        given: Given::Point {
+            name: "p_v".into(),
+            at: [5.0, 5.0],
+        },
+    });
+    let err = check(an, solved, &a).unwrap_err().to_string();
+    assert!(
+        err.contains("/points/p_v") && err.contains("origin"),
+        "{err}"
+    );
+}

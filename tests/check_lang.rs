@@ -313,3 +313,53 @@ fn the_library_takes_the_language_too() {
         .to_text();
     assert!(text.contains("Grade: WRONG at step 3."), "{text}");
 }
+
+/// A force plan's report follows the language too: its heading, its
+/// verdicts and its numbers (decimal commas) in Ukrainian and Russian.
+#[test]
+fn a_force_plans_report_in_every_language() {
+    let dir = fresh("force");
+    let scene = format!(
+        "{}/fixtures/dynamics/six_link_fig2_10.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (code, out, _) = run(&["solve", &scene, "--format", "json"]);
+    assert_eq!(code, 0);
+    let doc: Value = serde_json::from_str(&out).unwrap();
+    let mut values = serde_json::Map::new();
+    let norm = |v: &Value| v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap());
+    for pair in doc["positions"][1]["dynamics"]["pairs"].as_array().unwrap() {
+        if !pair["R"].is_array() {
+            continue;
+        }
+        if pair["point"] == "C" {
+            // R_34 half as long again: wrong.
+            values.insert("R_34".into(), json!(1.5 * norm(&pair["R"])));
+        } else if pair["point"] == "D" {
+            values.insert("R_54".into(), json!(norm(&pair["R"])));
+        }
+    }
+    let answer =
+        json!({ "plan": "force", "position": 2, "links": ["4", "5"], "mu": 2.0, "values": values });
+    let file = dir.join("force.json");
+    std::fs::write(&file, answer.to_string()).unwrap();
+    for (lang, heading, wrong) in [
+        ("en", "Force plan of links", "WRONG"),
+        ("uk", "План сил ланок", "НЕВІРНО"),
+        ("ru", "План сил звеньев", "НЕВЕРНО"),
+    ] {
+        let (code, out, err) = run(&["check", &scene, &path(&file), "--lang", lang]);
+        assert_eq!(code, 1, "{out}{err}");
+        assert!(
+            out.contains(heading) && out.contains(wrong),
+            "{lang}: {out}"
+        );
+        if lang != "en" {
+            let first = out.lines().nth(1).unwrap();
+            assert!(
+                first.contains(',') && !first.contains('.') && first.contains(" Н"),
+                "{lang}: {out}"
+            );
+        }
+    }
+}

@@ -80,13 +80,15 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
 /// language, its numbers with the language's decimal mark.
 pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> Result<Report> {
     let mut report = against_true_plan(an, solved, ans, lang)?;
+    pole_at_the_origin(ans, &report.plan_built)?;
     let s = position_of(solved, ans.position)?;
     let b = Builds { an, s, ans, lang };
     let Some(steps) = steps::judge(&b, &report.plan_built, lang)? else {
         return Ok(report);
     };
-    let second = SecondOpinion::of(&report, &steps, lang);
+    let global = report.clone();
     report.verdicts = relative::verdicts(&b, &report, &steps);
+    let second = SecondOpinion::of(&global, (&steps, report.grade()), lang);
     report.diagnosis = steps.mistakes.first().map(|f| Diagnosis {
         mistake: f.mistake.clone(),
         explanation: f.explanation,
@@ -97,6 +99,28 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     report.second_opinion = Some(second);
     report.steps = Some(steps);
     Ok(report)
+}
+
+/// An answer's points are millimetres from the pole: a pole given
+/// elsewhere than [0, 0] contradicts them (never read as a shift). The
+/// pole is what the right plan `plan` resolves the name to (a scene point
+/// named P is that point).
+fn pole_at_the_origin(ans: &Answer, plan: &crate::kinematics::construction::Plan) -> Result<()> {
+    for it in &ans.items {
+        if let answer::Given::Point { name, at } = &it.given
+            && resolve(plan, name) == Some(0)
+            && (at[0] != 0.0 || at[1] != 0.0)
+        {
+            return Err(Error::fields(vec![crate::error::Issue {
+                pointer: it.pointer.clone(),
+                message: format!(
+                    "the pole is the origin of the answer's coordinates: give it as [0, 0] or leave it out (given [{}, {}])",
+                    at[0], at[1]
+                ),
+            }]));
+        }
+    }
+    Ok(())
 }
 
 /// Every item of `answer` against the true plan at the student's scale,

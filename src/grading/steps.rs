@@ -127,10 +127,14 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
                 (x.misfit() <= 1.0).then_some((t, x.misfit(), moved))
             })
             .collect();
-        if e.misfit() <= 1.0 && tolerance > MAX_TOLERANCE_OF_PLAN * size {
+        // (For a point where two lines meet, also its place along them: two
+        // nearly parallel lines leave it undetermined.)
+        let wide = tolerance.max(e.tol) > MAX_TOLERANCE_OF_PLAN * size;
+        if e.misfit() <= 1.0 && wide {
             // Predicted from points far back (the student drew few), near
             // a dead point: the step cannot place it.
-            let (tol, size) = (quantity(tolerance, "mm", lang), quantity(size, "mm", lang));
+            let tol = quantity(tolerance.max(e.tol), "mm", lang);
+            let size = quantity(size, "mm", lang);
             let w = check::phrases(lang);
             let why = check::fill(&w.too_wide_step, &[("tol", &tol), ("size", &size)]);
             v.judgement = Judgement::CannotJudge(why);
@@ -413,7 +417,8 @@ impl Judge<'_> {
                 })
                 .map(|f| self.sentence(f.0))
                 .collect();
-            alternatives.dedup();
+            let mut seen = std::collections::HashSet::new();
+            alternatives.retain(|a| seen.insert(a.clone()));
             let named = alternatives.is_empty();
             if !named {
                 alternatives.insert(0, self.sentence(best));

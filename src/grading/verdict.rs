@@ -95,12 +95,17 @@ pub struct SecondOpinion {
 }
 
 impl SecondOpinion {
-    /// The true plan's verdict `global` beside the steps' `steps`.
-    pub fn of(global: &Report, steps: &StepReport, lang: crate::lang::Lang) -> SecondOpinion {
+    /// The true plan's verdict `global` beside the steps' `steps` and the
+    /// grade they give (`grade`, every item counted).
+    pub fn of(
+        global: &Report,
+        (steps, grade): (&StepReport, Grade),
+        lang: crate::lang::Lang,
+    ) -> SecondOpinion {
         let w = crate::words::check::phrases(lang);
         let fill = crate::words::check::fill;
         let wrong = global.wrong();
-        let disagreement = match steps.grade() {
+        let disagreement = match grade {
             Grade::Wrong if wrong == 0 => {
                 let k = steps
                     .steps
@@ -135,6 +140,17 @@ impl Report {
             .iter()
             .filter(|v| v.judgement == Judgement::Wrong)
             .count()
+    }
+    /// The grade as a teacher gives it, from every item's verdict (a drawn
+    /// point's is its step's).
+    pub fn grade(&self) -> Grade {
+        if self.wrong() > 0 {
+            Grade::Wrong
+        } else if self.unjudged() > 0 {
+            Grade::CannotJudge
+        } else {
+            Grade::Right
+        }
     }
     pub fn unjudged(&self) -> usize {
         self.verdicts

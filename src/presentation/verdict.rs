@@ -4,6 +4,7 @@
 
 use crate::grading::answer::{Answer, Given};
 use crate::grading::forces::ForceReport;
+use crate::words::numbers;
 use crate::grading::{Grade, Judgement, Report, StepReport};
 use crate::words::catalogue::CheckPhrases;
 use crate::lang::Lang;
@@ -41,7 +42,7 @@ pub fn to_text(r: &Report) -> String {
         let _ = writeln!(t, "{}", fill(&w.dead_centre, &[("angle", &fmt(r.worst_angle))]));
     }
     if let Some(steps) = &r.steps {
-        steps_text(&mut t, w, steps, r.lang);
+        steps_text(&mut t, w, (steps, r.grade(), r.wrong()), r.lang);
     }
     let _ = writeln!(t, "{}", w.items_heading);
     let c = &w.items_columns;
@@ -128,10 +129,15 @@ fn verdict_word<'a>(w: &'a CheckPhrases, j: &Judgement) -> &'a str {
 
 /// The grade, the steps judged from the student's own points, and the
 /// mistakes found at them.
-fn steps_text(t: &mut String, w: &CheckPhrases, steps: &StepReport, lang: Lang) {
+fn steps_text(
+    t: &mut String,
+    w: &CheckPhrases,
+    (steps, grade, wrong): (&StepReport, Grade, usize),
+    lang: Lang,
+) {
     use std::fmt::Write as _;
     let fmt = |x: f64| number(x, lang);
-    let grade = match steps.grade() {
+    let grade = match grade {
         Grade::Right => w.grade_right.clone(),
         Grade::CannotJudge => w.grade_cannot_judge.clone(),
         Grade::Wrong if steps.mistakes.len() == 1 => {
@@ -141,6 +147,9 @@ fn steps_text(t: &mut String, w: &CheckPhrases, steps: &StepReport, lang: Lang) 
                 &w.grade_wrong_one,
                 &[("step", &f.step.0.to_string()), ("mistake", &mistake)],
             )
+        }
+        Grade::Wrong if steps.mistakes.is_empty() => {
+            fill(&w.grade_wrong_items, &[("count", &wrong.to_string())])
         }
         Grade::Wrong => fill(
             &w.grade_wrong_many,
@@ -254,7 +263,7 @@ pub fn to_json(r: &Report) -> serde_json::Value {
             "alternatives": d.alternatives,
             "step": d.step.as_ref().map(|s| s.0), "step_text": d.step.as_ref().map(|s| s.1.clone()), "explained": d.explained,
         })),
-        "grade": r.steps.as_ref().map(|s| match s.grade() {
+        "grade": r.steps.as_ref().map(|_| match r.grade() {
             Grade::Right => "right",
             Grade::Wrong => "wrong",
             Grade::CannotJudge => "cannot be judged",
@@ -394,42 +403,63 @@ fn explanation_json(e: crate::grading::Explanation) -> serde_json::Value {
 /// A force plan's report in words.
 pub fn force_to_text(r: &ForceReport) -> String {
     use std::fmt::Write as _;
-    let mut t = format!(
-        "Force plan of links {}, position {}, μ_F = {} N/mm, δ = {} mm\n",
-        r.links.join(", "),
-        r.position,
-        r.mu,
-        r.delta
+    let w = check::phrases(r.lang);
+    let num = |x: f64| numbers::decimals(&crate::format::num(x), r.lang);
+    let mut t = fill(
+        &w.force_title,
+        &[
+            ("links", &r.links.join(", ")),
+            ("position", &r.position.to_string()),
+            ("mu", &num(r.mu)),
+            ("delta", &num(r.delta)),
+        ],
     );
+    t.push('\n');
     for v in &r.verdicts {
         let verdict = match &v.judgement {
-            Judgement::Right => "right".to_string(),
-            Judgement::Wrong => "WRONG".to_string(),
-            Judgement::CannotJudge(why) => format!("cannot be judged: {why}"),
+            Judgement::Right => w.force_verdicts[0].clone(),
+            Judgement::Wrong => w.force_verdicts[1].clone(),
+            Judgement::CannotJudge(why) => fill(&w.force_verdicts[2], &[("why", why)]),
         };
+        let fixed = |x: f64| numbers::decimals(&format!("{x:.4}"), r.lang);
         let _ = writeln!(
             t,
-            "  {}: given {:.4} {u}, expected {:.4} ± {:.4} {u}: {verdict}",
-            v.what,
-            v.given,
-            v.expected,
-            v.tolerance,
-            u = v.unit
+            "{}",
+            fill(
+                &w.force_item,
+                &[
+                    ("what", &v.what),
+                    ("given", &fixed(v.given)),
+                    ("unit", &force_unit(v.unit, r.lang)),
+                    ("expected", &fixed(v.expected)),
+                    ("tol", &fixed(v.tolerance)),
+                    ("verdict", &verdict),
+                ],
+            )
         );
     }
     match &r.diagnosis {
         Some(d) => {
-            let _ = writeln!(t, "  Diagnosis: the plan was drawn with {d}.");
+            let _ = writeln!(t, "{}", fill(&w.force_diagnosis, &[("mistake", d)]));
         }
         None if r.wrong() > 0 => {
-            let _ = writeln!(
-                t,
-                "  Diagnosis: no typical mistake explains the wrong items."
-            );
+            let _ = writeln!(t, "{}", w.force_not_recognised);
         }
         None => {}
     }
     t
+}
+
+/// A force plan item's unit in `lang` (N, N·m, mm as the force plans'
+/// sheets write them; others as the language's unit letters).
+fn force_unit(u: &str, lang: Lang) -> String {
+    let w = &crate::words::catalogue(lang).force_plans;
+    match u {
+        "N" => w.newton.clone(),
+        "N·m" => w.newton_metre.clone(),
+        "mm" => w.mm.clone(),
+        _ => numbers::unit(u, lang),
+    }
 }
 
 /// A force plan's report as JSON.

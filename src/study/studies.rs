@@ -232,7 +232,10 @@ pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -
                 report,
             }))
         }
-        Parsed::Force(ans) => Checked::Force(forces::check(sol.an(), sol.all(), &ans)?),
+        Parsed::Force(ans) => {
+            let lang = lang.unwrap_or_else(|| sol.study().lang());
+            Checked::Force(forces::check_in(sol.an(), sol.all(), &ans, lang)?)
+        }
     })
 }
 

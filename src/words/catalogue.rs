@@ -311,6 +311,8 @@ pub struct CheckPhrases {
     pub grade_wrong_one: String,
     /// `{count}`.
     pub grade_wrong_many: String,
+    /// No step wrong, `{count}` items read off the student's points wrong.
+    pub grade_wrong_items: String,
     pub grade_cannot_judge: String,
     pub steps_heading: String,
     pub steps_columns: [String; 5],
@@ -381,6 +383,24 @@ pub struct CheckPhrases {
     pub item_point: String,
     /// The overlay's title: `{plan}`, `{position}`, `{right}`, `{count}`.
     pub overlay_title: String,
+    /// A force plan's report: `{links}`, `{position}`, `{mu}`, `{delta}`.
+    pub force_title: String,
+    /// `{what}`, `{given}`, `{unit}`, `{expected}`, `{tol}`, `{verdict}`.
+    pub force_item: String,
+    /// Right, wrong, cannot be judged (`{why}`).
+    pub force_verdicts: [String; 3],
+    /// `{mistake}`.
+    pub force_diagnosis: String,
+    pub force_not_recognised: String,
+    /// The force plans' typical mistakes.
+    pub force_not_reversed: String,
+    pub force_weights_left_out: String,
+    /// Why an item cannot be judged: `{mu}`; `{tol}`; `{what}`.
+    pub force_not_finite: String,
+    pub force_too_small: String,
+    pub force_mistake_too: String,
+    /// What an item is: a segment, a direction, a value.
+    pub force_kinds: [String; 3],
 }
 
 /// Each typical mistake in one sentence: made at one decision, made at

@@ -21,6 +21,7 @@ use crate::kinetostatics::loads::{Load, Origin};
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
+use crate::words::{check, numbers};
 use answer::issue;
 
 /// The check of a force plan.
@@ -33,6 +34,8 @@ pub struct ForceReport {
     pub verdicts: Vec<Verdict>,
     /// The typical mistake that explains every wrong item, if one does.
     pub diagnosis: Option<String>,
+    /// The language of its words.
+    pub lang: Lang,
 }
 
 impl ForceReport {
@@ -210,8 +213,18 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
     }
 }
 
-/// Check a force-plan answer against the analysis.
+/// Check a force-plan answer against the analysis (the report in English).
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
+    check_in(an, solved, ans, Lang::En)
+}
+
+/// [`check`] with the report's words in `lang`.
+pub fn check_in(
+    an: &Analysis,
+    solved: &[Solved],
+    ans: &ForceAnswer,
+    lang: Lang,
+) -> Result<ForceReport> {
     let s = super::position_of(solved, ans.position)?;
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return Err(Error::scene(
@@ -246,7 +259,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
     };
     let plan = at_scale(right_loads)?;
     // The typical mistakes, as whole plans at the student's scale.
-    let mistaken: Vec<(&str, ForcePlan)> = mistakes(right_loads)
+    let mistaken: Vec<(&str, ForcePlan)> = mistakes(right_loads, lang)
         .into_iter()
         .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
         .collect();
@@ -256,6 +269,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         plan: &plan,
         ans,
         mistaken: &mistaken,
+        lang,
     };
     let mut verdicts = Vec::new();
     let mut issues = Vec::new();
@@ -297,6 +311,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<Forc
         delta,
         verdicts,
         diagnosis,
+        lang,
     })
 }
 
@@ -331,12 +346,22 @@ fn with_links(
     Ok(ans)
 }
 
+/// An item's kind as the catalogue orders them: segment, angle, value.
+fn kind_index(kind: &str) -> usize {
+    match kind {
+        "segment" => 0,
+        "angle" => 1,
+        _ => 2,
+    }
+}
+
 /// The typical mistakes, each with the loads it draws the plans with:
 /// the inertia forces and couples not reversed, the weights left out.
-fn mistakes(right_loads: &[Load]) -> Vec<(&'static str, Vec<Load>)> {
+fn mistakes(right_loads: &[Load], lang: Lang) -> Vec<(&'static str, Vec<Load>)> {
+    let w = check::phrases(lang);
     vec![
         (
-            "the inertia forces and couples not reversed (m·a_S and J·ε instead of −m·a_S and −J·ε)",
+            w.force_not_reversed.as_str(),
             right_loads
                 .iter()
                 .map(|l| match *l {
@@ -367,7 +392,7 @@ fn mistakes(right_loads: &[Load]) -> Vec<(&'static str, Vec<Load>)> {
                 .collect(),
         ),
         (
-            "the weights left out",
+            w.force_weights_left_out.as_str(),
             // Zeroed in place (a zero force is not drawn), so that every
             // other load keeps its index and its name.
             right_loads
@@ -401,6 +426,8 @@ struct Judge<'a> {
     plan: &'a ForcePlan,
     ans: &'a ForceAnswer,
     mistaken: &'a [(&'a str, ForcePlan)],
+    /// The language of the report's words.
+    lang: Lang,
 }
 
 impl Judge<'_> {
@@ -417,6 +444,7 @@ impl Judge<'_> {
         explained: &mut [usize],
     ) -> std::result::Result<Verdict, crate::error::Issue> {
         let (an, loads, ans) = (self.an, self.loads, self.ans);
+        let w = check::phrases(self.lang);
         let (expected, tol, on_plan) =
             expect(an, loads, self.plan, kind, name, ans).map_err(|msg| issue(pointer, msg))?;
         let unit = match (kind, unit) {
@@ -425,13 +453,8 @@ impl Judge<'_> {
             (_, u) => u,
         };
         if !(expected.is_finite() && tol.is_finite()) {
-            return Err(issue(
-                pointer,
-                format!(
-                    "cannot be judged at μ_F = {} N/mm: the plan's numbers are not finite there",
-                    ans.mu
-                ),
-            ));
+            let mu = crate::format::num(ans.mu);
+            return Err(issue(pointer, check::fill(&w.force_not_finite, &[("mu", &mu)])));
         }
         let diff = difference(kind, given, expected);
         let mut also = None;
@@ -448,20 +471,17 @@ impl Judge<'_> {
         let judgement = if diff > tol {
             Judgement::Wrong
         } else if kind != "angle" && tol >= expected.abs() {
-            Judgement::CannotJudge(format!(
-                "the tolerance ({tol:.3} {unit}) is as large as the value itself: the plan is drawn too small to judge it"
-            ))
+            let tol = numbers::quantity(tol, unit, self.lang);
+            Judgement::CannotJudge(check::fill(&w.force_too_small, &[("tol", &tol)]))
         } else if let Some(what) = also {
-            Judgement::CannotJudge(format!(
-                "a plan drawn with {what} gives it too, within the tolerance"
-            ))
+            Judgement::CannotJudge(check::fill(&w.force_mistake_too, &[("what", what)]))
         } else {
             Judgement::Right
         };
         Ok(Verdict {
             pointer: pointer.to_string(),
             key: name.to_string(),
-            what: format!("{kind} {name}"),
+            what: format!("{} {name}", w.force_kinds[kind_index(kind)]),
             expected,
             given,
             difference: diff,

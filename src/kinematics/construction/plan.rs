@@ -335,7 +335,8 @@ impl Judged {
                 .lines
                 .iter()
                 .map(|&(p, u, tol)| ((at - p).cross(u).abs(), tol))
-                .fold((0.0, 0.0), |a, b| if b.0 / b.1 > a.0 / a.1.max(1e-300) { b } else { a });
+                .max_by(|a, b| (a.0 / a.1.max(1e-300)).total_cmp(&(b.0 / b.1.max(1e-300))))
+                .expect("two lines");
         }
         std::iter::once((self.predicted, self.tol))
             .chain(self.others.iter().copied())
