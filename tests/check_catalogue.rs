@@ -390,8 +390,8 @@ fn seen(
 /// The most honest answers at the standard scale with an item that
 /// cannot be judged, and the fewest rejected answers whose mistake is
 /// named at its step, in per cent.
-const UNDECIDED_PERCENT: usize = 15;
-const NAMED_PERCENT: usize = 95;
+const UNDECIDED_PERCENT: usize = 14;
+const NAMED_PERCENT: usize = 94;
 
 #[derive(Default)]
 struct Counts {

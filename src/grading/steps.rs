@@ -327,7 +327,7 @@ impl Judge<'_> {
         self.plain.judged[..k]
             .iter()
             .filter(|i| i.misfit() <= 1.0)
-            .all(|i| t.entry(i).is_none_or(|y| y.misfit() <= 1.0))
+            .all(|i| t.entry(i).is_some_and(|y| y.misfit() <= 1.0))
     }
 
     /// A right point that a mistaken construction (`fitting`: those that

@@ -157,13 +157,30 @@ impl<'a> Builder<'a> {
             .unwrap_or(0.0)
     }
 
+    /// The place of the next plan point of `id` among those of its id
+    /// (points a mistake left out counted too).
+    fn nth(&self, id: PointId) -> usize {
+        self.plan.points.iter().filter(|p| p.id == id).count()
+            + self.plan.skipped.iter().filter(|&&s| s == id).count()
+    }
+
+    /// Is mistake `m` made at this decision, leaving out the plan point
+    /// `id` it would have drawn? (Recorded as left out.)
+    pub fn forgets(&mut self, m: Mistake, id: PointId) -> bool {
+        let made = self.making(m);
+        if made {
+            self.plan.skipped.push(id);
+        }
+        made
+    }
+
     /// In a replay, where the student drew the next plan point of `id`.
     #[inline]
     pub fn given(&self, id: PointId) -> Option<Vec2> {
         if self.t.given.points.is_empty() {
             return None;
         }
-        let nth = self.plan.points.iter().filter(|p| p.id == id).count();
+        let nth = self.nth(id);
         self.t
             .given
             .points
@@ -180,7 +197,7 @@ impl<'a> Builder<'a> {
     pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
         let (at, err) = match self.given(id) {
             Some(given) => {
-                let nth = self.plan.points.iter().filter(|p| p.id == id).count();
+                let nth = self.nth(id);
                 self.plan.judged.push(Judged {
                     id,
                     nth,

@@ -129,7 +129,10 @@ impl Builder<'_> {
             return (self.line(j, u, Way::Perp(seg)), j);
         }
         let mut w = self.omega(link);
-        if self.t.nr[link] || w == 0.0 || self.making(Mistake::NormalForgotten) {
+        if self.t.nr[link]
+            || w == 0.0
+            || self.forgets(Mistake::NormalForgotten, PointId::Normal { link })
+        {
             return (self.line(j, u, Way::Perp(seg)), j);
         }
         let input = self.m().scene.input.link();
@@ -218,7 +221,7 @@ impl Builder<'_> {
             }
             // The guide's coincident point taken as the slider's: the
             // relative sliding ignored.
-            Some(Mistake::WrongLink) if self.making(Mistake::WrongLink) => sides
+            Some(Mistake::WrongLink) if self.forgets(Mistake::WrongLink, id) => sides
                 .iter()
                 .find_map(|s| match s {
                     Side::Slide { kx, .. } => Some(*kx),
@@ -299,7 +302,7 @@ impl Builder<'_> {
         let w = self.omega(c.link);
         let mut from = j;
         let turns = !self.t.nr[c.link] && w != 0.0;
-        if turns && !self.making(Mistake::NormalForgotten) {
+        if turns && !self.forgets(Mistake::NormalForgotten, PointId::Normal { link: c.link }) {
             let toward = if self.making(Mistake::NormalFromCentre) {
                 1.0
             } else {

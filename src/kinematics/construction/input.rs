@@ -60,6 +60,7 @@ impl Builder<'_> {
                     if rate2 != 0.0 {
                         self.step(|| Act::Equation(Eqn::CrankAcceleration { a: an, o: on }));
                         let n = if forgotten {
+                            self.plan.skipped.push(PointId::Normal { link });
                             0
                         } else {
                             self.normal(0, r * (toward * w * w), link, (an, on), seg, 0.0)
@@ -220,7 +221,7 @@ impl Builder<'_> {
         (x, unknown, known): (Name, usize, usize),
         verr: f64,
     ) -> usize {
-        if self.making(Mistake::CoriolisForgotten) {
+        if self.forgets(Mistake::CoriolisForgotten, PointId::Coriolis { link: unknown }) {
             return from;
         }
         let sense = if self.making(Mistake::CoriolisReversed) {

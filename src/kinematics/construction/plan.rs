@@ -258,6 +258,11 @@ pub struct Plan {
     /// The pair of leashes each class III group took its special point
     /// on, in the order of the construction.
     pub triads: Vec<(usize, usize, usize)>,
+    /// The plan points a deliberate mistake left out (a normal component
+    /// forgotten): counted with the points of their id, so that a later
+    /// point of the same id keeps its place in the order (a replay matches
+    /// the student's points by id and that place).
+    pub skipped: Vec<PointId>,
 }
 
 /// What a replay takes from a student's drawing ([`super::replay`]).
@@ -380,6 +385,7 @@ impl Plan {
             decisions: 0,
             judged: Vec::new(),
             triads: Vec::new(),
+            skipped: Vec::new(),
         }
     }
     /// Empty the plan, at scale `mu` (its buffers kept).
@@ -398,6 +404,7 @@ impl Plan {
         self.decisions = 0;
         self.judged.clear();
         self.triads.clear();
+        self.skipped.clear();
     }
     /// The plan point of the material point of `link` at `local`.
     pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {

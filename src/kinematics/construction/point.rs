@@ -346,7 +346,7 @@ impl Builder<'_> {
         let rate_sym = if self.vel_kind() {
             Rate::Omega(link)
         } else {
-            if w != 0.0 && !self.making(Mistake::NormalForgotten) {
+            if w != 0.0 && !self.forgets(Mistake::NormalForgotten, PointId::Normal { link }) {
                 let normal = What::Product(Product::squared(Rate::Omega(link), seg));
                 let err = 2.0 * w.abs() * self.omega_err(link) * r.hypot();
                 let n = PointId::Normal { link };
