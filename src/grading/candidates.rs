@@ -210,21 +210,7 @@ pub(super) fn cannot_judge(
     let w = check::phrases(lang);
     let quantity = |x: f64, unit: &str| quantity(x, unit, lang);
     // An item's tolerance in mm on the plan.
-    let mm = |e: &Expected| match e.unit {
-        "mm" => Some(e.tol),
-        "°" => None,
-        _ => Some(
-            e.on_plan
-                .map(|(x, _)| {
-                    if e.expected != 0.0 {
-                        e.tol * x / e.expected.abs()
-                    } else {
-                        e.tol / mu
-                    }
-                })
-                .unwrap_or(e.tol / mu),
-        ),
-    };
+    let mm = |e: &Expected| e.tol_mm(mu);
     let tol_mm = mm(e)?;
     if size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
         let (tol, size) = (quantity(tol_mm, "mm"), quantity(size, "mm"));
@@ -254,6 +240,32 @@ pub(super) fn cannot_judge(
         }
     }
     None
+}
+
+/// The position `s` with one group assembled on its other branch: each
+/// group that has one, and that configuration.
+pub(super) fn other_branches(an: &Analysis, s: &Solved) -> Vec<(usize, Configuration)> {
+    let mut out = Vec::new();
+    for g in 0..an.structure.groups.len() {
+        let has_branch = match &an.structure.groups[g] {
+            AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
+            AssurGroup::Triad(_) => false,
+        };
+        if !an.group(g) || !has_branch {
+            continue;
+        }
+        let Ok(mut ps) = PositionSolver::new(&an.mech, &an.structure, an.need.clone()) else {
+            continue;
+        };
+        if ps.branches.sign[g] == 0.0 {
+            continue;
+        }
+        ps.branches.sign[g] = -ps.branches.sign[g];
+        if let Ok(c) = ps.solve_at_coords(s.drives.coords()) {
+            out.push((g, c));
+        }
+    }
+    out
 }
 
 /// Every discrete candidate's plan (the typical mistakes at each of their
@@ -305,24 +317,7 @@ pub(super) fn candidates(b: &Builds, plan: &Plan, exp: &[Expected]) -> Vec<Fit> 
         }
     }
     // The other assembly branch of each group with one.
-    for g in 0..an.structure.groups.len() {
-        let has_branch = match &an.structure.groups[g] {
-            AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
-            AssurGroup::Triad(_) => false,
-        };
-        if !an.group(g) || !has_branch {
-            continue;
-        }
-        let Ok(mut ps) = PositionSolver::new(&an.mech, &an.structure, an.need.clone()) else {
-            continue;
-        };
-        if ps.branches.sign[g] == 0.0 {
-            continue;
-        }
-        ps.branches.sign[g] = -ps.branches.sign[g];
-        let Ok(c) = ps.solve_at_coords(s.drives.coords()) else {
-            continue;
-        };
+    for (g, c) in other_branches(an, s) {
         if let Ok(p) = b.plan(&c, Variant::default())
             && let Some(f) = fit(Candidate::Branch(g), p, 1.0)
         {

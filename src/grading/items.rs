@@ -69,6 +69,19 @@ pub(super) struct Expected {
 }
 
 impl Expected {
+    /// The item's tolerance as a length on a plan at scale `mu`, mm (a
+    /// value's by its segment); `None` for a direction.
+    pub(super) fn tol_mm(&self, mu: f64) -> Option<f64> {
+        match self.unit {
+            "mm" => Some(self.tol),
+            "°" => None,
+            _ => Some(
+                self.on_plan
+                    .filter(|_| self.expected != 0.0)
+                    .map_or(self.tol / mu, |(x, _)| self.tol * x / self.expected.abs()),
+            ),
+        }
+    }
     /// How far another construction's expectation of this item is from
     /// this one's.
     pub(super) fn moved(&self, other: &Expected) -> f64 {

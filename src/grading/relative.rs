@@ -58,17 +58,10 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
                 return g.clone();
             };
             let difference = (e.given - e.expected).abs();
-            let tol_mm = e.on_plan.map_or(0.0, |(x, _)| {
-                if e.expected != 0.0 {
-                    e.tol * x / e.expected.abs()
-                } else {
-                    0.0
-                }
-            });
-            let tol_mm = if e.unit == "mm" { e.tol } else { tol_mm };
+            let tol_mm = e.tol_mm(replay.mu).unwrap_or(0.0);
             let judgement = if difference > e.tol {
                 Judgement::Wrong
-            } else if e.unit != "°" && size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
+            } else if size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
                 let (tol, size) = (quantity(tol_mm, "mm", b.lang), quantity(size, "mm", b.lang));
                 Judgement::CannotJudge(check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]))
             } else {

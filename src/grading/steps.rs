@@ -17,14 +17,12 @@
 //! would have to be drawn to tell them apart.
 
 use super::answer::Given;
-use super::candidates::{Builds, MISTAKES, mistake_sentence};
+use super::candidates::{Builds, MISTAKES, mistake_sentence, other_branches};
 use super::items::resolve;
 use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, StepReport, StepVerdict};
 use crate::accuracy::ACCURACY;
 use crate::error::Result;
 use crate::kinematics::construction::{Drawing, Judged, Mistake, Plan, PlanKind, Variant};
-use crate::kinematics::positions::PositionSolver;
-use crate::model::structure::{AssurGroup, DyadKind};
 use crate::lang::Lang;
 use crate::words::check;
 use crate::words::numbers::{decimals, quantity};
@@ -271,24 +269,8 @@ impl Judge<'_> {
                 }
             }
         }
-        for g in 0..an.structure.groups.len() {
-            let has_branch = match &an.structure.groups[g] {
-                AssurGroup::Dyad(d) => !matches!(d.kind, DyadKind::Prp | DyadKind::Rpp),
-                AssurGroup::Triad(_) => false,
-            };
-            if !an.group(g) || !has_branch {
-                continue;
-            }
-            let Ok(mut ps) = PositionSolver::new(&an.mech, &an.structure, an.need.clone()) else {
-                continue;
-            };
-            if ps.branches.sign[g] == 0.0 {
-                continue;
-            }
-            ps.branches.sign[g] = -ps.branches.sign[g];
-            if let Ok(c) = ps.solve_at_coords(b.s.drives.coords())
-                && let Ok(p) = b.replay(&c, Variant::default(), self.given)
-            {
+        for (g, c) in other_branches(an, b.s) {
+            if let Ok(p) = b.replay(&c, Variant::default(), self.given) {
                 keep(Candidate::Branch(g), p);
             }
         }

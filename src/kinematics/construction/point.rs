@@ -4,7 +4,7 @@
 //! link's measured rates from one — whichever comes out best conditioned.
 
 use super::builder::Builder;
-use super::plan::{Known, Mistake, PointId};
+use super::plan::{Known, Mistake, PlanPoint, PointId};
 use super::record::{Act, By, Name, Product, Rate, Way, What};
 use crate::accuracy::ACCURACY;
 use crate::geom::perp;
@@ -32,6 +32,39 @@ fn off_line_pair(local: Vec2, known: &[(Vec2, usize)]) -> Option<(usize, usize, 
     (0..known.len())
         .flat_map(|i| (i + 1..known.len()).map(move |j| (i, j)))
         .find_map(|(i, j)| off_line_ratio(local, known[i].0, known[j].0).map(|r| (i, j, r)))
+}
+
+/// The figure on plan points `a`, `b` at the complex ratio ρ (the new
+/// point at a + ρ·(b − a)): its place, and its first-order error radius
+/// drawn by proportional division or by two arcs. The figure moves with its
+/// base (|1 − ρ|·e_a + |ρ|·e_b: an extension grows it by its ratio); a
+/// division adds δ and the point's offset from the line, which it does
+/// not draw; two arcs add √2·δ over the sine of the angle they meet at
+/// (the angle of the figure's sides at the new point).
+struct FigureOn {
+    at: Vec2,
+    divide: f64,
+    arcs: f64,
+    sine: f64,
+}
+
+fn figure_on((a, b): (&PlanPoint, &PlanPoint), ratio: Vec2, delta: f64) -> FigureOn {
+    let moved = (Vec2::new(1.0, 0.0) - ratio).hypot() * a.err + ratio.hypot() * b.err;
+    let divide = moved + delta + ratio.y.abs() * (b.at - a.at).hypot();
+    let at = a.at + (b.at - a.at).rotate_scale(ratio);
+    let (ca, cb) = (at - a.at, at - b.at);
+    let sine = if ca.hypot() * cb.hypot() > 0.0 {
+        (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
+    } else {
+        1.0
+    };
+    let arcs = moved + std::f64::consts::SQRT_2 * delta / sine.max(1e-300);
+    FigureOn {
+        at,
+        divide,
+        arcs,
+        sine,
+    }
 }
 
 /// How a point of a link is placed ([`Builder::best_construction`]).
@@ -252,23 +285,12 @@ impl Builder<'_> {
                     continue;
                 }
                 let mut ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
-                let moved =
-                    (Vec2::new(1.0, 0.0) - ratio).hypot() * pts[pa].err + ratio.hypot() * pts[pb].err;
-                let (a_at, b_at) = (pts[pa].at, pts[pb].at);
-                let plan_ab = (b_at - a_at).hypot();
-                let divide = moved + delta + ratio.y.abs() * plan_ab;
                 if mirrored {
                     ratio.y = -ratio.y;
                 }
-                let at = a_at + (b_at - a_at).rotate_scale(ratio);
-                let (ca, cb) = (at - a_at, at - b_at);
-                let s = if ca.hypot() * cb.hypot() > 0.0 {
-                    (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
-                } else {
-                    1.0
-                };
-                let arcs = moved + std::f64::consts::SQRT_2 * delta / s.max(1e-300);
-                out.push((at, divide.min(arcs) + delta));
+                // (A mirror image keeps every error radius.)
+                let f = figure_on((&pts[pa], &pts[pb]), ratio, delta);
+                out.push((f.at, f.divide.min(f.arcs) + delta));
             }
         }
         out
@@ -400,12 +422,8 @@ impl Builder<'_> {
                     continue;
                 }
                 let ratio = (local - la).rotate_scale(Vec2::new(ab.x, -ab.y)) / ab.hypot2();
-                let (ea, eb) = (pts[pa].err, pts[pb].err);
-                let moved = (Vec2::new(1.0, 0.0) - ratio).hypot() * ea + ratio.hypot() * eb;
-                let (a_at, b_at) = (pts[pa].at, pts[pb].at);
-                let plan_ab = (b_at - a_at).hypot();
-                // Division: the offset from the line is not drawn.
-                let divide = moved + delta + ratio.y.abs() * plan_ab;
+                let f = figure_on((&pts[pa], &pts[pb]), ratio, delta);
+                let (divide, arcs, s) = (f.divide, f.arcs, f.sine);
                 let by_division = Construction::Figure {
                     a,
                     b,
@@ -415,16 +433,6 @@ impl Builder<'_> {
                 if ratio.y.abs() <= ACCURACY.collinear_ratio * ratio.hypot().max(1.0) {
                     consider(divide, by_division, &mut best);
                 } else {
-                    // Two arcs from a and b, meeting at the angle of the
-                    // figure's sides at the new point.
-                    let at = a_at + (b_at - a_at).rotate_scale(ratio);
-                    let (ca, cb) = (at - a_at, at - b_at);
-                    let s = if ca.hypot() * cb.hypot() > 0.0 {
-                        (ca.cross(cb) / (ca.hypot() * cb.hypot())).abs()
-                    } else {
-                        1.0
-                    };
-                    let arcs = moved + std::f64::consts::SQRT_2 * delta / s.max(1e-300);
                     // A triangle is drawn by arcs (the lecture's way); a
                     // point a hair off the line by division, where the
                     // arcs would meet at too small an angle.
