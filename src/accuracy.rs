@@ -79,6 +79,14 @@ pub struct Accuracy {
     /// misfit (distance over tolerance) is more than this many times its
     /// own; else both are listed, not recognised.
     pub step_distinct_misfit: f64,
+    /// How a student's point scatters within a step's tolerance, for
+    /// weighing a right construction against a mistaken one that both
+    /// put it there: the tolerance is the worst case of about three
+    /// errors each within δ (the points used read, the pencil, the point
+    /// read), their sum spreads with σ = tolerance/√12, and a point at
+    /// misfit m (distance over tolerance) is exp(−k·m²) as likely as one
+    /// at the centre, k = 1/(2σ²) in tolerances: 6.
+    pub step_scatter: f64,
     /// The force analysis: the smallest reciprocal condition number (1-norm)
     /// of the scaled equilibrium system; below it its rounding (ε/rcond)
     /// could exceed `max_rel_diff` and the position is refused.
@@ -117,6 +125,7 @@ pub const ACCURACY: Accuracy = Accuracy {
     max_tolerance_of_plan: 0.2,
     distinct_misfit: 2.0,
     step_distinct_misfit: 1.5,
+    step_scatter: 6.0,
     min_force_conditioning: f64::EPSILON / 1e-6,
     max_balancing_diff: 1e-6,
     null_normal_force: 1e-9,

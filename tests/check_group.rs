@@ -275,10 +275,11 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
         );
     }
     // Acceleration plans where the true plan alone cannot tell the right
-    // points from a mistake's: at position 5 neither can the steps (a
-    // tangential component drawn ∥ puts b within the step's tolerance),
-    // at position 11 the steps judged from the student's own points can.
-    for (k, names, grade) in [(5, &all[..], "cannot be judged"), (11, &abcd[..], "right")] {
+    // points from a mistake's; the steps judged from the student's own
+    // points can: at position 5 a tangential component drawn ∥ would put
+    // b within its tolerance too, but b sits on the right construction,
+    // where the mistaken one would put it far less likely.
+    for (k, names, grade) in [(5, &all[..], "right"), (11, &abcd[..], "right")] {
         put(
             &format!("undecided-a{k:02}.json"),
             points(&doc, "acceleration", k, names, &mut noise).to_string(),
@@ -361,10 +362,10 @@ fn a_folder_of_thirty_answers_is_graded_at_once() {
     ]);
     assert_eq!(code, 2, "an unreadable answer: status 2\n{stdout}{stderr}");
     let count = |g: &str| built.values().filter(|b| b.grade == g).count();
-    assert_eq!((count("right"), count("wrong")), (18, 7));
+    assert_eq!((count("right"), count("wrong")), (19, 7));
     assert!(
         stdout.contains(&format!(
-            "30 answers: 18 right, 7 wrong, {} cannot be judged, 2 unreadable",
+            "30 answers: 19 right, 7 wrong, {} cannot be judged, 2 unreadable",
             count("cannot be judged")
         )),
         "{stdout}"
@@ -431,7 +432,7 @@ fn a_folder_of_thirty_answers_is_graded_at_once() {
     assert!(page.contains("right-v04 &quot;smith&quot; &amp; &lt;jones&gt;.json"));
     assert!(!page.contains("<jones>"));
     assert!(page.contains("Scene: ") && page.contains("six_link_fig2_10.json"));
-    assert!(page.contains("<b>18</b>right") && page.contains("<b>2</b>unreadable"));
+    assert!(page.contains("<b>19</b>right") && page.contains("<b>2</b>unreadable"));
     assert!(!page.contains("<script") && !page.contains("http://") && !page.contains("https://"));
     // No temporary left behind.
     for d in [&out, &overlays] {

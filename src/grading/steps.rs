@@ -12,9 +12,11 @@
 //! decisions, the other branch of a group, a slip in one laid-off
 //! length); everything after it is judged from the student's points, so
 //! a mistake is counted once. A right step "cannot be judged" only where
-//! such a mistake would put the point within the step's tolerance too
-//! and visibly elsewhere; the verdict says how much larger the plan
-//! would have to be drawn to tell them apart.
+//! such a mistake would put the point within the step's tolerance too,
+//! visibly elsewhere, and explains it at least as well (as likely a
+//! place for the mistaken drawing as for the right one); the verdict
+//! says how much larger the plan would have to be drawn to tell them
+//! apart.
 
 use super::answer::Given;
 use super::candidates::{Builds, MISTAKES, mistake_sentence, other_branches};
@@ -314,7 +316,8 @@ impl Judge<'_> {
 
     /// A right point that a mistaken construction (`fitting`: those that
     /// put it within their own tolerance too) would also give, visibly
-    /// elsewhere (by more than 2δ): why it cannot be judged here.
+    /// elsewhere (by more than 2δ), and as likely: why it cannot be
+    /// judged here.
     fn ambiguous(&self, e: &Judged, fitting: &[(&Try, f64, f64)]) -> Option<String> {
         // Two constructions whose points lie less than 2δ apart give the
         // same drawing: each is drawn to δ.
@@ -324,6 +327,7 @@ impl Judge<'_> {
         let (t, _, moved) = fitting
             .iter()
             .filter(|f| f.2 > visible && !matches!(f.0.c, Candidate::Branch(_)))
+            .filter(|f| f.0.entry(e).is_some_and(|x| odds(e, x) >= 0.0))
             .min_by(|a, b| a.2.total_cmp(&b.2))?;
         let mu = self.b.ans.mu;
         let x = t.entry(e).expect("fits");
@@ -505,4 +509,38 @@ fn same_kind(a: Candidate, b: Candidate) -> bool {
         (Candidate::Slip { .. }, Candidate::Slip { .. }) => true,
         _ => a == b,
     }
+}
+
+/// The log odds of a mistaken construction's step `x` over the right
+/// one's `e` for the student's point: how likely each draws the point
+/// there, each point scattering about its construction's place as the
+/// step's errors do (ACCURACY.step_scatter). A point where two lines
+/// meet is scattered across each line, and spread along them by 1/sine
+/// of their angle: a mistake whose lines meet at a glancing angle could
+/// have put the point anywhere along a long stretch, and is that much
+/// less likely to have put it just here. A line both constructions draw
+/// alike weighs the same for both and is left out.
+fn odds(e: &Judged, x: &Judged) -> f64 {
+    let k = ACCURACY.step_scatter;
+    let at = e.given;
+    if let ([l1, l2], [m1, m2]) = (e.lines.as_slice(), x.lines.as_slice()) {
+        let same = |a: &(Vec2, Vec2, f64), b: &(Vec2, Vec2, f64)| {
+            let scale = 1.0 + a.0.hypot().max(b.0.hypot());
+            a.1.cross(b.1).abs() <= 1e-9 && (b.0 - a.0).cross(a.1).abs() <= 1e-9 * scale
+        };
+        let off = |l: &(Vec2, Vec2, f64)| (at - l.0).cross(l.1).abs() / l.2.max(1e-300);
+        let own = |of: [&(Vec2, Vec2, f64); 2], other: &[(Vec2, Vec2, f64)]| {
+            of.iter()
+                .filter(|l| !other.iter().any(|m| same(l, m)))
+                .map(|l| off(l).powi(2))
+                .sum::<f64>()
+        };
+        let spread = |a: &(Vec2, Vec2, f64), b: &(Vec2, Vec2, f64)| {
+            (a.2 * b.2 / a.1.cross(b.1).abs().max(1e-300)).ln()
+        };
+        let (r, m) = (own([l1, l2], &x.lines), own([m1, m2], &e.lines));
+        return k * (r - m) - (spread(m1, m2) - spread(l1, l2));
+    }
+    let circle = |j: &Judged| 2.0 * j.nearest().1.max(1e-300).ln();
+    k * (e.misfit().powi(2) - x.misfit().powi(2)) - (circle(x) - circle(e))
 }
