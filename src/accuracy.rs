@@ -83,9 +83,11 @@ pub struct Accuracy {
     /// weighing a right construction against a mistaken one that both
     /// put it there: the tolerance is the worst case of about three
     /// errors each within δ (the points used read, the pencil, the point
-    /// read), their sum spreads with σ = tolerance/√12, and a point at
-    /// misfit m (distance over tolerance) is exp(−k·m²) as likely as one
-    /// at the centre, k = 1/(2σ²) in tolerances: 6.
+    /// read), so a point at misfit m (distance over tolerance) is
+    /// (1 − m²)^k as likely as one at the construction's place — a
+    /// density that vanishes at the worst case and, with k = 4, follows
+    /// that of the sum of three such errors to within a tenth of its
+    /// logarithm's range out to m = 0.97.
     pub step_scatter: f64,
     /// The force analysis: the smallest reciprocal condition number (1-norm)
     /// of the scaled equilibrium system; below it its rounding (ε/rcond)
@@ -125,7 +127,7 @@ pub const ACCURACY: Accuracy = Accuracy {
     max_tolerance_of_plan: 0.2,
     distinct_misfit: 2.0,
     step_distinct_misfit: 1.5,
-    step_scatter: 6.0,
+    step_scatter: 4.0,
     min_force_conditioning: f64::EPSILON / 1e-6,
     max_balancing_diff: 1e-6,
     null_normal_force: 1e-9,

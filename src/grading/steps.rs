@@ -129,7 +129,10 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
             .collect();
         // (For a point where two lines meet, also its place along them: two
         // nearly parallel lines leave it undetermined.)
-        let wide = tolerance.max(e.tol) > MAX_TOLERANCE_OF_PLAN * size;
+        // (A point of a figure is judged by whichever right construction
+        // fits it best, with that one's tolerance.)
+        let along = if e.lines.is_empty() { 0.0 } else { e.tol };
+        let wide = tolerance.max(along) > MAX_TOLERANCE_OF_PLAN * size;
         if e.misfit() <= 1.0 && wide {
             // Predicted from points far back (the student drew few), near
             // a dead point: the step cannot place it.
@@ -316,8 +319,8 @@ impl Judge<'_> {
 
     /// A right point that a mistaken construction (`fitting`: those that
     /// put it within their own tolerance too) would also give, visibly
-    /// elsewhere (by more than 2δ), and as likely: why it cannot be
-    /// judged here.
+    /// elsewhere (by more than 2δ where the student put it), and as
+    /// likely ([`odds`]): why it cannot be judged here.
     fn ambiguous(&self, e: &Judged, fitting: &[(&Try, f64, f64)]) -> Option<String> {
         // Two constructions whose points lie less than 2δ apart give the
         // same drawing: each is drawn to δ.
@@ -326,8 +329,19 @@ impl Judge<'_> {
         // mechanism, judged there: the scene fixes its branch.)
         let (t, _, moved) = fitting
             .iter()
-            .filter(|f| f.2 > visible && !matches!(f.0.c, Candidate::Branch(_)))
-            .filter(|f| f.0.entry(e).is_some_and(|x| odds(e, x) >= 0.0))
+            .filter(|f| !matches!(f.0.c, Candidate::Branch(_)))
+            .filter(|f| {
+                let x = f.0.entry(e).expect("fits");
+                // Where both draw two lines, one drawing where those that
+                // differ pass the student's point within 2δ of each other
+                // (their meeting points may lie far apart along lines at
+                // a glancing angle); else where their places do.
+                let seen = match (e.lines.as_slice(), x.lines.as_slice()) {
+                    ([_, _], [_, _]) => separation(e, x) > visible,
+                    _ => f.2 > visible,
+                };
+                seen && odds(e, x) >= 0.0
+            })
             .min_by(|a, b| a.2.total_cmp(&b.2))?;
         let mu = self.b.ans.mu;
         let x = t.entry(e).expect("fits");
@@ -511,6 +525,35 @@ fn same_kind(a: Candidate, b: Candidate) -> bool {
     }
 }
 
+/// A line a judged point is read off: a point on it, its direction, its
+/// tolerance.
+type Line = (Vec2, Vec2, f64);
+
+/// The lines of `of` that `other` does not draw alike.
+fn distinct<'a>(of: &'a [Line], other: &'a [Line]) -> impl Iterator<Item = &'a Line> {
+    let same = |a: &Line, b: &Line| {
+        let scale = 1.0 + a.0.hypot().max(b.0.hypot());
+        a.1.cross(b.1).abs() <= 1e-9 && (b.0 - a.0).cross(a.1).abs() <= 1e-9 * scale
+    };
+    of.iter().filter(move |l| !other.iter().any(|m| same(l, m)))
+}
+
+/// How far from each other the lines that differ between the right
+/// step `e` and a mistaken one `x` pass where the student put the point:
+/// the distance from the foot of the point on each to the other.
+fn separation(e: &Judged, x: &Judged) -> f64 {
+    let at = e.given;
+    let foot = |l: &Line| l.0 + l.1 * (at - l.0).dot(l.1);
+    let off = |p: Vec2, l: &Line| (p - l.0).cross(l.1).abs();
+    let mut widest: f64 = 0.0;
+    for l in distinct(&e.lines, &x.lines) {
+        for m in distinct(&x.lines, &e.lines) {
+            widest = widest.max(off(foot(l), m)).max(off(foot(m), l));
+        }
+    }
+    widest
+}
+
 /// The log odds of a mistaken construction's step `x` over the right
 /// one's `e` for the student's point: how likely each draws the point
 /// there, each point scattering about its construction's place as the
@@ -521,26 +564,16 @@ fn same_kind(a: Candidate, b: Candidate) -> bool {
 /// less likely to have put it just here. A line both constructions draw
 /// alike weighs the same for both and is left out.
 fn odds(e: &Judged, x: &Judged) -> f64 {
-    let k = ACCURACY.step_scatter;
+    // The log density of a point at misfit m (distance over tolerance).
+    let scatter = |m: f64| ACCURACY.step_scatter * (1.0 - m * m).max(1e-300).ln();
     let at = e.given;
     if let ([l1, l2], [m1, m2]) = (e.lines.as_slice(), x.lines.as_slice()) {
-        let same = |a: &(Vec2, Vec2, f64), b: &(Vec2, Vec2, f64)| {
-            let scale = 1.0 + a.0.hypot().max(b.0.hypot());
-            a.1.cross(b.1).abs() <= 1e-9 && (b.0 - a.0).cross(a.1).abs() <= 1e-9 * scale
-        };
-        let off = |l: &(Vec2, Vec2, f64)| (at - l.0).cross(l.1).abs() / l.2.max(1e-300);
-        let own = |of: [&(Vec2, Vec2, f64); 2], other: &[(Vec2, Vec2, f64)]| {
-            of.iter()
-                .filter(|l| !other.iter().any(|m| same(l, m)))
-                .map(|l| off(l).powi(2))
-                .sum::<f64>()
-        };
-        let spread = |a: &(Vec2, Vec2, f64), b: &(Vec2, Vec2, f64)| {
-            (a.2 * b.2 / a.1.cross(b.1).abs().max(1e-300)).ln()
-        };
-        let (r, m) = (own([l1, l2], &x.lines), own([m1, m2], &e.lines));
-        return k * (r - m) - (spread(m1, m2) - spread(l1, l2));
+        let off = |l: &Line| (at - l.0).cross(l.1).abs() / l.2.max(1e-300);
+        let spread = |a: &Line, b: &Line| (a.2 * b.2 / a.1.cross(b.1).abs().max(1e-300)).ln();
+        let r: f64 = distinct(&e.lines, &x.lines).map(|l| scatter(off(l))).sum();
+        let m: f64 = distinct(&x.lines, &e.lines).map(|l| scatter(off(l))).sum();
+        return (m - r) - (spread(m1, m2) - spread(l1, l2));
     }
     let circle = |j: &Judged| 2.0 * j.nearest().1.max(1e-300).ln();
-    k * (e.misfit().powi(2) - x.misfit().powi(2)) - (circle(x) - circle(e))
+    (scatter(x.misfit()) - scatter(e.misfit())) - (circle(x) - circle(e))
 }

@@ -343,21 +343,24 @@ impl Judged {
                 .max_by(|a, b| (a.0 / a.1.max(1e-300)).total_cmp(&(b.0 / b.1.max(1e-300))))
                 .expect("two lines");
         }
-        std::iter::once((self.predicted, self.tol))
-            .chain(self.others.iter().copied())
-            .map(|(p, tol)| ((at - p).hypot(), tol))
-            .min_by(|a, b| (a.0 / a.1).total_cmp(&(b.0 / b.1)))
-            .expect("one prediction")
+        let (p, tol) = self.judging(at);
+        ((at - p).hypot(), tol)
     }
-    /// The prediction of the construction that fits best, with its
-    /// tolerance.
+    /// The prediction of the right construction the student's point is
+    /// judged by, with its tolerance ([`Judged::apart`]).
     pub fn nearest(&self) -> (Vec2, f64) {
-        std::iter::once((self.predicted, self.tol))
-            .chain(self.others.iter().copied())
-            .min_by(|a, b| {
-                ((self.given - a.0).hypot() / a.1.max(1e-300))
-                    .total_cmp(&((self.given - b.0).hypot() / b.1.max(1e-300)))
-            })
+        self.judging(self.given)
+    }
+    /// Of the right constructions, the one a point at `at` is judged by:
+    /// the most precise of those it fits (the construction the plan draws
+    /// where that one fits), else the one it misses least.
+    fn judging(&self, at: Vec2) -> (Vec2, f64) {
+        let all = || std::iter::once((self.predicted, self.tol)).chain(self.others.iter().copied());
+        let ratio = |(p, tol): (Vec2, f64)| (at - p).hypot() / tol.max(1e-300);
+        all()
+            .filter(|&x| ratio(x) <= 1.0)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .or_else(|| all().min_by(|&a, &b| ratio(a).total_cmp(&ratio(b))))
             .expect("one prediction")
     }
 }

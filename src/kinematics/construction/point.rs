@@ -250,8 +250,13 @@ impl Builder<'_> {
                 let out = self.add_point(id, at, e);
                 if self.plan.judged.last().is_some_and(|j| j.point == out) {
                     // A replay: the same point by the figure on any other
-                    // pair of the link's known points is as right.
-                    let others = self.figures(local, known, mirrored);
+                    // pair of the link's known points is as right, and so
+                    // is the relative vector of the link's rates from one
+                    // of them (a figure mirrored is no such thing).
+                    let mut others = self.figures(local, known, mirrored);
+                    if !mirrored {
+                        others.extend(self.relations(link, x, known));
+                    }
                     self.plan.judged.last_mut().expect("just judged").others = others;
                 }
                 self.step(|| Act::Figure {
@@ -294,6 +299,38 @@ impl Builder<'_> {
             }
         }
         out
+    }
+
+    /// The places of the point of `link` at world `x` by the relative
+    /// vector of the link's measured rates from each of its `known`
+    /// points (ω×AX; −ω²·AX + ε×AX), each with its tolerance: the error
+    /// radius as [`Builder::best_construction`] reckons it, plus δ for
+    /// reading the point. None before the plan has measured the rates.
+    fn relations(&self, link: usize, x: Point, known: &[(Vec2, usize)]) -> Vec<(Vec2, f64)> {
+        let Some((rate, rate_err)) = self.plan.rates[link] else {
+            return Vec::new();
+        };
+        let (delta, mu) = (self.plan.delta, self.plan.mu);
+        let w = self.omega(link);
+        known
+            .iter()
+            .map(|&(la, pa)| {
+                let from = &self.plan.points[pa];
+                let r = x - self.c.pose(link).apply(la);
+                let (v, err) = if self.vel_kind() {
+                    (perp(r) * rate, from.err + delta + rate_err * r.hypot() / mu)
+                } else {
+                    let normal = if w != 0.0 {
+                        delta + 2.0 * w.abs() * self.omega_err(link) * r.hypot() / mu
+                    } else {
+                        0.0
+                    };
+                    let v = perp(r) * rate - r * (w * w);
+                    (v, from.err + normal + delta + rate_err * r.hypot() / mu)
+                };
+                (from.at + v / mu, err + delta)
+            })
+            .collect()
     }
 
     /// The mistake of placing a named point of `link` by the figure of a
