@@ -151,3 +151,95 @@ fn a_mu_l_that_does_not_fit_is_refused_with_the_reason() {
     assert!(svg.contains(r#"width="420mm""#));
     assert_eq!(drawn_mu_l(&svg), 0.003);
 }
+
+fn scene_with_scales(tag: &str, scales: serde_json::Value) -> String {
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(fixture_path("six_link_fig2_10")).unwrap())
+            .unwrap();
+    v["want"]["scales"] = scales;
+    let p = dir(tag).join("scene.json");
+    std::fs::write(&p, v.to_string()).unwrap();
+    p.display().to_string()
+}
+
+/// `draw` under a memory limit (a scale nobody can draw once ran to
+/// gigabytes before refusing): its output, and the wall time.
+fn draw_limited(scene: &str, out: &std::path::Path) -> (Output, std::time::Duration) {
+    let t = std::time::Instant::now();
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 400000; exec '{EXE}' draw '{scene}' -o '{}'",
+            out.display()
+        ))
+        .output()
+        .unwrap();
+    (o, t.elapsed())
+}
+
+#[test]
+fn a_scale_no_sheet_can_hold_is_refused_at_once() {
+    // The joints alone at μ_l = 1e-9 m/mm span 9.5e8 mm: refused before
+    // anything is drawn (it once took 20 s and 690 MB at 1e-6, and ran
+    // out of memory at 1e-9), as are plans at μ_v or μ_a = 1e-9.
+    for (tag, scales, field, part) in [
+        (
+            "l",
+            serde_json::json!({ "mu_l": 1e-9 }),
+            "/want/scales/mu_l",
+            "is at least (its joints alone) 9.537e8 mm × 3.997e8 mm",
+        ),
+        (
+            "v",
+            serde_json::json!({ "mu_v": 1e-9 }),
+            "/want/scales/mu_v",
+            "the smallest standard μ_v that fits every position is 0.02 (m/s)/mm",
+        ),
+        (
+            "a",
+            serde_json::json!({ "mu_a": 1e-9 }),
+            "/want/scales/mu_a",
+            "the smallest standard μ_a that fits every position is 0.2 (m/s²)/mm",
+        ),
+    ] {
+        let scene = scene_with_scales(&format!("absurd-{tag}"), scales);
+        let out = dir(&format!("absurd-{tag}-out"));
+        let (o, took) = draw_limited(&scene, &out);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{tag}: {err}");
+        assert!(err.contains(field) && err.contains(part), "{tag}: {err}");
+        assert!(took.as_secs_f64() < 1.0, "{tag}: refused after {took:?}");
+        assert_eq!(std::fs::read_dir(&out).unwrap().count(), 0, "nothing drawn");
+    }
+}
+
+#[test]
+fn a_plan_scale_that_overflows_one_position_is_refused_naming_it() {
+    // At μ_v = 0.01 (m/s)/mm the six-link's velocity plan at position 9
+    // is 184.6 mm tall, more than A4's 178 mm field: once drawn off the
+    // sheet without a word, now refused with the scale that fits all
+    // twelve positions, at which it is drawn.
+    let scene = scene_with_scales("v-over", serde_json::json!({ "mu_v": 0.01 }));
+    let out = dir("v-over-out");
+    let o = run(&["draw", &scene, "-o", out.to_str().unwrap()]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    for part in [
+        "/want/scales/mu_v",
+        "136.7 mm × 184.6 mm at position 9",
+        "(260.0 mm × 178.0 mm)",
+        "fits every position is 0.02 (m/s)/mm",
+    ] {
+        assert!(err.contains(part), "no \"{part}\" in {err}");
+    }
+    let scene = scene_with_scales("v-fits", serde_json::json!({ "mu_v": 0.02 }));
+    let out = dir("v-fits-out");
+    let o = run(&["draw", &scene, "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for k in 1..=12 {
+        assert_eq!(
+            manifest_scale(&out, &format!("velocity_{k}.svg"), "mu_v"),
+            0.02
+        );
+    }
+}

@@ -185,6 +185,23 @@ impl Analysis {
         crate::kinematics::construction::build_plans(&self.setup(), &s.config, s.drives, order, d)
     }
 
+    /// [`Analysis::plans_at_scales`] with the scales given winning over
+    /// the scene's (what a scene's scale would be, were it another).
+    pub fn plans_at_given_scales(
+        &self,
+        s: &Position,
+        order: Order,
+        mu_v: Option<f64>,
+        mu_a: Option<f64>,
+    ) -> Result<crate::kinematics::construction::Plans> {
+        let d = Drafting {
+            mu_v: mu_v.or(self.drafting.mu_v),
+            mu_a: mu_a.or(self.drafting.mu_a),
+            ..self.drafting
+        };
+        crate::kinematics::construction::build_plans(&self.setup(), &s.config, s.drives, order, d)
+    }
+
     pub fn setup(&self) -> Setup<'_> {
         Setup {
             m: &self.mech,

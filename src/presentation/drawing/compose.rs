@@ -90,6 +90,18 @@ pub fn sheets_on(
         return Ok((compose(an, solved, &opt, Scale::Scene)?, first));
     };
     let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
+    // Counted before anything is drawn: the joints alone at μ_l. A drawing
+    // that no standard sheet could hold is refused at once (drawn at such
+    // a scale, its hatching alone would run to millions of strokes).
+    let e = mechanism_extent(an, solved);
+    let joints = Rect::new(0.0, 0.0, e.width() / mu_l, e.height() / mu_l);
+    let largest = DrawOptions {
+        sheet: SheetSize::ALL[SheetSize::ALL.len() - 1],
+        ..*opt
+    };
+    if !solved.is_empty() && !fits(joints, field_size(&largest, 0.0)) {
+        return Err(misfit(an, solved, opt, sizes, (joints, true), mu_l, t.as_ref()));
+    }
     let u = mechanism_union(an, solved, opt, mu_l, t.as_ref());
     for &size in sizes {
         let opt = DrawOptions {
@@ -100,7 +112,7 @@ pub fn sheets_on(
             return Ok((compose(an, solved, &opt, Scale::Scene)?, size));
         }
     }
-    Err(misfit(an, solved, opt, sizes, u, mu_l, t.as_ref()))
+    Err(misfit(an, solved, opt, sizes, (u, false), mu_l, t.as_ref()))
 }
 
 /// The extent of the mechanism's drawings at `mu_l`: every position's
@@ -122,13 +134,14 @@ fn mechanism_union(
 }
 
 /// Why the mechanism's drawings at the scene's μ_l do not fit any of
-/// `sizes`, and what would.
+/// `sizes`, and what would; `u` their extent, or with `at_least` a lower
+/// bound of it (the joints alone, when they fit no sheet).
 fn misfit(
     an: &Analysis,
     solved: &[Solved],
     opt: &DrawOptions,
     sizes: &[SheetSize],
-    u: Rect,
+    (u, at_least): (Rect, bool),
     mu_l: f64,
     t: Option<&positions::Trajectories>,
 ) -> Error {
@@ -165,8 +178,13 @@ fn misfit(
             q(ah, "mm")
         )
     };
+    let is = if at_least {
+        "is at least (its joints alone)"
+    } else {
+        "is"
+    };
     let mut msg = format!(
-        "the drawing of the mechanism at μ_l = {mu_l} m/mm (want.scales.mu_l) is {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
+        "the drawing of the mechanism at μ_l = {mu_l} m/mm (want.scales.mu_l) {is} {} × {}, {field}; the smallest standard μ_l that fits sheet {first:?} is {mu} m/mm",
         q(u.width(), "mm"),
         q(u.height(), "mm"),
     );
@@ -186,6 +204,7 @@ fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> R
         Scale::Scene => an.mech.scene.want.scales.mu_l,
         Scale::Fill => None,
     };
+    fixed_plan_scales(an, solved, opt)?;
     let mut out: Vec<Pending> = Vec::new();
     let field = field_size(opt, 0.0);
     let extent = mechanism_extent(an, solved);
@@ -303,11 +322,7 @@ fn position_sheets(
         {
             continue;
         }
-        let (plan, c, t) = plan_figure(an, s, kind, opt, |plan| {
-            let t = opt.table.then(|| table::plan_table(plan, opt.lang));
-            let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
-            field_size(opt, right)
-        });
+        let (plan, c, t) = plan_figure(an, s, kind, opt);
         let (sym, unit, key) = match kind {
             PlanKind::Velocity => ("v", "m/s", "mu_v"),
             PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
@@ -342,73 +357,144 @@ fn too_large() -> Error {
     Error::Internal("no standard scale up to a million times the first fits the sheet".into())
 }
 
-/// A plan of position `s` at the scale that fills the field `field(plan)`
-/// gives for it (the scene's scale where it fixes one): the plan, its
-/// drawing and the table for it.
-fn plan_figure(
+/// The solved plan of `kind` at position `s`, the extent of its points
+/// (mm, the pole included) and the field it is drawn in (beside its table
+/// when one is asked for).
+fn plan_extent(s: &Solved, kind: PlanKind, opt: &DrawOptions) -> (Plan, Rect, (f64, f64)) {
+    let p = s.plans.as_ref().expect("a plan asked for");
+    let plan = match kind {
+        PlanKind::Velocity => p.velocity.clone(),
+        PlanKind::Acceleration => p.acceleration.clone().expect("an acceleration plan"),
+    };
+    let t = opt.table.then(|| table::plan_table(&plan, opt.lang));
+    let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
+    let points = plan.points.iter().fold(Rect::ZERO, |r, q| {
+        r.union(Rect::from_points(q.at.to_point(), q.at.to_point()))
+    });
+    (plan, points, field_size(opt, right))
+}
+
+fn draw_plan(an: &Analysis, plan: &Plan) -> Canvas {
+    let mut c = Canvas::default();
+    plan::draw(plan, &mut c, &an.points);
+    c
+}
+
+/// The smallest standard scale at which the plan of `kind` at `s`, built
+/// again at it (whatever the scene fixes), is drawn within `field`; the
+/// plan and its drawing. `plan`, `points`: the solved plan and its extent.
+fn fitting_scale(
     an: &Analysis,
     s: &Solved,
     kind: PlanKind,
-    opt: &DrawOptions,
-    field: impl Fn(&Plan) -> (f64, f64),
-) -> (Plan, Canvas, Option<table::Ruled>) {
-    let solved_plan = || {
-        let p = s.plans.as_ref().expect("a plan asked for");
-        match kind {
-            PlanKind::Velocity => p.velocity.clone(),
-            PlanKind::Acceleration => p.acceleration.clone().expect("an acceleration plan"),
-        }
-    };
-    let draw = |plan: &Plan| {
-        let mut c = Canvas::default();
-        plan::draw(plan, &mut c, &an.points);
-        c
-    };
-    let table = |plan: &Plan| opt.table.then(|| table::plan_table(plan, opt.lang));
-    let fixed = match kind {
-        PlanKind::Velocity => an.drafting.mu_v,
-        PlanKind::Acceleration => an.drafting.mu_a,
-    };
-    let p0 = solved_plan();
-    if fixed.is_some() {
-        let c = draw(&p0);
-        let t = table(&p0);
-        return (p0, c, t);
-    }
-    let f = field(&p0);
-    let (lo, hi) = p0.points.iter().fold(
-        (Point::new(0.0, 0.0), Point::new(0.0, 0.0)),
-        |(lo, hi), q| {
-            let a = q.at.to_point();
-            (
-                Point::new(lo.x.min(a.x), lo.y.min(a.y)),
-                Point::new(hi.x.max(a.x), hi.y.max(a.y)),
-            )
-        },
-    );
-    let lower = lower_scale((hi.x - lo.x) * p0.mu, (hi.y - lo.y) * p0.mu, f);
+    (plan, points): (&Plan, Rect),
+    field: (f64, f64),
+) -> Option<(f64, (Plan, Canvas))> {
+    let lower = lower_scale(points.width() * plan.mu, points.height() * plan.mu, field);
     let rebuild = |mu: f64| -> Option<(Plan, Canvas)> {
         let (order, mv, ma) = match kind {
             PlanKind::Velocity => (Order::Velocity, Some(mu), None),
             PlanKind::Acceleration => (Order::Acceleration, None, Some(mu)),
         };
-        let p = an.plans_at_scales(s, order, mv, ma).ok()?;
+        let p = an.plans_at_given_scales(s, order, mv, ma).ok()?;
         let plan = match kind {
             PlanKind::Velocity => p.velocity,
             PlanKind::Acceleration => p.acceleration?,
         };
-        let c = draw(&plan);
+        let c = draw_plan(an, &plan);
         Some((plan, c))
     };
-    match fill(lower, f, rebuild, |(_, c)| c.bounds()) {
+    fill(lower, field, rebuild, |(_, c)| c.bounds())
+}
+
+/// The scales the scene fixes for its plans (`want.scales.mu_v`, `mu_a`),
+/// counted before anything is drawn: where a plan's points alone overflow
+/// the field at some position, a refusal naming the worst position, with
+/// the smallest standard scale that fits every position (drawn at a scale
+/// of a millionth of the right one, a plan's dashed lines alone would
+/// take gigabytes).
+fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<()> {
+    for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+        let (fixed, name, sym, unit, key) = match kind {
+            PlanKind::Velocity => (an.drafting.mu_v, "velocity", "v", "(m/s)/mm", "mu_v"),
+            PlanKind::Acceleration => (an.drafting.mu_a, "acceleration", "a", "(m/s²)/mm", "mu_a"),
+        };
+        let Some(mu) = fixed else { continue };
+        if !asked(an, solved, name) {
+            continue;
+        }
+        let drawn: Vec<(usize, &Solved)> = solved
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| {
+                s.plans.as_ref().is_some_and(|p| {
+                    kind == PlanKind::Velocity || p.acceleration.is_some()
+                })
+            })
+            .collect();
+        let over = |points: Rect, f: (f64, f64)| (points.width() / f.0).max(points.height() / f.1);
+        let worst = drawn
+            .iter()
+            .map(|&(k, s)| {
+                let (_, points, f) = plan_extent(s, kind, opt);
+                (k, points, f, over(points, f))
+            })
+            .max_by(|a, b| a.3.total_cmp(&b.3));
+        let Some((k, points, f, ratio)) = worst.filter(|w| w.3 > 1.0) else {
+            continue;
+        };
+        let q = |x: f64| crate::format::format_quantity(x, "mm");
+        let mut msg = format!(
+            "the plan at μ_{sym} = {mu} {unit} (want.scales.{key}) is at least (its points alone) {} × {} at position {} ({} times the field), larger than the field of sheet {:?} ({} × {})",
+            q(points.width()),
+            q(points.height()),
+            k + 1,
+            crate::format::format_number(ratio),
+            opt.sheet,
+            q(f.0),
+            q(f.1),
+        );
+        let fit = drawn.iter().try_fold(0.0_f64, |m, &(_, s)| {
+            let (plan, points, f) = plan_extent(s, kind, opt);
+            fitting_scale(an, s, kind, (&plan, points), f).map(|x| m.max(x.0))
+        });
+        if let Some(fit) = fit {
+            msg += &format!("; the smallest standard μ_{sym} that fits every position is {fit} {unit}");
+        }
+        msg += &format!(", or leave μ_{sym} to mechplan (it fills the sheet)");
+        return Err(Error::scene(format!("/want/scales/{key}"), msg));
+    }
+    Ok(())
+}
+
+/// A plan of position `s` at the scale that fills its field (the scene's
+/// scale where it fixes one: [`fixed_plan_scales`] has seen it fit): the
+/// plan, its drawing and the table for it.
+fn plan_figure(
+    an: &Analysis,
+    s: &Solved,
+    kind: PlanKind,
+    opt: &DrawOptions,
+) -> (Plan, Canvas, Option<table::Ruled>) {
+    let table = |plan: &Plan| opt.table.then(|| table::plan_table(plan, opt.lang));
+    let fixed = match kind {
+        PlanKind::Velocity => an.drafting.mu_v,
+        PlanKind::Acceleration => an.drafting.mu_a,
+    };
+    let (p0, points, f) = plan_extent(s, kind, opt);
+    let found = fixed
+        .is_none()
+        .then(|| fitting_scale(an, s, kind, (&p0, points), f))
+        .flatten();
+    match found {
         Some((_, (plan, c))) => {
             let t = table(&plan);
             (plan, c, t)
         }
-        // A plan all at the pole (everything at rest) or one that cannot
-        // be built again: the solver's own.
+        // The scene's scale, a plan all at the pole (everything at rest)
+        // or one that cannot be built again: the solver's own.
         None => {
-            let c = draw(&p0);
+            let c = draw_plan(an, &p0);
             let t = table(&p0);
             (p0, c, t)
         }
