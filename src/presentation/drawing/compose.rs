@@ -16,7 +16,7 @@ use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
-use kurbo::{Point, Rect};
+use kurbo::Rect;
 
 /// Whether the scene asks for drawing `d` (`want.drawings`; by default the
 /// plan of the mechanism and the plans wanted, plus the positions sheet
