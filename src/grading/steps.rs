@@ -136,7 +136,7 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
         if e.misfit() <= 1.0 && wide {
             // Predicted from points far back (the student drew few), near
             // a dead point: the step cannot place it.
-            let tol = quantity(tolerance.max(e.tol), "mm", lang);
+            let tol = quantity(tolerance.max(along), "mm", lang);
             let size = quantity(size, "mm", lang);
             let w = check::phrases(lang);
             let why = check::fill(&w.too_wide_step, &[("tol", &tol), ("size", &size)]);
@@ -540,18 +540,25 @@ fn distinct<'a>(of: &'a [Line], other: &'a [Line]) -> impl Iterator<Item = &'a L
 
 /// How far from each other the lines that differ between the right
 /// step `e` and a mistaken one `x` pass where the student put the point:
-/// the distance from the foot of the point on each to the other.
+/// each line paired with the one it corresponds to (the pairing that
+/// keeps them closest), the distance from the foot of the point on each
+/// to the other, the largest.
 fn separation(e: &Judged, x: &Judged) -> f64 {
     let at = e.given;
     let foot = |l: &Line| l.0 + l.1 * (at - l.0).dot(l.1);
     let off = |p: Vec2, l: &Line| (p - l.0).cross(l.1).abs();
-    let mut widest: f64 = 0.0;
-    for l in distinct(&e.lines, &x.lines) {
-        for m in distinct(&x.lines, &e.lines) {
-            widest = widest.max(off(foot(l), m)).max(off(foot(m), l));
+    let apart = |l: &Line, m: &Line| off(foot(l), m).max(off(foot(m), l));
+    let own: Vec<&Line> = distinct(&e.lines, &x.lines).collect();
+    let mis: Vec<&Line> = distinct(&x.lines, &e.lines).collect();
+    match (own.as_slice(), mis.as_slice()) {
+        ([l], [m]) => apart(l, m),
+        ([l1, l2], [m1, m2]) => {
+            let straight = apart(l1, m1).max(apart(l2, m2));
+            let crossed = apart(l1, m2).max(apart(l2, m1));
+            straight.min(crossed)
         }
+        _ => 0.0,
     }
-    widest
 }
 
 /// The log odds of a mistaken construction's step `x` over the right
@@ -574,6 +581,11 @@ fn odds(e: &Judged, x: &Judged) -> f64 {
         let m: f64 = distinct(&x.lines, &e.lines).map(|l| scatter(off(l))).sum();
         return (m - r) - (spread(m1, m2) - spread(l1, l2));
     }
-    let circle = |j: &Judged| 2.0 * j.nearest().1.max(1e-300).ln();
-    (scatter(x.misfit()) - scatter(e.misfit())) - (circle(x) - circle(e))
+    // A point judged by its place: by the right construction it is
+    // judged by (`apart`), its misfit and its spread from the same one.
+    let weight = |j: &Judged| {
+        let (d, t) = j.apart(j.given);
+        scatter(d / t.max(1e-300)) - 2.0 * t.max(1e-300).ln()
+    };
+    weight(x) - weight(e)
 }

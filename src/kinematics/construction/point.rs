@@ -252,9 +252,10 @@ impl Builder<'_> {
                     // A replay: the same point by the figure on any other
                     // pair of the link's known points is as right, and so
                     // is the relative vector of the link's rates from one
-                    // of them (a figure mirrored is no such thing).
+                    // of them (in the right construction: in a mistaken
+                    // one it would be the right place again).
                     let mut others = self.figures(local, known, mirrored);
-                    if !mirrored {
+                    if self.variant.mistake.is_none() {
                         others.extend(self.relations(link, x, known));
                     }
                     self.plan.judged.last_mut().expect("just judged").others = others;
