@@ -73,29 +73,53 @@ pub fn write_atomically_with(
 /// temporary of this call; only then are they renamed into place (a
 /// failing rename removes the temporaries not yet renamed).
 pub fn write_files_atomically(files: &[(PathBuf, &[u8])]) -> Result<()> {
-    let mut temps: Vec<(PathBuf, &Path)> = Vec::new();
-    let remove = |temps: &[(PathBuf, &Path)]| {
-        for (tmp, _) in temps {
-            let _ = std::fs::remove_file(tmp);
-        }
-    };
+    let mut staged = Staged::default();
     for (path, bytes) in files {
-        match write_pending(path, |out| out.write_bytes(bytes)) {
-            Ok(Pending::Direct) => {}
-            Ok(Pending::Temp(tmp)) => temps.push((tmp, path)),
-            Err(e) => {
-                remove(&temps);
-                return Err(e);
+        staged.put(path, bytes)?;
+    }
+    staged.commit()
+}
+
+/// Files written one by one to temporaries beside their places and
+/// renamed into place together by [`Staged::commit`]; dropped before it,
+/// every temporary is removed: nothing is written half-way, and a long
+/// run need not hold its files in memory until the end.
+#[derive(Default)]
+pub struct Staged {
+    temps: Vec<(PathBuf, PathBuf)>,
+}
+
+impl Staged {
+    /// Write `path`'s content to its temporary (a device or pipe
+    /// directly).
+    pub fn put(&mut self, path: &Path, bytes: &[u8]) -> Result<()> {
+        if let Pending::Temp(tmp) = write_pending(path, |out| out.write_bytes(bytes))? {
+            self.temps.push((tmp, path.to_path_buf()));
+        }
+        Ok(())
+    }
+
+    /// Rename every temporary into its place.
+    pub fn commit(mut self) -> Result<()> {
+        let temps = std::mem::take(&mut self.temps);
+        for (k, (tmp, path)) in temps.iter().enumerate() {
+            if let Err(e) = std::fs::rename(tmp, path) {
+                for (t, _) in &temps[k..] {
+                    let _ = std::fs::remove_file(t);
+                }
+                return Err(write_error(&path.display().to_string(), e));
             }
         }
+        Ok(())
     }
-    for (k, (tmp, path)) in temps.iter().enumerate() {
-        if let Err(e) = std::fs::rename(tmp, path) {
-            remove(&temps[k..]);
-            return Err(write_error(&path.display().to_string(), e));
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        for (tmp, _) in &self.temps {
+            let _ = std::fs::remove_file(tmp);
         }
     }
-    Ok(())
 }
 
 /// A file written and still to be renamed into place, or written directly.

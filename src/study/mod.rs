@@ -36,7 +36,7 @@ mod studies;
 pub use check_file::check_file;
 pub use group::{GRADEBOOK, Graded, OVERLAYS, SUMMARY, check_group, is_group};
 pub use prepared::{DEFAULT_SCENE, DrawRequest, Results, Study, read};
-pub use sheets::{Written, write_sheets};
+pub use sheets::{SheetWriter, Written, write_sheets};
 pub use solution::{LinkResult, PointResult, PositionResult, Positions, Solution};
 pub use studies::{
     Centres, CheckRequest, Checked, Diagram, Invariants, KinematicCheck, PrecisionReport,

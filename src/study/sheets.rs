@@ -2,10 +2,11 @@
 //! next run remove the sheets of its own it no longer draws
 //! ([`write_sheets`]).
 
-use super::files::{write_error, write_files_atomically};
+use super::files::{Staged, write_error};
 use crate::error::Result;
 use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
 use crate::presentation::drawing::{Format, Sheet, pdf, pdf_book, png};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 /// Files written, and what the user should be told of the folder.
@@ -42,74 +43,124 @@ fn listed(dir: &Path) -> Vec<String> {
 }
 
 /// Write every sheet into `dir` in `format` (with the PDF book of them
-/// all for PDF) and the manifest, all or nothing: every file is rendered,
-/// then written to a temporary beside its place, and only when all are
-/// written are they renamed into place; a failure removes every temporary
-/// of this run ([`write_files_atomically`]). Then the
-/// sheets an earlier run listed in the manifest and this one did not
-/// write are removed, each named in a note.
+/// all for PDF) and the manifest, all or nothing ([`SheetWriter`]).
 pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format, dpi: f64) -> Result<Written> {
-    std::fs::create_dir_all(dir).map_err(|e| write_error(&dir.display().to_string(), e))?;
-    let before = listed(dir);
-    // Render everything first, so that a failure writes nothing.
-    let mut files = Vec::new();
+    let mut w = SheetWriter::new(dir, format, dpi)?;
     for s in sheets {
-        let (ext, bytes) = match format {
-            Format::Svg => ("svg", s.svg.clone().into_bytes()),
-            Format::Png => ("png", png(&s.svg, dpi)?),
+        w.put(s.clone())?;
+    }
+    w.finish()
+}
+
+/// Sheets written into a folder as they come, all or nothing: each is
+/// rendered and written to a temporary beside its place at once (so a
+/// run of thousands of sheets holds none of them), and only
+/// [`SheetWriter::finish`] writes the PDF book and the manifest and
+/// renames everything into place; a failure, or a writer dropped
+/// unfinished, removes every temporary of this run. Then the sheets an
+/// earlier run listed in the manifest and this one did not write are
+/// removed, each named in a note.
+pub struct SheetWriter {
+    dir: PathBuf,
+    format: Format,
+    dpi: f64,
+    before: Vec<String>,
+    staged: Staged,
+    /// The sheets written, for the manifest (their SVG kept only for a
+    /// PDF book), and their files.
+    sheets: Vec<Sheet>,
+    paths: Vec<PathBuf>,
+}
+
+impl SheetWriter {
+    /// A writer into `dir` (made if missing), reading the manifest an
+    /// earlier run left there.
+    pub fn new(dir: &Path, format: Format, dpi: f64) -> Result<SheetWriter> {
+        std::fs::create_dir_all(dir).map_err(|e| write_error(&dir.display().to_string(), e))?;
+        Ok(SheetWriter {
+            dir: dir.to_path_buf(),
+            format,
+            dpi,
+            before: listed(dir),
+            staged: Staged::default(),
+            sheets: Vec::new(),
+            paths: Vec::new(),
+        })
+    }
+
+    /// Render sheet `s` and write it to its temporary.
+    pub fn put(&mut self, mut s: Sheet) -> Result<()> {
+        let (ext, bytes) = match self.format {
+            Format::Svg => ("svg", std::mem::take(&mut s.svg).into_bytes()),
+            Format::Png => ("png", png(&s.svg, self.dpi)?),
             Format::Pdf => ("pdf", pdf(&s.svg)?),
         };
-        files.push((dir.join(format!("{}.{ext}", s.name)), bytes));
+        let path = self.dir.join(format!("{}.{ext}", s.name));
+        self.staged.put(&path, &bytes)?;
+        if self.format != Format::Pdf {
+            s.svg = String::new();
+        }
+        self.sheets.push(s);
+        self.paths.push(path);
+        Ok(())
     }
-    let paths: Vec<PathBuf> = files.iter().map(|(p, _)| p.clone()).collect();
-    if format == Format::Pdf && sheets.len() > 1 {
-        files.push((dir.join(BOOK), pdf_book(sheets)?));
-    }
-    files.push((
-        dir.join(MANIFEST),
-        manifest(sheets, &paths, format).into_bytes(),
-    ));
-    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), &b[..])).collect();
-    write_files_atomically(&refs)?;
-    let mut notes = Vec::new();
-    let written: Vec<PathBuf> = files.into_iter().map(|(p, _)| p).collect();
-    let removed: Vec<String> = before
-        .into_iter()
-        .map(|old| dir.join(old))
-        .filter(|p| !written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
-        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-        .collect();
-    if !removed.is_empty() {
-        notes.push(format!(
-            "removed {} sheet file(s) of an earlier run in {} that this run does not draw: {}",
-            removed.len(),
-            dir.display(),
-            abbreviate(&removed)
-        ));
-    }
-    // Sheets by the names this program gives, neither written now nor
-    // listed by a manifest (an older version's): said, left alone.
-    if let Ok(entries) = std::fs::read_dir(dir) {
-        let mut stale: Vec<String> = entries
-            .filter_map(|e| e.ok())
-            .map(|e| e.path())
-            .filter(|p| p.is_file() && !written.contains(p) && looks_like_a_sheet(p))
+
+    /// The book and the manifest, everything renamed into place, and the
+    /// notes on what else the folder holds.
+    pub fn finish(mut self) -> Result<Written> {
+        let mut written = std::mem::take(&mut self.paths);
+        if self.format == Format::Pdf && self.sheets.len() > 1 {
+            let book = self.dir.join(BOOK);
+            self.staged.put(&book, &pdf_book(&self.sheets)?)?;
+            written.push(book);
+        }
+        let m = self.dir.join(MANIFEST);
+        self.staged
+            .put(&m, manifest(&self.sheets, &written, self.format).as_bytes())?;
+        written.push(m);
+        let staged = std::mem::take(&mut self.staged);
+        staged.commit()?;
+        let dir = &self.dir;
+        let mut notes = Vec::new();
+        let is_written: HashSet<&PathBuf> = written.iter().collect();
+        let removed: Vec<String> = std::mem::take(&mut self.before)
+            .into_iter()
+            .map(|old| dir.join(old))
+            .filter(|p| !is_written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
             .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
             .collect();
-        stale.sort();
-        if !stale.is_empty() {
+        if !removed.is_empty() {
             notes.push(format!(
-                "{} sheet file(s) in {} are not from this run (no manifest lists them; left as they are): {}",
-                stale.len(),
+                "removed {} sheet file(s) of an earlier run in {} that this run does not draw: {}",
+                removed.len(),
                 dir.display(),
-                abbreviate(&stale)
+                abbreviate(&removed)
             ));
         }
+        // Sheets by the names this program gives, neither written now nor
+        // listed by a manifest (an older version's): said, left alone.
+        if let Ok(entries) = std::fs::read_dir(dir) {
+            let mut stale: Vec<String> = entries
+                .filter_map(|e| e.ok())
+                .map(|e| e.path())
+                .filter(|p| p.is_file() && !is_written.contains(p) && looks_like_a_sheet(p))
+                .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+                .collect();
+            stale.sort();
+            if !stale.is_empty() {
+                notes.push(format!(
+                    "{} sheet file(s) in {} are not from this run (no manifest lists them; left as they are): {}",
+                    stale.len(),
+                    dir.display(),
+                    abbreviate(&stale)
+                ));
+            }
+        }
+        Ok(Written {
+            files: written,
+            notes,
+        })
     }
-    Ok(Written {
-        files: written,
-        notes,
-    })
 }
 
 /// The first names of a list and how many more.

@@ -3,7 +3,7 @@
 //! name ([`PositionResult::point`], [`PositionResult::link`]).
 
 use super::prepared::Watcher;
-use super::{DrawRequest, Study, Written, files, write_sheets};
+use super::{DrawRequest, SheetWriter, Study, Written, files};
 use crate::error::{Error, Result};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
@@ -111,6 +111,22 @@ impl<'a> Solution<'a> {
     /// # Ok::<(), mechplan::Error>(())
     /// ```
     pub fn sheets(&self, req: &DrawRequest) -> Result<(Vec<Sheet>, SheetSize)> {
+        let mut sheets = Vec::new();
+        let size = self.sheets_each(req, &mut |s| {
+            sheets.push(s);
+            Ok(())
+        })?;
+        Ok((sheets, size))
+    }
+
+    /// [`Solution::sheets`], each sheet handed to `sink` as soon as it is
+    /// drawn (and dropped there: what [`Solution::draw`] writes as it
+    /// goes); the sheet size used.
+    pub fn sheets_each(
+        &self,
+        req: &DrawRequest,
+        sink: &mut dyn FnMut(Sheet) -> Result<()>,
+    ) -> Result<SheetSize> {
         req.validate()?;
         let sizes = match req.sheet {
             Some(s) => vec![s],
@@ -124,7 +140,7 @@ impl<'a> Solution<'a> {
             centres: req.centres,
             course: req.course,
         };
-        drawing::sheets_on(self.an(), &self.positions, &opt, &sizes)
+        drawing::sheets_on_each(self.an(), &self.positions, &opt, &sizes, sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written
@@ -144,7 +160,8 @@ impl<'a> Solution<'a> {
                 notes: Vec::new(),
             });
         }
-        let (sheets, sheet) = self.sheets(req)?;
+        let mut writer = SheetWriter::new(&req.dir, req.format, req.dpi)?;
+        let sheet = self.sheets_each(req, &mut |s| writer.put(s))?;
         let mut notes = Vec::new();
         let asked = req.sheet.unwrap_or(SheetSize::A4);
         if sheet != asked {
@@ -153,7 +170,7 @@ impl<'a> Solution<'a> {
                 an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
             ));
         }
-        let mut written = write_sheets(&sheets, &req.dir, req.format, req.dpi)?;
+        let mut written = writer.finish()?;
         notes.append(&mut written.notes);
         written.notes = notes;
         Ok(written)

@@ -5,8 +5,8 @@
 
 use super::canvas::Canvas;
 use super::layout::{
-    Pending, field_size, fill, fits, lower_scale, mechanism_canvases, mechanism_extent, render,
-    union,
+    Pending, field_size, fill, fits, lower_scale, mechanism_bounds, mechanism_canvas,
+    mechanism_extent, render,
 };
 use super::output::{DrawOptions, Sheet, SheetSize};
 use super::{course, course_forces, diagram, forces, lever, plan, positions, sheet, table};
@@ -81,13 +81,31 @@ pub fn sheets_on(
     opt: &DrawOptions,
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
+    let mut sheets = Vec::new();
+    let size = sheets_on_each(an, solved, opt, sizes, &mut |s| {
+        sheets.push(s);
+        Ok(())
+    })?;
+    Ok((sheets, size))
+}
+
+/// [`sheets_on`], each sheet handed to `sink` as soon as it is drawn (a
+/// sheet is dropped there: memory flat in the number of positions).
+pub fn sheets_on_each(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    sizes: &[SheetSize],
+    sink: &mut dyn FnMut(Sheet) -> Result<()>,
+) -> Result<SheetSize> {
     let first = sizes.first().copied().unwrap_or(opt.sheet);
     let Some(mu_l) = an.mech.scene.want.scales.mu_l else {
         let opt = DrawOptions {
             sheet: first,
             ..*opt
         };
-        return Ok((compose(an, solved, &opt, Scale::Scene)?, first));
+        compose_each(an, solved, &opt, Scale::Scene, sink)?;
+        return Ok(first);
     };
     let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
     // Counted before anything is drawn: the joints alone at μ_l. A drawing
@@ -109,7 +127,8 @@ pub fn sheets_on(
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            return Ok((compose(an, solved, &opt, Scale::Scene)?, size));
+            compose_each(an, solved, &opt, Scale::Scene, sink)?;
+            return Ok(size);
         }
     }
     Err(misfit(an, solved, opt, sizes, (u, false), mu_l, t.as_ref()))
@@ -124,7 +143,7 @@ fn mechanism_union(
     mu_l: f64,
     t: Option<&positions::Trajectories>,
 ) -> Rect {
-    let mut u = union(&mechanism_canvases(an, solved, opt, mu_l));
+    let mut u = mechanism_bounds(an, solved, opt, mu_l);
     if let Some(t) = t {
         let mut c = Canvas::default();
         positions::draw(an, solved, t, &mut c, mu_l);
@@ -199,78 +218,141 @@ fn misfit(
 /// position the plan of the mechanism and the plans asked for; the course
 /// sheet when asked; the diagrams sheet when asked.
 fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
-    let w = words(opt.lang);
+    let mut sheets = Vec::new();
+    compose_each(an, solved, opt, how, &mut |s| {
+        sheets.push(s);
+        Ok(())
+    })?;
+    Ok(sheets)
+}
+
+/// The scales every position's sheets share, found before any of them is
+/// drawn: the positions sheet's μ_l and drawing, and the plan of the
+/// mechanism's μ_l with the box all positions' drawings are centred on.
+struct Shared {
+    positions: Option<(f64, Canvas)>,
+    mechanism: Option<(f64, Rect)>,
+}
+
+/// [`compose`], each sheet handed to `sink` as soon as it is rendered and
+/// dropped there: memory stays flat in the number of positions (a
+/// position's figures are drawn when its turn comes; with a title block,
+/// whose "sheet i of n" needs n, the figures are composed twice, the
+/// first time only counted).
+fn compose_each(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    how: Scale,
+    sink: &mut dyn FnMut(Sheet) -> Result<()>,
+) -> Result<()> {
+    fixed_plan_scales(an, solved, opt)?;
+    let shared = shared_scales(an, solved, opt, how)?;
+    let mut lead = 0;
+    if opt.course || asked(an, solved, "course") {
+        sink(course::sheet(an, solved, opt)?)?;
+        lead += 1;
+        if let Some(f) = course_forces::sheet(an, solved, opt)? {
+            sink(f)?;
+            lead += 1;
+        }
+    }
+    let mut n = 0;
+    if opt.title_block {
+        figures(an, solved, opt, &shared, &mut |_| {
+            n += 1;
+            Ok(())
+        })?;
+    }
+    let mut i = 0;
+    figures(an, solved, opt, &shared, &mut |p| {
+        i += 1;
+        sink(render(an, opt, p, (lead + i, lead + n)))
+    })?;
+    if let Some(d) = diagram::wanted(an, opt)? {
+        sink(d)?;
+    }
+    Ok(())
+}
+
+/// The scales of the sheets every position shares ([`Shared`]).
+fn shared_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Shared> {
     let fixed_l = match how {
         Scale::Scene => an.mech.scene.want.scales.mu_l,
         Scale::Fill => None,
     };
-    fixed_plan_scales(an, solved, opt)?;
-    let mut out: Vec<Pending> = Vec::new();
     let field = field_size(opt, 0.0);
     let extent = mechanism_extent(an, solved);
     let lower = lower_scale(extent.width(), extent.height(), field);
-    if asked(an, solved, "positions") && !solved.is_empty() {
+    let mut out = Shared {
+        positions: None,
+        mechanism: None,
+    };
+    if solved.is_empty() {
+        return Ok(out);
+    }
+    if asked(an, solved, "positions") {
         let t = positions::trajectories(an, solved);
         let draw = |mu: f64| {
             let mut c = Canvas::default();
             positions::draw(an, solved, &t, &mut c, mu);
             Some(c)
         };
-        let (mu, c) = match fixed_l {
+        out.positions = Some(match fixed_l {
             Some(mu) => (mu, draw(mu).unwrap_or_default()),
             None => fill(lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
-        };
-        out.push(pending(
+        });
+    }
+    if asked(an, solved, "mechanism") {
+        let bounds = |mu: f64| Some(mechanism_bounds(an, solved, opt, mu));
+        out.mechanism = Some(match fixed_l {
+            Some(mu) => (mu, mechanism_bounds(an, solved, opt, mu)),
+            None => fill(lower, field, bounds, |r| *r).ok_or_else(too_large)?,
+        });
+    }
+    Ok(out)
+}
+
+/// Every figure to render, in the order of the sheets, to `emit`: the
+/// positions sheet, then per position its plan of the mechanism and the
+/// rest of its sheets.
+fn figures(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+    shared: &Shared,
+    emit: &mut dyn FnMut(Pending) -> Result<()>,
+) -> Result<()> {
+    let w = words(opt.lang);
+    let field = field_size(opt, 0.0);
+    if let Some((mu, c)) = &shared.positions {
+        emit(pending(
             "positions".into(),
             w.positions.clone(),
-            scale_text("l", mu, "m", opt.lang),
-            ("mu_l", mu),
-            c,
-        ));
+            scale_text("l", *mu, "m", opt.lang),
+            ("mu_l", *mu),
+            c.clone(),
+        ))?;
     }
-    let mech = if asked(an, solved, "mechanism") && !solved.is_empty() {
-        let draw = |mu: f64| Some(mechanism_canvases(an, solved, opt, mu));
-        Some(match fixed_l {
-            Some(mu) => (mu, mechanism_canvases(an, solved, opt, mu)),
-            None => fill(lower, field, draw, |cs| union(cs)).ok_or_else(too_large)?,
-        })
-    } else {
-        None
-    };
-    let (mu_l, mut mech) = mech.map_or((0.0, Vec::new()), |(mu, cs)| (mu, cs));
-    let centre_on = (!mech.is_empty()).then(|| union(&mech));
     for (k, s) in solved.iter().enumerate() {
         let pos = position_text(an, s, k, opt.lang);
-        if k < mech.len() {
-            out.push(Pending {
-                centre_on,
+        if let Some((mu_l, centre_on)) = shared.mechanism {
+            emit(Pending {
+                centre_on: Some(centre_on),
                 ..pending(
                     format!("mechanism_{}", k + 1),
                     format!("{}, {pos}", w.mechanism),
                     scale_text("l", mu_l, "m", opt.lang),
                     ("mu_l", mu_l),
-                    std::mem::take(&mut mech[k]),
+                    mechanism_canvas(an, s, opt, mu_l),
                 )
-            });
+            })?;
         }
-        out.extend(position_sheets(an, solved, (k, s), opt, field)?);
-    }
-    let mut sheets = Vec::new();
-    if opt.course || asked(an, solved, "course") {
-        sheets.push(course::sheet(an, solved, opt)?);
-        if let Some(f) = course_forces::sheet(an, solved, opt)? {
-            sheets.push(f);
+        for p in position_sheets(an, solved, (k, s), opt, field)? {
+            emit(p)?;
         }
     }
-    let n = out.len();
-    let lead = sheets.len();
-    for (i, p) in out.into_iter().enumerate() {
-        sheets.push(render(an, opt, p, (lead + i + 1, lead + n)));
-    }
-    if let Some(d) = diagram::wanted(an, opt)? {
-        sheets.push(d);
-    }
-    Ok(sheets)
+    Ok(())
 }
 
 /// A sheet to render: its name, title, scale text and the scale its

@@ -73,30 +73,23 @@ pub(crate) fn mechanism_extent(an: &Analysis, solved: &[Solved]) -> Rect {
     r.unwrap_or(Rect::ZERO)
 }
 
-/// The plans of the mechanism, one canvas per position, at `mu_l`.
-pub(super) fn mechanism_canvases(
-    an: &Analysis,
-    solved: &[Solved],
-    opt: &DrawOptions,
-    mu_l: f64,
-) -> Vec<Canvas> {
-    solved
-        .iter()
-        .map(|s| {
-            let mut c = Canvas::default();
-            mechanism::draw(an, s, &mut c, mu_l, true);
-            if opt.centres {
-                centres::draw(an, s, &mut c, mu_l);
-            }
-            c.place_pending();
-            c
-        })
-        .collect()
+/// The plan of the mechanism at position `s`, at `mu_l`.
+pub(super) fn mechanism_canvas(an: &Analysis, s: &Solved, opt: &DrawOptions, mu_l: f64) -> Canvas {
+    let mut c = Canvas::default();
+    mechanism::draw(an, s, &mut c, mu_l, true);
+    if opt.centres {
+        centres::draw(an, s, &mut c, mu_l);
+    }
+    c.place_pending();
+    c
 }
 
-pub(super) fn union(cs: &[Canvas]) -> Rect {
-    cs.iter()
-        .map(|c| c.bounds())
+/// The box every position's plan of the mechanism at `mu_l` fits in,
+/// each drawn and dropped in turn.
+pub(super) fn mechanism_bounds(an: &Analysis, solved: &[Solved], opt: &DrawOptions, mu_l: f64) -> Rect {
+    solved
+        .iter()
+        .map(|s| mechanism_canvas(an, s, opt, mu_l).bounds())
         .reduce(|a, b| a.union(b))
         .unwrap_or(Rect::ZERO)
 }
