@@ -111,6 +111,10 @@ pub enum Command {
         /// course project on A1 (A2 with --sheet A2), with the ГОСТ 2.104 title block.
         #[arg(long, conflicts_with = "html")]
         course: bool,
+        /// Only the sheets of these positions (from 1; a list: 1,4,7), at the scales of the
+        /// whole set and numbered as in it; the folder's other sheets are left as they are.
+        #[arg(long, value_delimiter = ',', conflicts_with = "html")]
+        position: Vec<usize>,
     },
     /// Work-precision report: each method's error against an extended-precision reference, and its run time.
     Precision {

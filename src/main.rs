@@ -76,6 +76,7 @@ fn command(c: Command) -> Result<u8, Error> {
             html,
             centres,
             course,
+            position,
         } => {
             let req = DrawRequest {
                 dir: output,
@@ -88,6 +89,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 centres,
                 html,
                 course,
+                positions: position,
             };
             wrote(&study(&scene)?.draw(&req)?)?;
         }

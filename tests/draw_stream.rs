@@ -101,3 +101,64 @@ fn two_thousand_positions_are_drawn_in_bounded_memory() {
     assert_eq!(left, 0);
     let _ = std::fs::remove_dir_all(&out);
 }
+
+#[test]
+fn one_positions_sheets_are_those_of_the_whole_set() {
+    let scene = scene_with_count("one", 12);
+    let full = dir("one-full");
+    let draw = |out: &std::path::Path, extra: &[&str]| {
+        Command::new(EXE)
+            .args(["draw", scene.to_str().unwrap(), "--title-block", "-o"])
+            .arg(out)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let o = draw(&full, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // Positions 4 and 9 alone: the same sheets byte for byte (the scales
+    // of the whole set, the numbers in it), nothing else.
+    let some = dir("one-some");
+    let o = draw(&some, &["--position", "4,9"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut names: Vec<String> = std::fs::read_dir(&some)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "acceleration_4.svg",
+            "acceleration_9.svg",
+            "mechanism_4.svg",
+            "mechanism_9.svg",
+            "sheets.json",
+            "velocity_4.svg",
+            "velocity_9.svg"
+        ]
+    );
+    for n in names.iter().filter(|n| n.ends_with(".svg")) {
+        assert_eq!(
+            std::fs::read(some.join(n)).unwrap(),
+            std::fs::read(full.join(n)).unwrap(),
+            "{n}"
+        );
+    }
+    // Drawn again into the full set's folder: the others stay, and the
+    // manifest still lists all 37.
+    let o = draw(&full, &["--position", "4"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(full.join("sheets.json")).unwrap()).unwrap();
+    assert_eq!(manifest["sheets"].as_array().unwrap().len(), 37);
+    assert_eq!(std::fs::read_dir(&full).unwrap().count(), 38);
+    // A position the scene has not: refused, naming it.
+    let o = draw(&dir("one-bad"), &["--position", "13"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("13 is not a position of this scene (it has 12"),
+        "{err}"
+    );
+}

@@ -86,6 +86,10 @@ pub struct DrawRequest {
     /// The course sheet (A1, or A2 with `sheet`), besides the sheets the
     /// scene asks for.
     pub course: bool,
+    /// Only these positions' sheets (from 1; empty: every sheet), at the
+    /// scales of the whole set and numbered as in it; the folder's other
+    /// sheets are left as they are.
+    pub positions: Vec<usize>,
 }
 
 impl Default for DrawRequest {
@@ -101,6 +105,7 @@ impl Default for DrawRequest {
             centres: false,
             html: false,
             course: false,
+            positions: Vec::new(),
         }
     }
 }

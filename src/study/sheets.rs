@@ -70,6 +70,9 @@ pub struct SheetWriter {
     /// PDF book), and their files.
     sheets: Vec<Sheet>,
     paths: Vec<PathBuf>,
+    /// Some sheets of a set (`draw --position`): the folder's others are
+    /// kept, and so are their entries in the manifest.
+    partial: bool,
 }
 
 impl SheetWriter {
@@ -85,7 +88,17 @@ impl SheetWriter {
             staged: Staged::default(),
             sheets: Vec::new(),
             paths: Vec::new(),
+            partial: false,
         })
+    }
+
+    /// A writer of some sheets of a set: the folder's other sheets are
+    /// left as they are and stay in the manifest.
+    pub fn partial(self) -> SheetWriter {
+        SheetWriter {
+            partial: true,
+            ..self
+        }
     }
 
     /// Render sheet `s` and write it to its temporary.
@@ -109,19 +122,28 @@ impl SheetWriter {
     /// notes on what else the folder holds.
     pub fn finish(mut self) -> Result<Written> {
         let mut written = std::mem::take(&mut self.paths);
-        if self.format == Format::Pdf && self.sheets.len() > 1 {
+        if self.format == Format::Pdf && self.sheets.len() > 1 && !self.partial {
             let book = self.dir.join(BOOK);
             self.staged.put(&book, &pdf_book(&self.sheets)?)?;
             written.push(book);
         }
         let m = self.dir.join(MANIFEST);
-        self.staged
-            .put(&m, manifest(&self.sheets, &written, self.format).as_bytes())?;
+        let mut text = manifest(&self.sheets, &written, self.format);
+        if self.partial {
+            text = merged(&m, &text);
+        }
+        self.staged.put(&m, text.as_bytes())?;
         written.push(m);
         let staged = std::mem::take(&mut self.staged);
         staged.commit()?;
         let dir = &self.dir;
         let mut notes = Vec::new();
+        if self.partial {
+            return Ok(Written {
+                files: written,
+                notes,
+            });
+        }
         let is_written: HashSet<&PathBuf> = written.iter().collect();
         let removed: Vec<String> = std::mem::take(&mut self.before)
             .into_iter()
@@ -161,6 +183,31 @@ impl SheetWriter {
             notes,
         })
     }
+}
+
+/// The manifest `text` of some sheets merged into the one at `path`: its
+/// entries for other files kept, in their order, those rewritten now
+/// replaced, new ones added.
+fn merged(path: &Path, text: &str) -> String {
+    let Ok(new) = serde_json::from_str::<serde_json::Value>(text) else {
+        return text.to_string();
+    };
+    let Some(mut old) = std::fs::read_to_string(path)
+        .ok()
+        .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+        .filter(|v| v["sheets"].is_array())
+    else {
+        return text.to_string();
+    };
+    let fresh = new["sheets"].as_array().cloned().unwrap_or_default();
+    let list = old["sheets"].as_array_mut().expect("an array");
+    for s in fresh {
+        match list.iter_mut().find(|o| o["file"] == s["file"]) {
+            Some(o) => *o = s,
+            None => list.push(s),
+        }
+    }
+    serde_json::to_string_pretty(&old).unwrap_or_default() + "\n"
 }
 
 /// The first names of a list and how many more.

@@ -128,6 +128,19 @@ impl<'a> Solution<'a> {
         sink: &mut dyn FnMut(Sheet) -> Result<()>,
     ) -> Result<SheetSize> {
         req.validate()?;
+        if let Some(&k) = req
+            .positions
+            .iter()
+            .find(|&&k| k == 0 || k > self.positions.len())
+        {
+            return Err(Error::scene(
+                "position",
+                format!(
+                    "{k} is not a position of this scene (it has {}, numbered from 1)",
+                    self.positions.len()
+                ),
+            ));
+        }
         let sizes = match req.sheet {
             Some(s) => vec![s],
             None => SheetSize::ALL.to_vec(),
@@ -140,7 +153,8 @@ impl<'a> Solution<'a> {
             centres: req.centres,
             course: req.course,
         };
-        drawing::sheets_on_each(self.an(), &self.positions, &opt, &sizes, sink)
+        let only: Vec<usize> = req.positions.iter().map(|k| k - 1).collect();
+        drawing::sheets_on_each(self.an(), &self.positions, &opt, (&sizes, &only), sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written
@@ -161,6 +175,9 @@ impl<'a> Solution<'a> {
             });
         }
         let mut writer = SheetWriter::new(&req.dir, req.format, req.dpi)?;
+        if !req.positions.is_empty() {
+            writer = writer.partial();
+        }
         let sheet = self.sheets_each(req, &mut |s| writer.put(s))?;
         let mut notes = Vec::new();
         let asked = req.sheet.unwrap_or(SheetSize::A4);

@@ -17,6 +17,7 @@ use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use kurbo::Rect;
+use std::collections::BTreeMap;
 
 /// Whether the scene asks for drawing `d` (`want.drawings`; by default the
 /// plan of the mechanism and the plans wanted, plus the positions sheet
@@ -82,7 +83,7 @@ pub fn sheets_on(
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
     let mut sheets = Vec::new();
-    let size = sheets_on_each(an, solved, opt, sizes, &mut |s| {
+    let size = sheets_on_each(an, solved, opt, (sizes, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -90,12 +91,14 @@ pub fn sheets_on(
 }
 
 /// [`sheets_on`], each sheet handed to `sink` as soon as it is drawn (a
-/// sheet is dropped there: memory flat in the number of positions).
+/// sheet is dropped there: memory flat in the number of positions); with
+/// `only` (positions from 0, none: all), only those positions' sheets,
+/// drawn at the scales of the whole set and numbered as in it.
 pub fn sheets_on_each(
     an: &Analysis,
     solved: &[Solved],
     opt: &DrawOptions,
-    sizes: &[SheetSize],
+    (sizes, only): (&[SheetSize], &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
 ) -> Result<SheetSize> {
     let first = sizes.first().copied().unwrap_or(opt.sheet);
@@ -104,7 +107,7 @@ pub fn sheets_on_each(
             sheet: first,
             ..*opt
         };
-        compose_each(an, solved, &opt, Scale::Scene, sink)?;
+        compose_each(an, solved, &opt, (Scale::Scene, only), sink)?;
         return Ok(first);
     };
     let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
@@ -127,7 +130,7 @@ pub fn sheets_on_each(
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            compose_each(an, solved, &opt, Scale::Scene, sink)?;
+            compose_each(an, solved, &opt, (Scale::Scene, only), sink)?;
             return Ok(size);
         }
     }
@@ -219,7 +222,7 @@ fn misfit(
 /// sheet when asked; the diagrams sheet when asked.
 fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
-    compose_each(an, solved, opt, how, &mut |s| {
+    compose_each(an, solved, opt, (how, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -238,38 +241,55 @@ struct Shared {
 /// dropped there: memory stays flat in the number of positions (a
 /// position's figures are drawn when its turn comes; with a title block,
 /// whose "sheet i of n" needs n, the figures are composed twice, the
-/// first time only counted).
+/// first time only counted). With `only` (positions from 0), only those
+/// positions' sheets: the others, the positions sheet, the course and the
+/// diagrams sheets are left out (counted in the numbering all the same).
 fn compose_each(
     an: &Analysis,
     solved: &[Solved],
     opt: &DrawOptions,
-    how: Scale,
+    (how, only): (Scale, &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
 ) -> Result<()> {
     fixed_plan_scales(an, solved, opt)?;
     let shared = shared_scales(an, solved, opt, how)?;
+    let all = only.is_empty();
     let mut lead = 0;
     if opt.course || asked(an, solved, "course") {
-        sink(course::sheet(an, solved, opt)?)?;
         lead += 1;
-        if let Some(f) = course_forces::sheet(an, solved, opt)? {
-            sink(f)?;
-            lead += 1;
+        let course = course::sheet(an, solved, opt)?;
+        let forces = course_forces::sheet(an, solved, opt)?;
+        lead += usize::from(forces.is_some());
+        if all {
+            sink(course)?;
+            if let Some(f) = forces {
+                sink(f)?;
+            }
         }
     }
-    let mut n = 0;
+    // How many sheets each figure source gives (the positions sheet under
+    // `None`), counted when the numbers are needed.
+    let mut counts: BTreeMap<Option<usize>, usize> = BTreeMap::new();
     if opt.title_block {
-        figures(an, solved, opt, &shared, &mut |_| {
-            n += 1;
+        figures(an, solved, opt, &shared, &|_| true, &mut |at, _| {
+            *counts.entry(at).or_default() += 1;
             Ok(())
         })?;
     }
-    let mut i = 0;
-    figures(an, solved, opt, &shared, &mut |p| {
-        i += 1;
+    let n: usize = counts.values().sum();
+    let chosen = |at: Option<usize>| all || at.is_some_and(|k| only.contains(&k));
+    let (mut last, mut within) = (None, 0);
+    figures(an, solved, opt, &shared, &chosen, &mut |at, p| {
+        if last != Some(at) {
+            (last, within) = (Some(at), 0);
+        }
+        within += 1;
+        // After every sheet of the sources before this one, those left
+        // out included.
+        let i = counts.range(..at).map(|(_, c)| c).sum::<usize>() + within;
         sink(render(an, opt, p, (lead + i, lead + n)))
     })?;
-    if let Some(d) = diagram::wanted(an, opt)? {
+    if all && let Some(d) = diagram::wanted(an, opt)? {
         sink(d)?;
     }
     Ok(())
@@ -321,12 +341,13 @@ fn figures(
     solved: &[Solved],
     opt: &DrawOptions,
     shared: &Shared,
-    emit: &mut dyn FnMut(Pending) -> Result<()>,
+    chosen: &dyn Fn(Option<usize>) -> bool,
+    emit: &mut dyn FnMut(Option<usize>, Pending) -> Result<()>,
 ) -> Result<()> {
     let w = words(opt.lang);
     let field = field_size(opt, 0.0);
-    if let Some((mu, c)) = &shared.positions {
-        emit(pending(
+    if let Some((mu, c)) = shared.positions.as_ref().filter(|_| chosen(None)) {
+        emit(None, pending(
             "positions".into(),
             w.positions.clone(),
             scale_text("l", *mu, "m", opt.lang),
@@ -334,10 +355,10 @@ fn figures(
             c.clone(),
         ))?;
     }
-    for (k, s) in solved.iter().enumerate() {
+    for (k, s) in solved.iter().enumerate().filter(|(k, _)| chosen(Some(*k))) {
         let pos = position_text(an, s, k, opt.lang);
         if let Some((mu_l, centre_on)) = shared.mechanism {
-            emit(Pending {
+            emit(Some(k), Pending {
                 centre_on: Some(centre_on),
                 ..pending(
                     format!("mechanism_{}", k + 1),
@@ -349,7 +370,7 @@ fn figures(
             })?;
         }
         for p in position_sheets(an, solved, (k, s), opt, field)? {
-            emit(p)?;
+            emit(Some(k), p)?;
         }
     }
     Ok(())
