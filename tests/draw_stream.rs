@@ -162,3 +162,50 @@ fn one_positions_sheets_are_those_of_the_whole_set() {
         "{err}"
     );
 }
+
+#[test]
+fn a_refused_draw_creates_nothing_and_an_interrupted_one_is_cleared() {
+    // Refused before the first sheet: the output folder is not made.
+    let out = std::env::temp_dir().join(format!(
+        "mechplan-stream-refused-out-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&out);
+    let scene = scene_with_count("refused", 12);
+    let o = Command::new(EXE)
+        .args(["draw", scene.to_str().unwrap(), "--position", "13", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists(), "a refused draw made {}", out.display());
+    // A run killed mid-way leaves its staging folder (its sheets, not in
+    // place); the next run into the folder removes it and says so.
+    let out = dir("interrupted");
+    let dead = out.join(".mechplan-staging-4000000000");
+    std::fs::create_dir_all(&dead).unwrap();
+    std::fs::write(dead.join("velocity_1.svg"), "<svg/>").unwrap();
+    std::fs::write(dead.join("velocity_2.svg"), "<svg/>").unwrap();
+    let o = Command::new(EXE)
+        .args(["draw", scene.to_str().unwrap(), "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("removed 2 unfinished file(s) of 1 interrupted run(s)"),
+        "{err}"
+    );
+    let hidden = std::fs::read_dir(&out)
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .file_name()
+                .to_string_lossy()
+                .starts_with('.')
+        })
+        .count();
+    assert_eq!(hidden, 0);
+}

@@ -2,7 +2,7 @@
 //! next run remove the sheets of its own it no longer draws
 //! ([`write_sheets`]).
 
-use super::files::{Staged, write_error};
+use super::files::write_error;
 use crate::error::Result;
 use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
 use crate::presentation::drawing::{Format, Sheet, pdf, pdf_book, png};
@@ -53,19 +53,27 @@ pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format, dpi: f64) -> R
 }
 
 /// Sheets written into a folder as they come, all or nothing: each is
-/// rendered and written to a temporary beside its place at once (so a
-/// run of thousands of sheets holds none of them), and only
-/// [`SheetWriter::finish`] writes the PDF book and the manifest and
-/// renames everything into place; a failure, or a writer dropped
-/// unfinished, removes every temporary of this run. Then the sheets an
-/// earlier run listed in the manifest and this one did not write are
-/// removed, each named in a note.
+/// rendered and written at once into this run's staging folder inside it
+/// (`.mechplan-staging-PID`: a run of thousands of sheets holds none of
+/// them), and only [`SheetWriter::finish`] writes the PDF book and the
+/// manifest and moves everything into place; a failure, or a writer
+/// dropped unfinished, removes the staging folder. A run killed before
+/// either leaves its staging folder behind: the next run into the folder
+/// removes it (when that process is gone) and says so. Nothing touches
+/// the folder before the first sheet (a refused scene creates nothing).
+/// Then the sheets an earlier run listed in the manifest and this one did
+/// not write are removed, each named in a note.
 pub struct SheetWriter {
     dir: PathBuf,
     format: Format,
     dpi: f64,
     before: Vec<String>,
-    staged: Staged,
+    /// This run's staging folder, once made, and the files in it with
+    /// their places.
+    staging: Option<PathBuf>,
+    staged: Vec<(PathBuf, PathBuf)>,
+    /// Notes of the staging (an interrupted run's files removed).
+    notes: Vec<String>,
     /// The sheets written, for the manifest (their SVG kept only for a
     /// PDF book), and their files.
     sheets: Vec<Sheet>,
@@ -76,16 +84,17 @@ pub struct SheetWriter {
 }
 
 impl SheetWriter {
-    /// A writer into `dir` (made if missing), reading the manifest an
-    /// earlier run left there.
+    /// A writer into `dir` (made at the first sheet if missing), reading
+    /// the manifest an earlier run left there.
     pub fn new(dir: &Path, format: Format, dpi: f64) -> Result<SheetWriter> {
-        std::fs::create_dir_all(dir).map_err(|e| write_error(&dir.display().to_string(), e))?;
         Ok(SheetWriter {
             dir: dir.to_path_buf(),
             format,
             dpi,
             before: listed(dir),
-            staged: Staged::default(),
+            staging: None,
+            staged: Vec::new(),
+            notes: Vec::new(),
             sheets: Vec::new(),
             paths: Vec::new(),
             partial: false,
@@ -94,11 +103,9 @@ impl SheetWriter {
 
     /// A writer of some sheets of a set: the folder's other sheets are
     /// left as they are and stay in the manifest.
-    pub fn partial(self) -> SheetWriter {
-        SheetWriter {
-            partial: true,
-            ..self
-        }
+    pub fn partial(mut self) -> SheetWriter {
+        self.partial = true;
+        self
     }
 
     /// Render sheet `s` and write it to its temporary.
@@ -109,12 +116,38 @@ impl SheetWriter {
             Format::Pdf => ("pdf", pdf(&s.svg)?),
         };
         let path = self.dir.join(format!("{}.{ext}", s.name));
-        self.staged.put(&path, &bytes)?;
+        self.stage(&path, &bytes)?;
         if self.format != Format::Pdf {
             s.svg = String::new();
         }
         self.sheets.push(s);
         self.paths.push(path);
+        Ok(())
+    }
+
+    /// Write `bytes` for `path` into the staging folder (made, with the
+    /// output folder, at the first file).
+    fn stage(&mut self, path: &Path, bytes: &[u8]) -> Result<()> {
+        let staging = match &self.staging {
+            Some(s) => s.clone(),
+            None => {
+                let dir = &self.dir;
+                std::fs::create_dir_all(dir)
+                    .map_err(|e| write_error(&dir.display().to_string(), e))?;
+                if let Some(note) = remove_interrupted(dir) {
+                    self.notes.push(note);
+                }
+                let s = dir.join(format!("{STAGING}{}", std::process::id()));
+                std::fs::create_dir_all(&s)
+                    .map_err(|e| write_error(&s.display().to_string(), e))?;
+                self.staging = Some(s.clone());
+                s
+            }
+        };
+        let name = path.file_name().expect("a file name");
+        let tmp = staging.join(name);
+        std::fs::write(&tmp, bytes).map_err(|e| write_error(&path.display().to_string(), e))?;
+        self.staged.push((tmp, path.to_path_buf()));
         Ok(())
     }
 
@@ -124,7 +157,8 @@ impl SheetWriter {
         let mut written = std::mem::take(&mut self.paths);
         if self.format == Format::Pdf && self.sheets.len() > 1 && !self.partial {
             let book = self.dir.join(BOOK);
-            self.staged.put(&book, &pdf_book(&self.sheets)?)?;
+            let bytes = pdf_book(&self.sheets)?;
+            self.stage(&book, &bytes)?;
             written.push(book);
         }
         let m = self.dir.join(MANIFEST);
@@ -132,12 +166,24 @@ impl SheetWriter {
         if self.partial {
             text = merged(&m, &text);
         }
-        self.staged.put(&m, text.as_bytes())?;
+        self.stage(&m, text.as_bytes())?;
         written.push(m);
+        // Into place, when no place is taken by something that is not a
+        // file (a folder of that name): then nothing is moved.
         let staged = std::mem::take(&mut self.staged);
-        staged.commit()?;
+        if let Some((_, p)) = staged
+            .iter()
+            .find(|(_, p)| std::fs::metadata(p).is_ok_and(|m| m.is_dir()))
+        {
+            let e =
+                std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder, not a file");
+            return Err(write_error(&p.display().to_string(), e));
+        }
+        for (tmp, path) in &staged {
+            std::fs::rename(tmp, path).map_err(|e| write_error(&path.display().to_string(), e))?;
+        }
         let dir = &self.dir;
-        let mut notes = Vec::new();
+        let mut notes = std::mem::take(&mut self.notes);
         if self.partial {
             return Ok(Written {
                 files: written,
@@ -183,6 +229,51 @@ impl SheetWriter {
             notes,
         })
     }
+}
+
+impl Drop for SheetWriter {
+    /// A writer dropped before it finished (a failure): its staging
+    /// folder goes; finished, it is empty and goes too.
+    fn drop(&mut self) {
+        if let Some(s) = &self.staging {
+            let _ = std::fs::remove_dir_all(s);
+        }
+    }
+}
+
+/// The name of a run's staging folder, before its process id.
+const STAGING: &str = ".mechplan-staging-";
+
+/// Remove the staging folders in `dir` of runs whose process is gone
+/// (killed before they finished or cleaned up): a note saying so, if any.
+/// Where the system does not list its processes (no /proc), they are
+/// left alone.
+fn remove_interrupted(dir: &Path) -> Option<String> {
+    let proc = Path::new("/proc");
+    if !proc.is_dir() {
+        return None;
+    }
+    let mut files = 0;
+    let mut runs = 0;
+    for e in std::fs::read_dir(dir).ok()?.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some(pid) = name.strip_prefix(STAGING) else {
+            continue;
+        };
+        if !pid.bytes().all(|b| b.is_ascii_digit()) || proc.join(pid).exists() {
+            continue;
+        }
+        files += std::fs::read_dir(e.path()).map_or(0, |d| d.count());
+        if std::fs::remove_dir_all(e.path()).is_ok() {
+            runs += 1;
+        }
+    }
+    (runs > 0).then(|| {
+        format!(
+            "removed {files} unfinished file(s) of {runs} interrupted run(s) in {}",
+            dir.display()
+        )
+    })
 }
 
 /// The manifest `text` of some sheets merged into the one at `path`: its
