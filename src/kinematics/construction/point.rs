@@ -318,20 +318,30 @@ impl Builder<'_> {
             .map(|&(la, pa)| {
                 let from = &self.plan.points[pa];
                 let r = x - self.c.pose(link).apply(la);
-                let (v, err) = if self.vel_kind() {
-                    (perp(r) * rate, from.err + delta + rate_err * r.hypot() / mu)
+                let v = if self.vel_kind() {
+                    perp(r) * rate
                 } else {
-                    let normal = if w != 0.0 {
-                        delta + 2.0 * w.abs() * self.omega_err(link) * r.hypot() / mu
-                    } else {
-                        0.0
-                    };
-                    let v = perp(r) * rate - r * (w * w);
-                    (v, from.err + normal + delta + rate_err * r.hypot() / mu)
+                    perp(r) * rate - r * (w * w)
                 };
+                let err = self.relation_err(link, from.err, r.hypot(), rate_err);
                 (from.at + v / mu, err + delta)
             })
             .collect()
+    }
+
+    /// The error radius of a point of `link` laid off by the relative
+    /// vector of its rates from a known point of error `from_err`, `r`
+    /// away: δ per vector laid off (the normal one too, with the error of
+    /// ω² on an acceleration plan) and the rate's error times the distance.
+    fn relation_err(&self, link: usize, from_err: f64, r: f64, rate_err: f64) -> f64 {
+        let (delta, mu) = (self.plan.delta, self.plan.mu);
+        let normal = match self.omega(link) {
+            w if !self.vel_kind() && w != 0.0 => {
+                delta + 2.0 * w.abs() * self.omega_err(link) * r / mu
+            }
+            _ => 0.0,
+        };
+        from_err + normal + delta + rate_err * r / mu
     }
 
     /// The mistake of placing a named point of `link` by the figure of a
@@ -444,7 +454,6 @@ impl Builder<'_> {
         known: &[(Vec2, usize)],
     ) -> Construction {
         let delta = self.plan.delta;
-        let mu = self.plan.mu;
         let pts = &self.plan.points;
         let mut best: Option<(f64, Construction)> = None;
         let consider = |e: f64, c: Construction, best: &mut Option<(f64, Construction)>| {
@@ -494,17 +503,7 @@ impl Builder<'_> {
         if let Some((_, rate_err)) = self.plan.rates[link].filter(|_| !replay) {
             for (a, &(la, pa)) in known.iter().enumerate() {
                 let r = (x - self.c.pose(link).apply(la)).hypot();
-                let e = if self.vel_kind() {
-                    pts[pa].err + delta + rate_err * r / mu
-                } else {
-                    let w = self.omega(link);
-                    let normal = if w != 0.0 {
-                        delta + 2.0 * w.abs() * self.omega_err(link) * r / mu
-                    } else {
-                        0.0
-                    };
-                    pts[pa].err + normal + delta + rate_err * r / mu
-                };
+                let e = self.relation_err(link, pts[pa].err, r, rate_err);
                 // The similar figure is the lecture's way: the relative
                 // vector takes over only where it is clearly better.
                 consider(

@@ -177,12 +177,8 @@ impl Analysis {
         mu_v: Option<f64>,
         mu_a: Option<f64>,
     ) -> Result<crate::kinematics::construction::Plans> {
-        let d = Drafting {
-            mu_v: self.drafting.mu_v.or(mu_v),
-            mu_a: self.drafting.mu_a.or(mu_a),
-            ..self.drafting
-        };
-        crate::kinematics::construction::build_plans(&self.setup(), &s.config, s.drives, order, d)
+        let (mu_v, mu_a) = (self.drafting.mu_v.or(mu_v), self.drafting.mu_a.or(mu_a));
+        self.plans_at_given_scales(s, order, mu_v, mu_a)
     }
 
     /// [`Analysis::plans_at_scales`] with the scales given winning over

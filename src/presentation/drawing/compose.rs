@@ -463,13 +463,13 @@ fn too_large() -> Error {
 /// The solved plan of `kind` at position `s`, the extent of its points
 /// (mm, the pole included) and the field it is drawn in (beside its table
 /// when one is asked for).
-fn plan_extent(s: &Solved, kind: PlanKind, opt: &DrawOptions) -> (Plan, Rect, (f64, f64)) {
+fn plan_extent<'a>(s: &'a Solved, kind: PlanKind, opt: &DrawOptions) -> (&'a Plan, Rect, (f64, f64)) {
     let p = s.plans.as_ref().expect("a plan asked for");
     let plan = match kind {
-        PlanKind::Velocity => p.velocity.clone(),
-        PlanKind::Acceleration => p.acceleration.clone().expect("an acceleration plan"),
+        PlanKind::Velocity => &p.velocity,
+        PlanKind::Acceleration => p.acceleration.as_ref().expect("an acceleration plan"),
     };
-    let t = opt.table.then(|| table::plan_table(&plan, opt.lang));
+    let t = opt.table.then(|| table::plan_table(plan, opt.lang));
     let right = t.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
     let points = plan.points.iter().fold(Rect::ZERO, |r, q| {
         r.union(Rect::from_points(q.at.to_point(), q.at.to_point()))
@@ -536,12 +536,13 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
             })
             .collect();
         let over = |points: Rect, f: (f64, f64)| (points.width() / f.0).max(points.height() / f.1);
-        let worst = drawn
+        let extents: Vec<_> = drawn
             .iter()
-            .map(|&(k, s)| {
-                let (_, points, f) = plan_extent(s, kind, opt);
-                (k, points, f, over(points, f))
-            })
+            .map(|&(k, s)| (k, s, plan_extent(s, kind, opt)))
+            .collect();
+        let worst = extents
+            .iter()
+            .map(|&(k, _, (_, points, f))| (k, points, f, over(points, f)))
             .max_by(|a, b| a.3.total_cmp(&b.3));
         let Some((k, points, f, ratio)) = worst.filter(|w| w.3 > 1.0) else {
             continue;
@@ -557,9 +558,8 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
             q(f.0),
             q(f.1),
         );
-        let fit = drawn.iter().try_fold(0.0_f64, |m, &(_, s)| {
-            let (plan, points, f) = plan_extent(s, kind, opt);
-            fitting_scale(an, s, kind, (&plan, points), f).map(|x| m.max(x.0))
+        let fit = extents.iter().try_fold(0.0_f64, |m, &(_, s, (plan, points, f))| {
+            fitting_scale(an, s, kind, (plan, points), f).map(|x| m.max(x.0))
         });
         if let Some(fit) = fit {
             msg += &format!("; the smallest standard μ_{sym} that fits every position is {fit} {unit}");
@@ -587,7 +587,7 @@ fn plan_figure(
     let (p0, points, f) = plan_extent(s, kind, opt);
     let found = fixed
         .is_none()
-        .then(|| fitting_scale(an, s, kind, (&p0, points), f))
+        .then(|| fitting_scale(an, s, kind, (p0, points), f))
         .flatten();
     match found {
         Some((_, (plan, c))) => {
@@ -596,10 +596,6 @@ fn plan_figure(
         }
         // The scene's scale, a plan all at the pole (everything at rest)
         // or one that cannot be built again: the solver's own.
-        None => {
-            let c = draw_plan(an, &p0);
-            let t = table(&p0);
-            (p0, c, t)
-        }
+        None => (p0.clone(), draw_plan(an, p0), table(p0)),
     }
 }
