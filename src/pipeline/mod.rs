@@ -4,7 +4,10 @@
 //! [`Position`] with its [`CrossCheck`] and, with the scene's `dynamics`,
 //! its force analysis; it reads as its position (`Deref`).
 
+mod inputs;
 mod run;
+
+pub use inputs::InputPositions;
 
 pub use crate::kinematics::solve::{Analysis, Position};
 pub use crate::verification::crosscheck::{BOUND_ROUNDINGS, Bounds, CrossCheck, MAX_REL_DIFF};

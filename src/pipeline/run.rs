@@ -1,7 +1,7 @@
 //! Solving every position asked for: the positions found in order by both
 //! routes, then each one's rates, plans and cross-check.
 
-use super::{Analysis, Position, RUN_CHUNK, Solved};
+use super::{Analysis, InputPositions, Position, RUN_CHUNK, Solved};
 use crate::kinematics::solve::Motions;
 use crate::error::{Error, Result};
 use crate::geom::Pose;
@@ -81,7 +81,10 @@ impl Analysis {
         progress: &dyn crate::progress::Progress,
         mut f: impl FnMut(Solved) -> Result<()>,
     ) -> Result<()> {
-        let values = self.input_coords()?;
+        let InputPositions {
+            values,
+            rounding: roundings,
+        } = self.input_positions()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         // Route (a) compiled for the mechanism (issue 24): the rates at
@@ -120,27 +123,14 @@ impl Analysis {
         // … and route (a)'s answers one continuous motion: closed forms of
         // class II groups (a class III group is tracked in small steps).
         let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
-        // The rounding of each input value as written (none for `count`),
-        // position after position.
-        let w = m.scene.input_count();
-        // (Made a chunk at a time: a sweep's memory is its input values.)
-        let rounded = m.scene.input_rounding.len() == values.len() * w;
         progress.start(values.len(), "positions");
         let done = values
             .chunks(RUN_CHUNK)
             .enumerate()
             .try_for_each(|(k, chunk)| {
                 let from = k * RUN_CHUNK;
-                let rounding: Vec<Coords> = (from..from + chunk.len())
-                    .map(|i| {
-                        if rounded {
-                            Coords::new(&m.scene.input_rounding[i * w..(i + 1) * w])
-                        } else {
-                            Coords::new(&vec![0.0; w])
-                        }
-                    })
-                    .collect();
-                let rounding = &rounding[..];
+                // How far each input value may be from the one meant.
+                let rounding = &roundings[from..from + chunk.len()];
                 let checks = Checks {
                     changed: &changed,
                     residuals: eqs.as_ref(),

@@ -672,8 +672,22 @@ def read_positions(M, scene, override, num, length, angle):
     elif pos is None:
         texts = [M.default_input]
     elif 'count' in pos:
-        raise Rejected("/positions/count: this reference needs the input values: pass --inputs "
-                       "(e.g. mechplan's reported input angles)")
+        # n equal steps of a revolution from the extreme position of the
+        # output that begins the working stroke: found after assembly
+        # (`working_stroke`), the input values then known.
+        if M.kind != 'crank':
+            raise Rejected("/positions/count: equal steps over a revolution need a crank input")
+        if 'output' not in pos:
+            raise Rejected("/positions/count: this reference needs the output link named "
+                           "(positions.output); it does not find Assur groups")
+        out = str(pos['output'])
+        if out not in M.moving:
+            raise Rejected("/positions/output: not a moving link")
+        M.count = (int(pos['count']), out)
+        M.input_angle = angle("input/angle", M.default_input)
+        M.targets = []
+        M.input_texts = []
+        return
     elif 'values' in pos:
         raise Rejected("/positions/values: several inputs are not supported by this reference")
     elif M.kind == 'crank' and 'angles' in pos:
@@ -975,14 +989,132 @@ def leg_target(M, q_prev, target, way):
     return q_prev + d
 
 
-def run_positions(M, legs=None):
+def output_series(M, x, q):
+    """The output of `positions.count` at the solution x of input q: its
+    coordinate (a frame slider's slide along its guide, else the link's
+    angle, continuous along the path), and its first and second
+    derivatives in q (from the solution curve's Taylor coefficients)."""
+    _, out = M.count
+    f, J = jacobian(M, x, EXACT, q)
+    x0, c1, c2 = taylor_coefficients(M, x, lu_factor(J), EXACT, None, q, mpf(1), 2)
+    X = [Taylor([v, d, dd]) for v, d, dd in zip(x, c1, c2)]
+    pr = next((p for p in M.pairs if p['slider'] == out and p['guide'] == '0'), None)
+    if pr is None:
+        y = X[M.index[out] + 2]
+    else:
+        pose = poses(M, X)
+        psi, cx, cy = line_in_world(M, pose, pr, EXACT)
+        cp, sp = cos_sin(psi)
+        gx, gy = world(pose, local(M, out, pr['point'], EXACT), out)
+        y = (gx - cx) * cp + (gy - cy) * sp
+    return y.c[0], y.c[1], 2 * y.c[2]
+
+
+def step_to(M, x, q0, q1):
+    """The solution at q1 followed from the solution x at q0."""
+    if q1 == q0:
+        return x
+    x, _ = follow_path(M, x, EXACT, EXACT, q0, q1)
+    x, ok, _ = newton(M, x, EXACT, q1)
+    if not ok:
+        raise PathBroken("the Newton polish did not converge")
+    return x
+
+
+def extreme_root(M, qa, xa, ta, qb, tb):
+    """The root of the output's first derivative between qa and qb (ta, tb
+    its values there, of opposite signs; xa the solution at qa): Newton
+    safeguarded by bisection, to 10^-(W-25) of the input (the solutions'
+    own noise floor, amplified near a toggle, is far below the digits
+    reported and far above 10^-W)."""
+    tol = mpf(10) ** (-(mp.dps - 25))
+    q, x, t = qa, xa, ta
+    for _ in range(200):
+        y, t, dt = output_series(M, x, q)
+        if t == 0:
+            return q, x, y
+        if (t > 0) == (ta > 0):
+            qa, ta = q, t
+        else:
+            qb, tb = q, t
+        nxt = q - t / dt if dt != 0 else None
+        lo, hi = min(qa, qb), max(qa, qb)
+        if nxt is None or not (lo < nxt < hi):
+            nxt = (qa + qb) / 2
+        if abs(nxt - q) <= tol or hi - lo <= tol:
+            x = step_to(M, x, q, nxt)
+            y, _, _ = output_series(M, x, nxt)
+            return nxt, x, y
+        x, q = step_to(M, x, q, nxt), nxt
+    raise PathBroken("the extreme position did not converge")
+
+
+SCAN = 360     # legs over the revolution where the output's extremes are bracketed
+
+
+def working_stroke(M, x0, hint=None):
+    """The crank angle that begins the working stroke of the output (the
+    format's rule: of the two strokes between the output's smallest and
+    largest coordinate, the one taking the larger crank angle, in the sense
+    of omega; at a tie the one starting at the smallest coordinate; the
+    input's angle when the output turns fully).  From the assembled
+    solution x0 at the sketch's input, the revolution scanned in SCAN legs
+    in the sense of omega, each sign change of the output's first
+    derivative refined by Newton.  `hint`: a nearby root (a sensitivity
+    draw of the data) refined directly."""
+    q0 = M.q_sketch[1]
+    sense = 1 if M.q1 >= 0 else -1
+    two_pi = 2 * mp.pi
+    if hint is not None:
+        h = mpf('1e-6')
+        xa = step_to(M, x0, q0, hint - h)
+        _, ta, _ = output_series(M, xa, hint - h)
+        xb = step_to(M, xa, hint - h, hint + h)
+        _, tb, _ = output_series(M, xb, hint + h)
+        if (ta > 0) != (tb > 0):
+            return extreme_root(M, hint - h, xa, ta, hint + h, tb)[0]
+    extremes = []
+    x, q = x0, q0
+    y, t, _ = output_series(M, x, q)
+    for k in range(1, SCAN + 1):
+        qn = q0 + sense * two_pi * k / SCAN
+        xn = step_to(M, x, q, qn)
+        yn, tn, _ = output_series(M, xn, qn)
+        if t == 0:
+            extremes.append((q, y))
+        elif (t > 0) != (tn > 0) and tn != 0:
+            r, _, yr = extreme_root(M, q, x, t, qn, tn)
+            extremes.append((r, yr))
+        x, q, y, t = xn, qn, yn, tn
+    if len(extremes) < 2:
+        return M.input_angle
+    lo = min(extremes, key=lambda e: e[1])
+    hi = max(extremes, key=lambda e: e[1])
+    d = (sense * (hi[0] - lo[0])) % two_pi
+    return lo[0] if d >= two_pi - d else hi[0]
+
+
+def count_targets(M, start):
+    n, _ = M.count
+    sense = 1 if M.q1 >= 0 else -1
+    two_pi = 2 * mp.pi
+    M.start = start
+    M.targets = [(start + sense * two_pi * k / n) % two_pi for k in range(n)]
+    M.input_texts = [mp.nstr(t * 180 / mp.pi, 20) for t in M.targets]
+
+
+def run_positions(M, legs=None, hint=None):
     """Assemble, then the positions in order.  legs: the ways ('short',
     'long', 'straight') to re-use (a sensitivity draw), else chosen here.
-    Returns a list of (status, x, q, way, note)."""
+    `positions.count`: the working stroke's start found first (`hint`: the
+    exact data's, for a draw).  Returns a list of (status, x, q, way, note)."""
     try:
         x = assemble(M)
+        if getattr(M, 'count', None):
+            count_targets(M, working_stroke(M, x, hint))
     except PathBroken as e:
-        return [('no assembly', None, None, None, str(e))] * len(M.targets)
+        n = M.count[0] if getattr(M, 'count', None) else len(M.targets)
+        return [('no assembly', None, None, None, str(e))] * n
     q_prev = M.q_sketch[1]
     out = []
     broken = None
@@ -1179,7 +1311,7 @@ def sensitivity(scene, inputs, M, runs, results, draws, seed, log=None):
     for draw in range(draws):
         try:
             Md = build_model(scene, inputs, exact_reader(seed=f"{seed}:{draw}"))
-            runs_d = run_positions(Md, legs)
+            runs_d = run_positions(Md, legs, getattr(M, 'start', None))
         except Rejected:
             runs_d = [('no assembly',) + (None,) * 4] * len(results)
         for k, R in enumerate(results):

@@ -5,8 +5,11 @@ use super::Analysis;
 use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
-use crate::kinematics::positions::{Configuration, PositionSolver};
+use crate::kinematics::positions::{Configuration, PositionSolver, crank_frame, slide_pose};
 use crate::model::scene::{InputSpec, PositionsSpec};
+use crate::model::structure::{AssurGroup, DyadKind, Joint};
+use kurbo::{Point, Vec2};
+use std::f64::consts::TAU;
 
 impl Analysis {
     /// The first input's coordinates of the positions asked for (rad or
@@ -30,18 +33,18 @@ impl Analysis {
             PositionsSpec::List(v) => v.iter().map(|&q| Coords::one(q)).collect(),
             PositionsSpec::Count { count, output } => {
                 let out = output.unwrap_or_else(|| self.default_output());
-                let start = self.working_stroke_start(out)?;
-                let dir = sc.input.sense();
-                (0..*count)
-                    .map(|k| {
-                        Coords::one(
-                            (start + dir * std::f64::consts::TAU * k as f64 / *count as f64)
-                                .rem_euclid(std::f64::consts::TAU),
-                        )
-                    })
-                    .collect()
+                self.count_values(self.stroke_start(out)?.angle, *count)
             }
         })
+    }
+
+    /// The input values of `count` equal steps of a revolution from the
+    /// crank angle `start`, in the sense of ω, each in [0, 2π).
+    pub(crate) fn count_values(&self, start: f64, count: usize) -> Vec<Coords> {
+        let dir = self.mech.scene.input.sense();
+        (0..count)
+            .map(|k| Coords::one((start + dir * TAU * k as f64 / count as f64).rem_euclid(TAU)))
+            .collect()
     }
 
     /// The output whose extreme position starts `positions.count`: the
@@ -84,13 +87,61 @@ impl Analysis {
     /// working stroke (the stroke taking the larger crank angle), found as
     /// a root of the output's transfer function to machine precision.
     pub fn working_stroke_start(&self, out: usize) -> Result<f64> {
-        Ok(self.working_stroke(out)?.0)
+        Ok(self.stroke_start(out)?.angle)
     }
 
     /// The crank angle at which the working stroke of `out` begins (as
     /// [`Analysis::working_stroke_start`]) and the crank angle it takes
     /// (a full turn for an output without extreme positions).
     pub fn working_stroke(&self, out: usize) -> Result<(f64, f64)> {
+        let s = self.stroke_start(out)?;
+        Ok((s.angle, s.stroke))
+    }
+
+    /// The extreme position of `out` that begins the working stroke, and
+    /// how it was found ([`StrokeStart`]): bracketed on the transfer
+    /// function's samples; where the crank and the coupler it drives lie
+    /// in line there (and the output stands still with them), solved
+    /// directly as that collinearity, which the data determine to their
+    /// own precision even where the transfer function is stiff (near a
+    /// toggle, a change point); elsewhere the root by bisection.
+    pub fn stroke_start(&self, out: usize) -> Result<StrokeStart> {
+        let (root, bracket, stroke) = match self.stroke_root(out)? {
+            Some(found) => found,
+            None => {
+                let InputSpec::Crank { angle, .. } = self.mech.scene.input else {
+                    unreachable!("stroke_root refuses other inputs")
+                };
+                return Ok(StrokeStart {
+                    angle,
+                    stroke: TAU,
+                    found: Found::Input,
+                });
+            }
+        };
+        let in_line = in_line_extremes(self, out)
+            .into_iter()
+            .map(|q| (q, wrap_pi(q - root).abs()))
+            .filter(|&(_, d)| d <= bracket)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        Ok(match in_line {
+            Some((q, _)) => StrokeStart {
+                angle: q.rem_euclid(TAU),
+                stroke,
+                found: Found::InLine,
+            },
+            None => StrokeStart {
+                angle: root,
+                stroke,
+                found: Found::Root,
+            },
+        })
+    }
+
+    /// The root of the output's transfer function that begins the
+    /// working stroke, the width of its bracket and the stroke's crank
+    /// angle; `None` for an output that turns fully.
+    fn stroke_root(&self, out: usize) -> Result<Option<(f64, f64, f64)>> {
         let m = &self.mech;
         let sc = &m.scene;
         if sc.several_inputs() {
@@ -139,9 +190,189 @@ impl Analysis {
         }
         if extremes.len() < 2 {
             // No extreme positions: the output turns fully; start at the input.
-            return Ok((angle, std::f64::consts::TAU));
+            return Ok(None);
         }
-        Ok(working_stroke_of(&extremes, sc.input.sense()))
+        let (start, stroke) = working_stroke_of(&extremes, sc.input.sense());
+        Ok(Some((start, TAU / n as f64, stroke)))
+    }
+}
+
+/// The extreme position that begins the working stroke of an output
+/// ([`Analysis::stroke_start`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StrokeStart {
+    /// Its crank angle, rad, in [0, 2π).
+    pub angle: f64,
+    /// The crank angle the working stroke takes (2π for an output that
+    /// turns fully).
+    pub stroke: f64,
+    pub found: Found,
+}
+
+/// How the start of the working stroke was found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Found {
+    /// The output turns fully: the steps start at the input's angle.
+    Input,
+    /// The crank and the coupler it drives in line, solved directly.
+    InLine,
+    /// A root of the output's transfer function, by bisection.
+    Root,
+}
+
+/// The crank angles (rad) at which the crank and the coupler of the
+/// class II group it drives lie in line (stretched or folded), where
+/// that group's other link, and so the output `out`, stands still: the
+/// rocker of an RRR group about its frame pivot, the slider of an RRP
+/// group on a frame guide. Solved as the triangle (or the circle and
+/// line) the in-line crank and coupler make with the group's frame
+/// joint: a closed form the data determine to their own precision, also
+/// where the transfer function's root is stiff. Empty where the output
+/// does not stand still with that group (it hangs on the coupler or the
+/// crank, or on a class III group) or the group is of another kind.
+pub(crate) fn in_line_extremes(an: &Analysis, out: usize) -> Vec<f64> {
+    let m = &an.mech;
+    let InputSpec::Crank {
+        link: crank, pivot, ..
+    } = m.scene.input
+    else {
+        return Vec::new();
+    };
+    if m.scene.several_inputs() {
+        return Vec::new();
+    }
+    let frame = m.frame();
+    let groups = &an.structure.groups;
+    let Some((gi, d)) = groups.iter().enumerate().find_map(|(i, g)| match g {
+        AssurGroup::Dyad(d)
+            if d.cylinder.is_none() && (d.ext1.from == crank || d.ext2.to == crank) =>
+        {
+            Some((i, d))
+        }
+        _ => None,
+    }) else {
+        return Vec::new();
+    };
+    // pin: the crank's joint with the coupler; far: the other link's
+    // joint with the frame.
+    let (pin, coupler, other, far, far_link) = if d.ext1.from == crank {
+        (d.ext1.joint, d.links[0], d.links[1], d.ext2.joint, d.ext2.to)
+    } else {
+        (d.ext2.joint, d.links[1], d.links[0], d.ext1.joint, d.ext1.from)
+    };
+    let (Joint::R(a), Joint::R(b)) = (pin, d.mid.joint) else {
+        return Vec::new();
+    };
+    if far_link != frame {
+        return Vec::new();
+    }
+    // The output stands still with `other`: every group it needs, but
+    // this one, hangs on links standing still.
+    let need = an.structure.needed_for(&[out]);
+    let mut still: Vec<usize> = vec![frame, other];
+    for (i, g) in groups.iter().enumerate() {
+        if i == gi || !need[i] {
+            continue;
+        }
+        let known: Vec<usize> = match g {
+            AssurGroup::Dyad(d) => vec![d.ext1.from, d.ext2.to],
+            AssurGroup::Triad(_) => return Vec::new(),
+        };
+        if !known.iter().all(|k| still.contains(k)) {
+            return Vec::new();
+        }
+        still.extend(g.links().iter().copied());
+    }
+    if !still.contains(&out) {
+        return Vec::new();
+    }
+    let cr = crank_frame(m, crank, pivot);
+    let o = cr.at;
+    let arm = m.local(crank, a) - m.local(crank, pivot);
+    let r = arm.hypot();
+    let l = (m.local(coupler, b) - m.local(coupler, a)).hypot();
+    // The crank's input angle when its pin points along `u`.
+    let angle_of = |u: Vec2| u.atan2() - arm.atan2() + cr.offset;
+    let frame_pose = m.links[frame].sketch_pose;
+    let mut found = Vec::new();
+    for (reach, stretched) in [(r + l, true), ((l - r).abs(), false)] {
+        if reach == 0.0 {
+            continue;
+        }
+        let places: Vec<Point> = match (d.kind, far) {
+            (DyadKind::Rrr, Joint::R(c)) => {
+                let c_at = frame_pose.apply(m.local(frame, c));
+                let rc = (m.local(other, c) - m.local(other, b)).hypot();
+                triangle_apexes(o, reach, c_at, rc)
+            }
+            (DyadKind::Rrp, Joint::P(k)) => {
+                let pr = &m.prismatics[k];
+                if pr.slider != other || pr.guide != frame {
+                    return Vec::new();
+                }
+                // B slides with the slider along a line parallel to the guide.
+                let at = |x: f64| {
+                    frame_pose.apply(slide_pose(m, k, x).apply(m.local(other, b)).to_vec2())
+                };
+                let (b0, b1) = (at(0.0), at(1.0));
+                circle_line_points(o, reach, b0.to_vec2(), b1 - b0)
+            }
+            _ => return Vec::new(),
+        };
+        for p in places {
+            let ob = p - o;
+            // Folded with the coupler longer: the pin opposite B.
+            let u = if stretched || r > l { ob } else { -ob };
+            found.push(angle_of(u));
+        }
+    }
+    found
+}
+
+/// The apexes P of the triangle with |P − a| = ra, |P − b| = rb, both
+/// sides of ab: the height by Kahan's formula for the area, accurate to
+/// a few roundings also for a triangle within rounding of flat (its
+/// sides exact); none where the sides do not close, one where flat.
+fn triangle_apexes(a: Point, ra: f64, b: Point, rb: f64) -> Vec<Point> {
+    let d = (b - a).hypot();
+    if d == 0.0 {
+        return Vec::new();
+    }
+    let mut s = [ra, rb, d];
+    s.sort_by(|x, y| y.total_cmp(x));
+    let [x, y, z] = s;
+    let q = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+    if q < 0.0 {
+        return Vec::new();
+    }
+    let h = 0.5 * q.sqrt() / d;
+    let u = (b - a) / d;
+    let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
+    let n = Vec2::new(-u.y, u.x);
+    let foot = a + u * along;
+    if h == 0.0 {
+        vec![foot]
+    } else {
+        vec![foot + n * h, foot - n * h]
+    }
+}
+
+/// The points at distance `r` from `c` on the line through `p` along
+/// `dir`: the half chord from (r − h)(r + h), accurate where the line
+/// nearly touches the circle.
+fn circle_line_points(c: Point, r: f64, p: Vec2, dir: Vec2) -> Vec<Point> {
+    let u = dir / dir.hypot();
+    let foot = p + u * (c.to_vec2() - p).dot(u);
+    let h = (c.to_vec2() - foot).hypot();
+    let q = (r - h) * (r + h);
+    if q < 0.0 {
+        return Vec::new();
+    }
+    let t = q.sqrt();
+    if t == 0.0 {
+        vec![foot.to_point()]
+    } else {
+        vec![(foot + u * t).to_point(), (foot - u * t).to_point()]
     }
 }
 

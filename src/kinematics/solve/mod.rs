@@ -5,7 +5,8 @@
 //! in order, with the cross-check and the forces, is the pipeline's
 //! (`crate::pipeline`).
 
-mod inputs;
+/// The input values asked for and the start of the working stroke.
+pub mod inputs;
 
 use crate::error::Result;
 use crate::geom::perp;

@@ -1,0 +1,134 @@
+//! The input values of the positions asked for, each with how far it may
+//! be from the value the scene means: half an ulp of a written value, or,
+//! for `positions.count`, the error of the extreme position the steps
+//! start from. The cross-check moves every input by that much with the
+//! data ([`Analysis::cross_check`]), so every printed bound covers it.
+
+use super::Analysis;
+use crate::accuracy::ACCURACY;
+use crate::error::{Error, Result};
+use crate::geom::{Pose, wrap_pi};
+use crate::kinematics::analytic::Coords;
+use crate::kinematics::positions::describe_input;
+use crate::kinematics::solve::inputs::{Found, in_line_extremes};
+use crate::model::scene::PositionsSpec;
+use std::f64::consts::TAU;
+
+/// The positions asked for: every input's coordinates (rad or m) and,
+/// position by position, a bound on each one's error.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InputPositions {
+    pub values: Vec<Coords>,
+    pub rounding: Vec<Coords>,
+}
+
+impl Analysis {
+    /// The positions asked for with their error bounds
+    /// ([`InputPositions`]).
+    pub fn input_positions(&self) -> Result<InputPositions> {
+        let sc = &self.mech.scene;
+        let PositionsSpec::Count { count, output } = sc.positions else {
+            let values = self.input_coords()?;
+            let w = sc.input_count();
+            let rounding = if sc.input_rounding.len() == values.len() * w {
+                sc.input_rounding.chunks(w).map(Coords::new).collect()
+            } else {
+                vec![Coords::new(&vec![0.0; w]); values.len()]
+            };
+            return Ok(InputPositions { values, rounding });
+        };
+        let out = output.unwrap_or_else(|| self.default_output());
+        let start = self.stroke_start(out)?;
+        let error = match start.found {
+            Found::Input => 0.0,
+            Found::InLine => self.in_line_error(out, start.angle)?,
+            Found::Root => self.root_error(out, start.angle)?,
+        };
+        // With the rounding of the steps and of the reduction to a turn.
+        let r = Coords::one(error + 4.0 * f64::EPSILON * TAU);
+        let values = self.count_values(start.angle, count);
+        let rounding = vec![r; count];
+        Ok(InputPositions { values, rounding })
+    }
+
+    /// The error of a start where crank and coupler lie in line: what the
+    /// data's rounding moves it (the collinearity solved again on the
+    /// scene with every datum changed by [`ACCURACY`]`.data_roundings`
+    /// units, per unit), twice over for the few roundings of the closed
+    /// form itself.
+    fn in_line_error(&self, out: usize, q: f64) -> Result<f64> {
+        let mut moved = 0.0f64;
+        for changed in self.changed_data() {
+            let changed = changed.map_err(|e| {
+                Error::scene(
+                    "/positions/count",
+                    format!("the extreme position that begins the working stroke: {e}"),
+                )
+            })?;
+            let near = in_line_extremes(&changed, out)
+                .into_iter()
+                .map(|c| wrap_pi(c - q).abs())
+                .fold(f64::INFINITY, f64::min);
+            moved = moved.max(near);
+        }
+        if !moved.is_finite() {
+            return Err(Error::singular(
+                describe_input(&self.mech, &[q]),
+                "the extreme position that begins the working stroke (for /positions/count) is decided by the rounding of the data: with the data changed by a few units of rounding the crank and the coupler no longer lie in line there; give the positions as angles",
+            ));
+        }
+        Ok(2.0 * moved / ACCURACY.data_roundings)
+    }
+
+    /// The error of a root `phi` of the output's first transfer function
+    /// T: (|T(φ)| + T's printed bound) / |T'(φ)|, the position there
+    /// solved and checked as any other (its bound covers the rounding of
+    /// the arithmetic and of the data); a refusal there refuses the start.
+    fn root_error(&self, out: usize, phi: f64) -> Result<f64> {
+        let m = &self.mech;
+        let mut scene = m.scene.clone();
+        scene.positions = PositionsSpec::List(vec![phi]);
+        scene.input_rounding = vec![4.0 * f64::EPSILON * TAU];
+        scene.want.velocity = true;
+        scene.want.acceleration = true;
+        scene.want.plans = false;
+        scene.dynamics = None;
+        let refusal = |e: Error| {
+            Error::singular(
+                describe_input(m, &[phi]),
+                format!(
+                    "the extreme position that begins the working stroke (for /positions/count) cannot be found reliably ({e}); give the positions as angles"
+                ),
+            )
+        };
+        let one = Analysis::new(scene).map_err(refusal)?;
+        let solved = one.run().map_err(refusal)?;
+        let s = &solved[0];
+        let bound = s
+            .check
+            .as_ref()
+            .and_then(|c| c.bound)
+            .expect("a checked position has its bounds");
+        let mo = s.analogue[out].expect("the output is solved");
+        let (t, dt, b) = match m
+            .prismatics
+            .iter()
+            .find(|p| p.slider == out && p.guide == m.frame())
+        {
+            Some(pr) => {
+                let u = pr.line(&Pose::IDENTITY).dir;
+                let at = s.config.pose(out).apply(pr.slider_local);
+                (u.dot(mo.velocity(at)), u.dot(mo.acceleration(at)), bound.v_q)
+            }
+            None => (mo.omega, mo.epsilon, bound.phi_q),
+        };
+        let error = (t.abs() + b) / dt.abs();
+        if !error.is_finite() {
+            return Err(refusal(Error::singular(
+                describe_input(m, &[phi]),
+                "the output's second transfer function vanishes there too",
+            )));
+        }
+        Ok(error)
+    }
+}
