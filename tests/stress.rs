@@ -379,7 +379,10 @@ fn clear_refusal(msg: &str) -> bool {
 fn stress_catalogue_through_the_binary() {
     let exe = env!("CARGO_BIN_EXE_mechplan");
     let files = stress_files();
-    assert!(files.len() >= 60, "the stress catalogue is missing");
+    assert!(
+        files.len() >= 60 || std::env::var_os("STRESS_ONLY").is_some(),
+        "the stress catalogue is missing"
+    );
     let mut failures = Vec::new();
     for path in &files {
         let name = path.file_stem().unwrap().to_string_lossy().into_owned();
