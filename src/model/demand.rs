@@ -16,6 +16,9 @@ pub struct Demand {
     pub include: Vec<bool>,
     /// Points reported, in scene order.
     pub points: Vec<usize>,
+    /// The link that reports each point of the scene (the first solved
+    /// link carrying it), found once: a sweep asks millions of times.
+    carriers: Vec<Option<usize>>,
 }
 
 impl Demand {
@@ -63,10 +66,18 @@ impl Demand {
                 }
             }
         }
+        let carriers = (0..sc.points.len())
+            .map(|p| {
+                mech.links_of_point(p)
+                    .into_iter()
+                    .find(|&l| include[l])
+            })
+            .collect();
         Demand {
             need,
             include,
             points,
+            carriers,
         }
     }
 
@@ -86,10 +97,7 @@ impl Demand {
     }
 
     /// The link that reports point `p`: the first solved link carrying it.
-    pub fn carrier(&self, mech: &Mechanism, p: usize) -> usize {
-        mech.links_of_point(p)
-            .into_iter()
-            .find(|&l| self.include[l])
-            .expect("reported points are carried by solved links")
+    pub fn carrier(&self, _mech: &Mechanism, p: usize) -> usize {
+        self.carriers[p].expect("reported points are carried by solved links")
     }
 }

@@ -124,59 +124,98 @@ impl Analysis {
         // class II groups (a class III group is tracked in small steps).
         let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
         progress.start(values.len(), "positions");
-        let done = values
-            .chunks(RUN_CHUNK)
-            .enumerate()
-            .try_for_each(|(k, chunk)| {
+        let checks = Checks {
+            changed: &changed,
+            residuals: eqs.as_ref(),
+        };
+        let Route {
+            program,
+            mut state,
+            mut kernel,
+        } = route;
+        let program = program.as_ref();
+        let mut hand = |s: Solved| {
+            self.same_orientation(&mut orientation, &s)?;
+            if let Some((probe, last)) = &mut motion {
+                self.continuous(probe, last, &s)?;
+            }
+            f(s)
+        };
+        // Chunk after chunk: its positions found in order (route (a)'s
+        // state and route (b)'s path run on), then finished in the
+        // background — in parallel when long — while the chunk before is
+        // handed over in order and the next one found: writing a sweep's
+        // results overlaps checking it. Not where each position keeps its
+        // plans (a chunk of them is tens of MB): there a chunk is handed
+        // over before the next is found.
+        let lean = !(self.plans && self.keep_plans);
+        let done = std::thread::scope(|scope| -> Result<()> {
+            type Pending<'s> = (
+                std::thread::ScopedJoinHandle<'s, Vec<Result<Solved>>>,
+                Option<Error>,
+            );
+            let mut pending: Option<Pending> = None;
+            let deliver = |(finishing, stop): Pending, hand: &mut dyn FnMut(Solved) -> Result<()>| {
+                let finished = finishing.join().expect("the finishing of a chunk does not panic");
+                for s in finished {
+                    hand(s?)?;
+                }
+                stop.map_or(Ok(()), Err)
+            };
+            for (k, chunk) in values.chunks(RUN_CHUNK).enumerate() {
                 let from = k * RUN_CHUNK;
                 // How far each input value may be from the one meant.
                 let rounding = &roundings[from..from + chunk.len()];
-                let checks = Checks {
-                    changed: &changed,
-                    residuals: eqs.as_ref(),
-                };
-                let chunk = (from, chunk);
-                let ps = (&mut ps, &mut route);
-                self.run_chunk(chunk, rounding, ps, &mut cs, &checks, progress, &mut |s| {
-                    self.same_orientation(&mut orientation, &s)?;
-                    if let Some((probe, last)) = &mut motion {
-                        self.continuous(probe, last, &s)?;
-                    }
-                    f(s)
-                })
-            });
-        progress.finish();
+                let route = (program, &mut state, &mut kernel);
+                let (placed, stop) = self.place_chunk((from, chunk), rounding, &mut ps, route, &mut cs);
+                let checks = &checks;
+                let finishing = scope.spawn(move || {
+                    crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program))
+                });
+                let last = stop.is_some();
+                if let Some(before) = pending.replace((finishing, stop)) {
+                    deliver(before, &mut hand)?;
+                }
+                // Positions that keep their plans are large: one chunk of
+                // them at a time.
+                if !lean && let Some(now) = pending.take() {
+                    deliver(now, &mut hand)?;
+                }
+                if last {
+                    break;
+                }
+            }
+            match pending {
+                Some(before) => deliver(before, &mut hand),
+                None => Ok(()),
+            }
+        });        progress.finish();
         done
     }
 
-    /// One chunk of [`Analysis::run_each`] (the number of its first
-    /// position, its input values): its positions found in order, then
-    /// finished (in parallel when long) and handed to `f` in order.
-    #[allow(clippy::too_many_arguments)]
-    fn run_chunk<'a>(
+    /// The positions of one chunk of [`Analysis::run_each`] (the number
+    /// of its first position, its input values) found in order: route
+    /// (a)'s places (compiled where `program`, on its `state`), route
+    /// (b)'s path run on, the kernel's plans; the first error stops the
+    /// chunk and is returned with the positions before it.
+    fn place_chunk<'a>(
         &'a self,
         (from, values): (usize, &[Coords]),
         rounding: &[Coords],
-        (ps, route): (&mut PositionSolver, &mut Route<'a>),
+        ps: &mut PositionSolver,
+        (program, state, kernel): (Option<&Program<'a>>, &mut Option<State>, &mut Option<Kernel>),
         cs: &mut Option<ConstraintSolver<'a>>,
-        checks: &Checks,
-        progress: &dyn crate::progress::Progress,
-        f: &mut impl FnMut(Solved) -> Result<()>,
-    ) -> Result<()> {
+    ) -> (Vec<Placed<'a>>, Option<Error>) {
         let mut placed = Vec::with_capacity(values.len());
-        let mut stop = None;
         for (i, (&q, &q_rounding)) in values.iter().zip(rounding).enumerate() {
             let t0 = Clock::now();
-            let config = match (&route.program, &mut route.state) {
+            let config = match (program, &mut *state) {
                 (Some(prog), Some(st)) => prog.positions_coords(st, q).map(|()| st.config.clone()),
                 _ => ps.solve_coords(q),
             };
             let config = match config {
                 Ok(c) => c,
-                Err(e) => {
-                    stop = Some(e);
-                    break;
-                }
+                Err(e) => return (placed, Some(e)),
             };
             let contour_time = t0.elapsed().as_secs_f64();
             let t1 = Clock::now();
@@ -186,12 +225,12 @@ impl Analysis {
                     // Route (a)'s rates come first at a position: its
                     // error, if it has one here, is the one a sequential
                     // run reports.
-                    stop = Some(self.contour_error(q, &config).unwrap_or(e));
-                    break;
+                    let e = self.contour_error(q, &config).unwrap_or(e);
+                    return (placed, Some(e));
                 }
             }
             let constraint_time = t1.elapsed().as_secs_f64();
-            let kernel = match (&mut route.kernel, self.order) {
+            let kernel = match (kernel.as_mut(), self.order) {
                 (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, q, order)),
                 _ => None,
             };
@@ -206,14 +245,7 @@ impl Analysis {
                 kernel,
             });
         }
-        let program = route.program.as_ref();
-        for s in crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program)) {
-            f(s?)?;
-        }
-        match stop {
-            Some(e) => Err(e),
-            None => Ok(()),
-        }
+        (placed, None)
     }
 
     /// The fast path's check of the assembly: the orientation of route

@@ -341,9 +341,17 @@ pub fn csv_field(s: &str) -> String {
     }
 }
 
-/// A number as the JSON result writes it (shortest round trip, no `-0`).
-fn csv_num(x: f64) -> String {
-    num(x).to_string()
+/// A number as the JSON result writes it (shortest round trip, no `-0`),
+/// appended to `out` without a string of its own: serde_json's own writing
+/// of a number (zmij's shortest round trip; `null` where not finite), the
+/// same text to the byte.
+fn push_num(out: &mut String, x: f64) {
+    if x.is_finite() {
+        let x = if x == 0.0 { 0.0 } else { x };
+        out.push_str(zmij::Buffer::new().format_finite(x));
+    } else {
+        out.push_str("null");
+    }
 }
 
 /// The CSV result's header line (docs/scene-format.md, "CSV and JSONL
@@ -393,34 +401,42 @@ pub fn csv_head(an: &Analysis) -> String {
 pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
     let m = &an.mech;
     let Orders { vel, acc, .. } = Orders::of(an);
-    let mut row = Vec::with_capacity(64);
-    row.push((k + 1).to_string());
+    let mut row = String::with_capacity(512);
+    row.push_str(&(k + 1).to_string());
+    let mut cell = |x: f64| {
+        row.push(',');
+        push_num(&mut row, x);
+    };
     for (spec, d) in m.scene.inputs().zip(s.drives.iter()) {
-        row.push(csv_num(match spec {
+        cell(match spec {
             InputSpec::Crank { .. } => d.q.to_degrees(),
             InputSpec::Slider { .. } => d.q,
-        }));
+        });
     }
     for &p in &an.points {
         let ps = s.point(an, p);
-        row.extend([csv_num(ps.at.x), csv_num(ps.at.y)]);
+        cell(ps.at.x);
+        cell(ps.at.y);
         if let Some((v, a)) = ps.rates.filter(|_| vel) {
-            row.extend([csv_num(v.x), csv_num(v.y)]);
+            cell(v.x);
+            cell(v.y);
             if acc {
-                row.extend([csv_num(a.x), csv_num(a.y)]);
+                cell(a.x);
+                cell(a.y);
             }
         }
     }
     for l in (0..m.links.len()).filter(|&l| an.link(l)) {
-        row.push(csv_num(deg(s.config.pose(l).angle)));
+        cell(deg(s.config.pose(l).angle));
         if let Some(mo) = s.motion[l].filter(|_| vel) {
-            row.push(csv_num(mo.omega));
+            cell(mo.omega);
             if acc {
-                row.push(csv_num(mo.epsilon));
+                cell(mo.epsilon);
             }
         }
     }
-    row.join(",") + "\n"
+    row.push('\n');
+    row
 }
 
 /// The result text of `solve` a position at a time: this head, then

@@ -255,9 +255,12 @@ impl Study {
         // numbers only (`Analysis::keep_plans`: the same plans to the bit).
         let lean;
         let an = match style {
-            Results::Table | Results::Csv if self.analysis.keep_plans => {
+            Results::Table | Results::Csv
+                if self.analysis.keep_plans || self.analysis.printed_check =>
+            {
                 let mut a = (*self.analysis).clone();
                 a.keep_plans = false;
+                a.printed_check = false;
                 lean = a;
                 &lean
             }

@@ -14,16 +14,15 @@
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
-use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings, Unknowns};
+use crate::kinematics::analytic::constraint::{
+    Conditioning, ConstraintSolver, Factors, Settings, Unknowns,
+};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::construction::Plans;
 use crate::kinematics::positions::{PositionSolver, describe_input};
 use crate::kinematics::solve::{Analysis, Position};
 use crate::model::mechanism::Mechanism;
 use kurbo::Point;
-
-/// (what, |difference|, |value|) of one kind of quantity.
-type Diffs = Vec<(String, f64, f64)>;
 
 /// Both routes' agreement at one position and what each cost.
 #[derive(Clone, Debug)]
@@ -236,9 +235,20 @@ impl Analysis {
         let u = eqs
             .base
             .unknowns(|l| s.config.pose(l), &s.motion, self.order);
+        // Printed, the conditioning is σ_min/σ_max itself; else only what
+        // the check compares it with must be decided as that would.
+        let conditioning = if self.printed_check {
+            Conditioning::Exact
+        } else {
+            Conditioning::Decided(
+                ACCURACY
+                    .min_conditioning
+                    .max(ACCURACY.linear_data_conditioning),
+            )
+        };
         let c = eqs
             .base
-            .corrected(&u, &x, &rates, false, true)
+            .corrected(&u, &x, &rates, false, conditioning)
             .map_err(refuse)?;
         if c.conditioning.is_nan() || c.conditioning < ACCURACY.min_conditioning {
             return Err(refuse(format!(
@@ -253,7 +263,10 @@ impl Analysis {
             )));
         }
         let linear = (c.conditioning >= ACCURACY.linear_data_conditioning)
-            .then(|| self.linear_sensitivity(s, &u, eqs, q_rounding, changed))
+            .then(|| {
+                let near = c.factors.as_ref()?;
+                self.linear_sensitivity(s, &u, eqs, near, q_rounding, changed)
+            })
             .flatten()
             .filter(|&x| x <= ACCURACY.linear_data_sensitivity);
         let sens = match linear {
@@ -262,7 +275,10 @@ impl Analysis {
                 .data_sensitivity(s, q_rounding, changed)
                 .map_err(refuse)?,
         };
-        let bound = self.bounds(s, c.conditioning, d, sens);
+        // Bounds only where printed.
+        let bound = self
+            .printed_check
+            .then(|| self.bounds(s, c.conditioning, d, sens));
         Ok(CrossCheck {
             max_rel_diff: d,
             worst,
@@ -271,7 +287,7 @@ impl Analysis {
             conditioning: c.conditioning,
             plan_time: 0.0,
             data_sensitivity: Some(sens),
-            bound: Some(bound),
+            bound,
             method: Method::Residuals {
                 linear_data: linear.is_some(),
             },
@@ -282,14 +298,16 @@ impl Analysis {
     /// The data sensitivity to first order: route (b)'s equations of each
     /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
     /// moves it) at route (a)'s answer `u`, corrected by one step, and
-    /// compared with the answer as the data check compares. `None` where
-    /// a changed scene is refused or its Jacobian singular (the solve
-    /// again decides).
+    /// compared with the answer as the data check compares; the solves by
+    /// the scene's own factors `near` ([`ConstraintSolver::corrected_by`]).
+    /// `None` where a changed scene is refused or its Jacobian singular
+    /// (the solve again decides).
     fn linear_sensitivity(
         &self,
         s: &Position,
         u: &Unknowns,
         eqs: &Residuals,
+        near: &Factors,
         q_rounding: Coords,
         changed: &ChangedData,
     ) -> Option<f64> {
@@ -304,7 +322,7 @@ impl Analysis {
             for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
                 *x += sign * units * r;
             }
-            let c = cs.corrected(u, &x, &rates, true, false).ok()?;
+            let c = cs.corrected_by(u, &x, &rates, near).ok()?;
             let (d, _) = self.compare_with(s, &c.motion, &an.mech);
             if d.is_nan() {
                 return None;
@@ -542,85 +560,83 @@ impl Analysis {
         om: &Mechanism,
     ) -> (f64, String) {
         let m = &self.mech;
-        let mut worst = (0.0f64, String::from("none"));
-        let mut note = |d: f64, what: String| {
+        // The worst item, named only at the end: a sweep compares
+        // millions of numbers and prints at most one name a position.
+        let mut worst = (0.0f64, None::<(&str, Item)>);
+        let mut note = |d: f64, kind: &'static str, what: Item| {
             if d > worst.0 || d.is_nan() {
-                worst = (d, what);
+                worst = (d, Some((kind, what)));
             }
         };
-        let pts: Vec<(usize, usize)> = self.points.iter().map(|&p| (p, self.carrier(p))).collect();
+        let name = |w: Option<(&str, Item)>| match w {
+            None => String::from("none"),
+            Some((kind, Item::Point(p))) => format!("{kind} {}", m.point_name(p)),
+            Some((kind, Item::Link(l))) => format!("{kind} link {}", m.link_id(l)),
+        };
         let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
-        for &(p, l) in &pts {
+        let pts = || self.points.iter().map(|&p| (p, self.carrier(p)));
+        let links = || (0..m.links.len()).filter(|&l| self.link(l));
+        for (p, l) in pts() {
             let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
-            note(d, format!("position of {}", m.point_name(p)));
+            note(d, "position of", Item::Point(p));
         }
-        let links: Vec<usize> = (0..m.links.len()).filter(|&l| self.link(l)).collect();
-        for &l in &links {
+        for l in links() {
             let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
-            note(d, format!("angle of link {}", m.link_id(l)));
+            note(d, "angle of", Item::Link(l));
         }
         let Some(order) = self.order else {
-            return worst;
+            return (worst.0, name(worst.1));
         };
-        // Each motion at its own place of the point.
+        let acc = order == Order::Acceleration;
+        // Each motion at its own place of the point. Velocities and
+        // angular velocities share a scale (ω·size), as do accelerations
+        // and angular accelerations (ε·size): the scales first.
         let a_of = |mo: &[Option<Motion>], l: usize, at: Point| {
             (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at))
         };
-        let mut kinds: Vec<(&str, Diffs)> = vec![("v", vec![]), ("ω", vec![])];
-        if order == Order::Acceleration {
-            kinds.push(("a", vec![]));
-            kinds.push(("ε", vec![]));
+        let (mut sv, mut sa) = (f64::MIN_POSITIVE, f64::MIN_POSITIVE);
+        for (p, l) in pts() {
+            let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
+            sv = sv.max(va.hypot());
+            sa = sa.max(aa.hypot());
         }
-        for &(p, l) in &pts {
+        for l in links() {
+            let ma = s.motion[l].unwrap();
+            sv = sv.max(ma.omega.abs() * m.size);
+            sa = sa.max(ma.epsilon.abs() * m.size);
+        }
+        // In the order the names were always reported in (ties keep the
+        // first): v, ω, then a, ε.
+        let mut da = Vec::new();
+        for (p, l) in pts() {
             let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
             let (vb, ab) = a_of(other, l, place_b(p, l));
-            kinds[0]
-                .1
-                .push((m.point_name(p).to_string(), (va - vb).hypot(), va.hypot()));
-            if order == Order::Acceleration {
-                kinds[2]
-                    .1
-                    .push((m.point_name(p).to_string(), (aa - ab).hypot(), aa.hypot()));
+            note((va - vb).hypot() / sv, "v of", Item::Point(p));
+            if acc {
+                da.push(((aa - ab).hypot() / sa, p));
             }
         }
-        for &l in &links {
+        for l in links() {
             let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
-            kinds[1].1.push((
-                format!("link {}", m.link_id(l)),
-                (ma.omega - mb.omega).abs(),
-                ma.omega.abs(),
-            ));
-            if order == Order::Acceleration {
-                kinds[3].1.push((
-                    format!("link {}", m.link_id(l)),
-                    (ma.epsilon - mb.epsilon).abs(),
-                    ma.epsilon.abs(),
-                ));
+            note((ma.omega - mb.omega).abs() * m.size / sv, "ω of", Item::Link(l));
+        }
+        if acc {
+            for (d, p) in da {
+                note(d, "a of", Item::Point(p));
+            }
+            for l in links() {
+                let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
+                let d = (ma.epsilon - mb.epsilon).abs() * m.size / sa;
+                note(d, "ε of", Item::Link(l));
             }
         }
-        // Velocities and angular velocities share a scale (ω·size), as do
-        // accelerations and angular accelerations (ε·size).
-        let scale = |a: &[(String, f64, f64)], b: &[(String, f64, f64)]| {
-            let x = a.iter().map(|e| e.2).fold(0.0, f64::max);
-            let y = b.iter().map(|e| e.2 * m.size).fold(0.0, f64::max);
-            x.max(y).max(f64::MIN_POSITIVE)
-        };
-        let sv = scale(&kinds[0].1, &kinds[1].1);
-        for (name, d, _) in &kinds[0].1 {
-            note(d / sv, format!("v of {name}"));
-        }
-        for (name, d, _) in &kinds[1].1 {
-            note(d * m.size / sv, format!("ω of {name}"));
-        }
-        if order == Order::Acceleration {
-            let sa = scale(&kinds[2].1, &kinds[3].1);
-            for (name, d, _) in &kinds[2].1 {
-                note(d / sa, format!("a of {name}"));
-            }
-            for (name, d, _) in &kinds[3].1 {
-                note(d * m.size / sa, format!("ε of {name}"));
-            }
-        }
-        worst
+        (worst.0, name(worst.1))
     }
+}
+
+/// What a compared number belongs to: a point or a link.
+#[derive(Clone, Copy)]
+enum Item {
+    Point(usize),
+    Link(usize),
 }

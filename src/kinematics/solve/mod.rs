@@ -44,6 +44,13 @@ pub struct Analysis {
     /// ([`crate::kinematics::construction::build_plans_numbers`]: the same
     /// plans to the bit), compared with both routes and dropped.
     pub keep_plans: bool,
+    /// Whether the results print the cross-check's conditioning and
+    /// bounds (the JSON result does; a table or CSV does not). Where not,
+    /// the fast path's conditioning is only decided: a lower bound from
+    /// the inverse's Frobenius norm (within a factor n of σ_min/σ_max),
+    /// the SVD only where that bound falls below a threshold the check
+    /// compares with, so every decision is the SVD's.
+    pub printed_check: bool,
     /// Where the result keeps no plans, build them by the sweep's
     /// construction kernel ([`crate::kinematics::construction::Kernel`],
     /// each plan first at the last position's scale), in the order of the
@@ -153,6 +160,7 @@ impl Analysis {
             order,
             plans,
             keep_plans: true,
+            printed_check: true,
             sweep_kernel: false,
             corrupt: None,
             reference: false,

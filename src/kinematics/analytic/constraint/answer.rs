@@ -56,16 +56,19 @@ impl ConstraintSolver<'_> {
         x: &[f64],
         rates: &[(f64, f64)],
         relinearize: bool,
-        conditioning: bool,
+        conditioning: Conditioning,
     ) -> std::result::Result<Corrected, String> {
         let singular = || "the constraint Jacobian is singular".to_string();
         let j = self.jacobian(&u.q);
-        let conditioning = if conditioning {
-            self.scaled_conditioning(&j)
-        } else {
-            f64::NAN
-        };
         let lu = j.clone().lu();
+        let conditioning = match conditioning {
+            Conditioning::None => f64::NAN,
+            Conditioning::Exact => self.scaled_conditioning(&j),
+            Conditioning::Decided(threshold) => self
+                .conditioning_at_least(&j, &lu)
+                .filter(|&c| c >= threshold)
+                .unwrap_or_else(|| self.scaled_conditioning(&j)),
+        };
         let orientation = lu.determinant().signum();
         let q = &u.q - lu.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
         let (j, lu, at) = if relinearize {
@@ -94,8 +97,80 @@ impl ConstraintSolver<'_> {
             motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
             conditioning,
             orientation,
+            factors: (!relinearize).then_some(lu),
         })
     }
+
+    /// As [`Self::corrected`] with `relinearize`, the linear solves by the
+    /// LU factors `near` of a nearby mechanism's Jacobian (the scene before
+    /// its data were changed by a few roundings) instead of this one's
+    /// own: the residuals are this mechanism's, so the corrected answer is
+    /// its own to first order, and the change of the inverse (a few
+    /// roundings of the data, times κ) enters only the correction of a
+    /// residual itself of that size — second order, far below what the
+    /// data check compares.
+    pub fn corrected_by(
+        &self,
+        u: &Unknowns,
+        x: &[f64],
+        rates: &[(f64, f64)],
+        near: &Factors,
+    ) -> std::result::Result<Corrected, String> {
+        let singular = || "the constraint Jacobian is singular".to_string();
+        let q = &u.q - near.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
+        let j = self.jacobian(&q);
+        let mut b = DVector::zeros(self.rows());
+        for &(i, row) in &self.driver_rows {
+            b[row] = rates[i].0;
+        }
+        let qd = match &u.qd {
+            Some(qd) => Some(qd - near.solve(&(&j * qd - b)).ok_or_else(singular)?),
+            None => None,
+        };
+        let qdd = match (&u.qdd, &qd) {
+            (Some(qdd), Some(qd_new)) => {
+                let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
+                let g = self.gamma(&q, qd_new, &acc);
+                Some(qdd - near.solve(&(&j * qdd - g)).ok_or_else(singular)?)
+            }
+            _ => None,
+        };
+        Ok(Corrected {
+            motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
+            conditioning: f64::NAN,
+            orientation: f64::NAN,
+            factors: None,
+        })
+    }
+}
+
+impl ConstraintSolver<'_> {
+    /// At the positions of `u`: σ_min/σ_max of the scaled Jacobian by its
+    /// SVD, the lower bound [`Conditioning::Decided`] rests on, and the
+    /// number of unknowns n (the bound is within a factor n). For tests.
+    #[doc(hidden)]
+    pub fn conditioning_both(&self, u: &Unknowns) -> (f64, Option<f64>, usize) {
+        let j = self.jacobian(&u.q);
+        let lu = j.clone().lu();
+        let bound = self.conditioning_at_least(&j, &lu);
+        (self.scaled_conditioning(&j), bound, j.ncols())
+    }
+}
+
+/// The LU factors of a constraint Jacobian.
+pub type Factors = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
+
+/// What [`ConstraintSolver::corrected`] finds of the conditioning.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Conditioning {
+    /// Nothing (NaN).
+    None,
+    /// σ_min/σ_max of the scaled Jacobian, by its SVD.
+    Exact,
+    /// A lower bound on it where that bound is at least the threshold
+    /// given (every comparison with the threshold or below decides as the
+    /// exact value would), else the exact value.
+    Decided(f64),
 }
 
 /// An answer in route (b)'s unknowns ([`ConstraintSolver::unknowns`]):
@@ -120,4 +195,7 @@ pub struct Corrected {
     /// The sign of det Φ_q there: the orientation of the assembly, which
     /// changes only through a singular position.
     pub orientation: f64,
+    /// The LU factors of Φ_q at the answer's positions (without
+    /// `relinearize`): for [`ConstraintSolver::corrected_by`].
+    pub factors: Option<Factors>,
 }

@@ -11,6 +11,6 @@
 
 mod answer;
 mod path;
-pub use answer::{Corrected, Unknowns};
+pub use answer::{Conditioning, Corrected, Factors, Unknowns};
 mod solver;
 pub use solver::*;
