@@ -90,13 +90,16 @@ mod render {
             .map_err(|e| Error::Internal(format!("PNG encoding failed: {e}")))
     }
 
-    /// Convert a sheet to PDF.
+    /// Convert a sheet to PDF, at true size: the sheet's SVG is sized in
+    /// millimetres, which usvg takes as CSS pixels at 96 per inch; the page
+    /// is in points, 72 per inch (svg2pdf's default of 72 dpi made every
+    /// page 4/3 too large, and every μ on it wrong when printed at 100 %).
     pub fn pdf(svg: &str) -> Result<Vec<u8>> {
         let tree = tree(svg)?;
         svg2pdf::to_pdf(
             &tree,
             svg2pdf::ConversionOptions::default(),
-            svg2pdf::PageOptions::default(),
+            svg2pdf::PageOptions { dpi: 96.0 },
         )
         .map_err(|e| Error::Internal(format!("PDF conversion failed: {e}")))
     }

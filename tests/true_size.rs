@@ -1,0 +1,90 @@
+//! Sheets printed at 100 % are their format at true size: every PDF page
+//! (each sheet's own file and every page of the book `sheets.pdf`) is the
+//! ISO format it was drawn on, to 1 pt, so that every μ written on it
+//! holds on paper.
+
+use std::path::Path;
+use std::process::Command;
+
+/// The page sizes (points) of every page of a PDF file, from its MediaBox.
+fn pages(pdf: &Path) -> Vec<(f64, f64)> {
+    let bytes = std::fs::read(pdf).unwrap();
+    let text = String::from_utf8_lossy(&bytes);
+    text.match_indices("/MediaBox")
+        .map(|(i, _)| {
+            let rest = &text[i..];
+            let open = rest.find('[').unwrap();
+            let close = rest.find(']').unwrap();
+            let v: Vec<f64> = rest[open + 1..close]
+                .split_whitespace()
+                .map(|x| x.parse().unwrap())
+                .collect();
+            (v[2] - v[0], v[3] - v[1])
+        })
+        .collect()
+}
+
+/// ISO 216 sizes, mm (portrait).
+fn iso(name: &str) -> (f64, f64) {
+    match name {
+        "A4" => (210.0, 297.0),
+        "A3" => (297.0, 420.0),
+        "A2" => (420.0, 594.0),
+        "A1" => (594.0, 841.0),
+        _ => unreachable!(),
+    }
+}
+
+fn points(mm: f64) -> f64 {
+    mm * 72.0 / 25.4
+}
+
+/// Is the page (pt) the format `name` at true size, either way round?
+fn is_format(page: (f64, f64), name: &str) -> bool {
+    let (w, h) = iso(name);
+    let (w, h) = (points(w), points(h));
+    let near = |a: f64, b: f64| (a - b).abs() <= 1.0;
+    (near(page.0, w) && near(page.1, h)) || (near(page.0, h) && near(page.1, w))
+}
+
+#[test]
+fn every_pdf_page_is_its_format_at_true_size() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (sheet, course) in [("A4", "A1"), ("A3", "A1"), ("A2", "A2")] {
+        let dir = std::env::temp_dir().join(format!("mechplan-true-size-{sheet}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = Command::new(exe)
+            .arg("draw")
+            .arg(root.join("fixtures/four_bar.json"))
+            .args(["--format", "pdf", "--sheet", sheet, "--course", "-o"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let mut seen = 0;
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension().is_none_or(|x| x != "pdf") {
+                continue;
+            }
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            let want = if name == "course.pdf" { course } else { sheet };
+            for page in pages(&p) {
+                // The book holds the course sheet too.
+                let ok = is_format(page, want) || (name == "sheets.pdf" && is_format(page, course));
+                assert!(
+                    ok,
+                    "{name} with --sheet {sheet}: a page of {:.1} × {:.1} pt, not {want} ({:.1} × {:.1} pt)",
+                    page.0,
+                    page.1,
+                    points(iso(want).1),
+                    points(iso(want).0)
+                );
+                seen += 1;
+            }
+        }
+        assert!(seen > 20, "{seen} pages");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
