@@ -52,7 +52,8 @@ fn every_pdf_page_is_its_format_at_true_size() {
     let exe = env!("CARGO_BIN_EXE_mechplan");
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     for (sheet, course) in [("A4", "A1"), ("A3", "A1"), ("A2", "A2")] {
-        let dir = std::env::temp_dir().join(format!("mechplan-true-size-{sheet}-{}", std::process::id()));
+        let dir =
+            std::env::temp_dir().join(format!("mechplan-true-size-{sheet}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         let out = Command::new(exe)
             .arg("draw")
@@ -61,7 +62,11 @@ fn every_pdf_page_is_its_format_at_true_size() {
             .arg(&dir)
             .output()
             .unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let mut seen = 0;
         for e in std::fs::read_dir(&dir).unwrap() {
             let p = e.unwrap().path();

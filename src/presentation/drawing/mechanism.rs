@@ -103,6 +103,17 @@ pub(crate) fn block_corners(q: Point, u: Vec2, a: f64, b: f64) -> [Point; 4] {
     ]
 }
 
+/// The points of link `l` that make its body: all but its centres of
+/// mass (a point of this link alone named S…), in the link's order.
+pub(crate) fn body_points(m: &Mechanism, l: usize) -> Vec<usize> {
+    m.links[l]
+        .points
+        .iter()
+        .copied()
+        .filter(|&p| m.links_of_point(p).len() >= 2 || !m.point_name(p).starts_with('S'))
+        .collect()
+}
+
 /// A link's body through its points `xy` (centres of mass left out): a
 /// shaded polygon for three points or more, a line for two.
 pub(crate) fn link_body(c: &mut Canvas, xy: &[Point]) {

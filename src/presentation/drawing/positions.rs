@@ -1,12 +1,15 @@
 //! The positions sheet (lecture Fig. 2.1): the mechanism in every solved
-//! position, numbered from 1, the first in main lines, with the
-//! trajectories of the coupler points drawn through many more positions.
+//! position, numbered from 1, the first in main lines, every rigid link a
+//! closed figure in each, the output's extreme positions the others leave
+//! out in dash-dot-dot lines, with the trajectories of the coupler points
+//! drawn through many more positions.
 
 use super::canvas::{Canvas, Label, Line, SMALL};
-use crate::kinematics::positions::PositionSolver;
+use super::mechanism::body_points;
+use crate::kinematics::positions::{Configuration, PositionSolver};
 use crate::kinematics::solve::Analysis;
 use crate::model::mechanism::Mechanism;
-use crate::model::scene::InputSpec;
+use crate::model::scene::{InputSpec, PositionsSpec};
 use crate::pipeline::Solved;
 use kurbo::Point;
 
@@ -16,6 +19,10 @@ pub struct Trajectories {
     paths: Vec<Vec<Point>>,
     /// The crank's pivot and radius, m, when it turns fully.
     circle: Option<(Point, f64)>,
+    /// The output's extreme positions not among the positions drawn (the
+    /// end of the working stroke, and its start where the positions do
+    /// not begin there), each with its sign: 0 for the start, 1 the end.
+    extremes: Vec<(Configuration, usize)>,
 }
 
 /// The input link's point off the frame (a crank's end), if it has one.
@@ -39,21 +46,42 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
     let input = m.scene.input.link();
     let tip = crank_tip(m);
     let every = numbering_step(solved.len());
+    // Each link in one path through its body's corners, closed where it
+    // has three or more (a rigid link is a closed figure in every
+    // position, as in the main one); centres of mass left out. A
+    // position is a handful of elements: the sheet grows linearly.
+    let bodies = |c: &mut Canvas, config: &Configuration, line: Line| {
+        for l in (0..m.links.len()).filter(|&l| l != m.frame() && an.link(l)) {
+            let mut xy: Vec<Point> = body_points(m, l)
+                .into_iter()
+                .map(|p| to(config.point(m, l, p)))
+                .collect();
+            if xy.len() >= 3 {
+                xy.push(xy[0]);
+            }
+            c.path(xy, line);
+        }
+    };
+    // The output's extreme positions the positions leave out (the end of
+    // the working stroke, A′₀ of the lecture) in dash-dot-dot lines
+    // (ГОСТ 2.303's line for extreme positions), the crank's end named.
+    for (config, which) in &t.extremes {
+        bodies(c, config, Line::DashDotDot);
+        if let Some(p) = tip {
+            let at = to(config.point(m, input, p));
+            let prime = if *which == 1 { "′" } else { "" };
+            c.circle(at, 0.4, "black", 0.0);
+            c.label_later(
+                at,
+                Label::new(format!("{}{prime}", m.point_name(p)), "0"),
+                SMALL,
+                Some(format!("extreme-{which}")),
+            );
+        }
+    }
     for (k, s) in solved.iter().enumerate() {
         if k > 0 {
-            // Each link in one thin path: a position is a handful of
-            // elements, and the sheet grows linearly with the positions.
-            for (l, link) in m.links.iter().enumerate() {
-                if l == m.frame() || !an.link(l) || link.points.len() < 2 {
-                    continue;
-                }
-                let xy: Vec<Point> = link
-                    .points
-                    .iter()
-                    .map(|&p| to(s.config.point(m, l, p)))
-                    .collect();
-                c.path(xy, Line::Thin);
-            }
+            bodies(c, &s.config, Line::Thin);
         }
         // Number the positions, from 1, at the input's moving point.
         if let Some(p) = tip
@@ -113,6 +141,7 @@ pub fn trajectories(an: &Analysis, solved: &[Solved]) -> Trajectories {
         return Trajectories {
             paths: Vec::new(),
             circle: None,
+            extremes: Vec::new(),
         };
     }
     let full_turn = matches!(m.scene.input, InputSpec::Crank { .. })
@@ -176,5 +205,59 @@ pub fn trajectories(an: &Analysis, solved: &[Solved]) -> Trajectories {
         }
         _ => None,
     };
-    Trajectories { paths, circle }
+    let extremes = if full_turn {
+        extremes(an, solved)
+    } else {
+        Vec::new()
+    };
+    Trajectories {
+        paths,
+        circle,
+        extremes,
+    }
+}
+
+/// The output's two extreme positions (the start and the end of its
+/// working stroke) that are not among the `solved` ones, followed from
+/// the first solved position on its branch; none where the output turns
+/// fully or a position cannot be reached.
+fn extremes(an: &Analysis, solved: &[Solved]) -> Vec<(Configuration, usize)> {
+    let m = &an.mech;
+    let out = match m.scene.positions {
+        PositionsSpec::Count {
+            output: Some(out), ..
+        } => out,
+        _ => an.default_output(),
+    };
+    let Ok((start, stroke)) = an.working_stroke(out) else {
+        return Vec::new();
+    };
+    if stroke >= std::f64::consts::TAU {
+        return Vec::new();
+    }
+    let Ok(mut ps) = PositionSolver::new(m, &an.structure, an.need.clone()) else {
+        return Vec::new();
+    };
+    let dir = m.scene.input.sense();
+    let q0 = solved[0].q;
+    // The start, unwound to within a turn after the first position.
+    let start = q0 + dir * (dir * (start - q0)).rem_euclid(std::f64::consts::TAU);
+    let drawn = |q: f64| {
+        solved.iter().any(|s| {
+            let d = (s.q - q).rem_euclid(std::f64::consts::TAU);
+            d.min(std::f64::consts::TAU - d) < 1e-9
+        })
+    };
+    let mut out = Vec::new();
+    if ps.solve(q0).is_err() {
+        return out;
+    }
+    for (which, q) in [(0, start), (1, start + dir * stroke)] {
+        match ps.solve(q) {
+            Ok(config) if !drawn(q) => out.push((config, which)),
+            Ok(_) => {}
+            Err(_) => return Vec::new(),
+        }
+    }
+    out
 }
