@@ -290,7 +290,8 @@ fn force_steps_read_off_the_reactions() {
                     .split(" = ")
                     .nth(1)
                     .and_then(|v| v.split_whitespace().next())
-                    .and_then(|v| v.parse().ok())
+                    // uk and ru write a decimal comma.
+                    .and_then(|v| v.replace(',', ".").parse().ok())
                     .unwrap_or_else(|| panic!("{name}: {line}"));
                 // Find the reaction in the result: the pair of the two link ids.
                 let ids = &key[2..];
@@ -350,7 +351,7 @@ fn force_steps_end_with_the_lever() {
                     .rsplit(" = ")
                     .next()
                     .and_then(|v| v.split_whitespace().next())
-                    .map(|v| v.replace('−', "-"))
+                    .map(|v| v.replace('−', "-").replace(',', "."))
                     .and_then(|v| v.parse().ok())
                     .unwrap_or_else(|| panic!("{line}"));
                 let mb = s.dynamics.as_ref().unwrap().balancing[0].value();

@@ -66,5 +66,6 @@ pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) ->
         }
     }
     t += &super::force_steps::force_steps(an, s, i, &input, lang);
-    t
+    // Every number in the language's decimal mark (a comma in uk and ru).
+    crate::words::numbers::decimals(&t, lang)
 }

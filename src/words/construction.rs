@@ -52,7 +52,8 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
         mu,
         scale: num(plan.mu),
     };
-    match &plan.steps[i].op {
+    // In the language's decimal mark (a comma in uk and ru).
+    let text = match &plan.steps[i].op {
         Op::Pole { fixed } => s.pole(fixed),
         Op::LayOff {
             from,
@@ -128,7 +129,8 @@ pub fn sentence(plan: &Plan, i: usize, l: Lang) -> String {
             &[("what", what), ("link", link), ("from", from_link)],
         ),
         Op::Equation { text } => fill(&w.equations, &[("text", text)]),
-    }
+    };
+    super::numbers::decimals(&text, l)
 }
 
 /// What a plan's sentences share: the language's phrases, the plan, its

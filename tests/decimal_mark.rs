@@ -1,0 +1,104 @@
+//! Numbers in the language's decimal mark: in uk and ru outputs a comma,
+//! never a point, in every generated sentence — `solve --steps` (the
+//! plans' steps, their measured values, the force plans and the lever of
+//! a dynamics scene) and the handout's step sentences. The scene's own
+//! title (which may say "Fig. 2.10") is the user's text and left as
+//! written.
+
+use std::path::Path;
+use std::process::Command;
+
+/// A number written with a decimal point: a digit, '.', a digit.
+fn decimal_points(text: &str) -> Vec<String> {
+    let c: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    for i in 1..c.len().saturating_sub(1) {
+        if c[i] == '.' && c[i - 1].is_ascii_digit() && c[i + 1].is_ascii_digit() {
+            let from = i.saturating_sub(30);
+            let to = (i + 30).min(c.len());
+            out.push(c[from..to].iter().collect());
+        }
+    }
+    out
+}
+
+fn run(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn uk_and_ru_steps_write_decimal_commas() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for lang in ["uk", "ru"] {
+        for scene in [
+            "fixtures/four_bar.json",
+            "fixtures/six_link_fig2_10.json",
+            "fixtures/dynamics/six_link_fig2_10.json",
+        ] {
+            let path = root.join(scene);
+            let text = run(&["solve", path.to_str().unwrap(), "--steps", "--lang", lang]);
+            let title: String =
+                serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&path).unwrap())
+                    .unwrap()["title"]
+                    .as_str()
+                    .unwrap_or("")
+                    .to_string();
+            let body: String = text
+                .lines()
+                .filter(|l| title.is_empty() || *l != title)
+                .collect::<Vec<_>>()
+                .join("\n");
+            assert!(body.contains(','), "{scene} {lang}: no numbers?");
+            let bad = decimal_points(&body);
+            assert!(bad.is_empty(), "{scene} --lang {lang}: {bad:#?}");
+        }
+        // The English steps keep their points.
+        let en = run(&[
+            "solve",
+            root.join("fixtures/four_bar.json").to_str().unwrap(),
+            "--steps",
+        ]);
+        assert!(!decimal_points(&en).is_empty());
+    }
+}
+
+#[test]
+fn uk_and_ru_handout_sentences_write_decimal_commas() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for lang in ["uk", "ru"] {
+        let dir =
+            std::env::temp_dir().join(format!("mechplan-decimal-{lang}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        run(&[
+            "draw",
+            root.join("fixtures/six_link_fig2_10.json")
+                .to_str()
+                .unwrap(),
+            "--html",
+            "--lang",
+            lang,
+            "-o",
+            dir.to_str().unwrap(),
+        ]);
+        let html = std::fs::read_to_string(dir.join("handout.html")).unwrap();
+        let mut sentences = 0;
+        for (i, _) in html.match_indices("<li data-step=") {
+            let li = &html[i..];
+            let li = &li[li.find('>').unwrap() + 1..li.find("</li>").unwrap()];
+            sentences += 1;
+            let bad = decimal_points(li);
+            assert!(bad.is_empty(), "handout --lang {lang}: {bad:#?}");
+        }
+        assert!(sentences > 50, "{sentences}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
