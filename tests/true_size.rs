@@ -93,3 +93,63 @@ fn every_pdf_page_is_its_format_at_true_size() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// ГОСТ 2.304 lettering on the A1 course sheets (kinematic and force):
+/// every text at least 3.5 mm, every index (sub- or superscript) at
+/// least 2.5 mm, read back from the SVG.
+#[test]
+fn course_sheets_lettered_at_least_3_5_mm() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for scene in [
+        "fixtures/dynamics/six_link_fig2_10.json",
+        "fixtures/dynamics/shaper_fig2_11.json",
+        "fixtures/compressor_fig2_12.json",
+    ] {
+        let dir = std::env::temp_dir().join(format!(
+            "mechplan-lettering-{}-{}",
+            scene.replace('/', "-"),
+            std::process::id()
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = Command::new(exe)
+            .arg("draw")
+            .arg(root.join(scene))
+            .args(["--course", "--title-block", "-o"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let mut sheets = 0;
+        for name in ["course.svg", "course_forces.svg"] {
+            let Ok(svg) = std::fs::read_to_string(dir.join(name)) else {
+                continue;
+            };
+            sheets += 1;
+            let mut texts = 0;
+            for (i, _) in svg.match_indices("font-size=\"") {
+                let rest = &svg[i + 11..];
+                let size: f64 = rest[..rest.find('"').unwrap()].parse().unwrap();
+                // An index: a tspan shifted off the baseline.
+                let tag_start = svg[..i].rfind('<').unwrap();
+                let tag = &svg[tag_start..i];
+                let index = tag.starts_with("<tspan") && tag.contains("baseline-shift");
+                let least = if index { 2.5 } else { 3.5 };
+                assert!(
+                    size >= least,
+                    "{scene} {name}: a {} at {size} mm: {}",
+                    if index { "index" } else { "text" },
+                    &svg[tag_start..(i + 120).min(svg.len())]
+                );
+                texts += 1;
+            }
+            assert!(texts > 100, "{scene} {name}: {texts} texts");
+        }
+        assert!(sheets >= 1, "{scene}: no course sheet");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

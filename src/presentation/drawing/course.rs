@@ -13,7 +13,7 @@
 //! scales allow.
 
 use super::canvas::{Canvas, SMALL};
-use super::pack::{CAPTION, Figure, GAP, field_of, pack, place, round3, size};
+use super::pack::{Figure, GAP, caption_line, field_of, pack, place, round3, size};
 use super::sheet::{self, Page};
 use super::table::{self, Ruled, number, unit};
 use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
@@ -71,8 +71,18 @@ enum Source<'a> {
     Fixed(&'a Figure),
 }
 
-/// The course sheet of `solved` (every position of the scene).
+/// The factor on the lettering of the course sheets: the labels drawn
+/// at 2.5 mm elsewhere are 3.5 mm (ГОСТ 2.304's smallest size for an A1
+/// drawing read at arm's length), their indices 2.5 mm.
+pub const COURSE_LETTERING: f64 = 2.5 / (0.7 * 2.5) * 1.0001;
+
+/// The course sheet of `solved` (every position of the scene), its
+/// lettering [`COURSE_LETTERING`] times the other sheets'.
 pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
+    super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, opt))
+}
+
+fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
     let size = size(opt);
     let lang = opt.lang;
     let w = words(lang);
@@ -399,7 +409,7 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
             for (j, c) in cs.iter().enumerate() {
                 let b = c.bounds();
                 cw[j % cols] = cw[j % cols].max(b.width() + GAP);
-                ch[j / cols] = ch[j / cols].max(b.height() + CAPTION + GAP);
+                ch[j / cols] = ch[j / cols].max(b.height() + caption_line() + GAP);
             }
             let xs: Vec<f64> = (0..cols).map(|i| cw[..i].iter().sum()).collect();
             let ys: Vec<f64> = (0..rows).map(|i| -ch[..i].iter().sum::<f64>()).collect();
@@ -409,10 +419,10 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
                 let (x0, y0, w_, h_) = (xs[col], ys[row], cw[col], ch[row]);
                 let b = c.bounds();
                 let ox = x0 + (w_ - b.width()) / 2.0 - b.x0;
-                let oy = y0 - CAPTION - (h_ - CAPTION - b.height()) / 2.0 - b.y1;
+                let oy = y0 - caption_line() - (h_ - caption_line() - b.height()) / 2.0 - b.y1;
                 g.append(c, ox, oy);
                 g.rich(
-                    Point::new(x0 + w_ / 2.0, y0 - CAPTION + 1.5),
+                    Point::new(x0 + w_ / 2.0, y0 - caption_line() + 1.5),
                     &format!("{} {k}", w.position),
                     SMALL,
                     "caption",

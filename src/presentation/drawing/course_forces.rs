@@ -195,8 +195,15 @@ fn figures(
     Ok(out)
 }
 
-/// The second course sheet; `None` without force plans.
+/// The second course sheet; `None` without force plans. Lettered as the
+/// first ([`super::course::COURSE_LETTERING`]).
 pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
+    super::canvas::with_lettering(super::course::COURSE_LETTERING, || {
+        forces_sheet(an, solved, opt)
+    })
+}
+
+fn forces_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
     if solved.is_empty() {
         return Ok(None);
     }

@@ -317,7 +317,7 @@ fn draw_panel(
     out.prims.push(Prim::Text {
         at: Point::new(b.x0 + d.x, b.y0 + d.y - SCALE_LINE + 1.5),
         label: scale,
-        size: FONT,
+        size: FONT * super::canvas::lettering(),
         id: Some(format!("{tag}-mu")),
         class: "scale",
     });

@@ -18,6 +18,12 @@ pub(super) const CAPTION: f64 = 6.0;
 /// Caption font size, mm.
 const CAPTION_FONT: f64 = 3.5;
 
+/// A caption line's height at the lettering in force
+/// ([`super::canvas::with_lettering`]).
+pub(super) fn caption_line() -> f64 {
+    CAPTION * super::canvas::lettering()
+}
+
 /// The sheet size of the course sheet: A2 when asked, else A1.
 pub fn size(opt: &DrawOptions) -> SheetSize {
     if opt.sheet == SheetSize::A2 {
@@ -44,11 +50,16 @@ impl Figure {
         let cw = self
             .caption
             .iter()
-            .map(|c| super::canvas::runs_width(&crate::words::notation::runs(c), CAPTION_FONT))
+            .map(|c| {
+                super::canvas::runs_width(
+                    &crate::words::notation::runs(c),
+                    CAPTION_FONT * super::canvas::lettering(),
+                )
+            })
             .fold(0.0, f64::max);
         (
             b.width().max(cw),
-            b.height() + CAPTION * self.caption.len() as f64 + 2.0,
+            b.height() + caption_line() * self.caption.len() as f64 + 2.0,
         )
     }
 }
@@ -63,7 +74,7 @@ pub(super) fn place(page: &mut Page, placed: &[(Figure, Point)]) {
         let mut cap = Canvas::default();
         for (i, t) in f.caption.iter().enumerate() {
             cap.rich(
-                Point::new(fw / 2.0, -CAPTION * (i as f64 + 1.0) + 1.5),
+                Point::new(fw / 2.0, -caption_line() * (i as f64 + 1.0) + 1.5),
                 t,
                 CAPTION_FONT,
                 "caption",
@@ -72,7 +83,7 @@ pub(super) fn place(page: &mut Page, placed: &[(Figure, Point)]) {
         }
         page.write_canvas(&cap, at.x, at.y);
         // The drawing under its caption, centred across the figure's width.
-        let top = at.y + CAPTION * f.caption.len() as f64 + 2.0;
+        let top = at.y + caption_line() * f.caption.len() as f64 + 2.0;
         let ox = at.x + (fw - b.width()) / 2.0 - b.x0;
         page.write_canvas(&f.canvas, ox, top + b.y1);
         page.push("</g>\n");

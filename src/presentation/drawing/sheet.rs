@@ -6,7 +6,8 @@
 //! is placed by the page position of its origin.
 
 use super::SheetSize;
-use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, xml};
+use super::canvas::{Canvas, FONT, SMALL, THIN, fmt, lettering, runs_width, xml};
+use crate::words::notation::runs;
 use crate::model::scene::SheetInfo;
 use crate::words::catalogue::TitleBlockPhrases;
 use crate::words::construction::Lang;
@@ -142,20 +143,41 @@ impl Block {
         );
     }
 
-    /// Text `what` (nothing if empty) at the form's (`x`, `y`).
-    fn text(&mut self, (x, y): (f64, f64), size: f64, anchor: &str, what: &str, class: &str) {
+    /// Text `what` (nothing if empty) at the form's (`x`, `y`), in a cell
+    /// `width` mm wide. Where the sheet's lettering is enlarged (the
+    /// course sheets, [`with_lettering`]) at that factor and at least
+    /// 3.5 mm, and narrowed to its cell where wider (as ГОСТ 2.304's
+    /// narrow type A would write it).
+    fn text(
+        &mut self,
+        (x, y): (f64, f64),
+        (size, width): (f64, f64),
+        anchor: &str,
+        what: &str,
+        class: &str,
+    ) {
         if what.is_empty() {
             return;
         }
+        let k = lettering();
+        let size = if k > 1.0 { (size * k).max(3.5) } else { size };
         let (a, b) = self.p(x, y);
         let anchor = if anchor == "start" {
             String::new()
         } else {
             format!(r#" text-anchor="{anchor}""#)
         };
+        let narrow = if k > 1.0 && runs_width(&runs(what), size) > width {
+            format!(
+                r#" textLength="{}" lengthAdjust="spacingAndGlyphs""#,
+                fmt(width)
+            )
+        } else {
+            String::new()
+        };
         let _ = writeln!(
             self.s,
-            r#"<text class="{class}" x="{a}" y="{b}" font-size="{}"{anchor}>{}</text>"#,
+            r#"<text class="{class}" x="{a}" y="{b}" font-size="{}"{anchor}{narrow}>{}</text>"#,
             fmt(size),
             xml(what)
         );
@@ -196,13 +218,22 @@ impl Block {
     /// `size` under the frame.
     fn fill(&mut self, t: &TitleBlock, size: SheetSize) {
         let w = words(t.lang);
-        let small = |b: &mut Block, at: (f64, f64), anchor: &str, what: &str| {
-            b.text(at, 2.0, anchor, what, "title-block");
+        let small = |b: &mut Block, at: (f64, f64), cell: f64, anchor: &str, what: &str| {
+            b.text(at, (2.0, cell - 1.0), anchor, what, "title-block");
         };
         // Headings of the columns (baselines 1.5 mm above a 5 mm row's
         // bottom, centred in their cells).
-        for (x, h) in [181.5, 173.0, 156.5, 137.5, 125.0].into_iter().zip(&w.heads) {
-            small(self, (x, 31.3), "middle", h);
+        for ((x, cell), h) in [
+            (181.5, 7.0),
+            (173.0, 10.0),
+            (156.5, 23.0),
+            (137.5, 15.0),
+            (125.0, 10.0),
+        ]
+        .into_iter()
+        .zip(&w.heads)
+        {
+            small(self, (x, 31.3), cell, "middle", h);
         }
         let who = [t.author.as_deref(), t.checker.as_deref(), None, None, None];
         for ((y, role), who) in [26.3, 21.3, 16.3, 6.3, 1.3]
@@ -210,31 +241,42 @@ impl Block {
             .zip(&w.roles)
             .zip(who)
         {
-            small(self, (184.0, y), "start", role);
+            small(self, (184.0, y), 17.0, "start", role);
             if let Some(n) = who {
-                self.text((167.0, y), 2.5, "start", &fit(n, 18), "title-block-field");
+                self.text(
+                    (167.0, y),
+                    (2.5, 21.0),
+                    "start",
+                    &fit(n, 18),
+                    "title-block-field",
+                );
             }
         }
-        for (x, cell) in [42.5, 26.5, 9.0].into_iter().zip(&w.cells) {
-            small(self, (x, 36.3), "middle", cell);
+        for ((x, width), cell) in [(42.5, 15.0), (26.5, 17.0), (9.0, 18.0)]
+            .into_iter()
+            .zip(&w.cells)
+        {
+            small(self, (x, 36.3), width, "middle", cell);
         }
         // "Sheet 1": the sheet column's word and this sheet's number.
         small(
             self,
             (49.0, 16.3),
+            20.0,
             "start",
             &format!("{} {}", w.heads[1], t.sheet.0),
         );
         small(
             self,
             (29.0, 16.3),
+            29.0,
             "start",
             &format!("{} {}", w.sheets, t.sheet.1),
         );
         // The fields.
         self.text(
             (60.0, 45.5),
-            5.0,
+            (5.0, 110.0),
             "middle",
             &fit(&t.designation, 30),
             "designation",
@@ -243,11 +285,11 @@ impl Block {
         for (i, l) in title.iter().enumerate() {
             let n = title.len() as f64;
             let y = 27.5 + 2.6 * (n - 1.0) - 5.2 * i as f64;
-            self.text((85.0, y), 3.5, "middle", l, "drawing-title");
+            self.text((85.0, y), (3.5, 66.0), "middle", l, "drawing-title");
         }
         self.text(
             (9.0, 26.3),
-            3.5,
+            (3.5, 16.0),
             "middle",
             &fit(&t.scale, 8),
             "title-block-field",
@@ -255,7 +297,7 @@ impl Block {
         for (i, l) in wrap(&t.organisation, 22, 2).iter().enumerate() {
             self.text(
                 (25.0, 9.0 - 4.5 * i as f64),
-                3.5,
+                (3.5, 46.0),
                 "middle",
                 l,
                 "title-block-field",
@@ -264,7 +306,7 @@ impl Block {
         // Under the frame: the format, as ГОСТ 2.104 writes it there.
         self.text(
             (40.0, -3.8),
-            2.5,
+            (2.5, 40.0),
             "start",
             &format!("{} {size:?}", w.format),
             "title-block",

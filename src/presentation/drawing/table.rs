@@ -4,7 +4,7 @@
 //! notation (`v_B3B`, `a^k_B3B2`), numbers with the language's decimal
 //! sign.
 
-use super::canvas::{Canvas, Line, SMALL, runs_width};
+use super::canvas::{Canvas, Line, SMALL, lettering, runs_width};
 use crate::format::num;
 use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PointId};
 use crate::words::construction::Lang;
@@ -16,6 +16,13 @@ const ROW: f64 = 6.0;
 const HEAD_ROW: f64 = 8.0;
 const PAD: f64 = 1.6;
 
+/// The table's measures at the lettering in force (larger on the course
+/// sheets: [`super::canvas::with_lettering`]): rows, heading row, padding.
+fn measures() -> (f64, f64, f64) {
+    let k = lettering();
+    (ROW * k, HEAD_ROW * k, PAD * k)
+}
+
 /// A ruled table: a heading row and rows of cells, every cell text in the
 /// lecture's notation; the first column left-aligned, the others centred.
 #[derive(Clone, Debug, Default)]
@@ -26,29 +33,34 @@ pub struct Ruled {
 
 impl Ruled {
     fn widths(&self) -> Vec<f64> {
+        let (_, _, pad) = measures();
+        let small = SMALL * lettering();
         let n = self.head.len();
         (0..n)
             .map(|j| {
                 std::iter::once(&self.head[j])
                     .chain(self.rows.iter().filter_map(|r| r.get(j)))
-                    .map(|t| runs_width(&runs(t), SMALL))
+                    .map(|t| runs_width(&runs(t), small))
                     .fold(6.0f64, f64::max)
-                    + 2.0 * PAD
+                    + 2.0 * pad
             })
             .collect()
     }
 
     /// Width and height, mm.
     pub fn size(&self) -> (f64, f64) {
+        let (row, head_row, _) = measures();
         (
             self.widths().iter().sum(),
-            HEAD_ROW + ROW * self.rows.len() as f64,
+            head_row + row * self.rows.len() as f64,
         )
     }
 
     /// The table on a canvas, its top left corner at the origin (the
     /// table hangs below it).
     pub fn draw(&self) -> Canvas {
+        let (row, head_row, pad) = measures();
+        let lift = 0.9 * lettering();
         let mut c = Canvas::default();
         let ws = self.widths();
         let (w, h) = self.size();
@@ -70,19 +82,19 @@ impl Ruled {
             Line::Main,
         );
         c.path(
-            vec![Point::new(0.0, -HEAD_ROW), Point::new(w, -HEAD_ROW)],
+            vec![Point::new(0.0, -head_row), Point::new(w, -head_row)],
             Line::Main,
         );
         for x in &xs[1..xs.len() - 1] {
             c.path(vec![Point::new(*x, 0.0), Point::new(*x, -h)], Line::Main);
         }
         for k in 1..self.rows.len() {
-            let y = -HEAD_ROW - ROW * k as f64;
+            let y = -head_row - row * k as f64;
             c.path(vec![Point::new(0.0, y), Point::new(w, y)], Line::Thin);
         }
         let cell = |c: &mut Canvas, j: usize, y: f64, t: &str| {
             if j == 0 {
-                c.rich(Point::new(xs[0] + PAD, y), t, SMALL, "table", "start");
+                c.rich(Point::new(xs[0] + pad, y), t, SMALL, "table", "start");
             } else {
                 c.rich(
                     Point::new(0.5 * (xs[j] + xs[j + 1]), y),
@@ -94,10 +106,10 @@ impl Ruled {
             }
         };
         for (j, t) in self.head.iter().enumerate() {
-            cell(&mut c, j, -HEAD_ROW / 2.0 - 0.9, t);
+            cell(&mut c, j, -head_row / 2.0 - lift, t);
         }
         for (k, r) in self.rows.iter().enumerate() {
-            let y = -HEAD_ROW - ROW * k as f64 - ROW / 2.0 - 0.9;
+            let y = -head_row - row * k as f64 - row / 2.0 - lift;
             for (j, t) in r.iter().enumerate() {
                 cell(&mut c, j, y, t);
             }

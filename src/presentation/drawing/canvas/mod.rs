@@ -16,6 +16,7 @@ mod primitives;
 mod render;
 
 pub use label::{Label, runs_width};
+pub use placement::{lettering, with_lettering};
 pub use grid::Grid;
 pub use render::{fmt, xml};
 pub use primitives::*;

@@ -26,6 +26,7 @@ impl Canvas {
     /// and no avoided segment; failing that, the one that meets no label
     /// and the fewest segments; and keep its box.
     pub fn label(&mut self, anchor: Point, label: Label, size: f64, id: Option<String>) {
+        let size = size * lettering();
         // The box runs from the subscript's bottom (0.35 em below the
         // baseline) to the capitals' top (0.97 em above, as DejaVu renders).
         let (w, h) = (label.width(size), size * 1.32 + label.rise(size));
@@ -76,6 +77,7 @@ impl Canvas {
 
     /// Free text (titles, scales) with its lower-left corner at `at`.
     pub fn text(&mut self, at: Point, label: Label, size: f64, class: &'static str) {
+        let size = size * lettering();
         let r = Rect::new(
             at.x,
             at.y - 0.35 * size,
@@ -102,6 +104,7 @@ impl Canvas {
         class: &'static str,
         anchor: &'static str,
     ) {
+        let size = size * lettering();
         let rs = runs(text);
         let w = runs_width(&rs, size);
         let x0 = match anchor {
@@ -120,3 +123,31 @@ impl Canvas {
         });
     }
 }
+
+thread_local! {
+    /// The factor on every text size of the canvases drawn now
+    /// ([`with_lettering`]).
+    static LETTERING: std::cell::Cell<f64> = const { std::cell::Cell::new(1.0) };
+}
+
+/// The factor on text sizes in force on this thread (1 but within
+/// [`with_lettering`]).
+pub fn lettering() -> f64 {
+    LETTERING.with(|k| k.get())
+}
+
+/// Run `f` with every text drawn on a canvas (labels, text, rich text) `k`
+/// times its size: a sheet whose lettering the standard sets larger (the
+/// A1 course sheets, ГОСТ 2.304) drawn by the same figure code, its labels
+/// placed at their final size. Restored afterwards, also on an error.
+pub fn with_lettering<T>(k: f64, f: impl FnOnce() -> T) -> T {
+    struct Restore(f64);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            LETTERING.with(|c| c.set(self.0));
+        }
+    }
+    let _restore = Restore(LETTERING.with(|c| c.replace(k)));
+    f()
+}
+
