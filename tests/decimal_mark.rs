@@ -102,3 +102,20 @@ fn uk_and_ru_handout_sentences_write_decimal_commas() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// A rate read off a plan as zero is written without a sense of rotation
+/// (the four-bar's rocker stands still in position 1).
+#[test]
+fn a_zero_rate_has_no_sense() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("fixtures/four_bar.json");
+    for (lang, unit) in [("en", "rad/s"), ("uk", "рад/с"), ("ru", "рад/с")] {
+        let text = run(&["solve", scene.to_str().unwrap(), "--steps", "--lang", lang]);
+        let zero = format!("= 0 {unit}");
+        assert!(text.contains(&format!("{zero}.")), "{lang}: no zero rate");
+        assert!(
+            !text.contains(&format!("{zero},")),
+            "{lang}: a zero rate with a sense"
+        );
+    }
+}

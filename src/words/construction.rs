@@ -239,7 +239,8 @@ impl Speaker<'_> {
             num(r.abs()),
             self.rate_unit
         );
-        if *r == 0.0 {
+        // A rate that prints as 0 has no sense to tell.
+        if *r == 0.0 || num(r.abs()) == "0" {
             return format!("{value}.");
         }
         let args = [("seg", &*seg), ("x", x), ("j", j), ("sense", sense(w, *r))];
