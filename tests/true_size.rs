@@ -153,3 +153,58 @@ fn course_sheets_lettered_at_least_3_5_mm() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// A4 with a title block stands upright (ГОСТ 2.301, 2.104: the block
+/// across the foot of the frame); without one, and every larger format,
+/// landscape.
+#[test]
+fn a4_with_a_title_block_is_upright() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (sheet, block, upright) in [
+        ("A4", true, true),
+        ("A4", false, false),
+        ("A3", true, false),
+    ] {
+        let dir = std::env::temp_dir().join(format!(
+            "mechplan-upright-{sheet}-{block}-{}",
+            std::process::id()
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+        let mut cmd = Command::new(exe);
+        cmd.arg("draw")
+            .arg(root.join("fixtures/six_link_fig2_10.json"))
+            .args(["--format", "pdf", "--sheet", sheet, "-o"])
+            .arg(&dir);
+        if block {
+            cmd.arg("--title-block");
+        }
+        let out = cmd.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let mut seen = 0;
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension().is_none_or(|x| x != "pdf") || p.ends_with("sheets.pdf") {
+                continue;
+            }
+            for page in pages(&p) {
+                assert!(is_format(page, sheet), "{}: {page:?}", p.display());
+                assert_eq!(
+                    page.0 < page.1,
+                    upright,
+                    "{} ({sheet}, title block {block}): {:.1} × {:.1} pt",
+                    p.display(),
+                    page.0,
+                    page.1
+                );
+                seen += 1;
+            }
+        }
+        assert!(seen > 10, "{seen}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -117,13 +117,13 @@ pub(crate) struct Pending {
 /// figure centred in its field, the table beside it, the title block.
 pub(super) fn render(an: &Analysis, opt: &DrawOptions, p: Pending, number: (usize, usize)) -> Sheet {
     let right = p.table.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
-    let mut page = Page::new(opt.sheet);
+    let mut page = Page::for_sheet(opt.sheet, opt.title_block);
     page.heading(&p.title, p.scale.as_deref());
     let f = sheet::field(opt.sheet, opt.title_block, right);
     page.place(&p.canvas, f, p.centre_on);
     if let Some(t) = &p.table {
         let (tw, _) = t.size();
-        let fr = sheet::frame(opt.sheet);
+        let fr = sheet::frame_of(opt.sheet, sheet::upright(opt.sheet, opt.title_block));
         page.place_at(
             &t.draw(),
             Point::new(fr.x1 - sheet::PAD - tw, fr.y0 + sheet::HEADING),

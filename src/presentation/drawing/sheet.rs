@@ -32,19 +32,30 @@ const FRAME: f64 = 0.7;
 /// A page being composed.
 pub struct Page {
     pub size: SheetSize,
+    /// Upright (A4 with a title block), else landscape.
+    upright: bool,
     body: String,
 }
 
 impl Page {
+    /// A landscape page of format `size`.
     pub fn new(size: SheetSize) -> Page {
-        let (w, h) = size.mm();
+        Page::for_sheet(size, false)
+    }
+
+    /// The page of a sheet of format `size`, with or without a title
+    /// block: A4 with one upright, its block across the frame's foot
+    /// (ГОСТ 2.301, 2.104), every other format landscape.
+    pub fn for_sheet(size: SheetSize, title_block: bool) -> Page {
+        let upright = upright(size, title_block);
+        let (w, h) = page_mm(size, title_block);
         let mut body = String::new();
         let _ = writeln!(
             body,
             r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, sans-serif">"#
         );
         let _ = writeln!(body, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
-        let f = frame(size);
+        let f = frame_of(size, upright);
         let _ = writeln!(
             body,
             r#"<rect class="frame" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="black" stroke-width="{FRAME}"/>"#,
@@ -53,7 +64,16 @@ impl Page {
             fmt(f.width()),
             fmt(f.height())
         );
-        Page { size, body }
+        Page {
+            size,
+            upright,
+            body,
+        }
+    }
+
+    /// This page's frame.
+    fn frame(&self) -> Rect {
+        frame_of(self.size, self.upright)
     }
 
     /// Raw SVG into the page.
@@ -85,7 +105,7 @@ impl Page {
     /// The heading in the band under the frame's top: the title, wrapped
     /// to the band's width, and the scale line under it.
     pub fn heading(&mut self, title: &str, scale: Option<&str>) {
-        let f = frame(self.size);
+        let f = self.frame();
         let mut c = Canvas::default();
         let width = f.width() - 2.0 * PAD;
         // One line if it fits at 5 mm, else a smaller font.
@@ -102,7 +122,7 @@ impl Page {
 
     /// The main title block, form 1, in the frame's bottom right corner.
     pub fn title_block(&mut self, t: &TitleBlock) {
-        let f = frame(self.size);
+        let f = self.frame();
         let mut b = Block {
             x1: f.x1,
             y1: f.y1,
@@ -314,15 +334,37 @@ impl Block {
     }
 }
 
-/// The frame's rectangle on the page.
-pub fn frame(size: SheetSize) -> Rect {
+/// Whether a sheet of format `size` stands upright: A4 with a title
+/// block (ГОСТ 2.301 and 2.104 put A4 upright, the block across its
+/// foot; 185 mm, the block's width, is exactly its frame's).
+pub fn upright(size: SheetSize, title_block: bool) -> bool {
+    title_block && size == SheetSize::A4
+}
+
+/// Width and height of a sheet's page, mm ([`upright`] or landscape).
+pub fn page_mm(size: SheetSize, title_block: bool) -> (f64, f64) {
     let (w, h) = size.mm();
+    if upright(size, title_block) {
+        (h, w)
+    } else {
+        (w, h)
+    }
+}
+
+/// The frame's rectangle on a landscape page.
+pub fn frame(size: SheetSize) -> Rect {
+    frame_of(size, false)
+}
+
+/// The frame's rectangle on the page, upright or landscape.
+pub fn frame_of(size: SheetSize, upright: bool) -> Rect {
+    let (w, h) = page_mm(size, upright);
     Rect::new(LEFT, MARGIN, w - MARGIN, h - MARGIN)
 }
 
-/// The main title block's rectangle on the page.
+/// The main title block's rectangle on the page of a sheet that has one.
 pub fn block(size: SheetSize) -> Rect {
-    let f = frame(size);
+    let f = frame_of(size, upright(size, true));
     Rect::new(f.x1 - BLOCK_W, f.y1 - BLOCK_H, f.x1, f.y1)
 }
 
@@ -330,7 +372,7 @@ pub fn block(size: SheetSize) -> Rect {
 /// heading, less `right` mm on the right (a table) and, with a title
 /// block, the larger of the rectangles above it and beside it.
 pub fn field(size: SheetSize, title_block: bool, right: f64) -> Rect {
-    let f = frame(size);
+    let f = frame_of(size, upright(size, title_block));
     let r = Rect::new(f.x0 + PAD, f.y0 + HEADING, f.x1 - PAD - right, f.y1 - PAD);
     if !title_block {
         return r;
