@@ -96,6 +96,15 @@ fn rigid_links_closed_and_both_extreme_positions_drawn() {
         let svg = std::fs::read_to_string(dir.join("positions.svg")).unwrap();
         let n = svg.matches(r#"id="pos-"#).count();
         assert!(n >= 8, "{name}: {n} positions numbered");
+        // Link numbers circled, as the course writes them: never read as
+        // the positions' numbers beside them.
+        let links = svg.matches(r#"id="link-"#).count();
+        assert!(links >= 3, "{name}: {links} link numbers");
+        assert_eq!(
+            svg.matches(r#"<circle class="link-number""#).count(),
+            links,
+            "{name}: link numbers not circled"
+        );
         let thin = paths(&svg, "thin");
         for p in &thin {
             assert!(

@@ -153,6 +153,20 @@ impl Canvas {
                     id,
                     class,
                 } => {
+                    // A link's number in a circle, as the course writes
+                    // it: never read as a position's number beside it.
+                    if id.as_deref().is_some_and(|i| i.starts_with("link-")) {
+                        let w = label.width(*size);
+                        let c = Point::new(at.x + w / 2.0, at.y + 0.36 * size);
+                        let _ = writeln!(
+                            out,
+                            r#"<circle class="link-number" cx="{}" cy="{}" r="{}" fill="none" stroke="black" stroke-width="{}"/>"#,
+                            o.x(c),
+                            o.y(c),
+                            fmt(0.5 * w.max(0.6 * size) + 0.45 * size),
+                            fmt(THIN)
+                        );
+                    }
                     let id = id_attr(id);
                     let fill = if *class == "student" {
                         r##" fill="#c00000""##
