@@ -83,3 +83,32 @@ fn reference_refined_in_parallel_equals_sequential() {
     });
     assert_eq!(want, got);
 }
+
+/// Runs themselves run in parallel on the global pool (a study of many
+/// scenes): a long fast-path sweep finishes there — its chunks finished
+/// on the caller's pool, not on a thread of their own that the waiting
+/// workers could never help (a deadlock once every worker waited) — and
+/// in a one-thread pool. Judged within a minute, so that a deadlock fails
+/// instead of hanging.
+#[test]
+fn runs_inside_a_thread_pool_finish_on_it() {
+    use rayon::prelude::*;
+    let mut v = fixture("four_bar");
+    v["positions"] = json!({ "count": 2000 });
+    v["want"] = json!({ "plans": [] });
+    let an = Analysis::new(scene_with(v.clone(), v["positions"].clone())).unwrap();
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let lens: Vec<usize> = (0..8)
+            .into_par_iter()
+            .map(|_| an.run().unwrap().len())
+            .collect();
+        let threads = on_threads(1, || an.run().unwrap().len());
+        tx.send((lens, threads)).unwrap();
+    });
+    let (lens, one) = rx
+        .recv_timeout(std::time::Duration::from_secs(60))
+        .expect("runs on the global pool did not finish within a minute");
+    assert_eq!(lens, vec![2000; 8]);
+    assert_eq!(one, 2000);
+}

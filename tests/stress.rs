@@ -832,6 +832,22 @@ fn stress_catalogue_against_the_independent_reference() {
         let rounding: Vec<f64> = inputs.rounding.iter().map(|r| r.first()).collect();
         let refs = refdoc["positions"].as_array().unwrap();
         assert_eq!(refs.len(), qs.len(), "{name}: positions");
+        // `count`: mechplan's start within its own error bound of the
+        // reference's (found at 50 digits from the format's rule alone).
+        if matches!(scene.positions, PositionsSpec::Count { .. })
+            && let Some(want) = refs[0]["q"].as_str()
+        {
+            let want: f64 = want.parse().unwrap();
+            let d = (want - qs[0]).rem_euclid(std::f64::consts::TAU);
+            let d = d.min(std::f64::consts::TAU - d);
+            let allowed = rounding[0] + 2.0 * f64::EPSILON * std::f64::consts::TAU;
+            if d > allowed {
+                failures.push(format!(
+                    "{name}: the start of the working stroke {:.17} is {d:.3e} from the reference's {want:.17}, its bound {allowed:.3e}",
+                    qs[0]
+                ));
+            }
+        }
         // Counts: answered within the bound, refused rightly, refused
         // wrongly, answered outside the bound or where nothing assembles.
         let mut c = [0usize; 5];

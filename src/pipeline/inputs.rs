@@ -40,7 +40,8 @@ impl Analysis {
         let out = output.unwrap_or_else(|| self.default_output());
         let start = self.stroke_start(out)?;
         let error = match start.found {
-            Found::Input => 0.0,
+            // The input's angle as written: its own rounding.
+            Found::Input => sc.input_rounding.first().copied().unwrap_or(0.0),
             Found::InLine => self.in_line_error(out, start.angle)?,
             Found::Root => self.root_error(out, start.angle)?,
         };
@@ -52,13 +53,18 @@ impl Analysis {
     }
 
     /// The error of a start where crank and coupler lie in line: what the
-    /// data's rounding moves it (the collinearity solved again on the
-    /// scene with every datum changed by [`ACCURACY`]`.data_roundings`
-    /// units, per unit), twice over for the few roundings of the closed
-    /// form itself.
+    /// data's rounding moves it — the collinearity solved again with each
+    /// datum alone changed by [`ACCURACY`]`.data_roundings` units, the
+    /// moves summed (changed together, the data's changes may cancel in
+    /// the one quantity that matters near a flat triangle, the gap
+    /// r + l − (|OC| + c)), per unit — twice over for the few roundings of
+    /// the closed form itself (the sums r + l, the distance |OC|), each of
+    /// the size of a datum's.
     fn in_line_error(&self, out: usize, q: f64) -> Result<f64> {
         let mut moved = 0.0f64;
-        for changed in self.changed_data() {
+        let mut i = 1;
+        while let Some(changed) = self.changed_datum(i) {
+            i += 1;
             let changed = changed.map_err(|e| {
                 Error::scene(
                     "/positions/count",
@@ -69,7 +75,7 @@ impl Analysis {
                 .into_iter()
                 .map(|c| wrap_pi(c - q).abs())
                 .fold(f64::INFINITY, f64::min);
-            moved = moved.max(near);
+            moved += near;
         }
         if !moved.is_finite() {
             return Err(Error::singular(
@@ -92,6 +98,9 @@ impl Analysis {
         scene.want.velocity = true;
         scene.want.acceleration = true;
         scene.want.plans = false;
+        // Every point, so that the output is solved whatever the scene
+        // reports.
+        scene.want.points = None;
         scene.dynamics = None;
         let refusal = |e: Error| {
             Error::singular(

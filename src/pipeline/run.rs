@@ -87,26 +87,7 @@ impl Analysis {
         } = self.input_positions()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
-        // Route (a) compiled for the mechanism (issue 24): the rates at
-        // every position, and on the fast path its positions in order.
-        // The full path finds them by the interpreted solver, whose
-        // tracked state route (b)'s probes of the way start from.
-        let mut route = Route {
-            program: match self.reference {
-                false => Some(Program::new(m, &self.structure, &self.need)?),
-                true => None,
-            },
-            state: None,
-            kernel: None,
-        };
-        // Plans only checked (a result that keeps none), by the sweep's
-        // kernel where asked (`sweep_kernel`): in the order of the positions.
-        if self.plans && !self.keep_plans && !self.reference && self.sweep_kernel {
-            route.kernel = Some(Kernel::new());
-        }
-        if !self.plans {
-            route.state = route.program.as_ref().map(Program::state);
-        }
+        let route = self.route()?;
         // Route (b) follows the positions where the plans are built; the
         // fast path evaluates its equations at route (a)'s answers.
         let mut cs = self
@@ -148,7 +129,10 @@ impl Analysis {
         // results overlaps checking it. Not where each position keeps its
         // plans (a chunk of them is tens of MB): there a chunk is handed
         // over before the next is found.
-        let lean = !(self.plans && self.keep_plans);
+        // Nor from within a thread pool's worker (a run among runs in
+        // parallel): there the chunk is finished on the caller's own pool,
+        // which a waiting worker keeps working for, as before.
+        let overlap = !(self.plans && self.keep_plans) && rayon::current_thread_index().is_none();
         let done = std::thread::scope(|scope| -> Result<()> {
             type Pending<'s> = (
                 std::thread::ScopedJoinHandle<'s, Vec<Result<Solved>>>,
@@ -169,17 +153,24 @@ impl Analysis {
                 let route = (program, &mut state, &mut kernel);
                 let (placed, stop) = self.place_chunk((from, chunk), rounding, &mut ps, route, &mut cs);
                 let checks = &checks;
-                let finishing = scope.spawn(move || {
+                let finish = move || {
                     crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program))
-                });
+                };
+                if !overlap {
+                    // Positions that keep their plans are large: one chunk
+                    // of them at a time, on this thread.
+                    for s in finish() {
+                        hand(s?)?;
+                    }
+                    match stop {
+                        Some(e) => return Err(e),
+                        None => continue,
+                    }
+                }
+                let finishing = scope.spawn(finish);
                 let last = stop.is_some();
                 if let Some(before) = pending.replace((finishing, stop)) {
                     deliver(before, &mut hand)?;
-                }
-                // Positions that keep their plans are large: one chunk of
-                // them at a time.
-                if !lean && let Some(now) = pending.take() {
-                    deliver(now, &mut hand)?;
                 }
                 if last {
                     break;
@@ -191,6 +182,32 @@ impl Analysis {
             }
         });        progress.finish();
         done
+    }
+
+    /// How a run finds its positions ([`Route`]): route (a) compiled for
+    /// the mechanism (issue 24) — the rates at every position, and on the
+    /// fast path its positions in order (the full path finds them by the
+    /// interpreted solver, whose tracked state route (b)'s probes of the
+    /// way start from) — and the sweep's kernel where plans are only
+    /// checked and it is asked for (`sweep_kernel`).
+    fn route(&self) -> Result<Route<'_>> {
+        let m = &self.mech;
+        let program = match self.reference {
+            false => Some(Program::new(m, &self.structure, &self.need)?),
+            true => None,
+        };
+        let kernel = (self.plans && !self.keep_plans && !self.reference && self.sweep_kernel)
+            .then(Kernel::new);
+        let state = if self.plans {
+            None
+        } else {
+            program.as_ref().map(Program::state)
+        };
+        Ok(Route {
+            program,
+            state,
+            kernel,
+        })
     }
 
     /// The positions of one chunk of [`Analysis::run_each`] (the number

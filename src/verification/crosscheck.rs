@@ -392,45 +392,80 @@ impl Analysis {
     /// point). An error when such a change already makes the mechanism
     /// another one (a structure decided by rounding).
     pub(crate) fn changed_data(&self) -> ChangedData {
-        let m = &self.mech;
         [1.0, -1.0]
             .iter()
             .map(|sign| {
-                let mut scene = m.scene.clone();
                 let k = sign * DATA_PERTURBATION;
-                let mut n = 0usize;
-                // Each datum relative to its own magnitude: a coordinate
-                // near the origin is known better than one far from it.
-                let mut moved = |x: &mut f64| {
-                    n += 1;
-                    *x *= 1.0 + if n.is_multiple_of(2) { k } else { -k };
-                };
-                for l in scene.lengths.iter_mut() {
-                    moved(&mut l.value);
-                }
-                for p in scene.points.iter_mut() {
-                    let (mut x, mut y) = (p.sketch.x, p.sketch.y);
-                    moved(&mut x);
-                    moved(&mut y);
-                    p.sketch = Point::new(x, y);
-                }
-                for sl in scene.sliders.iter_mut() {
-                    if let crate::model::scene::Through::Coords(c) = &mut sl.line.through {
-                        let (mut x, mut y) = (c.x, c.y);
-                        moved(&mut x);
-                        moved(&mut y);
-                        *c = Point::new(x, y);
-                    }
-                    if let crate::model::scene::Direction::Angle(a) = &mut sl.line.direction {
-                        moved(a);
-                    }
-                    moved(&mut sl.line.offset);
-                }
-                m.with_data(scene)
-                    .and_then(Analysis::of)
-                    .map_err(|e| e.to_string())
+                self.changed_by(|n| if n.is_multiple_of(2) { k } else { -k })
             })
             .collect()
+    }
+
+    /// The scene with datum `i` alone (in the order [`Analysis::changed_data`]
+    /// walks them, from 1) changed by as many units of its rounding;
+    /// `None` past the last datum. Summing what each datum alone moves
+    /// bounds what they move together, where the alternating changes of
+    /// [`Analysis::changed_data`] may cancel in a quantity.
+    pub(crate) fn changed_datum(&self, i: usize) -> Option<std::result::Result<Analysis, String>> {
+        (i <= self.data_count())
+            .then(|| self.changed_by(|n| if n == i { DATA_PERTURBATION } else { 0.0 }))
+    }
+
+    /// How many data [`Analysis::changed_by`] changes.
+    fn data_count(&self) -> usize {
+        let sc = &self.mech.scene;
+        sc.lengths.len()
+            + 2 * sc.points.len()
+            + sc.sliders
+                .iter()
+                .map(|sl| {
+                    1 + match (&sl.line.through, &sl.line.direction) {
+                        (crate::model::scene::Through::Coords(_), crate::model::scene::Direction::Angle(_)) => 3,
+                        (crate::model::scene::Through::Coords(_), _) => 2,
+                        (_, crate::model::scene::Direction::Angle(_)) => 1,
+                        _ => 0,
+                    }
+                })
+                .sum::<usize>()
+    }
+
+    /// The scene with datum n (from 1, in a fixed order: lengths, sketch
+    /// coordinates, guide lines) multiplied by 1 + `change(n)`, its
+    /// shapes with this mechanism's decisions.
+    fn changed_by(&self, change: impl Fn(usize) -> f64) -> std::result::Result<Analysis, String> {
+        let m = &self.mech;
+        let mut scene = m.scene.clone();
+        let mut n = 0usize;
+        // Each datum relative to its own magnitude: a coordinate
+        // near the origin is known better than one far from it.
+        let mut moved = |x: &mut f64| {
+            n += 1;
+            *x *= 1.0 + change(n);
+        };
+        for l in scene.lengths.iter_mut() {
+            moved(&mut l.value);
+        }
+        for p in scene.points.iter_mut() {
+            let (mut x, mut y) = (p.sketch.x, p.sketch.y);
+            moved(&mut x);
+            moved(&mut y);
+            p.sketch = Point::new(x, y);
+        }
+        for sl in scene.sliders.iter_mut() {
+            if let crate::model::scene::Through::Coords(c) = &mut sl.line.through {
+                let (mut x, mut y) = (c.x, c.y);
+                moved(&mut x);
+                moved(&mut y);
+                *c = Point::new(x, y);
+            }
+            if let crate::model::scene::Direction::Angle(a) = &mut sl.line.direction {
+                moved(a);
+            }
+            moved(&mut sl.line.offset);
+        }
+        m.with_data(scene)
+            .and_then(Analysis::of)
+            .map_err(|e| e.to_string())
     }
 
     /// How far the answer at a solved position moves with the data changed

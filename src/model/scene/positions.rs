@@ -157,7 +157,8 @@ impl Reader {
             }
             None => None,
         };
-        self.rounding.clear();
+        // The input's own rounding is kept: where the output turns fully
+        // the steps start at the input's angle as written.
         Some(PositionsSpec::Count { count, output })
     }
 

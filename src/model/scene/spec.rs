@@ -218,9 +218,9 @@ pub struct Scene {
     /// Angle unit of the file (rad per unit).
     pub angle_unit: f64,
     /// The rounding of each listed input value as the file writes it (rad
-    /// or m; one value per input for the single `input` position, none for
-    /// `count`; with several inputs position after position, one value per
-    /// input):
+    /// or m; one value per input for the single `input` position and for
+    /// `count` (the input's own, where the steps start at it); with
+    /// several inputs position after position, one value per input):
     /// a few units of it move the input in the data check, as the data's
     /// own rounding does (an angle of a million turns in radians is known
     /// only to about 1e-9 rad).
