@@ -119,3 +119,32 @@ fn a_zero_rate_has_no_sense() {
         );
     }
 }
+
+/// The force sheets name a group as the course does, by its class and
+/// kind (вид), in every language.
+#[test]
+fn force_panels_name_groups_by_class_and_kind() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (lang, want) in [
+        ("uk", "Група II класу 2-го виду (4, 5), RRP"),
+        ("ru", "Группа II класса 2-го вида (4, 5), RRP"),
+        ("en", "Group (4, 5), class II, kind 2 (RRP)"),
+    ] {
+        let dir =
+            std::env::temp_dir().join(format!("mechplan-groups-{lang}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        run(&[
+            "draw",
+            root.join("fixtures/dynamics/six_link_fig2_10.json")
+                .to_str()
+                .unwrap(),
+            "--lang",
+            lang,
+            "-o",
+            dir.to_str().unwrap(),
+        ]);
+        let svg = std::fs::read_to_string(dir.join("forces_1.svg")).unwrap();
+        assert!(svg.contains(want), "{lang}: no \"{want}\"");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

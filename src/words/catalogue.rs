@@ -198,7 +198,11 @@ pub struct SheetPhrases {
     pub reactions_title: String,
     /// The force sheets' title, and a panel's: a group, the input link.
     pub force_sheets: String,
+    /// A panel of a class II group, as the course names it: `{class}`,
+    /// `{kind}` (the textbooks' вид, 1…5), `{links}`, `{letters}` (RRP).
     pub group: String,
+    /// A panel of a class III group: `{links}`.
+    pub group_triad: String,
     pub input_link: String,
 }
 

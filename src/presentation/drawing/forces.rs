@@ -13,6 +13,7 @@ use crate::kinematics::solve::Analysis;
 use crate::kinetostatics::force_plan::{Force, ForcePlan};
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
+use crate::words::catalogue::fill as phrase;
 use crate::words::forces as names;
 use kurbo::{Point, Rect, Vec2};
 
@@ -36,20 +37,27 @@ pub fn title(lang: Lang) -> &'static str {
     &crate::words::catalogue(lang).sheets.force_sheets
 }
 
-/// A panel's caption: "Group (2, 3), RRR", "Input link 1".
+/// A panel's caption as the course names a group, by its class and kind:
+/// "Група II класу 2-го виду (4, 5), RRP"; "Input link 1".
 fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
     let m = &an.mech;
     let ids: Vec<&str> = plan.links.iter().map(|&l| m.link_id(l)).collect();
     match plan.group {
         Some(g) => {
-            let kind = match an.structure.groups.get(g) {
-                Some(crate::model::structure::AssurGroup::Dyad(d)) => {
-                    format!(", {}", d.kind.name())
-                }
-                _ => String::new(),
-            };
-            let word = &crate::words::catalogue(lang).sheets.group;
-            format!("{word} ({}){kind}", ids.join(", "))
+            let w = &crate::words::catalogue(lang).sheets;
+            let links = ids.join(", ");
+            match an.structure.groups.get(g) {
+                Some(crate::model::structure::AssurGroup::Dyad(d)) => phrase(
+                    &w.group,
+                    &[
+                        ("class", "II"),
+                        ("kind", &d.kind.number().to_string()),
+                        ("links", &links),
+                        ("letters", d.kind.name()),
+                    ],
+                ),
+                _ => phrase(&w.group_triad, &[("links", &links)]),
+            }
         }
         None => {
             let word = &crate::words::catalogue(lang).sheets.input_link;
