@@ -55,6 +55,15 @@ fn command(c: Command) -> Result<u8, Error> {
             steps,
             lang,
         } => {
+            // The table is English yet: say so, never ignore --lang silently.
+            if !steps
+                && matches!(format, SolveFormat::Table)
+                && lang.is_some_and(|l| l != mechplan::Lang::En)
+            {
+                eprintln!(
+                    "mechplan: note: the table is written in English; --lang applies to --steps (and to draw, check)"
+                );
+            }
             let style = match (steps, format) {
                 (true, _) => Results::Steps(lang),
                 (false, SolveFormat::Table) => Results::Table,

@@ -148,3 +148,23 @@ fn force_panels_name_groups_by_class_and_kind() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// `solve --lang uk` without `--steps` writes the table in English: it
+/// says so on stderr instead of ignoring the option silently.
+#[test]
+fn a_language_the_table_cannot_follow_is_noted() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("fixtures/four_bar.json");
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["solve", scene.to_str().unwrap(), "--lang", "uk"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--lang applies to --steps"), "{err}");
+    let quiet = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["solve", scene.to_str().unwrap(), "--lang", "uk", "--steps"])
+        .output()
+        .unwrap();
+    assert!(quiet.stderr.is_empty());
+}
