@@ -105,6 +105,14 @@ fn rigid_links_closed_and_both_extreme_positions_drawn() {
             links,
             "{name}: link numbers not circled"
         );
+        // A slider on a fixed guide: its places numbered as the crank's.
+        if name == "six_link_fig2_10" {
+            assert_eq!(
+                svg.matches(r#"id="slider-"#).count(),
+                n,
+                "{name}: slider positions"
+            );
+        }
         let thin = paths(&svg, "thin");
         for p in &thin {
             assert!(

@@ -97,18 +97,31 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
             );
         }
     }
-    // The sliders' places on their fixed guides (the walls reach them all).
-    for pr in &m.prismatics {
+    // The sliders' places on their fixed guides (the walls reach them
+    // all), numbered as the crank's (lecture Fig. 2.1: B₀ … B₁₁ along the
+    // guide), where the slider moves between positions.
+    for (j, pr) in m.prismatics.iter().enumerate() {
         if pr.guide != m.frame() || !an.link(pr.slider) {
             continue;
         }
-        for s in solved {
-            c.circle(
-                to(s.config.point(m, pr.slider, pr.point)),
-                0.5,
-                "black",
-                0.0,
+        let moves = solved.windows(2).any(|w| {
+            let (a, b) = (
+                w[0].config.point(m, pr.slider, pr.point),
+                w[1].config.point(m, pr.slider, pr.point),
             );
+            (b - a).hypot() / mu_l > 0.5
+        });
+        for (k, s) in solved.iter().enumerate() {
+            let at = to(s.config.point(m, pr.slider, pr.point));
+            c.circle(at, 0.5, "black", 0.0);
+            if moves && k % every == 0 {
+                c.label_later(
+                    at,
+                    Label::new(format!("{}", k + 1), ""),
+                    SMALL,
+                    Some(format!("slider-{j}-pos-{}", k + 1)),
+                );
+            }
         }
     }
     for path in &t.paths {
