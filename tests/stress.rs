@@ -728,6 +728,30 @@ fn independent(an: &Analysis, pos: &Value) -> Independent {
     }
 }
 
+/// A refused position: its message must be clear, and the position one
+/// the data do not determine (counted in `c[1]`; else a false refusal,
+/// `c[2]`).
+fn judge_refusal(
+    at: &str,
+    ind: &Independent,
+    msg: &str,
+    c: &mut [usize; 5],
+    failures: &mut Vec<String>,
+) {
+    if !clear_refusal(msg) {
+        failures.push(format!("{at}: unclear refusal: {msg}"));
+    }
+    if ind.assembles && ind.sensitivity < DETERMINED {
+        c[2] += 1;
+        failures.push(format!(
+            "{at}: refused although the data's rounding moves the answer by only {:.1e}: {msg}",
+            ind.sensitivity
+        ));
+    } else {
+        c[1] += 1;
+    }
+}
+
 /// The refusal threshold of the issue: a position whose exact answer the
 /// data's rounding moves by less than this must be answered.
 const DETERMINED: f64 = 1e-10;
@@ -801,20 +825,8 @@ fn stress_catalogue_against_the_independent_reference() {
                 let refs = refdoc["positions"].as_array().unwrap();
                 let mut c = [0usize; 5];
                 for (k, r) in refs.iter().enumerate() {
-                    let ind = independent(&an, r);
-                    if !clear_refusal(&msg) {
-                        failures.push(format!("{name} position {}: unclear refusal: {msg}", k + 1));
-                    }
-                    if ind.assembles && ind.sensitivity < DETERMINED {
-                        c[2] += 1;
-                        failures.push(format!(
-                            "{name} position {}: refused although the data's rounding moves the answer by only {:.1e}: {msg}",
-                            k + 1,
-                            ind.sensitivity
-                        ));
-                    } else {
-                        c[1] += 1;
-                    }
+                    let at = format!("{name} position {}", k + 1);
+                    judge_refusal(&at, &independent(&an, r), &msg, &mut c, &mut failures);
                 }
                 for i in 0..5 {
                     total[i] += c[i];
@@ -892,20 +904,8 @@ fn stress_catalogue_against_the_independent_reference() {
                     c[if outside { 4 } else { 0 }] += 1;
                 }
                 Err(e) => {
-                    let msg = e.to_string();
-                    if !clear_refusal(&msg) {
-                        failures.push(format!("{name} position {}: unclear refusal: {msg}", k + 1));
-                    }
-                    if ind.assembles && ind.sensitivity < DETERMINED {
-                        c[2] += 1;
-                        failures.push(format!(
-                            "{name} position {} (q = {q:e}): refused although the data's rounding moves the answer by only {:.1e}: {msg}",
-                            k + 1,
-                            ind.sensitivity
-                        ));
-                    } else {
-                        c[1] += 1;
-                    }
+                    let at = format!("{name} position {} (q = {q:e})", k + 1);
+                    judge_refusal(&at, &ind, &e.to_string(), &mut c, &mut failures);
                 }
             }
         }

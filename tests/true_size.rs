@@ -24,6 +24,19 @@ fn pages(pdf: &Path) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Every page of every PDF file in `dir`: (file name, page size in pt).
+fn pdf_pages(dir: &Path) -> Vec<(String, (f64, f64))> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "pdf") {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            out.extend(pages(&p).into_iter().map(|pg| (name.clone(), pg)));
+        }
+    }
+    out
+}
+
 /// ISO 216 sizes, mm (portrait).
 fn iso(name: &str) -> (f64, f64) {
     match name {
@@ -68,26 +81,19 @@ fn every_pdf_page_is_its_format_at_true_size() {
             String::from_utf8_lossy(&out.stderr)
         );
         let mut seen = 0;
-        for e in std::fs::read_dir(&dir).unwrap() {
-            let p = e.unwrap().path();
-            if p.extension().is_none_or(|x| x != "pdf") {
-                continue;
-            }
-            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        for (name, page) in pdf_pages(&dir) {
             let want = if name == "course.pdf" { course } else { sheet };
-            for page in pages(&p) {
-                // The book holds the course sheet too.
-                let ok = is_format(page, want) || (name == "sheets.pdf" && is_format(page, course));
-                assert!(
-                    ok,
-                    "{name} with --sheet {sheet}: a page of {:.1} × {:.1} pt, not {want} ({:.1} × {:.1} pt)",
-                    page.0,
-                    page.1,
-                    points(iso(want).1),
-                    points(iso(want).0)
-                );
-                seen += 1;
-            }
+            // The book holds the course sheet too.
+            let ok = is_format(page, want) || (name == "sheets.pdf" && is_format(page, course));
+            assert!(
+                ok,
+                "{name} with --sheet {sheet}: a page of {:.1} × {:.1} pt, not {want} ({:.1} × {:.1} pt)",
+                page.0,
+                page.1,
+                points(iso(want).1),
+                points(iso(want).0)
+            );
+            seen += 1;
         }
         assert!(seen > 20, "{seen} pages");
         std::fs::remove_dir_all(&dir).unwrap();
@@ -186,23 +192,19 @@ fn a4_with_a_title_block_is_upright() {
             String::from_utf8_lossy(&out.stderr)
         );
         let mut seen = 0;
-        for e in std::fs::read_dir(&dir).unwrap() {
-            let p = e.unwrap().path();
-            if p.extension().is_none_or(|x| x != "pdf") || p.ends_with("sheets.pdf") {
-                continue;
-            }
-            for page in pages(&p) {
-                assert!(is_format(page, sheet), "{}: {page:?}", p.display());
-                assert_eq!(
-                    page.0 < page.1,
-                    upright,
-                    "{} ({sheet}, title block {block}): {:.1} × {:.1} pt",
-                    p.display(),
-                    page.0,
-                    page.1
-                );
-                seen += 1;
-            }
+        for (name, page) in pdf_pages(&dir)
+            .into_iter()
+            .filter(|(n, _)| n != "sheets.pdf")
+        {
+            assert!(is_format(page, sheet), "{name}: {page:?}");
+            assert_eq!(
+                page.0 < page.1,
+                upright,
+                "{name} ({sheet}, title block {block}): {:.1} × {:.1} pt",
+                page.0,
+                page.1
+            );
+            seen += 1;
         }
         assert!(seen > 10, "{seen}");
         std::fs::remove_dir_all(&dir).unwrap();

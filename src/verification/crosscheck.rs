@@ -413,56 +413,24 @@ impl Analysis {
 
     /// How many data [`Analysis::changed_by`] changes.
     fn data_count(&self) -> usize {
-        let sc = &self.mech.scene;
-        sc.lengths.len()
-            + 2 * sc.points.len()
-            + sc.sliders
-                .iter()
-                .map(|sl| {
-                    1 + match (&sl.line.through, &sl.line.direction) {
-                        (crate::model::scene::Through::Coords(_), crate::model::scene::Direction::Angle(_)) => 3,
-                        (crate::model::scene::Through::Coords(_), _) => 2,
-                        (_, crate::model::scene::Direction::Angle(_)) => 1,
-                        _ => 0,
-                    }
-                })
-                .sum::<usize>()
+        let mut n = 0;
+        each_datum(&mut self.mech.scene.clone(), |_| n += 1);
+        n
     }
 
-    /// The scene with datum n (from 1, in a fixed order: lengths, sketch
-    /// coordinates, guide lines) multiplied by 1 + `change(n)`, its
-    /// shapes with this mechanism's decisions.
+    /// The scene with datum n (from 1, in the order of [`each_datum`])
+    /// multiplied by 1 + `change(n)`, its shapes with this mechanism's
+    /// decisions.
     fn changed_by(&self, change: impl Fn(usize) -> f64) -> std::result::Result<Analysis, String> {
         let m = &self.mech;
         let mut scene = m.scene.clone();
         let mut n = 0usize;
-        // Each datum relative to its own magnitude: a coordinate
-        // near the origin is known better than one far from it.
-        let mut moved = |x: &mut f64| {
+        // Each datum relative to its own magnitude: a coordinate near the
+        // origin is known better than one far from it.
+        each_datum(&mut scene, |x| {
             n += 1;
             *x *= 1.0 + change(n);
-        };
-        for l in scene.lengths.iter_mut() {
-            moved(&mut l.value);
-        }
-        for p in scene.points.iter_mut() {
-            let (mut x, mut y) = (p.sketch.x, p.sketch.y);
-            moved(&mut x);
-            moved(&mut y);
-            p.sketch = Point::new(x, y);
-        }
-        for sl in scene.sliders.iter_mut() {
-            if let crate::model::scene::Through::Coords(c) = &mut sl.line.through {
-                let (mut x, mut y) = (c.x, c.y);
-                moved(&mut x);
-                moved(&mut y);
-                *c = Point::new(x, y);
-            }
-            if let crate::model::scene::Direction::Angle(a) = &mut sl.line.direction {
-                moved(a);
-            }
-            moved(&mut sl.line.offset);
-        }
+        });
         m.with_data(scene)
             .and_then(Analysis::of)
             .map_err(|e| e.to_string())
@@ -666,6 +634,33 @@ impl Analysis {
             }
         }
         (worst.0, name(worst.1))
+    }
+}
+
+/// Every datum of `scene` the data check changes, in a fixed order:
+/// lengths, sketch coordinates, guide lines (`through`, `angle`, `offset`).
+fn each_datum(scene: &mut crate::model::scene::Scene, mut f: impl FnMut(&mut f64)) {
+    use crate::model::scene::{Direction, Through};
+    for l in scene.lengths.iter_mut() {
+        f(&mut l.value);
+    }
+    let point = |p: &mut Point, f: &mut dyn FnMut(&mut f64)| {
+        let (mut x, mut y) = (p.x, p.y);
+        f(&mut x);
+        f(&mut y);
+        *p = Point::new(x, y);
+    };
+    for p in scene.points.iter_mut() {
+        point(&mut p.sketch, &mut f);
+    }
+    for sl in scene.sliders.iter_mut() {
+        if let Through::Coords(c) = &mut sl.line.through {
+            point(c, &mut f);
+        }
+        if let Direction::Angle(a) = &mut sl.line.direction {
+            f(a);
+        }
+        f(&mut sl.line.offset);
     }
 }
 
