@@ -83,8 +83,9 @@ pub enum Command {
         output: PathBuf,
         #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
         format: DrawFormat,
-        /// Sheet size: A4, A3, A2 or A1, landscape (default A4, every figure at the scale
-        /// that fills it; with want.scales.mu_l, the smallest sheet that holds the mechanism).
+        /// Sheet size: A4, A3, A2 or A1, landscape (default A4; the plans are built at the
+        /// scale that fills it, the other figures drawn so; with want.scales.mu_l, the
+        /// smallest sheet that holds the mechanism).
         #[arg(long, value_parser = sheet)]
         sheet: Option<SheetSize>,
         /// Add a title block to every sheet.

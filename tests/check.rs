@@ -62,6 +62,7 @@ fn drawn(
         mu_a: Some(mu),
         delta: 0.5,
         variant,
+        ..Drafting::default()
     };
     let vel = build_plans(
         &setup,

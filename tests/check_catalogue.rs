@@ -192,6 +192,7 @@ fn drawn_with_velocity(
         mu_a: Some(mu),
         delta: 0.5,
         variant,
+        ..Drafting::default()
     };
     let order = mechplan::analytic::Order::Velocity;
     let vel = build_plans(&st, &s.config, s.drives, order, d)
@@ -378,6 +379,7 @@ fn seen(
         mu_a: Some(mu),
         delta: 0.5,
         variant: Variant::default(),
+        ..Drafting::default()
     };
     let order = mechplan::analytic::Order::Velocity;
     let plan = if kind == PlanKind::Velocity {

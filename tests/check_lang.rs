@@ -98,7 +98,7 @@ const UK: Words = Words {
     lang: "uk",
     grade: "Оцінка: НЕВІРНО на кроці 3.",
     mistake: "Швидкість кривошипа відкладено проти напрямку ω1.",
-    step: "Від p_v відкладаємо p_va = ω1·l_O1A/μ_v = 1 / 0,01 = 100 мм",
+    step: "Від p_v відкладаємо p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
         "Перевірка плану швидкостей, положення 1",
         "δ = 0,5000 мм",
@@ -106,7 +106,7 @@ const UK: Words = Words {
         "Помилки:",
         "1. Крок 3:",
         "точка a (від ваших попередніх точок)",
-        "200,0",
+        "500,0",
         "НЕВІРНО (помилка 1)",
         "разом: вірних 3 з 4, невірних 1",
         "Друга думка",
@@ -117,7 +117,7 @@ const RU: Words = Words {
     lang: "ru",
     grade: "Оценка: НЕВЕРНО на шаге 3.",
     mistake: "Скорость кривошипа отложена против направления ω1.",
-    step: "От p_v откладываем p_va = ω1·l_O1A/μ_v = 1 / 0,01 = 100 мм",
+    step: "От p_v откладываем p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
         "Проверка плана скоростей, положение 1",
         "δ = 0,5000 мм",
@@ -125,7 +125,7 @@ const RU: Words = Words {
         "Ошибки:",
         "1. Шаг 3:",
         "точка a (от ваших предыдущих точек)",
-        "200,0",
+        "500,0",
         "НЕВЕРНО (ошибка 1)",
         "итого: верных 3 из 4, неверных 1",
         "Второе мнение",
@@ -181,7 +181,7 @@ fn the_report_is_in_the_language_asked() {
         ),
         "{out}"
     );
-    assert!(out.contains("1 / 0.01 = 100 mm"), "{out}");
+    assert!(out.contains("1 / 0.004 = 250 mm"), "{out}");
     let (code, _, err) = run(&["check", SCENE, &path(&answer), "--lang", "de"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("unknown language \"de\""), "{err}");
@@ -229,7 +229,7 @@ fn json_stays_machine_readable() {
     let r: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(r["grade"], "wrong");
     assert_eq!(r["plan"], "velocity");
-    assert_eq!(r["mu"], json!(0.01));
+    assert_eq!(r["mu"], json!(0.004));
     assert_eq!(r["delta"], json!(0.5));
     assert_eq!(r["wrong"], 1);
     assert_eq!(r["status"], 1);

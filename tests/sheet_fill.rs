@@ -2,7 +2,8 @@
 //! rendered page as a reader sees it: for every fixture, on A4, A3 and A1,
 //! every position's plan of the mechanism, plan of velocities and plan of
 //! accelerations spans at least half its field's width or height, and 65 %
-//! at the median. `UPDATE_GOLDEN=1` writes the table into
+//! at the median, each plan at its own scale (the one its steps state),
+//! chosen for the field of the sheet asked for. `UPDATE_GOLDEN=1` writes the table into
 //! docs/gallery/README.md.
 
 use mechplan::drawing::{DrawOptions, SheetSize, sheet, sheets, tree};
@@ -11,8 +12,10 @@ use mechplan::drawing::{DrawOptions, SheetSize, sheet, sheets, tree};
 const DPI: f32 = 30.0;
 
 /// The share of `field` (page mm) that the rendered drawing inside it spans
-/// across and down.
-fn span(svg: &str, field: kurbo::Rect) -> (f64, f64) {
+/// across and down, and how many dark pixels lie in the clearance between
+/// the field and the frame on the left, right and below (a drawing or a
+/// letter spilled out of its field: none may).
+fn span(svg: &str, field: kurbo::Rect) -> ((f64, f64), usize) {
     let t = tree(svg).unwrap();
     let k = DPI / 25.4; // px per mm
     let (w, h) = (
@@ -41,12 +44,33 @@ fn span(svg: &str, field: kurbo::Rect) -> (f64, f64) {
             }
         }
     }
+    // The clearance, clear of the frame's line and of the field's edge.
+    let pad = sheet::PAD * k;
+    let (near, far) = ((pad - 1.5 * k) as u32, (0.5 * k).ceil() as u32);
+    let dark = |x: u32, y: u32| {
+        let p = pix.pixel(x, y).unwrap();
+        p.red() < 200 || p.green() < 200 || p.blue() < 200
+    };
+    let mut spilled = 0;
+    for y in y0..(y1 + near).min(ph) {
+        for x in (x0 - near..x0 - far).chain(x1 + far..(x1 + near).min(pw)) {
+            spilled += usize::from(dark(x, y));
+        }
+    }
+    for y in (y1 + far..(y1 + near).min(ph)).filter(|_| y1 + near < ph) {
+        for x in x0..x1.min(pw) {
+            spilled += usize::from(dark(x, y));
+        }
+    }
     if hi.0 < lo.0 {
-        return (0.0, 0.0);
+        return ((0.0, 0.0), spilled);
     }
     (
-        (hi.0 - lo.0 + 1) as f64 / (x1 - x0) as f64,
-        (hi.1 - lo.1 + 1) as f64 / (y1 - y0) as f64,
+        (
+            (hi.0 - lo.0 + 1) as f64 / (x1 - x0) as f64,
+            (hi.1 - lo.1 + 1) as f64 / (y1 - y0) as f64,
+        ),
+        spilled,
     )
 }
 
@@ -66,10 +90,18 @@ fn drawings_fill_their_field_on_every_sheet_size() {
     let mut all: Vec<(f64, String)> = Vec::new();
     for name in &names {
         let text = std::fs::read_to_string(format!("{dir}/{name}.json")).unwrap();
-        let study = mechplan::Study::from_json(&text).unwrap();
-        let solution = study.solve().unwrap();
+        let scene = mechplan::Study::from_json(&text).unwrap();
         let mut cells = Vec::new();
         for size in sizes {
+            // The plans at the scales of this sheet's field, as `draw
+            // --sheet` solves them.
+            let study = scene
+                .for_sheets(&mechplan::DrawRequest {
+                    sheet: Some(size),
+                    ..mechplan::DrawRequest::default()
+                })
+                .unwrap();
+            let solution = study.solve().unwrap();
             let opt = DrawOptions {
                 sheet: size,
                 ..DrawOptions::default()
@@ -81,7 +113,12 @@ fn drawings_fill_their_field_on_every_sheet_size() {
                     .into_iter()
                     .find(|k| s.name.starts_with(k));
                 let Some(_) = kind else { continue };
-                let (sx, sy) = span(&s.svg, field);
+                let ((sx, sy), spilled) = span(&s.svg, field);
+                assert_eq!(
+                    spilled, 0,
+                    "{name} {size:?} {}: the drawing leaves its field",
+                    s.name
+                );
                 let v = sx.max(sy);
                 spans.push(v);
                 all.push((v, format!("{name} {size:?} {}", s.name)));

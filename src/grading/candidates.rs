@@ -111,6 +111,7 @@ impl Builds<'_> {
             mu_a: None,
             delta: ans.delta,
             variant,
+            ..self.an.drafting
         };
         if ans.plan == PlanKind::Velocity {
             if let Some(given) = given {

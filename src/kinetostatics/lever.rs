@@ -18,7 +18,7 @@ use crate::error::{Error, Result};
 use crate::geom::perp;
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{
-    Drafting, Field, Naming, Plan, Setup, build_plans_in, non_rotating,
+    Drafting, Naming, Plan, Setup, build_plans_in, non_rotating,
 };
 use crate::kinematics::positions::describe_input;
 use crate::kinematics::solve::{Analysis, Position};
@@ -260,7 +260,6 @@ fn velocity_plan(
         &s.config,
         (drives, Order::Velocity),
         d,
-        &Field::default(),
         naming,
     )?;
     Ok(plans.velocity)

@@ -248,7 +248,7 @@ impl Analysis {
             }
             let constraint_time = t1.elapsed().as_secs_f64();
             let kernel = match (kernel.as_mut(), self.order) {
-                (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, q, order)),
+                (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, (q, from + i), order)),
                 _ => None,
             };
             placed.push(Placed {
@@ -511,7 +511,7 @@ impl Analysis {
         // kernel (`Analysis::sweep_kernel`; where it refused, on their own).
         let lean = !self.keep_plans && !self.reference;
         let checked = p.kernel.as_ref().and_then(|k| k.0.as_ref());
-        let (setup, d) = (self.setup(), self.drafting);
+        let (setup, d) = (self.setup(), self.drafting_at(p.index));
         let plans = match self.order {
             Some(order) if checked.is_none() => Some(match lean {
                 true => build_plans_numbers(&setup, &config, drives, order, d)?,
@@ -542,13 +542,13 @@ impl Analysis {
         &self,
         k: &mut Kernel,
         config: &Configuration,
-        q: Coords,
+        (q, index): (Coords, usize),
         order: Order,
     ) -> (Option<Plans>, f64) {
         let t = Clock::now();
         let drives = self.drives_at(&q);
         let plans = k
-            .build(&self.setup(), config, drives, order, self.drafting)
+            .build(&self.setup(), config, drives, order, self.drafting_at(index))
             .ok()
             .map(|(v, a)| Plans {
                 velocity: v.clone(),

@@ -8,7 +8,7 @@ use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
 use crate::model::scene::Scene;
 use crate::pipeline::Solved;
-use crate::presentation::drawing::{Format, SheetSize};
+use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
 use crate::progress::{Progress, Silent};
 use std::path::{Path, PathBuf};
@@ -92,6 +92,21 @@ pub struct DrawRequest {
     pub positions: Vec<usize>,
 }
 
+impl DrawRequest {
+    /// The drawing's options: the sheet asked for (else A4), the language
+    /// asked for (else `scene_lang`, the scene's).
+    pub(super) fn options(&self, scene_lang: Lang) -> DrawOptions {
+        DrawOptions {
+            sheet: self.sheet.unwrap_or(SheetSize::A4),
+            lang: self.lang.unwrap_or(scene_lang),
+            title_block: self.title_block,
+            table: self.table,
+            centres: self.centres,
+            course: self.course,
+        }
+    }
+}
+
 impl Default for DrawRequest {
     fn default() -> Self {
         DrawRequest {
@@ -158,9 +173,47 @@ impl Study {
     /// # Ok::<(), mechplan::Error>(())
     /// ```
     pub fn from_json(text: &str) -> Result<Study> {
-        Ok(Study {
-            analysis: Arc::new(Analysis::new(Scene::from_json(text)?)?),
+        let analysis = Analysis::new(Scene::from_json(text)?)?;
+        let study = Study {
+            analysis: Arc::new(analysis),
             watcher: Watcher::default(),
+        };
+        study.for_sheets(&DrawRequest::default())
+    }
+
+    /// The same study with its plans at the scales of the sheets `req`
+    /// draws: a plan's μ is chosen once, for the sheet it is drawn on, and
+    /// every output of the study states that μ (steps, result file,
+    /// sheets, handout). A plan left to mechplan fits the field of a
+    /// single sheet of `req` (its size, title block, table); where the
+    /// course sheet is drawn (`req.course`, or `"course"` in the scene's
+    /// `want.drawings`), the plans it shows are built at its scales (one
+    /// μ_v for all its velocity plans), found by composing it from a first
+    /// run. (`draw` prepares its study so; a study prepared for another
+    /// sheet draws its plans at their own scales.)
+    pub fn for_sheets(&self, req: &DrawRequest) -> Result<Study> {
+        let opt = req.options(self.lang());
+        let mut an = (*self.analysis).clone();
+        an.drafting.field = drawing::plan_field(&opt);
+
+        let course = opt.course || an.mech.scene.want.drawings.iter().any(|d| d == "course");
+        if course && an.plans {
+            let mut first = Vec::new();
+            an.run_each_with(self.watcher.get(), |s| {
+                first.push(s);
+                Ok(())
+            })?;
+            an.scales_at = Arc::new(drawing::course::plan_scales(&an, &first, &opt)?);
+        }
+        let same = an.drafting.field == self.analysis.drafting.field
+            && an.scales_at == self.analysis.scales_at;
+        Ok(Study {
+            analysis: if same {
+                Arc::clone(&self.analysis)
+            } else {
+                Arc::new(an)
+            },
+            watcher: self.watcher.clone(),
         })
     }
 

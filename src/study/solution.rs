@@ -7,7 +7,7 @@ use super::{DrawRequest, SheetWriter, Study, Written, files};
 use crate::error::{Error, Result};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
-use crate::presentation::drawing::{self, DrawOptions, Sheet, SheetSize};
+use crate::presentation::drawing::{self, Sheet, SheetSize};
 use crate::presentation::report;
 use kurbo::{Point, Vec2};
 use std::borrow::Cow;
@@ -98,8 +98,10 @@ impl<'a> Solution<'a> {
     }
 
     /// The sheets `req` asks for, as SVG text (nothing written; see
-    /// [`Solution::draw`] for files): each figure at the largest standard
-    /// scale that fills its sheet. A sheet size asked for is the only one
+    /// [`Solution::draw`] for files): each plan at its own scale (chosen for
+    /// the sheet the study was prepared for, [`Study::for_sheets`]), the
+    /// other figures at the largest standard scale that fills their sheet.
+    /// A sheet size asked for is the only one
     /// tried; else A4, or (for a μ_l the scene fixes) the smallest sheet
     /// that holds the mechanism's drawings at it, the second of the pair.
     ///
@@ -145,14 +147,7 @@ impl<'a> Solution<'a> {
             Some(s) => vec![s],
             None => SheetSize::ALL.to_vec(),
         };
-        let opt = DrawOptions {
-            sheet: sizes[0],
-            lang: req.lang.unwrap_or_else(|| self.study.lang()),
-            title_block: req.title_block,
-            table: req.table,
-            centres: req.centres,
-            course: req.course,
-        };
+        let opt = req.options(self.study.lang());
         let only: Vec<usize> = req.positions.iter().map(|k| k - 1).collect();
         drawing::sheets_on_each(self.an(), &self.positions, &opt, (&sizes, &only), sink)
     }
@@ -382,7 +377,7 @@ impl Study {
     /// and the notes for the user.
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         req.validate()?;
-        self.solve()?.draw(req)
+        self.for_sheets(req)?.solve()?.draw(req)
     }
 
     /// Every position, solved as it is read (flat memory; see

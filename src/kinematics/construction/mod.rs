@@ -34,6 +34,7 @@ pub mod plan;
 mod point;
 mod record;
 pub mod scale;
+mod settle;
 mod triad;
 
 pub use plan::{
@@ -54,7 +55,7 @@ use builder::{Builder, Tools};
 /// construction at unit scale; or, given a `guess` (the scale of the
 /// sweep's last position and its [`scale::band`]), by the construction at
 /// that scale itself when the plan it draws settles on it
-/// ([`Field::settles`]), the same plan to the bit without the first
+/// ([`Plan::settles_in`]), the same plan to the bit without the first
 /// construction. Whether it settled, with the buffers.
 #[allow(clippy::too_many_arguments)]
 fn construct(
@@ -63,7 +64,6 @@ fn construct(
     drive: Drives,
     (kind, vel): (PlanKind, Option<&Plan>),
     d: &Drafting,
-    field: &Field,
     naming: Naming,
     (plan, tools): (&mut Plan, &mut Tools),
     guess: Option<(f64, (f64, f64))>,
@@ -74,6 +74,7 @@ fn construct(
             .jitter
             .map(|s| rand::rngs::StdRng::seed_from_u64(s ^ k))
     };
+    let field = &d.field;
     plan.kind = kind;
     plan.delta = d.delta;
     let mut b = Builder::new(st, c, drive, plan, vel, d.variant, rng(1), tools);
@@ -89,7 +90,7 @@ fn construct(
             if let Some((mu, band)) = guess.filter(|_| plain) {
                 b.again(mu, rng(2));
                 b.record = record;
-                if b.run().is_ok() && field.settles(b.plan, band) {
+                if b.run().is_ok() && b.plan.settles_in(field, band) {
                     return Ok(true);
                 }
             }
@@ -126,14 +127,13 @@ pub fn build_plans_in(
     c: &Configuration,
     (drive, order): (Drives, Order),
     d: Drafting,
-    field: &Field,
     naming: Naming,
 ) -> Result<Plans> {
     let build = |kind, vel| -> Result<Plan> {
         let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
         let mut tools = Tools::new(st);
         let fresh = (&mut plan, &mut tools);
-        construct(st, c, drive, (kind, vel), &d, field, naming, fresh, None)?;
+        construct(st, c, drive, (kind, vel), &d, naming, fresh, None)?;
         if naming == Naming::Full {
             record::narrate(&mut plan, &tools.acts, st);
         }
@@ -151,7 +151,7 @@ pub fn build_plans_in(
 }
 
 /// Build the velocity plan, and the acceleration plan when `order` asks;
-/// a scale left open fits the default [`Field`].
+/// a scale left open fits `d.field`.
 pub fn build_plans(
     st: &Setup,
     c: &Configuration,
@@ -160,7 +160,7 @@ pub fn build_plans(
     d: Drafting,
 ) -> Result<Plans> {
     let drive = drive.into();
-    build_plans_in(st, c, (drive, order), d, &Field::default(), Naming::Full)
+    build_plans_in(st, c, (drive, order), d, Naming::Full)
 }
 
 /// The acceleration plan built on a given velocity plan (its ω and
@@ -174,7 +174,6 @@ pub fn build_acceleration(
     d: Drafting,
 ) -> Result<Plan> {
     let drive = drive.into();
-    let field = Field::default();
     let kind = PlanKind::Acceleration;
     let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
     let mut tools = Tools::new(st);
@@ -186,7 +185,6 @@ pub fn build_acceleration(
         drive,
         (kind, Some(vel)),
         &d,
-        &field,
         naming,
         fresh,
         None,
@@ -213,9 +211,8 @@ pub fn replay(
     let mut plan = Plan::empty(kind, 1.0, d.delta, st.m);
     let mut tools = Tools::new(st);
     tools.given = given;
-    let field = Field::default();
     let fresh = (&mut plan, &mut tools);
-    construct(st, c, drive, (kind, vel), &d, &field, Naming::Full, fresh, None)?;
+    construct(st, c, drive, (kind, vel), &d, Naming::Full, fresh, None)?;
     record::narrate(&mut plan, &tools.acts, st);
     Ok(plan)
 }
@@ -230,14 +227,13 @@ pub fn build_plans_numbers(
     d: Drafting,
 ) -> Result<Plans> {
     let drive = drive.into();
-    let field = Field::default();
-    build_plans_in(st, c, (drive, order), d, &field, Naming::NumbersOnly)
+    build_plans_in(st, c, (drive, order), d, Naming::NumbersOnly)
 }
 
 /// Numbers-only builds over a sweep ([`Naming::NumbersOnly`]): the plans
 /// and the builder's buffers kept from one position to the next, and each
 /// plan's last scale tried first: a plan drawn at it whose own extent
-/// picks it ([`Field::settles`]) is kept, without the first construction
+/// picks it ([`Plan::settles_in`]) is kept, without the first construction
 /// at unit scale; else that construction is made. So a position's plans
 /// equal, bit for bit, what [`build_plans_numbers`] gives for it alone,
 /// but where the first construction at unit scale takes other
@@ -321,9 +317,8 @@ fn sweep_plan(
     tools: &mut Tools,
     last: &mut Option<(f64, (f64, f64))>,
 ) -> Result<bool> {
-    let field = Field::default();
     let naming = Naming::NumbersOnly;
-    let settled = construct(st, c, drive, kind, d, &field, naming, (plan, tools), *last)?;
+    let settled = construct(st, c, drive, kind, d, naming, (plan, tools), *last)?;
     // The scale the plan was drawn at, and its band when it changed.
     if last.is_none_or(|l| l.0 != plan.mu) {
         *last = scale::band(plan.mu).map(|b| (plan.mu, b));

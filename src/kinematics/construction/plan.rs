@@ -615,12 +615,15 @@ impl Variant {
 
 /// Fixed scales, the pencil precision and the variant for
 /// [`build_plans`](super::build_plans). A scale left `None` is the
-/// standard one at which the plan fits the [`Field`](super::scale::Field)
-/// the caller gives (its default with the functions that take none).
+/// standard one at which the plan fits `field`: the field of the sheet the
+/// plans are drawn on (its plan once measured, its μ is the one every
+/// output states: steps, result file, sheets, handout).
 #[derive(Clone, Copy, Debug)]
 pub struct Drafting {
     pub mu_v: Option<f64>,
     pub mu_a: Option<f64>,
+    /// Where a plan at a scale left open must fit, mm.
+    pub field: super::scale::Field,
     /// Pencil precision δ, mm.
     pub delta: f64,
     pub variant: Variant,
@@ -631,6 +634,7 @@ impl Default for Drafting {
         Drafting {
             mu_v: None,
             mu_a: None,
+            field: super::scale::Field::default(),
             delta: 0.5,
             variant: Variant::default(),
         }

@@ -1,7 +1,6 @@
 //! Scale coefficients μ from the standard drafting values (ГОСТ 2.302):
 //! 1, 2, 2.5, 4, 5 × 10^k.
 
-use kurbo::Vec2;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
@@ -37,59 +36,6 @@ impl Field {
     pub fn scale(&self, points: impl Iterator<Item = kurbo::Vec2>) -> f64 {
         let mu = self.ratio(points).map_or(0.0, standard_of_ratio);
         if mu > 0.0 { mu } else { 1.0 }
-    }
-
-    /// Whether `plan`, drawn at its scale μ (a standard value whose
-    /// [`band`] is `band`), is the plan [`Field::scale`] picks μ for from a
-    /// construction at unit scale. The two constructions differ by their
-    /// rounding only, a few ulps amplified as the drafting error is (by
-    /// 1/sin θ at every intersection: the plan's error radii over δ); so μ
-    /// is settled when every extent within a billionth times that
-    /// amplification of the plan's own lies in μ's band.
-    pub fn settles(&self, plan: &super::Plan, band: (f64, f64)) -> bool {
-        // One pass in millimetres: the longest vector (squared), the box,
-        // the largest error radius.
-        let (mut long2, mut lo, mut hi, mut err) =
-            (0.0f64, Vec2::splat(f64::MAX), Vec2::splat(f64::MIN), 0.0f64);
-        // (Plain comparisons: a NaN point leaves the extent as it is, and
-        // the ratio's own test below refuses a plan that is all NaN.)
-        for p in &plan.points {
-            let (a, h) = (p.at, p.at.hypot2());
-            if h > long2 {
-                long2 = h;
-            }
-            if a.x < lo.x {
-                lo.x = a.x;
-            }
-            if a.y < lo.y {
-                lo.y = a.y;
-            }
-            if a.x > hi.x {
-                hi.x = a.x;
-            }
-            if a.y > hi.y {
-                hi.y = a.y;
-            }
-            if p.err > err {
-                err = p.err;
-            }
-        }
-        let mu = plan.mu;
-        let ratio = (long2.sqrt() / self.longest)
-            .max((hi.x - lo.x) / self.width)
-            .max((hi.y - lo.y) / self.height)
-            * mu;
-        if !(ratio > 0.0 && ratio.is_finite()) {
-            // Nothing to fit (all at the pole): the scale is 1.
-            return mu == 1.0 && ratio == 0.0;
-        }
-        let spread = if plan.delta > 0.0 {
-            err / plan.delta
-        } else {
-            0.0
-        };
-        let slack = 1e-9 * spread.max(1.0 / plan.worst_sin).max(1.0);
-        band.0 <= ratio * (1.0 - slack) && ratio * (1.0 + slack) <= band.1
     }
 
     /// The largest ratio of a plan's extents (real values, at unit scale)

@@ -74,10 +74,17 @@ pub struct Analysis {
     pub reference: bool,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
+    /// Scales fixed for single positions (by index from 0: μ_v, μ_a),
+    /// over `drafting`'s: the course sheet's common scales, given to the
+    /// plans it shows so that they are built, stated and drawn at them.
+    pub scales_at: std::sync::Arc<ScalesAt>,
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
     /// the standard value that draws the sketch's extent within 200 mm.
     pub mu_l: f64,
 }
+
+/// Plan scales fixed for single positions: by index from 0, (μ_v, μ_a).
+pub type ScalesAt = std::collections::BTreeMap<usize, (Option<f64>, Option<f64>)>;
 
 impl std::ops::Deref for Analysis {
     type Target = Demand;
@@ -165,8 +172,22 @@ impl Analysis {
             corrupt: None,
             reference: false,
             drafting,
+            scales_at: Default::default(),
             mu_l,
         })
+    }
+
+    /// How the plans of position `index` (from 0) are drafted: the scene's
+    /// scales, or the ones [`Analysis::scales_at`] fixes there.
+    pub fn drafting_at(&self, index: usize) -> Drafting {
+        match self.scales_at.get(&index) {
+            Some(&(mu_v, mu_a)) => Drafting {
+                mu_v: self.drafting.mu_v.or(mu_v),
+                mu_a: self.drafting.mu_a.or(mu_a),
+                ..self.drafting
+            },
+            None => self.drafting,
+        }
     }
 
     /// The link that reports point `p`: the first solved link carrying it.

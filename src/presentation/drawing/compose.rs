@@ -570,32 +570,18 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
     Ok(())
 }
 
-/// A plan of position `s` at the scale that fills its field (the scene's
-/// scale where it fixes one: [`fixed_plan_scales`] has seen it fit): the
-/// plan, its drawing and the table for it.
+/// A plan of position `s` at its own scale, the one the steps, the result
+/// file and the handout state: the construction chose it for this sheet's
+/// field ([`plan_field`](super::layout::plan_field)), or the scene fixed it
+/// ([`fixed_plan_scales`] has seen it fit). The plan, its drawing and the
+/// table for it.
 fn plan_figure(
     an: &Analysis,
     s: &Solved,
     kind: PlanKind,
     opt: &DrawOptions,
 ) -> (Plan, Canvas, Option<table::Ruled>) {
-    let table = |plan: &Plan| opt.table.then(|| table::plan_table(plan, opt.lang));
-    let fixed = match kind {
-        PlanKind::Velocity => an.drafting.mu_v,
-        PlanKind::Acceleration => an.drafting.mu_a,
-    };
-    let (p0, points, f) = plan_extent(s, kind, opt);
-    let found = fixed
-        .is_none()
-        .then(|| fitting_scale(an, s, kind, (p0, points), f))
-        .flatten();
-    match found {
-        Some((_, (plan, c))) => {
-            let t = table(&plan);
-            (plan, c, t)
-        }
-        // The scene's scale, a plan all at the pole (everything at rest)
-        // or one that cannot be built again: the solver's own.
-        None => (p0.clone(), draw_plan(an, p0), table(p0)),
-    }
+    let (plan, _, _) = plan_extent(s, kind, opt);
+    let table = opt.table.then(|| table::plan_table(plan, opt.lang));
+    (plan.clone(), draw_plan(an, plan), table)
 }

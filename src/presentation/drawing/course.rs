@@ -82,10 +82,13 @@ pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Shee
     super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, opt))
 }
 
-fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
+/// The sheet's figures placed on its field, and the positions whose plans
+/// they show (velocity, acceleration).
+type Layout = (Vec<(Figure, Point)>, (Vec<usize>, Vec<usize>));
+
+fn layout(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Layout> {
     let size = size(opt);
     let lang = opt.lang;
-    let w = words(lang);
     let chosen = chosen(an, solved);
     let fixed = fixed_figures(an, solved, size, lang, &chosen);
     // The figures drawn at a scale, with their share of the field.
@@ -117,6 +120,44 @@ fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<S
             "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
         ))
     })?;
+    Ok((placed, chosen))
+}
+
+/// The scales the course sheet draws its plans at, by position (from 0:
+/// μ_v, μ_a): one μ_v for every velocity plan it shows, each acceleration
+/// plan's μ_a. Built at them, the plans state them everywhere.
+pub fn plan_scales(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &DrawOptions,
+) -> Result<crate::kinematics::solve::ScalesAt> {
+    let (placed, (vel_at, _)) = super::canvas::with_lettering(COURSE_LETTERING, || {
+        layout(an, solved, opt)
+    })?;
+    let mut out = crate::kinematics::solve::ScalesAt::new();
+    for (f, _) in &placed {
+        for &(key, mu) in &f.scales {
+            let at: Vec<usize> = match (key, f.id.strip_prefix("acceleration-")) {
+                ("mu_v", _) => vel_at.clone(),
+                ("mu_a", Some(k)) => k.parse().into_iter().collect(),
+                _ => Vec::new(),
+            };
+            for k in at {
+                let e: &mut (Option<f64>, Option<f64>) = out.entry(k - 1).or_default();
+                match key {
+                    "mu_v" => e.0 = Some(mu),
+                    _ => e.1 = Some(mu),
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
+    let size = size(opt);
+    let w = words(opt.lang);
+    let (placed, _) = layout(an, solved, opt)?;
     let mut page = Page::new(size);
     place(&mut page, &placed);
     let title = w.course.to_string();

@@ -8,6 +8,7 @@ use super::output::{DrawOptions, Sheet, SheetSize};
 use super::sheet::{self, Page, TitleBlock};
 use super::table::{self, number};
 use super::{centres, mechanism};
+use crate::kinematics::construction::Field;
 use crate::kinematics::construction::scale::{standard_above, standard_scale};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
@@ -92,6 +93,31 @@ pub(super) fn mechanism_bounds(an: &Analysis, solved: &[Solved], opt: &DrawOptio
         .map(|s| mechanism_canvas(an, s, opt, mu_l).bounds())
         .reduce(|a, b| a.union(b))
         .unwrap_or(Rect::ZERO)
+}
+
+/// How far a plan's letters reach beyond its points, mm: the margin its
+/// field keeps on either side across (where a list of the letters of
+/// points that fall together runs on, "p_v, b, c, d₅, s₄") and above and
+/// below (one line of letters).
+const LETTERS: (f64, f64) = (20.0, 8.0);
+/// The width kept beside a plan for its table of measured segments
+/// (`--table`), mm: the widest table of the fixtures' plans, rounded up.
+pub(crate) const TABLE_WIDTH: f64 = 80.0;
+
+/// Where a plan whose scale the scene leaves open must fit on a sheet of
+/// `opt`: the single-figure sheet's field (beside the table when one is
+/// asked for), less the letters' margin. The construction picks the
+/// smallest standard μ at which its points fall there, and that μ is the
+/// plan's everywhere: the sheet draws it as built.
+pub fn plan_field(opt: &DrawOptions) -> Field {
+    let right = if opt.table { TABLE_WIDTH + sheet::PAD } else { 0.0 };
+    let (w, h) = field_size(opt, right);
+    let (width, height) = (w - 2.0 * LETTERS.0, h - 2.0 * LETTERS.1);
+    Field {
+        longest: width.hypot(height),
+        width,
+        height,
+    }
 }
 
 /// The field (w × h) of a single-figure sheet.
