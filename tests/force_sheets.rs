@@ -287,3 +287,54 @@ fn names_and_only_with_dynamics() {
     let sh = sheets(&an, &solved, &DrawOptions::default());
     assert!(!sh.is_empty() && sh.iter().all(|s| !s.name.starts_with("forces")));
 }
+
+/// Panel `tag`'s free body as drawn: the box of its points' circles
+/// (`{tag}-joint-…`), mm.
+fn body_box(svg: &str, tag: &str) -> Option<kurbo::Rect> {
+    let prefix = format!("{tag}-joint-");
+    svg.split('<')
+        .filter(|l| attr_str(l, "id").is_some_and(|id| id.starts_with(&prefix)))
+        .filter_map(|l| Some(kurbo::Point::new(attr(l, "cx")?, attr(l, "cy")?)))
+        .map(|p| kurbo::Rect::from_points(p, p))
+        .reduce(|a, b| a.union(b))
+}
+
+/// Every free body of every force panel, on the force sheets of every
+/// position and on the course's force sheet, is drawn at least 40 mm
+/// across or down: each at its own μ_l (one μ_l for all shrank the input
+/// link to 10–15 mm beside a large group), its letters at their size.
+#[test]
+fn every_free_body_is_at_least_40_mm() {
+    for name in DYNAMICS {
+        let (an, solved, mut sh) = solve(name, Lang::En);
+        let opt = DrawOptions {
+            course: true,
+            ..DrawOptions::default()
+        };
+        sh.extend(
+            sheets(&an, &solved, &opt)
+                .into_iter()
+                .filter(|s| s.name == "course_forces"),
+        );
+        let mut smallest = f64::INFINITY;
+        for s in sh
+            .iter()
+            .filter(|s| s.name.starts_with("forces_") || s.name == "course_forces")
+        {
+            for i in 1.. {
+                let Some(b) = body_box(&s.svg, &format!("f{i}")) else {
+                    break;
+                };
+                let size = b.width().max(b.height());
+                smallest = smallest.min(size);
+                assert!(
+                    size >= 40.0,
+                    "{name} {}: free body f{i} is {size:.1} mm",
+                    s.name
+                );
+            }
+        }
+        assert!(smallest.is_finite(), "{name}: no free body found");
+        eprintln!("{name}: smallest free body {smallest:.1} mm");
+    }
+}

@@ -345,7 +345,6 @@ fn figures(
     emit: &mut dyn FnMut(Option<usize>, Pending) -> Result<()>,
 ) -> Result<()> {
     let w = words(opt.lang);
-    let field = field_size(opt, 0.0);
     if let Some((mu, c)) = shared.positions.as_ref().filter(|_| chosen(None)) {
         emit(None, pending(
             "positions".into(),
@@ -369,7 +368,7 @@ fn figures(
                 )
             })?;
         }
-        for p in position_sheets(an, solved, (k, s), opt, field)? {
+        for p in position_sheets(an, solved, (k, s), opt)? {
             emit(Some(k), p)?;
         }
     }
@@ -386,6 +385,7 @@ fn pending(
     canvas: Canvas,
 ) -> Pending {
     Pending {
+        sheet: None,
         name,
         title,
         scale: Some(scale),
@@ -403,7 +403,6 @@ fn position_sheets(
     solved: &[Solved],
     (k, s): (usize, &Solved),
     opt: &DrawOptions,
-    field: (f64, f64),
 ) -> Result<Vec<Pending>> {
     let w = words(opt.lang);
     let pos = position_text(an, s, k, opt.lang);
@@ -442,18 +441,42 @@ fn position_sheets(
         });
     }
     if asked(an, solved, "forces")
-        && let Some(f) = forces::figure(an, s, opt, field)
+        && let Some((size, f)) = force_figure(an, s, opt)
     {
-        out.push(pending(
-            format!("forces_{}", k + 1),
-            format!("{}, {pos}", forces::title(opt.lang)),
-            scale_text("l", f.mu_l, "m", opt.lang),
-            ("mu_l", f.mu_l),
-            f.canvas,
-        ));
+        // Each panel states its μ_l and μ_F: the heading none.
+        let mut scales: Vec<(&'static str, f64)> = f.mu_l.iter().map(|&m| ("mu_l", m)).collect();
+        scales.extend(f.mu_f.iter().map(|&m| ("mu_F", m)));
+        out.push(Pending {
+            sheet: (size != opt.sheet).then_some(size),
+            scale: None,
+            scales,
+            ..pending(
+                format!("forces_{}", k + 1),
+                format!("{}, {pos}", forces::title(opt.lang)),
+                String::new(),
+                ("mu_l", 0.0),
+                f.canvas,
+            )
+        });
     }
     out.extend(levers);
     Ok(out)
+}
+
+/// The force sheet of position `s` on the first of the run's sheet and
+/// the larger ones on which every free body is drawn at least
+/// [`forces::LEAST_BODY`] (else on the largest), with its size.
+fn force_figure(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Option<(SheetSize, forces::Figure)> {
+    let mut last = None;
+    for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
+        let o = DrawOptions { sheet: size, ..*opt };
+        let f = forces::figure(an, s, &o, field_size(&o, 0.0))?;
+        if f.smallest >= forces::LEAST_BODY {
+            return Some((size, f));
+        }
+        last = Some((size, f));
+    }
+    last
 }
 
 fn too_large() -> Error {

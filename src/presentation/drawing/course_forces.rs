@@ -134,12 +134,9 @@ fn figures(
     if let Some(f) = forces::figure(an, s, opt, panels) {
         out.push(Figure {
             id: "forces".into(),
-            caption: vec![
-                format!("{}, {pos}", forces::title(lang)),
-                super::scale_text("l", f.mu_l, "m", lang),
-            ],
+            caption: vec![format!("{}, {pos}", forces::title(lang))],
             canvas: f.canvas,
-            scales: vec![("mu_l", f.mu_l)],
+            scales: f.mu_l.iter().map(|&m| ("mu_l", m)).collect(),
         });
     }
     let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
@@ -167,11 +164,11 @@ fn figures(
                 let c = draw(&first);
                 (first, c)
             });
-        let mut caption = vec![w.title.to_string()];
-        caption.extend(lever::caption(an, &l, lever::force_scale(&l), lang));
+        // Its scales and equations are written under the lever itself
+        // ([`lever::draw`]): the caption above is its title alone.
         out.push(Figure {
             id: format!("lever-{}", input + 1),
-            caption,
+            caption: vec![w.title.to_string()],
             canvas: c,
             scales: vec![("mu_v", l.mu_v)],
         });

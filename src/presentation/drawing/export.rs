@@ -28,11 +28,19 @@ pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
         .iter()
         .zip(files)
         .map(|(s, f)| {
-            let scales: serde_json::Map<String, serde_json::Value> = s
-                .scales
-                .iter()
-                .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
-                .collect();
+            // A kind of scale the sheet has once is a number; one its
+            // figures have at several values (the force panels' μ_l, the
+            // course sheet's μ_a of each acceleration plan), a list of them
+            // in the order of the figures.
+            let mut scales = serde_json::Map::new();
+            for (k, v) in &s.scales {
+                let all: Vec<f64> = s.scales.iter().filter(|x| x.0 == *k).map(|x| x.1).collect();
+                let one = all.iter().all(|x| x == v);
+                scales.entry(k.to_string()).or_insert_with(|| match one {
+                    true => serde_json::json!(v),
+                    false => serde_json::json!(all),
+                });
+            }
             serde_json::json!({
                 "file": name(f),
                 "title": s.title,

@@ -2,9 +2,9 @@
 //! step of the graphical route, in the order solved (the last Assur group
 //! first, the input link last), the group's free-body drawing at μ_l
 //! ([`free_body`]) and its force polygon at its own μ_F beside it
-//! ([`force_polygon`]), captioned. All free bodies share one μ_l; each
-//! polygon has the largest standard scale at which it fills its box, as
-//! the course draws a polygon per group at a scale of its own.
+//! ([`force_polygon`]), captioned. Each free body and each polygon has the
+//! largest standard scale at which it fills its box (its μ_l and μ_F
+//! written in its panel), as the course draws each group apart.
 
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
@@ -24,13 +24,20 @@ const CAPTION: f64 = 7.0;
 /// The band under a polygon holding its μ_F, mm.
 const SCALE_LINE: f64 = 7.0;
 
-/// The sheet's figure: the panels, the free bodies' μ_l and each plan's
+/// The sheet's figure: the panels, each free body's μ_l and each plan's
 /// μ_F (in the order of the plans).
 pub struct Figure {
     pub canvas: Canvas,
-    pub mu_l: f64,
+    pub mu_l: Vec<f64>,
     pub mu_f: Vec<f64>,
+    /// The smallest free body's size (its joints' extent across or down
+    /// at its μ_l), mm.
+    pub smallest: f64,
 }
+
+/// The least size of a free body a student can read its forces on, mm:
+/// a force sheet too small for it goes on a larger format.
+pub const LEAST_BODY: f64 = 40.0;
 
 /// The heading's words: "Force analysis".
 pub fn title(lang: Lang) -> &'static str {
@@ -76,72 +83,48 @@ pub fn scale_label(mu: f64, lang: Lang) -> Label {
     ))
 }
 
-/// Panels in columns on a field: a free body on the left of each, at
-/// most a share ([`SHARES`]) of the column wide, its polygon on the right in
-/// the rest; each row as high as its tallest free body needs (a polygon
-/// at least [`MIN_POLYGON`] high).
+/// Panels in a grid on a field, each of the same size: its caption and
+/// scale on top, its free body on the left, at most a share ([`SHARES`])
+/// of the panel wide, its polygon on the right in the rest. Each free
+/// body is drawn at its own μ_l, the largest standard scale that fills its
+/// box, as the course draws each group apart: one μ_l for all would shrink
+/// the input link to a blob beside a large group.
 #[derive(Clone, Copy)]
-struct Columns {
+struct Grid {
     cols: usize,
+    rows: usize,
     field: (f64, f64),
-    /// The share of a column's width its free bodies may take.
+    /// The share of a panel's width its free body may take.
     share: f64,
 }
 
-/// The shares of a column's width its free bodies may take.
+/// The shares of a panel's width its free body may take.
 const SHARES: [f64; 3] = [0.5, 0.6, 0.7];
-/// The least height of a polygon's box, mm.
+/// The least width and height of a polygon's box, mm.
 const MIN_POLYGON: f64 = 30.0;
 
-impl Columns {
+impl Grid {
     fn col_width(&self) -> f64 {
         (self.field.0 - GAP * (self.cols - 1) as f64) / self.cols as f64
     }
-    /// The field of the free bodies as [`fill`] sees it: the widest body
-    /// against the column's share, the rows' heights against the field's.
-    fn body_field(&self) -> (f64, f64) {
-        (self.share * self.col_width(), self.field.1)
+    fn row_height(&self) -> f64 {
+        (self.field.1 - GAP * (self.rows - 1) as f64) / self.rows as f64
     }
-    /// Per row, its height (caption included).
-    fn rows(&self, bodies: &[Rect]) -> Vec<f64> {
-        bodies
-            .chunks(self.cols)
-            .map(|row| {
-                let h = row.iter().map(|b| b.height()).fold(0.0, f64::max);
-                h.max(MIN_POLYGON + SCALE_LINE) + CAPTION
-            })
-            .collect()
-    }
-    /// The extent [`fill`] compares with [`Columns::body_field`].
-    fn extent(&self, bodies: &[Rect]) -> Rect {
-        let w = bodies.iter().map(|b| b.width()).fold(0.0, f64::max);
-        let rows = self.rows(bodies);
-        let h = rows.iter().sum::<f64>() + GAP * rows.len().saturating_sub(1) as f64;
-        Rect::new(0.0, 0.0, w, h)
-    }
-    /// The rows' heights with the field's height left over shared among
-    /// them: the free bodies' μ_l is a standard value (up to ×2 apart), so
-    /// there is room the polygons take.
-    fn rows_spread(&self, bodies: &[Rect]) -> Vec<f64> {
-        let rows = self.rows(bodies);
-        let n = rows.len().max(1) as f64;
-        let used = rows.iter().sum::<f64>() + GAP * (n - 1.0);
-        let extra = ((self.field.1 - used) / n).max(0.0);
-        rows.into_iter().map(|h| h + extra).collect()
+    /// The band at a panel's top: its caption and its μ_l.
+    fn head() -> f64 {
+        2.0 * CAPTION * super::canvas::lettering()
     }
     /// Panel `i`'s top left corner (drawing coordinates, y up), its free
     /// body's box and its polygon's box (w × h).
-    fn panel(&self, i: usize, bodies: &[Rect]) -> (Point, (f64, f64), (f64, f64)) {
-        let rows = self.rows_spread(bodies);
+    fn panel(&self, i: usize) -> (Point, (f64, f64), (f64, f64)) {
         let (col, row) = (i % self.cols, i / self.cols);
-        let top: f64 = rows.iter().take(row).map(|h| h + GAP).sum();
-        let h = rows.get(row).copied().unwrap_or(0.0) - CAPTION;
-        let bw = bodies.iter().map(|b| b.width()).fold(0.0, f64::max);
-        let x = col as f64 * (self.col_width() + GAP);
+        let (cw, rh) = (self.col_width(), self.row_height());
+        let h = rh - Grid::head();
+        let bw = self.share * cw;
         (
-            Point::new(x, -top),
+            Point::new(col as f64 * (cw + GAP), -(row as f64) * (rh + GAP)),
             (bw, h),
-            (self.col_width() - bw - GAP, h - SCALE_LINE),
+            (cw - bw - GAP, h - SCALE_LINE),
         )
     }
 }
@@ -170,123 +153,119 @@ pub fn figure(
         lang: opt.lang,
         tag: &tags[i],
     };
-    let bodies = |mu: f64| -> Vec<Canvas> {
-        plans
-            .iter()
-            .enumerate()
-            .map(|(i, p)| {
-                let mut c = Canvas::default();
-                free_body::draw(&scene(i), p, &mut c, mu);
-                c
-            })
-            .collect()
+    let body = |i: usize, mu: f64| -> Canvas {
+        let mut c = Canvas::default();
+        free_body::draw(&scene(i), &plans[i], &mut c, mu);
+        c
     };
-    let real = plans
+    let real: Vec<Rect> = plans
         .iter()
         .enumerate()
         .map(|(i, p)| free_body::extent(&scene(i), p))
-        .fold((0.0f64, 0.0f64), |a, r| {
-            (a.0.max(r.width()), a.1.max(r.height()))
-        });
-    let (layout, mu_l, cs) = best_layout(plans.len(), field, real, bodies)?;
-    let boxes = bounds(&cs);
+        .collect();
+    let (grid, bodies) = best_grid(plans.len(), field, &real, body)?;
+    let smallest = bodies
+        .iter()
+        .zip(&real)
+        .map(|((mu, _), r)| r.width().max(r.height()) / mu)
+        .fold(f64::INFINITY, f64::min);
     let name = |f| names::force(&an.mech, loads, f, opt.lang);
     let mut out = Canvas::default();
-    let mut mu_f = Vec::new();
-    for (i, (plan, body)) in plans.iter().zip(&cs).enumerate() {
-        let panel = layout.panel(i, &boxes);
-        let caption = caption(an, plan, opt.lang);
-        if let Some(mu) = draw_panel(
+    let (mut mu_l, mut mu_f) = (Vec::new(), Vec::new());
+    for (i, (plan, (mu, body))) in plans.iter().zip(&bodies).enumerate() {
+        let caption = [
+            Label::new(caption(an, plan, opt.lang), ""),
+            super::captions::scale_label("l", *mu, "m", opt.lang),
+        ];
+        if let Some(f) = draw_panel(
             &mut out,
             (plan, &tags[i]),
             &name,
             body,
-            panel,
+            grid.panel(i),
             caption,
             opt.lang,
         ) {
-            mu_f.push(mu);
+            mu_l.push(*mu);
+            mu_f.push(f);
         }
     }
     Some(Figure {
         canvas: out,
         mu_l,
         mu_f,
+        smallest,
     })
 }
 
-/// The drawings' boxes.
-fn bounds(cs: &[Canvas]) -> Vec<Rect> {
-    cs.iter().map(|c| c.bounds()).collect()
-}
-
-/// The layout of `count` panels on `field` that draws the free bodies
-/// largest (their real extent `real`, m; `bodies` draws them at a μ_l):
-/// one column or two, the free bodies taking half to 70 % of a column
-/// (standard μ_l are up to ×2 apart, so a little more room can halve
-/// μ_l); with its μ_l and the free bodies drawn.
-fn best_layout(
+/// The grid of `count` panels on `field` whose smallest free body is
+/// drawn largest (each at its own μ_l from its real extent in `real`;
+/// `body` draws body i at a μ_l): one to three columns, the free bodies
+/// taking half to 70 % of a panel; with each body's μ_l and drawing. At
+/// the same smallest body, the grid whose smallest polygon box is largest.
+fn best_grid(
     count: usize,
     field: (f64, f64),
-    real: (f64, f64),
-    bodies: impl Fn(f64) -> Vec<Canvas>,
-) -> Option<(Columns, f64, Vec<Canvas>)> {
-    let mut best: Option<(Columns, f64, Vec<Canvas>)> = None;
-    let layouts = [1, 2]
-        .into_iter()
+    real: &[Rect],
+    body: impl Fn(usize, f64) -> Canvas,
+) -> Option<(Grid, Vec<(f64, Canvas)>)> {
+    // (smallest body, smallest polygon box, the grid, the bodies drawn)
+    type Candidate = (f64, f64, Grid, Vec<(f64, Canvas)>);
+    let mut best: Option<Candidate> = None;
+    let grids = (1..=3usize)
         .filter(|&c| c <= count)
         .flat_map(|cols| SHARES.map(|share| (cols, share)));
-    for (cols, share) in layouts {
-        let layout = Columns { cols, field, share };
-        let f = layout.body_field();
-        if f.0 <= GAP || f.1 <= CAPTION + GAP {
+    for (cols, share) in grids {
+        let grid = Grid {
+            cols,
+            rows: count.div_ceil(cols),
+            field,
+            share,
+        };
+        let (_, (bw, bh), (pw, ph)) = grid.panel(0);
+        if bw <= GAP || bh <= GAP || pw < MIN_POLYGON || ph < MIN_POLYGON {
             continue;
         }
-        let lower = lower_scale(real.0, real.1, f);
-        let fit = fill(
-            lower,
-            f,
-            |mu| Some(bodies(mu)),
-            |cs| layout.extent(&bounds(cs)),
-        );
-        // At the same μ_l (standard values are up to ×2 apart, so two
-        // layouts often share one), the one whose smallest polygon box is
-        // largest: the polygons then take the room the bodies leave.
-        let room = |layout: &Columns, cs: &Vec<Canvas>| {
-            let boxes = bounds(cs);
-            (0..cs.len())
-                .map(|i| {
-                    let (_, _, (pw, ph)) = layout.panel(i, &boxes);
-                    pw.min(ph)
-                })
-                .fold(f64::INFINITY, f64::min)
-        };
-        if let Some((mu, cs)) = fit {
-            let better = best
-                .as_ref()
-                .is_none_or(|b| mu < b.1 || (mu == b.1 && room(&layout, &cs) > room(&b.0, &b.2)));
-            if better {
-                best = Some((layout, mu, cs));
-            }
+        let drawn: Option<Vec<(f64, Canvas)>> = real
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let lower = lower_scale(r.width(), r.height(), (bw, bh));
+                fill(lower, (bw, bh), |mu| Some(body(i, mu)), |c| c.bounds())
+            })
+            .collect();
+        let Some(drawn) = drawn else { continue };
+        // The bodies themselves (their joints), not their arrows and letters.
+        let smallest = drawn
+            .iter()
+            .zip(real)
+            .map(|((mu, _), r)| r.width().max(r.height()) / mu)
+            .fold(f64::INFINITY, f64::min);
+        let room = pw.min(ph);
+        let better = best.as_ref().is_none_or(|b| {
+            smallest > b.0 * (1.0 + 1e-9) || (smallest >= b.0 * (1.0 - 1e-9) && room > b.1)
+        });
+        if better {
+            best = Some((smallest, room, grid, drawn));
         }
     }
-    best
+    best.map(|(_, _, g, d)| (g, d))
 }
 
-/// Draw one panel into `out`: the `caption`, the free body `body` in its
-/// box and the polygon of `plan` (ids tagged `tag`) at the largest
-/// standard μ_F that fills its box, with μ_F under it; returns that μ_F
-/// (`None`, and no panel, when no scale fits).
+/// Draw one panel into `out`: the `caption` (the group, its μ_l), the free
+/// body `body` in its box and the polygon of `plan` (ids tagged `tag`) at
+/// the largest standard μ_F that fills its box, with μ_F under it; returns
+/// that μ_F (`None`, and no panel, when no scale fits).
 fn draw_panel(
     out: &mut Canvas,
     (plan, tag): (&ForcePlan, &str),
     name: &dyn Fn(Force) -> Option<Label>,
     body: &Canvas,
     (corner, (bw, bh), (pw, ph)): (Point, (f64, f64), (f64, f64)),
-    caption: String,
+    caption: [Label; 2],
     lang: Lang,
 ) -> Option<f64> {
-    let top = corner.y - CAPTION;
+    let top = corner.y - Grid::head();
     // The polygon at the largest standard μ_F that fills its box.
     let (lo, hi) = plan
         .points
@@ -304,12 +283,15 @@ fn draw_panel(
         Some(c)
     };
     let (mu, poly) = fill(lower, (pw, ph), polygon, |c| c.bounds())?;
-    out.text(
-        Point::new(corner.x, corner.y - FONT),
-        Label::new(caption, ""),
-        FONT,
-        "caption",
-    );
+    let line = CAPTION * super::canvas::lettering();
+    for (j, label) in caption.into_iter().enumerate() {
+        out.text(
+            Point::new(corner.x, corner.y - FONT - j as f64 * line),
+            label,
+            FONT,
+            "caption",
+        );
+    }
     let centre_in = |c: &Canvas, r: Rect| {
         let b = c.bounds();
         r.center() - b.center()

@@ -214,6 +214,10 @@ fn points(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, to: &dyn Fn(Point) -> Po
             let at = to(s.config.point(m, l, p));
             mechanism::point_symbol(c, at, joint(sc, p), is_mass(sc, p));
             let name = m.point_name(p);
+            // A pair's circle by its name, where the body's size is read.
+            if let Some(super::canvas::Prim::Circle { id, .. }) = c.prims.last_mut() {
+                *id = Some(format!("{}-joint-{name}", sc.tag));
+            }
             mechanism::point_label(c, at, name, format!("{}-point-{name}", sc.tag));
         }
     }

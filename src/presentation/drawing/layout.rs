@@ -130,6 +130,9 @@ pub(crate) fn field_size(opt: &DrawOptions, right: f64) -> (f64, f64) {
 /// union of a series, so that flipping through the series the mechanism
 /// does not jump), the heading, the scale, a table beside it.
 pub(crate) struct Pending {
+    /// A larger sheet than the run's (a force sheet whose free bodies
+    /// need it), or `None`.
+    pub(super) sheet: Option<super::SheetSize>,
     pub(super) name: String,
     pub(super) title: String,
     pub(super) scale: Option<String>,
@@ -142,6 +145,10 @@ pub(crate) struct Pending {
 /// A single-figure sheet from its pending figure: frame, heading, the
 /// figure centred in its field, the table beside it, the title block.
 pub(super) fn render(an: &Analysis, opt: &DrawOptions, p: Pending, number: (usize, usize)) -> Sheet {
+    let opt = &DrawOptions {
+        sheet: p.sheet.unwrap_or(opt.sheet),
+        ..*opt
+    };
     let right = p.table.as_ref().map_or(0.0, |t| t.size().0 + sheet::PAD);
     let mut page = Page::for_sheet(opt.sheet, opt.title_block);
     page.heading(&p.title, p.scale.as_deref());

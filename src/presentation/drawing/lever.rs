@@ -374,6 +374,7 @@ pub(super) fn pending(
             (format!("lever_{}", k + 1), format!("{}, {pos}", w.title))
         };
         out.push(super::Pending {
+            sheet: None,
             name,
             title,
             scale: Some(format!(
