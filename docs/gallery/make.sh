@@ -48,7 +48,8 @@ cp "$tmp/diagrams/diagrams.png" "$out/diagrams_offset_slider_crank.png"
 } >> "$index.tmp"
 # The course sheets (draw --course): the lecture's Figs 2.10 and 2.11 and
 # the compressor of Fig. 2.12; the shaper in Ukrainian with a title block
-# filled from a `sheet` object, the compressor in Russian on A2.
+# filled from a `sheet` object, the compressor in Russian (with its loads,
+# so that its force sheet follows).
 python3 - fixtures/shaper_fig2_11.json "$tmp/shaper_uk.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
@@ -59,10 +60,11 @@ json.dump(s, open(sys.argv[2], "w"), ensure_ascii=False)
 PY
 ./target/release/mechplan draw fixtures/six_link_fig2_10.json --course -o "$tmp/course6" --format png --dpi 100 > /dev/null
 ./target/release/mechplan draw "$tmp/shaper_uk.json" --course -o "$tmp/course_shaper" --format png --dpi 100 > /dev/null
-./target/release/mechplan draw fixtures/compressor_fig2_12.json --course --sheet A2 --lang ru -o "$tmp/course_compressor" --format png --dpi 100 > /dev/null
+./target/release/mechplan draw fixtures/dynamics/compressor_fig2_12.json --course --lang ru -o "$tmp/course_compressor" --format png --dpi 100 > /dev/null
 cp "$tmp/course6/course.png" "$out/course_six_link_fig2_10.png"
 cp "$tmp/course_shaper/course.png" "$out/course_shaper_fig2_11_uk.png"
-cp "$tmp/course_compressor/course.png" "$out/course_compressor_fig2_12_ru_A2.png"
+cp "$tmp/course_compressor/course.png" "$out/course_compressor_fig2_12_ru.png"
+cp "$tmp/course_compressor/course_forces.png" "$out/course_forces_compressor_fig2_12_ru.png"
 # The boom lifted by a hydraulic cylinder: its course sheet, and its
 # step-by-step handout (draw --html) with two of its steps as pictures
 # when a headless Chromium is at hand.
@@ -84,11 +86,11 @@ fi
   echo "The kinematic analysis sheet of a course project (\`draw --course\`, A1;"
   echo "[docs/sheets.md](../sheets.md)): the six-link of Fig. 2.10, the shaper of"
   echo "Fig. 2.11 in Ukrainian with its title block filled from the scene's"
-  echo "\`sheet\` object, the compressor of Fig. 2.12 in Russian on A2."
+  echo "\`sheet\` object, the compressor of Fig. 2.12 in Russian."
   echo
   echo "![course sheet, six-link](course_six_link_fig2_10.png)"
   echo "![course sheet, shaper, uk](course_shaper_fig2_11_uk.png)"
-  echo "![course sheet, compressor, ru, A2](course_compressor_fig2_12_ru_A2.png)"
+  echo "![course sheet, compressor, ru](course_compressor_fig2_12_ru.png)"
   echo
   echo "A boom lifted by a hydraulic cylinder (\`fixtures/boom_cylinder.json\`): its"
   echo "course sheet, with the diagrams of the boom over the cylinder's stroke, and"
@@ -124,6 +126,7 @@ cp "$tmp/cfs/course_forces.png" "$out/course_forces_shaper_fig2_11_uk.png"
   echo
   echo "![the six-link's force analysis sheet](course_forces_six_link_fig2_10.png)"
   echo "![the shaper's force analysis sheet, uk](course_forces_shaper_fig2_11_uk.png)"
+  echo "![the compressor's force analysis sheet, ru](course_forces_compressor_fig2_12_ru.png)"
   echo
 } >> "$index.tmp"
 # The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
@@ -143,8 +146,18 @@ bash docs/gallery/check_group.sh "$tmp" >> "$index.tmp"
   echo
   echo "<!-- fill -->"
   echo "<!-- /fill -->"
+  echo
+  echo "## How much of the A1 field the course sheets use"
+  echo
+  echo "Measured by \`tests/course_fill.rs\` on the sheets as the renderer lays"
+  echo "them out: the share of the field inside the frame, less the title block,"
+  echo "that lies in the box of a figure (caption included); at least 65 % each."
+  echo
+  echo "<!-- course-fill -->"
+  echo "<!-- /course-fill -->"
 } >> "$index.tmp"
 mv "$index.tmp" "$index"
 UPDATE_GOLDEN=1 cargo test --release -q --test sheet_fill > /dev/null
+UPDATE_GOLDEN=1 cargo test --release -q --test course_fill > /dev/null
 rm -rf "$tmp"
 echo "gallery written to $out"

@@ -208,7 +208,7 @@ fn fixed_figures(
             crate::studies::invariants::default_output(an),
             12,
             match size {
-                SheetSize::A1 => 180.0,
+                SheetSize::A1 => 300.0,
                 _ => 120.0,
             },
         )

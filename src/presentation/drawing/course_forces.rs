@@ -219,8 +219,13 @@ fn forces_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<O
     let (fw, fh) = (field.width(), field.height());
     // The boxes shrink together until the figures pack.
     let mut placed = None;
-    for zoom in [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4] {
-        let panels = (0.6 * fw * zoom, (fh - 3.0 * CAPTION) * zoom);
+    // The panels as wide as still packs (they take the room the lever and
+    // the tables leave), then everything smaller together.
+    let tries = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4]
+        .into_iter()
+        .flat_map(|zoom| [0.74, 0.67, 0.6].map(|share| (zoom, share)));
+    for (zoom, share) in tries {
+        let panels = (share * fw * zoom, (fh - 3.0 * CAPTION) * zoom);
         let lever_box = (0.36 * fw * zoom, 0.45 * fh * zoom);
         let figs = figures(an, s, k, opt, (panels, lever_box))?;
         let sizes: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();

@@ -1,0 +1,121 @@
+//! How much of the A1 field the course sheets use, measured on the sheet
+//! as the renderer lays it out: the share of the field inside the frame,
+//! less the title block, that lies in the box of a figure (the positions,
+//! the plans, the diagrams, a table, a force panel, the lever: each box as
+//! far as it draws, its caption included); the rest is empty paper. The kinematic and force sheets of the six-link, the shaper
+//! (uk), the compressor (ru) and the boom use at least 65 % each.
+//! `UPDATE_GOLDEN=1` writes the table into docs/gallery/README.md.
+
+use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
+use mechplan::words::construction::Lang;
+
+/// The share of the sheet's field (less its title block) inside the box
+/// of a figure (`<g class="figure">`, its box as the renderer lays out
+/// what it draws, caption included), counted on a 1 mm grid.
+fn used(s: &Sheet) -> f64 {
+    let t = tree(&s.svg).unwrap();
+    let k = 25.4 / 96.0; // mm per CSS px
+    let mut boxes = Vec::new();
+    fn walk(g: &usvg::Group, k: f64, out: &mut Vec<kurbo::Rect>) {
+        for n in g.children() {
+            if let usvg::Node::Group(g) = n {
+                if g.id().starts_with("fig-") {
+                    let b = g.abs_bounding_box();
+                    out.push(kurbo::Rect::new(
+                        b.left() as f64 * k,
+                        b.top() as f64 * k,
+                        b.right() as f64 * k,
+                        b.bottom() as f64 * k,
+                    ));
+                } else {
+                    walk(g, k, out);
+                }
+            }
+        }
+    }
+    walk(t.root(), k, &mut boxes);
+    assert!(boxes.len() >= 3, "{}: {} figures", s.name, boxes.len());
+    let field = sheet::field(s.size, false, 0.0);
+    let block = sheet::block(s.size);
+    let (mut cells, mut inside) = (0usize, 0usize);
+    let mut y = field.y0 + 0.5;
+    while y < field.y1 {
+        let mut x = field.x0 + 0.5;
+        while x < field.x1 {
+            let p = kurbo::Point::new(x, y);
+            if !block.contains(p) {
+                cells += 1;
+                inside += usize::from(boxes.iter().any(|b| b.contains(p)));
+            }
+            x += 1.0;
+        }
+        y += 1.0;
+    }
+    inside as f64 / cells as f64
+}
+
+fn course_sheets(path: &str, lang: Lang) -> Vec<Sheet> {
+    let text =
+        std::fs::read_to_string(format!("{}/fixtures/{path}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let req = mechplan::DrawRequest {
+        course: true,
+        ..mechplan::DrawRequest::default()
+    };
+    let study = mechplan::Study::from_json(&text)
+        .unwrap()
+        .for_sheets(&req)
+        .unwrap();
+    let solution = study.solve().unwrap();
+    let opt = DrawOptions {
+        lang,
+        course: true,
+        ..DrawOptions::default()
+    };
+    sheets(study.analysis(), solution.solved(), &opt)
+        .into_iter()
+        .filter(|s| s.name.starts_with("course"))
+        .collect()
+}
+
+#[test]
+fn course_sheets_use_their_field() {
+    let cases = [
+        ("dynamics/six_link_fig2_10.json", Lang::En),
+        ("dynamics/shaper_fig2_11.json", Lang::Uk),
+        ("dynamics/compressor_fig2_12.json", Lang::Ru),
+        ("boom_cylinder.json", Lang::En),
+    ];
+    let mut rows = Vec::new();
+    let mut low = Vec::new();
+    for (path, lang) in cases {
+        for s in course_sheets(path, lang) {
+            let u = used(&s);
+            rows.push(format!(
+                "| {path} ({lang:?}) | {} | {:.0} % |",
+                s.name,
+                100.0 * u
+            ));
+            if u < 0.65 {
+                low.push(format!("{path} {}: {:.0} %", s.name, 100.0 * u));
+            }
+        }
+    }
+    let table = format!(
+        "| scene | sheet | field used |\n|---|---|---|\n{}\n",
+        rows.join("\n")
+    );
+    eprintln!("{table}");
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        let path = format!("{}/docs/gallery/README.md", env!("CARGO_MANIFEST_DIR"));
+        let doc = std::fs::read_to_string(&path).unwrap();
+        let (a, b) = ("<!-- course-fill -->", "<!-- /course-fill -->");
+        let (i, j) = (
+            doc.find(a).expect("course-fill markers"),
+            doc.find(b).unwrap(),
+        );
+        let doc = format!("{}{a}\n{table}{}", &doc[..i], &doc[j..]);
+        std::fs::write(&path, doc).unwrap();
+    }
+    assert!(rows.len() >= 7, "{table}");
+    assert!(low.is_empty(), "below 65 %: {low:?}\n{table}");
+}
