@@ -34,7 +34,8 @@ pub enum Command {
         /// Print the construction of the plans as numbered lecture-style steps.
         #[arg(long)]
         steps: bool,
-        /// Language of the steps: en, uk or ru (default: the scene's want.lang).
+        /// Language of the table and of the steps: en, uk or ru, their words and decimal mark
+        /// (default: the scene's want.lang); json, csv and jsonl are written as they are.
         #[arg(long, value_parser = lang)]
         lang: Option<Lang>,
     },

@@ -37,7 +37,7 @@ fn main() -> ExitCode {
         // No arguments: the embedded default scene, solved and drawn.
         None => {
             let study = Study::default_scene().watched_by(Arc::new(terminal::Bar::default()));
-            results(&study, Results::Table, None)
+            results(&study, Results::Table(None), None)
                 .and_then(|()| study.draw(&DrawRequest::default()))
                 .and_then(|w| wrote(&w))
                 .map(|()| 0)
@@ -55,18 +55,9 @@ fn command(c: Command) -> Result<u8, Error> {
             steps,
             lang,
         } => {
-            // The table is English yet: say so, never ignore --lang silently.
-            if !steps
-                && matches!(format, SolveFormat::Table)
-                && lang.is_some_and(|l| l != mechplan::Lang::En)
-            {
-                eprintln!(
-                    "mechplan: note: the table is written in English; --lang applies to --steps (and to draw, check)"
-                );
-            }
             let style = match (steps, format) {
                 (true, _) => Results::Steps(lang),
-                (false, SolveFormat::Table) => Results::Table,
+                (false, SolveFormat::Table) => Results::Table(lang),
                 (false, SolveFormat::Json) => Results::Json,
                 (false, SolveFormat::Csv) => Results::Csv,
                 (false, SolveFormat::Jsonl) => Results::Jsonl,

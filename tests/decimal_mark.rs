@@ -149,22 +149,38 @@ fn force_panels_name_groups_by_class_and_kind() {
     }
 }
 
-/// `solve --lang uk` without `--steps` writes the table in English: it
-/// says so on stderr instead of ignoring the option silently.
+/// `solve --lang uk` without `--steps` writes the table in Ukrainian,
+/// its numbers with the decimal comma, and no note on stderr (the table
+/// was English once, and said so); tests/languages.rs has the rest.
 #[test]
-fn a_language_the_table_cannot_follow_is_noted() {
+fn the_table_follows_lang_without_a_note() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let scene = root.join("fixtures/four_bar.json");
-    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(["solve", scene.to_str().unwrap(), "--lang", "uk"])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("--lang applies to --steps"), "{err}");
-    let quiet = Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(["solve", scene.to_str().unwrap(), "--lang", "uk", "--steps"])
-        .output()
-        .unwrap();
-    assert!(quiet.stderr.is_empty());
+    for steps in [false, true] {
+        let mut args = vec!["solve", scene.to_str().unwrap(), "--lang", "uk"];
+        if steps {
+            args.push("--steps");
+        }
+        let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        assert!(
+            out.stderr.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        if !steps {
+            assert!(text.contains("положення 1: φ1 = "), "{text}");
+            assert!(text.contains("рад/с"), "{text}");
+        }
+        let body = text.split_once('\n').map_or("", |x| x.1);
+        assert!(
+            decimal_points(body).is_empty(),
+            "{:?}",
+            decimal_points(body)
+        );
+    }
 }

@@ -43,8 +43,8 @@ fn streamed_text_is_the_document_byte_for_byte() {
                 serde_json::to_string_pretty(&report::to_json(&an, &solved)).unwrap() + "\n";
             assert_eq!(report::to_text(&an, &solved, Style::Json), whole, "{name}");
             assert_eq!(
-                report::to_text(&an, &solved, Style::Table),
-                report::to_table(&an, &solved),
+                report::to_text(&an, &solved, Style::Table(mechplan::Lang::En)),
+                report::to_table(&an, &solved, mechplan::Lang::En),
                 "{name}"
             );
         }

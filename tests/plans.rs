@@ -814,7 +814,7 @@ fn a_sweep_that_keeps_no_plans_checks_them_numbers_only_with_the_same_results() 
         for (k, (a, b)) in old.iter().zip(&new).enumerate() {
             let at = format!("{name}, position {}", k + 1);
             assert!(a.plans.is_some() && b.plans.is_none(), "{at}");
-            for style in [Style::Table, Style::Csv] {
+            for style in [Style::Table(mechplan::Lang::En), Style::Csv] {
                 assert_eq!(
                     untimed(text_position(&an, style, k, a)),
                     untimed(text_position(&an, style, k, b)),
@@ -834,7 +834,7 @@ fn a_sweep_that_keeps_no_plans_checks_them_numbers_only_with_the_same_results() 
                 text_position(&an, Style::Csv, k, c),
                 "{at}"
             );
-            let table = |s| untimed(text_position(&an, Style::Table, k, s));
+            let table = |s| untimed(text_position(&an, Style::Table(mechplan::Lang::En), k, s));
             if table(a) != table(c) {
                 kernel_differs.push(at);
             }

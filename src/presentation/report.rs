@@ -278,7 +278,7 @@ fn crosscheck_json(c: &CrossCheck, want: Orders) -> Value {
     let mut check = match c.method {
         Method::Routes => json!({
             "max_rel_diff": num(c.max_rel_diff),
-            "worst": c.worst,
+            "worst": c.worst.to_string(),
             "conditioning": num(c.conditioning),
             "time_s": { "contour": num(c.contour_time), "constraint": num(c.constraint_time), "plans": num(c.plan_time) },
         }),
@@ -286,7 +286,7 @@ fn crosscheck_json(c: &CrossCheck, want: Orders) -> Value {
         Method::Residuals { .. } => json!({
             "method": "residuals",
             "max_rel_residual": num(c.max_rel_diff),
-            "worst": c.worst,
+            "worst": c.worst.to_string(),
             "conditioning": num(c.conditioning),
             "time_s": { "contour": num(c.contour_time), "check": num(c.constraint_time) },
         }),
@@ -319,8 +319,8 @@ fn crosscheck_json(c: &CrossCheck, want: Orders) -> Value {
 /// What `solve` prints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Style {
-    /// [`to_table`].
-    Table,
+    /// [`to_table`], in a language.
+    Table(Lang),
     /// [`to_json`], pretty-printed, with a final newline.
     Json,
     /// A row per position ([`csv_head`], [`csv_row`]).
@@ -445,7 +445,7 @@ pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
 /// that a long sweep need be neither kept nor built as one document.
 pub fn text_head(an: &Analysis, style: Style) -> String {
     match style {
-        Style::Table => table_head(an),
+        Style::Table(lang) => table_head(an, lang),
         Style::Steps(_) => steps_head(an),
         Style::Csv => csv_head(an),
         Style::Jsonl => String::new(),
@@ -466,7 +466,7 @@ pub fn text_head(an: &Analysis, style: Style) -> String {
 /// The text of position `k` (from 0) of the result, after those before it.
 pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> String {
     match style {
-        Style::Table => table_position(an, k, s),
+        Style::Table(lang) => table_position(an, k, s, lang),
         Style::Steps(lang) => steps_position(an, k, s, lang),
         Style::Csv => csv_row(an, k, s),
         Style::Jsonl => {
@@ -495,7 +495,7 @@ pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> Strin
 /// The end of the result text, after `count` positions.
 pub fn text_tail(_an: &Analysis, style: Style, count: usize) -> String {
     match style {
-        Style::Table | Style::Steps(_) | Style::Csv | Style::Jsonl => String::new(),
+        Style::Table(_) | Style::Steps(_) | Style::Csv | Style::Jsonl => String::new(),
         Style::Json if count == 0 => "[]\n}\n".into(),
         Style::Json => "\n  ]\n}\n".into(),
     }

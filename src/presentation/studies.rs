@@ -2,38 +2,44 @@
 //! kinematic diagrams, the motion-law invariants (the studies themselves
 //! compute numbers only).
 
+use crate::kinematics::positions::describe_input_in;
 use crate::kinematics::solve::Analysis;
-
-use crate::model::mechanism::Mechanism;
+use crate::lang::Lang;
 use crate::pipeline::Solved;
-use crate::studies::centres::{How, Place, find, name};
+use crate::studies::centres::{Place, find, name};
 use crate::studies::diagrams::{Diagrams, central};
 use crate::studies::invariants::{Phase, Settings};
+use crate::words::catalogue::{DiagramPhrases, catalogue, fill};
+use crate::words::numbers::{decimals, unit};
+use crate::words::terminal::{centres, how, why};
 
-/// One centre as text: "(x, y) m", or "at infinity, direction (dx, dy)".
-fn place_text(p: &Place) -> String {
+/// One centre as text in `l`: "(x, y) m", or "at infinity, direction
+/// (dx, dy)".
+fn place_text(p: &Place, l: Lang) -> String {
+    let w = centres(l);
+    let (x, y) = match p {
+        Place::At(p) => (p.x, p.y),
+        Place::Infinity(d) => (d.x, d.y),
+    };
+    let (x, y) = (format!("{x:.6}"), format!("{y:.6}"));
     match p {
-        Place::At(p) => format!("({:.6}, {:.6}) m", p.x, p.y),
-        Place::Infinity(d) => format!("at infinity, direction ({:.6}, {:.6})", d.x, d.y),
-    }
-}
-
-fn how_text(m: &Mechanism, h: &How) -> String {
-    match h {
-        How::Revolute(p) => format!("revolute pair {p}"),
-        How::Prismatic => "prismatic pair: ⊥ the guide".into(),
-        How::Kennedy([a, b]) => format!(
-            "Kennedy: lines through links {} and {}",
-            m.link_id(*a),
-            m.link_id(*b)
-        ),
+        Place::At(_) => fill(&w.at, &[("x", &x), ("y", &y), ("unit", &unit("m", l))]),
+        Place::Infinity(_) => fill(&w.infinity, &[("x", &x), ("y", &y)]),
     }
 }
 
 /// The centres of the chosen positions (`position`: from 1; all if `None`)
-/// as a table.
-pub fn centres_table(an: &Analysis, solved: &[Solved], position: Option<usize>) -> String {
+/// as a table in `l`, every number in its decimal mark.
+pub fn centres_table(
+    an: &Analysis,
+    solved: &[Solved],
+    position: Option<usize>,
+    l: Lang,
+) -> String {
     let m = &an.mech;
+    let w = centres(l);
+    let [centre, place, found] = &w.heads;
+    let word = &catalogue(l).sheets.position;
     let mut out = String::new();
     for (k, s) in solved.iter().enumerate() {
         if position.is_some_and(|p| p != k + 1) {
@@ -41,31 +47,32 @@ pub fn centres_table(an: &Analysis, solved: &[Solved], position: Option<usize>) 
         }
         let cs = find(an, &s.config);
         out += &format!(
-            "position {}: {}\n  centre   place                                        found by                                   sin θ\n",
+            "{word} {}: {}\n  {centre:<8} {place:<44} {found:<42} sin θ\n",
             k + 1,
-            crate::kinematics::positions::describe_input(m, &s.drives.coords())
+            describe_input_in(m, &s.drives.coords(), &unit("m", l))
         );
         for c in &cs.found {
             let (p, sub) = name(m, c);
             out += &format!(
                 "  {:<8} {:<44} {:<42} {:.1e}\n",
                 format!("{p}{sub}"),
-                place_text(&c.place),
-                how_text(m, &c.how),
+                place_text(&c.place, l),
+                how(m, &c.how, l),
                 c.sin_angle
             );
         }
         for u in &cs.undetermined {
             out += &format!(
-                "  P{}{}: undetermined: {}\n",
+                "  P{}{}: {}: {}\n",
                 m.link_id(u.links.0),
                 m.link_id(u.links.1),
-                u.why
+                w.undetermined,
+                why(m, u.links, u.why, l)
             );
         }
         out.push('\n');
     }
-    out
+    decimals(&out, l)
 }
 
 /// The centres as JSON: per position, `{"P13": {"at": [x, y]} | {"infinity":
@@ -91,7 +98,7 @@ pub fn centres_json(
                 Place::Infinity(d) => json!({ "infinity": [d.x, d.y] }),
             };
             e["links"] = json!([m.link_id(c.links.0), m.link_id(c.links.1)]);
-            e["how"] = Value::String(how_text(m, &c.how));
+            e["how"] = Value::String(how(m, &c.how, Lang::En));
             e["sin_angle"] = json!(c.sin_angle);
             centres.insert(format!("{p}{sub}"), e);
         }
@@ -101,7 +108,7 @@ pub fn centres_json(
             .map(|u| {
                 json!({
                     "links": [m.link_id(u.links.0), m.link_id(u.links.1)],
-                    "why": u.why,
+                    "why": why(m, u.links, u.why, Lang::En),
                 })
             })
             .collect();
@@ -115,63 +122,38 @@ pub fn centres_json(
     json!({ "positions": list })
 }
 
-/// The table of the diagrams: per node and per interval midpoint the
-/// analytic values and the numerical ones, then the errors.
-pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
+/// The table of the diagrams in `l`: per node and per interval midpoint
+/// the analytic values and the numerical ones, then the errors; every
+/// number in the language's decimal mark.
+pub fn diagrams_table(an: &Analysis, d: &Diagrams, l: Lang) -> String {
+    let w = &catalogue(l).diagrams;
     let m = &an.mech;
-    let (sym, unit) = if d.slide {
-        ("s".to_string(), "m")
+    let sym = if d.slide {
+        "s".to_string()
     } else {
-        (format!("φ{}", m.link_id(d.output)), "rad")
+        format!("φ{}", m.link_id(d.output))
     };
-    let (x, x_unit) = if d.stroke {
-        let (a, b, unit) = d.abscissa(an);
-        (a + &b, unit)
-    } else {
-        ("φ".to_string(), "rad")
+    let x = match d.stroke {
+        true => {
+            let (a, b, _) = d.abscissa(an);
+            a + &b
+        }
+        false => "φ".to_string(),
     };
-    let start = if d.stroke {
-        format!(
-            "over the stroke {x} = {} … {} m of the driving slider",
-            crate::format::num(d.phi0),
-            crate::format::num(d.phi0 + d.h * d.n as f64)
-        )
-    } else {
-        format!(
-            "from φ1 = {:.3}° (the start of the working stroke)",
-            d.phi0.to_degrees().rem_euclid(360.0)
-        )
-    };
-    let mut out = format!(
-        "kinematic diagrams of {} ({}), N = {}, {start}\n\
-         scales: μ_{sym} = {} {unit}/mm, μ_{x} = {:.6} {x_unit}/mm, H1 = {} mm, H2 = {} mm, μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {:.6} {unit}/mm, μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {:.6} {unit}/mm\n\n",
-        match d.point {
-            Some(p) => format!("point {}", m.point_name(p)),
-            None => format!("link {}", m.link_id(d.output)),
-        },
-        match (d.point, d.slide) {
-            (Some(_), _) => "the arc length of its path",
-            (None, true) => "its slide",
-            (None, false) => "its angle",
-        },
-        d.n,
-        crate::format::num(d.mu_s),
-        d.mu_phi,
-        d.h1,
-        d.h2,
-        d.mu_v,
-        d.mu_a
-    );
+    let mut out = diagrams_title(an, d, &sym, &x, l);
     let (cv, ca) = central(&d.s, d.h);
     let chord_v = d.chord_velocity();
     let chord_a = d.chord_acceleration();
+    let (v, a) = (format!("{sym}′"), format!("{sym}″"));
+    let (exact, central_, chords) = (&w.exact, &w.central, &catalogue(l).sheets.chords);
     out += &format!(
-        "  node   {}   {sym:<12} {sym}′ exact    {sym}′ central  {sym}″ exact    {sym}″ chords   {sym}″ central\n",
+        "  {:<6} {}   {sym:<12} {v} {exact:<8} {v} {central_:<8} {a} {exact:<8} {a} {chords:<8} {a} {central_}\n",
+        w.node,
         if d.stroke {
-            format!("{:<8}", format!("{x} [m]"))
+            format!("{:<8}", format!("{x} [{}]", unit("m", l)))
         } else {
             "φ1 [°]".to_string()
-        }
+        },
     );
     for k in 0..=d.n {
         let x = if d.stroke {
@@ -193,30 +175,99 @@ pub fn diagrams_table(an: &Analysis, d: &Diagrams) -> String {
             d.s[k], d.ds[k], cv[k], d.dds[k], ca[k]
         );
     }
-    out += &format!("\n  interval   {sym}′ exact at the midpoint   {sym}′ chords (ordinate × μ)\n");
+    let midpoint = fill(&w.midpoint, &[("y", &v)]);
+    let ordinate = fill(&w.ordinate, &[("y", &v)]);
+    out += &format!("\n  {:<8}   {midpoint:<24}   {ordinate}\n", w.interval);
     for (k, (exact, chord)) in d.ds_mid.iter().zip(&chord_v).enumerate() {
         out += &format!("  {:>3}–{:<3}    {exact:<26.6} {chord:.6}\n", k, k + 1);
     }
-    let e = d.errors();
-    out += &format!(
-        "\nlargest error, relative to the largest value of its curve (at node or interval):\n\
-         \x20 chords {sym}′ {:.2e} ({}), chords {sym}″ {:.2e} ({}), central {sym}′ {:.2e} ({}), central {sym}″ {:.2e} ({}; at the ends {:.2e}),\n\
-         \x20 integration by chords {sym} {:.2e} ({}), trapezoids {sym} {:.2e} ({})\n",
-        e.chord_v.0,
-        e.chord_v.1,
-        e.chord_a.0,
-        e.chord_a.1,
-        e.central_v.0,
-        e.central_v.1,
-        e.central_a.0,
-        e.central_a.1,
-        e.central_a_ends.0,
-        e.chord_s.0,
-        e.chord_s.1,
-        e.trapezoid_s.0,
-        e.trapezoid_s.1
+    out += &diagrams_errors(d, w, &sym);
+    decimals(&out, l)
+}
+
+/// The diagrams' title and scales in `l` (`sym` the ordinate's symbol,
+/// `x` the abscissa's), with the empty line after them.
+fn diagrams_title(an: &Analysis, d: &Diagrams, sym: &str, x: &str, l: Lang) -> String {
+    let w = &catalogue(l).diagrams;
+    let m = &an.mech;
+    let unit_of = |u: &str| unit(u, l);
+    let ordinate = if d.slide { "m" } else { "rad" };
+    let abscissa = if d.stroke { d.abscissa(an).2 } else { "rad" };
+    let start = if d.stroke {
+        fill(
+            &w.stroke,
+            &[
+                ("x", x),
+                ("from", &crate::format::num(d.phi0)),
+                ("to", &crate::format::num(d.phi0 + d.h * d.n as f64)),
+                ("unit", &unit_of("m")),
+            ],
+        )
+    } else {
+        let angle = format!("{:.3}", d.phi0.to_degrees().rem_euclid(360.0));
+        fill(&w.turn, &[("angle", &angle)])
+    };
+    let what = match d.point {
+        Some(p) => fill(&w.point, &[("p", m.point_name(p))]),
+        None => fill(&w.link, &[("id", m.link_id(d.output))]),
+    };
+    let of = &w.of[match (d.point, d.slide) {
+        (Some(_), _) => 0,
+        (None, true) => 1,
+        (None, false) => 2,
+    }];
+    let n = d.n.to_string();
+    let title = fill(
+        &w.title,
+        &[("what", &what), ("of", of), ("n", &n), ("start", &start)],
     );
-    out
+    let (unit, x_unit) = (
+        unit_of(&format!("{ordinate}/mm")),
+        unit_of(&format!("{abscissa}/mm")),
+    );
+    format!(
+        "{title}\n\
+         {}: μ_{sym} = {} {unit}, μ_{x} = {:.6} {x_unit}, H1 = {} {mm}, H2 = {} {mm}, μ_{sym}′ = μ_{sym}/(H1·μ_{x}) = {:.6} {unit}, μ_{sym}″ = μ_{sym}′/(H2·μ_{x}) = {:.6} {unit}\n\n",
+        w.scales,
+        crate::format::num(d.mu_s),
+        d.mu_phi,
+        d.h1,
+        d.h2,
+        d.mu_v,
+        d.mu_a,
+        mm = unit_of("mm"),
+    )
+}
+
+/// The diagrams' largest errors, relative to the largest value of each
+/// curve, where each is (`w`: the words; `sym` the ordinate's symbol).
+fn diagrams_errors(d: &Diagrams, w: &DiagramPhrases, sym: &str) -> String {
+    let e = d.errors();
+    let sci = |x: f64| format!("{x:.2e}");
+    let (v, a) = (format!("{sym}′"), format!("{sym}″"));
+    let at = |(_, k): (f64, usize)| k.to_string();
+    let errors = fill(
+        &w.errors,
+        &[
+            ("v", &v),
+            ("a", &a),
+            ("s", sym),
+            ("cv", &sci(e.chord_v.0)),
+            ("cv_at", &at(e.chord_v)),
+            ("ca", &sci(e.chord_a.0)),
+            ("ca_at", &at(e.chord_a)),
+            ("dv", &sci(e.central_v.0)),
+            ("dv_at", &at(e.central_v)),
+            ("da", &sci(e.central_a.0)),
+            ("da_at", &at(e.central_a)),
+            ("ends", &sci(e.central_a_ends.0)),
+            ("is", &sci(e.chord_s.0)),
+            ("is_at", &at(e.chord_s)),
+            ("ts", &sci(e.trapezoid_s.0)),
+            ("ts_at", &at(e.trapezoid_s)),
+        ],
+    );
+    format!("\n{errors}\n")
 }
 
 /// The phases as a table: angles in degrees, strokes in m (or degrees for

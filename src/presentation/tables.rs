@@ -144,8 +144,6 @@ fn table(caption: &str, mut columns: Vec<Column>, wide: usize, rows: Vec<Vec<Cel
 
 /// The table of the points at a position: name, x, y, then |v| and the
 /// direction of v, |a| and the direction of a, as far as the analysis goes.
-/// Words the handout does not show (the coordinates', the directions')
-/// stay in English.
 pub fn points(an: &Analysis, s: &Solved, l: Lang) -> Table {
     let columns = vec![
         column(Kind::Name, &words(l).point, None, l),
@@ -199,7 +197,7 @@ pub fn links(an: &Analysis, s: &Solved, l: Lang) -> Table {
     let m = &an.mech;
     let columns = vec![
         column(Kind::Name, &words(l).link, None, l),
-        column(Kind::Angle, "angle", Some("°"), l),
+        column(Kind::Angle, &words(l).angle, Some("°"), l),
         column(Kind::Rate, "ω", Some("rad/s"), l),
         column(Kind::Rate, "ε", Some("rad/s²"), l),
     ];

@@ -1,41 +1,58 @@
 //! The result as a terminal table (`solve`, the default format): per
 //! position the points' places, velocities and accelerations and the
-//! links' rates, each with the routes' agreement and the printed bound.
+//! links' rates, each with the routes' agreement and the printed bound;
+//! in a language's words (its catalogue's) and decimal mark.
 
 use super::tables::{self, Cell, Kind, Table};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
 use crate::pipeline::Solved;
-use crate::verification::crosscheck::Method;
+use crate::verification::crosscheck::{CrossCheck, Method};
+use crate::words::catalogue::fill;
 use crate::words::construction::Lang;
+use crate::words::numbers::{decimals, unit};
+use crate::words::terminal::{results, worst};
 use std::fmt::Write as _;
 
-/// The sense of rotation, "-" for a value that is zero up to rounding
-/// (`scale` is the largest value of its kind at that position).
-fn sense(x: f64, scale: f64) -> &'static str {
+/// The senses of rotation in `l`: counter-clockwise, clockwise, zero.
+fn senses(l: Lang) -> &'static [String; 3] {
+    &crate::words::catalogue(l).tables.senses
+}
+
+/// The width of the senses' column: the longest sense, and at least 5.
+fn sense_width(l: Lang) -> usize {
+    senses(l).iter().map(|s| s.chars().count()).fold(5, usize::max)
+}
+
+/// The sense of rotation in `l`, zero (`-`) for a value that is zero up
+/// to rounding (`scale` is the largest value of its kind at that
+/// position).
+fn sense(x: f64, scale: f64, l: Lang) -> &'static str {
+    let [ccw, cw, zero] = senses(l);
     if x.abs() <= 1e-12 * scale {
-        "-"
+        zero
     } else if x > 0.0 {
-        "ccw"
+        ccw
     } else if x < 0.0 {
-        "cw"
+        cw
     } else {
-        "-"
+        zero
     }
 }
 
-/// A table for the terminal: points with |v|, |a|; links with ω, ε and senses.
-pub fn to_table(an: &Analysis, solved: &[Solved]) -> String {
-    let mut t = table_head(an);
+/// A table for the terminal in `l`: points with |v|, |a|; links with ω,
+/// ε and senses.
+pub fn to_table(an: &Analysis, solved: &[Solved], l: Lang) -> String {
+    let mut t = table_head(an, l);
     for (i, s) in solved.iter().enumerate() {
-        t += &table_position(an, i, s);
+        t += &table_position(an, i, s, l);
     }
     t
 }
 
-/// The table's title and structure lines.
-pub(super) fn table_head(an: &Analysis) -> String {
+/// The table's title (the scene's, as written) and structure line.
+pub(super) fn table_head(an: &Analysis, l: Lang) -> String {
     let m = &an.mech;
     let mut t = String::new();
     if !m.scene.title.is_empty() {
@@ -43,7 +60,8 @@ pub(super) fn table_head(an: &Analysis) -> String {
     }
     let _ = writeln!(
         t,
-        "structure: W = {}, {}   [{}]",
+        "{}: W = {}, {}   [{}]",
+        results(l).structure,
         an.structure.dof,
         an.structure.formula(m),
         group_kinds(an)
@@ -67,8 +85,9 @@ pub(crate) fn group_kinds(an: &Analysis) -> String {
 /// A table of results for the terminal: a line per row, the columns the
 /// terminal has room for (every number; not the measured segments, which
 /// `solve --steps` gives) aligned under their headings, numbers to fixed
-/// decimals, a rate followed by its sense.
-fn table_text(table: &Table) -> String {
+/// decimals, a rate followed by its sense (in `l`).
+fn table_text(table: &Table, l: Lang) -> String {
+    let sw = sense_width(l);
     // Width and decimals of the terminal's column of a kind.
     let form = |k: Kind| match k {
         Kind::Name => Some((6, 0)),
@@ -91,7 +110,7 @@ fn table_text(table: &Table) -> String {
         let sep = if n > 0 { " " } else { "" };
         let _ = match c.kind {
             Kind::Name => write!(t, "{sep}{head:<w$}"),
-            Kind::Rate => write!(t, "{sep}{head:>w$} {:>5}", ""),
+            Kind::Rate => write!(t, "{sep}{head:>w$} {:>sw$}", ""),
             _ => write!(t, "{sep}{head:>w$}"),
         };
     }
@@ -104,7 +123,7 @@ fn table_text(table: &Table) -> String {
                 Cell::Notation(s) | Cell::Plain(s) => write!(t, "{sep}{s:<w$}"),
                 Cell::Number(x) => write!(t, "{sep}{x:>w$.d$}"),
                 Cell::Rate { value, scale } => {
-                    write!(t, "{sep}{value:>w$.d$} {:>5}", sense(*value, *scale))
+                    write!(t, "{sep}{value:>w$.d$} {:>sw$}", sense(*value, *scale, l))
                 }
                 // Not known: nothing, nor anything after it.
                 Cell::Missing => Ok(()),
@@ -117,12 +136,11 @@ fn table_text(table: &Table) -> String {
     t
 }
 
-/// The table of position `i` (from 0).
-pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
+/// The table of position `i` (from 0) in `l`, every number in its
+/// decimal mark.
+pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved, l: Lang) -> String {
     let m = &an.mech;
     let mut t = String::new();
-    let vel = an.order.is_some();
-    let acc = an.order == Some(Order::Acceleration);
     let _ = writeln!(t);
     let several = m.scene.several_inputs();
     let input = m
@@ -137,67 +155,101 @@ pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved) -> String {
                 InputSpec::Crank { .. } => {
                     let k = if several { id } else { "1" };
                     format!(
-                        "φ{k} = {:.3}°, ω{k} = {} rad/s, ε{k} = {} rad/s²",
+                        "φ{k} = {:.3}°, ω{k} = {} {}, ε{k} = {} {}",
                         d.q.to_degrees().rem_euclid(360.0),
                         fmt(d.rate),
-                        fmt(d.rate2)
+                        unit("rad/s", l),
+                        fmt(d.rate2),
+                        unit("rad/s²", l)
                     )
                 }
                 InputSpec::Slider { .. } => format!(
-                    "s{sub} = {} m, v{sub} = {} m/s, a{sub} = {} m/s²",
+                    "s{sub} = {} {}, v{sub} = {} {}, a{sub} = {} {}",
                     fmt(d.q),
+                    unit("m", l),
                     fmt(d.rate),
-                    fmt(d.rate2)
+                    unit("m/s", l),
+                    fmt(d.rate2),
+                    unit("m/s²", l)
                 ),
             }
         })
         .collect::<Vec<_>>()
         .join("; ");
-    let _ = writeln!(t, "position {}: {input}", i + 1);
-    t += &table_text(&tables::points(an, s, Lang::En));
-    t += &table_text(&tables::links(an, s, Lang::En));
-    let slides = s.slides(an);
-    if vel && !slides.is_empty() {
-        for sl in &slides {
-            let pr = &m.prismatics[sl.pair];
-            let _ = write!(
-                t,
-                "  slide of {} on {} at {}: v_rel = {:.6} m/s",
-                m.link_id(pr.slider),
-                m.link_id(pr.guide),
-                m.point_name(pr.point),
-                sl.v
-            );
-            if acc {
-                let _ = write!(t, ", a_rel = {:.6} m/s²", sl.a);
-                if pr.guide != m.frame() {
-                    let _ = write!(t, ", |a_Coriolis| = {:.6} m/s²", sl.coriolis.hypot());
-                }
-            }
-            let _ = writeln!(t);
-        }
-    }
+    let position = &crate::words::catalogue(l).sheets.position;
+    let _ = writeln!(t, "{position} {}: {input}", i + 1);
+    t += &table_text(&tables::points(an, s, l), l);
+    t += &table_text(&tables::links(an, s, l), l);
+    t += &slides_text(an, s, l);
     if let Some(c) = &s.check {
-        let _ = match c.method {
-            Method::Routes => writeln!(
-                t,
-                "  cross-check: max rel diff {:.1e} ({}); contour route {:.0} µs, constraint route {:.0} µs",
-                c.max_rel_diff,
-                c.worst,
-                c.contour_time * 1e6,
-                c.constraint_time * 1e6
-            ),
-            Method::Residuals { .. } => writeln!(
-                t,
-                "  cross-check by residuals: max rel residual {:.1e} ({}); contour route {:.0} µs, check {:.0} µs",
-                c.max_rel_diff,
-                c.worst,
-                c.contour_time * 1e6,
-                c.constraint_time * 1e6
-            ),
-        };
+        t += &check_text(c, l);
+    }
+    // Every number in the language's decimal mark (a comma in uk and ru).
+    decimals(&t, l)
+}
+
+/// The position's slides, a line each, in `l`: the relative velocity and
+/// acceleration (and the Coriolis acceleration on a moving guide).
+fn slides_text(an: &Analysis, s: &Solved, l: Lang) -> String {
+    let m = &an.mech;
+    let mut t = String::new();
+    let Some(order) = an.order else { return t };
+    let r = results(l);
+    let (ms, ms2) = (unit("m/s", l), unit("m/s²", l));
+    for sl in &s.slides(an) {
+        let pr = &m.prismatics[sl.pair];
+        let slide = fill(
+            &r.slide,
+            &[
+                ("slider", m.link_id(pr.slider)),
+                ("guide", m.link_id(pr.guide)),
+                ("point", m.point_name(pr.point)),
+            ],
+        );
+        let _ = write!(t, "  {slide}: v_rel = {:.6} {ms}", sl.v);
+        if order == Order::Acceleration {
+            let _ = write!(t, ", a_rel = {:.6} {ms2}", sl.a);
+            if pr.guide != m.frame() {
+                let coriolis = &r.coriolis;
+                let _ = write!(t, ", |{coriolis}| = {:.6} {ms2}", sl.coriolis.hypot());
+            }
+        }
+        let _ = writeln!(t);
     }
     t
+}
+
+/// The position's cross-check line in `l`: the largest difference (or
+/// residual), where, and what the routes cost.
+fn check_text(c: &CrossCheck, l: Lang) -> String {
+    let r = results(l);
+    let diff = format!("{:.1e}", c.max_rel_diff);
+    let worst = worst(&c.worst, l);
+    let us = |x: f64| format!("{:.0}", x * 1e6);
+    let (contour, other) = (us(c.contour_time), us(c.constraint_time));
+    let line = match c.method {
+        Method::Routes => fill(
+            &r.routes,
+            &[
+                ("diff", &diff),
+                ("worst", &worst),
+                ("contour", &contour),
+                ("constraint", &other),
+                ("us", &r.microseconds),
+            ],
+        ),
+        Method::Residuals { .. } => fill(
+            &r.residuals,
+            &[
+                ("diff", &diff),
+                ("worst", &worst),
+                ("contour", &contour),
+                ("check", &other),
+                ("us", &r.microseconds),
+            ],
+        ),
+    };
+    format!("  {line}\n")
 }
 
 fn fmt(x: f64) -> String {

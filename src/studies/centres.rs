@@ -69,7 +69,17 @@ pub struct Centre {
 #[derive(Clone, Debug)]
 pub struct Undetermined {
     pub links: (usize, usize),
-    pub why: String,
+    pub why: Why,
+}
+
+/// Why a centre cannot be placed (named in words by `crate::words`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Why {
+    /// The Kennedy lines through these two third links coincide: the
+    /// centre is anywhere on them.
+    Coincide([usize; 2]),
+    /// Fewer than two Kennedy lines reach it.
+    FewLines,
 }
 
 /// All instant centres of the solved links at one position.
@@ -107,7 +117,7 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     // coincide are then recorded as undetermined.
     let mut last = false;
     loop {
-        let placed = k.pass(m, last, &mut undetermined);
+        let placed = k.pass(last, &mut undetermined);
         if placed.is_empty() {
             if last {
                 break;
@@ -120,7 +130,7 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
             k.known[at] = Some(v);
         }
     }
-    let found = k.centres(m, &mut undetermined);
+    let found = k.centres(&mut undetermined);
     Centres {
         links: k.links,
         found,
@@ -200,12 +210,7 @@ impl Kennedy {
     /// One pass: every centre not yet known that two lines determine
     /// (by slot); with `last`, those whose lines all coincide are
     /// recorded in `undetermined` (and placed nowhere).
-    fn pass(
-        &self,
-        m: &Mechanism,
-        last: bool,
-        undetermined: &mut Vec<Undetermined>,
-    ) -> Vec<(usize, Known)> {
+    fn pass(&self, last: bool, undetermined: &mut Vec<Undetermined>) -> Vec<(usize, Known)> {
         let (n, links) = (self.links.len(), &self.links);
         let mut placed = Vec::new();
         for i in 0..n {
@@ -242,13 +247,7 @@ impl Kennedy {
                     } else {
                         undetermined.push(Undetermined {
                             links: (links[i], links[j]),
-                            why: format!(
-                                "the Kennedy lines through links {} and {} coincide: the centre of links {} and {} is anywhere on them at this position",
-                                m.link_id(via[0]),
-                                m.link_id(via[1]),
-                                m.link_id(links[i]),
-                                m.link_id(links[j])
-                            ),
+                            why: Why::Coincide(via),
                         });
                         placed.push((slot, ([0.0, 0.0, 0.0], How::Kennedy(via), 0.0)));
                     }
@@ -260,7 +259,7 @@ impl Kennedy {
 
     /// The centres found, in the world; those no two lines reach recorded
     /// in `undetermined`.
-    fn centres(&self, m: &Mechanism, undetermined: &mut Vec<Undetermined>) -> Vec<Centre> {
+    fn centres(&self, undetermined: &mut Vec<Undetermined>) -> Vec<Centre> {
         let (n, links) = (self.links.len(), &self.links);
         let (origin, size) = (self.origin, self.size);
         let mut found = Vec::new();
@@ -288,11 +287,7 @@ impl Kennedy {
                     Some(_) => {}
                     None => undetermined.push(Undetermined {
                         links: pair,
-                        why: format!(
-                            "fewer than two Kennedy lines reach the centre of links {} and {}",
-                            m.link_id(pair.0),
-                            m.link_id(pair.1)
-                        ),
+                        why: Why::FewLines,
                     }),
                 }
             }

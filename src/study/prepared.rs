@@ -47,8 +47,9 @@ impl std::fmt::Debug for Watcher {
 /// How `solve` writes its result.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Results {
-    /// The fixed-width table.
-    Table,
+    /// The fixed-width table, in a language (default: the scene's
+    /// `want.lang`).
+    Table(Option<Lang>),
     /// The result file of the contract.
     Json,
     /// A row per position: the input values, the wanted points' places
@@ -287,7 +288,7 @@ impl Study {
     /// The result style of the report module for `style`.
     fn style(&self, style: Results) -> report::Style {
         match style {
-            Results::Table => report::Style::Table,
+            Results::Table(lang) => report::Style::Table(lang.unwrap_or_else(|| self.lang())),
             Results::Json => report::Style::Json,
             Results::Csv => report::Style::Csv,
             Results::Jsonl => report::Style::Jsonl,
@@ -308,7 +309,7 @@ impl Study {
         // numbers only (`Analysis::keep_plans`: the same plans to the bit).
         let lean;
         let an = match style {
-            Results::Table | Results::Csv
+            Results::Table(_) | Results::Csv
                 if self.analysis.keep_plans || self.analysis.printed_check =>
             {
                 let mut a = (*self.analysis).clone();

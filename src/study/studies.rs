@@ -334,9 +334,10 @@ impl<'a> Solution<'a> {
 }
 
 impl Centres<'_> {
-    /// As `mechplan centres` prints them.
+    /// As `mechplan centres` prints them: in the scene's `want.lang`.
     pub fn to_table(&self) -> String {
-        tables::centres_table(self.solution.an(), self.solution.all(), self.position)
+        let lang = self.solution.study().lang();
+        tables::centres_table(self.solution.an(), self.solution.all(), self.position, lang)
     }
     /// As `mechplan centres --format json` writes them.
     pub fn to_json(&self) -> serde_json::Value {
@@ -436,9 +437,10 @@ pub(super) fn diagram<'a>(
 }
 
 impl Diagram<'_> {
-    /// The table of the diagrams and their errors (`mechplan diagram`).
+    /// The table of the diagrams and their errors (`mechplan diagram`),
+    /// in the scene's `want.lang`.
     pub fn to_table(&self) -> String {
-        tables::diagrams_table(&self.study.analysis, &self.diagrams)
+        tables::diagrams_table(&self.study.analysis, &self.diagrams, self.study.lang())
     }
     /// The diagrams' sheet (SVG).
     pub fn sheet(&self) -> Sheet {

@@ -24,6 +24,8 @@ use crate::kinematics::solve::{Analysis, Position};
 use crate::model::mechanism::Mechanism;
 use kurbo::Point;
 
+pub use super::worst::{Quantity, Route, Worst};
+
 /// Both routes' agreement at one position and what each cost.
 #[derive(Clone, Debug)]
 pub struct CrossCheck {
@@ -31,7 +33,7 @@ pub struct CrossCheck {
     /// the largest magnitude of its kind at that position.
     pub max_rel_diff: f64,
     /// Which quantity it was ("v of B").
-    pub worst: String,
+    pub worst: Worst,
     /// Wall time of route (a) (positions + contours), seconds.
     pub contour_time: f64,
     /// Wall time of route (b) (Newton + linear solves), seconds.
@@ -154,10 +156,11 @@ impl Analysis {
     ) -> Result<CrossCheck> {
         let m = &self.mech;
         let (mut d, mut worst) = self.compare(s, other);
-        for (route, mo) in [("contour", &s.motion[..]), ("constraint", other)] {
+        for (route, mo) in [(Route::Contour, &s.motion[..]), (Route::Constraint, other)] {
             let (dp, wp) = self.compare_plans(s, plans, mo);
             if dp > d || dp.is_nan() {
-                (d, worst) = (dp, format!("{wp} (plan against the {route} route)"));
+                let plan = Some(route);
+                (d, worst) = (dp, Worst { plan, ..wp });
             }
         }
         if d.is_nan() || d > MAX_REL_DIFF {
@@ -451,7 +454,7 @@ impl Analysis {
     ) -> std::result::Result<f64, String> {
         let order = self.order.unwrap_or(Order::Velocity);
         let units = DATA_PERTURBATION / f64::EPSILON;
-        let mut worst = (0.0f64, String::new());
+        let mut worst = (0.0f64, Worst::default());
         for (an, sign) in changed.iter().zip([1.0, -1.0]) {
             // The input moves with the data, by as many units of its own
             // rounding (exact reductions leave an ulp of the angle).
@@ -500,18 +503,18 @@ impl Analysis {
         s: &Position,
         plans: Option<&Plans>,
         mo: &[Option<Motion>],
-    ) -> (f64, String) {
+    ) -> (f64, Worst) {
         let Some(plans) = plans else {
-            return (0.0, String::new());
+            return (0.0, Worst::default());
         };
         let m = &self.mech;
-        let mut worst = (0.0f64, String::new());
+        let mut worst = (0.0f64, Worst::default());
         for (plan, acc) in [
             (Some(&plans.velocity), false),
             (plans.acceleration.as_ref(), true),
         ] {
             let Some(plan) = plan else { continue };
-            let mut items: Vec<(String, f64, f64)> = Vec::new();
+            let mut items: Vec<(Worst, f64, f64)> = Vec::new();
             for &p in &self.points {
                 let l = self.carrier(p);
                 let at = s.config.point(m, l, p);
@@ -522,7 +525,14 @@ impl Analysis {
                 };
                 if let Some(got) = plan.value_of(p) {
                     items.push((
-                        format!("{} of {}", if acc { "a" } else { "v" }, m.point_name(p)),
+                        Worst::of(
+                            if acc {
+                                Quantity::Acceleration
+                            } else {
+                                Quantity::Velocity
+                            },
+                            m.point_name(p),
+                        ),
                         (got - exact).hypot(),
                         exact.hypot(),
                     ));
@@ -532,7 +542,10 @@ impl Analysis {
                 if let (Some((r, _)), Some(x)) = (rate, x) {
                     let exact = if acc { x.epsilon } else { x.omega };
                     items.push((
-                        format!("{} of link {}", if acc { "ε" } else { "ω" }, m.link_id(l)),
+                        Worst::of(
+                            if acc { Quantity::Epsilon } else { Quantity::Omega },
+                            m.link_id(l),
+                        ),
                         (r - exact).abs() * m.size,
                         exact.abs() * m.size,
                     ));
@@ -549,7 +562,7 @@ impl Analysis {
     }
 
     /// Largest relative difference between route (a) and route (b).
-    fn compare(&self, s: &Position, other: &[Option<Motion>]) -> (f64, String) {
+    fn compare(&self, s: &Position, other: &[Option<Motion>]) -> (f64, Worst) {
         self.compare_with(s, other, &self.mech)
     }
 
@@ -561,31 +574,31 @@ impl Analysis {
         s: &Position,
         other: &[Option<Motion>],
         om: &Mechanism,
-    ) -> (f64, String) {
+    ) -> (f64, Worst) {
         let m = &self.mech;
         // The worst item, named only at the end: a sweep compares
         // millions of numbers and prints at most one name a position.
-        let mut worst = (0.0f64, None::<(&str, Item)>);
-        let mut note = |d: f64, kind: &'static str, what: Item| {
+        let mut worst = (0.0f64, None::<(Quantity, Item)>);
+        let mut note = |d: f64, kind: Quantity, what: Item| {
             if d > worst.0 || d.is_nan() {
                 worst = (d, Some((kind, what)));
             }
         };
-        let name = |w: Option<(&str, Item)>| match w {
-            None => String::from("none"),
-            Some((kind, Item::Point(p))) => format!("{kind} {}", m.point_name(p)),
-            Some((kind, Item::Link(l))) => format!("{kind} link {}", m.link_id(l)),
+        let name = |w: Option<(Quantity, Item)>| match w {
+            None => Worst::default(),
+            Some((kind, Item::Point(p))) => Worst::of(kind, m.point_name(p)),
+            Some((kind, Item::Link(l))) => Worst::of(kind, m.link_id(l)),
         };
         let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
         let pts = || self.points.iter().map(|&p| (p, self.carrier(p)));
         let links = || (0..m.links.len()).filter(|&l| self.link(l));
         for (p, l) in pts() {
             let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
-            note(d, "position of", Item::Point(p));
+            note(d, Quantity::Position, Item::Point(p));
         }
         for l in links() {
             let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
-            note(d, "angle of", Item::Link(l));
+            note(d, Quantity::Angle, Item::Link(l));
         }
         let Some(order) = self.order else {
             return (worst.0, name(worst.1));
@@ -614,23 +627,23 @@ impl Analysis {
         for (p, l) in pts() {
             let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
             let (vb, ab) = a_of(other, l, place_b(p, l));
-            note((va - vb).hypot() / sv, "v of", Item::Point(p));
+            note((va - vb).hypot() / sv, Quantity::Velocity, Item::Point(p));
             if acc {
                 da.push(((aa - ab).hypot() / sa, p));
             }
         }
         for l in links() {
             let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
-            note((ma.omega - mb.omega).abs() * m.size / sv, "ω of", Item::Link(l));
+            note((ma.omega - mb.omega).abs() * m.size / sv, Quantity::Omega, Item::Link(l));
         }
         if acc {
             for (d, p) in da {
-                note(d, "a of", Item::Point(p));
+                note(d, Quantity::Acceleration, Item::Point(p));
             }
             for l in links() {
                 let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
                 let d = (ma.epsilon - mb.epsilon).abs() * m.size / sa;
-                note(d, "ε of", Item::Link(l));
+                note(d, Quantity::Epsilon, Item::Link(l));
             }
         }
         (worst.0, name(worst.1))

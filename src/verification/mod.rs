@@ -1,5 +1,6 @@
 //! Verification of the analysis: the cross-check at every position
-//! ([`crosscheck`]), the extended-precision reference
+//! ([`crosscheck`], naming what differed most by [`worst`]), the
+//! extended-precision reference
 //! ([`reference`](mod@reference)) and the work-precision report built on
 //! it ([`precision`]). Checking a student's hand-drawn plan is grading
 //! (`crate::grading`), above the pipeline.
@@ -7,3 +8,4 @@
 pub mod crosscheck;
 pub mod precision;
 pub mod reference;
+pub mod worst;

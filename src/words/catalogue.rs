@@ -47,6 +47,12 @@ pub struct Catalogue {
     pub lever: LeverPhrases,
     /// The result tables' words.
     pub tables: TablePhrases,
+    /// The lines of `solve`'s terminal table around its tables.
+    pub results: ResultPhrases,
+    /// `mechplan centres`' words.
+    pub centres: CentrePhrases,
+    /// `mechplan diagram`'s words.
+    pub diagrams: DiagramPhrases,
     /// How the language writes numbers and units.
     pub units: UnitPhrases,
     /// The check of a student's plan: its report and the mistakes it names.
@@ -286,6 +292,91 @@ pub struct TablePhrases {
     pub value: String,
     /// "worst intersection angle".
     pub worst: String,
+    /// A link's angle.
+    pub angle: String,
+    /// The terminal's senses of a rate: positive (counter-clockwise),
+    /// negative, zero.
+    pub senses: [String; 3],
+}
+
+/// The lines of `solve`'s terminal table besides its tables. Blanks in
+/// braces are filled by [`fill`].
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ResultPhrases {
+    /// The structure line's word.
+    pub structure: String,
+    /// A slide: `{slider}`, `{guide}`, `{point}`.
+    pub slide: String,
+    /// The Coriolis acceleration's symbol.
+    pub coriolis: String,
+    /// The cross-check of the routes: `{diff}`, `{worst}`, `{contour}`,
+    /// `{constraint}`, `{us}`.
+    pub routes: String,
+    /// The cross-check by residuals: `{diff}`, `{worst}`, `{contour}`,
+    /// `{check}`, `{us}`.
+    pub residuals: String,
+    /// µs.
+    pub microseconds: String,
+    /// What differed most: a point's (`{p}`) place, v, a; a link's (`{id}`)
+    /// angle, ω, ε.
+    pub of_point: [String; 3],
+    pub of_link: [String; 3],
+    /// A plan against a route: `{what}`, `{route}`; the routes (contour,
+    /// constraint) as this phrase names them.
+    pub plan: String,
+    pub route: [String; 2],
+    /// Nothing compared.
+    pub none: String,
+}
+
+/// `mechplan centres`' words. Blanks in braces are filled by [`fill`].
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CentrePhrases {
+    /// The columns' heads: centre, place, found by.
+    pub heads: [String; 3],
+    /// A centre's place: `{x}`, `{y}`, `{unit}`; at infinity: `{x}`, `{y}`.
+    pub at: String,
+    pub infinity: String,
+    /// How a centre was found: at a revolute pair (`{p}`), a prismatic
+    /// pair, by Kennedy's lines through links `{a}` and `{b}`.
+    pub revolute: String,
+    pub prismatic: String,
+    pub kennedy: String,
+    /// A centre not found, and why: `{a}`, `{b}`, `{i}`, `{j}`; `{i}`, `{j}`.
+    pub undetermined: String,
+    pub coincide: String,
+    pub few_lines: String,
+}
+
+/// `mechplan diagram`'s words. Blanks in braces are filled by [`fill`].
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagramPhrases {
+    /// `{what}`, `{of}`, `{n}`, `{start}`.
+    pub title: String,
+    /// What the diagrams are of: a point (`{p}`), a link (`{id}`).
+    pub point: String,
+    pub link: String,
+    /// The arc length of a point's path, a slide, an angle.
+    pub of: [String; 3],
+    /// Where they start: over a slider's stroke (`{x}`, `{from}`, `{to}`,
+    /// `{unit}`), at a crank's angle (`{angle}`).
+    pub stroke: String,
+    pub turn: String,
+    /// The scales' line, and the columns' words.
+    pub scales: String,
+    pub node: String,
+    pub exact: String,
+    pub central: String,
+    pub interval: String,
+    /// The intervals' columns: `{y}` (s′).
+    pub midpoint: String,
+    pub ordinate: String,
+    /// The largest errors: `{v}`, `{a}`, `{s}` (s′, s″, s) and each
+    /// error with where it is.
+    pub errors: String,
 }
 
 /// How a language writes numbers and units: its decimal mark, and the

@@ -5,7 +5,9 @@
 //! plans, [`force_plans`] the steps of the force plans, [`forces`] the
 //! names of forces, [`notation`] the lecture's notation as runs of text
 //! and labels, [`inputs`] a position's inputs in short, [`numbers`] the
-//! language's decimal mark and units' letters.
+//! language's decimal mark and units' letters, [`terminal`] what the
+//! terminal's tables name as data (the cross-check's worst quantity, how
+//! an instant centre was found).
 
 pub mod catalogue;
 pub mod check;
@@ -15,6 +17,7 @@ pub mod forces;
 pub mod inputs;
 pub mod notation;
 pub mod numbers;
+pub mod terminal;
 
 pub use crate::lang::Lang;
 

@@ -31,6 +31,12 @@ impl Configuration {
 /// nano-degree apart must read apart); several inputs each with its link's
 /// id: "φ1 = 30°, φ4 = 120°".
 pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
+    describe_input_in(m, q, "m")
+}
+
+/// [`describe_input`] with a slider's metres written `metre` (a
+/// language's letters).
+pub fn describe_input_in(m: &Mechanism, q: &[f64], metre: &str) -> String {
     let several = m.scene.several_inputs();
     q.iter()
         .zip(m.scene.inputs())
@@ -38,7 +44,7 @@ pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
             let id = if several { m.link_id(spec.link()) } else { "" };
             match spec {
                 InputSpec::Crank { .. } => format!("φ{id} = {}°", q.to_degrees()),
-                InputSpec::Slider { .. } => format!("s{id} = {q} m"),
+                InputSpec::Slider { .. } => format!("s{id} = {q} {metre}"),
             }
         })
         .collect::<Vec<_>>()
