@@ -224,6 +224,14 @@ fn finish(result: Result<u8, Error>) -> ExitCode {
         Ok(status) => return ExitCode::from(status),
         Err(e) => e,
     };
+    // A reader that closed the pipe (`solve | head`) has what it wanted:
+    // the run ends quietly, as a filter does.
+    if let Error::Write { path, source } = &e
+        && path == "standard output"
+        && source.kind() == std::io::ErrorKind::BrokenPipe
+    {
+        return ExitCode::SUCCESS;
+    }
     // The library names its parameters; here they are options.
     if let Some(issues) = e.issues_mut() {
         for i in issues {

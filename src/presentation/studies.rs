@@ -2,7 +2,6 @@
 //! kinematic diagrams, the motion-law invariants (the studies themselves
 //! compute numbers only).
 
-use crate::kinematics::positions::describe_input_in;
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
 use crate::pipeline::Solved;
@@ -30,6 +29,26 @@ fn place_text(p: &Place, l: Lang) -> String {
 
 /// The centres of the chosen positions (`position`: from 1; all if `None`)
 /// as a table in `l`, every number in its decimal mark.
+/// A position's inputs as the solve table writes them: "φ = 40.804°",
+/// "s = 0.050000 m" (several with their links' ids), to the table's
+/// digits, not the shortest decimal of the value (59.99999999999999°).
+fn inputs_text(m: &crate::model::mechanism::Mechanism, q: &[f64], metre: &str) -> String {
+    let several = m.scene.several_inputs();
+    q.iter()
+        .zip(m.scene.inputs())
+        .map(|(&q, spec)| {
+            let id = if several { m.link_id(spec.link()) } else { "" };
+            match spec {
+                crate::model::scene::InputSpec::Crank { .. } => {
+                    format!("φ{id} = {:.3}°", q.to_degrees().rem_euclid(360.0))
+                }
+                crate::model::scene::InputSpec::Slider { .. } => format!("s{id} = {q:.6} {metre}"),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 pub fn centres_table(
     an: &Analysis,
     solved: &[Solved],
@@ -49,7 +68,7 @@ pub fn centres_table(
         out += &format!(
             "{word} {}: {}\n  {centre:<8} {place:<44} {found:<42} sin θ\n",
             k + 1,
-            describe_input_in(m, &s.drives.coords(), &unit("m", l))
+            inputs_text(m, &s.drives.coords(), &unit("m", l))
         );
         for c in &cs.found {
             let (p, sub) = name(m, c);

@@ -154,11 +154,20 @@ pub fn points(an: &Analysis, s: &Solved, l: Lang) -> Table {
         column(Kind::Magnitude, "|a|", Some("m/s²"), l),
         column(Kind::Direction, "∠a", Some("°"), l),
     ];
-    // A vector's magnitude and direction (0° for a zero vector).
-    let polar = |v: kurbo::Vec2| {
+    // A vector's magnitude and direction; a vector at rest beside the
+    // position's largest (a billionth of it: a dead centre's rounding) has
+    // no direction to give.
+    let (v_top, a_top) = an.points.iter().fold((0.0f64, 0.0f64), |(v, a), &p| {
+        s.point(an, p)
+            .rates
+            .map_or((v, a), |(pv, pa)| (v.max(pv.hypot()), a.max(pa.hypot())))
+    });
+    let polar = |v: kurbo::Vec2, top: f64| {
         let r = v.hypot();
-        let dir = if r > 0.0 { v.atan2().to_degrees() } else { 0.0 };
-        [Cell::Number(r), Cell::Number(dir)]
+        match r > 1e-9 * top {
+            true => [Cell::Number(r), Cell::Number(v.atan2().to_degrees())],
+            false => [Cell::Number(0.0), Cell::Plain("—".into())],
+        }
     };
     let rows = an
         .points
@@ -171,8 +180,8 @@ pub fn points(an: &Analysis, s: &Solved, l: Lang) -> Table {
                 Cell::Number(ps.at.y),
             ];
             if let Some((v, a)) = ps.rates {
-                row.extend(polar(v));
-                row.extend(polar(a));
+                row.extend(polar(v, v_top));
+                row.extend(polar(a, a_top));
             }
             row
         })

@@ -86,6 +86,11 @@ pub(crate) fn group_kinds(an: &Analysis) -> String {
 /// terminal has room for (every number; not the measured segments, which
 /// `solve --steps` gives) aligned under their headings, numbers to fixed
 /// decimals, a rate followed by its sense (in `l`).
+/// `x`, or 0 where it prints as zero to `d` decimals: no "-0.000000".
+fn unsigned_zero(x: f64, d: usize) -> f64 {
+    if (x * 10f64.powi(d as i32)).round() == 0.0 { 0.0 } else { x }
+}
+
 fn table_text(table: &Table, l: Lang) -> String {
     let sw = sense_width(l);
     // Width and decimals of the terminal's column of a kind.
@@ -120,10 +125,14 @@ fn table_text(table: &Table, l: Lang) -> String {
         for (n, &(i, w, d)) in columns.iter().enumerate() {
             let sep = if n > 0 { " " } else { "" };
             let _ = match &row[i] {
-                Cell::Notation(s) | Cell::Plain(s) => write!(t, "{sep}{s:<w$}"),
-                Cell::Number(x) => write!(t, "{sep}{x:>w$.d$}"),
+                Cell::Notation(s) | Cell::Plain(s) if table.columns[i].kind == Kind::Name => {
+                    write!(t, "{sep}{s:<w$}")
+                }
+                Cell::Notation(s) | Cell::Plain(s) => write!(t, "{sep}{s:>w$}"),
+                Cell::Number(x) => write!(t, "{sep}{:>w$.d$}", unsigned_zero(*x, d)),
                 Cell::Rate { value, scale } => {
-                    write!(t, "{sep}{value:>w$.d$} {:>sw$}", sense(*value, *scale, l))
+                    let v = unsigned_zero(*value, d);
+                    write!(t, "{sep}{v:>w$.d$} {:>sw$}", sense(*value, *scale, l))
                 }
                 // Not known: nothing, nor anything after it.
                 Cell::Missing => Ok(()),
@@ -206,9 +215,9 @@ fn slides_text(an: &Analysis, s: &Solved, l: Lang) -> String {
                 ("point", m.point_name(pr.point)),
             ],
         );
-        let _ = write!(t, "  {slide}: v_rel = {:.6} {ms}", sl.v);
+        let _ = write!(t, "  {slide}: v_rel = {:.6} {ms}", unsigned_zero(sl.v, 6));
         if order == Order::Acceleration {
-            let _ = write!(t, ", a_rel = {:.6} {ms2}", sl.a);
+            let _ = write!(t, ", a_rel = {:.6} {ms2}", unsigned_zero(sl.a, 6));
             if pr.guide != m.frame() {
                 let coriolis = &r.coriolis;
                 let _ = write!(t, ", |{coriolis}| = {:.6} {ms2}", sl.coriolis.hypot());
