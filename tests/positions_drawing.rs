@@ -149,3 +149,44 @@ fn rigid_links_closed_and_both_extreme_positions_drawn() {
     }
     assert!(rigid_seen >= 2, "{rigid_seen}");
 }
+
+/// The bold position of the positions drawing is the one the course
+/// analyses (the middle of the working stroke), never an extreme position
+/// where a slider-crank's links lie on one line and its slider stands.
+#[test]
+fn the_bold_position_is_not_a_dead_centre() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (name, slider) in [
+        ("offset_slider_crank", "B"),
+        ("compressor_fig2_12", "D"),
+        ("six_link_fig2_10", "D"),
+    ] {
+        let text = std::fs::read_to_string(root.join(format!("fixtures/{name}.json"))).unwrap();
+        let study = mechplan::Study::from_json(&text).unwrap();
+        let solution = study.solve().unwrap();
+        let solved = solution.solved();
+        let bold = mechplan::drawing::chosen::position(study.analysis(), solved);
+        let speed = |k: usize| {
+            solution
+                .position(k + 1)
+                .unwrap()
+                .point(slider)
+                .unwrap()
+                .velocity()
+                .unwrap()
+                .hypot()
+        };
+        let top = (0..solved.len()).map(speed).fold(0.0, f64::max);
+        // Position 1 is the start of the working stroke: the slider stands.
+        assert!(
+            speed(0) < 1e-9 * top,
+            "{name}: position 1 is not a dead centre"
+        );
+        assert!(
+            speed(bold) > 0.3 * top,
+            "{name}: bold position {} at {} of the top speed",
+            bold + 1,
+            speed(bold) / top
+        );
+    }
+}

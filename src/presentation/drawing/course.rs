@@ -16,6 +16,7 @@ use super::canvas::{Canvas, SMALL};
 use super::pack::{Figure, GAP, caption_line, field_of, pack, place, round3, size};
 use super::sheet::{self, Page};
 use super::table::{self, Ruled, number, unit};
+use super::chosen::{chosen, position};
 use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
@@ -27,38 +28,6 @@ use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
-
-/// Which positions' plans the sheet shows (numbers from 1): the velocity
-/// plans of every position (of every k-th beyond 24 positions) unless
-/// `want.plans_at` says; the acceleration plans of `want.plans_at`, by
-/// default the first position (the start of the working stroke) and the
-/// one in the middle of the working stroke.
-pub fn chosen(an: &Analysis, solved: &[Solved]) -> (Vec<usize>, Vec<usize>) {
-    let n = solved.len();
-    let at = &an.mech.scene.want.plans_at;
-    let velocity = at.velocity.clone().unwrap_or_else(|| {
-        let step = if n <= 24 { 1 } else { n.div_ceil(12) };
-        (1..=n).step_by(step).collect()
-    });
-    let acceleration = at.acceleration.clone().unwrap_or_else(|| {
-        let middle = match &an.mech.scene.positions {
-            PositionsSpec::Count { count, output } => {
-                let out = output.unwrap_or_else(|| an.default_output());
-                an.working_stroke(out).ok().map(|(_, stroke)| {
-                    let step = std::f64::consts::TAU / *count as f64;
-                    1 + ((stroke / 2.0) / step).round() as usize
-                })
-            }
-            _ => Some(n / 2 + 1),
-        };
-        let mut v = vec![1];
-        if let Some(k) = middle.filter(|&k| k > 1 && k <= n) {
-            v.push(k);
-        }
-        v
-    });
-    (velocity, acceleration)
-}
 
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
@@ -208,7 +177,7 @@ fn fixed_figures(
             crate::studies::invariants::default_output(an),
             12,
             match size {
-                SheetSize::A1 => 300.0,
+                SheetSize::A1 => 340.0,
                 _ => 120.0,
             },
         )
@@ -561,18 +530,6 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
     Ruled { head, rows }
 }
 
-/// The position the force analysis sheet analyses (from 0): the first
-/// position with an acceleration plan after the first, else the first.
-pub fn position(an: &Analysis, solved: &[Solved]) -> usize {
-    let (_, acc) = chosen(an, solved);
-    acc.iter()
-        .copied()
-        .find(|&k| k > 1)
-        .or(acc.first().copied())
-        .unwrap_or(1)
-        .clamp(1, solved.len().max(1))
-        - 1
-}
 
 /// Whether the second sheet is drawn: the analysed position has force
 /// plans.

@@ -13,7 +13,7 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::course::position;
+use super::chosen::position;
 use super::pack::{self, Figure};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};

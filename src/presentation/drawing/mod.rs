@@ -12,6 +12,7 @@
 
 pub mod canvas;
 mod captions;
+pub mod chosen;
 mod compose;
 pub mod centres;
 pub mod course;

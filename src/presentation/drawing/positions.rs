@@ -42,7 +42,11 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
         return;
     }
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    super::mechanism::draw_over(an, &solved[0], solved, c, mu_l, true);
+    // The bold position: the one the course analyses (the middle of the
+    // working stroke by default), not the first, an extreme position where
+    // a slider-crank's links lie on one line.
+    let bold = super::chosen::position(an, solved);
+    super::mechanism::draw_over(an, &solved[bold], solved, c, mu_l, true);
     let input = m.scene.input.link();
     let tip = crank_tip(m);
     let every = numbering_step(solved.len());
