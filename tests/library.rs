@@ -22,7 +22,7 @@ fn long_angles() -> Vec<f64> {
     (0..100_000).map(|k| 10.0 + 0.0036 * k as f64).collect()
 }
 
-/// Run in a child process under a 60 MB data limit by
+/// Run in a child process under a 100 MB data limit by
 /// `a_hundred_thousand_positions_stream_in_flat_memory`: every position
 /// of the long sweep read through the library's iterator, a few kept and
 /// compared with the same positions solved on their own.
@@ -66,7 +66,7 @@ fn a_hundred_thousand_positions_stream_in_flat_memory() {
     let o = std::process::Command::new("bash")
         .arg("-c")
         .arg(format!(
-            "ulimit -d 60000; exec '{}' --exact stream_the_long_sweep --ignored --nocapture --test-threads 1",
+            "ulimit -d 100000; exec '{}' --exact stream_the_long_sweep --ignored --nocapture --test-threads 1",
             exe.display()
         ))
         .output()
@@ -87,12 +87,12 @@ fn the_whole_sweep_in_memory_does_not_fit_the_limit() {
     let o = std::process::Command::new("bash")
         .arg("-c")
         .arg(format!(
-            "ulimit -d 60000; exec '{}' --exact keep_the_long_sweep --ignored --test-threads 1",
+            "ulimit -d 100000; exec '{}' --exact keep_the_long_sweep --ignored --test-threads 1",
             exe.display()
         ))
         .output()
         .unwrap();
-    assert!(!o.status.success(), "kept 100 000 positions within 60 MB?");
+    assert!(!o.status.success(), "kept 100 000 positions within 100 MB?");
 }
 
 #[test]

@@ -53,6 +53,16 @@ pub enum Which {
     Input(usize),
 }
 
+/// Where a force polygon at a scale left open must fit, mm: beside its
+/// group's free body in a panel of a force sheet, whose polygon box holds
+/// it as built (its μ_F is the one its steps, the result file and the
+/// sheet state). Its longest vector 40–80 mm, the whole within 100 × 90.
+const POLYGON: Field = Field {
+    longest: 80.0,
+    width: 100.0,
+    height: 90.0,
+};
+
 /// [`solve`] with one plan drawn at a given scale `fixed` (a student's
 /// μ_F, to check their plan at it); the others at the standard scale that
 /// fits the default field.
@@ -65,7 +75,7 @@ pub fn solve_at(
 ) -> Result<ForcePlans> {
     let scale_of = |w: Which, pts: &[Vec2]| match fixed {
         Some((f, mu)) if f == w => mu,
-        _ => Field::default().scale(pts.iter().copied()),
+        _ => POLYGON.scale(pts.iter().copied()),
     };
     let m = &an.mech;
     let st = &an.structure;

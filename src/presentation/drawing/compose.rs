@@ -470,7 +470,10 @@ fn force_figure(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Option<(SheetSi
     let mut last = None;
     for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
         let o = DrawOptions { sheet: size, ..*opt };
-        let f = forces::figure(an, s, &o, field_size(&o, 0.0))?;
+        // None: no force plans, or none of the grids holds the polygons.
+        let Some(f) = forces::figure(an, s, &o, field_size(&o, 0.0)) else {
+            continue;
+        };
         if f.smallest >= forces::LEAST_BODY {
             return Some((size, f));
         }

@@ -83,25 +83,24 @@ pub fn scale_label(mu: f64, lang: Lang) -> Label {
     ))
 }
 
+/// The least width and height of a free body's box, mm.
+const MIN_BODY: f64 = 30.0;
+
 /// Panels in a grid on a field, each of the same size: its caption and
-/// scale on top, its free body on the left, at most a share ([`SHARES`])
-/// of the panel wide, its polygon on the right in the rest. Each free
-/// body is drawn at its own μ_l, the largest standard scale that fills its
-/// box, as the course draws each group apart: one μ_l for all would shrink
-/// the input link to a blob beside a large group.
+/// scale on top, its free body on the left, its polygon on the right in a
+/// box that holds the largest of the polygons (each drawn at its plan's
+/// own μ_F, the one its steps and the result file state). Each free body
+/// is drawn at its own μ_l, the largest standard scale that fills the rest
+/// of the panel, as the course draws each group apart: one μ_l for all
+/// would shrink the input link to a blob beside a large group.
 #[derive(Clone, Copy)]
 struct Grid {
     cols: usize,
     rows: usize,
     field: (f64, f64),
-    /// The share of a panel's width its free body may take.
-    share: f64,
+    /// The polygons' box, w × h (mm).
+    polygon: (f64, f64),
 }
-
-/// The shares of a panel's width its free body may take.
-const SHARES: [f64; 3] = [0.5, 0.6, 0.7];
-/// The least width and height of a polygon's box, mm.
-const MIN_POLYGON: f64 = 30.0;
 
 impl Grid {
     fn col_width(&self) -> f64 {
@@ -120,11 +119,11 @@ impl Grid {
         let (col, row) = (i % self.cols, i / self.cols);
         let (cw, rh) = (self.col_width(), self.row_height());
         let h = rh - Grid::head();
-        let bw = self.share * cw;
+        let pw = self.polygon.0;
         (
             Point::new(col as f64 * (cw + GAP), -(row as f64) * (rh + GAP)),
-            (bw, h),
-            (cw - bw - GAP, h - SCALE_LINE),
+            (cw - pw - GAP, h),
+            (pw, h - SCALE_LINE),
         )
     }
 }
@@ -163,13 +162,26 @@ pub fn figure(
         .enumerate()
         .map(|(i, p)| free_body::extent(&scene(i), p))
         .collect();
-    let (grid, bodies) = best_grid(plans.len(), field, &real, body)?;
+    let name = |f| names::force(&an.mech, loads, f, opt.lang);
+    let polygons: Vec<Canvas> = plans
+        .iter()
+        .enumerate()
+        .map(|(i, plan)| {
+            let mut c = Canvas::default();
+            force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
+            c
+        })
+        .collect();
+    let polygon = polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
+        let b = c.bounds();
+        (a.0.max(b.width()), a.1.max(b.height()))
+    });
+    let (grid, bodies) = best_grid(plans.len(), (field, polygon), &real, body)?;
     let smallest = bodies
         .iter()
         .zip(&real)
         .map(|((mu, _), r)| r.width().max(r.height()) / mu)
         .fold(f64::INFINITY, f64::min);
-    let name = |f| names::force(&an.mech, loads, f, opt.lang);
     let mut out = Canvas::default();
     let (mut mu_l, mut mu_f) = (Vec::new(), Vec::new());
     for (i, (plan, (mu, body))) in plans.iter().zip(&bodies).enumerate() {
@@ -177,18 +189,16 @@ pub fn figure(
             Label::new(caption(an, plan, opt.lang), ""),
             super::captions::scale_label("l", *mu, "m", opt.lang),
         ];
-        if let Some(f) = draw_panel(
+        draw_panel(
             &mut out,
             (plan, &tags[i]),
-            &name,
-            body,
+            (body, &polygons[i]),
             grid.panel(i),
             caption,
             opt.lang,
-        ) {
-            mu_l.push(*mu);
-            mu_f.push(f);
-        }
+        );
+        mu_l.push(*mu);
+        mu_f.push(plan.mu);
     }
     Some(Figure {
         canvas: out,
@@ -200,30 +210,27 @@ pub fn figure(
 
 /// The grid of `count` panels on `field` whose smallest free body is
 /// drawn largest (each at its own μ_l from its real extent in `real`;
-/// `body` draws body i at a μ_l): one to three columns, the free bodies
-/// taking half to 70 % of a panel; with each body's μ_l and drawing. At
-/// the same smallest body, the grid whose smallest polygon box is largest.
+/// `body` draws body i at a μ_l), its polygons' box `polygon` (mm) beside
+/// each: one to three columns; with each body's μ_l and drawing; `None`
+/// where no grid holds the polygons.
 fn best_grid(
     count: usize,
-    field: (f64, f64),
+    (field, polygon): ((f64, f64), (f64, f64)),
     real: &[Rect],
     body: impl Fn(usize, f64) -> Canvas,
 ) -> Option<(Grid, Vec<(f64, Canvas)>)> {
-    // (smallest body, smallest polygon box, the grid, the bodies drawn)
-    type Candidate = (f64, f64, Grid, Vec<(f64, Canvas)>);
+    // (smallest body, the grid, the bodies drawn)
+    type Candidate = (f64, Grid, Vec<(f64, Canvas)>);
     let mut best: Option<Candidate> = None;
-    let grids = (1..=3usize)
-        .filter(|&c| c <= count)
-        .flat_map(|cols| SHARES.map(|share| (cols, share)));
-    for (cols, share) in grids {
+    for cols in (1..=3usize).filter(|&c| c <= count) {
         let grid = Grid {
             cols,
             rows: count.div_ceil(cols),
             field,
-            share,
+            polygon,
         };
-        let (_, (bw, bh), (pw, ph)) = grid.panel(0);
-        if bw <= GAP || bh <= GAP || pw < MIN_POLYGON || ph < MIN_POLYGON {
+        let (_, (bw, bh), (_, ph)) = grid.panel(0);
+        if bw < MIN_BODY || bh < MIN_BODY || ph < polygon.1 {
             continue;
         }
         let drawn: Option<Vec<(f64, Canvas)>> = real
@@ -241,48 +248,26 @@ fn best_grid(
             .zip(real)
             .map(|((mu, _), r)| r.width().max(r.height()) / mu)
             .fold(f64::INFINITY, f64::min);
-        let room = pw.min(ph);
-        let better = best.as_ref().is_none_or(|b| {
-            smallest > b.0 * (1.0 + 1e-9) || (smallest >= b.0 * (1.0 - 1e-9) && room > b.1)
-        });
-        if better {
-            best = Some((smallest, room, grid, drawn));
+        if best.as_ref().is_none_or(|b| smallest > b.0) {
+            best = Some((smallest, grid, drawn));
         }
     }
-    best.map(|(_, _, g, d)| (g, d))
+    best.map(|(_, g, d)| (g, d))
 }
 
 /// Draw one panel into `out`: the `caption` (the group, its μ_l), the free
-/// body `body` in its box and the polygon of `plan` (ids tagged `tag`) at
-/// the largest standard μ_F that fills its box, with μ_F under it; returns
-/// that μ_F (`None`, and no panel, when no scale fits).
+/// body `body` in its box and the polygon of `plan` drawn at its own μ_F
+/// (`poly`, ids tagged `tag`) in its box, with μ_F under it.
 fn draw_panel(
     out: &mut Canvas,
     (plan, tag): (&ForcePlan, &str),
-    name: &dyn Fn(Force) -> Option<Label>,
-    body: &Canvas,
+    (body, poly): (&Canvas, &Canvas),
     (corner, (bw, bh), (pw, ph)): (Point, (f64, f64), (f64, f64)),
     caption: [Label; 2],
     lang: Lang,
-) -> Option<f64> {
+) {
     let top = corner.y - Grid::head();
-    // The polygon at the largest standard μ_F that fills its box.
-    let (lo, hi) = plan
-        .points
-        .iter()
-        .fold((Vec2::ZERO, Vec2::ZERO), |(lo, hi), p| {
-            (
-                Vec2::new(lo.x.min(p.x), lo.y.min(p.y)),
-                Vec2::new(hi.x.max(p.x), hi.y.max(p.y)),
-            )
-        });
-    let lower = lower_scale((hi.x - lo.x) * plan.mu, (hi.y - lo.y) * plan.mu, (pw, ph));
-    let polygon = |mu: f64| {
-        let mut c = Canvas::default();
-        force_polygon::draw(plan, name, &mut c, plan.mu / mu, tag);
-        Some(c)
-    };
-    let (mu, poly) = fill(lower, (pw, ph), polygon, |c| c.bounds())?;
+    let mu = plan.mu;
     let line = CAPTION * super::canvas::lettering();
     for (j, label) in caption.into_iter().enumerate() {
         out.text(
@@ -299,8 +284,8 @@ fn draw_panel(
     let d = centre_in(body, Rect::new(corner.x, top - bh, corner.x + bw, top));
     out.append(body, d.x, d.y);
     let px = corner.x + bw + GAP;
-    let d = centre_in(&poly, Rect::new(px, top - ph, px + pw, top));
-    out.append(&poly, d.x, d.y);
+    let d = centre_in(poly, Rect::new(px, top - ph, px + pw, top));
+    out.append(poly, d.x, d.y);
     // μ_F under the polygon, with an id the checks read it by.
     let scale = scale_label(mu, lang);
     let b = poly.bounds();
@@ -311,5 +296,4 @@ fn draw_panel(
         id: Some(format!("{tag}-mu")),
         class: "scale",
     });
-    Some(mu)
 }
