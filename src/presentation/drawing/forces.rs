@@ -10,12 +10,12 @@ use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
 use crate::kinematics::solve::Analysis;
-use crate::kinetostatics::force_plan::{Force, ForcePlan};
+use crate::kinetostatics::force_plan::ForcePlan;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::catalogue::fill as phrase;
 use crate::words::forces as names;
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Point, Rect};
 
 /// The gap between panels and between a free body and its polygon, mm.
 const GAP: f64 = 8.0;
