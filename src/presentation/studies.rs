@@ -2,6 +2,7 @@
 //! kinematic diagrams, the motion-law invariants (the studies themselves
 //! compute numbers only).
 
+use crate::kinematics::positions::describe_input_with;
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
 use crate::pipeline::Solved;
@@ -30,23 +31,15 @@ fn place_text(p: &Place, l: Lang) -> String {
 /// The centres of the chosen positions (`position`: from 1; all if `None`)
 /// as a table in `l`, every number in its decimal mark.
 /// A position's inputs as the solve table writes them: "φ = 40.804°",
-/// "s = 0.050000 m" (several with their links' ids), to the table's
-/// digits, not the shortest decimal of the value (59.99999999999999°).
+/// "s = 0.050000 m", to the table's digits, not the shortest decimal of
+/// the value (59.99999999999999°).
 fn inputs_text(m: &crate::model::mechanism::Mechanism, q: &[f64], metre: &str) -> String {
-    let several = m.scene.several_inputs();
-    q.iter()
-        .zip(m.scene.inputs())
-        .map(|(&q, spec)| {
-            let id = if several { m.link_id(spec.link()) } else { "" };
-            match spec {
-                crate::model::scene::InputSpec::Crank { .. } => {
-                    format!("φ{id} = {:.3}°", q.to_degrees().rem_euclid(360.0))
-                }
-                crate::model::scene::InputSpec::Slider { .. } => format!("s{id} = {q:.6} {metre}"),
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
+    describe_input_with(
+        m,
+        q,
+        &|q| format!("{:.3}°", q.to_degrees().rem_euclid(360.0)),
+        &|q| format!("{q:.6} {metre}"),
+    )
 }
 
 pub fn centres_table(

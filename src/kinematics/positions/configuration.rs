@@ -31,20 +31,25 @@ impl Configuration {
 /// nano-degree apart must read apart); several inputs each with its link's
 /// id: "φ1 = 30°, φ4 = 120°".
 pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
-    describe_input_in(m, q, "m")
+    describe_input_with(m, q, &|q| format!("{}°", q.to_degrees()), &|q| format!("{q} m"))
 }
 
-/// [`describe_input`] with a slider's metres written `metre` (a
-/// language's letters).
-pub fn describe_input_in(m: &Mechanism, q: &[f64], metre: &str) -> String {
+/// The input values `q` as [`describe_input`] names them, each angle (rad)
+/// written by `angle` ("40.804°"), each slide (m) by `length` ("0.05 m").
+pub fn describe_input_with(
+    m: &Mechanism,
+    q: &[f64],
+    angle: &dyn Fn(f64) -> String,
+    length: &dyn Fn(f64) -> String,
+) -> String {
     let several = m.scene.several_inputs();
     q.iter()
         .zip(m.scene.inputs())
         .map(|(&q, spec)| {
             let id = if several { m.link_id(spec.link()) } else { "" };
             match spec {
-                InputSpec::Crank { .. } => format!("φ{id} = {}°", q.to_degrees()),
-                InputSpec::Slider { .. } => format!("s{id} = {q} {metre}"),
+                InputSpec::Crank { .. } => format!("φ{id} = {}", angle(q)),
+                InputSpec::Slider { .. } => format!("s{id} = {}", length(q)),
             }
         })
         .collect::<Vec<_>>()
