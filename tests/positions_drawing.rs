@@ -190,3 +190,102 @@ fn the_bold_position_is_not_a_dead_centre() {
         );
     }
 }
+
+/// The text of every `<text … id="ID" …>TEXT</text>` whose id starts with `prefix`.
+fn labelled(svg: &str, prefix: &str) -> Vec<(String, String)> {
+    svg.lines()
+        .filter_map(|l| {
+            let i = l.find(&format!("id=\"{prefix}"))? + 4;
+            let id = &l[i..i + l[i..].find('"')?];
+            let t = &l[l.find('>')? + 1..l.rfind("</text>")?];
+            Some((id.to_string(), t.to_string()))
+        })
+        .collect()
+}
+
+/// The lecture numbers a `count` sweep 0 … 11 from the extreme position
+/// (Figs 2.1–2.3), and the diagrams' axis 0 … 12 beside it: the crank's
+/// marks, the slider's marks, every sheet's title, the course sheet's plan
+/// captions and the `solve --steps` text all write the same number for
+/// the same position, while file names keep counting from 1. A sweep of
+/// listed angles has no extreme to start from and is numbered from 1.
+#[test]
+fn positions_are_numbered_as_the_lecture_numbers_them() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("fixtures/six_link_fig2_10.json");
+    let dir = std::env::temp_dir().join(format!("mechplan-numbers-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = Command::new(exe)
+        .arg("draw")
+        .arg(&scene)
+        .args(["--course", "-o"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let positions = std::fs::read_to_string(dir.join("positions.svg")).unwrap();
+    let crank: Vec<(String, String)> = labelled(&positions, "pos-");
+    assert_eq!(crank.len(), 12, "{crank:?}");
+    for (id, text) in &crank {
+        let k: usize = id["pos-".len()..].parse().unwrap();
+        assert_eq!(text, &(k - 1).to_string(), "crank mark {id}");
+    }
+    let slider = labelled(&positions, "slider-");
+    assert!(!slider.is_empty(), "the slider's places are numbered");
+    for (id, text) in &slider {
+        let k: usize = id.rsplit('-').next().unwrap().parse().unwrap();
+        assert_eq!(text, &(k - 1).to_string(), "slider mark {id}");
+    }
+    for k in [1, 4, 12] {
+        let svg = std::fs::read_to_string(dir.join(format!("velocity_{k}.svg"))).unwrap();
+        assert!(
+            svg.contains(&format!("position {}, φ", k - 1)),
+            "velocity_{k}.svg is titled position {}",
+            k - 1
+        );
+    }
+    let course = std::fs::read_to_string(dir.join("course.svg")).unwrap();
+    for k in 0..12 {
+        assert!(
+            course.contains(&format!(">position {k}<")),
+            "course caption position {k}"
+        );
+    }
+    assert!(
+        !course.contains(">position 12<"),
+        "no position 12 on the course sheet"
+    );
+    let steps = Command::new(exe)
+        .arg("solve")
+        .arg(&scene)
+        .arg("--steps")
+        .output()
+        .unwrap();
+    let steps = String::from_utf8_lossy(&steps.stdout);
+    assert!(
+        steps.contains("Plan of velocities, position 0, φ1"),
+        "{}",
+        &steps[..300.min(steps.len())]
+    );
+    assert!(!steps.contains("position 12,"));
+    let _ = std::fs::remove_dir_all(&dir);
+
+    // Listed angles: from 1.
+    let listed = root.join("fixtures/prp_tangent_drive.json");
+    let steps = Command::new(exe)
+        .arg("solve")
+        .arg(&listed)
+        .arg("--steps")
+        .output()
+        .unwrap();
+    let steps = String::from_utf8_lossy(&steps.stdout);
+    assert!(
+        steps.contains("position 1,") && !steps.contains("position 0,"),
+        "{steps}"
+    );
+}

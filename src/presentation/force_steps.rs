@@ -19,7 +19,7 @@ pub fn force_steps(an: &Analysis, s: &Solved, k: usize, input: &str, lang: Lang)
     let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
     let mut t = String::new();
     let w = force_plans::words(lang);
-    let _ = writeln!(t, "\n{}, {} {}, {input}", w.title, w.position, k + 1);
+    let _ = writeln!(t, "\n{}, {} {}, {input}", w.title, w.position, super::position_number(an, k));
     for plan in &fp.plans {
         force_plans::plan_words(an, loads, plan, lang, &mut t);
     }

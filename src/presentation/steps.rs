@@ -44,7 +44,7 @@ pub(super) fn steps_position(an: &Analysis, i: usize, s: &Solved, lang: Lang) ->
     ] {
         let Some(plan) = plan else { continue };
         let position = &c.sheets.position;
-        let _ = writeln!(t, "\n{title}, {position} {}, {input}", i + 1);
+        let _ = writeln!(t, "\n{title}, {position} {}, {input}", super::position_number(an, i));
         for k in 0..plan.steps.len() {
             let _ = writeln!(t, "{:>3}. {}", k + 1, sentence(plan, k, lang));
         }

@@ -186,7 +186,7 @@ pub(super) fn table_position(an: &Analysis, i: usize, s: &Solved, l: Lang) -> St
         .collect::<Vec<_>>()
         .join("; ");
     let position = &crate::words::catalogue(l).sheets.position;
-    let _ = writeln!(t, "{position} {}: {input}", i + 1);
+    let _ = writeln!(t, "{position} {}: {input}", super::position_number(an, i));
     t += &table_text(&tables::points(an, s, l), l);
     t += &table_text(&tables::links(an, s, l), l);
     t += &slides_text(an, s, l);

@@ -5,6 +5,7 @@ use super::canvas::Label;
 use super::table::{self, number};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
+use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::catalogue::SheetPhrases;
@@ -13,7 +14,7 @@ use crate::words::catalogue::SheetPhrases;
 pub(crate) fn words(lang: Lang) -> &'static SheetPhrases {
     &crate::words::catalogue(lang).sheets
 }
-/// "position 1, φ1 = 30°" (the input link's own number), localised.
+/// "position 0, φ1 = 30°" (the input link's own number), localised.
 pub(crate) fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> String {
     let w = words(lang);
     let m = &an.mech;
@@ -36,20 +37,20 @@ pub(crate) fn position_text(an: &Analysis, s: &Solved, k: usize, lang: Lang) -> 
                 }
             })
             .collect();
-        return format!("{} {}, {}", w.position, k + 1, inputs.join(", "));
+        return format!("{} {}, {}", w.position, position_number(an, k), inputs.join(", "));
     }
     match m.scene.input {
         InputSpec::Crank { link, .. } => format!(
             "{} {}, φ{} = {}°",
             w.position,
-            k + 1,
+            position_number(an, k),
             m.link_id(link),
             number(s.q.to_degrees().rem_euclid(360.0), lang)
         ),
         InputSpec::Slider { .. } => format!(
             "{} {}, s = {} {}",
             w.position,
-            k + 1,
+            position_number(an, k),
             number(s.q, lang),
             table::unit("m", lang)
         ),

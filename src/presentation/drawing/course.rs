@@ -433,7 +433,7 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
                 g.append(c, ox, oy);
                 g.rich(
                     Point::new(x0 + w_ / 2.0, y0 - caption_line() + 1.5),
-                    &format!("{} {k}", w.position),
+                    &format!("{} {}", w.position, crate::presentation::position_number(an, k - 1)),
                     SMALL,
                     "caption",
                     "middle",
@@ -460,7 +460,12 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
             Some(Figure {
                 id: format!("acceleration-{k}"),
                 caption: vec![
-                    format!("{}, {} {k}", w.accelerations, w.position),
+                    format!(
+                        "{}, {} {}",
+                        w.accelerations,
+                        w.position,
+                        crate::presentation::position_number(an, k - 1)
+                    ),
                     scale_text("a", mu, "m/s²", lang),
                 ],
                 canvas: c,
@@ -494,7 +499,6 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
             PlanKind::Acceleration => p.acceleration.as_ref(),
         }
     };
-    let _ = an;
     // Every quantity of any of the positions, in the order first met.
     let mut names: Vec<(String, &'static str, bool)> = Vec::new();
     let mut values: Vec<HashMap<String, f64>> = Vec::new();
@@ -512,7 +516,11 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
     }
     let head_q = &super::words(lang).quantity_unit;
     let mut head = vec![head_q.to_string()];
-    head.extend(at.iter().map(|k| k.to_string()));
+    // Headed by the numbers the sheet writes (the lecture's, from 0).
+    head.extend(
+        at.iter()
+            .map(|&k| crate::presentation::position_number(an, k - 1).to_string()),
+    );
     let rows = names
         .iter()
         .map(|(q, u, rate)| {

@@ -87,7 +87,8 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
         if k > 0 {
             bodies(c, &s.config, Line::Thin);
         }
-        // Number the positions, from 1, at the input's moving point.
+        // Number the positions as the sheet does (the lecture's 0 … 11 for
+        // a `count` sweep), at the input's moving point.
         if let Some(p) = tip
             && k % every == 0
         {
@@ -95,7 +96,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
             c.circle(at, 0.4, "black", 0.0);
             c.label_later(
                 at,
-                Label::new(format!("{}", k + 1), ""),
+                Label::new(crate::presentation::position_number(an, k).to_string(), ""),
                 SMALL,
                 Some(format!("pos-{}", k + 1)),
             );
@@ -121,7 +122,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
             if moves && k % every == 0 {
                 c.label_later(
                     at,
-                    Label::new(format!("{}", k + 1), ""),
+                    Label::new(crate::presentation::position_number(an, k).to_string(), ""),
                     SMALL,
                     Some(format!("slider-{j}-pos-{}", k + 1)),
                 );
