@@ -60,7 +60,7 @@ pub fn centres_table(
         let cs = find(an, &s.config);
         out += &format!(
             "{word} {}: {}\n  {centre:<8} {place:<44} {found:<42} sin θ\n",
-            k + 1,
+            super::position_number(an, k),
             inputs_text(m, &s.drives.coords(), &unit("m", l))
         );
         for c in &cs.found {
