@@ -336,10 +336,12 @@ fn only_wanted_drawings_and_marks() {
     );
 }
 
-/// Plan labels that cannot be misread: the Coriolis point is k₃ unless a
-/// scene point K makes it read as K on link 3 (then κ₃); Assur's special
-/// point is σ₃, never s₃ (a centre of mass); a repeated point's prime
-/// follows its letter (n′₃), not the subscript. The keys do not change.
+/// Plan labels that cannot be misread: the Coriolis point is always the
+/// lecture's k₃, and a scene point whose letter the construction uses for
+/// its own points (p, n, k, r) takes a prime (the ram's K is k′, a pin K on
+/// link 3 is k′₃ beside k₃); Assur's special point is σ₃, never s₃ (a
+/// centre of mass); a repeated point's prime follows its letter (n′₃), not
+/// the subscript. The keys do not change.
 #[test]
 fn plan_point_labels_read_unambiguously() {
     let label = |plans: &mechplan::construction::Plan, key: &str| {
@@ -354,12 +356,15 @@ fn plan_point_labels_read_unambiguously() {
         let (_, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
         s[0].plans.as_ref().unwrap().acceleration.clone().unwrap()
     };
-    // The shaper's point K is on the ram, link 5: its Coriolis point of
-    // link 3 is the lecture's k₃.
+    // The shaper's point K is on the ram, link 5: k′ on the plan, beside
+    // the Coriolis point of link 3, the lecture's k₃.
     let shaper = fixture("shaper_fig2_11");
-    assert_eq!(label(&acc(shaper.clone()), "k_3"), ("k".into(), "3".into()));
+    let plan = acc(shaper.clone());
+    assert_eq!(label(&plan, "k_3"), ("k".into(), "3".into()));
+    assert_eq!(label(&plan, "k"), ("k′".into(), "".into()));
+    assert_eq!(label(&plan, "m"), ("m".into(), "".into()));
     // With the slider's pin on the rocking guide 3 called K, K of link 3
-    // is k₃ on the plan: the Coriolis point becomes κ₃.
+    // is k′₃ on the plan and the Coriolis point stays k₃.
     let renamed = shaper
         .to_string()
         .replace("\"K\"", "\"Q\"")
@@ -367,7 +372,33 @@ fn plan_point_labels_read_unambiguously() {
         .replace("\"B\"", "\"K\"")
         .replace("\"A-B\"", "\"A-K\"");
     let renamed: Value = serde_json::from_str(&renamed).unwrap();
-    assert_eq!(label(&acc(renamed), "k_3"), ("κ".into(), "3".into()));
+    let plan = acc(renamed);
+    assert_eq!(label(&plan, "k_3"), ("k".into(), "3".into()));
+    assert_eq!(label(&plan, "k"), ("k′".into(), "".into()));
+    // No two plan points of one plan share a label.
+    for f in [
+        "shaper_fig2_11",
+        "boom_cylinder",
+        "prp_tangent_drive",
+        "rrp_rotating_guide_002",
+    ] {
+        let (_, s) = solve(mechplan::Scene::from_json(&fixture(f).to_string()).unwrap());
+        let plans = s[0].plans.as_ref().unwrap();
+        for p in std::iter::once(&plans.velocity).chain(plans.acceleration.as_ref()) {
+            let mut seen = std::collections::HashSet::new();
+            for q in &p.points {
+                assert!(
+                    seen.insert(q.label.clone()),
+                    "{f}: label {:?} twice",
+                    q.label
+                );
+                assert!(
+                    q.key.starts_with("p_") || !(q.label.0 == "p" && q.label.1.is_empty()),
+                    "{f}: a scene point written p beside the pole"
+                );
+            }
+        }
+    }
     let class3 = acc(fixture("class3_004"));
     assert_eq!(label(&class3, "s_3"), ("σ".into(), "3".into()));
     assert_eq!(label(&class3, "n_3'"), ("n′".into(), "3".into()));

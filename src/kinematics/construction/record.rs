@@ -240,13 +240,28 @@ fn direction_known(s: &str) -> String {
     s.chars().flat_map(|c| [c, '\u{0332}']).collect()
 }
 
+/// The letters the construction gives its own points on the plans: the
+/// pole p (p_v, p_a), the normals' ends n₂, the Coriolis points k₃, the
+/// relative points r₃.
+const CONSTRUCTION_LETTERS: [&str; 4] = ["p", "n", "k", "r"];
+
+/// A scene point's letter and subscript on the plans: its name in lower
+/// case, split where the digits begin (S2: s₂). A letter the construction
+/// uses for its own points takes a prime (the piston P is p′, never a
+/// second p beside the pole p_v; the ram's K is k′ beside the Coriolis
+/// point k₃), so that no scene point reads as a construction point. The
+/// key (the result file's) stays the plain lower-case name.
 fn lower_label(name: &str) -> (String, String) {
     let lower = name.to_lowercase();
     let split = lower
         .find(|c: char| c.is_ascii_digit() || c == '_')
         .unwrap_or(lower.len());
     let (a, b) = lower.split_at(split);
-    (a.to_string(), b.trim_start_matches('_').to_string())
+    let mut letter = a.to_string();
+    if CONSTRUCTION_LETTERS.contains(&a) {
+        letter.push('′');
+    }
+    (letter, b.trim_start_matches('_').to_string())
 }
 
 /// A plan point's key and label by its id, before a repeated key is told
@@ -276,7 +291,7 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
         PointId::Normal { link } => by("n", link),
         PointId::Coriolis { link } => {
             let (key, (_, sub)) = by("k", link);
-            (key, (coriolis_letter(m, link).to_string(), sub))
+            (key, ("k".to_string(), sub))
         }
         PointId::Relative { link } => by("r", link),
         PointId::Special { base } => {
@@ -290,18 +305,6 @@ pub(super) fn key_label(id: PointId, kind: PlanKind, m: &Mechanism) -> (String, 
 /// 3): not s, which reads as a centre of mass (S3, s₃), nor any point's
 /// letter. Its name in the steps is the capital, Σ3.
 const SPECIAL: &str = "σ";
-
-/// The letter of the Coriolis point of link `link` on the plans: k (k₃
-/// for link 3), as the lecture writes it, unless a point K of the scene
-/// slides on that link or carries it (the point of a prismatic pair of
-/// link 3), whose point of link 3 is k₃ too; then κ (kappa), which no
-/// point's name gives. (κ reads close to k, so only where k₃ is taken.)
-fn coriolis_letter(m: &Mechanism, link: usize) -> &'static str {
-    let taken = m.prismatics.iter().any(|pr| {
-        (pr.guide == link || pr.slider == link) && lower_label(m.point_name(pr.point)).0 == "k"
-    });
-    if taken { "κ" } else { "k" }
-}
 
 /// The words of a plan: puts the record `acts` of its construction into
 /// the plan's names and steps.
