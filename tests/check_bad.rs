@@ -204,7 +204,7 @@ fn a_letter_not_in_the_plan_is_refused_listing_the_plans() {
             "points": { "q": [1, 2] }, "segments": { "p_v q": 3 }, "angles": { "q b": 3 },
             "values": { "v_Q": 1, "omega9": 2 } }),
     );
-    let letters = "(this plan has: p_v, b, b3, d, s3, d0, d5, k, m)";
+    let letters = "(this plan has: p_v, b, b3, d, s3, d0, d5, k′, m)";
     for (pointer, message) in [
         ("/points/q", format!("unknown plan point \"q\" {letters}")),
         (

@@ -240,6 +240,62 @@ fn a_course_sheet_in_ukrainian() {
     }
 }
 
+/// `sheet.title` names the project's first drawing, the course sheet, in
+/// the sheet's language where it gives several; the force sheet (sheet 2
+/// of 2) and the single sheets with a block name themselves.
+#[test]
+fn the_sheet_title_names_the_course_sheet_only() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text =
+        std::fs::read_to_string(root.join("fixtures/dynamics/six_link_fig2_10.json")).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["sheet"] = serde_json::json!({
+        "title": { "en": "Six-link kinematics", "uk": "Кінематика механізму" }
+    });
+    let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
+    for (lang, mine, other) in [
+        (
+            mechplan::words::construction::Lang::Uk,
+            "Кінематика механізму",
+            "Six-link kinematics",
+        ),
+        (
+            mechplan::words::construction::Lang::En,
+            "Six-link kinematics",
+            "Кінематика механізму",
+        ),
+    ] {
+        let opt = DrawOptions {
+            lang,
+            course: true,
+            title_block: true,
+            ..DrawOptions::default()
+        };
+        let sh = sheets(&an, &s, &opt);
+        let course = sh.iter().find(|s| s.name == "course").unwrap();
+        assert!(
+            course.svg.contains(mine),
+            "{lang:?}: the course sheet is named {mine}"
+        );
+        assert!(
+            !course.svg.contains(other),
+            "{lang:?}: {other} on the course sheet"
+        );
+        let rest: Vec<_> = sh.iter().filter(|s| s.name != "course").collect();
+        assert!(
+            rest.iter().any(|s| s.name == "course_forces"),
+            "a force sheet"
+        );
+        for s in rest {
+            assert!(
+                !s.svg.contains(mine),
+                "{lang:?}: {} carries the course sheet's name",
+                s.name
+            );
+        }
+    }
+}
+
 /// A slide along the frame's guide is named by the guide's point under
 /// the slider (v_DD0, a^r_DD0) at every position, even where the two
 /// pistons of the compressor meet and the construction draws D's guide

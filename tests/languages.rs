@@ -270,3 +270,48 @@ fn machine_readable_outputs_keep_their_points() {
         );
     }
 }
+
+/// A title given in several languages (`"title": { "en": …, "uk": … }`)
+/// is printed in the output's language, the English one (else the first
+/// of uk, ru) where the language has none and in the result file; a
+/// language code the scene does not know is refused by its pointer.
+#[test]
+fn titles_in_the_outputs_language() {
+    let path = scene("six_link_fig2_10", "uk", "x");
+    let mut v: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    v["title"] =
+        json!({ "en": "Six-link lever mechanism", "uk": "Шестиланковий важільний механізм" });
+    let path = path.with_file_name("six_link_titles.json");
+    std::fs::write(&path, v.to_string()).unwrap();
+    let p = path.to_str().unwrap();
+    let uk = run(&["solve", p]);
+    assert!(uk.starts_with("Шестиланковий важільний механізм\n"), "{uk}");
+    let steps = run(&["solve", p, "--steps"]);
+    assert!(
+        steps.starts_with("Шестиланковий важільний механізм\n"),
+        "{steps}"
+    );
+    let en = run(&["solve", p, "--lang", "en"]);
+    assert!(en.starts_with("Six-link lever mechanism\n"), "{en}");
+    // No Russian text: the English one.
+    let ru = run(&["solve", p, "--lang", "ru"]);
+    assert!(ru.starts_with("Six-link lever mechanism\n"), "{ru}");
+    let json: Value = serde_json::from_str(&run(&["solve", p, "--format", "json"])).unwrap();
+    assert_eq!(json["title"], "Six-link lever mechanism");
+
+    for (title, pointer) in [
+        (json!({ "de": "Sechsgliedriges Getriebe" }), "/title/de"),
+        (json!({}), "/title"),
+        (json!({ "uk": 5 }), "/title/uk"),
+    ] {
+        v["title"] = title;
+        std::fs::write(&path, v.to_string()).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["solve", p])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(pointer), "{err}");
+    }
+}

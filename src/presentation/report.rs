@@ -446,7 +446,7 @@ pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
 pub fn text_head(an: &Analysis, style: Style) -> String {
     match style {
         Style::Table(lang) => table_head(an, lang),
-        Style::Steps(_) => steps_head(an),
+        Style::Steps(lang) => steps_head(an, lang),
         Style::Csv => csv_head(an),
         Style::Jsonl => String::new(),
         Style::Json => {

@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 
 /// The constructions as numbered lecture-style steps (`solve --steps`).
 pub fn to_steps(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
-    let mut t = steps_head(an);
+    let mut t = steps_head(an, lang);
     for (i, s) in solved.iter().enumerate() {
         t += &steps_position(an, i, s, lang);
     }
@@ -19,11 +19,12 @@ pub fn to_steps(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
 }
 
 /// The steps' title line.
-pub(super) fn steps_head(an: &Analysis) -> String {
+pub(super) fn steps_head(an: &Analysis, lang: Lang) -> String {
     let m = &an.mech;
     let mut t = String::new();
-    if !m.scene.title.is_empty() {
-        let _ = writeln!(t, "{}", m.scene.title);
+    let title = m.scene.title_in(lang);
+    if !title.is_empty() {
+        let _ = writeln!(t, "{title}");
     }
     t
 }

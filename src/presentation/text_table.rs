@@ -55,8 +55,9 @@ pub fn to_table(an: &Analysis, solved: &[Solved], l: Lang) -> String {
 pub(super) fn table_head(an: &Analysis, l: Lang) -> String {
     let m = &an.mech;
     let mut t = String::new();
-    if !m.scene.title.is_empty() {
-        let _ = writeln!(t, "{}", m.scene.title);
+    let title = m.scene.title_in(l);
+    if !title.is_empty() {
+        let _ = writeln!(t, "{title}");
     }
     let _ = writeln!(
         t,

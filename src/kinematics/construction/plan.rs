@@ -61,6 +61,12 @@ pub struct PlanPoint {
     pub err: f64,
 }
 
+/// The letters the construction gives its own points on the plans: the
+/// pole p (p_v, p_a), the normals' ends n₂, the Coriolis points k₃, the
+/// relative points r₃. A scene point with one of these letters is primed
+/// on the plans (p′, k′), so that it never reads as a construction point.
+pub(crate) const CONSTRUCTION_LETTERS: [&str; 4] = ["p", "n", "k", "r"];
+
 impl PlanPoint {
     /// The point's name on the mechanism's figure (`B`, `S2`, `B3` for B
     /// as a point of link 3), from its label; empty for construction
@@ -70,8 +76,29 @@ impl PlanPoint {
         if self.id.is_construction() {
             String::new()
         } else {
-            format!("{}{}", self.label.0, self.label.1).to_uppercase()
+            self.scene_name().to_uppercase()
         }
+    }
+    /// The lower-case name of the mechanism's point it stands for ("k" for
+    /// the ram's K, whose plan label is k′; "b3"), for the quantities'
+    /// names (a^n_KC), which are the scene's; else as [`Self::name`].
+    pub fn scene_name(&self) -> String {
+        if self.id.is_construction() || self.id == PointId::Pole {
+            return self.name();
+        }
+        format!("{}{}", self.scene_letter(), self.label.1)
+    }
+    /// The letter of [`Self::scene_name`]: the label's, without the prime
+    /// that keeps it apart from a construction letter.
+    pub fn scene_letter(&self) -> &str {
+        let letter = self.label.0.as_str();
+        if self.id.is_construction() {
+            return letter;
+        }
+        letter
+            .strip_suffix('′')
+            .filter(|l| CONSTRUCTION_LETTERS.contains(l))
+            .unwrap_or(letter)
     }
     /// "b", "s2", "n2" …: letters and subscript run together, for text.
     pub fn name(&self) -> String {

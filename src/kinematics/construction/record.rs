@@ -240,11 +240,6 @@ fn direction_known(s: &str) -> String {
     s.chars().flat_map(|c| [c, '\u{0332}']).collect()
 }
 
-/// The letters the construction gives its own points on the plans: the
-/// pole p (p_v, p_a), the normals' ends n₂, the Coriolis points k₃, the
-/// relative points r₃.
-const CONSTRUCTION_LETTERS: [&str; 4] = ["p", "n", "k", "r"];
-
 /// A scene point's letter and subscript on the plans: its name in lower
 /// case, split where the digits begin (S2: s₂). A letter the construction
 /// uses for its own points takes a prime (the piston P is p′, never a
@@ -258,7 +253,7 @@ fn lower_label(name: &str) -> (String, String) {
         .unwrap_or(lower.len());
     let (a, b) = lower.split_at(split);
     let mut letter = a.to_string();
-    if CONSTRUCTION_LETTERS.contains(&a) {
+    if super::plan::CONSTRUCTION_LETTERS.contains(&a) {
         letter.push('′');
     }
     (letter, b.trim_start_matches('_').to_string())

@@ -2,6 +2,7 @@
 //! section uses (objects, allowed keys, strings, references to points and
 //! links, coordinates).
 
+use crate::lang::Lang;
 use super::{LinkSpec, NamedPoint, PositionsSpec, Scene};
 use crate::error::Issue;
 use crate::json::escape;
@@ -59,6 +60,35 @@ impl Reader {
             self.err(at, format!("expected a string, found {}", kind(v)));
         }
         s
+    }
+
+    /// A text in one language (a string) or in several (`{ "en": "…",
+    /// "uk": "…", "ru": "…" }`, at least one): the default (English, else
+    /// the first given of uk, ru) and every language's own.
+    pub(super) fn localised(&mut self, v: &Value, at: &str) -> Option<(String, Vec<(Lang, String)>)> {
+        let Some(o) = v.as_object() else {
+            return self.string(v, at).map(|s| (s.to_owned(), Vec::new()));
+        };
+        let mut by = Vec::new();
+        for (k, t) in o {
+            let at = format!("{at}/{k}");
+            let Some(l) = Lang::parse(k) else {
+                self.err(at, "expected a language code: en, uk or ru");
+                continue;
+            };
+            if let Some(t) = self.string(t, &at) {
+                by.push((l, t.to_owned()));
+            }
+        }
+        if o.is_empty() {
+            self.err(at, "expected a string or an object of texts by language (en, uk, ru), found an empty object");
+            return None;
+        }
+        let default = Lang::ALL
+            .iter()
+            .find_map(|l| by.iter().find(|(m, _)| m == l))
+            .map(|(_, t)| t.clone())?;
+        Some((default, by))
     }
 
     /// A link id may be written as a string ("2") or an integer (2).
@@ -136,9 +166,9 @@ impl Reader {
                 format!("unsupported format version {v}; this mechplan reads version 1"),
             ),
         }
-        let title = match top.get("title") {
-            Some(t) => self.string(t, "/title").unwrap_or("").to_owned(),
-            None => String::new(),
+        let (title, titles) = match top.get("title") {
+            Some(t) => self.localised(t, "/title").unwrap_or_default(),
+            None => Default::default(),
         };
         for k in ["source", "notes"] {
             if let Some(t) = top.get(k) {
@@ -189,6 +219,7 @@ impl Reader {
         }
         Some(Scene {
             title,
+            titles,
             sheet,
             points,
             links,

@@ -25,15 +25,27 @@ impl Reader {
         for k in keys {
             let Some(x) = o.get(k) else { continue };
             let at = format!("/sheet/{k}");
-            let Some(t) = self.string(x, &at) else {
-                continue;
+            let (t, by) = if k == "title" {
+                match self.localised(x, &at) {
+                    Some(x) => x,
+                    None => continue,
+                }
+            } else {
+                match self.string(x, &at) {
+                    Some(t) => (t.to_owned(), Vec::new()),
+                    None => continue,
+                }
             };
             // A cell of the title block holds one line.
-            if t.chars().count() > 120 || t.contains('\n') {
+            let long = |t: &str| t.chars().count() > 120 || t.contains('\n');
+            if long(&t) || by.iter().any(|(_, t)| long(t)) {
                 self.err(at, "expected one line of at most 120 characters");
                 continue;
             }
-            let t = Some(t.to_owned());
+            if k == "title" {
+                s.titles = by;
+            }
+            let t = Some(t);
             match k {
                 "designation" => s.designation = t,
                 "title" => s.title = t,

@@ -128,6 +128,34 @@ pub enum PositionsSpec {
     Count { count: usize, output: Option<usize> },
 }
 
+/// The text for `lang` among `by` (a title given in several languages),
+/// else `default`.
+pub fn in_lang<'a>(
+    default: &'a str,
+    by: &'a [(crate::lang::Lang, String)],
+    lang: crate::lang::Lang,
+) -> &'a str {
+    by.iter()
+        .find(|(l, _)| *l == lang)
+        .map_or(default, |(_, t)| t.as_str())
+}
+
+impl Scene {
+    /// The scene's title in `lang` (its own text where the scene gives
+    /// one, else its default).
+    pub fn title_in(&self, lang: crate::lang::Lang) -> &str {
+        in_lang(&self.title, &self.titles, lang)
+    }
+}
+
+impl SheetInfo {
+    /// The drawing's name in `lang`, where the scene gives one.
+    pub fn title_in(&self, lang: crate::lang::Lang) -> Option<&str> {
+        let d = self.title.as_deref()?;
+        Some(in_lang(d, &self.titles, lang))
+    }
+}
+
 /// What the main title block says (the scene's `sheet` object); every
 /// field optional, an absent one left blank on the sheet.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -136,6 +164,8 @@ pub struct SheetInfo {
     pub designation: Option<String>,
     /// The name of the drawing (field 1); else the scene's title.
     pub title: Option<String>,
+    /// The name in each language it is given in (see [`Scene::titles`]).
+    pub titles: Vec<(crate::lang::Lang, String)>,
     /// Who drew it ("Разраб.").
     pub author: Option<String>,
     /// Who checked it ("Пров.").
@@ -197,7 +227,11 @@ impl Default for Want {
 
 #[derive(Clone, Debug)]
 pub struct Scene {
+    /// The scene's title (its English text where `title` gives several).
     pub title: String,
+    /// The title in each language it is given in (`"title": { "en": …,
+    /// "uk": … }`); empty for a plain string. [`Scene::title_in`] reads it.
+    pub titles: Vec<(crate::lang::Lang, String)>,
     /// What the title block says (`sheet`).
     pub sheet: SheetInfo,
     pub points: Vec<NamedPoint>,

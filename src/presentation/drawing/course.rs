@@ -136,7 +136,7 @@ fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<S
     } else {
         1
     };
-    page.title_block(&super::title_block(an, opt, &title, (1, sheets)));
+    page.title_block(&super::main_title_block(an, opt, &title, (1, sheets)));
     let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
     Ok(Sheet {
         name: "course".into(),

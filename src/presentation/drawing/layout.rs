@@ -184,6 +184,20 @@ pub(crate) fn title_block(
     TitleBlock::new(&an.mech.scene.sheet, title, opt.lang, number)
 }
 
+/// The course sheet's title block: the scene's `sheet.title` (in the
+/// sheet's language where it gives several) names this drawing, the
+/// project's first; every other sheet's block names that sheet.
+pub(crate) fn main_title_block(
+    an: &Analysis,
+    opt: &DrawOptions,
+    title: &str,
+    number: (usize, usize),
+) -> TitleBlock {
+    let info = &an.mech.scene.sheet;
+    let name = info.title_in(opt.lang).unwrap_or(title);
+    TitleBlock::new(info, name, opt.lang, number)
+}
+
 /// A single sheet from a canvas (the diagrams, the Frenet families, the
 /// `check --svg` overlay): on the first of `opt.sheet` and the larger
 /// sizes whose field holds it; a drawing larger than A1's field is drawn

@@ -401,13 +401,13 @@ pub struct TitleBlock {
 }
 
 impl TitleBlock {
-    /// From the scene's `sheet` object; the drawing's name where it gives
-    /// none.
+    /// From the scene's `sheet` object, named `name` (the sheet's own
+    /// name; the course sheet passes the scene's `sheet.title`).
     pub fn new(info: &SheetInfo, name: &str, lang: Lang, sheet: (usize, usize)) -> TitleBlock {
         TitleBlock {
             lang,
             designation: info.designation.clone().unwrap_or_default(),
-            title: info.title.clone().unwrap_or_else(|| name.to_string()),
+            title: name.to_string(),
             author: info.author.clone(),
             checker: info.checker.clone(),
             organisation: info.organisation.clone().unwrap_or_default(),

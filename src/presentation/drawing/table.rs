@@ -215,7 +215,7 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
                     let quantity = match plan.kind {
                         // The slide of B3 along the guide, relative to B.
                         PlanKind::Velocity => {
-                            format!("v_{}{guide}", plan.points[b].name().to_uppercase())
+                            format!("v_{}{guide}", plan.points[b].scene_name().to_uppercase())
                         }
                         // From the Coriolis vector's end: a^r.
                         PlanKind::Acceleration => plan
@@ -228,7 +228,7 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
                                 _ => None,
                             })
                             .unwrap_or_else(|| {
-                                format!("a^r_{}{guide}", plan.points[b].name().to_uppercase())
+                                format!("a^r_{}{guide}", plan.points[b].scene_name().to_uppercase())
                             }),
                     };
                     push(
@@ -298,7 +298,7 @@ fn laid_off(plan: &Plan, what: &str, from: usize, to: usize) -> String {
     {
         return symbol(what);
     }
-    let up = |i: usize| plan.points[i].name().to_uppercase();
+    let up = |i: usize| plan.points[i].scene_name().to_uppercase();
     match plan.kind {
         PlanKind::Velocity if from == 0 => format!("v_{}", up(to)),
         PlanKind::Velocity => format!("v_{}{}", up(to), up(from)),
@@ -339,9 +339,9 @@ fn laid_off(plan: &Plan, what: &str, from: usize, to: usize) -> String {
 fn under(plan: &Plan, a: usize, b: usize) -> String {
     match (plan.points[a].id, plan.points[b].id) {
         (PointId::Coincident { point: p, .. }, PointId::Named(q)) if p != q => {
-            format!("{}{}", plan.points[b].label.0, plan.points[a].label.1)
+            format!("{}{}", plan.points[b].scene_letter(), plan.points[a].label.1)
         }
-        _ => plan.points[a].name(),
+        _ => plan.points[a].scene_name(),
     }
 }
 
