@@ -18,7 +18,9 @@
 //! its result tables are those of [`crate::presentation::tables`], as the
 //! terminal's.
 
-use super::canvas::{Canvas, Prim, fmt, xml};
+use super::canvas::{Canvas, Prim, xml};
+pub use super::html_parts::rich;
+use super::html_parts::{Fit, label_html, prefixed};
 use super::{mechanism, plan, scale_label, words};
 use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
@@ -35,78 +37,6 @@ use std::fmt::Write as _;
 /// Words of the page around the drawings (the language's catalogue).
 fn ui(l: Lang) -> &'static HandoutPhrases {
     &crate::words::catalogue(l).handout
-}
-
-/// A sentence (or a quantity's name) as HTML, in the lecture's notation:
-/// `v_B3C` → v<sub>B3C</sub>, `a^n_BA` → a<sup>n</sup><sub>BA</sub>, the
-/// pole `p_vb` → p<sub>v</sub>b, digits after a letter as a subscript
-/// (`ω1`, `b3`, `O2`) as the drawings write them. Only `_` and `^` are
-/// dropped (with a combining underline right after them); the rest of the
-/// text is kept, escaped.
-pub fn rich(s: &str) -> String {
-    use crate::words::notation::{Pos, runs};
-    runs(s)
-        .into_iter()
-        .map(|(p, t)| match p {
-            Pos::Base => xml(&t),
-            Pos::Sub => format!("<sub>{}</sub>", xml(&t)),
-            Pos::Sup => format!("<sup>{}</sup>", xml(&t)),
-        })
-        .collect()
-}
-
-/// A label (letters, subscript, more names, tail) as HTML.
-fn label_html(l: &super::canvas::Label) -> String {
-    let sub = |s: &str| {
-        if s.is_empty() {
-            String::new()
-        } else {
-            format!("<sub>{}</sub>", xml(s))
-        }
-    };
-    let mut h = format!("{}{}", xml(&l.base), sub(&l.sub));
-    for (b, s) in &l.more {
-        let _ = write!(h, ", {}{}", xml(b), sub(s));
-    }
-    h + &xml(&l.tail)
-}
-
-/// Where a canvas goes in its own SVG: page = (ox + x, oy − y).
-struct Fit {
-    ox: f64,
-    oy: f64,
-    w: f64,
-    h: f64,
-}
-
-impl Fit {
-    fn new(b: kurbo::Rect, pad: f64) -> Fit {
-        Fit {
-            ox: pad - b.x0,
-            oy: pad + b.y1,
-            w: b.width() + 2.0 * pad,
-            h: b.height() + 2.0 * pad,
-        }
-    }
-    fn x(&self, p: Point) -> String {
-        fmt(self.ox + p.x)
-    }
-    fn y(&self, p: Point) -> String {
-        fmt(self.oy - p.y)
-    }
-    fn open(&self, class: &str, aria: &str) -> String {
-        format!(
-            r#"<svg xmlns="http://www.w3.org/2000/svg" class="{class}" viewBox="0 0 {} {}" font-family="DejaVu Sans, sans-serif" role="img" aria-label="{}">"#,
-            fmt(self.w),
-            fmt(self.h),
-            xml(aria)
-        ) + "\n"
-    }
-}
-
-/// Ids made unique in the page (every sheet has its `pt-b`).
-fn prefixed(svg: String, prefix: &str) -> String {
-    svg.replace(" id=\"", &format!(" id=\"{prefix}"))
 }
 
 /// The plan of the mechanism at every position.
