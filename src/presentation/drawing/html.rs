@@ -21,6 +21,7 @@
 use super::canvas::{Canvas, Prim, xml};
 pub use super::html_parts::rich;
 use super::html_parts::{Fit, label_html, prefixed};
+use super::handout_forces;
 use super::{mechanism, plan, scale_label, words};
 use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
@@ -415,8 +416,13 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -
     let mut h = String::new();
     let _ = write!(
         h,
-        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n<style>\n{CSS}</style>\n<script>\n{ERRORS_JS}</script>\n</head>\n",
-        xml(&title)
+        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n<style>\n{CSS}{}</style>\n<script>\n{ERRORS_JS}</script>\n</head>\n",
+        xml(&title),
+        if handout_forces::any(solved) {
+            handout_forces::CSS
+        } else {
+            ""
+        }
     );
     let _ = writeln!(
         h,
@@ -488,6 +494,7 @@ fn position_section(
     h.push_str("</div>\n");
     let _ = writeln!(h, "<h3>{}</h3>", w.results);
     h.push_str(&tables(an, s, lang));
+    handout_forces::section(h, an, (k, s), lang);
     h.push_str("</section>\n");
 }
 
