@@ -32,7 +32,6 @@ use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
 use crate::words::catalogue::HandoutPhrases;
 use crate::words::construction::{Lang, sentence};
-use kurbo::Point;
 use std::fmt::Write as _;
 
 /// Words of the page around the drawings (the language's catalogue).
