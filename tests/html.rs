@@ -241,3 +241,155 @@ fn notation_as_on_the_board() {
         "v\u{333}<sub>B\u{333}</sub>"
     );
 }
+
+/// A number as the handout prints it (a decimal comma in uk/ru, the
+/// minus sign U+2212) as a value.
+fn printed(t: &str) -> f64 {
+    t.replace('\u{2212}', "-")
+        .replace(',', ".")
+        .parse()
+        .unwrap()
+}
+
+/// The number right after `mark` in `s` (digits, a decimal mark, a sign).
+fn after<'a>(s: &'a str, mark: &str) -> &'a str {
+    let i = s.find(mark).unwrap_or_else(|| panic!("no {mark:?} in {s}")) + mark.len();
+    let rest = &s[i..];
+    let n = rest
+        .char_indices()
+        .find(|&(j, c)| {
+            !(c.is_ascii_digit()
+                || (j > 0 && (c == '.' || c == ','))
+                || c == '-'
+                || c == '\u{2212}')
+        })
+        .map_or(rest.len(), |x| x.0);
+    rest[..n].trim_end_matches(['.', ','])
+}
+
+/// A number written with a decimal point: a digit, '.', a digit.
+fn decimal_points(text: &str) -> Vec<String> {
+    let c: Vec<char> = text.chars().collect();
+    (1..c.len().saturating_sub(1))
+        .filter(|&i| c[i] == '.' && c[i - 1].is_ascii_digit() && c[i + 1].is_ascii_digit())
+        .map(|i| {
+            c[i.saturating_sub(30)..(i + 30).min(c.len())]
+                .iter()
+                .collect()
+        })
+        .collect()
+}
+
+/// A dynamics scene's handout carries every position's force analysis:
+/// one figure per Assur group and one for the input link, each with its
+/// free body and its polygon, the μ_F it prints the force plan's own, its
+/// steps the sentences of `solve --steps`; Zhukovsky's lever with the
+/// balancing value the analysis found, to the printed digits; in uk no
+/// number with a decimal point.
+#[test]
+fn a_dynamics_handout_has_the_force_analysis() {
+    use mechplan::format::num;
+    use mechplan::words::force_plans::{plan_head, plan_sentences};
+    use mechplan::words::numbers::decimals;
+    for (name, lang) in [
+        ("dynamics/six_link_fig2_10", Lang::Uk),
+        ("dynamics/shaper_fig2_11", Lang::Uk),
+        ("dynamics/six_link_fig2_10", Lang::En),
+    ] {
+        let scene = mechplan::Scene::from_json(&fixture(name).to_string()).unwrap();
+        let (an, solved) = solve(scene);
+        let h = handout(&an, &solved, lang);
+        for (k, s) in solved.iter().enumerate() {
+            let pos = k + 1;
+            let at = format!("{name} {lang:?} position {pos}");
+            let d = s.dynamics.as_ref().unwrap();
+            let fp = d.force_plans.as_ref().unwrap();
+            let section = between(&h, &format!("id=\"pos-{pos}\""), "</section>").unwrap();
+            let forces = between(section, &format!("id=\"pos-{pos}-forces\""), "</section>")
+                .unwrap_or_else(|| panic!("{at}: no force analysis"));
+            // One polygon per group, and the input link's.
+            assert_eq!(fp.plans.len(), an.structure.groups.len() + 1, "{at}");
+            assert_eq!(
+                forces.matches("<figure class=\"fig force\"").count(),
+                fp.plans.len(),
+                "{at}"
+            );
+            for (i, plan) in fp.plans.iter().enumerate() {
+                let fig = between(forces, &format!("id=\"pos-{pos}-f{}\"", i + 1), "</figure>")
+                    .unwrap_or_else(|| panic!("{at}: no figure of plan {}", i + 1));
+                // The free body and the polygon, its vectors drawn.
+                assert_eq!(fig.matches("<svg ").count(), 2, "{at} plan {}", i + 1);
+                assert!(fig.contains("-vec-"), "{at} plan {}: no vectors", i + 1);
+                // μ_F in the caption and in the plan's heading: the plan's.
+                let caption = between(fig, "<figcaption>", "</figcaption>").unwrap();
+                let mark = "μ<sub>F</sub> = ";
+                let mu = printed(after(caption, mark));
+                assert_eq!(mu, plan.mu, "{at} plan {}: μ_F", i + 1);
+                let head = between(fig, "<p class=\"force-head\">", "</p>").unwrap();
+                assert_eq!(printed(after(head, mark)), plan.mu, "{at}");
+                assert_eq!(
+                    letters(&text(head)),
+                    letters(&decimals(&plan_head(&an, plan, lang), lang))
+                );
+                // The steps, in the words of `solve --steps`.
+                let sentences = plan_sentences(&an, &d.loads, plan, lang);
+                let items: Vec<&str> = fig.split("<li>").skip(1).collect();
+                assert_eq!(items.len(), sentences.len(), "{at} plan {}", i + 1);
+                for (li, want) in items.iter().zip(&sentences) {
+                    let li = &li[..li.find("</li>").unwrap()];
+                    assert_eq!(letters(&text(li)), letters(&decimals(want, lang)), "{at}");
+                }
+            }
+            // The lever and its balancing value, the analysis's.
+            let lever = between(forces, &format!("id=\"pos-{pos}-lever-1\""), "</figure>")
+                .unwrap_or_else(|| panic!("{at}: no lever"));
+            assert!(lever.contains("<svg "), "{at}: the lever is not drawn");
+            let last = between(lever, "<li class=\"balancing\">", "</li>").unwrap();
+            let last = text(last);
+            let value = after(&last, &last[..last.rfind("= ").unwrap() + 2]);
+            let want = d.balancing[0].value();
+            let shown = decimals(&num(want).replace('-', "\u{2212}"), lang);
+            assert_eq!(value, shown, "{at}: the balancing value");
+            assert_eq!(num(printed(value)), num(d.lever[0]), "{at}: the lever's");
+            if lang == Lang::Uk {
+                let bad = decimal_points(&text(forces));
+                assert!(bad.is_empty(), "{at}: {bad:#?}");
+            }
+        }
+    }
+}
+
+/// A handout without `dynamics` is as it was before the force analysis
+/// came (its SHA-256 in tests/golden/handout; UPDATE_GOLDEN=1 writes it):
+/// no force section, no force style.
+#[test]
+fn a_handout_without_dynamics_is_unchanged() {
+    use sha2::{Digest, Sha256};
+    // As `mechplan draw --html` writes it.
+    let dir = std::env::temp_dir().join(format!("mechplan-handout-{}", std::process::id()));
+    let scene = format!(
+        "{}/fixtures/six_link_fig2_10.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["draw", &scene, "--html", "-o", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let h = std::fs::read_to_string(dir.join("handout.html")).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(!h.contains("class=\"forces\""));
+    assert!(!h.contains(".forces "));
+    let got = format!("{:x}\n", Sha256::digest(h.as_bytes()));
+    let path = format!(
+        "{}/tests/golden/handout/six_link_fig2_10_en.sha256",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::create_dir_all(std::path::Path::new(&path).parent().unwrap()).unwrap();
+        std::fs::write(&path, &got).unwrap();
+        return;
+    }
+    let want = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(got, want, "the handout of six_link_fig2_10 changed");
+}

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The step-by-step handout (`mechplan draw --html`) in a real browser.
 #
-# For two fixtures: build the handout, open it in headless Chromium and
+# For three fixtures (the six-link with its dynamics among them: its
+# force analysis beside the plans): build the handout, open it in
+# headless Chromium and
 #  1. load it plainly and at #step=5: no console output at all (the page
 #     logs nothing, so any CONSOLE line is an error or a warning), the
 #     first (fifth) step shown;
@@ -58,7 +60,7 @@ shots=(
   "shaper_fig2_11 pos=3&step=27 acceleration"
 )
 
-for name in six_link_fig2_10 shaper_fig2_11; do
+for name in six_link_fig2_10 shaper_fig2_11 dynamics/six_link_fig2_10; do
   ./target/release/mechplan draw "fixtures/$name.json" -o "$out/$name" --html > /dev/null
   page="file://$out/$name/handout.html"
   size=$(wc -c < "$out/$name/handout.html")

@@ -157,3 +157,89 @@ fn the_course_sheet_gives_its_scales_to_the_plans_it_shows() {
         check(&s.to_string(), lang, name);
     }
 }
+
+/// Every number after `mark` in `text`, in order.
+fn all_after(text: &str, mark: &str) -> Vec<f64> {
+    text.match_indices(mark)
+        .map(|(i, _)| {
+            let n: String = text[i + mark.len()..]
+                .chars()
+                .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == ',')
+                .collect();
+            number(&n)
+        })
+        .collect()
+}
+
+/// The parts of `text` from each `start` to the next `end`.
+fn parts<'a>(text: &'a str, start: &str, end: &str) -> Vec<&'a str> {
+    text.match_indices(start)
+        .map(|(i, _)| &text[i..i + text[i..].find(end).unwrap()])
+        .collect()
+}
+
+/// One μ_F per force plan: the result file's (`force_plans[].mu`), the
+/// one `solve --steps` states in the plan's heading and the handout's (in
+/// its figure's caption and its heading there); the lever's μ_F as the
+/// steps and the handout state it.
+fn check_forces(scene: &str, lang: &str, name: &str) {
+    let root =
+        std::env::temp_dir().join(format!("mechplan-one-mu-f-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&root).unwrap();
+    let dir = Dir(root);
+    let path = dir.path().join("scene.json");
+    std::fs::write(&path, scene).unwrap();
+    let p = path.to_str().unwrap();
+    let json: Value = serde_json::from_str(&mechplan(&["solve", p, "--format", "json"])).unwrap();
+    let mut want = Vec::new();
+    for pos in json["positions"].as_array().unwrap() {
+        for plan in pos["dynamics"]["force_plans"].as_array().unwrap() {
+            want.push(plan["mu"].as_f64().unwrap());
+        }
+    }
+    assert!(!want.is_empty());
+    // The steps: a plan's heading states μ_F alone, the lever's with μ_v.
+    let steps = mechplan(&["solve", p, "--steps", "--lang", lang]);
+    let (levers, plans): (Vec<&str>, Vec<&str>) = steps
+        .lines()
+        .filter(|l| l.contains("μ_F = "))
+        .partition(|l| l.contains("μ_v = "));
+    let of = |lines: &[&str]| -> Vec<f64> {
+        lines.iter().flat_map(|l| all_after(l, "μ_F = ")).collect()
+    };
+    assert_eq!(of(&plans), want, "steps");
+    let lever_mu = of(&levers);
+    // The handout.
+    let html_dir = dir.path().join("html");
+    mechplan(&["draw", p, "-o", html_dir.to_str().unwrap(), "--html"]);
+    let html = std::fs::read_to_string(html_dir.join("handout.html")).unwrap();
+    let mark = "μ<sub>F</sub> = ";
+    let figures = parts(&html, "<figure class=\"fig force\"", "</figure>");
+    let captions: Vec<f64> = figures
+        .iter()
+        .flat_map(|f| all_after(&f[..f.find("</figcaption>").unwrap()], mark))
+        .collect();
+    assert_eq!(captions, want, "handout, the figures' captions");
+    let heads: Vec<f64> = figures
+        .iter()
+        .flat_map(|f| all_after(parts(f, "<p class=\"force-head\">", "</p>")[0], mark))
+        .collect();
+    assert_eq!(heads, want, "handout, the plans' headings");
+    let drawn: Vec<f64> = parts(&html, "<figure class=\"fig lever\"", "</figcaption>")
+        .iter()
+        .flat_map(|f| all_after(f, mark))
+        .collect();
+    assert_eq!(drawn, lever_mu, "handout, the levers");
+}
+
+#[test]
+fn a_force_plan_has_one_scale_in_every_output() {
+    check_forces(
+        &fixture("dynamics/six_link_fig2_10").to_string(),
+        "en",
+        "six",
+    );
+    let mut s = fixture("dynamics/shaper_fig2_11");
+    s["want"]["lang"] = "uk".into();
+    check_forces(&s.to_string(), "uk", "shaper");
+}

@@ -27,59 +27,15 @@ pub fn force_steps(an: &Analysis, s: &Solved, k: usize, input: &str, lang: Lang)
     t
 }
 
-/// A decimal comma between digits (the sheets' Ukrainian and Russian
-/// numbers) as the steps' decimal point, so that one text writes one way.
-fn points(s: &str) -> String {
-    let c: Vec<char> = s.chars().collect();
-    (0..c.len())
-        .map(|i| {
-            let digit = |j: Option<&char>| j.is_some_and(|c| c.is_ascii_digit());
-            if c[i] == ',' && i > 0 && digit(c.get(i - 1)) && digit(c.get(i + 1)) {
-                '.'
-            } else {
-                c[i]
-            }
-        })
-        .collect()
-}
-
 /// Zhukovsky's lever of every input: each force's arm on the turned plan
 /// and its moment about the pole, then ΣM_p = 0 solved for the balancing
 /// force and moment (the lever sheet's table and caption, in words).
 fn lever_words(an: &Analysis, s: &Solved, loads: &[Load], lang: Lang, t: &mut String) {
-    use crate::kinematics::construction::Naming;
-    use crate::presentation::drawing::lever as sheet;
-    let Ok(levers) = crate::kinetostatics::lever::levers(an, s, loads, Naming::Full) else {
-        return;
-    };
-    let w = &crate::words::catalogue(lang).lever;
-    let units = &crate::words::catalogue(lang).force_plans;
-    let (head, arm) = (&w.title, &w.arm);
-    for l in &levers {
-        let mu_f = sheet::force_scale(l);
-        let caption = sheet::caption(an, l, mu_f, lang);
-        let _ = writeln!(t, "  {head}: {}.", points(&caption[0]));
-        let table = sheet::table(an, l, lang);
-        let mut n = 0;
-        for row in &table.rows {
-            n += 1;
-            let row: Vec<String> = row.iter().map(|c| points(c)).collect();
-            let _ = writeln!(
-                t,
-                "{n:>5}. {} = {} {}, {arm} h = {} {}: {}·h = {} {}.",
-                row[0],
-                row[1],
-                units.newton,
-                row[2],
-                units.mm,
-                row[0].split(' ').next().unwrap_or(""),
-                row[3],
-                units.newton_millimetre,
-            );
-        }
-        for line in &caption[1..] {
-            n += 1;
-            let _ = writeln!(t, "{n:>5}. {}.", points(line));
+    let head = &crate::words::catalogue(lang).lever.title;
+    for (_, caption, items) in crate::presentation::drawing::lever::lines(an, s, loads, lang) {
+        let _ = writeln!(t, "  {head}: {caption}.");
+        for (n, item) in items.iter().enumerate() {
+            let _ = writeln!(t, "{:>5}. {item}.", n + 1);
         }
     }
 }

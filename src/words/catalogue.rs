@@ -230,6 +230,13 @@ pub struct HandoutPhrases {
     pub results: String,
     pub steps_title: String,
     pub structure: String,
+    /// A dynamics scene's force analysis: its heading, the free body's
+    /// and the polygon's words, the note that a free body's arrows are
+    /// not to a scale of force.
+    pub forces: String,
+    pub free_body: String,
+    pub polygon: String,
+    pub not_to_scale: String,
 }
 
 /// The title block's words (ГОСТ 2.104; ДСТУ ГОСТ 2.104 in Ukrainian),

@@ -52,6 +52,18 @@ fn about_words(an: &Analysis, step_about: (kurbo::Point, Option<usize>)) -> Stri
 /// A force plan (of a group, or of the input link) in words, its steps
 /// numbered, appended to `t`.
 pub fn plan_words(an: &Analysis, loads: &[Load], plan: &ForcePlan, lang: Lang, t: &mut String) {
+    let _ = writeln!(t, "  {}", plan_head(an, plan, lang));
+    for (i, s) in plan_sentences(an, loads, plan, lang).iter().enumerate() {
+        let _ = writeln!(t, "{:>5}. {s}", i + 1);
+    }
+    if let Some(worst) = plan_worst(plan, lang) {
+        let _ = writeln!(t, "       {worst}");
+    }
+}
+
+/// A force plan's heading: what is cut out, and its μ_F ("Group RRP of
+/// links 4, 5, …; μ_F = 2 N/mm.").
+pub fn plan_head(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
     let w = words(lang);
     let head = match plan.group {
         Some(g) => {
@@ -67,27 +79,32 @@ pub fn plan_words(an: &Analysis, loads: &[Load], plan: &ForcePlan, lang: Lang, t
             fill(&w.input_link, &[("ids", &ids.join(", "))])
         }
     };
-    let _ = writeln!(t, "  {head}; μ_F = {} {}.", num(plan.mu), w.per_mm);
+    format!("{head}; μ_F = {} {}.", num(plan.mu), w.per_mm)
+}
+
+/// A force plan's steps, one sentence each, in order.
+pub fn plan_sentences(
+    an: &Analysis,
+    loads: &[Load],
+    plan: &ForcePlan,
+    lang: Lang,
+) -> Vec<String> {
     let step = Step {
         an,
         loads,
         plan,
         lang,
-        w,
+        w: words(lang),
     };
-    for (i, s) in plan.steps.iter().enumerate() {
-        let _ = writeln!(t, "{:>5}. {}", i + 1, step.words(s));
-    }
-    if plan.worst_sin < 1.0 {
-        let deg = num(plan.worst_sin.asin().to_degrees());
-        let _ = writeln!(
-            t,
-            "       {}: {deg}°; δ = {} {}",
-            w.worst,
-            num(plan.delta),
-            w.mm
-        );
-    }
+    plan.steps.iter().map(|s| step.words(s)).collect()
+}
+
+/// The worst intersection angle of a plan and its drafting bound δ, where
+/// two lines met at less than a right angle.
+pub fn plan_worst(plan: &ForcePlan, lang: Lang) -> Option<String> {
+    let w = words(lang);
+    let deg = || num(plan.worst_sin.asin().to_degrees());
+    (plan.worst_sin < 1.0).then(|| format!("{}: {}°; δ = {} {}", w.worst, deg(), num(plan.delta), w.mm))
 }
 
 /// What a plan's steps share in words.

@@ -46,7 +46,7 @@ pub fn title(lang: Lang) -> &'static str {
 
 /// A panel's caption as the course names a group, by its class and kind:
 /// "Група II класу 2-го виду (4, 5), RRP"; "Input link 1".
-fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
+pub(super) fn caption(an: &Analysis, plan: &ForcePlan, lang: Lang) -> String {
     let m = &an.mech;
     let ids: Vec<&str> = plan.links.iter().map(|&l| m.link_id(l)).collect();
     match plan.group {

@@ -18,7 +18,10 @@
 //! its result tables are those of [`crate::presentation::tables`], as the
 //! terminal's.
 
-use super::canvas::{Canvas, Prim, fmt, xml};
+use super::canvas::{Canvas, Prim, xml};
+pub use super::html_parts::rich;
+use super::html_parts::{Fit, label_html, prefixed};
+use super::handout_forces;
 use super::{mechanism, plan, scale_label, words};
 use crate::format::num;
 use crate::kinematics::construction::{Op, Plan, PlanKind};
@@ -29,84 +32,11 @@ use crate::presentation::report::group_kinds;
 use crate::presentation::tables::{self, Cell, Kind, Table, unit};
 use crate::words::catalogue::HandoutPhrases;
 use crate::words::construction::{Lang, sentence};
-use kurbo::Point;
 use std::fmt::Write as _;
 
 /// Words of the page around the drawings (the language's catalogue).
 fn ui(l: Lang) -> &'static HandoutPhrases {
     &crate::words::catalogue(l).handout
-}
-
-/// A sentence (or a quantity's name) as HTML, in the lecture's notation:
-/// `v_B3C` → v<sub>B3C</sub>, `a^n_BA` → a<sup>n</sup><sub>BA</sub>, the
-/// pole `p_vb` → p<sub>v</sub>b, digits after a letter as a subscript
-/// (`ω1`, `b3`, `O2`) as the drawings write them. Only `_` and `^` are
-/// dropped (with a combining underline right after them); the rest of the
-/// text is kept, escaped.
-pub fn rich(s: &str) -> String {
-    use crate::words::notation::{Pos, runs};
-    runs(s)
-        .into_iter()
-        .map(|(p, t)| match p {
-            Pos::Base => xml(&t),
-            Pos::Sub => format!("<sub>{}</sub>", xml(&t)),
-            Pos::Sup => format!("<sup>{}</sup>", xml(&t)),
-        })
-        .collect()
-}
-
-/// A label (letters, subscript, more names, tail) as HTML.
-fn label_html(l: &super::canvas::Label) -> String {
-    let sub = |s: &str| {
-        if s.is_empty() {
-            String::new()
-        } else {
-            format!("<sub>{}</sub>", xml(s))
-        }
-    };
-    let mut h = format!("{}{}", xml(&l.base), sub(&l.sub));
-    for (b, s) in &l.more {
-        let _ = write!(h, ", {}{}", xml(b), sub(s));
-    }
-    h + &xml(&l.tail)
-}
-
-/// Where a canvas goes in its own SVG: page = (ox + x, oy − y).
-struct Fit {
-    ox: f64,
-    oy: f64,
-    w: f64,
-    h: f64,
-}
-
-impl Fit {
-    fn new(b: kurbo::Rect, pad: f64) -> Fit {
-        Fit {
-            ox: pad - b.x0,
-            oy: pad + b.y1,
-            w: b.width() + 2.0 * pad,
-            h: b.height() + 2.0 * pad,
-        }
-    }
-    fn x(&self, p: Point) -> String {
-        fmt(self.ox + p.x)
-    }
-    fn y(&self, p: Point) -> String {
-        fmt(self.oy - p.y)
-    }
-    fn open(&self, class: &str, aria: &str) -> String {
-        format!(
-            r#"<svg xmlns="http://www.w3.org/2000/svg" class="{class}" viewBox="0 0 {} {}" font-family="DejaVu Sans, sans-serif" role="img" aria-label="{}">"#,
-            fmt(self.w),
-            fmt(self.h),
-            xml(aria)
-        ) + "\n"
-    }
-}
-
-/// Ids made unique in the page (every sheet has its `pt-b`).
-fn prefixed(svg: String, prefix: &str) -> String {
-    svg.replace(" id=\"", &format!(" id=\"{prefix}"))
 }
 
 /// The plan of the mechanism at every position.
@@ -485,8 +415,13 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -
     let mut h = String::new();
     let _ = write!(
         h,
-        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n<style>\n{CSS}</style>\n<script>\n{ERRORS_JS}</script>\n</head>\n",
-        xml(&title)
+        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n<style>\n{CSS}{}</style>\n<script>\n{ERRORS_JS}</script>\n</head>\n",
+        xml(&title),
+        if handout_forces::any(solved) {
+            handout_forces::CSS
+        } else {
+            ""
+        }
     );
     let _ = writeln!(
         h,
@@ -558,6 +493,7 @@ fn position_section(
     h.push_str("</div>\n");
     let _ = writeln!(h, "<h3>{}</h3>", w.results);
     h.push_str(&tables(an, s, lang));
+    handout_forces::section(h, an, (k, s), lang);
     h.push_str("</section>\n");
 }
 

@@ -131,6 +131,22 @@ fn force(
 /// The lever on a canvas, the pole at the origin, with the caption under
 /// it; `mu_f` the force scale.
 pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
+    figure(an, l, c, mu_f, lang);
+    let bottom = c.bounds().y0;
+    for (i, t) in caption(an, l, mu_f, lang).iter().enumerate() {
+        c.rich(
+            Point::new(c.bounds().x0.min(0.0), bottom - 8.0 - 5.0 * i as f64),
+            t,
+            SMALL,
+            "",
+            "start",
+        );
+    }
+}
+
+/// The lever alone, without its caption (the handout writes the caption
+/// in words beside it), labels placed.
+pub fn figure(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
     let w = words(lang);
     let plan = &l.plan;
     let turned = |i: usize| {
@@ -208,16 +224,6 @@ pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
         c.label(p, label, FONT, Some(format!("label-{}", first.key)));
     }
     c.place_pending();
-    let bottom = c.bounds().y0;
-    for (i, t) in caption(an, l, mu_f, lang).iter().enumerate() {
-        c.rich(
-            Point::new(c.bounds().x0.min(0.0), bottom - 8.0 - 5.0 * i as f64),
-            t,
-            SMALL,
-            "",
-            "start",
-        );
-    }
 }
 
 /// The caption: the scales, and Σ M_p = 0 solved with numbers.
@@ -391,4 +397,64 @@ pub(super) fn pending(
         });
     }
     Ok(out)
+}
+
+/// The levers of position `s` (one per input) as `solve --steps` says
+/// them: each lever, its caption's first line (the scales) and its items
+/// (every force's arm and moment, ΣM_p = 0 solved, the balancing value),
+/// without their full stops; numbers with the decimal point (the caller
+/// writes them in the language's mark). Empty where no lever is built.
+pub fn lines(
+    an: &Analysis,
+    s: &crate::pipeline::Solved,
+    loads: &[crate::kinetostatics::Load],
+    lang: Lang,
+) -> Vec<(Lever, String, Vec<String>)> {
+    use crate::kinematics::construction::Naming;
+    let Ok(levers) = crate::kinetostatics::lever::levers(an, s, loads, Naming::Full) else {
+        return Vec::new();
+    };
+    let w = &crate::words::catalogue(lang).lever;
+    let units = &crate::words::catalogue(lang).force_plans;
+    let arm = &w.arm;
+    let mut out = Vec::new();
+    for l in levers {
+        let mu_f = force_scale(&l);
+        let caption = caption(an, &l, mu_f, lang);
+        let mut items = Vec::new();
+        for row in &table(an, &l, lang).rows {
+            let row: Vec<String> = row.iter().map(|c| points(c)).collect();
+            items.push(format!(
+                "{} = {} {}, {arm} h = {} {}: {}·h = {} {}",
+                row[0],
+                row[1],
+                units.newton,
+                row[2],
+                units.mm,
+                row[0].split(' ').next().unwrap_or(""),
+                row[3],
+                units.newton_millimetre,
+            ));
+        }
+        items.extend(caption[1..].iter().map(|line| points(line)));
+        let head = points(&caption[0]);
+        out.push((l, head, items));
+    }
+    out
+}
+
+/// A decimal comma between digits (the sheets' Ukrainian and Russian
+/// numbers) as the steps' decimal point, so that one text writes one way.
+fn points(s: &str) -> String {
+    let c: Vec<char> = s.chars().collect();
+    (0..c.len())
+        .map(|i| {
+            let digit = |j: Option<&char>| j.is_some_and(|c| c.is_ascii_digit());
+            if c[i] == ',' && i > 0 && digit(c.get(i - 1)) && digit(c.get(i + 1)) {
+                '.'
+            } else {
+                c[i]
+            }
+        })
+        .collect()
 }

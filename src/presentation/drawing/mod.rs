@@ -25,6 +25,8 @@ pub mod forces;
 pub mod free_body;
 pub mod frenet;
 pub mod html;
+mod handout_forces;
+mod html_parts;
 mod layout;
 pub mod lever;
 pub mod mechanism;
