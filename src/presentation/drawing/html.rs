@@ -399,10 +399,9 @@ pub fn handout(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
 /// title, the structure and a tab per position.
 fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -> String {
     let m = &an.mech;
-    let title = if m.scene.title.is_empty() {
-        "mechplan".to_string()
-    } else {
-        m.scene.title.clone()
+    let title = match m.scene.title_in(lang) {
+        "" => "mechplan".to_string(),
+        t => t.to_string(),
     };
     let code = lang.code();
     let structure = format!(
@@ -441,7 +440,7 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -
             h,
             "<button type=\"button\" class=\"tab\" data-pos=\"{}\">{} {}</button>",
             k + 1,
-            k + 1,
+            crate::presentation::position_number(an, k),
             rich(&format!("· {}", input_text(an, s, lang)))
         );
     }
@@ -463,8 +462,9 @@ fn position_section(
     let sheet_words = words(lang);
     let pos = k + 1;
     let heading = format!(
-        "{} {pos}: {}; {}",
+        "{} {}: {}; {}",
         w.position,
+        crate::presentation::position_number(an, k),
         input_text(an, s, lang),
         drive_text(an, s, lang)
     );
