@@ -393,3 +393,25 @@ fn a_handout_without_dynamics_is_unchanged() {
     let want = std::fs::read_to_string(&path).unwrap();
     assert_eq!(got, want, "the handout of six_link_fig2_10 changed");
 }
+
+/// Every number a Ukrainian or Russian handout shows is written with the
+/// decimal comma: headings, tabs, result tables (values, drafting bounds,
+/// the plans' worst angle and δ), captions and sentences. The scene's
+/// title is the user's text ("Fig. 2.10") and is left out.
+#[test]
+fn a_uk_or_ru_handout_writes_no_decimal_point() {
+    for name in ["six_link_fig2_10", "shaper_fig2_11"] {
+        for lang in [Lang::Uk, Lang::Ru] {
+            let mut v = fixture(name);
+            v["title"] = serde_json::json!("");
+            let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
+            let h = handout(&an, &s, lang);
+            let body = &h[h.find("<body").unwrap()..];
+            let body = body.split("<script").next().unwrap();
+            let points = decimal_points(&text(body));
+            assert!(points.is_empty(), "{name} {lang:?}: {points:?}");
+            // It has numbers at all: a comma between digits.
+            assert!(text(body).contains(",5") || text(body).contains(",0"), "{name} {lang:?}");
+        }
+    }
+}

@@ -279,15 +279,15 @@ fn rate_cell(x: f64, scale: f64) -> String {
 /// The tables of a position: points, links, what was measured on the plans.
 fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
     let mut h = String::from("<div class=\"tables\">\n");
-    h += &table_html(&tables::points(an, s, l));
-    h += &table_html(&tables::links(an, s, l));
+    h += &table_html(&tables::points(an, s, l), l);
+    h += &table_html(&tables::links(an, s, l), l);
     if let Some(plans) = &s.plans {
         let titles = words(l);
         h += &table_html(&tables::measured(
             plans,
             [&titles.velocities[..], &titles.accelerations[..]],
             l,
-        ));
+        ), l);
     }
     h + "</div>\n"
 }
@@ -296,7 +296,7 @@ fn tables(an: &Analysis, s: &Solved, l: Lang) -> String {
 /// the points are, nor which way they move: its drawings show that), the
 /// rows complete in them, a group's title on a row of its own; nothing for
 /// a table left with names alone.
-fn table_html(t: &Table) -> String {
+fn table_html(t: &Table, l: Lang) -> String {
     let shown = |k: Kind| !matches!(k, Kind::Coordinate | Kind::Direction | Kind::Angle);
     let columns: Vec<usize> = (0..t.columns.len())
         .filter(|&i| shown(t.columns[i].kind))
@@ -347,7 +347,9 @@ fn table_html(t: &Table) -> String {
         h.push_str("</tbody>");
         h.push_str(nl);
     }
-    h + "</table>\n"
+    // Numbers with the language's decimal mark (the tables are shared with
+    // the terminal, which writes its own).
+    crate::words::numbers::decimals(&(h + "</table>\n"), l)
 }
 
 /// A cell as HTML: names in the lecture's notation, numbers as the
@@ -441,7 +443,10 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -
             "<button type=\"button\" class=\"tab\" data-pos=\"{}\">{} {}</button>",
             k + 1,
             crate::presentation::position_number(an, k),
-            rich(&format!("· {}", input_text(an, s, lang)))
+            rich(&crate::words::numbers::decimals(
+                &format!("· {}", input_text(an, s, lang)),
+                lang
+            ))
         );
     }
     h.push_str("</nav>\n</header>\n");
@@ -471,7 +476,7 @@ fn position_section(
     let _ = writeln!(
         h,
         "<section class=\"position\" id=\"pos-{pos}\" data-pos=\"{pos}\">\n<h2>{}</h2>\n<div class=\"figs\">",
-        rich(&heading)
+        rich(&crate::words::numbers::decimals(&heading, lang))
     );
     let mu_l = scale_label("l", an.mu_l, "m", lang);
     let _ = write!(
