@@ -394,3 +394,45 @@ fn force_course_sheets_pass_the_layout_checks() {
     let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &opt, &[SheetSize::A1]).unwrap();
     assert!(sh.iter().all(|s| s.name != "course_forces"));
 }
+
+/// The title block's letter cells (ГОСТ 2.104 field 4) are never empty:
+/// the scene's `sheet.letter`, one letter a cell, else "У" (a student's
+/// document) in uk and ru, a dash in en; more than three letters are
+/// refused by the field's pointer.
+#[test]
+fn the_letter_cells_are_filled() {
+    let cell = |svg: &str, ch: &str| {
+        svg.lines()
+            .any(|l| l.contains("title-block-field") && l.ends_with(&format!(">{ch}</text>")))
+    };
+    let mut v = fixture("six_link_fig2_10");
+    for (lang, ch) in [
+        (mechplan::words::construction::Lang::Uk, "У"),
+        (mechplan::words::construction::Lang::Ru, "У"),
+        (mechplan::words::construction::Lang::En, "—"),
+    ] {
+        let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
+        let opt = DrawOptions {
+            lang,
+            course: true,
+            ..DrawOptions::default()
+        };
+        let sh = sheets(&an, &s, &opt);
+        let c = sh.iter().find(|s| s.name == "course").unwrap();
+        assert!(cell(&c.svg, ch), "{lang:?}: the letter {ch}");
+    }
+    v["sheet"] = serde_json::json!({ "letter": "ДП" });
+    let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
+    let opt = DrawOptions {
+        course: true,
+        ..DrawOptions::default()
+    };
+    let sh = sheets(&an, &s, &opt);
+    let c = sh.iter().find(|s| s.name == "course").unwrap();
+    assert!(cell(&c.svg, "Д") && cell(&c.svg, "П"), "one letter a cell");
+    v["sheet"] = serde_json::json!({ "letter": "ABCD" });
+    let e = mechplan::Scene::from_json(&v.to_string())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("/sheet/letter"), "{e}");
+}

@@ -251,6 +251,10 @@ pub struct TitleBlockPhrases {
     pub roles: [String; 5],
     /// Over the letter, the mass and the scale.
     pub cells: [String; 3],
+    /// The letter where the scene's `sheet.letter` gives none: "У"
+    /// (учбовий, учебный: a student's document, as university
+    /// departments letter course projects) in uk and ru, a dash in en.
+    pub letter: String,
     /// "Sheets" (their count) and "Format".
     pub sheets: String,
     /// "Format".

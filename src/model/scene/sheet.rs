@@ -20,6 +20,7 @@ impl Reader {
             "checker",
             "organisation",
             "scale",
+            "letter",
         ];
         self.only_keys(o, "/sheet", &keys);
         for k in keys {
@@ -45,6 +46,11 @@ impl Reader {
             if k == "title" {
                 s.titles = by;
             }
+            // The letter column has three cells of one letter each.
+            if k == "letter" && t.chars().count() > 3 {
+                self.err(at, "expected at most 3 letters (the title block's letter cells), e.g. \"У\"");
+                continue;
+            }
             let t = Some(t);
             match k {
                 "designation" => s.designation = t,
@@ -52,6 +58,7 @@ impl Reader {
                 "author" => s.author = t,
                 "checker" => s.checker = t,
                 "organisation" => s.organisation = t,
+                "letter" => s.letter = t,
                 _ => s.scale = t,
             }
         }

@@ -166,6 +166,9 @@ pub struct SheetInfo {
     pub title: Option<String>,
     /// The name in each language it is given in (see [`Scene::titles`]).
     pub titles: Vec<(crate::lang::Lang, String)>,
+    /// The document's letter (ГОСТ 2.104 field 4; ГОСТ 2.103), up to three
+    /// letters, one a cell; else the language's default ("У").
+    pub letter: Option<String>,
     /// Who drew it ("Разраб.").
     pub author: Option<String>,
     /// Who checked it ("Пров.").

@@ -314,6 +314,16 @@ impl Block {
             &fit(&t.scale, 8),
             "title-block-field",
         );
+        // The letter, one a cell from the left of its three 5 mm cells.
+        for (i, ch) in t.letter.chars().take(3).enumerate() {
+            self.text(
+                (47.5 - 5.0 * i as f64, 26.3),
+                (3.5, 4.0),
+                "middle",
+                &ch.to_string(),
+                "title-block-field",
+            );
+        }
         for (i, l) in wrap(&t.organisation, 22, 2).iter().enumerate() {
             self.text(
                 (25.0, 9.0 - 4.5 * i as f64),
@@ -396,6 +406,8 @@ pub struct TitleBlock {
     pub checker: Option<String>,
     pub organisation: String,
     pub scale: String,
+    /// The letter cells' letters (field 4).
+    pub letter: String,
     /// This sheet's number and the number of sheets.
     pub sheet: (usize, usize),
 }
@@ -412,6 +424,10 @@ impl TitleBlock {
             checker: info.checker.clone(),
             organisation: info.organisation.clone().unwrap_or_default(),
             scale: info.scale.clone().unwrap_or_else(|| "—".into()),
+            letter: info
+                .letter
+                .clone()
+                .unwrap_or_else(|| crate::words::catalogue(lang).title_block.letter.clone()),
             sheet,
         }
     }
