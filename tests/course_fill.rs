@@ -119,3 +119,67 @@ fn course_sheets_use_their_field() {
     assert!(rows.len() >= 7, "{table}");
     assert!(low.is_empty(), "below 65 %: {low:?}\n{table}");
 }
+
+/// The velocity plans on the course sheet are drawn to be read: the grid
+/// takes the column count that draws them largest without drawing any
+/// other figure smaller, so the six-link's twelve plans are at μ_v =
+/// 0.02 (m/s)/mm (5 × 3 cells held them at 0.04, 25–40 mm long) and the
+/// median plan's longest vector — the fastest point's velocity from the
+/// result file, at the μ_v the manifest gives the sheet — is at least
+/// 45 mm.
+#[test]
+fn course_velocity_plans_are_large_enough_to_read() {
+    let exe = env!("CARGO_BIN_EXE_mechplan");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("fixtures/six_link_fig2_10.json");
+    let dir = std::env::temp_dir().join(format!("mechplan-course-v-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(exe)
+        .arg("draw")
+        .arg(&scene)
+        .args(["--course", "-o"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sheets.json")).unwrap()).unwrap();
+    let course = manifest["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["file"] == "course.svg")
+        .unwrap();
+    let mu_v = course["scales"]["mu_v"].as_f64().unwrap();
+    let out = std::process::Command::new(exe)
+        .arg("solve")
+        .arg(&scene)
+        .args(["--format", "json"])
+        .output()
+        .unwrap();
+    let result: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut longest: Vec<f64> = result["positions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            p["points"]
+                .as_object()
+                .unwrap()
+                .values()
+                .map(|q| {
+                    let v = &q["v"];
+                    v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap()) / mu_v
+                })
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    longest.sort_by(f64::total_cmp);
+    let median = longest[longest.len() / 2];
+    assert!(mu_v <= 0.02 + 1e-12, "μ_v = {mu_v}");
+    assert!(
+        median >= 45.0,
+        "median longest vector {median:.1} mm at μ_v = {mu_v}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -32,8 +32,9 @@ use std::collections::HashMap;
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
     Positions(positions::Trajectories),
-    /// The velocity plans of these positions (from 1) at one μ_v.
-    Velocities(Vec<usize>),
+    /// The velocity plans of these positions (from 1) at one μ_v, in a
+    /// grid of this many columns.
+    Velocities(Vec<usize>, usize),
     /// The acceleration plan of a position.
     Acceleration(usize),
     /// Drawn once, at its own size (the diagrams, a table).
@@ -60,8 +61,57 @@ fn layout(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Layout>
     let lang = opt.lang;
     let chosen = chosen(an, solved);
     let fixed = fixed_figures(an, solved, size, lang, &chosen);
-    // The figures drawn at a scale, with their share of the field.
-    let sources = sources(an, solved, &chosen, &fixed);
+    // The velocity plans' grid: of the column counts tried, the one that
+    // draws them largest (the smallest μ_v) while no other figure is drawn
+    // smaller than with the default grid. A grid of 5 × 3 cells, each as
+    // wide as its column's widest plan, leaves the plans 25–40 mm long on
+    // A1; 6 × 2 or 4 × 3 may hold them at the next scale.
+    let n = chosen.0.len();
+    let default = grid(n).0;
+    let laid = |cols: usize| {
+        let sources = sources(an, solved, &chosen, &fixed, cols);
+        layout_with(an, solved, lang, size, sources)
+    };
+    let mut best = laid(default)?;
+    let scales = |l: &Vec<(Figure, Point)>| -> Vec<(String, f64)> {
+        l.iter()
+            .flat_map(|(f, _)| f.scales.iter().map(|&(k, mu)| (format!("{}/{k}", f.id), mu)))
+            .collect()
+    };
+    let base = scales(&best);
+    let mu_v = |sc: &[(String, f64)]| {
+        sc.iter()
+            .find(|(k, _)| k.ends_with("/mu_v"))
+            .map_or(f64::INFINITY, |x| x.1)
+    };
+    let mut best_mu = mu_v(&base);
+    let mut options: Vec<usize> = [n.div_ceil(2), n.div_ceil(3), n.div_ceil(4), default + 1]
+        .into_iter()
+        .filter(|&c| c >= 1 && c <= n && c != default)
+        .collect();
+    options.dedup();
+    for cols in options {
+        let Ok(l) = laid(cols) else { continue };
+        let sc = scales(&l);
+        let none_smaller = sc.iter().all(|(k, mu)| {
+            k.ends_with("/mu_v") || base.iter().find(|b| &b.0 == k).is_none_or(|b| *mu <= b.1)
+        });
+        let m = mu_v(&sc);
+        if none_smaller && m < best_mu {
+            (best, best_mu) = (l, m);
+        }
+    }
+    Ok((best, chosen))
+}
+
+/// The figures of `sources` at the largest zooms that pack on the field.
+fn layout_with(
+    an: &Analysis,
+    solved: &[Solved],
+    lang: Lang,
+    size: SheetSize,
+    sources: Vec<(Source<'_>, f64)>,
+) -> Result<Vec<(Figure, Point)>> {
     let field = field_of(size);
     let block = sheet::block(size);
     let cx = Ctx {
@@ -89,7 +139,7 @@ fn layout(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Layout>
             "the course sheet's figures do not pack on {size:?}: too many positions or plans for one sheet; choose fewer with want.plans_at"
         ))
     })?;
-    Ok((placed, chosen))
+    Ok(placed)
 }
 
 /// The scales the course sheet draws its plans at, by position (from 0:
@@ -222,12 +272,13 @@ fn sources<'a>(
     solved: &[Solved],
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
     fixed: &'a [Figure],
+    cols: usize,
 ) -> Vec<(Source<'a>, f64)> {
     let (has_plans, has_acc) = has_plans(solved);
     let mut sources: Vec<(Source, f64)> =
         vec![(Source::Positions(positions::trajectories(an, solved)), 0.34)];
     if has_plans {
-        sources.push((Source::Velocities(vel_at.clone()), 0.22));
+        sources.push((Source::Velocities(vel_at.clone(), cols), 0.22));
     }
     if has_acc {
         for &k in acc_at {
@@ -343,8 +394,8 @@ fn natural(cx: &Ctx, src: &Source) -> Option<(f64, f64, f64)> {
             let aspect = (e.width() / e.height().max(1e-12)).clamp(0.5, 3.0);
             Some((aspect, e.width(), e.height()))
         }
-        Source::Velocities(at) => {
-            let (cols, rows) = grid(at.len());
+        Source::Velocities(at, cols) => {
+            let (cols, rows) = (*cols, at.len().div_ceil(*cols));
             let (mut ew, mut eh) = (0.0f64, 0.0f64);
             for &k in at {
                 let p = &cx.solved.get(k - 1)?.plans.as_ref()?.velocity;
@@ -397,8 +448,8 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
                 scales: vec![("mu_l", mu)],
             })
         }
-        Source::Velocities(at) => {
-            let (cols, _) = grid(at.len());
+        Source::Velocities(at, cols) => {
+            let cols = *cols;
             let cs: Vec<Canvas> = at
                 .iter()
                 .map(|&k| {
