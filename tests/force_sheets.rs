@@ -338,3 +338,131 @@ fn every_free_body_is_at_least_40_mm() {
         eprintln!("{name}: smallest free body {smallest:.1} mm");
     }
 }
+
+/// All the sheets with force panels of fixture `name` in `lang`: every
+/// position's force sheet and the course's force sheet.
+fn panel_sheets(name: &str, lang: Lang) -> (mechplan::Analysis, Vec<mechplan::Solved>, Vec<Sheet>) {
+    let (an, solved, mut sh) = solve(name, lang);
+    let opt = DrawOptions {
+        course: true,
+        lang,
+        ..DrawOptions::default()
+    };
+    sh.extend(
+        sheets(&an, &solved, &opt)
+            .into_iter()
+            .filter(|s| s.name == "course_forces"),
+    );
+    sh.retain(|s| s.name.starts_with("forces_") || s.name == "course_forces");
+    (an, solved, sh)
+}
+
+/// The position a sheet of [`panel_sheets`] draws (0-based).
+fn position_of(an: &mechplan::Analysis, solved: &[mechplan::Solved], s: &Sheet) -> usize {
+    match s.name.strip_prefix("forces_") {
+        Some(k) => k.parse::<usize>().unwrap() - 1,
+        None => mechplan::drawing::chosen::position(an, solved),
+    }
+}
+
+/// The two ends of a `<line>` (page mm).
+fn line_ends(l: &str) -> (kurbo::Point, kurbo::Point) {
+    (
+        kurbo::Point::new(attr(l, "x1").unwrap(), attr(l, "y1").unwrap()),
+        kurbo::Point::new(attr(l, "x2").unwrap(), attr(l, "y2").unwrap()),
+    )
+}
+
+/// The box of a `<polygon>`'s points (page mm).
+fn polygon_box(l: &str) -> kurbo::Rect {
+    let v: Vec<f64> = attr_str(l, "points")
+        .unwrap()
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    v.chunks(2)
+        .map(|p| kurbo::Rect::from_points((p[0], p[1]), (p[0], p[1])))
+        .reduce(|a, b| a.union(b))
+        .unwrap()
+}
+
+/// Every element with an id, by id.
+fn by_id(svg: &str) -> HashMap<String, String> {
+    svg.split('<')
+        .filter_map(|l| Some((attr_str(l, "id")?.to_string(), l.to_string())))
+        .collect()
+}
+
+/// The μ_l of panel `i` (1-based) of a sheet.
+fn mu_l(s: &Sheet, i: usize) -> f64 {
+    s.scales
+        .iter()
+        .filter(|(k, _)| *k == "mu_l")
+        .nth(i - 1)
+        .unwrap()
+        .1
+}
+
+/// A prismatic pair's reaction is drawn on its slider (R₀₅ stood 220 mm
+/// off the shaper's slider at its line of action, linked to nothing):
+/// every such arrow ends within 3 mm of its slider's block where the
+/// block is on the panel, and its line of action's offset from the
+/// slider's centre is a dimension line as long as the offset at the
+/// panel's μ_l (to 0.5 mm; one longer than 25 mm drawn 25 mm long).
+#[test]
+fn guide_reactions_are_drawn_on_their_sliders() {
+    let mut arrows = 0;
+    let mut offsets = 0;
+    for name in DYNAMICS {
+        let (an, solved, sh) = panel_sheets(name, Lang::En);
+        for s in &sh {
+            let k = position_of(&an, &solved, s);
+            let d = solved[k].dynamics.as_ref().unwrap();
+            let ids = by_id(&s.svg);
+            for (id, l) in &ids {
+                // "f1-force-8-p2": panel f1, pair 2.
+                let Some((tag, rest)) = id.split_once("-force-") else {
+                    continue;
+                };
+                let Some((_, pair)) = rest.split_once("-p") else {
+                    continue;
+                };
+                let Some(block) = ids.get(&format!("{tag}-slider-{pair}")) else {
+                    continue;
+                };
+                let b = polygon_box(block).inflate(3.0, 3.0);
+                let (p, q) = line_ends(l);
+                assert!(
+                    b.contains(p) || b.contains(q),
+                    "{name} {}: {id} from {p:?} to {q:?}, its slider at {b:?}",
+                    s.name
+                );
+                arrows += 1;
+            }
+            for (id, l) in &ids {
+                let Some((tag, pair)) = id.split_once("-offset-") else {
+                    continue;
+                };
+                let Ok(pair) = pair.parse::<usize>() else {
+                    continue;
+                };
+                let panel: usize = tag[1..].parse().unwrap();
+                let g = &d.prismatics[pair];
+                let x = (g.at.unwrap() - g.q).dot(g.u).abs() / mu_l(s, panel);
+                let (p, q) = line_ends(l);
+                let drawn = (q - p).hypot();
+                assert!(
+                    (drawn - x.min(25.0)).abs() <= 0.5,
+                    "{name} {}: {id} is {drawn:.2} mm, the offset {x:.2} mm at μ_l",
+                    s.name
+                );
+                assert!(ids.contains_key(&format!("{id}-label")), "{id} unlabelled");
+                offsets += 1;
+            }
+        }
+    }
+    assert!(
+        arrows > 0 && offsets > 0,
+        "{arrows} arrows, {offsets} offsets"
+    );
+}

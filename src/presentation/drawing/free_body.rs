@@ -52,6 +52,9 @@ struct Arrow {
     kind: Kind,
     /// A reaction (of a pair), not a load.
     reaction: bool,
+    /// A prismatic pair's reaction: the pair (its arrow drawn at the
+    /// slider's centre, its line of action shown by [`offset`]).
+    guide: Option<usize>,
 }
 
 /// What the drawing of one plan needs: the analysis, the position, its
@@ -92,6 +95,7 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
     let longest =
         (ARROW_SHARE * size.width().hypot(size.height()) / mu_l).clamp(LONGEST.0, LONGEST.1);
     draw_arrows(c, &arrows, longest, sc.tag);
+    offsets(sc, c, &arrows, mu_l);
     let mut busy = lines;
     busy.extend(arrows.iter().map(|a| (a.at, a.at + a.f)));
     for (i, (centre, value, label)) in couples(sc, plan, &to).into_iter().enumerate() {
@@ -196,7 +200,12 @@ fn prismatics(
         }
         if slider {
             let (a, b) = BLOCK;
-            c.poly(mechanism::block_corners(q, u, a, b).to_vec(), "white", MAIN);
+            c.poly_id(
+                mechanism::block_corners(q, u, a, b).to_vec(),
+                "white",
+                MAIN,
+                format!("{}-slider-{k}", sc.tag),
+            );
         }
     }
 }
@@ -292,9 +301,16 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
     let place = |joint: Joint, on: usize| match joint {
         Joint::R(p) => Some(to(s.config.point(m, on, p))),
         Joint::P(k) => {
-            let at = sc.d.prismatics.get(k).and_then(|g| g.at);
-            (k < m.prismatics.len()).then(|| to(at.unwrap_or_else(|| guide_frame(an, s, k).0)))
+            // At the slider's centre, on its body: the line of action
+            // (which may lie far off the block) is shown by its offset.
+            (k < m.prismatics.len()).then(|| to(guide_frame(an, s, k).0))
         }
+    };
+    let guide_of = |f: Force| match f {
+        Force::Reaction {
+            joint: Joint::P(k), ..
+        } => Some(k),
+        _ => None,
     };
     let found = |vi: usize| plan.steps.contains(&ForceStep::Measure(vi));
     let mut out: Vec<Arrow> = Vec::new();
@@ -341,6 +357,7 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
             label,
             kind,
             reaction: !matches!(v.force, Force::Load(_)),
+            guide: guide_of(v.force),
         });
         // A component found first: the rest of its reaction (n after τ)
         // is the other component.
@@ -369,6 +386,7 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
                     label: Label::new("R", sub).with_sup(names::part_sup(other)),
                     kind: Kind::Component,
                     reaction: true,
+                    guide: guide_of(v.force),
                 });
             }
         }
@@ -407,7 +425,11 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
         } else {
             (at - u * len, at)
         };
-        c.vector(from, tip, class, Some(format!("{tag}-force-{i}")));
+        let id = match a.guide {
+            Some(k) => format!("{tag}-force-{i}-p{k}"),
+            None => format!("{tag}-force-{i}"),
+        };
+        c.vector(from, tip, class, Some(id));
         // The name at the far end, away from the crowd at the point.
         c.label_later(
             at + out * len,
@@ -416,6 +438,80 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
             Some(format!("{tag}-flabel-{i}")),
         );
     }
+}
+
+/// The longest offset of a guide's reaction drawn to scale, mm: a longer
+/// one is drawn this long, open at its far end, its value written.
+const OFFSET_REACH: f64 = 25.0;
+/// How far from the guide's axis an offset's dimension line runs, mm.
+const OFFSET_AT: f64 = BLOCK.1 + 4.0;
+
+/// Each prismatic pair's reaction drawn on the free body: its arrow at
+/// the slider's centre Q and its offset x along the guide from Q to its
+/// line of action (found from the slider's moments, the guide's couple
+/// c = x·N), as a thin dimension line beside the block labelled with its
+/// value in m; a thin line of action at its far end where it is in reach.
+fn offsets(sc: &Scene, c: &mut Canvas, arrows: &[Arrow], mu_l: f64) {
+    let (an, s) = (sc.an, sc.s);
+    let mut done: Vec<usize> = Vec::new();
+    for a in arrows {
+        let Some(k) = a.guide else { continue };
+        if a.kind == Kind::Component || done.contains(&k) || a.f.hypot() == 0.0 {
+            continue;
+        }
+        done.push(k);
+        let Some(line) = sc.d.prismatics.get(k).and_then(|g| g.at) else {
+            continue;
+        };
+        let (q, u, _) = guide_frame(an, s, k);
+        let x = (line - q).dot(u);
+        let drawn = x / mu_l;
+        if drawn.abs() < 0.5 {
+            continue;
+        }
+        let sign = drawn.signum();
+        let len = drawn.abs().min(OFFSET_REACH);
+        // Beside the block on the side the force pushes to (its arrow's
+        // tail on the other).
+        let n = perp(u);
+        let side = if a.f.dot(n) >= 0.0 { n } else { -n };
+        let q = a.at;
+        let (p0, p1) = (q + side * OFFSET_AT, q + side * OFFSET_AT + u * (sign * len));
+        c.seg(q + side * (BLOCK.1 + 0.5), p0 + side * 1.5, Class::Thin);
+        if drawn.abs() <= OFFSET_REACH {
+            let far = q + u * drawn;
+            c.seg(far - side * 4.0, p1 + side * 1.5, Class::Thin);
+        }
+        c.prims.push(super::canvas::Prim::Seg {
+            a: p0,
+            b: p1,
+            class: Class::Thin,
+            id: Some(format!("{}-offset-{k}", sc.tag)),
+        });
+        c.avoid_thin.push((p0, p1));
+        c.arrow(p1, u * sign);
+        c.arrow(p0, -u * sign);
+        let m = &an.mech;
+        let pr = &m.prismatics[k];
+        let sub = names::pair_sub(m.link_id(pr.guide), m.link_id(pr.slider));
+        let value = super::table::number(round3(x.abs()), sc.lang);
+        let metre = super::table::unit("m", sc.lang);
+        c.label_later(
+            p0.midpoint(p1),
+            Label::new("x", sub).with_tail(format!(" = {value} {metre}")),
+            FONT,
+            Some(format!("{}-offset-{k}-label", sc.tag)),
+        );
+    }
+}
+
+/// Three significant digits.
+fn round3(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let p = 10f64.powi(2 - x.abs().log10().floor() as i32);
+    (x * p).round() / p
 }
 
 /// A couple as a curved arrow about `centre` in the widest free sector
