@@ -7,8 +7,9 @@
 //! dot, μ_F as the caption prints it) to 0.01 mm.
 
 use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
-use mechplan::kinetostatics::force_plan::ForceStep;
+use mechplan::kinetostatics::force_plan::{Force, ForceStep};
 use mechplan::words::construction::Lang;
+use mechplan::words::forces::force_name;
 use std::collections::HashMap;
 
 const DYNAMICS: &[&str] = &[
@@ -386,9 +387,9 @@ fn polygon_box(l: &str) -> kurbo::Rect {
         .unwrap()
 }
 
-/// Every element with an id, by id.
+/// Every element with an id, by id (the sheets write one a line).
 fn by_id(svg: &str) -> HashMap<String, String> {
-    svg.split('<')
+    svg.lines()
         .filter_map(|l| Some((attr_str(l, "id")?.to_string(), l.to_string())))
         .collect()
 }
@@ -465,4 +466,93 @@ fn guide_reactions_are_drawn_on_their_sliders() {
         arrows > 0 && offsets > 0,
         "{arrows} arrows, {offsets} offsets"
     );
+}
+
+/// A text element's words, its tags and spaces dropped.
+fn words_of(l: &str) -> String {
+    let body = l.split_once('>').map_or("", |x| x.1);
+    let mut out = String::new();
+    let mut tag = false;
+    for ch in body.chars() {
+        match ch {
+            '<' => tag = true,
+            '>' => tag = false,
+            c if !tag && !c.is_whitespace() => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The forces of a plan's polygon in the order they are laid off round
+/// it from its start: the vectors laid off, then the component of the
+/// line through the last end and that of the line through the start
+/// (or the reaction read off from the end back to the start).
+fn laid_off(plan: &mechplan::kinetostatics::force_plan::ForcePlan) -> Vec<Force> {
+    let mut out = Vec::new();
+    let mut end = 0;
+    for st in &plan.steps {
+        if let ForceStep::LayOff(vi) = st {
+            out.push(plan.vectors[*vi].force);
+            end = plan.vectors[*vi].to;
+        }
+    }
+    let mut closed = false;
+    for st in &plan.steps {
+        if let ForceStep::Intersect {
+            lines, out: meet, ..
+        } = st
+        {
+            assert_eq!(plan.lines[lines[1]].through, end);
+            assert_eq!(plan.lines[lines[0]].through, 0);
+            let _ = meet;
+            out.push(plan.lines[lines[1]].force);
+            out.push(plan.lines[lines[0]].force);
+            closed = true;
+        }
+    }
+    if !closed {
+        let v = plan
+            .vectors
+            .iter()
+            .find(|v| v.from == end && v.to == 0)
+            .expect("a reaction closing the polygon");
+        out.push(v.force);
+    }
+    out
+}
+
+/// Beside every polygon its vector equation, as the course writes it:
+/// exactly the polygon's vectors, in the order laid off, "= 0".
+#[test]
+fn every_polygon_has_its_vector_equation() {
+    let mut count = 0;
+    for name in DYNAMICS {
+        for lang in [Lang::En, Lang::Uk] {
+            let (an, solved, sh) = panel_sheets(name, lang);
+            for s in &sh {
+                let k = position_of(&an, &solved, s);
+                let d = solved[k].dynamics.as_ref().unwrap();
+                let ids = by_id(&s.svg);
+                for (i, plan) in d.force_plans.as_ref().unwrap().plans.iter().enumerate() {
+                    let tag = format!("f{}", i + 1);
+                    let mut text = String::new();
+                    for j in 0.. {
+                        let Some(l) = ids.get(&format!("{tag}-equation-{j}")) else {
+                            break;
+                        };
+                        text += &words_of(l);
+                    }
+                    let want: Vec<String> = laid_off(plan)
+                        .into_iter()
+                        .map(|f| force_name(&an.mech, &d.loads, f, lang).replace(['^', '_'], ""))
+                        .collect();
+                    let want = want.join("+") + "=0";
+                    assert_eq!(text, want, "{name} {} {tag}", s.name);
+                    count += 1;
+                }
+            }
+        }
+    }
+    assert!(count > 0);
 }

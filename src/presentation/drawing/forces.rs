@@ -169,6 +169,7 @@ pub fn figure(
         .map(|(i, plan)| {
             let mut c = Canvas::default();
             force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
+            force_polygon::equation(plan, &name, &mut c, &tags[i]);
             c
         })
         .collect();
