@@ -556,3 +556,123 @@ fn every_polygon_has_its_vector_equation() {
     }
     assert!(count > 0);
 }
+
+/// The point (m) each moment equation of a plan is taken about, by step,
+/// with its links: ΣM about a point for a component, the input link's
+/// about its pivot for the balancing moment.
+fn moment_points(
+    an: &mechplan::Analysis,
+    s: &mechplan::Solved,
+    plan: &mechplan::kinetostatics::force_plan::ForcePlan,
+) -> Vec<(usize, kurbo::Point, Vec<usize>)> {
+    let m = &an.mech;
+    let mut out = Vec::new();
+    for (i, st) in plan.steps.iter().enumerate() {
+        match st {
+            ForceStep::Moment { links, about, .. } => out.push((i, *about, links.clone())),
+            ForceStep::Balancing { input, .. } => {
+                if let Some(&mechplan::model::scene::InputSpec::Crank { link, pivot, .. }) =
+                    m.scene.inputs().nth(*input)
+                {
+                    out.push((i, s.config.point(m, link, pivot), vec![link]));
+                }
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The line of action of a plan's vector (a point, a direction; m) and
+/// the link it acts on: a load's, a pin's reaction, a guide's reaction at
+/// its line; `None` for the others.
+fn line_of(
+    an: &mechplan::Analysis,
+    s: &mechplan::Solved,
+    v: &mechplan::kinetostatics::force_plan::Drawn,
+) -> Option<(kurbo::Point, kurbo::Vec2, usize)> {
+    use mechplan::kinetostatics::Load;
+    use mechplan::kinetostatics::force_plan::Part;
+    use mechplan::model::structure::Joint;
+    let d = s.dynamics.as_ref().unwrap();
+    match v.force {
+        Force::Load(i) => match d.loads[i] {
+            Load::Force { link, at, f, .. } => Some((at, f, link)),
+            _ => None,
+        },
+        Force::Reaction {
+            to,
+            joint,
+            part: Part::Whole,
+            ..
+        } => match joint {
+            Joint::R(p) => Some((s.config.point(&an.mech, to, p), v.value, to)),
+            Joint::P(k) => {
+                let g = &d.prismatics[k];
+                Some((g.at.unwrap_or(g.q), v.value, to))
+            }
+        },
+        _ => None,
+    }
+}
+
+/// On each free body the arms h of the forces in the moment equations
+/// the method writes, as the course draws them: every known force
+/// (a load, a reaction of a group solved before) on an equation's links
+/// whose arm is 2 mm or more at the panel's μ_l has its arm, a thin line
+/// from the moment point as long as the point's distance from the
+/// force's line of action at μ_l (to 0.5 mm), labelled.
+#[test]
+fn free_bodies_show_the_arms_of_their_moment_equations() {
+    let mut arms = 0;
+    for name in DYNAMICS {
+        let (an, solved, sh) = panel_sheets(name, Lang::En);
+        for s in &sh {
+            let k = position_of(&an, &solved, s);
+            let sol = &solved[k];
+            let d = sol.dynamics.as_ref().unwrap();
+            let ids = by_id(&s.svg);
+            for (i, plan) in d.force_plans.as_ref().unwrap().plans.iter().enumerate() {
+                let tag = format!("f{}", i + 1);
+                let mu = mu_l(s, i + 1);
+                for (step, about, links) in moment_points(&an, sol, plan) {
+                    for (vi, v) in plan.vectors.iter().enumerate() {
+                        // A reaction read off this plan is no known force.
+                        if plan.steps.contains(&ForceStep::Measure(vi)) || v.value.hypot() == 0.0 {
+                            continue;
+                        }
+                        let Some((at, f, link)) = line_of(&an, sol, v) else {
+                            continue;
+                        };
+                        if !links.contains(&link) {
+                            continue;
+                        }
+                        // A reaction from inside the group is no outer force.
+                        if let Force::Reaction { from, .. } = v.force
+                            && plan.links.contains(&from)
+                        {
+                            continue;
+                        }
+                        let h = (about - at).cross(f).abs() / f.hypot() / mu;
+                        let id = format!("{tag}-arm-s{step}-v{vi}");
+                        let Some(l) = ids.get(&id) else {
+                            assert!(h < 2.0, "{name} {} {tag}: no arm {id} ({h:.1} mm)", s.name);
+                            continue;
+                        };
+                        let (p, q) = line_ends(l);
+                        let drawn = (q - p).hypot();
+                        assert!(
+                            (drawn - h).abs() <= 0.5,
+                            "{name} {} {id}: arm {drawn:.2} mm, the distance {h:.2} mm at μ_l",
+                            s.name
+                        );
+                        assert!(ids.contains_key(&format!("{id}-label")), "{id} unlabelled");
+                        arms += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(arms > 20, "{arms} arms");
+    eprintln!("{arms} arms checked");
+}

@@ -55,6 +55,13 @@ struct Arrow {
     /// A prismatic pair's reaction: the pair (its arrow drawn at the
     /// slider's centre, its line of action shown by [`offset`]).
     guide: Option<usize>,
+    /// The plan's vector it draws (none for a component found as the rest).
+    vi: Option<usize>,
+    /// The link it acts on.
+    link: usize,
+    /// A point of its line of action (mm): `at` but for a guide's
+    /// reaction, whose line lies off the slider's centre.
+    line: Point,
 }
 
 /// What the drawing of one plan needs: the analysis, the position, its
@@ -94,8 +101,9 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
     let size = extent(sc, plan);
     let longest =
         (ARROW_SHARE * size.width().hypot(size.height()) / mu_l).clamp(LONGEST.0, LONGEST.1);
-    draw_arrows(c, &arrows, longest, sc.tag);
+    let segs = draw_arrows(c, &arrows, longest, sc.tag);
     offsets(sc, c, &arrows, mu_l);
+    arms(sc, plan, c, (&arrows, &segs), &to);
     let mut busy = lines;
     busy.extend(arrows.iter().map(|a| (a.at, a.at + a.f)));
     for (i, (centre, value, label)) in couples(sc, plan, &to).into_iter().enumerate() {
@@ -324,7 +332,9 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
         };
         let arrow = match v.force {
             Force::Load(i) => match sc.loads.get(i) {
-                Some(&Load::Force { link, at, .. }) if ours(link) => Some((to(at), Kind::Known)),
+                Some(&Load::Force { link, at, .. }) if ours(link) => {
+                    Some((to(at), Kind::Known, link))
+                }
                 _ => None,
             },
             Force::Reaction {
@@ -338,26 +348,36 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
                     Part::Whole => Kind::Known,
                     _ => Kind::Component,
                 };
-                place(joint, on).map(|at| (at, kind))
+                place(joint, on).map(|at| (at, kind, on))
             }
             Force::Drive { input, on } if ours(on) => match m.scene.inputs().nth(input) {
                 Some(&InputSpec::Slider { pair, .. }) if pair < m.prismatics.len() => {
-                    Some((to(guide_frame(an, s, pair).0), Kind::Known))
+                    Some((to(guide_frame(an, s, pair).0), Kind::Known, on))
                 }
                 _ => None,
             },
             _ => None,
         };
-        let Some((at, kind)) = arrow else { continue };
+        let Some((at, kind, link)) = arrow else {
+            continue;
+        };
         let sub = label.sub.clone();
         done.push(v.force);
+        let guide = guide_of(v.force);
+        let line = guide
+            .and_then(|k| sc.d.prismatics.get(k))
+            .and_then(|g| g.at)
+            .map_or(at, to);
         out.push(Arrow {
             at,
             f: v.value,
             label,
             kind,
             reaction: !matches!(v.force, Force::Load(_)),
-            guide: guide_of(v.force),
+            guide,
+            vi: Some(vi),
+            link,
+            line,
         });
         // A component found first: the rest of its reaction (n after τ)
         // is the other component.
@@ -387,6 +407,9 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
                     kind: Kind::Component,
                     reaction: true,
                     guide: guide_of(v.force),
+                    vi: None,
+                    link: on,
+                    line,
                 });
             }
         }
@@ -396,12 +419,19 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
 
 /// Draw the arrows from their points, lengths ranked by magnitude; one
 /// that would lie along another from the same point is moved aside.
-fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
+fn draw_arrows(
+    c: &mut Canvas,
+    arrows: &[Arrow],
+    longest: f64,
+    tag: &str,
+) -> Vec<Drawn> {
     let fmax = arrows.iter().map(|a| a.f.hypot()).fold(0.0, f64::max);
     let mut drawn: Vec<(Point, Vec2)> = Vec::new();
+    let mut segs = Vec::new();
     for (i, a) in arrows.iter().enumerate() {
         let mag = a.f.hypot();
         if !(mag > 0.0 && mag.is_finite()) {
+            segs.push(None);
             continue;
         }
         let u = a.f / mag;
@@ -430,6 +460,7 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
             None => format!("{tag}-force-{i}"),
         };
         c.vector(from, tip, class, Some(id));
+        segs.push(Some((from, tip)));
         // The name at the far end, away from the crowd at the point.
         c.label_later(
             at + out * len,
@@ -437,6 +468,112 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
             FONT,
             Some(format!("{tag}-flabel-{i}")),
         );
+    }
+    segs
+}
+
+/// An arrow as drawn: its tail and its tip (mm); `None` where too short.
+type Drawn = Option<(Point, Point)>;
+
+/// The shortest arm drawn, mm: a force through the moment point (or
+/// nearly) has none.
+const LEAST_ARM: f64 = 1.0;
+
+/// The moment equations the method writes for `plan`: the point each is
+/// taken about (m) and the links whose forces enter it, with the step's
+/// number — ΣM_B of a side for a tangential component, ΣM_C of both
+/// sides (RPR), ΣM_O of the input link for the balancing moment.
+pub fn moment_points(sc: &Scene, plan: &ForcePlan) -> Vec<(usize, Point, Vec<usize>)> {
+    let m = &sc.an.mech;
+    plan.steps
+        .iter()
+        .enumerate()
+        .filter_map(|(i, st)| match st {
+            ForceStep::Moment { links, about, .. } => Some((i, *about, links.clone())),
+            ForceStep::Balancing { input, .. } => match m.scene.inputs().nth(*input) {
+                Some(&InputSpec::Crank { link, pivot, .. }) => {
+                    Some((i, sc.s.config.point(m, link, pivot), vec![link]))
+                }
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect()
+}
+
+/// The arms h of the known forces in each moment equation of `plan`
+/// (the loads and the reactions of the groups solved before, on the
+/// equation's links), as the course draws them on the free body: a thin
+/// line from the moment point perpendicular to the force's line of
+/// action, the line of action drawn on thin from the arrow to the foot,
+/// labelled h₁, h₂, … Ids `{tag}-arm-s{step}-v{vector}`.
+fn arms(
+    sc: &Scene,
+    plan: &ForcePlan,
+    c: &mut Canvas,
+    (arrows, segs): (&[Arrow], &[Drawn]),
+    to: &dyn Fn(Point) -> Point,
+) {
+    let mut n = 0;
+    let mut seen: Vec<(Point, usize)> = Vec::new();
+    for (step, about, links) in moment_points(sc, plan) {
+        let p = to(about);
+        for (a, seg) in arrows.iter().zip(segs) {
+            let (Some(vi), Some((from, tip))) = (a.vi, *seg) else {
+                continue;
+            };
+            if a.kind != Kind::Known || !links.contains(&a.link) {
+                continue;
+            }
+            if seen.iter().any(|(q, v)| *v == vi && (*q - p).hypot() < 1e-6) {
+                continue;
+            }
+            let u = a.f.normalize();
+            let foot = a.line + u * (p - a.line).dot(u);
+            if (foot - p).hypot() < LEAST_ARM {
+                continue;
+            }
+            seen.push((p, vi));
+            n += 1;
+            // The line of action on from the arrow to the foot.
+            let t = |q: Point| (q - a.line).dot(u);
+            let (t0, t1) = (t(from).min(t(tip)), t(from).max(t(tip)));
+            let tf = t(foot);
+            if tf < t0 - 0.5 || tf > t1 + 0.5 {
+                let (near, beyond) = if tf < t0 {
+                    (t0, tf - 2.0)
+                } else {
+                    (t1, tf + 2.0)
+                };
+                c.path(vec![a.line + u * near, a.line + u * beyond], Line::Dashed);
+            }
+            let id = format!("{}-arm-s{step}-v{vi}", sc.tag);
+            c.prims.push(super::canvas::Prim::Seg {
+                a: p,
+                b: foot,
+                class: Class::Thin,
+                id: Some(id.clone()),
+            });
+            c.avoid_thin.push((p, foot));
+            // The right angle at the foot.
+            let along = (p - foot).normalize() * 1.5;
+            // On the arrow's side of the foot.
+            let side = if (t0 + t1) / 2.0 >= tf {
+                u * 1.5
+            } else {
+                -u * 1.5
+            };
+            c.path(
+                vec![foot + along, foot + along + side, foot + side],
+                Line::Thin,
+            );
+            c.label_later(
+                p.midpoint(foot),
+                Label::new("h", n.to_string()),
+                FONT,
+                Some(format!("{id}-label")),
+            );
+        }
     }
 }
 
