@@ -676,3 +676,32 @@ fn free_bodies_show_the_arms_of_their_moment_equations() {
     assert!(arms > 20, "{arms} arms");
     eprintln!("{arms} arms checked");
 }
+
+/// Every force sheet (and the course's) says, in its language, that the
+/// arrows on the free bodies are not to scale, only the polygons are.
+#[test]
+fn force_sheets_say_their_arrows_are_not_to_scale() {
+    for lang in [Lang::En, Lang::Uk, Lang::Ru] {
+        let want: String = mechplan::words::catalogue(lang)
+            .sheets
+            .not_to_scale
+            .chars()
+            .filter(|c| !c.is_whitespace() && *c != '_')
+            .collect();
+        for name in ["shaper_fig2_11", "compressor_fig2_12"] {
+            let (_, _, sh) = panel_sheets(name, lang);
+            assert!(sh.iter().any(|s| s.name == "course_forces"));
+            for s in &sh {
+                let ids = by_id(&s.svg);
+                let mut got = String::new();
+                for j in 0.. {
+                    let Some(l) = ids.get(&format!("forces-note-{j}")) else {
+                        break;
+                    };
+                    got += &words_of(l);
+                }
+                assert_eq!(got, want, "{name} {} ({lang:?})", s.name);
+            }
+        }
+    }
+}

@@ -83,6 +83,33 @@ pub fn scale_label(mu: f64, lang: Lang) -> Label {
     ))
 }
 
+/// The height of a line of the sheet's note, mm.
+const NOTE_LINE: f64 = 6.0;
+
+/// The note that the arrows on the free bodies are not to scale (only
+/// the polygons are, at μ_F), in the language's words, broken into lines
+/// no wider than `width` mm.
+fn note_lines(lang: Lang, width: f64) -> Vec<String> {
+    let words = &crate::words::catalogue(lang).sheets.not_to_scale;
+    let size = FONT * super::canvas::lettering();
+    let wide = |s: &str| super::canvas::runs_width(&crate::words::notation::runs(s), size);
+    let mut lines: Vec<String> = vec![String::new()];
+    for w in words.split(' ') {
+        let last = lines.last_mut().expect("a line");
+        let joined = if last.is_empty() {
+            w.to_string()
+        } else {
+            format!("{last} {w}")
+        };
+        if last.is_empty() || wide(&joined) <= width {
+            *last = joined;
+        } else {
+            lines.push(w.to_string());
+        }
+    }
+    lines
+}
+
 /// The least width and height of a free body's box, mm.
 const MIN_BODY: f64 = 30.0;
 
@@ -177,7 +204,11 @@ pub fn figure(
         let b = c.bounds();
         (a.0.max(b.width()), a.1.max(b.height()))
     });
-    let (grid, bodies) = best_grid(plans.len(), (field, polygon), &real, body)?;
+    // The note's lines under the panels.
+    let note = note_lines(opt.lang, field.0);
+    let note_band = NOTE_LINE * super::canvas::lettering() * note.len() as f64;
+    let panels = (field.0, field.1 - note_band);
+    let (grid, bodies) = best_grid(plans.len(), (panels, polygon), &real, body)?;
     let smallest = bodies
         .iter()
         .zip(&real)
@@ -200,6 +231,17 @@ pub fn figure(
         );
         mu_l.push(*mu);
         mu_f.push(plan.mu);
+    }
+    // The note at the foot of the field: the arrows are not to scale.
+    let line = NOTE_LINE * super::canvas::lettering();
+    for (j, text) in note.iter().enumerate() {
+        out.rich_id(
+            Point::new(0.0, -field.1 + (note.len() - 1 - j) as f64 * line + 1.5),
+            text,
+            FONT,
+            ("note", "start"),
+            format!("forces-note-{j}"),
+        );
     }
     Some(Figure {
         canvas: out,
