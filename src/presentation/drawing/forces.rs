@@ -156,12 +156,13 @@ impl Grid {
 }
 
 /// The figure of position `s` on a field of `field` mm; `None` without
-/// force plans.
+/// force plans. With `may_drop`, the equations under the polygons are
+/// left off where no grid holds the polygons with them.
 pub fn figure(
     an: &Analysis,
     s: &Solved,
     opt: &DrawOptions,
-    field: (f64, f64),
+    (field, may_drop): ((f64, f64), bool),
 ) -> Option<Figure> {
     let d = s.dynamics.as_ref()?;
     let fp = d.force_plans.as_ref()?;
@@ -190,25 +191,42 @@ pub fn figure(
         .map(|(i, p)| free_body::extent(&scene(i), p))
         .collect();
     let name = |f| names::force(&an.mech, loads, f, opt.lang);
-    let polygons: Vec<Canvas> = plans
-        .iter()
-        .enumerate()
-        .map(|(i, plan)| {
-            let mut c = Canvas::default();
-            force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
-            force_polygon::equation(plan, &name, &mut c, &tags[i]);
-            c
+    // The polygons with their equations under them; where no grid holds
+    // those and `may_drop` (a small field with no larger format to go to:
+    // the A2 course sheet), the polygons alone.
+    let draw_polygons = |equations: bool| -> Vec<Canvas> {
+        plans
+            .iter()
+            .enumerate()
+            .map(|(i, plan)| {
+                let mut c = Canvas::default();
+                force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
+                if equations {
+                    force_polygon::equation(plan, &name, &mut c, &tags[i]);
+                }
+                c
+            })
+            .collect()
+    };
+    let box_of = |polygons: &[Canvas]| {
+        polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
+            let b = c.bounds();
+            (a.0.max(b.width()), a.1.max(b.height()))
         })
-        .collect();
-    let polygon = polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
-        let b = c.bounds();
-        (a.0.max(b.width()), a.1.max(b.height()))
-    });
+    };
     // The note's lines under the panels.
     let note = note_lines(opt.lang, field.0);
     let note_band = NOTE_LINE * super::canvas::lettering() * note.len() as f64;
     let panels = (field.0, field.1 - note_band);
-    let (grid, bodies) = best_grid(plans.len(), (panels, polygon), &real, body)?;
+    let mut polygons = draw_polygons(true);
+    let mut polygon = box_of(&polygons);
+    let mut found = best_grid(plans.len(), (panels, polygon), &real, &body);
+    if found.is_none() && may_drop {
+        polygons = draw_polygons(false);
+        polygon = box_of(&polygons);
+        found = best_grid(plans.len(), (panels, polygon), &real, &body);
+    }
+    let (grid, bodies) = found?;
     let smallest = bodies
         .iter()
         .zip(&real)
@@ -260,7 +278,7 @@ fn best_grid(
     count: usize,
     (field, polygon): ((f64, f64), (f64, f64)),
     real: &[Rect],
-    body: impl Fn(usize, f64) -> Canvas,
+    body: &impl Fn(usize, f64) -> Canvas,
 ) -> Option<(Grid, Vec<(f64, Canvas)>)> {
     // (smallest body, the grid, the bodies drawn)
     type Candidate = (f64, Grid, Vec<(f64, Canvas)>);
