@@ -7,8 +7,9 @@
 //! dot, μ_F as the caption prints it) to 0.01 mm.
 
 use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
-use mechplan::kinetostatics::force_plan::ForceStep;
+use mechplan::kinetostatics::force_plan::{Force, ForceStep};
 use mechplan::words::construction::Lang;
+use mechplan::words::forces::force_name;
 use std::collections::HashMap;
 
 const DYNAMICS: &[&str] = &[
@@ -336,5 +337,371 @@ fn every_free_body_is_at_least_40_mm() {
         }
         assert!(smallest.is_finite(), "{name}: no free body found");
         eprintln!("{name}: smallest free body {smallest:.1} mm");
+    }
+}
+
+/// All the sheets with force panels of fixture `name` in `lang`: every
+/// position's force sheet and the course's force sheet.
+fn panel_sheets(name: &str, lang: Lang) -> (mechplan::Analysis, Vec<mechplan::Solved>, Vec<Sheet>) {
+    let (an, solved, mut sh) = solve(name, lang);
+    let opt = DrawOptions {
+        course: true,
+        lang,
+        ..DrawOptions::default()
+    };
+    sh.extend(
+        sheets(&an, &solved, &opt)
+            .into_iter()
+            .filter(|s| s.name == "course_forces"),
+    );
+    sh.retain(|s| s.name.starts_with("forces_") || s.name == "course_forces");
+    (an, solved, sh)
+}
+
+/// The position a sheet of [`panel_sheets`] draws (0-based).
+fn position_of(an: &mechplan::Analysis, solved: &[mechplan::Solved], s: &Sheet) -> usize {
+    match s.name.strip_prefix("forces_") {
+        Some(k) => k.parse::<usize>().unwrap() - 1,
+        None => mechplan::drawing::chosen::position(an, solved),
+    }
+}
+
+/// The two ends of a `<line>` (page mm).
+fn line_ends(l: &str) -> (kurbo::Point, kurbo::Point) {
+    (
+        kurbo::Point::new(attr(l, "x1").unwrap(), attr(l, "y1").unwrap()),
+        kurbo::Point::new(attr(l, "x2").unwrap(), attr(l, "y2").unwrap()),
+    )
+}
+
+/// The box of a `<polygon>`'s points (page mm).
+fn polygon_box(l: &str) -> kurbo::Rect {
+    let v: Vec<f64> = attr_str(l, "points")
+        .unwrap()
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    v.chunks(2)
+        .map(|p| kurbo::Rect::from_points((p[0], p[1]), (p[0], p[1])))
+        .reduce(|a, b| a.union(b))
+        .unwrap()
+}
+
+/// Every element with an id, by id (the sheets write one a line).
+fn by_id(svg: &str) -> HashMap<String, String> {
+    svg.lines()
+        .filter_map(|l| Some((attr_str(l, "id")?.to_string(), l.to_string())))
+        .collect()
+}
+
+/// The μ_l of panel `i` (1-based) of a sheet.
+fn mu_l(s: &Sheet, i: usize) -> f64 {
+    s.scales
+        .iter()
+        .filter(|(k, _)| *k == "mu_l")
+        .nth(i - 1)
+        .unwrap()
+        .1
+}
+
+/// A prismatic pair's reaction is drawn on its slider (R₀₅ stood 220 mm
+/// off the shaper's slider at its line of action, linked to nothing):
+/// every such arrow ends within 3 mm of its slider's block where the
+/// block is on the panel, and its line of action's offset from the
+/// slider's centre is a dimension line as long as the offset at the
+/// panel's μ_l (to 0.5 mm; one longer than 25 mm drawn 25 mm long).
+#[test]
+fn guide_reactions_are_drawn_on_their_sliders() {
+    let mut arrows = 0;
+    let mut offsets = 0;
+    for name in DYNAMICS {
+        let (an, solved, sh) = panel_sheets(name, Lang::En);
+        for s in &sh {
+            let k = position_of(&an, &solved, s);
+            let d = solved[k].dynamics.as_ref().unwrap();
+            let ids = by_id(&s.svg);
+            for (id, l) in &ids {
+                // "f1-force-8-p2": panel f1, pair 2.
+                let Some((tag, rest)) = id.split_once("-force-") else {
+                    continue;
+                };
+                let Some((_, pair)) = rest.split_once("-p") else {
+                    continue;
+                };
+                let Some(block) = ids.get(&format!("{tag}-slider-{pair}")) else {
+                    continue;
+                };
+                let b = polygon_box(block).inflate(3.0, 3.0);
+                let (p, q) = line_ends(l);
+                assert!(
+                    b.contains(p) || b.contains(q),
+                    "{name} {}: {id} from {p:?} to {q:?}, its slider at {b:?}",
+                    s.name
+                );
+                arrows += 1;
+            }
+            for (id, l) in &ids {
+                let Some((tag, pair)) = id.split_once("-offset-") else {
+                    continue;
+                };
+                let Ok(pair) = pair.parse::<usize>() else {
+                    continue;
+                };
+                let panel: usize = tag[1..].parse().unwrap();
+                let g = &d.prismatics[pair];
+                let x = (g.at.unwrap() - g.q).dot(g.u).abs() / mu_l(s, panel);
+                let (p, q) = line_ends(l);
+                let drawn = (q - p).hypot();
+                assert!(
+                    (drawn - x.min(25.0)).abs() <= 0.5,
+                    "{name} {}: {id} is {drawn:.2} mm, the offset {x:.2} mm at μ_l",
+                    s.name
+                );
+                assert!(ids.contains_key(&format!("{id}-label")), "{id} unlabelled");
+                offsets += 1;
+            }
+        }
+    }
+    assert!(
+        arrows > 0 && offsets > 0,
+        "{arrows} arrows, {offsets} offsets"
+    );
+}
+
+/// A text element's words, its tags and spaces dropped.
+fn words_of(l: &str) -> String {
+    let body = l.split_once('>').map_or("", |x| x.1);
+    let mut out = String::new();
+    let mut tag = false;
+    for ch in body.chars() {
+        match ch {
+            '<' => tag = true,
+            '>' => tag = false,
+            c if !tag && !c.is_whitespace() => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The forces of a plan's polygon in the order they are laid off round
+/// it from its start: the vectors laid off, then the component of the
+/// line through the last end and that of the line through the start
+/// (or the reaction read off from the end back to the start).
+fn laid_off(plan: &mechplan::kinetostatics::force_plan::ForcePlan) -> Vec<Force> {
+    let mut out = Vec::new();
+    let mut end = 0;
+    for st in &plan.steps {
+        if let ForceStep::LayOff(vi) = st {
+            out.push(plan.vectors[*vi].force);
+            end = plan.vectors[*vi].to;
+        }
+    }
+    let mut closed = false;
+    for st in &plan.steps {
+        if let ForceStep::Intersect {
+            lines, out: meet, ..
+        } = st
+        {
+            assert_eq!(plan.lines[lines[1]].through, end);
+            assert_eq!(plan.lines[lines[0]].through, 0);
+            let _ = meet;
+            out.push(plan.lines[lines[1]].force);
+            out.push(plan.lines[lines[0]].force);
+            closed = true;
+        }
+    }
+    if !closed {
+        let v = plan
+            .vectors
+            .iter()
+            .find(|v| v.from == end && v.to == 0)
+            .expect("a reaction closing the polygon");
+        out.push(v.force);
+    }
+    out
+}
+
+/// Beside every polygon its vector equation, as the course writes it:
+/// exactly the polygon's vectors, in the order laid off, "= 0".
+#[test]
+fn every_polygon_has_its_vector_equation() {
+    let mut count = 0;
+    for name in DYNAMICS {
+        for lang in [Lang::En, Lang::Uk] {
+            let (an, solved, sh) = panel_sheets(name, lang);
+            for s in &sh {
+                let k = position_of(&an, &solved, s);
+                let d = solved[k].dynamics.as_ref().unwrap();
+                let ids = by_id(&s.svg);
+                for (i, plan) in d.force_plans.as_ref().unwrap().plans.iter().enumerate() {
+                    let tag = format!("f{}", i + 1);
+                    let mut text = String::new();
+                    for j in 0.. {
+                        let Some(l) = ids.get(&format!("{tag}-equation-{j}")) else {
+                            break;
+                        };
+                        text += &words_of(l);
+                    }
+                    let want: Vec<String> = laid_off(plan)
+                        .into_iter()
+                        .map(|f| force_name(&an.mech, &d.loads, f, lang).replace(['^', '_'], ""))
+                        .collect();
+                    let want = want.join("+") + "=0";
+                    assert_eq!(text, want, "{name} {} {tag}", s.name);
+                    count += 1;
+                }
+            }
+        }
+    }
+    assert!(count > 0);
+}
+
+/// The point (m) each moment equation of a plan is taken about, by step,
+/// with its links: ΣM about a point for a component, the input link's
+/// about its pivot for the balancing moment.
+fn moment_points(
+    an: &mechplan::Analysis,
+    s: &mechplan::Solved,
+    plan: &mechplan::kinetostatics::force_plan::ForcePlan,
+) -> Vec<(usize, kurbo::Point, Vec<usize>)> {
+    let m = &an.mech;
+    let mut out = Vec::new();
+    for (i, st) in plan.steps.iter().enumerate() {
+        match st {
+            ForceStep::Moment { links, about, .. } => out.push((i, *about, links.clone())),
+            ForceStep::Balancing { input, .. } => {
+                if let Some(&mechplan::model::scene::InputSpec::Crank { link, pivot, .. }) =
+                    m.scene.inputs().nth(*input)
+                {
+                    out.push((i, s.config.point(m, link, pivot), vec![link]));
+                }
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The line of action of a plan's vector (a point, a direction; m) and
+/// the link it acts on: a load's, a pin's reaction, a guide's reaction at
+/// its line; `None` for the others.
+fn line_of(
+    an: &mechplan::Analysis,
+    s: &mechplan::Solved,
+    v: &mechplan::kinetostatics::force_plan::Drawn,
+) -> Option<(kurbo::Point, kurbo::Vec2, usize)> {
+    use mechplan::kinetostatics::Load;
+    use mechplan::kinetostatics::force_plan::Part;
+    use mechplan::model::structure::Joint;
+    let d = s.dynamics.as_ref().unwrap();
+    match v.force {
+        Force::Load(i) => match d.loads[i] {
+            Load::Force { link, at, f, .. } => Some((at, f, link)),
+            _ => None,
+        },
+        Force::Reaction {
+            to,
+            joint,
+            part: Part::Whole,
+            ..
+        } => match joint {
+            Joint::R(p) => Some((s.config.point(&an.mech, to, p), v.value, to)),
+            Joint::P(k) => {
+                let g = &d.prismatics[k];
+                Some((g.at.unwrap_or(g.q), v.value, to))
+            }
+        },
+        _ => None,
+    }
+}
+
+/// On each free body the arms h of the forces in the moment equations
+/// the method writes, as the course draws them: every known force
+/// (a load, a reaction of a group solved before) on an equation's links
+/// whose arm is 2 mm or more at the panel's μ_l has its arm, a thin line
+/// from the moment point as long as the point's distance from the
+/// force's line of action at μ_l (to 0.5 mm), labelled.
+#[test]
+fn free_bodies_show_the_arms_of_their_moment_equations() {
+    let mut arms = 0;
+    for name in DYNAMICS {
+        let (an, solved, sh) = panel_sheets(name, Lang::En);
+        for s in &sh {
+            let k = position_of(&an, &solved, s);
+            let sol = &solved[k];
+            let d = sol.dynamics.as_ref().unwrap();
+            let ids = by_id(&s.svg);
+            for (i, plan) in d.force_plans.as_ref().unwrap().plans.iter().enumerate() {
+                let tag = format!("f{}", i + 1);
+                let mu = mu_l(s, i + 1);
+                for (step, about, links) in moment_points(&an, sol, plan) {
+                    for (vi, v) in plan.vectors.iter().enumerate() {
+                        // A reaction read off this plan is no known force.
+                        if plan.steps.contains(&ForceStep::Measure(vi)) || v.value.hypot() == 0.0 {
+                            continue;
+                        }
+                        let Some((at, f, link)) = line_of(&an, sol, v) else {
+                            continue;
+                        };
+                        if !links.contains(&link) {
+                            continue;
+                        }
+                        // A reaction from inside the group is no outer force.
+                        if let Force::Reaction { from, .. } = v.force
+                            && plan.links.contains(&from)
+                        {
+                            continue;
+                        }
+                        let h = (about - at).cross(f).abs() / f.hypot() / mu;
+                        let id = format!("{tag}-arm-s{step}-v{vi}");
+                        let Some(l) = ids.get(&id) else {
+                            assert!(h < 2.0, "{name} {} {tag}: no arm {id} ({h:.1} mm)", s.name);
+                            continue;
+                        };
+                        let (p, q) = line_ends(l);
+                        let drawn = (q - p).hypot();
+                        assert!(
+                            (drawn - h).abs() <= 0.5,
+                            "{name} {} {id}: arm {drawn:.2} mm, the distance {h:.2} mm at μ_l",
+                            s.name
+                        );
+                        assert!(ids.contains_key(&format!("{id}-label")), "{id} unlabelled");
+                        arms += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(arms > 20, "{arms} arms");
+    eprintln!("{arms} arms checked");
+}
+
+/// Every force sheet (and the course's) says, in its language, that the
+/// arrows on the free bodies are not to scale, only the polygons are.
+#[test]
+fn force_sheets_say_their_arrows_are_not_to_scale() {
+    for lang in [Lang::En, Lang::Uk, Lang::Ru] {
+        let want: String = mechplan::words::catalogue(lang)
+            .sheets
+            .not_to_scale
+            .chars()
+            .filter(|c| !c.is_whitespace() && *c != '_')
+            .collect();
+        for name in ["shaper_fig2_11", "compressor_fig2_12"] {
+            let (_, _, sh) = panel_sheets(name, lang);
+            assert!(sh.iter().any(|s| s.name == "course_forces"));
+            for s in &sh {
+                let ids = by_id(&s.svg);
+                let mut got = String::new();
+                for j in 0.. {
+                    let Some(l) = ids.get(&format!("forces-note-{j}")) else {
+                        break;
+                    };
+                    got += &words_of(l);
+                }
+                assert_eq!(got, want, "{name} {} ({lang:?})", s.name);
+            }
+        }
     }
 }

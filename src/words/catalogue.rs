@@ -204,6 +204,9 @@ pub struct SheetPhrases {
     pub reactions_title: String,
     /// The force sheets' title, and a panel's: a group, the input link.
     pub force_sheets: String,
+    /// The force sheets' note: the arrows on the free bodies are not to
+    /// scale, only the polygons are (at their μ_F, in the notation).
+    pub not_to_scale: String,
     /// A panel of a class II group, as the course names it: `{class}`,
     /// `{kind}` (the textbooks' вид, 1…5), `{links}`, `{letters}` (RRP).
     pub group: String,

@@ -471,7 +471,7 @@ fn force_figure(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Option<(SheetSi
     for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
         let o = DrawOptions { sheet: size, ..*opt };
         // None: no force plans, or none of the grids holds the polygons.
-        let Some(f) = forces::figure(an, s, &o, field_size(&o, 0.0)) else {
+        let Some(f) = forces::figure(an, s, &o, (field_size(&o, 0.0), false)) else {
             continue;
         };
         if f.smallest >= forces::LEAST_BODY {

@@ -131,7 +131,7 @@ fn figures(
     let lang = opt.lang;
     let pos = super::position_text(an, s, k, lang);
     let mut out = Vec::new();
-    if let Some(f) = forces::figure(an, s, opt, panels) {
+    if let Some(f) = forces::figure(an, s, opt, (panels, true)) {
         out.push(Figure {
             id: "forces".into(),
             caption: vec![format!("{}, {pos}", forces::title(lang))],

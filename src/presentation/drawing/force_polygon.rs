@@ -115,3 +115,101 @@ pub fn draw(
     }
     c.place_pending();
 }
+
+/// The forces of `plan`'s vector equation in the order they are laid off
+/// round the polygon from its start: the vectors laid off, then the
+/// closing ones — the second line's component from the last vector's end
+/// to the meeting point and the first line's back to the start (or the
+/// one reaction read off from the end back to the start).
+pub fn equation_terms(plan: &ForcePlan) -> Vec<Force> {
+    let mut out: Vec<Force> = Vec::new();
+    let mut end = 0;
+    for st in &plan.steps {
+        if let ForceStep::LayOff(vi) = st
+            && let Some(v) = plan.vectors.get(*vi)
+        {
+            out.push(v.force);
+            end = v.to;
+        }
+    }
+    let meet = plan.steps.iter().find_map(|st| match st {
+        ForceStep::Intersect { lines, .. } => Some(*lines),
+        _ => None,
+    });
+    match meet {
+        Some([a, b]) => {
+            out.extend(
+                [b, a]
+                    .iter()
+                    .filter_map(|&l| plan.lines.get(l).map(|l| l.force)),
+            );
+        }
+        None => {
+            if let Some(v) = plan.vectors.iter().enumerate().find(|(vi, v)| {
+                v.from == end && v.to == 0 && plan.steps.contains(&ForceStep::Measure(*vi))
+            }) {
+                out.push(v.1.force);
+            }
+        }
+    }
+    out
+}
+
+/// The width the equation is wrapped to at least, mm.
+const EQUATION_WIDTH: f64 = 60.0;
+
+/// The vector equation of `plan` under what `c` holds (its polygon), in
+/// the order of laying off and with the polygon's names ("R^τ_34 + Φ_4 +
+/// … + R^n_34 = 0"), wrapped to the polygon's width (at least
+/// [`EQUATION_WIDTH`]); its lines' ids `{tag}-equation-{j}`.
+pub fn equation(
+    plan: &ForcePlan,
+    name: &dyn Fn(Force) -> Option<Label>,
+    c: &mut Canvas,
+    tag: &str,
+) {
+    use super::canvas::{lettering, runs_width};
+    use crate::words::notation::runs;
+    let terms: Vec<String> = equation_terms(plan)
+        .into_iter()
+        .filter_map(|f| name(f).map(|l| crate::words::forces::plain(&l)))
+        .collect();
+    if terms.is_empty() {
+        return;
+    }
+    let size = FONT * lettering();
+    let b = c.bounds();
+    let width = b.width().max(EQUATION_WIDTH);
+    let wide = |s: &str| runs_width(&runs(s), size);
+    let mut lines: Vec<String> = vec![String::new()];
+    let n = terms.len();
+    for (i, t) in terms.iter().enumerate() {
+        let piece = if i + 1 == n {
+            format!("{t} = 0")
+        } else {
+            format!("{t} +")
+        };
+        let last = lines.last_mut().expect("a line");
+        let joined = if last.is_empty() {
+            piece.clone()
+        } else {
+            format!("{last} {piece}")
+        };
+        if last.is_empty() || wide(&joined) <= width {
+            *last = joined;
+        } else {
+            lines.push(piece);
+        }
+    }
+    let step = 2.0 * size;
+    for (j, line) in lines.iter().enumerate() {
+        let at = Point::new(b.x0, b.y0 - 1.5 - 1.6 * size - j as f64 * step);
+        c.rich_id(
+            at,
+            line,
+            FONT,
+            ("equation", "start"),
+            format!("{tag}-equation-{j}"),
+        );
+    }
+}

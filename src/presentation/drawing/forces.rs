@@ -83,6 +83,33 @@ pub fn scale_label(mu: f64, lang: Lang) -> Label {
     ))
 }
 
+/// The height of a line of the sheet's note, mm.
+const NOTE_LINE: f64 = 6.0;
+
+/// The note that the arrows on the free bodies are not to scale (only
+/// the polygons are, at μ_F), in the language's words, broken into lines
+/// no wider than `width` mm.
+fn note_lines(lang: Lang, width: f64) -> Vec<String> {
+    let words = &crate::words::catalogue(lang).sheets.not_to_scale;
+    let size = FONT * super::canvas::lettering();
+    let wide = |s: &str| super::canvas::runs_width(&crate::words::notation::runs(s), size);
+    let mut lines: Vec<String> = vec![String::new()];
+    for w in words.split(' ') {
+        let last = lines.last_mut().expect("a line");
+        let joined = if last.is_empty() {
+            w.to_string()
+        } else {
+            format!("{last} {w}")
+        };
+        if last.is_empty() || wide(&joined) <= width {
+            *last = joined;
+        } else {
+            lines.push(w.to_string());
+        }
+    }
+    lines
+}
+
 /// The least width and height of a free body's box, mm.
 const MIN_BODY: f64 = 30.0;
 
@@ -129,12 +156,13 @@ impl Grid {
 }
 
 /// The figure of position `s` on a field of `field` mm; `None` without
-/// force plans.
+/// force plans. With `may_drop`, the equations under the polygons are
+/// left off where no grid holds the polygons with them.
 pub fn figure(
     an: &Analysis,
     s: &Solved,
     opt: &DrawOptions,
-    field: (f64, f64),
+    (field, may_drop): ((f64, f64), bool),
 ) -> Option<Figure> {
     let d = s.dynamics.as_ref()?;
     let fp = d.force_plans.as_ref()?;
@@ -163,20 +191,42 @@ pub fn figure(
         .map(|(i, p)| free_body::extent(&scene(i), p))
         .collect();
     let name = |f| names::force(&an.mech, loads, f, opt.lang);
-    let polygons: Vec<Canvas> = plans
-        .iter()
-        .enumerate()
-        .map(|(i, plan)| {
-            let mut c = Canvas::default();
-            force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
-            c
+    // The polygons with their equations under them; where no grid holds
+    // those and `may_drop` (a small field with no larger format to go to:
+    // the A2 course sheet), the polygons alone.
+    let draw_polygons = |equations: bool| -> Vec<Canvas> {
+        plans
+            .iter()
+            .enumerate()
+            .map(|(i, plan)| {
+                let mut c = Canvas::default();
+                force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
+                if equations {
+                    force_polygon::equation(plan, &name, &mut c, &tags[i]);
+                }
+                c
+            })
+            .collect()
+    };
+    let box_of = |polygons: &[Canvas]| {
+        polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
+            let b = c.bounds();
+            (a.0.max(b.width()), a.1.max(b.height()))
         })
-        .collect();
-    let polygon = polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
-        let b = c.bounds();
-        (a.0.max(b.width()), a.1.max(b.height()))
-    });
-    let (grid, bodies) = best_grid(plans.len(), (field, polygon), &real, body)?;
+    };
+    // The note's lines under the panels.
+    let note = note_lines(opt.lang, field.0);
+    let note_band = NOTE_LINE * super::canvas::lettering() * note.len() as f64;
+    let panels = (field.0, field.1 - note_band);
+    let mut polygons = draw_polygons(true);
+    let mut polygon = box_of(&polygons);
+    let mut found = best_grid(plans.len(), (panels, polygon), &real, &body);
+    if found.is_none() && may_drop {
+        polygons = draw_polygons(false);
+        polygon = box_of(&polygons);
+        found = best_grid(plans.len(), (panels, polygon), &real, &body);
+    }
+    let (grid, bodies) = found?;
     let smallest = bodies
         .iter()
         .zip(&real)
@@ -200,6 +250,17 @@ pub fn figure(
         mu_l.push(*mu);
         mu_f.push(plan.mu);
     }
+    // The note at the foot of the field: the arrows are not to scale.
+    let line = NOTE_LINE * super::canvas::lettering();
+    for (j, text) in note.iter().enumerate() {
+        out.rich_id(
+            Point::new(0.0, -field.1 + (note.len() - 1 - j) as f64 * line + 1.5),
+            text,
+            FONT,
+            ("note", "start"),
+            format!("forces-note-{j}"),
+        );
+    }
     Some(Figure {
         canvas: out,
         mu_l,
@@ -217,7 +278,7 @@ fn best_grid(
     count: usize,
     (field, polygon): ((f64, f64), (f64, f64)),
     real: &[Rect],
-    body: impl Fn(usize, f64) -> Canvas,
+    body: &impl Fn(usize, f64) -> Canvas,
 ) -> Option<(Grid, Vec<(f64, Canvas)>)> {
     // (smallest body, the grid, the bodies drawn)
     type Candidate = (f64, Grid, Vec<(f64, Canvas)>);

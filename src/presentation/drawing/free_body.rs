@@ -10,6 +10,8 @@
 //! away, so that the two kinds stay apart.
 
 use super::canvas::{Canvas, Class, FONT, Label, Line, MAIN, SMALL};
+use super::free_body_marks::{self as marks, Arrow, BLOCK, Drawn, Kind};
+pub use super::free_body_marks::Scene;
 use super::{cylinder, mechanism};
 use crate::geom::perp;
 use crate::kinematics::solve::Analysis;
@@ -29,42 +31,8 @@ use std::f64::consts::PI;
 /// its field; the shortest a third of the longest.
 const ARROW_SHARE: f64 = 0.6;
 const LONGEST: (f64, f64) = (10.0, 30.0);
-/// A slider block's half length and half width, mm (as on the plan of
-/// the mechanism).
-const BLOCK: (f64, f64) = (5.0, 3.0);
 /// The radius of a couple's curved arrow, mm.
 const COUPLE_R: f64 = 6.0;
-
-/// What a force of the drawing is: a load or a known reaction, an
-/// unknown reaction found, or a component of one.
-#[derive(Clone, Copy, PartialEq)]
-enum Kind {
-    Known,
-    Found,
-    Component,
-}
-
-/// A force drawn as an arrow from its point.
-struct Arrow {
-    at: Point,
-    f: Vec2,
-    label: Label,
-    kind: Kind,
-    /// A reaction (of a pair), not a load.
-    reaction: bool,
-}
-
-/// What the drawing of one plan needs: the analysis, the position, its
-/// force analysis and loads, the language and the ids' prefix.
-pub struct Scene<'a> {
-    pub an: &'a Analysis,
-    pub s: &'a Solved,
-    pub d: &'a Dynamics,
-    pub loads: &'a [Load],
-    pub lang: Lang,
-    /// Prefixes every id, so that the panels of one sheet stay apart.
-    pub tag: &'a str,
-}
 
 /// The real extent (m) of the links of `plan`: where [`draw`] starts its
 /// search for the scale.
@@ -91,7 +59,9 @@ pub fn draw(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, mu_l: f64) {
     let size = extent(sc, plan);
     let longest =
         (ARROW_SHARE * size.width().hypot(size.height()) / mu_l).clamp(LONGEST.0, LONGEST.1);
-    draw_arrows(c, &arrows, longest, sc.tag);
+    let segs = draw_arrows(c, &arrows, longest, sc.tag);
+    marks::offsets(sc, c, &arrows, mu_l);
+    marks::arms(sc, plan, c, (&arrows, &segs), &to);
     let mut busy = lines;
     busy.extend(arrows.iter().map(|a| (a.at, a.at + a.f)));
     for (i, (centre, value, label)) in couples(sc, plan, &to).into_iter().enumerate() {
@@ -196,7 +166,12 @@ fn prismatics(
         }
         if slider {
             let (a, b) = BLOCK;
-            c.poly(mechanism::block_corners(q, u, a, b).to_vec(), "white", MAIN);
+            c.poly_id(
+                mechanism::block_corners(q, u, a, b).to_vec(),
+                "white",
+                MAIN,
+                format!("{}-slider-{k}", sc.tag),
+            );
         }
     }
 }
@@ -292,9 +267,16 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
     let place = |joint: Joint, on: usize| match joint {
         Joint::R(p) => Some(to(s.config.point(m, on, p))),
         Joint::P(k) => {
-            let at = sc.d.prismatics.get(k).and_then(|g| g.at);
-            (k < m.prismatics.len()).then(|| to(at.unwrap_or_else(|| guide_frame(an, s, k).0)))
+            // At the slider's centre, on its body: the line of action
+            // (which may lie far off the block) is shown by its offset.
+            (k < m.prismatics.len()).then(|| to(guide_frame(an, s, k).0))
         }
+    };
+    let guide_of = |f: Force| match f {
+        Force::Reaction {
+            joint: Joint::P(k), ..
+        } => Some(k),
+        _ => None,
     };
     let found = |vi: usize| plan.steps.contains(&ForceStep::Measure(vi));
     let mut out: Vec<Arrow> = Vec::new();
@@ -308,7 +290,9 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
         };
         let arrow = match v.force {
             Force::Load(i) => match sc.loads.get(i) {
-                Some(&Load::Force { link, at, .. }) if ours(link) => Some((to(at), Kind::Known)),
+                Some(&Load::Force { link, at, .. }) if ours(link) => {
+                    Some((to(at), Kind::Known, link))
+                }
                 _ => None,
             },
             Force::Reaction {
@@ -322,25 +306,36 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
                     Part::Whole => Kind::Known,
                     _ => Kind::Component,
                 };
-                place(joint, on).map(|at| (at, kind))
+                place(joint, on).map(|at| (at, kind, on))
             }
             Force::Drive { input, on } if ours(on) => match m.scene.inputs().nth(input) {
                 Some(&InputSpec::Slider { pair, .. }) if pair < m.prismatics.len() => {
-                    Some((to(guide_frame(an, s, pair).0), Kind::Known))
+                    Some((to(guide_frame(an, s, pair).0), Kind::Known, on))
                 }
                 _ => None,
             },
             _ => None,
         };
-        let Some((at, kind)) = arrow else { continue };
+        let Some((at, kind, link)) = arrow else {
+            continue;
+        };
         let sub = label.sub.clone();
         done.push(v.force);
+        let guide = guide_of(v.force);
+        let line = guide
+            .and_then(|k| sc.d.prismatics.get(k))
+            .and_then(|g| g.at)
+            .map_or(at, to);
         out.push(Arrow {
             at,
             f: v.value,
             label,
             kind,
             reaction: !matches!(v.force, Force::Load(_)),
+            guide,
+            vi: Some(vi),
+            link,
+            line,
         });
         // A component found first: the rest of its reaction (n after τ)
         // is the other component.
@@ -369,6 +364,10 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
                     label: Label::new("R", sub).with_sup(names::part_sup(other)),
                     kind: Kind::Component,
                     reaction: true,
+                    guide: guide_of(v.force),
+                    vi: None,
+                    link: on,
+                    line,
                 });
             }
         }
@@ -378,12 +377,19 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
 
 /// Draw the arrows from their points, lengths ranked by magnitude; one
 /// that would lie along another from the same point is moved aside.
-fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
+fn draw_arrows(
+    c: &mut Canvas,
+    arrows: &[Arrow],
+    longest: f64,
+    tag: &str,
+) -> Vec<Drawn> {
     let fmax = arrows.iter().map(|a| a.f.hypot()).fold(0.0, f64::max);
     let mut drawn: Vec<(Point, Vec2)> = Vec::new();
+    let mut segs = Vec::new();
     for (i, a) in arrows.iter().enumerate() {
         let mag = a.f.hypot();
         if !(mag > 0.0 && mag.is_finite()) {
+            segs.push(None);
             continue;
         }
         let u = a.f / mag;
@@ -407,7 +413,12 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
         } else {
             (at - u * len, at)
         };
-        c.vector(from, tip, class, Some(format!("{tag}-force-{i}")));
+        let id = match a.guide {
+            Some(k) => format!("{tag}-force-{i}-p{k}"),
+            None => format!("{tag}-force-{i}"),
+        };
+        c.vector(from, tip, class, Some(id));
+        segs.push(Some((from, tip)));
         // The name at the far end, away from the crowd at the point.
         c.label_later(
             at + out * len,
@@ -416,6 +427,7 @@ fn draw_arrows(c: &mut Canvas, arrows: &[Arrow], longest: f64, tag: &str) {
             Some(format!("{tag}-flabel-{i}")),
         );
     }
+    segs
 }
 
 /// A couple as a curved arrow about `centre` in the widest free sector

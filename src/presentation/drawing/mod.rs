@@ -23,6 +23,7 @@ pub mod export;
 pub mod force_polygon;
 pub mod forces;
 pub mod free_body;
+mod free_body_marks;
 pub mod frenet;
 pub mod html;
 mod handout_forces;

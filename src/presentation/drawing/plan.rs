@@ -106,6 +106,7 @@ impl Steps<'_> {
                         pts: vec![self.at(*a), self.at(*b), self.at(*out)],
                         fill: "#e3e3e3",
                         stroke: 0.25,
+                        id: None,
                     });
                     self.used[*out] = true;
                 }

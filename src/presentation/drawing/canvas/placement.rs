@@ -120,7 +120,23 @@ impl Canvas {
             size,
             class,
             anchor,
+            id: None,
         });
+    }
+
+    /// [`Canvas::rich`] with an id the checks read it by.
+    pub fn rich_id(
+        &mut self,
+        at: Point,
+        text: &str,
+        size: f64,
+        (class, anchor): (&'static str, &'static str),
+        id: String,
+    ) {
+        self.rich(at, text, size, class, anchor);
+        if let Some(Prim::Rich { id: slot, .. }) = self.prims.last_mut() {
+            *slot = Some(id);
+        }
     }
 }
 

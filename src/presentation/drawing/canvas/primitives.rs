@@ -111,6 +111,7 @@ pub enum Prim {
         pts: Vec<Point>,
         fill: &'static str,
         stroke: f64,
+        id: Option<String>,
     },
     Circle {
         c: Point,
@@ -140,6 +141,7 @@ pub enum Prim {
         size: f64,
         class: &'static str,
         anchor: &'static str,
+        id: Option<String>,
     },
     /// Text whose box's lower-left corner is `at` (drawing coordinates).
     Text {
@@ -226,7 +228,21 @@ impl Canvas {
         for i in 0..pts.len() {
             self.avoid.push((pts[i], pts[(i + 1) % pts.len()]));
         }
-        self.prims.push(Prim::Poly { pts, fill, stroke });
+        self.prims.push(Prim::Poly {
+            pts,
+            fill,
+            stroke,
+            id: None,
+        });
+    }
+
+    /// [`Canvas::poly`] with an id the checks can find it by (a slider's
+    /// block on a free body).
+    pub fn poly_id(&mut self, pts: Vec<Point>, fill: &'static str, stroke: f64, id: String) {
+        self.poly(pts, fill, stroke);
+        if let Some(Prim::Poly { id: slot, .. }) = self.prims.last_mut() {
+            *slot = Some(id);
+        }
     }
 
     /// A vector with its arrowhead at `b`.

@@ -86,12 +86,18 @@ impl Canvas {
         for p in &self.prims {
             match p {
                 Prim::Seg { a, b, class, id } => seg_svg(out, o, (*a, *b), *class, id),
-                Prim::Poly { pts, fill, stroke } => {
+                Prim::Poly {
+                    pts,
+                    fill,
+                    stroke,
+                    id,
+                } => {
                     let d: Vec<String> = pts.iter().map(|q| o.xy(*q)).collect();
                     let stroke = stroke_attr(*stroke);
+                    let id = id_attr(id);
                     let _ = writeln!(
                         out,
-                        r#"<polygon points="{}" fill="{fill}"{stroke}/>"#,
+                        r#"<polygon{id} points="{}" fill="{fill}"{stroke}/>"#,
                         d.join(" ")
                     );
                 }
@@ -131,7 +137,9 @@ impl Canvas {
                     size,
                     class,
                     anchor,
+                    id,
                 } => {
+                    let id = id_attr(id);
                     let anchor = if *anchor == "start" {
                         String::new()
                     } else {
@@ -139,7 +147,7 @@ impl Canvas {
                     };
                     let _ = writeln!(
                         out,
-                        r#"<text class="{class}" x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
                         o.x(*at),
                         o.y(*at),
                         fmt(*size),
