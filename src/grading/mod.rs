@@ -28,6 +28,8 @@ pub mod read;
 mod relative;
 mod steps;
 pub mod svg;
+pub mod dxf;
+pub(crate) mod drawing;
 mod verdict;
 
 pub use verdict::Candidate as Explanation;
