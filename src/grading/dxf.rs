@@ -661,6 +661,11 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
             "the DXF file has no lines and no texts (LINE, LWPOLYLINE, POLYLINE, TEXT, MTEXT) in its ENTITIES: no plan",
         ));
     }
+    if out.labels.is_empty() {
+        return Err(whole(
+            "the DXF file has no texts (TEXT, MTEXT): label the pole p_v (or p_a) and the plan's points beside their vectors' ends",
+        ));
+    }
     // Drawing units to mm, y up to the drawing's y down.
     let mm = |p: Point| Point::new(p.x * unit, -p.y * unit);
     Ok(Drawing {
