@@ -339,3 +339,31 @@ fn bad_dxf_answers_are_refused_naming_what_and_where() {
     assert!(err.contains("at most"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The example of docs/check.md ("A DXF drawn in a CAD") is graded right,
+/// its title left alone; with CRLF line ends too.
+#[test]
+fn the_documented_dxf_answer_is_right() {
+    let doc =
+        std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let start = doc.find("```dxf\n").expect("a dxf block in docs/check.md") + 7;
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let dir = fresh("doc");
+    for (name, text) in [
+        ("lf.dxf", text.to_string()),
+        ("crlf.dxf", text.replace('\n', "\r\n")),
+    ] {
+        let f = dir.join(name);
+        std::fs::write(&f, text).unwrap();
+        let (code, out, err) = run(&[
+            "check",
+            "fixtures/four_bar.json",
+            f.to_str().unwrap(),
+            "--position",
+            "2",
+        ]);
+        assert_eq!(code, 0, "{name}: {out}{err}");
+        assert!(out.contains("3 of 3 right"), "{out}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -81,16 +81,6 @@ pub(crate) struct Drawing {
     pub kind: &'static str,
 }
 
-/// A drawing's text, read by its format: DXF when it looks like one
-/// ([`super::dxf::looks_like_dxf`]), else SVG.
-pub(crate) fn parse(text: &str) -> Result<Drawing> {
-    if super::dxf::looks_like_dxf(text) {
-        super::dxf::parse(text)
-    } else {
-        super::svg::parse(text)
-    }
-}
-
 /// The scale a drawing states in a text such as "μ_v = 0.01 (m/s)/mm",
 /// "μ_F = 2 N/mm" (`prefix`: "" for any μ, "_F" for a force plan's).
 pub(crate) fn stated_mu(labels: &[(String, Point)], prefix: &str) -> Option<f64> {

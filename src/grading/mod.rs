@@ -29,6 +29,7 @@ mod relative;
 mod steps;
 pub mod svg;
 pub mod dxf;
+mod dxf_text;
 pub(crate) mod drawing;
 mod verdict;
 

@@ -30,7 +30,7 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
     }
     let svg = svg || text.trim_start().starts_with('<') || super::dxf::looks_like_dxf(text);
     let mut ans = if svg {
-        super::drawing::parse(text).and_then(|d| {
+        drawing(text).and_then(|d| {
             super::drawing::answer_of(
                 d,
                 r.mu,
@@ -50,4 +50,14 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
         ans.position = p;
     }
     Ok(ans)
+}
+
+/// A drawing's text, read by its format: DXF when it looks like one
+/// ([`super::dxf::looks_like_dxf`]), else SVG.
+pub(crate) fn drawing(text: &str) -> Result<super::drawing::Drawing> {
+    if super::dxf::looks_like_dxf(text) {
+        super::dxf::parse(text)
+    } else {
+        super::svg::parse(text)
+    }
 }

@@ -171,7 +171,7 @@ fn table(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Vec<(Strin
 
 /// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").
 pub fn is_force_svg(text: &str) -> bool {
-    crate::grading::drawing::parse(text)
+    crate::grading::read::drawing(text)
         .ok()
         .is_some_and(|d| crate::grading::drawing::stated_mu(&d.labels, "_F").is_some())
 }
@@ -194,7 +194,7 @@ pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Res
             message: m,
         }])
     };
-    let d = crate::grading::drawing::parse(text)?;
+    let d = crate::grading::read::drawing(text)?;
     let Some(mu) = mu.or_else(|| crate::grading::drawing::stated_mu(&d.labels, "_F")) else {
         return Err(bad(
             "no scale: write \"μ_F = … N/mm\" on the drawing or give --mu".into(),
