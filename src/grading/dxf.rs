@@ -382,8 +382,16 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
                 e.place()
             )));
         }
+        // An entity drawn in its object coordinates with the extrusion
+        // turned over (a mirrored one, z = -1): x is -x of the world's.
+        let world = t;
+        let t = if e.num(230, Some(1.0))? < 0.0 && e.kind != "LINE" && e.kind != "MTEXT" {
+            t * Affine::FLIP_X
+        } else {
+            t
+        };
         match e.kind {
-            "LINE" => out.lines.push(vec![t * e.point(10)?, t * e.point(11)?]),
+            "LINE" => out.lines.push(vec![world * e.point(10)?, world * e.point(11)?]),
             "LWPOLYLINE" => {
                 let mut ps: Vec<Point> = e.points()?.into_iter().map(|p| t * p).collect();
                 if e.flags(70) & 1 == 1 && ps.len() > 2 {
@@ -513,7 +521,9 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
             "a binary DXF file: save the drawing as an ASCII DXF (R12 to R2018) to have it checked",
         ));
     }
-    let gs = groups(text.strip_prefix('\u{feff}').unwrap_or(text))?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    // Blank lines at the end of a file that lacks its EOF are no group.
+    let gs = groups(text.trim_end())?;
     let file = read_file(&gs)?;
     let unit = mm_per_unit(file.units)?;
     let mut out = Out {
@@ -561,6 +571,20 @@ pub fn from_dxf(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An LWPOLYLINE and a TEXT with the extrusion turned over are
+    /// mirrored in x; a LINE is in world coordinates; blank lines at the
+    /// end are no group.
+    #[test]
+    fn object_coordinates_turned_over_are_mirrored() {
+        let t = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n90\n2\n10\n10\n20\n5\n10\n20\n20\n5\n230\n-1\n\
+                 0\nLINE\n10\n10\n20\n5\n11\n20\n21\n5\n230\n-1\n\
+                 0\nTEXT\n10\n10\n20\n5\n40\n2\n1\nb\n230\n-1\n0\nENDSEC\n\n\n";
+        let d = parse(t).unwrap();
+        assert_eq!(d.lines[0], vec![Point::new(-10.0, -5.0), Point::new(-20.0, -5.0)]);
+        assert_eq!(d.lines[1], vec![Point::new(10.0, -5.0), Point::new(20.0, -5.0)]);
+        assert!(d.labels[0].1.x < -10.0, "{:?}", d.labels[0]);
+    }
 
     #[test]
     fn dxf_is_sniffed() {
