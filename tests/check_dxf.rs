@@ -315,6 +315,25 @@ fn bad_dxf_answers_are_refused_naming_what_and_where() {
         err.contains("INSERT at line") && err.contains("B16"),
         "{err}"
     );
+    // Blocks that expand to millions of entities: 8 levels of 10 inserts.
+    let mut bomb = String::from("0\nSECTION\n2\nBLOCKS\n");
+    for k in 0..8 {
+        bomb.push_str(&format!("0\nBLOCK\n2\nB{k}\n10\n0\n20\n0\n"));
+        for j in 0..10 {
+            if k < 7 {
+                bomb.push_str(&format!("0\nINSERT\n2\nB{}\n10\n{j}\n20\n0\n", k + 1));
+            }
+        }
+        if k == 7 {
+            bomb.push_str("0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n");
+        }
+        bomb.push_str("0\nENDBLK\n");
+    }
+    bomb.push_str(
+        "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nB0\n10\n0\n20\n0\n0\nENDSEC\n",
+    );
+    let err = refused(&f, hand(&bomb).as_bytes(), &[]);
+    assert!(err.contains("more than 1000000 entities"), "{err}");
     // A block that inserts itself.
     let cycle = hand(
         "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nA\n10\n0\n20\n0\n0\nINSERT\n2\nA\n10\n1\n20\n0\n0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nA\n10\n0\n20\n0\n0\nENDSEC\n",
