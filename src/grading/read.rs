@@ -1,5 +1,5 @@
-//! An answer's text read, JSON or a drawing (SVG), with what the command
-//! line says over it ([`Reading`]).
+//! An answer's text read, JSON or a drawing (SVG, DXF), with what the
+//! command line says over it ([`Reading`]).
 
 use super::answer::{Answer, check_size, delta_issue, from_json};
 use crate::error::{Error, Result};

@@ -1,5 +1,5 @@
-//! `check SCENE ANSWER` as one call: the two files read (the answer JSON
-//! or SVG, refused when larger than the grading reads), the answer
+//! `check SCENE ANSWER` as one call: the two files read (the answer JSON,
+//! SVG or DXF, refused when larger than the grading reads), the answer
 //! checked ([`super::Solution::check_answer`]), the overlay written when
 //! asked, and the report as text or JSON with its exit status. The binary
 //! only parses its arguments.
