@@ -428,5 +428,52 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
             String::from_utf8_lossy(&out.stdout)
         );
     }
+    // The same plan drawn in a CAD and saved as DXF (y up, LINE and
+    // TEXT, "μ_F = 2 N/mm" as \U+03BC): read and judged as the SVG.
+    let dxf = |stretch: Option<&str>| {
+        let mut body = String::new();
+        for v in &plan.vectors {
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
+                &loads,
+                v.force,
+                mechplan::words::construction::Lang::En,
+            );
+            let (a, mut b) = (plan.points[v.from], plan.points[v.to]);
+            if stretch == Some(name.as_str()) {
+                b = a + (b - a) * 1.5;
+            }
+            let (pa, pb) = ((100.0 + a.x, 100.0 + a.y), (100.0 + b.x, 100.0 + b.y));
+            let m = ((pa.0 + pb.0) / 2.0, (pa.1 + pb.1) / 2.0);
+            let n = kurbo::Vec2::new(pb.1 - pa.1, -(pb.0 - pa.0)).normalize() * -2.0;
+            body += &format!(
+                "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n0\nTEXT\n8\n0\n10\n{}\n20\n{}\n40\n3\n1\n{name}\n",
+                pa.0,
+                pa.1,
+                pb.0,
+                pb.1,
+                m.0 + n.x - 0.9,
+                m.1 + n.y - 1.05
+            );
+        }
+        format!(
+            "0\nSECTION\n2\nENTITIES\n{body}0\nTEXT\n8\n0\n10\n10\n20\n5\n40\n3\n1\n\\U+03BC_F = 2 N/mm\n0\nENDSEC\n0\nEOF\n"
+        )
+    };
+    for (stretch, status) in [(None, 0), (Some("R_05"), 1)] {
+        let p = dir.join("plan.dxf");
+        std::fs::write(&p, dxf(stretch)).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &scene_path(), p.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(status),
+            "{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -526,7 +526,7 @@ fn refusals_and_the_default_output() {
     std::fs::create_dir_all(&empty).unwrap();
     let (code, _, err) = run(&["check", SCENE, empty.to_str().unwrap(), "-o", o]);
     assert_eq!(code, 2);
-    assert!(err.contains("no *.json or *.svg"), "{err}");
+    assert!(err.contains("no *.json, *.svg or *.dxf"), "{err}");
     let bad_scene = dir.join("scene.json");
     std::fs::write(&bad_scene, "{").unwrap();
     let (code, _, _) = run(&["check", bad_scene.to_str().unwrap(), ad, "-o", o]);

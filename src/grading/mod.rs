@@ -28,6 +28,9 @@ pub mod read;
 mod relative;
 mod steps;
 pub mod svg;
+pub mod dxf;
+mod dxf_text;
+pub(crate) mod drawing;
 mod verdict;
 
 pub use verdict::Candidate as Explanation;

@@ -1,5 +1,5 @@
-//! An answer's text read, JSON or a drawing (SVG), with what the command
-//! line says over it ([`Reading`]).
+//! An answer's text read, JSON or a drawing (SVG, DXF), with what the
+//! command line says over it ([`Reading`]).
 
 use super::answer::{Answer, check_size, delta_issue, from_json};
 use crate::error::{Error, Result};
@@ -16,8 +16,9 @@ pub struct Reading {
     pub position: Option<usize>,
 }
 
-/// Read an answer's text — JSON, or an SVG drawn in a vector editor
-/// (`svg`: by its file's extension, or when its first character is `<`) —
+/// Read an answer's text — JSON, or a drawing: an SVG drawn in a vector
+/// editor or a DXF drawn in a CAD (`svg`: by its file's extension, or when
+/// its first character is `<`, or it starts as a DXF does) —
 /// refusing one larger than [`super::answer::MAX_ANSWER_BYTES`]; its problems name the
 /// answer (`name`, its file). Reading the file is the front door's
 /// (`crate::study`).
@@ -27,15 +28,17 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
     if let Some(i) = r.delta.and_then(|d| delta_issue(d, "delta")) {
         return Err(Error::fields(vec![i]));
     }
-    let svg = svg || text.trim_start().starts_with('<');
+    let svg = svg || text.trim_start().starts_with('<') || super::dxf::looks_like_dxf(text);
     let mut ans = if svg {
-        super::svg::from_svg(
-            text,
-            r.mu,
-            r.plan,
-            r.delta.unwrap_or(0.5),
-            r.position.unwrap_or(1),
-        )
+        drawing(text).and_then(|d| {
+            super::drawing::answer_of(
+                d,
+                r.mu,
+                r.plan,
+                r.delta.unwrap_or(0.5),
+                r.position.unwrap_or(1),
+            )
+        })
     } else {
         from_json(text)
     }
@@ -47,4 +50,14 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
         ans.position = p;
     }
     Ok(ans)
+}
+
+/// A drawing's text, read by its format: DXF when it looks like one
+/// ([`super::dxf::looks_like_dxf`]), else SVG.
+pub(crate) fn drawing(text: &str) -> Result<super::drawing::Drawing> {
+    if super::dxf::looks_like_dxf(text) {
+        super::dxf::parse(text)
+    } else {
+        super::svg::parse(text)
+    }
 }

@@ -1,5 +1,5 @@
-//! `check SCENE ANSWER` as one call: the two files read (the answer JSON
-//! or SVG, refused when larger than the grading reads), the answer
+//! `check SCENE ANSWER` as one call: the two files read (the answer JSON,
+//! SVG or DXF, refused when larger than the grading reads), the answer
 //! checked ([`super::Solution::check_answer`]), the overlay written when
 //! asked, and the report as text or JSON with its exit status. The binary
 //! only parses its arguments.
@@ -8,15 +8,14 @@ use super::Study;
 use super::studies::{self, CheckRequest};
 use crate::error::{Error, Result, in_file};
 use crate::grading::answer::{self, MAX_ANSWER_BYTES};
+use crate::grading::dxf;
 use std::path::Path;
 
 /// Check `answer` against `scene`: the report, and the exit status (0
 /// right, 1 wrong, 4 some items cannot be judged).
 pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(String, u8)> {
     let name = answer.display().to_string();
-    let svg = answer
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+    let svg = is_drawing(answer);
     let text = read_answer(answer)?;
     let parsed = studies::parse_answer(&text, &name, svg, req)?;
     let study = Study::from_path(scene)?;
@@ -35,8 +34,16 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
     Ok((text, checked.status()))
 }
 
+/// Whether an answer file is a drawing by its extension (.svg, .dxf).
+pub(super) fn is_drawing(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg") || e.eq_ignore_ascii_case("dxf"))
+}
+
 /// An answer file's text, refusing one larger than [`MAX_ANSWER_BYTES`]
-/// before it is read whole; its problems name the file.
+/// before it is read whole; its problems name the file. A DXF (by its
+/// extension or its first lines) is decoded from its code page
+/// ([`crate::grading::dxf::decode`]).
 pub(super) fn read_answer(path: &Path) -> Result<String> {
     use std::io::Read;
     let name = path.display().to_string();
@@ -48,11 +55,22 @@ pub(super) fn read_answer(path: &Path) -> Result<String> {
     if let Ok(md) = f.metadata() {
         answer::check_size(md.len()).map_err(in_file(&name))?;
     }
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     f.take(MAX_ANSWER_BYTES as u64 + 1)
-        .read_to_string(&mut text)
+        .read_to_end(&mut bytes)
         .map_err(io)?;
-    Ok(text)
+    let dxf = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("dxf"));
+    if dxf || dxf::looks_like_dxf_bytes(&bytes) {
+        return dxf::decode(&bytes).map_err(in_file(&name));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        io(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            e.utf8_error(),
+        ))
+    })
 }
 
 /// Pretty JSON with a final newline.

@@ -8,7 +8,7 @@
 //! (`overlays/STEM.svg`), all written atomically and together
 //! (docs/check.md, "A group at once").
 
-use super::check_file::read_answer;
+use super::check_file::{is_drawing, read_answer};
 use super::files::{write_error, write_files_atomically};
 use super::{CheckRequest, Checked, Solution, Study};
 use crate::error::{Error, Result};
@@ -99,7 +99,7 @@ pub fn is_group(answers: &[PathBuf], output: bool) -> bool {
     answers.len() != 1 || output || answers[0].is_dir()
 }
 
-/// Check the group of `answers` (folders: their `*.json` and `*.svg`
+/// Check the group of `answers` (folders: their `*.json`, `*.svg` and `*.dxf`
 /// files, not recursively, sorted by name; files: as they are) against
 /// `scene`, solved once, with the overrides of `req` for every answer;
 /// write the gradebook, the summary page and the overlays into `out`.
@@ -174,9 +174,11 @@ fn answer_files(answers: &[PathBuf]) -> Result<Vec<(String, PathBuf)>> {
         let mut found = Vec::new();
         for e in std::fs::read_dir(a).map_err(io)? {
             let p = e.map_err(io)?.path();
-            let answer = p
-                .extension()
-                .is_some_and(|x| x.eq_ignore_ascii_case("json") || x.eq_ignore_ascii_case("svg"));
+            let answer = p.extension().is_some_and(|x| {
+                ["json", "svg", "dxf"]
+                    .iter()
+                    .any(|e| x.eq_ignore_ascii_case(e))
+            });
             if answer && p.is_file() {
                 let name = p
                     .file_name()
@@ -196,7 +198,7 @@ fn answer_files(answers: &[PathBuf]) -> Result<Vec<(String, PathBuf)>> {
             .join(", ");
         return Err(Error::scene(
             "",
-            format!("no answers to check: {where_} holds no *.json or *.svg file"),
+            format!("no answers to check: {where_} holds no *.json, *.svg or *.dxf file"),
         ));
     }
     Ok(out)
@@ -285,9 +287,7 @@ fn check_files(
 
 /// One answer's file read and checked against `sol`.
 fn check_one(sol: &Solution, path: &Path, req: &CheckRequest) -> Result<Checked> {
-    let svg = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+    let svg = is_drawing(path);
     let text = read_answer(path)?;
     sol.check_answer(&text, &path.display().to_string(), svg, req)
 }

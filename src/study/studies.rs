@@ -45,8 +45,10 @@ pub struct CheckRequest {
 
 /// An answer read, before it is checked.
 impl Study {
-    /// Check a student's answer, JSON or SVG (`svg`: an SVG drawing by its
-    /// file's extension; a text starting with `<` is one too), its
+    /// Check a student's answer, JSON or a drawing, SVG or DXF (`svg`: a
+    /// drawing by its file's extension; a text starting with `<` is an SVG
+    /// one too, a text starting as a DXF does a DXF one, its code page
+    /// already decoded as `check` decodes a file's), its
     /// problems naming `name` (the answer's file). A plan of velocities or
     /// accelerations, or a force plan (`"plan": "force"`, or a drawing
     /// stating μ_F). The report is in the scene's `want.lang`; another

@@ -171,9 +171,9 @@ fn table(o: &Map<String, Value>, k: &str, issues: &mut Vec<Issue>) -> Vec<(Strin
 
 /// Whether an SVG answer is a force plan: it states μ_F ("μ_F = 2 N/mm").
 pub fn is_force_svg(text: &str) -> bool {
-    crate::grading::svg::parse(text)
+    crate::grading::read::drawing(text)
         .ok()
-        .is_some_and(|d| crate::grading::svg::stated_mu(&d.labels, "_F").is_some())
+        .is_some_and(|d| crate::grading::drawing::stated_mu(&d.labels, "_F").is_some())
 }
 
 /// How far from the middle of its vector a force's label may be, mm.
@@ -194,8 +194,8 @@ pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Res
             message: m,
         }])
     };
-    let d = crate::grading::svg::parse(text)?;
-    let Some(mu) = mu.or_else(|| crate::grading::svg::stated_mu(&d.labels, "_F")) else {
+    let d = crate::grading::read::drawing(text)?;
+    let Some(mu) = mu.or_else(|| crate::grading::drawing::stated_mu(&d.labels, "_F")) else {
         return Err(bad(
             "no scale: write \"μ_F = … N/mm\" on the drawing or give --mu".into(),
         ));
