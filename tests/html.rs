@@ -411,7 +411,10 @@ fn a_uk_or_ru_handout_writes_no_decimal_point() {
             let points = decimal_points(&text(body));
             assert!(points.is_empty(), "{name} {lang:?}: {points:?}");
             // It has numbers at all: a comma between digits.
-            assert!(text(body).contains(",5") || text(body).contains(",0"), "{name} {lang:?}");
+            assert!(
+                text(body).contains(",5") || text(body).contains(",0"),
+                "{name} {lang:?}"
+            );
         }
     }
 }
