@@ -279,11 +279,21 @@ impl Entities {
 
     /// A text with sub- and superscripts: MTEXT attached at the bottom
     /// (the baseline of its one line) left, centre or right.
-    fn mtext(&mut self, c: &Common, at: (f64, f64), height: f64, content: &str, anchor: &str) {
+    fn mtext(
+        &mut self,
+        c: &Common,
+        at: (f64, f64),
+        (height, width): (f64, f64),
+        content: &str,
+        anchor: &str,
+    ) {
         self.head("MTEXT", c, "AcDbMText");
         self.w.pt(10, at);
         self.w.p(40, num(height));
-        self.w.p(41, 0);
+        // The column a little wider than the text: one line, never wrapped
+        // (a width of 0, "no wrapping", some readers take as a narrow
+        // column).
+        self.w.p(41, num(width));
         let attach = match anchor {
             "middle" => 8,
             "end" => 9,
@@ -594,7 +604,22 @@ pub fn dxf(svg: &str) -> Result<String> {
                         e.text(&c, at, size, &s, anchor);
                     }
                 } else {
-                    e.mtext(&c, at, size, &mtext_content(&rs), anchor);
+                    let width: f64 = rs
+                        .iter()
+                        .map(|(t, k)| {
+                            let k = if *k == 0 { 1.0 } else { 0.7 };
+                            t.chars().count() as f64 * size * k
+                        })
+                        .sum();
+                    // Within the paper: the column a reader may take as
+                    // the text's box.
+                    let room = match anchor {
+                        "middle" => 2.0 * at.0.min(w - at.0),
+                        "end" => at.0,
+                        _ => w - at.0,
+                    };
+                    let width = (width + size).min(room.max(size));
+                    e.mtext(&c, at, (size, width), &mtext_content(&rs), anchor);
                 }
             }
             _ => {}
