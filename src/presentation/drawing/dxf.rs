@@ -174,7 +174,7 @@ struct Entities {
 
 impl Entities {
     fn head(&mut self, kind: &str, c: &Common, sub: &str) {
-        if !self.layers.iter().any(|l| *l == c.layer) {
+        if !self.layers.contains(&c.layer) {
             self.layers.push(c.layer.clone());
         }
         let h = self.w.h();
