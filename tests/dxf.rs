@@ -1,5 +1,5 @@
 //! `draw --format dxf` read back by another program: the six-link with its
-//! course sheet, the shaper (uk), the compressor (ru) and the six-link with
+//! course sheet, its diagrams sheet with title blocks, the shaper (uk), the compressor (ru) and the six-link with
 //! dynamics (force sheets, the lever, the course force sheet) drawn as SVG
 //! and as DXF, and tests/dxf_check.py (ezdxf) holding every DXF sheet to
 //! its SVG twin: no audit error, millimetres, within the paper, every text
@@ -56,7 +56,18 @@ fn dxf_sheets_match_their_svg_twins() {
         String::from_utf8_lossy(&import.stderr)
     );
     let base: PathBuf = std::env::temp_dir().join(format!("mechplan-dxf-{}", std::process::id()));
-    let cases: [(&str, &[&str]); 4] = [
+    // The diagrams sheet and the title block on every sheet.
+    std::fs::create_dir_all(&base).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(root.join("fixtures/six_link_fig2_10.json")).unwrap(),
+    )
+    .unwrap();
+    v["want"]["drawings"] = serde_json::json!(["mechanism", "velocity", "diagrams"]);
+    let diagrams = base.join("diagrams.json");
+    std::fs::write(&diagrams, v.to_string()).unwrap();
+    let diagrams = diagrams.display().to_string();
+    let cases: [(&str, &[&str]); 5] = [
+        ("diagrams", &[diagrams.as_str(), "--title-block"]),
         ("six_link", &["fixtures/six_link_fig2_10.json", "--course"]),
         (
             "shaper_uk",
@@ -75,7 +86,7 @@ fn dxf_sheets_match_their_svg_twins() {
         let args: Vec<String> = args
             .iter()
             .map(|a| {
-                if a.ends_with(".json") {
+                if a.ends_with(".json") && !Path::new(a).is_absolute() {
                     root.join(a).display().to_string()
                 } else {
                     a.to_string()
