@@ -32,7 +32,7 @@ use crate::error::{Error, Result};
 use document::document;
 use entities::{Common, Entities, W};
 pub use style::{FONT_FILE, STYLE, layer_style};
-use style::{escape, num};
+use style::escape;
 use std::fmt::Write as _;
 
 /// DXF's lineweights (1/100 mm) a CAD accepts.
