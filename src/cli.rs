@@ -201,6 +201,7 @@ pub enum DrawFormat {
     Svg,
     Png,
     Pdf,
+    Dxf,
 }
 
 impl From<DrawFormat> for SheetFormat {
@@ -209,6 +210,7 @@ impl From<DrawFormat> for SheetFormat {
             DrawFormat::Svg => SheetFormat::Svg,
             DrawFormat::Png => SheetFormat::Png,
             DrawFormat::Pdf => SheetFormat::Pdf,
+            DrawFormat::Dxf => SheetFormat::Dxf,
         }
     }
 }

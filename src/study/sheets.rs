@@ -4,6 +4,7 @@
 
 use super::files::write_error;
 use crate::error::Result;
+use crate::presentation::drawing::dxf::dxf;
 use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
 use crate::presentation::drawing::{Format, Sheet, pdf, pdf_book, png};
 use std::collections::HashSet;
@@ -114,6 +115,7 @@ impl SheetWriter {
             Format::Svg => ("svg", std::mem::take(&mut s.svg).into_bytes()),
             Format::Png => ("png", png(&s.svg, self.dpi)?),
             Format::Pdf => ("pdf", pdf(&s.svg)?),
+            Format::Dxf => ("dxf", dxf(&s.svg)?.into_bytes()),
         };
         let path = self.dir.join(format!("{}.{ext}", s.name));
         self.stage(&path, &bytes)?;
@@ -318,7 +320,7 @@ fn looks_like_a_sheet(p: &Path) -> bool {
     ) else {
         return false;
     };
-    if !matches!(ext, "svg" | "png" | "pdf") {
+    if !matches!(ext, "svg" | "png" | "pdf" | "dxf") {
         return false;
     }
     let numbered = |prefix: &str| {

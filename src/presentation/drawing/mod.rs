@@ -19,6 +19,7 @@ pub mod course;
 mod course_forces;
 pub mod cylinder;
 pub mod diagram;
+pub mod dxf;
 pub mod export;
 pub mod force_polygon;
 pub mod forces;

@@ -96,4 +96,6 @@ pub enum Format {
     /// A page per sheet, true size, and one book of all (the `render`
     /// feature).
     Pdf,
+    /// An ASCII DXF (R2007, UTF-8) per sheet, true size in mm (see `dxf`).
+    Dxf,
 }

@@ -1,0 +1,196 @@
+//! The DXF writer's code pairs ([`W`]) and the entities of the model
+//! space ([`Entities`]), each with its layer, colour and lineweight.
+
+use super::style::{STYLE, escape, num};
+use std::fmt::Write as _;
+
+/// The writer: code pairs, handles counted from 0x20.
+pub(super) struct W {
+    pub(super) out: String,
+    pub(super) next: u32,
+}
+
+impl W {
+    pub(super) fn new() -> W {
+        W {
+            out: String::new(),
+            next: 0x20,
+        }
+    }
+    pub(super) fn p(&mut self, code: i32, v: impl std::fmt::Display) {
+        let _ = write!(self.out, "{code:>3}\n{v}\n");
+    }
+    pub(super) fn h(&mut self) -> String {
+        let h = format!("{:X}", self.next);
+        self.next += 1;
+        h
+    }
+    /// A point's 10/20/30 (or 11/21/31 …).
+    pub(super) fn pt(&mut self, code: i32, (x, y): (f64, f64)) {
+        self.p(code, num(x));
+        self.p(code + 10, num(y));
+        self.p(code + 20, 0);
+    }
+}
+
+/// What an entity shares: its layer, colour and lineweight.
+pub(super) struct Common {
+    pub(super) layer: String,
+    pub(super) color: Option<i32>,
+    pub(super) weight: Option<i32>,
+}
+
+/// The entities of the model space, written as they come.
+pub(super) struct Entities {
+    pub(super) w: W,
+    pub(super) owner: String,
+    pub(super) layers: Vec<String>,
+}
+
+impl Entities {
+    fn head(&mut self, kind: &str, c: &Common, sub: &str) {
+        if !self.layers.contains(&c.layer) {
+            self.layers.push(c.layer.clone());
+        }
+        let h = self.w.h();
+        self.w.p(0, kind);
+        self.w.p(5, h);
+        let owner = self.owner.clone();
+        self.w.p(330, owner);
+        self.w.p(100, "AcDbEntity");
+        self.w.p(8, &c.layer);
+        if let Some(col) = c.color {
+            self.w.p(62, col);
+        }
+        if let Some(wt) = c.weight {
+            self.w.p(370, wt);
+        }
+        self.w.p(100, sub);
+    }
+
+    pub(super) fn line(&mut self, c: &Common, a: (f64, f64), b: (f64, f64)) {
+        self.head("LINE", c, "AcDbLine");
+        self.w.pt(10, a);
+        self.w.pt(11, b);
+    }
+
+    /// A polyline of vertices with the bulge of the segment after each.
+    pub(super) fn lwpolyline(&mut self, c: &Common, pts: &[((f64, f64), f64)], closed: bool) {
+        self.head("LWPOLYLINE", c, "AcDbPolyline");
+        self.w.p(90, pts.len());
+        // Closed, and the linetype's pattern run over the whole polyline.
+        self.w.p(70, if closed { 129 } else { 128 });
+        for ((x, y), bulge) in pts {
+            self.w.p(10, num(*x));
+            self.w.p(20, num(*y));
+            if *bulge != 0.0 {
+                self.w.p(42, num_fine(*bulge));
+            }
+        }
+    }
+
+    pub(super) fn circle(&mut self, c: &Common, o: (f64, f64), r: f64) {
+        self.head("CIRCLE", c, "AcDbCircle");
+        self.w.pt(10, o);
+        self.w.p(40, num(r));
+    }
+
+    pub(super) fn solid(&mut self, c: &Common, p: [(f64, f64); 3]) {
+        self.head("SOLID", c, "AcDbTrace");
+        self.w.pt(10, p[0]);
+        self.w.pt(11, p[1]);
+        self.w.pt(12, p[2]);
+        self.w.pt(13, p[2]);
+    }
+
+    /// A solid fill bounded by one closed polyline (with bulges).
+    pub(super) fn hatch(&mut self, c: &Common, pts: &[((f64, f64), f64)]) {
+        self.head("HATCH", c, "AcDbHatch");
+        self.w.pt(10, (0.0, 0.0));
+        self.w.p(210, 0);
+        self.w.p(220, 0);
+        self.w.p(230, 1);
+        self.w.p(2, "SOLID");
+        self.w.p(70, 1);
+        self.w.p(71, 0);
+        self.w.p(91, 1);
+        // An external polyline path.
+        self.w.p(92, 3);
+        let bulged = pts.iter().any(|p| p.1 != 0.0);
+        self.w.p(72, i32::from(bulged));
+        self.w.p(73, 1);
+        self.w.p(93, pts.len());
+        for ((x, y), b) in pts {
+            self.w.p(10, num(*x));
+            self.w.p(20, num(*y));
+            if bulged {
+                self.w.p(42, num_fine(*b));
+            }
+        }
+        self.w.p(97, 0);
+        self.w.p(75, 1);
+        self.w.p(76, 1);
+        self.w.p(98, 0);
+    }
+
+    /// A one-line text at its baseline; `anchor` start, middle or end.
+    pub(super) fn text(&mut self, c: &Common, at: (f64, f64), height: f64, s: &str, anchor: &str) {
+        self.head("TEXT", c, "AcDbText");
+        self.w.pt(10, at);
+        self.w.p(40, num(height));
+        self.w.p(1, escape(s));
+        self.w.p(7, STYLE);
+        let h = match anchor {
+            "middle" => 1,
+            "end" => 2,
+            _ => 0,
+        };
+        if h != 0 {
+            self.w.p(72, h);
+            self.w.pt(11, at);
+        }
+        self.w.p(100, "AcDbText");
+    }
+
+    /// A text with sub- and superscripts: MTEXT attached at the bottom
+    /// (the baseline of its one line) left, centre or right.
+    pub(super) fn mtext(
+        &mut self,
+        c: &Common,
+        at: (f64, f64),
+        (height, width): (f64, f64),
+        content: &str,
+        anchor: &str,
+    ) {
+        self.head("MTEXT", c, "AcDbMText");
+        self.w.pt(10, at);
+        self.w.p(40, num(height));
+        // The column a little wider than the text: one line, never wrapped
+        // (a width of 0, "no wrapping", some readers take as a narrow
+        // column).
+        self.w.p(41, num(width));
+        let attach = match anchor {
+            "middle" => 8,
+            "end" => 9,
+            _ => 7,
+        };
+        self.w.p(71, attach);
+        self.w.p(72, 1);
+        // Content past 250 characters in chunks of code 3, the last as 1.
+        let chars: Vec<char> = content.chars().collect();
+        let chunks: Vec<String> = chars.chunks(250).map(|c| c.iter().collect()).collect();
+        for (i, ch) in chunks.iter().enumerate() {
+            self.w.p(if i + 1 == chunks.len() { 1 } else { 3 }, ch);
+        }
+        if chunks.is_empty() {
+            self.w.p(1, "");
+        }
+        self.w.p(7, STYLE);
+    }
+}
+
+/// A bulge to 1e-8.
+pub(super) fn num_fine(x: f64) -> String {
+    crate::format::fixed(x, 8)
+}
+

@@ -1,0 +1,48 @@
+//! What the DXF's parts share: the text style, the ГОСТ 2.303 linetypes
+//! and the layers' lineweights, the writing of numbers and text.
+
+/// The text style of every text.
+pub const STYLE: &str = "MECHPLAN";
+/// Its font file (TrueType, Latin, Cyrillic and Greek).
+pub const FONT_FILE: &str = "DejaVuSans.ttf";
+
+/// The linetypes, after ГОСТ 2.303 (mm; a dash positive, a gap negative,
+/// a dot 0), the same periods as the SVG's dash arrays.
+pub const LTYPES: [(&str, &str, &[f64]); 3] = [
+    ("GOST_DASHED", "Dashed (GOST 2.303) __ __ __", &[4.0, -1.5]),
+    (
+        "GOST_DASHDOT",
+        "Dash-dot thin (GOST 2.303) ____ . ____ .",
+        &[12.0, -1.8, 0.0, -1.8],
+    ),
+    (
+        "GOST_DASHDOTDOT",
+        "Dash-dot-dot (GOST 2.303) ____ . . ____ . .",
+        &[12.0, -1.8, 0.0, -1.8, 0.0, -1.8],
+    ),
+];
+
+/// A layer's linetype and lineweight (1/100 mm) by its name.
+pub fn layer_style(name: &str) -> (&'static str, i32) {
+    match name {
+        "main" | "vector" => ("Continuous", 50),
+        "bold" => ("Continuous", 80),
+        "frame" => ("Continuous", 70),
+        "dashed" => ("GOST_DASHED", 25),
+        "dash-dot" => ("GOST_DASHDOT", 25),
+        "dash-dot-dot" => ("GOST_DASHDOTDOT", 25),
+        "0" => ("Continuous", -3),
+        _ => ("Continuous", 25),
+    }
+}
+
+/// A number as DXF writes it here: to 0.0001 mm, no trailing zeros.
+pub fn num(x: f64) -> String {
+    crate::format::fixed(x, 4)
+}
+
+/// Text for a DXF string value: UTF-8 as R2007 writes it, no line ends.
+pub fn escape(s: &str) -> String {
+    s.replace(['\n', '\r'], " ")
+}
+

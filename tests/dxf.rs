@@ -1,0 +1,124 @@
+//! `draw --format dxf` read back by another program: the six-link with its
+//! course sheet, its diagrams sheet with title blocks, the shaper (uk), the compressor (ru) and the six-link with
+//! dynamics (force sheets, the lever, the course force sheet) drawn as SVG
+//! and as DXF, and tests/dxf_check.py (ezdxf) holding every DXF sheet to
+//! its SVG twin: no audit error, millimetres, within the paper, every text
+//! (string, height, layer, place to 0.01 mm), every line (the plans'
+//! vectors: the plan points), circle and arrowhead.
+//!
+//! Needs python3 with ezdxf (.ci/run installs it). Without python3 the
+//! test says so loudly and passes; without ezdxf it fails.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn draw(args: &[&str], out: &Path) {
+    let _ = std::fs::remove_dir_all(out);
+    let o = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .arg("draw")
+        .args(args)
+        .arg("-o")
+        .arg(out)
+        .output()
+        .expect("mechplan runs");
+    assert!(
+        o.status.success(),
+        "mechplan draw {args:?} failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+fn python() -> Option<&'static str> {
+    Command::new("python3")
+        .arg("--version")
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|_| "python3")
+}
+
+#[test]
+fn dxf_sheets_match_their_svg_twins() {
+    let Some(py) = python() else {
+        eprintln!(
+            "\n\n*** tests/dxf.rs: python3 is missing: the DXF sheets are NOT checked ***\n\n"
+        );
+        return;
+    };
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let import = Command::new(py)
+        .args(["-c", "import ezdxf"])
+        .output()
+        .expect("python3 runs");
+    assert!(
+        import.status.success(),
+        "ezdxf cannot be imported (python3 -m pip install --user ezdxf; .ci/run installs it): {}",
+        String::from_utf8_lossy(&import.stderr)
+    );
+    let base: PathBuf = std::env::temp_dir().join(format!("mechplan-dxf-{}", std::process::id()));
+    // The diagrams sheet and the title block on every sheet.
+    std::fs::create_dir_all(&base).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(root.join("fixtures/six_link_fig2_10.json")).unwrap(),
+    )
+    .unwrap();
+    v["want"]["drawings"] = serde_json::json!(["mechanism", "velocity", "diagrams"]);
+    let diagrams = base.join("diagrams.json");
+    std::fs::write(&diagrams, v.to_string()).unwrap();
+    let diagrams = diagrams.display().to_string();
+    let cases: [(&str, &[&str]); 5] = [
+        ("diagrams", &[diagrams.as_str(), "--title-block"]),
+        ("six_link", &["fixtures/six_link_fig2_10.json", "--course"]),
+        (
+            "shaper_uk",
+            &["fixtures/shaper_fig2_11.json", "--lang", "uk"],
+        ),
+        (
+            "compressor_ru",
+            &["fixtures/compressor_fig2_12.json", "--lang", "ru"],
+        ),
+        (
+            "dynamics",
+            &["fixtures/dynamics/six_link_fig2_10.json", "--course"],
+        ),
+    ];
+    for (name, args) in cases {
+        let args: Vec<String> = args
+            .iter()
+            .map(|a| {
+                if a.ends_with(".json") && !Path::new(a).is_absolute() {
+                    root.join(a).display().to_string()
+                } else {
+                    a.to_string()
+                }
+            })
+            .collect();
+        let mut args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (svg, dxf) = (
+            base.join(format!("{name}-svg")),
+            base.join(format!("{name}-dxf")),
+        );
+        draw(&args, &svg);
+        args.extend(["--format", "dxf"]);
+        draw(&args, &dxf);
+        let manifest = std::fs::read_to_string(dxf.join("sheets.json")).unwrap();
+        assert!(
+            manifest.contains(".dxf\""),
+            "{name}: sheets.json lists the DXF sheets"
+        );
+        let o = Command::new(py)
+            .arg(root.join("tests/dxf_check.py"))
+            .arg(&svg)
+            .arg(&dxf)
+            .output()
+            .expect("python3 runs");
+        assert!(
+            o.status.success(),
+            "{name}: the DXF sheets differ from the SVG ones:\n{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+        eprint!("{}", String::from_utf8_lossy(&o.stdout));
+    }
+    let _ = std::fs::remove_dir_all(&base);
+}

@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Check mechplan's DXF sheets against the SVG sheets of the same run.
+
+Usage: dxf_check.py SVG_DIR DXF_DIR
+
+Both folders hold one `draw` run's sheets (as SVG and as DXF) with their
+sheets.json. Read back with ezdxf, every DXF sheet must: load and audit with
+no error; be in millimetres ($INSUNITS 4); lie within its paper; hold every
+text of its SVG (the same string, tspans joined; the same height; its place
+to 0.01 mm; on the layer of its class); hold every line of the SVG (the plan
+vectors among them: the plan points) at its place to 0.01 mm, every circle
+and every arrowhead; define its layers' linetypes and lineweights and the
+Cyrillic-carrying text style. Prints one line per folder and exits 1 with
+the failures listed.
+"""
+
+import json
+import os
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+import ezdxf
+from ezdxf import bbox
+
+TOL = 0.01
+SVG = "{http://www.w3.org/2000/svg}"
+failures = []
+
+
+def fail(sheet, what):
+    failures.append(f"{sheet}: {what}")
+
+
+def plain_mtext(s):
+    """MTEXT content as the SVG's joined tspans: stacks unstacked."""
+    s = re.sub(r"\{\\S([^;]*?)\^([^;]*);\}", lambda m: m.group(1) + m.group(2), s)
+    return s.replace("\\{", "{").replace("\\}", "}").replace("\\\\", "\\")
+
+
+def close(a, b):
+    return abs(a - b) <= TOL + 1e-9
+
+
+def check_sheet(name, svg_path, dxf_path):
+    root = ET.parse(svg_path).getroot()
+    w, h = (float(v) for v in root.get("viewBox").split()[2:4])
+    doc = ezdxf.readfile(dxf_path)
+    auditor = doc.audit()
+    if auditor.has_errors:
+        fail(name, f"audit errors: {[e.message for e in auditor.errors][:5]}")
+    if doc.header.get("$INSUNITS") != 4:
+        fail(name, f"$INSUNITS is {doc.header.get('$INSUNITS')}, not 4 (mm)")
+    if doc.dxfversion < "AC1015":
+        fail(name, f"version {doc.dxfversion} is before R2000")
+    msp = doc.modelspace()
+    ext = bbox.extents(msp, fast=True)
+    if ext.has_data:
+        lo, hi = ext.extmin, ext.extmax
+        if lo.x < -TOL or lo.y < -TOL or hi.x > w + TOL or hi.y > h + TOL:
+            fail(name, f"extents {lo} – {hi} outside the paper {w}×{h}")
+    # The style and the layers' definitions.
+    style = doc.styles.get("MECHPLAN")
+    if style is None or not style.dxf.font.lower().endswith(".ttf"):
+        fail(name, "no text style MECHPLAN with a TrueType font")
+    for layer in doc.layers:
+        lt = layer.dxf.linetype
+        if lt not in doc.linetypes:
+            fail(name, f"layer {layer.dxf.name}: linetype {lt} not defined")
+        if layer.dxf.name not in ("0", "Defpoints") and layer.dxf.lineweight <= 0:
+            fail(name, f"layer {layer.dxf.name}: no lineweight")
+    for cls, lt in (("dashed", "GOST_DASHED"), ("dash-dot", "GOST_DASHDOT"), ("dash-dot-dot", "GOST_DASHDOTDOT")):
+        if cls in doc.layers and doc.layers.get(cls).dxf.linetype != lt:
+            fail(name, f"layer {cls} is not of linetype {lt}")
+
+    # Texts, in order.
+    texts = [e for e in msp if e.dxftype() in ("TEXT", "MTEXT")]
+    want = []
+    for t in root.iter(SVG + "text"):
+        s = "".join(t.itertext())
+        if s.strip():
+            want.append((t, s))
+    if len(texts) != len(want):
+        fail(name, f"{len(want)} texts in the SVG, {len(texts)} in the DXF")
+    for (t, s), e in zip(want, texts):
+        x, y = float(t.get("x")), h - float(t.get("y"))
+        size = float(t.get("font-size"))
+        cls = t.get("class") or ""
+        layer = f"text-{cls}" if cls else "text"
+        if e.dxftype() == "TEXT":
+            got = e.dxf.text
+            at = e.dxf.insert if e.dxf.halign == 0 else e.dxf.align_point
+        else:
+            got = plain_mtext(e.text)
+            at = e.dxf.insert
+        if got != s:
+            fail(name, f"text {s!r} written as {got!r}")
+        if not close(e.dxf.height if e.dxftype() == "TEXT" else e.dxf.char_height, size):
+            fail(name, f"text {s!r}: height not {size}")
+        if e.dxf.layer != layer:
+            fail(name, f"text {s!r} on layer {e.dxf.layer}, not {layer}")
+        if not (close(at.x, x) and close(at.y, y)):
+            fail(name, f"text {s!r} at ({at.x}, {at.y}), not ({x}, {y})")
+
+    # Lines (the plans' vectors: their ends are the plan points), in order.
+    lines = list(msp.query("LINE"))
+    svg_lines = list(root.iter(SVG + "line"))
+    if len(lines) != len(svg_lines):
+        fail(name, f"{len(svg_lines)} lines in the SVG, {len(lines)} in the DXF")
+    for l, e in zip(svg_lines, lines):
+        a = (float(l.get("x1")), h - float(l.get("y1")))
+        b = (float(l.get("x2")), h - float(l.get("y2")))
+        s, t = e.dxf.start, e.dxf.end
+        if not all(close(p, q) for p, q in zip((s.x, s.y, t.x, t.y), a + b)):
+            fail(name, f"line {l.get('id') or l.get('class')} at {s}–{t}, not {a}–{b}")
+        if e.dxf.layer != (l.get("class") or "symbol"):
+            fail(name, f"line on layer {e.dxf.layer}, not {l.get('class')}")
+    # Circles drawn with an outline, and the arrowheads.
+    circles = list(msp.query("CIRCLE"))
+    svg_circles = [c for c in root.iter(SVG + "circle") if c.get("stroke") not in (None, "none")]
+    if len(circles) != len(svg_circles):
+        fail(name, f"{len(svg_circles)} circles in the SVG, {len(circles)} in the DXF")
+    for c, e in zip(svg_circles, circles):
+        o = (float(c.get("cx")), h - float(c.get("cy")))
+        if not (close(e.dxf.center.x, o[0]) and close(e.dxf.center.y, o[1]) and close(e.dxf.radius, float(c.get("r")))):
+            fail(name, f"circle at {e.dxf.center}, not {o}")
+    arrows = [p for p in root.iter(SVG + "polygon") if p.get("class") == "arrow"]
+    solids = list(msp.query("SOLID"))
+    if len(arrows) != len(solids):
+        fail(name, f"{len(arrows)} arrowheads in the SVG, {len(solids)} SOLIDs in the DXF")
+    return len(texts), len(lines)
+
+
+def main():
+    svg_dir, dxf_dir = sys.argv[1], sys.argv[2]
+    ms = json.load(open(os.path.join(svg_dir, "sheets.json")))
+    md = json.load(open(os.path.join(dxf_dir, "sheets.json")))
+    if len(ms["sheets"]) != len(md["sheets"]):
+        fail(dxf_dir, "sheets.json lists another number of sheets")
+    n_texts = n_lines = 0
+    for s, d in zip(ms["sheets"], md["sheets"]):
+        stem = os.path.splitext(s["file"])[0]
+        if d["file"] != stem + ".dxf":
+            fail(dxf_dir, f"sheets.json lists {d['file']}, not {stem}.dxf")
+            continue
+        if d["scales"] != s["scales"] or d["size"] != s["size"]:
+            fail(stem, "the scales or size in sheets.json differ from the SVG run's")
+        t, l = check_sheet(stem, os.path.join(svg_dir, s["file"]), os.path.join(dxf_dir, d["file"]))
+        n_texts += t
+        n_lines += l
+    print(f"{dxf_dir}: {len(md['sheets'])} sheets, {n_texts} texts, {n_lines} lines checked")
+    if failures:
+        print(f"{len(failures)} failures:", file=sys.stderr)
+        for f in failures[:50]:
+            print("  " + f, file=sys.stderr)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
