@@ -6,6 +6,8 @@
 //! exactly as their JSON twins, a right one and a wrong one; bad DXF files
 //! are refused (status 2) with what and where named.
 
+mod common;
+
 use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -52,7 +54,7 @@ fn plan(fixture: &str, position: usize) -> (serde_json::Map<String, Value>, f64)
 fn ezdxf(path: &Path, mut spec: Value) {
     spec["path"] = json!(path.to_str().unwrap());
     let script = format!("{}/tests/dxf_answer.py", env!("CARGO_MANIFEST_DIR"));
-    let mut child = Command::new("python3")
+    let mut child = common::python_with_ezdxf()
         .arg(script)
         .stdin(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())

@@ -6,8 +6,10 @@
 //! (string, height, layer, place to 0.01 mm), every line (the plans'
 //! vectors: the plan points), circle and arrowhead.
 //!
-//! Needs python3 with ezdxf (.ci/run installs it). Without python3 the
-//! test says so loudly and passes; without ezdxf it fails.
+//! Needs python3 with ezdxf: the system's, else installed by pip into
+//! target/pydeps (tests/common); without them the test fails.
+
+mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -28,33 +30,9 @@ fn draw(args: &[&str], out: &Path) {
     );
 }
 
-fn python() -> Option<&'static str> {
-    Command::new("python3")
-        .arg("--version")
-        .output()
-        .ok()
-        .filter(|o| o.status.success())
-        .map(|_| "python3")
-}
-
 #[test]
 fn dxf_sheets_match_their_svg_twins() {
-    let Some(py) = python() else {
-        eprintln!(
-            "\n\n*** tests/dxf.rs: python3 is missing: the DXF sheets are NOT checked ***\n\n"
-        );
-        return;
-    };
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let import = Command::new(py)
-        .args(["-c", "import ezdxf"])
-        .output()
-        .expect("python3 runs");
-    assert!(
-        import.status.success(),
-        "ezdxf cannot be imported (python3 -m pip install --user ezdxf; .ci/run installs it): {}",
-        String::from_utf8_lossy(&import.stderr)
-    );
     let base: PathBuf = std::env::temp_dir().join(format!("mechplan-dxf-{}", std::process::id()));
     // The diagrams sheet and the title block on every sheet.
     std::fs::create_dir_all(&base).unwrap();
@@ -106,7 +84,7 @@ fn dxf_sheets_match_their_svg_twins() {
             manifest.contains(".dxf\""),
             "{name}: sheets.json lists the DXF sheets"
         );
-        let o = Command::new(py)
+        let o = common::python_with_ezdxf()
             .arg(root.join("tests/dxf_check.py"))
             .arg(&svg)
             .arg(&dxf)

@@ -54,3 +54,48 @@ pub fn solve(scene: Scene) -> (Analysis, Vec<Solved>) {
     let s = an.run().unwrap();
     (an, s)
 }
+
+/// `python3` able to import ezdxf (PyPI), for the DXF tests: the system's
+/// where it has ezdxf, else ezdxf installed once by pip into
+/// `target/pydeps` (so that `cargo test --release` alone passes on a fresh
+/// machine with python3 and pip) and put on `PYTHONPATH`. Panics, naming
+/// the cause, where neither works: the DXF tests never pass unchecked.
+pub fn python_with_ezdxf() -> std::process::Command {
+    use std::process::Command;
+    use std::sync::OnceLock;
+    static PATH: OnceLock<Option<std::path::PathBuf>> = OnceLock::new();
+    let extra = PATH.get_or_init(|| {
+        let has = |path: Option<&std::path::Path>| {
+            let mut c = Command::new("python3");
+            c.args(["-c", "import ezdxf"]);
+            if let Some(p) = path {
+                c.env("PYTHONPATH", p);
+            }
+            c.output().map(|o| o.status.success()).unwrap_or(false)
+        };
+        if has(None) {
+            return None;
+        }
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/pydeps");
+        if !has(Some(&dir)) {
+            let out = Command::new("python3")
+                .args(["-m", "pip", "install", "--quiet", "--target"])
+                .arg(&dir)
+                .arg("ezdxf")
+                .output()
+                .expect("python3 runs (the DXF tests read and write DXF with ezdxf)");
+            assert!(
+                out.status.success() && has(Some(&dir)),
+                "ezdxf cannot be imported nor installed by pip into {}: {}",
+                dir.display(),
+                String::from_utf8_lossy(&out.stderr)
+            );
+        }
+        Some(dir)
+    });
+    let mut c = Command::new("python3");
+    if let Some(p) = extra {
+        c.env("PYTHONPATH", p);
+    }
+    c
+}
