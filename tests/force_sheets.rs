@@ -705,3 +705,77 @@ fn force_sheets_say_their_arrows_are_not_to_scale() {
         }
     }
 }
+
+/// Vectors of a polygon too short to carry their names (under 5 mm, over
+/// 0.2 mm) stand again in a local enlargement beside it (ГОСТ 2.305's
+/// detail "I (5:1)"): the same vector, the same direction, a standard
+/// enlargement (ГОСТ 2.302) times as long and at least 4 mm, named there;
+/// the polygon marks the place with a ring.
+#[test]
+fn short_polygon_vectors_are_enlarged_beside_it() {
+    let mut enlarged = 0;
+    for name in DYNAMICS {
+        let (_, _, sh) = solve(name, Lang::En);
+        for s in sh.iter().filter(|s| s.name.starts_with("forces_")) {
+            let lines: Vec<&str> = s.svg.lines().collect();
+            let by_id: HashMap<&str, &str> = lines
+                .iter()
+                .filter_map(|l| Some((attr_str(l, "id")?, *l)))
+                .collect();
+            let seg = |l: &str| {
+                let a = kurbo::Point::new(attr(l, "x1").unwrap(), attr(l, "y1").unwrap());
+                let b = kurbo::Point::new(attr(l, "x2").unwrap(), attr(l, "y2").unwrap());
+                b - a
+            };
+            for (id, l) in &by_id {
+                // "f2-vec-3-4": a polygon's own vector.
+                let Some((tag, rest)) = id.split_once("-vec-") else {
+                    continue;
+                };
+                if tag.contains("-d") || !l.starts_with("<line") {
+                    continue;
+                }
+                let v = seg(l);
+                if !(0.2..5.0).contains(&v.hypot()) {
+                    continue;
+                }
+                let twin = (1..=4).find_map(|n| {
+                    by_id
+                        .get(format!("{tag}-d{n}-vec-{rest}").as_str())
+                        .map(|t| (n, *t))
+                });
+                let (n, t) = twin.unwrap_or_else(|| {
+                    panic!("{}: {id} ({:.2} mm) has no enlargement", s.name, v.hypot())
+                });
+                assert!(
+                    by_id.contains_key(format!("{tag}-d{n}").as_str()),
+                    "{}: no ring {tag}-d{n}",
+                    s.name
+                );
+                let w = seg(t);
+                let m = w.hypot() / v.hypot();
+                assert!(
+                    [2.0, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0]
+                        .iter()
+                        .any(|&k: &f64| (m - k).abs() <= k * (0.01 + 0.03 / v.hypot())),
+                    "{}: {id} enlarged {m:.3} times",
+                    s.name
+                );
+                assert!(
+                    v.cross(w).abs() <= 0.02 * v.hypot() * w.hypot() + 0.05,
+                    "{}: {id} turned",
+                    s.name
+                );
+                assert!(v.dot(w) > 0.0, "{}: {id} reversed", s.name);
+                assert!(
+                    w.hypot() >= 4.0,
+                    "{}: {id} still {:.2} mm enlarged",
+                    s.name,
+                    w.hypot()
+                );
+                enlarged += 1;
+            }
+        }
+    }
+    assert!(enlarged >= 10, "only {enlarged} short vectors seen");
+}

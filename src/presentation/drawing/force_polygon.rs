@@ -96,7 +96,12 @@ pub fn draw(
     for (from, to, force) in components {
         segs.push((from, to, force, Class::Vector));
     }
-    for (from, to, force, class) in segs {
+    // Vectors too short to carry their names where they are drawn stand
+    // again in a local enlargement beside the polygon (ГОСТ 2.305's
+    // detail, "I (5:1)"), named there and not on the polygon.
+    let details = details(&segs, &pt);
+    let in_detail = |from: usize, to: usize| details.iter().any(|d| d.segs.contains(&(from, to)));
+    for &(from, to, force, class) in &segs {
         let (Some(a), Some(b)) = (pt(from), pt(to)) else {
             continue;
         };
@@ -104,6 +109,9 @@ pub fn draw(
         used[to] = true;
         let id = format!("{tag}-vec-{from}-{to}");
         c.vector(a, b, class, Some(id.clone()));
+        if in_detail(from, to) {
+            continue;
+        }
         if let Some(label) = name(force) {
             c.label_later(a.midpoint(b), label, FONT, Some(format!("{id}-label")));
         }
@@ -114,6 +122,152 @@ pub fn draw(
         }
     }
     c.place_pending();
+    draw_details(&details, &segs, &pt, name, c, tag);
+}
+
+/// The local enlargements `details` of a polygon drawn in `c` (its
+/// segments `segs`, its points at `pt`): a numbered ring round each on the
+/// polygon, and beside the polygon the vectors again, enlarged and named,
+/// under their designation "I (5:1)".
+fn draw_details(
+    details: &[Detail],
+    segs: &[(usize, usize, Force, Class)],
+    pt: &dyn Fn(usize) -> Option<Point>,
+    name: &dyn Fn(Force) -> Option<Label>,
+    c: &mut Canvas,
+    tag: &str,
+) {
+    let mut x = c.bounds().x1 + DETAIL_GAP;
+    let top = c.bounds().y0;
+    for (n, d) in details.iter().enumerate() {
+        let numeral = ["I", "II", "III", "IV"][n];
+        // On the polygon: a thin circle round the short vectors, numbered.
+        let centre = d.area.center();
+        let r = (0.5 * d.area.width().hypot(d.area.height()) + 1.5).max(2.5);
+        c.ring(centre, r, format!("{tag}-d{}", n + 1));
+        c.label_later(
+            centre + kurbo::Vec2::new(r, -r) * std::f64::consts::FRAC_1_SQRT_2,
+            Label::new(numeral, ""),
+            FONT,
+            Some(format!("{tag}-d{}-mark", n + 1)),
+        );
+        c.place_pending();
+        // Beside it: the same vectors `m` times larger, named.
+        let m = d.scale;
+        let o = Point::new(x + d.area.width() * m / 2.0 + 2.0, top + d.area.height() * m / 2.0 + 8.0);
+        let place = |p: Point| o + (p - centre) * m;
+        // Its designation over it, as ГОСТ 2.305 writes a detail's.
+        c.text(
+            Point::new(o.x - d.area.width() * m / 2.0, o.y + d.area.height() * m / 2.0 + 6.0),
+            Label::new(format!("{numeral} ({}:1)", m), ""),
+            FONT,
+            "caption",
+        );
+        for &(from, to, force, class) in segs.iter().filter(|s| d.segs.contains(&(s.0, s.1))) {
+            let (Some(a), Some(b)) = (pt(from), pt(to)) else {
+                continue;
+            };
+            let id = format!("{tag}-d{}-vec-{from}-{to}", n + 1);
+            c.vector(place(a), place(b), class, Some(id.clone()));
+            if let Some(label) = name(force) {
+                c.label_later(place(a).midpoint(place(b)), label, FONT, Some(format!("{id}-label")));
+            }
+        }
+        c.place_pending();
+        x = c.bounds().x1 + DETAIL_GAP;
+    }
+}
+
+/// Below this length (mm) a polygon's vector is too short for its name.
+const SHORT: f64 = 5.0;
+/// The enlargements of ГОСТ 2.302, smallest first.
+const ENLARGE: [f64; 8] = [2.0, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
+/// The largest side of a detail (mm), and its distance from the polygon.
+const DETAIL_SIDE: f64 = 45.0;
+const DETAIL_GAP: f64 = 8.0;
+
+/// A local enlargement: the short vectors `segs` (from, to) within `area`
+/// of the polygon, drawn `scale` times larger.
+struct Detail {
+    segs: Vec<(usize, usize)>,
+    area: kurbo::Rect,
+    scale: f64,
+}
+
+/// The details of a polygon: its vectors shorter than [`SHORT`] (and
+/// longer than 0.05 mm: a vanishing force is a dot), grouped where their
+/// boxes lie within 8 mm of each other, each group at the smallest
+/// standard enlargement that draws its shortest vector 6 mm long; where
+/// that would make the detail larger than [`DETAIL_SIDE`], its longest
+/// vectors go to a detail of their own at a smaller enlargement. At most
+/// four.
+fn details(
+    segs: &[(usize, usize, Force, Class)],
+    pt: &dyn Fn(usize) -> Option<Point>,
+) -> Vec<Detail> {
+    type Seg = ((usize, usize), Point, Point, f64);
+    let mut groups: Vec<Vec<Seg>> = Vec::new();
+    for &(from, to, _, _) in segs {
+        let (Some(a), Some(b)) = (pt(from), pt(to)) else {
+            continue;
+        };
+        let len = (b - a).hypot();
+        if !(0.05..SHORT).contains(&len) {
+            continue;
+        }
+        let near = |g: &Vec<Seg>| {
+            let r = g
+                .iter()
+                .fold(kurbo::Rect::from_points(g[0].1, g[0].2), |r, s| {
+                    r.union(kurbo::Rect::from_points(s.1, s.2))
+                })
+                .inflate(8.0, 8.0);
+            r.contains(a) || r.contains(b)
+        };
+        match groups.iter_mut().find(|g| near(g)) {
+            Some(g) => g.push(((from, to), a, b, len)),
+            None => groups.push(vec![((from, to), a, b, len)]),
+        }
+    }
+    let area = |g: &[Seg]| {
+        g.iter().fold(kurbo::Rect::from_points(g[0].1, g[0].2), |r, s| {
+            r.union(kurbo::Rect::from_points(s.1, s.2))
+        })
+    };
+    let mut out = Vec::new();
+    while let Some(mut g) = groups.pop() {
+        if out.len() == 4 {
+            break;
+        }
+        g.sort_by(|x, y| x.3.total_cmp(&y.3));
+        let shortest = g[0].3;
+        let scale = ENLARGE
+            .iter()
+            .copied()
+            .find(|&m| shortest * m >= 6.0)
+            .unwrap_or(ENLARGE[ENLARGE.len() - 1]);
+        // The shortest vectors that fit at that enlargement; the rest on.
+        let mut n = g.len();
+        while n > 1 && {
+            let r = area(&g[..n]);
+            r.width().max(r.height()) * scale > DETAIL_SIDE
+        } {
+            n -= 1;
+        }
+        let rest = g.split_off(n);
+        let r = area(&g);
+        if r.width().max(r.height()) * scale <= DETAIL_SIDE {
+            out.push(Detail {
+                segs: g.iter().map(|s| s.0).collect(),
+                area: r,
+                scale,
+            });
+        }
+        if !rest.is_empty() {
+            groups.push(rest);
+        }
+    }
+    out
 }
 
 /// The forces of `plan`'s vector equation in the order they are laid off

@@ -306,6 +306,18 @@ impl Canvas {
         });
     }
 
+    /// A thin ring (a local enlargement's mark on a polygon), with an id;
+    /// unlike [`Self::circle`] it keeps no labels off its inside.
+    pub fn ring(&mut self, c: Point, r: f64, id: String) {
+        self.prims.push(Prim::Circle {
+            c,
+            r,
+            fill: "none",
+            stroke: THIN,
+            id: Some(id),
+        });
+    }
+
     /// A plan or mechanism point: a dot with an id the checks can find.
     pub fn dot(&mut self, c: Point, id: String) {
         self.prims.push(Prim::Circle {
