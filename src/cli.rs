@@ -39,12 +39,13 @@ pub enum Command {
         #[arg(long, value_parser = lang)]
         lang: Option<Lang>,
     },
-    /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON or SVG) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written. Several ANSWERs or a folder: a group, graded into OUT/gradebook.csv, OUT/summary.html and OUT/overlays/ (exit 2 if an answer is unreadable, else 1 if one is wrong, else 4 if one cannot be judged).
+    /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON, SVG or DXF) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written. Several ANSWERs or a folder: a group, graded into OUT/gradebook.csv, OUT/summary.html and OUT/overlays/ (exit 2 if an answer is unreadable, else 1 if one is wrong, else 4 if one cannot be judged).
     Check {
         /// The scene file.
         scene: PathBuf,
-        /// The student's answer: JSON (docs/check.md) or an SVG drawn in a vector editor; or
-        /// several, or a folder of them (its *.json and *.svg files): a group.
+        /// The student's answer: JSON (docs/check.md), an SVG drawn in a vector editor or a
+        /// DXF drawn in a CAD; or several, or a folder of them (its *.json, *.svg and *.dxf
+        /// files): a group.
         #[arg(required = true, value_name = "ANSWER")]
         answers: Vec<PathBuf>,
         /// A group's output folder: gradebook.csv, summary.html, overlays/ (default:
@@ -57,14 +58,18 @@ pub enum Command {
         /// Write an SVG overlaying the student's points on the correct plan.
         #[arg(long)]
         svg: Option<PathBuf>,
+        /// For a DXF answer: write a copy of it with the same overlay on its own layer
+        /// (MECHPLAN-CHECK), to open in the CAD it was drawn in.
+        #[arg(long)]
+        dxf: Option<PathBuf>,
         /// Pencil precision δ in mm (default: the answer's, else 0.5).
         #[arg(long)]
         delta: Option<f64>,
-        /// For an SVG answer: the scale μ, if the drawing does not state it; for a force plan
+        /// For an SVG or DXF answer: the scale μ, if the drawing does not state it; for a force plan
         /// (μ_F, N/mm) it overrides the answer's.
         #[arg(long)]
         mu: Option<f64>,
-        /// For an SVG answer: velocity or acceleration, if the pole's label does not say.
+        /// For an SVG or DXF answer: velocity or acceleration, if the pole's label does not say.
         #[arg(long, value_parser = plan)]
         plan: Option<PlanKind>,
         /// Which of the scene's positions, from 1 (default: the answer file's, else 1).

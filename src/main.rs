@@ -99,6 +99,7 @@ fn command(c: Command) -> Result<u8, Error> {
             output,
             format,
             svg,
+            dxf,
             delta,
             mu,
             plan,
@@ -108,6 +109,7 @@ fn command(c: Command) -> Result<u8, Error> {
             let req = CheckRequest {
                 json: matches!(format, CheckFormat::Json),
                 overlay: svg,
+                overlay_dxf: dxf,
                 delta,
                 mu,
                 plan,

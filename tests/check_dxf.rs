@@ -204,6 +204,18 @@ fn twins(fixture: &str, position: usize, wrong: &str) {
         2 * variants(mu).len(),
         "{book}"
     );
+    // Each DXF answer's marked copy beside its overlay.
+    let copies = std::fs::read_dir(out.join("overlays"))
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .path()
+                .extension()
+                .is_some_and(|x| x == "dxf")
+        })
+        .count();
+    assert_eq!(copies, 2 * variants(mu).len());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -387,4 +399,152 @@ fn the_documented_dxf_answer_is_right() {
         assert!(out.contains("3 of 3 right"), "{out}");
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check --dxf`: the overlay written into a copy of the student's own
+/// file, read back with ezdxf (tests/dxf_overlay.py) — R12, R2000 in code
+/// page 1251 with CRLF line ends, R2018 inside a block far from the
+/// origin: no audit error; the student's entities all there; a layer of
+/// its own holding the right plan, each of its points at the place the
+/// plan puts it from the student's pole (0.01 mm); the copy read again as
+/// an answer graded as the original (the overlay's layer skipped); the
+/// copy's line ends the original's. A JSON answer is refused.
+#[test]
+fn the_overlay_is_written_into_a_copy_of_the_students_dxf() {
+    let dir = fresh("overlay");
+    let (points, mu) = plan("six_link_fig2_10", 3);
+    let mut wrong = points.clone();
+    let c = wrong["c"].as_array().unwrap().clone();
+    wrong["c"] = json!([c[0].as_f64().unwrap() + 8.0, c[1]]);
+    let scale = format!("μv = {mu} (m/s)/mm");
+    let comma = format!("μv = {} (м/с)/мм", mu.to_string().replace('.', ","));
+    let cases = [
+        (
+            "r12",
+            json!({"version": "R12", "lines": "line", "texts": "text", "scale": scale, "origin": [150, 150]}),
+            false,
+        ),
+        (
+            "r2000_cp1251",
+            json!({"version": "R2000", "lines": "lwpolyline", "texts": "mtext", "scale": comma, "origin": [210, 150], "frame": true, "codepage": "ANSI_1251", "encoding": "cp1251"}),
+            true,
+        ),
+        (
+            "r2018_block_far",
+            json!({"version": "R2018", "lines": "line", "texts": "mtext", "scale": scale, "origin": [1.0e6, -2.5e6], "block": true}),
+            false,
+        ),
+    ];
+    for (name, mut spec, crlf) in cases {
+        spec["points"] = json!(wrong);
+        spec["pole"] = json!("p_v");
+        let answer = dir.join(format!("{name}.dxf"));
+        ezdxf(&answer, spec.clone());
+        if crlf {
+            // The cp1251 bytes kept, each LF made CRLF.
+            let bytes: Vec<u8> = std::fs::read(&answer)
+                .unwrap()
+                .iter()
+                .flat_map(|&b| {
+                    if b == b'\n' {
+                        vec![b'\r', b'\n']
+                    } else {
+                        vec![b]
+                    }
+                })
+                .collect();
+            std::fs::write(&answer, bytes).unwrap();
+        }
+        let copy = dir.join(format!("{name}.marked.dxf"));
+        let (code, _, err) = run(&[
+            "check",
+            &scene("six_link_fig2_10"),
+            answer.to_str().unwrap(),
+            "--position",
+            "3",
+            "--dxf",
+            copy.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 1, "{name}: {err}");
+        // Where the right plan's points are in the file: the pole's place
+        // plus the plan's millimetres (the files are in mm or unitless).
+        let o = spec["origin"].as_array().unwrap();
+        let (ox, oy) = (o[0].as_f64().unwrap(), o[1].as_f64().unwrap());
+        let places: serde_json::Map<String, Value> = points
+            .iter()
+            .map(|(k, p)| {
+                let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+                (k.clone(), json!([ox + x, oy + y]))
+            })
+            .collect();
+        let read = overlay_read(&answer, &copy, &places);
+        assert_eq!(read["audit_errors"], json!([]), "{name}: {read}");
+        assert_eq!(read["original"], read["copy"], "{name}: {read}");
+        assert_eq!(read["missing"], json!([]), "{name}: {read}");
+        assert_eq!(read["layer_color"], json!(5), "{name}: {read}");
+        let overlay = read["overlay"].as_object().unwrap();
+        assert!(
+            overlay.get("LINE").is_some() && overlay.get("TEXT").is_some(),
+            "{name}: {read}"
+        );
+        if name == "r12" {
+            assert!(!overlay.contains_key("LWPOLYLINE") && !overlay.contains_key("MTEXT"));
+        }
+        let bytes = std::fs::read(&copy).unwrap();
+        let bare_lf = bytes
+            .windows(2)
+            .filter(|w| w[1] == b'\n' && w[0] != b'\r')
+            .count();
+        assert_eq!(bare_lf == 0, crlf, "{name}: line ends");
+        // The marked copy read again is the student's drawing alone.
+        let (c1, first) = report("six_link_fig2_10", &answer, 3);
+        let (c2, again) = report("six_link_fig2_10", &copy, 3);
+        assert_eq!(c1, c2);
+        alike(&first, &again, name);
+    }
+    // A JSON answer has no file of the student's to copy.
+    let json_answer = dir.join("a.json");
+    std::fs::write(
+        &json_answer,
+        json!({"plan": "velocity", "mu": mu, "points": points}).to_string(),
+    )
+    .unwrap();
+    let (code, _, err) = run(&[
+        "check",
+        &scene("six_link_fig2_10"),
+        json_answer.to_str().unwrap(),
+        "--dxf",
+        dir.join("x.dxf").to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("dxf") && err.contains("--svg"), "{err}");
+    assert!(!dir.join("x.dxf").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// tests/dxf_overlay.py's report on a marked copy.
+fn overlay_read(original: &Path, copy: &Path, points: &serde_json::Map<String, Value>) -> Value {
+    let script = format!("{}/tests/dxf_overlay.py", env!("CARGO_MANIFEST_DIR"));
+    let mut child = common::python_with_ezdxf()
+        .arg(script)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("python3 with ezdxf");
+    use std::io::Write;
+    let spec = json!({"original": original, "copy": copy, "points": points});
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(spec.to_string().as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
 }

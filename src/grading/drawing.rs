@@ -120,6 +120,29 @@ pub(super) fn whole(message: &str) -> Error {
     }])
 }
 
+/// The pole's label (p_v, p_a …) and where it is.
+fn pole_label(labels: &[(String, Point)]) -> Result<(String, Point)> {
+    labels
+        .iter()
+        .find(|(s, _)| is_pole(s))
+        .cloned()
+        .ok_or_else(|| whole("no pole: label the pole p_v (or p_a)"))
+}
+
+/// The line end the pole's label at `at` names.
+fn pole_end(ends: &Ends, at: Point) -> Result<Point> {
+    ends.snap(at)
+        .ok_or_else(|| whole("the pole's label is not next to any line's end"))
+}
+
+/// Where a drawing's pole is (its coordinates, mm): the line end its
+/// label names, as [`answer_of`] finds it.
+pub(super) fn pole_of(drawing: &Drawing) -> Result<Point> {
+    let (_, at) = pole_label(&drawing.labels)?;
+    let ends = Ends::new(drawing.lines.iter().flatten().copied().collect());
+    pole_end(&ends, at)
+}
+
 /// A drawing read as an answer. `mu`, `plan` come from the command line
 /// when the drawing does not state them (a "μ = 0.01" text, and the pole's
 /// label p_v / p_a); a plan asked that the pole's label contradicts is
@@ -148,14 +171,10 @@ pub(super) fn answer_of(
     if let Some(i) = super::answer::mu_issue(mu, &said) {
         return Err(Error::fields(vec![i]));
     }
-    let Some((pole_name, pole_at)) = labels.iter().find(|(s, _)| is_pole(s)).cloned() else {
-        return Err(whole("no pole: label the pole p_v (or p_a)"));
-    };
+    let (pole_name, pole_at) = pole_label(&labels)?;
     let plan = plan_of(&pole_name, plan)?;
     let ends = Ends::new(ends);
-    let Some(pole) = ends.snap(pole_at) else {
-        return Err(whole("the pole's label is not next to any line's end"));
-    };
+    let pole = pole_end(&ends, pole_at)?;
     // The pole labelled again at another line end: which is the pole?
     let other_pole = labels
         .iter()

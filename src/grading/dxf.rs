@@ -21,6 +21,11 @@ use kurbo::{Affine, Point, Vec2};
 use super::dxf_text::{code_page, encoding, mtext_codes, text_codes};
 use std::collections::HashMap;
 
+/// The layer of a teacher's overlay written into a copy of the student's
+/// file (`check --dxf`): skipped when the file is read as an answer, so
+/// that a marked copy read again is the student's drawing alone.
+pub const OVERLAY_LAYER: &str = "MECHPLAN-CHECK";
+
 /// The deepest nesting of inserted blocks read (a CAD nests a few).
 pub const MAX_DEPTH: usize = 16;
 
@@ -79,9 +84,15 @@ pub fn decode(bytes: &[u8]) -> Result<String> {
     if let Ok(s) = std::str::from_utf8(bytes) {
         return Ok(s.to_string());
     }
-    let page = code_page(bytes);
-    let enc = encoding(&page).unwrap_or(encoding_rs::WINDOWS_1252);
+    let enc = code_page_encoding(bytes);
     Ok(enc.decode_without_bom_handling(bytes).0.into_owned())
+}
+
+/// The encoding of a DXF file's code page (`$DWGCODEPAGE`, ANSI_1252
+/// when it names none or one mechplan does not know): how the texts of a
+/// file before R2007 are written.
+pub fn code_page_encoding(bytes: &[u8]) -> &'static encoding_rs::Encoding {
+    encoding(&code_page(bytes)).unwrap_or(encoding_rs::WINDOWS_1252)
 }
 
 /// One group: its code, its value (trimmed) and the line its code is on
@@ -375,6 +386,10 @@ struct Out {
 
 fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> Result<()> {
     for e in es {
+        // A teacher's overlay (`check --dxf`) is not the student's drawing.
+        if e.value(8).is_some_and(|l| l.eq_ignore_ascii_case(OVERLAY_LAYER)) {
+            continue;
+        }
         out.placed += 1;
         if out.placed > MAX_ENTITIES {
             return Err(whole(&format!(
@@ -515,6 +530,20 @@ fn width(s: &str, h: f64) -> f64 {
 
 /// Parse a DXF answer's text into its labels and lines (mm, y down).
 pub(crate) fn parse(text: &str) -> Result<Drawing> {
+    parse_in(text).map(|(d, _)| d)
+}
+
+/// Where a DXF answer's pole is in its file (drawing units, y up), and
+/// the file's millimetres per unit: where `check --dxf` draws the
+/// overlay.
+pub fn pole_in_file(text: &str) -> Result<(Point, f64)> {
+    let (d, unit) = parse_in(text)?;
+    let pole = super::drawing::pole_of(&d)?;
+    Ok((Point::new(pole.x / unit, -pole.y / unit), unit))
+}
+
+/// [`parse`], and the file's millimetres per drawing unit.
+fn parse_in(text: &str) -> Result<(Drawing, f64)> {
     check_size(text.len() as u64)?;
     if text.as_bytes().starts_with(BINARY) {
         return Err(whole(
@@ -544,7 +573,7 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
     }
     // Drawing units to mm, y up to the drawing's y down.
     let mm = |p: Point| Point::new(p.x * unit, -p.y * unit);
-    Ok(Drawing {
+    let d = Drawing {
         labels: out.labels.into_iter().map(|(s, p)| (s, mm(p))).collect(),
         lines: out
             .lines
@@ -552,7 +581,8 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
             .map(|l| l.into_iter().map(mm).collect())
             .collect(),
         kind: "dxf",
-    })
+    };
+    Ok((d, unit))
 }
 
 /// Read a DXF answer (its text decoded, [`decode`]). `mu`, `plan` come

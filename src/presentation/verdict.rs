@@ -301,6 +301,49 @@ fn judgement_word(j: &Judgement) -> &'static str {
 /// An SVG sheet with the correct plan (black) and the student's points
 /// (red crosses, labelled), for `check --svg`.
 pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
+    let (c, title) = overlay_canvas(an, ans, r);
+    crate::presentation::drawing::page_svg(
+        "check".into(),
+        title,
+        &c,
+        None,
+        &crate::presentation::drawing::DrawOptions::default(),
+    )
+    .svg
+}
+
+/// The overlay written into a copy of the student's own DXF file
+/// `original` (`check --dxf`): the same drawing as [`overlay`]'s, its
+/// title above it, placed at the student's pole in the file's units, on
+/// the layer [`crate::grading::dxf::OVERLAY_LAYER`].
+pub fn overlay_dxf(an: &Analysis, ans: &Answer, r: &Report, original: &[u8]) -> crate::error::Result<Vec<u8>> {
+    use crate::presentation::drawing::canvas::{FONT, Label};
+    let text = crate::grading::dxf::decode(original)?;
+    let (pole, unit) = crate::grading::dxf::pole_in_file(&text)?;
+    let (mut c, title) = overlay_canvas(an, ans, r);
+    let b = c.bounds();
+    c.text(
+        kurbo::Point::new(b.x0, b.y1 + 2.0 * FONT),
+        Label::new(title, ""),
+        FONT,
+        "heading",
+    );
+    // The canvas's y is up, its origin the student's pole (the answer's
+    // points are millimetres from it); written as SVG (y down) and placed
+    // back in the file's units.
+    let mut svg = String::from(r#"<svg xmlns="http://www.w3.org/2000/svg">"#);
+    c.write(&mut svg, 0.0, 0.0);
+    svg.push_str("</svg>");
+    let place = |x: f64, y: f64| (pole.x + x / unit, pole.y - y / unit);
+    crate::presentation::drawing::dxf::into_copy(original, &svg, &place, 1.0 / unit)
+}
+
+/// The overlay's drawing (y up, the pole at the origin) and its title.
+fn overlay_canvas(
+    an: &Analysis,
+    ans: &Answer,
+    r: &Report,
+) -> (crate::presentation::drawing::canvas::Canvas, String) {
     use crate::presentation::drawing::canvas::{Canvas, Class, Label, SMALL};
     let plan = &r.plan_built;
     let mut c = Canvas::default();
@@ -374,14 +417,7 @@ pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
     if let Some(m) = r.diagnosis.as_ref().and_then(|d| d.mistake.as_ref()) {
         title.push_str(&format!(" — {m}"));
     }
-    crate::presentation::drawing::page_svg(
-        "check".into(),
-        title,
-        &c,
-        None,
-        &crate::presentation::drawing::DrawOptions::default(),
-    )
-    .svg
+    (c, title)
 }
 
 /// A typed explanation as JSON: its kind, and which element or factor.

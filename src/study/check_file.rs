@@ -16,7 +16,13 @@ use std::path::Path;
 pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(String, u8)> {
     let name = answer.display().to_string();
     let svg = is_drawing(answer);
-    let text = read_answer(answer)?;
+    let (text, dxf_bytes) = read_answer(answer)?;
+    if req.overlay_dxf.is_some() && dxf_bytes.is_none() {
+        return Err(Error::scene(
+            "dxf",
+            "--dxf writes the overlay into a copy of a DXF answer: this answer is no DXF file (give --svg for an overlay of its own)",
+        ));
+    }
     let parsed = studies::parse_answer(&text, &name, svg, req)?;
     let study = Study::from_path(scene)?;
     studies::position_of(&study, &parsed, &name, req)?;
@@ -25,6 +31,11 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         && let Some(overlay) = checked.overlay()
     {
         super::files::write_atomically(out, overlay.as_bytes())?;
+    }
+    if let (Some(out), Some(bytes)) = (&req.overlay_dxf, &dxf_bytes)
+        && let Some(copy) = checked.overlay_dxf(bytes)
+    {
+        super::files::write_atomically(out, &copy.map_err(in_file(&name))?)?;
     }
     let text = if req.json {
         pretty(&checked.to_json())
@@ -43,8 +54,9 @@ pub(super) fn is_drawing(path: &Path) -> bool {
 /// An answer file's text, refusing one larger than [`MAX_ANSWER_BYTES`]
 /// before it is read whole; its problems name the file. A DXF (by its
 /// extension or its first lines) is decoded from its code page
-/// ([`crate::grading::dxf::decode`]).
-pub(super) fn read_answer(path: &Path) -> Result<String> {
+/// ([`crate::grading::dxf::decode`]), its bytes kept for the copy with the
+/// overlay (`--dxf`).
+pub(super) fn read_answer(path: &Path) -> Result<(String, Option<Vec<u8>>)> {
     use std::io::Read;
     let name = path.display().to_string();
     let io = |source| Error::Io {
@@ -63,14 +75,16 @@ pub(super) fn read_answer(path: &Path) -> Result<String> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dxf"));
     if dxf || dxf::looks_like_dxf_bytes(&bytes) {
-        return dxf::decode(&bytes).map_err(in_file(&name));
+        let text = dxf::decode(&bytes).map_err(in_file(&name))?;
+        return Ok((text, Some(bytes)));
     }
-    String::from_utf8(bytes).map_err(|e| {
+    let text = String::from_utf8(bytes).map_err(|e| {
         io(std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             e.utf8_error(),
         ))
-    })
+    })?;
+    Ok((text, None))
 }
 
 /// Pretty JSON with a final newline.

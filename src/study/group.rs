@@ -5,13 +5,14 @@
 //! row with its message while the others are graded. Into the output
 //! folder go the gradebook (`gradebook.csv`), the summary page
 //! (`summary.html`) and every kinematic answer's overlay
-//! (`overlays/STEM.svg`), all written atomically and together
+//! (`overlays/STEM.svg`, and a DXF answer's marked copy `STEM.dxf`), all
+//! written atomically and together
 //! (docs/check.md, "A group at once").
 
 use super::check_file::{is_drawing, read_answer};
 use super::files::{write_error, write_files_atomically};
 use super::{CheckRequest, Checked, Solution, Study};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, in_file};
 use crate::presentation::gradebook::{self, GradeRow, Outcome, Totals};
 use crate::progress::Progress;
 use rayon::prelude::*;
@@ -39,7 +40,7 @@ pub struct Graded {
     /// The summary page written (`OUT/summary.html`).
     pub summary: PathBuf,
     /// The overlays written (`OUT/overlays/STEM.svg`), one per kinematic
-    /// answer checked.
+    /// answer checked, and each DXF answer's marked copy (`STEM.dxf`).
     pub overlays: Vec<PathBuf>,
 }
 
@@ -65,10 +66,20 @@ impl Graded {
             self.summary.display()
         );
         if let Some(dir) = self.overlays.first().and_then(|o| o.parent()) {
+            let copies = self
+                .overlays
+                .iter()
+                .filter(|o| o.extension().is_some_and(|e| e == "dxf"))
+                .count();
+            let svgs = self.overlays.len() - copies;
+            let marked = match copies {
+                0 => String::new(),
+                1 => " and 1 marked copy of a DXF answer".into(),
+                n => format!(" and {n} marked copies of DXF answers"),
+            };
             t.push_str(&format!(
-                "wrote {} overla{} into {}\n",
-                self.overlays.len(),
-                if self.overlays.len() == 1 { "y" } else { "ys" },
+                "wrote {svgs} overla{}{marked} into {}\n",
+                if svgs == 1 { "y" } else { "ys" },
                 dir.display()
             ));
         }
@@ -126,11 +137,18 @@ pub fn check_group(
 /// the single answer's overlay, a pencil precision that is no number of
 /// mm, a position the scene has not.
 fn validate(study: &Study, req: &CheckRequest) -> Result<()> {
-    if req.overlay.is_some() {
-        return Err(Error::scene(
-            "svg",
-            "a group writes every answer's overlay into OUT/overlays (--output OUT): --svg is for a single answer",
-        ));
+    for (set, option) in [
+        (req.overlay.is_some(), "svg"),
+        (req.overlay_dxf.is_some(), "dxf"),
+    ] {
+        if set {
+            return Err(Error::scene(
+                option,
+                format!(
+                    "a group writes every answer's overlay into OUT/overlays (--output OUT), a DXF answer's marked copy beside it: --{option} is for a single answer"
+                ),
+            ));
+        }
     }
     if let Some(d) = req.delta
         && !(d.is_finite() && d > 0.0)
@@ -236,20 +254,30 @@ fn check_files(
     // of the same stem gets "-2", …).
     let mut stems = BTreeSet::new();
     let mut overlays: Vec<Option<(String, String)>> = Vec::new();
+    // A DXF answer's marked copy beside its overlay (STEM.dxf).
+    let mut copies: Vec<(String, Vec<u8>)> = Vec::new();
     for ((_, path), c) in files.iter().zip(&checked) {
-        overlays.push(c.as_ref().ok().and_then(Checked::overlay).map(|svg| {
-            let stem = path
-                .file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_else(|| "answer".into());
-            let mut name = format!("{stem}.svg");
-            let mut k = 1;
-            while !stems.insert(name.clone()) {
-                k += 1;
-                name = format!("{stem}-{k}.svg");
+        let Some((svg, c)) = c.as_ref().ok().and_then(|c| c.overlay().map(|s| (s, c))) else {
+            overlays.push(None);
+            continue;
+        };
+        let stem = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "answer".into());
+        let mut name = stem.clone();
+        let mut k = 1;
+        while !stems.insert(name.clone()) {
+            k += 1;
+            name = format!("{stem}-{k}");
+        }
+        if let (true, (_, Some(bytes))) = (is_drawing(path), read_answer(path)?) {
+            if let Some(copy) = c.overlay_dxf(&bytes) {
+                let copy = copy.map_err(in_file(&path.display().to_string()))?;
+                copies.push((format!("{OVERLAYS}/{name}.dxf"), copy));
             }
-            (format!("{OVERLAYS}/{name}"), svg)
-        }));
+        }
+        overlays.push(Some((format!("{OVERLAYS}/{name}.svg"), svg)));
     }
     let linked: Vec<(GradeRow, Option<String>)> = rows
         .iter()
@@ -268,6 +296,9 @@ fn check_files(
     ];
     for (rel, svg) in overlays.iter().flatten() {
         writes.push((out.join(rel), svg.as_bytes()));
+    }
+    for (rel, copy) in &copies {
+        writes.push((out.join(rel), copy));
     }
     let dir = if stems.is_empty() {
         out.to_path_buf()
@@ -288,6 +319,6 @@ fn check_files(
 /// One answer's file read and checked against `sol`.
 fn check_one(sol: &Solution, path: &Path, req: &CheckRequest) -> Result<Checked> {
     let svg = is_drawing(path);
-    let text = read_answer(path)?;
+    let (text, _) = read_answer(path)?;
     sol.check_answer(&text, &path.display().to_string(), svg, req)
 }

@@ -29,6 +29,8 @@ pub struct CheckRequest {
     pub json: bool,
     /// Where to write the overlay of a kinematic plan (`--svg`).
     pub overlay: Option<PathBuf>,
+    /// Where to write the overlay into a copy of a DXF answer (`--dxf`).
+    pub overlay_dxf: Option<PathBuf>,
     /// The pencil's precision δ, mm (`--delta`), over the answer's own.
     pub delta: Option<f64>,
     /// The plan's scale μ (`--mu`), over the answer's own.
@@ -193,11 +195,18 @@ fn parse_force_answer(
         }
         ans.mu = m;
     }
-    if req.overlay.is_some() {
-        return Err(Error::scene(
-            "svg",
-            "the overlay (--svg) is drawn for plans of velocities and accelerations only",
-        ));
+    for (set, option) in [
+        (req.overlay.is_some(), "svg"),
+        (req.overlay_dxf.is_some(), "dxf"),
+    ] {
+        if set {
+            return Err(Error::scene(
+                option,
+                format!(
+                    "the overlay (--{option}) is drawn for plans of velocities and accelerations only"
+                ),
+            ));
+        }
     }
     if let Some(p) = req.position {
         ans.position = p;
@@ -296,6 +305,22 @@ impl Checked {
     pub fn overlay(&self) -> Option<String> {
         match self {
             Checked::Kinematic(k) => Some(verdict::overlay(&k.analysis, &k.answer, &k.report)),
+            Checked::Force(_) => None,
+        }
+    }
+    /// The overlay written into a copy of the student's DXF file
+    /// `original` (its bytes as read): the file unchanged but for a layer
+    /// `MECHPLAN-CHECK` holding the right plan at the student's pole and
+    /// scale, the student's points marked and the verdict; `None` for a
+    /// force plan.
+    pub fn overlay_dxf(&self, original: &[u8]) -> Option<Result<Vec<u8>>> {
+        match self {
+            Checked::Kinematic(k) => Some(verdict::overlay_dxf(
+                &k.analysis,
+                &k.answer,
+                &k.report,
+                original,
+            )),
             Checked::Force(_) => None,
         }
     }

@@ -40,32 +40,90 @@ pub(super) struct Common {
     pub(super) weight: Option<i32>,
 }
 
+/// What the entities are written for: a sheet of our own (R2007, mm,
+/// layers by class), or a copy of another file (`check --dxf`: the
+/// student's version, units and code page, every entity on one layer).
+pub(super) struct Target {
+    /// R12 and older: no handles, owners or subclass markers; POLYLINE
+    /// for LWPOLYLINE, TEXT for MTEXT, a fill's outline for a HATCH.
+    pub(super) legacy: bool,
+    /// Texts in ASCII, other letters as `\U+XXXX` (readable whatever the
+    /// file's code page).
+    pub(super) ascii: bool,
+    /// The texts' style.
+    pub(super) style: String,
+    /// Drawing units per mm of the sheet (heights, radii).
+    pub(super) scale: f64,
+    /// Every entity on this layer (else the one its class gives).
+    pub(super) layer: Option<String>,
+    /// Grey shading (a plan's similar figures) filled; else left out.
+    pub(super) shading: bool,
+}
+
+impl Target {
+    /// A sheet of mechplan's own.
+    pub(super) fn sheet() -> Target {
+        Target {
+            legacy: false,
+            ascii: false,
+            style: STYLE.into(),
+            scale: 1.0,
+            layer: None,
+            shading: true,
+        }
+    }
+}
+
 /// The entities of the model space, written as they come.
 pub(super) struct Entities {
     pub(super) w: W,
     pub(super) owner: String,
     pub(super) layers: Vec<String>,
+    pub(super) target: Target,
 }
 
 impl Entities {
     fn head(&mut self, kind: &str, c: &Common, sub: &str) {
-        if !self.layers.contains(&c.layer) {
-            self.layers.push(c.layer.clone());
+        let layer = self.target.layer.clone().unwrap_or_else(|| c.layer.clone());
+        if !self.layers.contains(&layer) {
+            self.layers.push(layer.clone());
         }
-        let h = self.w.h();
         self.w.p(0, kind);
-        self.w.p(5, h);
-        let owner = self.owner.clone();
-        self.w.p(330, owner);
-        self.w.p(100, "AcDbEntity");
-        self.w.p(8, &c.layer);
+        if !self.target.legacy {
+            let h = self.w.h();
+            self.w.p(5, h);
+            if !self.owner.is_empty() {
+                let owner = self.owner.clone();
+                self.w.p(330, owner);
+            }
+            self.w.p(100, "AcDbEntity");
+        }
+        self.w.p(8, &layer);
         if let Some(col) = c.color {
             self.w.p(62, col);
+        }
+        if self.target.legacy {
+            return;
         }
         if let Some(wt) = c.weight {
             self.w.p(370, wt);
         }
         self.w.p(100, sub);
+    }
+
+    /// A string value as the target reads it.
+    fn string(&self, s: &str) -> String {
+        let s = escape(s);
+        if !self.target.ascii {
+            return s;
+        }
+        s.chars()
+            .map(|c| match c {
+                ' '..='~' => c.to_string(),
+                c if (c as u32) <= 0xFFFF => format!("\\U+{:04X}", c as u32),
+                _ => "?".into(),
+            })
+            .collect()
     }
 
     pub(super) fn line(&mut self, c: &Common, a: (f64, f64), b: (f64, f64)) {
@@ -76,6 +134,9 @@ impl Entities {
 
     /// A polyline of vertices with the bulge of the segment after each.
     pub(super) fn lwpolyline(&mut self, c: &Common, pts: &[((f64, f64), f64)], closed: bool) {
+        if self.target.legacy {
+            return self.polyline(c, pts, closed);
+        }
         self.head("LWPOLYLINE", c, "AcDbPolyline");
         self.w.p(90, pts.len());
         // Closed, and the linetype's pattern run over the whole polyline.
@@ -89,10 +150,26 @@ impl Entities {
         }
     }
 
+    /// R12's polyline: a POLYLINE, its VERTEXes (with bulges) and SEQEND.
+    fn polyline(&mut self, c: &Common, pts: &[((f64, f64), f64)], closed: bool) {
+        self.head("POLYLINE", c, "");
+        self.w.p(66, 1);
+        self.w.pt(10, (0.0, 0.0));
+        self.w.p(70, i32::from(closed));
+        for (at, bulge) in pts {
+            self.head("VERTEX", c, "");
+            self.w.pt(10, *at);
+            if *bulge != 0.0 {
+                self.w.p(42, num_fine(*bulge));
+            }
+        }
+        self.head("SEQEND", c, "");
+    }
+
     pub(super) fn circle(&mut self, c: &Common, o: (f64, f64), r: f64) {
         self.head("CIRCLE", c, "AcDbCircle");
         self.w.pt(10, o);
-        self.w.p(40, num(r));
+        self.w.p(40, num(r * self.target.scale));
     }
 
     pub(super) fn solid(&mut self, c: &Common, p: [(f64, f64); 3]) {
@@ -105,6 +182,12 @@ impl Entities {
 
     /// A solid fill bounded by one closed polyline (with bulges).
     pub(super) fn hatch(&mut self, c: &Common, pts: &[((f64, f64), f64)]) {
+        if !self.target.shading && c.color.is_some_and(|k| (250..=254).contains(&k)) {
+            return;
+        }
+        if self.target.legacy {
+            return self.polyline(c, pts, true);
+        }
         self.head("HATCH", c, "AcDbHatch");
         self.w.pt(10, (0.0, 0.0));
         self.w.p(210, 0);
@@ -137,9 +220,11 @@ impl Entities {
     pub(super) fn text(&mut self, c: &Common, at: (f64, f64), height: f64, s: &str, anchor: &str) {
         self.head("TEXT", c, "AcDbText");
         self.w.pt(10, at);
-        self.w.p(40, num(height));
-        self.w.p(1, escape(s));
-        self.w.p(7, STYLE);
+        self.w.p(40, num(height * self.target.scale));
+        let s = self.string(s);
+        self.w.p(1, s);
+        let style = self.target.style.clone();
+        self.w.p(7, style);
         let h = match anchor {
             "middle" => 1,
             "end" => 2,
@@ -149,7 +234,9 @@ impl Entities {
             self.w.p(72, h);
             self.w.pt(11, at);
         }
-        self.w.p(100, "AcDbText");
+        if !self.target.legacy {
+            self.w.p(100, "AcDbText");
+        }
     }
 
     /// A text with sub- and superscripts: MTEXT attached at the bottom
@@ -164,11 +251,11 @@ impl Entities {
     ) {
         self.head("MTEXT", c, "AcDbMText");
         self.w.pt(10, at);
-        self.w.p(40, num(height));
+        self.w.p(40, num(height * self.target.scale));
         // The column a little wider than the text: one line, never wrapped
         // (a width of 0, "no wrapping", some readers take as a narrow
         // column).
-        self.w.p(41, num(width));
+        self.w.p(41, num(width * self.target.scale));
         let attach = match anchor {
             "middle" => 8,
             "end" => 9,
@@ -177,6 +264,7 @@ impl Entities {
         self.w.p(71, attach);
         self.w.p(72, 1);
         // Content past 250 characters in chunks of code 3, the last as 1.
+        let content = self.string(content);
         let chars: Vec<char> = content.chars().collect();
         let chunks: Vec<String> = chars.chunks(250).map(|c| c.iter().collect()).collect();
         for (i, ch) in chunks.iter().enumerate() {
@@ -185,7 +273,8 @@ impl Entities {
         if chunks.is_empty() {
             self.w.p(1, "");
         }
-        self.w.p(7, STYLE);
+        let style = self.target.style.clone();
+        self.w.p(7, style);
     }
 }
 

@@ -26,11 +26,13 @@
 
 mod document;
 mod entities;
+mod overlay;
 mod style;
 
 use crate::error::{Error, Result};
 use document::document;
-use entities::{Common, Entities, W};
+use entities::{Common, Entities, Target, W};
+pub use overlay::{OVERLAY_LAYER, into_copy};
 pub use style::{FONT_FILE, STYLE, layer_style};
 use style::escape;
 use std::fmt::Write as _;
@@ -251,9 +253,15 @@ fn f(n: &roxmltree::Node, a: &str) -> Option<f64> {
     n.attribute(a).and_then(|v| v.parse::<f64>().ok())
 }
 
-/// One element of the sheet as its entities.
-fn element(e: &mut Entities, n: roxmltree::Node, (w, h): (f64, f64)) -> Result<()> {
-    let flip = |x: f64, y: f64| (x, h - y);
+/// One element of the sheet (`w` × `h` mm) as its entities, each point of
+/// the page (y down) placed in the drawing by `place`.
+fn element(
+    e: &mut Entities,
+    n: roxmltree::Node,
+    (w, h): (f64, f64),
+    place: &dyn Fn(f64, f64) -> (f64, f64),
+) -> Result<()> {
+    let flip = |x: f64, y: f64| place(x, y);
     let class = n.attribute("class").unwrap_or("").to_string();
     let stroke = n.attribute("stroke").filter(|s| *s != "none");
     let sw = f(&n, "stroke-width").unwrap_or(1.0);
@@ -370,8 +378,19 @@ fn text_element(
             color: n.attribute("fill").and_then(aci),
             weight: None,
         };
-        if rs.iter().all(|r| r.1 == 0) {
-            let s: String = rs.iter().map(|r| r.0.as_str()).collect();
+        // R12 has no MTEXT: sub- and superscripts written as a person
+        // types them (a^n_KC).
+        let plain = |rs: &[(String, i32)]| -> String {
+            rs.iter()
+                .map(|(t, k)| match k {
+                    0 => t.clone(),
+                    1 => format!("^{t}"),
+                    _ => format!("_{t}"),
+                })
+                .collect()
+        };
+        if rs.iter().all(|r| r.1 == 0) || e.target.legacy {
+            let s = plain(&rs);
             if !s.trim().is_empty() {
                 e.text(&c, at, size, &s, anchor);
             }
@@ -407,13 +426,13 @@ pub fn dxf(svg: &str) -> Result<String> {
     };
     let mut e = Entities {
         w: W::new(),
-        owner: String::new(),
+        // Handles of the tables and blocks first: fixed, below 0x20.
+        owner: "1F".into(),
         layers: vec!["0".into()],
+        target: Target::sheet(),
     };
-    // Handles of the tables and blocks first: fixed, below 0x20.
-    e.owner = "1F".into();
     for n in root.descendants().filter(|n| n.is_element()) {
-        element(&mut e, n, (w, h))?;
+        element(&mut e, n, (w, h), &|x, y| (x, h - y))?;
     }
     let Entities {
         w: ents, layers, ..
