@@ -5,7 +5,8 @@ Usage: dxf_check.py SVG_DIR DXF_DIR
 
 Both folders hold one `draw` run's sheets (as SVG and as DXF) with their
 sheets.json. Read back with ezdxf, every DXF sheet must: load and audit with
-no error; be in millimetres ($INSUNITS 4); lie within its paper; hold every
+no error; be in millimetres ($INSUNITS 4); give its paper as the paper
+space's limits ($PLIMMIN–$PLIMMAX); lie within its paper; hold every
 text of its SVG (the same string, tspans joined; the same height; its place
 to 0.01 mm; on the layer of its class); hold every line of the SVG (the plan
 vectors among them: the plan points) at its place to 0.01 mm, every circle
@@ -34,7 +35,7 @@ def fail(sheet, what):
 
 def plain_mtext(s):
     """MTEXT content as the SVG's joined tspans: stacks unstacked."""
-    s = re.sub(r"\{\\S([^;]*?)\^([^;]*);\}", lambda m: m.group(1) + m.group(2), s)
+    s = re.sub(r"(?<!\\)\\S([^;]*?)\^([^;]*);", lambda m: m.group(1) + m.group(2), s)
     return s.replace("\\{", "{").replace("\\}", "}").replace("\\\\", "\\")
 
 
@@ -51,6 +52,9 @@ def check_sheet(name, svg_path, dxf_path):
         fail(name, f"audit errors: {[e.message for e in auditor.errors][:5]}")
     if doc.header.get("$INSUNITS") != 4:
         fail(name, f"$INSUNITS is {doc.header.get('$INSUNITS')}, not 4 (mm)")
+    plim = (doc.header.get("$PLIMMIN"), doc.header.get("$PLIMMAX"))
+    if None in plim or not (close(plim[0][0], 0) and close(plim[0][1], 0) and close(plim[1][0], w) and close(plim[1][1], h)):
+        fail(name, f"$PLIMMIN–$PLIMMAX {plim} is not the paper 0, 0 – {w}×{h}")
     if doc.dxfversion < "AC1015":
         fail(name, f"version {doc.dxfversion} is before R2000")
     msp = doc.modelspace()

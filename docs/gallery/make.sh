@@ -129,6 +129,78 @@ cp "$tmp/cfs/course_forces.png" "$out/course_forces_shaper_fig2_11_uk.png"
   echo "![the compressor's force analysis sheet, ru](course_forces_compressor_fig2_12_ru.png)"
   echo
 } >> "$index.tmp"
+# The same course sheets as LibreCAD draws their DXF (docs/sheets.md, "DXF
+# sheets"): `librecad dxf2pdf` without a window (Qt's offscreen platform),
+# then poppler's pdftoppm to PNG at the SVG pictures' 100 dpi. LibreCAD
+# (2.2) takes a text's font from its style's name and reads no TrueType
+# font, so a private font folder maps the style MECHPLAN to its own ГОСТ
+# font lc_opengost-ar; a private HOME keeps the user's LibreCAD settings
+# out of it (and it out of them). Skipped, the pictures left as they are,
+# without librecad or pdftoppm.
+lc_pairs="course_six_link_fig2_10:course6 course_shaper_fig2_11_uk:course_shaper
+course_compressor_fig2_12_ru:course_compressor course_boom_cylinder:course_boom
+course_forces_six_link_fig2_10:cf6 course_forces_shaper_fig2_11_uk:cfs
+course_forces_compressor_fig2_12_ru:course_compressor"
+if ! command -v librecad > /dev/null || ! command -v pdftoppm > /dev/null; then
+  echo "librecad or pdftoppm not found (apt-get install librecad poppler-utils):" \
+    "the course sheets' LibreCAD pictures are left as they are" >&2
+else
+  lc=$tmp/librecad
+  mkdir -p "$lc/home/.config/LibreCAD" "$lc/fonts" "$lc/dxf" "$lc/pdf"
+  for d in /usr/share/librecad/fonts /usr/local/share/librecad/fonts; do
+    if [ -f "$d/lc_opengost-ar.lff" ]; then
+      ln -s "$d/lc_opengost-ar.lff" "$lc/fonts/mechplan.lff"
+      break
+    fi
+  done
+  [ -e "$lc/fonts/mechplan.lff" ] || echo "LibreCAD's font lc_opengost-ar not found: its standard font, no Cyrillic or Greek" >&2
+  printf '[Paths]\nFonts=%s\n' "$lc/fonts" > "$lc/home/.config/LibreCAD/LibreCAD.conf"
+  ./target/release/mechplan draw fixtures/six_link_fig2_10.json --course -o "$lc/course6" --format dxf > /dev/null
+  ./target/release/mechplan draw "$tmp/shaper_uk.json" --course -o "$lc/course_shaper" --format dxf > /dev/null
+  ./target/release/mechplan draw fixtures/dynamics/compressor_fig2_12.json --course --lang ru -o "$lc/course_compressor" --format dxf > /dev/null
+  ./target/release/mechplan draw fixtures/boom_cylinder.json --course -o "$lc/course_boom" --format dxf > /dev/null
+  ./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json --course -o "$lc/cf6" --format dxf > /dev/null
+  ./target/release/mechplan draw fixtures/dynamics/shaper_fig2_11.json --course --lang uk -o "$lc/cfs" --format dxf > /dev/null
+  for pair in $lc_pairs; do
+    name=${pair%%:*}
+    sheet=course
+    case $name in course_forces_*) sheet=course_forces ;; esac
+    cp "$lc/${pair#*:}/$sheet.dxf" "$lc/dxf/$name.dxf"
+  done
+  # -t: the folder of the PDFs (2.2's -o, -p and -r take no value: the
+  # page is the DXF's paper, $PLIMMIN–$PLIMMAX, at 1:1).
+  HOME=$lc/home XDG_RUNTIME_DIR=$lc/home QT_QPA_PLATFORM=offscreen \
+    librecad dxf2pdf -t "$lc/pdf" "$lc/dxf"/*.dxf > "$lc/log" 2>&1
+  for pair in $lc_pairs; do
+    name=${pair%%:*}
+    if [ ! -s "$lc/pdf/$name.pdf" ]; then
+      echo "librecad wrote no $name.pdf:" >&2
+      cat "$lc/log" >&2
+      exit 1
+    fi
+    pdftoppm -png -r 100 -singlefile "$lc/pdf/$name.pdf" "$out/$name.librecad"
+  done
+fi
+if [ -f "$out/course_six_link_fig2_10.librecad.png" ]; then
+  {
+    echo "## The course sheets as LibreCAD draws their DXF"
+    echo
+    echo "On the right, LibreCAD's own rendering of mechplan's DXF of the same"
+    echo "sheet (\`draw --format dxf\`, then \`librecad dxf2pdf\` without a window;"
+    echo "[docs/sheets.md](../sheets.md), \"DXF sheets\", for the commands and the"
+    echo "differences: LibreCAD's ГОСТ stroke font for the text style, solid lines"
+    echo "for the ГОСТ dashed and dash-dot linetypes, black for the white of the"
+    echo "joints and sliders); on the left, mechplan's own PNG."
+    echo
+    echo "| mechplan (SVG → PNG) | LibreCAD (DXF → PDF → PNG) |"
+    echo "| --- | --- |"
+    for pair in $lc_pairs; do
+      name=${pair%%:*}
+      echo "| ![$name]($name.png) | ![$name, LibreCAD]($name.librecad.png) |"
+    done
+    echo
+  } >> "$index.tmp"
+fi
 # The force sheets (docs/kinetostatics.md, "On paper"): position 1 of
 # every dynamics fixture, the six-link's position 2 in Ukrainian too.
 bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"

@@ -170,6 +170,20 @@ fn blocks() -> W {
     blocks
 }
 
+/// The layout's paper by its ISO name as AutoCAD's PDF plotter writes it
+/// (`ISO_A1_(841.00_x_594.00_MM)`), empty for a size not of the A series.
+fn paper_name(w: f64, h: f64) -> String {
+    let (long, short) = (w.max(h), w.min(h));
+    let a = [(1189.0, 841.0), (841.0, 594.0), (594.0, 420.0), (420.0, 297.0), (297.0, 210.0)];
+    match a
+        .iter()
+        .position(|&(l, s)| (l - long).abs() < 0.5 && (s - short).abs() < 0.5)
+    {
+        Some(i) => format!("ISO_A{i}_({w:.2}_x_{h:.2}_MM)"),
+        None => String::new(),
+    }
+}
+
 /// The root dictionary (C), the groups (D), the layouts (E) with Model
 /// (1A) and Layout1 (1B), the plot style names (B, F).
 fn objects((w, h): (f64, f64)) -> W {
@@ -216,7 +230,7 @@ fn objects((w, h): (f64, f64)) -> W {
         objs.p(330, "E");
         objs.p(100, "AcDbPlotSettings");
         objs.p(1, "");
-        objs.p(4, if order == 0 { "" } else { "ISO_A4_(297.00_x_210.00_MM)" });
+        objs.p(4, if order == 0 { String::new() } else { paper_name(w, h) });
         objs.p(6, "");
         objs.p(40, 0);
         objs.p(41, 0);
@@ -287,6 +301,14 @@ fn header(seed: u32, (w, h): (f64, f64)) -> W {
     var(&mut head, "$LIMMAX");
     head.p(10, num(w));
     head.p(20, num(h));
+    // The paper space's limits: the paper, which LibreCAD takes for its
+    // page (without them it prints on A4 portrait).
+    var(&mut head, "$PLIMMIN");
+    head.p(10, 0);
+    head.p(20, 0);
+    var(&mut head, "$PLIMMAX");
+    head.p(10, num(w));
+    head.p(20, num(h));
     var(&mut head, "$LTSCALE");
     head.p(40, 1);
     var(&mut head, "$PSLTSCALE");
@@ -323,4 +345,16 @@ pub(super) fn document(wh: (f64, f64), layers: &[String], ents: W) -> String {
     section(&mut out, "OBJECTS", &objs.out);
     out += "  0\nEOF\n";
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::paper_name;
+
+    #[test]
+    fn layouts_name_their_paper() {
+        assert_eq!(paper_name(841.0, 594.0), "ISO_A1_(841.00_x_594.00_MM)");
+        assert_eq!(paper_name(210.0, 297.0), "ISO_A4_(210.00_x_297.00_MM)");
+        assert_eq!(paper_name(300.0, 200.0), "");
+    }
 }

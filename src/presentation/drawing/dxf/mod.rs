@@ -215,7 +215,8 @@ fn runs(node: roxmltree::Node) -> Vec<(String, i32)> {
 
 /// A text's runs as MTEXT content: a superscript followed by a subscript
 /// stacked over it (`\Sn^KC;`), a lone subscript `\S^x;`, a superscript
-/// `\Sx^;`.
+/// `\Sx^;`. A stack ends at its `;`: no braces round it, which add
+/// nothing and which LibreCAD (2.2) prints as they are.
 fn mtext_content(rs: &[(String, i32)]) -> String {
     let stack = |s: &str| s.replace(['^', '/', '#', ';'], " ");
     let mut out = String::new();
@@ -234,13 +235,13 @@ fn mtext_content(rs: &[(String, i32)]) -> String {
                 };
                 let _ = write!(
                     out,
-                    "{{\\S{}^{};}}",
+                    "\\S{}^{};",
                     mtext_escape(&stack(t)),
                     mtext_escape(&stack(&sub))
                 );
             }
             _ => {
-                let _ = write!(out, "{{\\S^{};}}", mtext_escape(&stack(t)));
+                let _ = write!(out, "\\S^{};", mtext_escape(&stack(t)));
             }
         }
         i += 1;
@@ -458,7 +459,7 @@ mod tests {
         assert_eq!(escape("φ\n= 5°"), "φ = 5°");
         assert_eq!(
             mtext_content(&[("a".into(), 0), ("n".into(), 1), ("KC".into(), -1)]),
-            "a{\\Sn^KC;}"
+            "a\\Sn^KC;"
         );
     }
 }
