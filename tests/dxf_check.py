@@ -73,7 +73,7 @@ def check_sheet(name, svg_path, dxf_path):
             fail(name, f"layer {layer.dxf.name}: linetype {lt} not defined")
         if layer.dxf.name not in ("0", "Defpoints") and layer.dxf.lineweight <= 0:
             fail(name, f"layer {layer.dxf.name}: no lineweight")
-    for cls, lt in (("dashed", "GOST_DASHED"), ("dash-dot", "GOST_DASHDOT"), ("dash-dot-dot", "GOST_DASHDOTDOT")):
+    for cls, lt in (("dashed", "DASHED"), ("dash-dot", "DASHDOT"), ("dash-dot-dot", "DIVIDE")):
         if cls in doc.layers and doc.layers.get(cls).dxf.linetype != lt:
             fail(name, f"layer {cls} is not of linetype {lt}")
 

@@ -108,6 +108,11 @@ impl Entities {
         if let Some(wt) = c.weight {
             self.w.p(370, wt);
         }
+        // White as a true colour a shade off: a CAD that prints ACI 255
+        // black on paper (LibreCAD) prints this white.
+        if c.color == Some(255) {
+            self.w.p(420, 0xFE_FE_FE);
+        }
         self.w.p(100, sub);
     }
 

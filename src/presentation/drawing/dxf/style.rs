@@ -7,16 +7,21 @@ pub const STYLE: &str = "MECHPLAN";
 pub const FONT_FILE: &str = "DejaVuSans.ttf";
 
 /// The linetypes, after ГОСТ 2.303 (mm; a dash positive, a gap negative,
-/// a dot 0), the same periods as the SVG's dash arrays.
+/// a dot 0), the same periods as the SVG's dash arrays. Their names are
+/// the common CAD names of the three kinds (DASHED, DASHDOT, and DIVIDE
+/// for dash-dot-dot): a CAD that reads the file's LTYPE table (AutoCAD,
+/// KOMPAS, ezdxf) draws these patterns, one that knows linetypes by name
+/// only (LibreCAD) draws its own of the same kind rather than a solid
+/// line.
 pub const LTYPES: [(&str, &str, &[f64]); 3] = [
-    ("GOST_DASHED", "Dashed (GOST 2.303) __ __ __", &[4.0, -1.5]),
+    ("DASHED", "Dashed (GOST 2.303) __ __ __", &[4.0, -1.5]),
     (
-        "GOST_DASHDOT",
+        "DASHDOT",
         "Dash-dot thin (GOST 2.303) ____ . ____ .",
         &[12.0, -1.8, 0.0, -1.8],
     ),
     (
-        "GOST_DASHDOTDOT",
+        "DIVIDE",
         "Dash-dot-dot (GOST 2.303) ____ . . ____ . .",
         &[12.0, -1.8, 0.0, -1.8, 0.0, -1.8],
     ),
@@ -28,9 +33,9 @@ pub fn layer_style(name: &str) -> (&'static str, i32) {
         "main" | "vector" => ("Continuous", 50),
         "bold" => ("Continuous", 80),
         "frame" => ("Continuous", 70),
-        "dashed" => ("GOST_DASHED", 25),
-        "dash-dot" => ("GOST_DASHDOT", 25),
-        "dash-dot-dot" => ("GOST_DASHDOTDOT", 25),
+        "dashed" => ("DASHED", 25),
+        "dash-dot" => ("DASHDOT", 25),
+        "dash-dot-dot" => ("DIVIDE", 25),
         "0" => ("Continuous", -3),
         _ => ("Continuous", 25),
     }
