@@ -100,3 +100,52 @@ fn dxf_sheets_match_their_svg_twins() {
     }
     let _ = std::fs::remove_dir_all(&base);
 }
+
+/// The example of docs/sheets.md ("An example: a vector of a plan"): the
+/// four-bar's velocity plan at position 2 holds those four entities as
+/// the page shows them, but for their handles (5) and owners (330).
+#[test]
+fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
+    let doc =
+        std::fs::read_to_string(format!("{}/docs/sheets.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let start = doc.find("```dxf\n").expect("a dxf block in docs/sheets.md") + 7;
+    let excerpt = &doc[start..start + doc[start..].find("```").unwrap()];
+    let out = std::env::temp_dir().join(format!("mechplan-dxf-doc-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    draw(
+        &[
+            "fixtures/four_bar.json",
+            "--format",
+            "dxf",
+            "--position",
+            "2",
+        ],
+        &out,
+    );
+    let file = std::fs::read_to_string(out.join("velocity_2.dxf")).unwrap();
+    // Entities as lists of (code, value), handles and owners left out.
+    let entities = |text: &str| -> Vec<Vec<(String, String)>> {
+        let lines: Vec<&str> = text.lines().collect();
+        let mut all: Vec<Vec<(String, String)>> = Vec::new();
+        for pair in lines.chunks(2) {
+            let [c, v] = pair else { break };
+            let (c, v) = (c.trim().to_string(), v.trim().to_string());
+            if c == "0" {
+                all.push(Vec::new());
+            }
+            if c != "5" && c != "330" {
+                if let Some(e) = all.last_mut() {
+                    e.push((c, v));
+                }
+            }
+        }
+        all
+    };
+    let written = entities(&file);
+    let shown = entities(excerpt);
+    assert_eq!(shown.len(), 4);
+    for e in &shown {
+        assert!(written.contains(e), "not in velocity_2.dxf: {e:?}");
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
