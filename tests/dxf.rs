@@ -149,3 +149,141 @@ fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
     }
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// Issue #28's first proof over the whole gallery (docs/gallery/make.sh):
+/// every fixture's sheets at position 1 (the positions sheet, the
+/// mechanism, the plans), every dynamics fixture's sheets at position 3 (else 1)
+/// (force sheets, the lever) and the six-link's in Ukrainian, the
+/// boom's course sheet, the instant centres, the kinematic diagrams and
+/// the Frenet figures, each written as SVG and as DXF and held to its
+/// twin by tests/dxf_check.py.
+#[test]
+fn every_gallery_sheet_reads_back_as_its_svg_twin() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let base: PathBuf =
+        std::env::temp_dir().join(format!("mechplan-dxf-gallery-{}", std::process::id()));
+    let mut cases: Vec<(String, Vec<String>)> = Vec::new();
+    let fixture = |f: &str| root.join(f).display().to_string();
+    let mut scenes: Vec<PathBuf> = std::fs::read_dir(root.join("fixtures"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    scenes.sort();
+    assert!(scenes.len() >= 13);
+    for p in &scenes {
+        let name = p.file_stem().unwrap().to_string_lossy().into_owned();
+        let args = vec![
+            "draw".into(),
+            p.display().to_string(),
+            "--position".into(),
+            "1".into(),
+        ];
+        cases.push((name, args));
+    }
+    for f in [
+        "arm_two_cylinders",
+        "compressor_fig2_12",
+        "shaper_fig2_11",
+        "worked_slider_crank",
+    ] {
+        let args = vec![
+            "draw".into(),
+            fixture(&format!("fixtures/dynamics/{f}.json")),
+            "--position".into(),
+            // Position 3 as the gallery's force sheets, where there is one.
+            if f == "worked_slider_crank" { "1" } else { "3" }.into(),
+        ];
+        cases.push((format!("dynamics-{f}"), args));
+    }
+    let more: [(&str, &[&str]); 5] = [
+        (
+            "six_link_uk",
+            &[
+                "draw",
+                "fixtures/dynamics/six_link_fig2_10.json",
+                "--lang",
+                "uk",
+                "--position",
+                "2",
+            ],
+        ),
+        (
+            "boom_course",
+            &["draw", "fixtures/boom_cylinder.json", "--course"],
+        ),
+        (
+            "centres",
+            &[
+                "draw",
+                "fixtures/four_bar.json",
+                "--centres",
+                "--position",
+                "5",
+            ],
+        ),
+        (
+            "diagrams",
+            &["diagram", "fixtures/offset_slider_crank.json"],
+        ),
+        ("frenet", &["frenet"]),
+    ];
+    for (name, args) in more {
+        let args = args
+            .iter()
+            .map(|a| {
+                if a.ends_with(".json") {
+                    fixture(a)
+                } else {
+                    a.to_string()
+                }
+            })
+            .collect();
+        cases.push((name.into(), args));
+    }
+    let mut sheets = 0;
+    for (name, args) in &cases {
+        let (svg, dxf) = (
+            base.join(format!("{name}-svg")),
+            base.join(format!("{name}-dxf")),
+        );
+        for (out, extra) in [(&svg, vec![]), (&dxf, vec!["--format", "dxf"])] {
+            let o = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+                .args(args)
+                .args(extra)
+                .arg("-o")
+                .arg(out)
+                .output()
+                .expect("mechplan runs");
+            assert!(
+                o.status.success(),
+                "mechplan {args:?}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+        }
+        sheets += std::fs::read_dir(&dxf)
+            .unwrap()
+            .filter(|e| {
+                e.as_ref()
+                    .unwrap()
+                    .path()
+                    .extension()
+                    .is_some_and(|x| x == "dxf")
+            })
+            .count();
+        let o = common::python_with_ezdxf()
+            .arg(root.join("tests/dxf_check.py"))
+            .arg(&svg)
+            .arg(&dxf)
+            .output()
+            .expect("python3 runs");
+        assert!(
+            o.status.success(),
+            "{name}: the DXF sheets differ from the SVG ones:\n{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    assert!(sheets >= 80, "{sheets} sheets");
+    let _ = std::fs::remove_dir_all(&base);
+}
