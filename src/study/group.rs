@@ -271,11 +271,12 @@ fn check_files(
             k += 1;
             name = format!("{stem}-{k}");
         }
-        if let (true, (_, Some(bytes))) = (is_drawing(path), read_answer(path)?) {
-            if let Some(copy) = c.overlay_dxf(&bytes) {
-                let copy = copy.map_err(in_file(&path.display().to_string()))?;
-                copies.push((format!("{OVERLAYS}/{name}.dxf"), copy));
-            }
+        if is_drawing(path)
+            && let (_, Some(bytes)) = read_answer(path)?
+            && let Some(copy) = c.overlay_dxf(&bytes)
+        {
+            let copy = copy.map_err(in_file(&path.display().to_string()))?;
+            copies.push((format!("{OVERLAYS}/{name}.dxf"), copy));
         }
         overlays.push(Some((format!("{OVERLAYS}/{name}.svg"), svg)));
     }
