@@ -133,10 +133,11 @@ fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
             if c == "0" {
                 all.push(Vec::new());
             }
-            if c != "5" && c != "330" {
-                if let Some(e) = all.last_mut() {
-                    e.push((c, v));
-                }
+            if c != "5"
+                && c != "330"
+                && let Some(e) = all.last_mut()
+            {
+                e.push((c, v));
             }
         }
         all
