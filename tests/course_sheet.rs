@@ -11,11 +11,16 @@ use mechplan::drawing::{DrawOptions, SheetSize, sheets, tree};
 const FIGS: [&str; 3] = ["six_link_fig2_10", "shaper_fig2_11", "compressor_fig2_12"];
 
 fn course(name: &str, size: SheetSize) -> mechplan::drawing::Sheet {
+    course_in(name, size, mechplan::Lang::En)
+}
+
+fn course_in(name: &str, size: SheetSize, lang: mechplan::Lang) -> mechplan::drawing::Sheet {
     let v = fixture(name);
     let (an, s) = solve(mechplan::Scene::from_json(&v.to_string()).unwrap());
     let opt = DrawOptions {
         sheet: size,
         course: true,
+        lang,
         ..DrawOptions::default()
     };
     let (sh, _) = mechplan::drawing::sheets_on(&an, &s, &opt, &[size]).unwrap();
@@ -53,12 +58,18 @@ fn figures(svg: &str) -> Vec<(String, kurbo::Rect)> {
     out
 }
 
+/// In every language: its words are of other lengths (the tables' heads,
+/// the captions, the title block), its numbers written with a comma.
 #[test]
 fn course_sheets_pass_the_layout_checks() {
-    for name in FIGS {
+    use mechplan::Lang;
+    for (name, lang) in FIGS
+        .iter()
+        .flat_map(|n| [(*n, Lang::En), (*n, Lang::Uk), (*n, Lang::Ru)])
+    {
         for size in [SheetSize::A1, SheetSize::A2] {
-            let s = course(name, size);
-            let at = format!("{name} {size:?}");
+            let s = course_in(name, size, lang);
+            let at = format!("{name} {size:?} {lang:?}");
             let (w, h) = size.mm();
             assert!(
                 s.svg.contains(&format!(r#"width="{w}mm" height="{h}mm""#)),
@@ -103,6 +114,11 @@ fn course_sheets_pass_the_layout_checks() {
                 .map(|(_, t)| t)
                 .collect();
             for (k, mu) in &s.scales {
+                let mu = if lang == Lang::En {
+                    mu.to_string()
+                } else {
+                    mu.to_string().replace('.', ",")
+                };
                 let shown = format!("μ{} = {mu} ", &k[3..]);
                 assert!(
                     captions.iter().any(|c| c.contains(&shown)),
@@ -195,7 +211,14 @@ fn title_block(svg: &str, frame: kurbo::Rect, at: &str) {
     for y in [50.0, 45.0, 40.0, 25.0, 20.0, 15.0, 10.0, 5.0] {
         assert!(has(0.0, y, 65.0, y), "{at}: the row at {y} mm");
     }
-    for word in ["Rev.", "Drawn", "Checked", "Scale", "Sheet", "Format A"] {
+    let words: [&str; 6] = if at.ends_with("Uk") {
+        ["Зм.", "Розроб.", "Перев.", "Масштаб", "Арк.", "Формат A"]
+    } else if at.ends_with("Ru") {
+        ["Изм.", "Разраб.", "Пров.", "Масштаб", "Лист", "Формат A"]
+    } else {
+        ["Rev.", "Drawn", "Checked", "Scale", "Sheet", "Format A"]
+    };
+    for word in words {
         assert!(svg.contains(word), "{at}: no \"{word}\"");
     }
 }
