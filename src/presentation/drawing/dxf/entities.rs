@@ -133,6 +133,16 @@ impl Entities {
         self.w.p(98, 0);
     }
 
+    /// A block `name` inserted at `at`, turned by `deg` (counter-clockwise).
+    pub(super) fn insert(&mut self, c: &Common, name: &str, at: (f64, f64), deg: f64) {
+        self.head("INSERT", c, "AcDbBlockReference");
+        self.w.p(2, name);
+        self.w.pt(10, at);
+        if deg != 0.0 {
+            self.w.p(50, num(deg));
+        }
+    }
+
     /// A one-line text at its baseline; `anchor` start, middle or end.
     pub(super) fn text(&mut self, c: &Common, at: (f64, f64), height: f64, s: &str, anchor: &str) {
         self.head("TEXT", c, "AcDbText");
