@@ -96,7 +96,16 @@ fn dxf_sheets_match_their_svg_twins() {
             String::from_utf8_lossy(&o.stdout),
             String::from_utf8_lossy(&o.stderr)
         );
-        eprint!("{}", String::from_utf8_lossy(&o.stdout));
+        let out = String::from_utf8_lossy(&o.stdout);
+        eprint!("{out}");
+        // Every run draws the mechanism: its joints are blocks.
+        let symbols: usize = out
+            .split(" symbols")
+            .next()
+            .and_then(|s| s.rsplit(' ').next())
+            .and_then(|n| n.parse().ok())
+            .unwrap_or(0);
+        assert!(symbols > 0, "{name}: no symbol checked as a block: {out}");
     }
     let _ = std::fs::remove_dir_all(&base);
 }
@@ -286,5 +295,127 @@ fn every_gallery_sheet_reads_back_as_its_svg_twin() {
         );
     }
     assert!(sheets >= 80, "{sheets} sheets");
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+/// A DXF file's code pairs.
+fn pairs(d: &str) -> Vec<(i32, String)> {
+    let lines: Vec<&str> = d.lines().collect();
+    lines
+        .chunks(2)
+        .map(|p| (p[0].trim().parse().unwrap(), p[1].to_string()))
+        .collect()
+}
+
+/// The entities of kind `kind` between (2, `section`) and the next ENDSEC,
+/// each as its pairs.
+fn entities(ps: &[(i32, String)], section: &str, kind: &str) -> Vec<Vec<(i32, String)>> {
+    let from = ps.iter().position(|p| p.0 == 2 && p.1 == section).unwrap();
+    let mut out: Vec<Vec<(i32, String)>> = Vec::new();
+    let mut inside = false;
+    for p in &ps[from..] {
+        if p.0 == 0 {
+            if p.1 == "ENDSEC" {
+                break;
+            }
+            inside = p.1 == kind;
+            if inside {
+                out.push(Vec::new());
+            }
+        } else if inside {
+            out.last_mut().unwrap().push(p.clone());
+        }
+    }
+    out
+}
+
+fn value(e: &[(i32, String)], code: i32) -> Option<&str> {
+    e.iter().find(|p| p.0 == code).map(|p| p.1.as_str())
+}
+
+/// The mechanism's symbols (ГОСТ 2.770: moving joints, fixed pivots, slider
+/// blocks, centres of mass) are blocks: each symbol the SVG groups
+/// (`g data-symbol`) is one INSERT, on the layer of its kind, at the
+/// group's base point, of a block the file defines (BLOCK_RECORD, BLOCK);
+/// all the joints of a sheet are one block, `JOINT`, and all its pivots
+/// standing square (up, down, on a side) one block turned. Without Python: tests/dxf_check.py also checks
+/// where the inserted geometry lands.
+#[test]
+fn joints_and_sliders_are_blocks() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let base = std::env::temp_dir().join(format!("mechplan-dxf-blocks-{}", std::process::id()));
+    let fixture = root.join("fixtures/six_link_fig2_10.json");
+    let fixture = fixture.to_str().unwrap();
+    let (svg, dxf) = (base.join("svg"), base.join("dxf"));
+    draw(&[fixture], &svg);
+    draw(&[fixture, "--format", "dxf"], &dxf);
+    let mut joints = 0;
+    for k in 1..=12 {
+        let s = std::fs::read_to_string(svg.join(format!("mechanism_{k}.svg"))).unwrap();
+        let d = std::fs::read_to_string(dxf.join(format!("mechanism_{k}.dxf"))).unwrap();
+        let doc = roxmltree::Document::parse(&s).unwrap();
+        let groups: Vec<roxmltree::Node> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("g") && n.attribute("data-symbol").is_some())
+            .collect();
+        let ps = pairs(&d);
+        let inserts = entities(&ps, "ENTITIES", "INSERT");
+        let defined: Vec<String> = entities(&ps, "BLOCKS", "BLOCK")
+            .iter()
+            .map(|b| value(b, 2).unwrap().to_string())
+            .collect();
+        let records: Vec<String> = entities(&ps, "TABLES", "BLOCK_RECORD")
+            .iter()
+            .map(|b| value(b, 2).unwrap().to_string())
+            .collect();
+        assert_eq!(
+            inserts.len(),
+            groups.len(),
+            "mechanism_{k}: one INSERT a symbol"
+        );
+        for kind in ["joint", "pivot", "slider"] {
+            assert!(
+                groups
+                    .iter()
+                    .any(|g| g.attribute("data-symbol") == Some(kind)),
+                "mechanism_{k}: no {kind} drawn"
+            );
+        }
+        let mut square: Option<String> = None;
+        for (g, i) in groups.iter().zip(&inserts) {
+            let kind = g.attribute("data-symbol").unwrap();
+            let name = value(i, 2).unwrap();
+            assert!(name.starts_with(&kind.to_uppercase()), "{kind} as {name}");
+            assert!(
+                defined.iter().any(|b| b == name),
+                "mechanism_{k}: {name} not defined"
+            );
+            assert!(
+                records.iter().any(|b| b == name),
+                "mechanism_{k}: {name} has no record"
+            );
+            assert_eq!(value(i, 8), Some(kind));
+            let h = 210.0;
+            let at = |c: i32| value(i, c).unwrap().parse::<f64>().unwrap();
+            let x: f64 = g.attribute("data-x").unwrap().parse().unwrap();
+            let y: f64 = g.attribute("data-y").unwrap().parse().unwrap();
+            assert!((at(10) - x).abs() < 1e-6 && (at(20) - (h - y)).abs() < 1e-6);
+            if kind == "joint" {
+                assert_eq!(name, "JOINT", "mechanism_{k}: every joint is one block");
+                joints += 1;
+            }
+            // Pivots standing up, down or on their sides: one block turned.
+            if kind == "pivot"
+                && [None, Some("90"), Some("180"), Some("270")].contains(&g.attribute("data-angle"))
+            {
+                let first = square.get_or_insert_with(|| name.to_string());
+                assert_eq!(
+                    name, first,
+                    "mechanism_{k}: the square pivots are one block"
+                );
+            }
+        }
+    }
+    assert!(joints >= 12 * 4, "{joints} joints");
     let _ = std::fs::remove_dir_all(&base);
 }

@@ -13,6 +13,13 @@ vectors among them: the plan points) at its place to 0.01 mm, every circle
 and every arrowhead; define its layers' linetypes and lineweights and the
 Cyrillic-carrying text style. Prints one line per folder and exits 1 with
 the failures listed.
+
+Every symbol of the SVG (a group `g data-symbol`: a joint, a fixed pivot, a
+slider block, a centre of mass) must be one INSERT of a block defined in
+the file, on the layer of its kind, at the group's base point and angle,
+its block's entities drawing, inserted, the group's lines, circles,
+outlines and fills where the SVG draws them; the other checks read the INSERTs'
+entities in their places (ezdxf's virtual entities).
 """
 
 import json
@@ -43,6 +50,100 @@ def close(a, b):
     return abs(a - b) <= TOL + 1e-9
 
 
+def flat(space):
+    """The entities of a space in order, each INSERT as its block's
+    entities where the INSERT places them (ezdxf's virtual entities)."""
+    for e in space:
+        if e.dxftype() == "INSERT":
+            yield from flat(e.virtual_entities())
+        else:
+            yield e
+
+
+def svg_points(el, h):
+    """The points an SVG element draws (y up), in the order of its DXF
+    entities: a line's ends; a circle's fill (the ends of a diameter, as
+    (centre, radius, ±1)) and centre; a polygon's fill and outline (its vertices)."""
+    tag = el.tag[len(SVG):]
+    filled = el.get("fill", "black") != "none"
+    stroked = el.get("stroke") not in (None, "none")
+    if tag == "line":
+        return [(float(el.get("x1")), h - float(el.get("y1"))), (float(el.get("x2")), h - float(el.get("y2")))]
+    if tag == "circle":
+        x, y, r = float(el.get("cx")), h - float(el.get("cy")), float(el.get("r"))
+        # A fill's two half circles start anywhere on the circle (a
+        # block's turns them): a point at r from the centre, the two
+        # opposite.
+        return ([(x, y, r, 1), (x, y, r, -1)] if filled else []) + ([(x, y)] if stroked else [])
+    if tag == "polygon":
+        v = [float(t) for t in el.get("points").replace(",", " ").split()]
+        pts = [(v[i], h - v[i + 1]) for i in range(0, len(v) - 1, 2)]
+        return (pts if filled else []) + (pts if stroked else [])
+    return []
+
+
+def dxf_points(e):
+    """The points an entity draws, as svg_points reads its element."""
+    t = e.dxftype()
+    if t == "LINE":
+        return [(e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y)]
+    if t == "CIRCLE":
+        return [(e.dxf.center.x, e.dxf.center.y)]
+    if t == "LWPOLYLINE":
+        return [(p[0], p[1]) for p in e.get_points("xy")]
+    if t == "HATCH":
+        return [(v[0], v[1]) for path in e.paths for v in path.vertices]
+    return []
+
+
+def lands(p, got, i):
+    """Whether the `i`th point drawn, of `got`, is `p` of svg_points: the
+    same point, or for a circle's fill a point on the circle opposite its
+    neighbour (the point after it for +1, before it for −1)."""
+    q = got[i]
+    if len(p) == 2:
+        return close(p[0], q[0]) and close(p[1], q[1])
+    x, y, r, k = p
+    other = got[i + k]
+    on = close(((q[0] - x) ** 2 + (q[1] - y) ** 2) ** 0.5, r)
+    return on and close(q[0] + other[0], 2 * x) and close(q[1] + other[1], 2 * y)
+
+
+def check_symbols(name, root, doc, h):
+    """Every symbol's group of the SVG (`g data-symbol`) is one INSERT, in
+    order, on the layer of its kind, of a block defined in the file whose
+    entities, inserted, draw the group's lines, circles, outlines and fills
+    where the SVG draws them (to 0.01 mm). Returns the number of symbols and of
+    blocks."""
+    groups = [g for g in root.iter(SVG + "g") if g.get("data-symbol")]
+    inserts = list(doc.modelspace().query("INSERT"))
+    if len(groups) != len(inserts):
+        fail(name, f"{len(groups)} symbols in the SVG, {len(inserts)} INSERTs in the DXF")
+    names = set()
+    for g, ins in zip(groups, inserts):
+        kind = g.get("data-symbol")
+        block = doc.blocks.get(ins.dxf.name)
+        if block is None:
+            fail(name, f"{kind}: INSERT of the undefined block {ins.dxf.name}")
+            continue
+        names.add(ins.dxf.name)
+        if not ins.dxf.name.startswith(kind.upper()):
+            fail(name, f"{kind} inserted as the block {ins.dxf.name}")
+        if ins.dxf.layer != kind:
+            fail(name, f"{kind} inserted on layer {ins.dxf.layer}")
+        at = (float(g.get("data-x")), h - float(g.get("data-y")))
+        if not (close(ins.dxf.insert.x, at[0]) and close(ins.dxf.insert.y, at[1])):
+            fail(name, f"{kind} inserted at {ins.dxf.insert}, not {at}")
+        if not close(ins.dxf.rotation, float(g.get("data-angle") or 0)):
+            fail(name, f"{kind} turned by {ins.dxf.rotation}°, not {g.get('data-angle') or 0}°")
+        want = [p for el in g.iter() for p in svg_points(el, h)]
+        drawn = [e for e in ins.virtual_entities() if e.dxftype() in ("LINE", "CIRCLE", "LWPOLYLINE", "HATCH")]
+        got = [p for e in drawn for p in dxf_points(e)]
+        if len(want) != len(got) or not all(lands(p, got, i) for i, p in enumerate(want)):
+            fail(name, f"{kind} at {at}: inserted {got}, drawn in the SVG at {want}")
+    return len(groups), len(names)
+
+
 def check_sheet(name, svg_path, dxf_path):
     root = ET.parse(svg_path).getroot()
     w, h = (float(v) for v in root.get("viewBox").split()[2:4])
@@ -58,6 +159,8 @@ def check_sheet(name, svg_path, dxf_path):
     if doc.dxfversion < "AC1015":
         fail(name, f"version {doc.dxfversion} is before R2000")
     msp = doc.modelspace()
+    n_symbols, n_blocks = check_symbols(name, root, doc, h)
+    ents = list(flat(msp))
     ext = bbox.extents(msp, fast=True)
     if ext.has_data:
         lo, hi = ext.extmin, ext.extmax
@@ -78,7 +181,7 @@ def check_sheet(name, svg_path, dxf_path):
             fail(name, f"layer {cls} is not of linetype {lt}")
 
     # Texts, in order.
-    texts = [e for e in msp if e.dxftype() in ("TEXT", "MTEXT")]
+    texts = [e for e in ents if e.dxftype() in ("TEXT", "MTEXT")]
     want = []
     for t in root.iter(SVG + "text"):
         s = "".join(t.itertext())
@@ -103,11 +206,19 @@ def check_sheet(name, svg_path, dxf_path):
             fail(name, f"text {s!r}: height not {size}")
         if e.dxf.layer != layer:
             fail(name, f"text {s!r} on layer {e.dxf.layer}, not {layer}")
+        # A text narrowed to its cell (textLength) is narrowed in the DXF
+        # too (TEXT's width factor), any other one is not.
+        factor = e.dxf.width if e.dxftype() == "TEXT" else 1.0
+        if t.get("textLength") is not None:
+            if not 0.1 <= factor < 1.0:
+                fail(name, f"text {s!r} narrowed to {t.get('textLength')} mm: width factor {factor}")
+        elif factor != 1.0:
+            fail(name, f"text {s!r}: width factor {factor}, not narrowed on the SVG")
         if not (close(at.x, x) and close(at.y, y)):
             fail(name, f"text {s!r} at ({at.x}, {at.y}), not ({x}, {y})")
 
     # Lines (the plans' vectors: their ends are the plan points), in order.
-    lines = list(msp.query("LINE"))
+    lines = [e for e in ents if e.dxftype() == "LINE"]
     svg_lines = list(root.iter(SVG + "line"))
     if len(lines) != len(svg_lines):
         fail(name, f"{len(svg_lines)} lines in the SVG, {len(lines)} in the DXF")
@@ -120,7 +231,7 @@ def check_sheet(name, svg_path, dxf_path):
         if e.dxf.layer != (l.get("class") or "symbol"):
             fail(name, f"line on layer {e.dxf.layer}, not {l.get('class')}")
     # Circles drawn with an outline, and the arrowheads.
-    circles = list(msp.query("CIRCLE"))
+    circles = [e for e in ents if e.dxftype() == "CIRCLE"]
     svg_circles = [c for c in root.iter(SVG + "circle") if c.get("stroke") not in (None, "none")]
     if len(circles) != len(svg_circles):
         fail(name, f"{len(svg_circles)} circles in the SVG, {len(circles)} in the DXF")
@@ -129,10 +240,10 @@ def check_sheet(name, svg_path, dxf_path):
         if not (close(e.dxf.center.x, o[0]) and close(e.dxf.center.y, o[1]) and close(e.dxf.radius, float(c.get("r")))):
             fail(name, f"circle at {e.dxf.center}, not {o}")
     arrows = [p for p in root.iter(SVG + "polygon") if p.get("class") == "arrow"]
-    solids = list(msp.query("SOLID"))
+    solids = [e for e in ents if e.dxftype() == "SOLID"]
     if len(arrows) != len(solids):
         fail(name, f"{len(arrows)} arrowheads in the SVG, {len(solids)} SOLIDs in the DXF")
-    return len(texts), len(lines)
+    return len(texts), len(lines), n_symbols, n_blocks
 
 
 def main():
@@ -141,7 +252,7 @@ def main():
     md = json.load(open(os.path.join(dxf_dir, "sheets.json")))
     if len(ms["sheets"]) != len(md["sheets"]):
         fail(dxf_dir, "sheets.json lists another number of sheets")
-    n_texts = n_lines = 0
+    n_texts = n_lines = n_symbols = n_blocks = 0
     for s, d in zip(ms["sheets"], md["sheets"]):
         stem = os.path.splitext(s["file"])[0]
         if d["file"] != stem + ".dxf":
@@ -149,10 +260,15 @@ def main():
             continue
         if d["scales"] != s["scales"] or d["size"] != s["size"]:
             fail(stem, "the scales or size in sheets.json differ from the SVG run's")
-        t, l = check_sheet(stem, os.path.join(svg_dir, s["file"]), os.path.join(dxf_dir, d["file"]))
+        t, l, k, b = check_sheet(stem, os.path.join(svg_dir, s["file"]), os.path.join(dxf_dir, d["file"]))
         n_texts += t
         n_lines += l
-    print(f"{dxf_dir}: {len(md['sheets'])} sheets, {n_texts} texts, {n_lines} lines checked")
+        n_symbols += k
+        n_blocks += b
+    print(
+        f"{dxf_dir}: {len(md['sheets'])} sheets, {n_texts} texts, {n_lines} lines, "
+        f"{n_symbols} symbols (INSERTs of {n_blocks} blocks) checked"
+    )
     if failures:
         print(f"{len(failures)} failures:", file=sys.stderr)
         for f in failures[:50]:

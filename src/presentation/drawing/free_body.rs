@@ -9,7 +9,7 @@
 //! its point; a reaction ends at its pair, pushed in from the link cut
 //! away, so that the two kinds stay apart.
 
-use super::canvas::{Canvas, Class, FONT, Label, Line, MAIN, SMALL};
+use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::free_body_marks::{self as marks, Arrow, BLOCK, Drawn, Kind};
 pub use super::free_body_marks::Scene;
 use super::{cylinder, mechanism};
@@ -163,11 +163,11 @@ fn prismatics(
         }
         if slider {
             let (a, b) = BLOCK;
-            c.poly_id(
-                mechanism::block_corners(q, u, a, b).to_vec(),
-                "white",
-                MAIN,
-                format!("{}-slider-{k}", sc.tag),
+            mechanism::slider_block(
+                c,
+                q,
+                &mechanism::block_corners(q, u, a, b),
+                Some(format!("{}-slider-{k}", sc.tag)),
             );
         }
     }
@@ -187,7 +187,7 @@ fn points(sc: &Scene, plan: &ForcePlan, c: &mut Canvas, to: &dyn Fn(Point) -> Po
             mechanism::point_symbol(c, at, joint(sc, p), is_mass(sc, p));
             let name = m.point_name(p);
             // A pair's circle by its name, where the body's size is read.
-            if let Some(super::canvas::Prim::Circle { id, .. }) = c.prims.last_mut() {
+            if let Some(super::canvas::Prim::Circle { id, .. }) = c.last_drawn_mut() {
                 *id = Some(format!("{}-joint-{name}", sc.tag));
             }
             mechanism::point_label(c, at, name, format!("{}-point-{name}", sc.tag));

@@ -29,28 +29,34 @@ pub fn hatch(c: &mut Canvas, at: Point, down: Vec2, w: f64) {
 }
 
 /// A fixed pivot: the pair's circle on a small triangle standing on a
-/// hatched base.
+/// hatched base; one symbol (a block in the DXF), turned from standing
+/// upright.
 fn pivot(c: &mut Canvas, at: Point, down: Vec2) {
     let down = down.normalize();
     let side = perp(down);
     let base = at + down * 4.0;
-    c.seg(at + down * 1.0 - side * 0.9, base - side * 2.5, Class::Main);
-    c.seg(at + down * 1.0 + side * 0.9, base + side * 2.5, Class::Main);
-    hatch(c, base, down, 8.0);
-    c.circle(at, 1.2, "white", MAIN);
+    c.symbol("pivot", at, down.atan2() + FRAC_PI_2, |c| {
+        c.seg(at + down * 1.0 - side * 0.9, base - side * 2.5, Class::Main);
+        c.seg(at + down * 1.0 + side * 0.9, base + side * 2.5, Class::Main);
+        hatch(c, base, down, 8.0);
+        c.circle(at, 1.2, "white", MAIN);
+    });
 }
 
-/// A centre of mass: a circle with two opposite quarters filled.
+/// A centre of mass: a circle with two opposite quarters filled; one
+/// symbol (a block in the DXF).
 pub(crate) fn centre_of_mass(c: &mut Canvas, at: Point) {
     let r = 1.4;
-    c.circle(at, r, "white", THIN);
-    for q in [0.0, std::f64::consts::PI] {
-        let mut pts = vec![at];
-        for k in 0..=6 {
-            pts.push(at + Vec2::from_angle(q + std::f64::consts::FRAC_PI_2 * k as f64 / 6.0) * r);
+    c.symbol("mass", at, 0.0, |c| {
+        c.circle(at, r, "white", THIN);
+        for q in [0.0, std::f64::consts::PI] {
+            let mut pts = vec![at];
+            for k in 0..=6 {
+                pts.push(at + Vec2::from_angle(q + FRAC_PI_2 * k as f64 / 6.0) * r);
+            }
+            c.poly(pts, "black", 0.0);
         }
-        c.poly(pts, "black", 0.0);
-    }
+    });
 }
 
 /// Draw the mechanism at position `s` with scale `mu_l` (m/mm).
@@ -83,8 +89,8 @@ pub fn draw_over(
         draw_wall(c, wall, &bodies, &blocks, centre);
     }
     sc.links(c);
-    for (_, _, corners) in &blocks {
-        c.poly(corners.to_vec(), "white", MAIN);
+    for (_, q, corners) in &blocks {
+        slider_block(c, *q, corners, None);
     }
     super::cylinder::draw(an, s, c, mu_l);
     let supports = sc.pairs(c, &bodies, with_labels);
@@ -101,6 +107,17 @@ pub(crate) fn block_corners(q: Point, u: Vec2, a: f64, b: f64) -> [Point; 4] {
         q + u * a + n * b,
         q - u * a + n * b,
     ]
+}
+
+/// A slider block about `q` with its `corners` (from [`block_corners`]),
+/// as one symbol (a block in the DXF) turned as its guide; `id` for the
+/// checks to find it by.
+pub(crate) fn slider_block(c: &mut Canvas, q: Point, corners: &[Point; 4], id: Option<String>) {
+    let angle = (corners[1] - corners[0]).atan2();
+    c.symbol("slider", q, angle, |c| match id {
+        Some(id) => c.poly_id(corners.to_vec(), "white", MAIN, id),
+        None => c.poly(corners.to_vec(), "white", MAIN),
+    });
 }
 
 /// The points of link `l` that make its body: all but its centres of
@@ -129,11 +146,11 @@ pub(crate) fn on_body(xy: &[Point], q: Point) -> bool {
     (xy[1] - xy[0]).cross(q - xy[0]).abs() <= 1e-6 * (xy[1] - xy[0]).hypot2()
 }
 
-/// A point of a moving link: a revolute pair's circle, a centre of mass,
-/// or a dot.
+/// A point of a moving link: a revolute pair's circle, a centre of mass
+/// (each one symbol, a block in the DXF), or a dot.
 pub(crate) fn point_symbol(c: &mut Canvas, at: Point, joint: bool, mass: bool) {
     if joint {
-        c.circle(at, 1.2, "white", MAIN);
+        c.symbol("joint", at, 0.0, |c| c.circle(at, 1.2, "white", MAIN));
     } else if mass {
         centre_of_mass(c, at);
     } else {

@@ -151,6 +151,18 @@ pub enum Prim {
         id: Option<String>,
         class: &'static str,
     },
+    /// The start of a symbol drawn as one object (a joint, a fixed pivot,
+    /// a slider block, a centre of mass), whose primitives follow up to
+    /// [`Prim::End`]: `kind` names it, `at` is its base point and `angle`
+    /// (rad, counter-clockwise) its turn from its upright drawing. The SVG
+    /// groups it (`<g data-symbol=…>`), the DXF makes it a block.
+    Symbol {
+        kind: &'static str,
+        at: Point,
+        angle: f64,
+    },
+    /// The end of a symbol.
+    End,
 }
 
 impl Prim {
@@ -169,7 +181,10 @@ impl Prim {
             }
             Prim::Circle { c, .. } | Prim::Arc { c, .. } => *c = p(*c),
             Prim::Arrow { tip, .. } => *tip = p(*tip),
-            Prim::Rich { at, .. } | Prim::Text { at, .. } => *at = p(*at),
+            Prim::Rich { at, .. } | Prim::Text { at, .. } | Prim::Symbol { at, .. } => {
+                *at = p(*at)
+            }
+            Prim::End => {}
         }
         self
     }
@@ -318,6 +333,26 @@ impl Canvas {
         });
     }
 
+    /// A symbol (a joint, a fixed pivot, a slider block, a centre of mass)
+    /// as one object: what `draw` draws, based at `at` and turned by
+    /// `angle` (rad, counter-clockwise) from its upright drawing.
+    pub fn symbol(
+        &mut self,
+        kind: &'static str,
+        at: Point,
+        angle: f64,
+        draw: impl FnOnce(&mut Canvas),
+    ) {
+        self.prims.push(Prim::Symbol { kind, at, angle });
+        draw(self);
+        self.prims.push(Prim::End);
+    }
+
+    /// The last primitive drawn, past the end of a symbol.
+    pub fn last_drawn_mut(&mut self) -> Option<&mut Prim> {
+        self.prims.iter_mut().rev().find(|p| !matches!(p, Prim::End))
+    }
+
     /// A plan or mechanism point: a dot with an id the checks can find.
     pub fn dot(&mut self, c: Point, id: String) {
         self.prims.push(Prim::Circle {
@@ -398,6 +433,7 @@ impl Canvas {
                         0.2,
                     );
                 }
+                Prim::Symbol { .. } | Prim::End => {}
             }
         }
         r.unwrap_or(Rect::ZERO)

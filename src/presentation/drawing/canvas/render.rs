@@ -131,6 +131,8 @@ impl Canvas {
                     );
                 }
                 Prim::Arc { c, r, a0, sweep } => arc_svg(out, o, *c, *r, (*a0, *sweep)),
+                Prim::Symbol { kind, at, angle } => symbol_svg(out, o, kind, *at, *angle),
+                Prim::End => out.push_str("</g>\n"),
                 Prim::Rich {
                     at,
                     runs,
@@ -245,6 +247,24 @@ fn seg_svg(out: &mut String, o: Origin, (a, b): (Point, Point), class: Class, id
         o.x(b),
         o.y(b),
         fmt(w)
+    );
+}
+
+/// The start of a symbol's group: its kind, its base point on the page and
+/// its turn (degrees, counter-clockwise on the sheet, in [0, 360); left
+/// out when none), which the DXF writer reads to make it a block.
+fn symbol_svg(out: &mut String, o: Origin, kind: &str, at: Point, angle: f64) {
+    let deg = crate::format::fixed(angle.to_degrees().rem_euclid(360.0), 4);
+    let turn = if deg == "0" || deg == "360" {
+        String::new()
+    } else {
+        format!(r#" data-angle="{deg}""#)
+    };
+    let _ = writeln!(
+        out,
+        r#"<g data-symbol="{kind}" data-x="{}" data-y="{}"{turn}>"#,
+        o.x(at),
+        o.y(at)
     );
 }
 

@@ -3,8 +3,10 @@
 //! space blocks and the objects (root dictionary, layouts), with the
 //! fixed handles below 0x20: tables 1–A, dictionaries B–F, the paper
 //! space's block 18–19, the layouts 1A–1B, the model space's block 1C–1D,
-//! the block records 1E (paper) and 1F (model).
+//! the block records 1E (paper) and 1F (model); the symbols' blocks
+//! (`blocks`) with handles among the entities'.
 
+use super::blocks::{Block, definitions, records};
 use super::entities::W;
 use super::style::{FONT_FILE, LTYPES, STYLE, layer_style, num};
 use std::fmt::Write as _;
@@ -91,7 +93,7 @@ fn drawing_tables(tables: &mut W, d: &mut W, (w, h): (f64, f64), layers: &[Strin
 }
 
 /// VIEW, UCS, APPID, DIMSTYLE and BLOCK_RECORD.
-fn other_tables(tables: &mut W, d: &mut W) {
+fn other_tables(tables: &mut W, d: &mut W, defs: &[Block]) {
     for (name, handle) in [("VIEW", "6"), ("UCS", "7")] {
         table(tables, name, handle, 0);
         tables.p(0, "ENDTAB");
@@ -117,8 +119,8 @@ fn other_tables(tables: &mut W, d: &mut W) {
     tables.p(2, "Standard");
     tables.p(70, 0);
     tables.p(0, "ENDTAB");
-    // BLOCK_RECORD.
-    table(tables, "BLOCK_RECORD", "1", 2);
+    // BLOCK_RECORD: the model and paper spaces, the symbols' blocks.
+    table(tables, "BLOCK_RECORD", "1", 2 + defs.len());
     for (name, handle, layout) in [("*Model_Space", "1F", "1A"), ("*Paper_Space", "1E", "1B")] {
         tables.p(0, "BLOCK_RECORD");
         tables.p(5, handle);
@@ -131,12 +133,12 @@ fn other_tables(tables: &mut W, d: &mut W) {
         tables.p(280, 1);
         tables.p(281, 0);
     }
+    records(tables, defs);
     tables.p(0, "ENDTAB");
-
 }
 
-/// The model and paper space blocks.
-fn blocks() -> W {
+/// The model and paper space blocks, then the symbols'.
+fn blocks(defs: &[Block]) -> W {
     let mut blocks = W::new();
     for (name, rec, begin, end, paper) in [
         ("*Model_Space", "1F", "1C", "1D", false),
@@ -166,7 +168,7 @@ fn blocks() -> W {
         blocks.p(8, 0);
         blocks.p(100, "AcDbBlockEnd");
     }
-
+    definitions(&mut blocks, defs);
     blocks
 }
 
@@ -324,13 +326,13 @@ fn header(seed: u32, (w, h): (f64, f64)) -> W {
 }
 
 /// The whole file around the entities.
-pub(super) fn document(wh: (f64, f64), layers: &[String], ents: W) -> String {
+pub(super) fn document(wh: (f64, f64), layers: &[String], defs: &[Block], ents: W) -> String {
     let mut d = W::new();
     d.next = ents.next;
     let mut tables = W::new();
     drawing_tables(&mut tables, &mut d, wh, layers);
-    other_tables(&mut tables, &mut d);
-    let blocks = blocks();
+    other_tables(&mut tables, &mut d, defs);
+    let blocks = blocks(defs);
     let objs = objects(wh);
     let head = header(d.next + 1, wh);
     let mut out = String::new();

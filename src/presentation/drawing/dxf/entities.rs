@@ -221,13 +221,34 @@ impl Entities {
         self.w.p(98, 0);
     }
 
-    /// A one-line text at its baseline; `anchor` start, middle or end.
-    pub(super) fn text(&mut self, c: &Common, at: (f64, f64), height: f64, s: &str, anchor: &str) {
+    /// A block `name` inserted at `at`, turned by `deg` (counter-clockwise).
+    pub(super) fn insert(&mut self, c: &Common, name: &str, at: (f64, f64), deg: f64) {
+        self.head("INSERT", c, "AcDbBlockReference");
+        self.w.p(2, name);
+        self.w.pt(10, at);
+        if deg != 0.0 {
+            self.w.p(50, num(deg));
+        }
+    }
+
+    /// A one-line text at its baseline, of `height` and width `factor`
+    /// (1: the font's own); `anchor` start, middle or end.
+    pub(super) fn text(
+        &mut self,
+        c: &Common,
+        at: (f64, f64),
+        (height, factor): (f64, f64),
+        s: &str,
+        anchor: &str,
+    ) {
         self.head("TEXT", c, "AcDbText");
         self.w.pt(10, at);
         self.w.p(40, num(height * self.target.scale));
         let s = self.string(s);
         self.w.p(1, s);
+        if factor != 1.0 {
+            self.w.p(41, num(factor));
+        }
         let style = self.target.style.clone();
         self.w.p(7, style);
         let h = match anchor {

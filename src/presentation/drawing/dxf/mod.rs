@@ -16,20 +16,26 @@
 //!   height the font size in mm, in the style `MECHPLAN` (DejaVu Sans, which
 //!   carries Cyrillic and Greek), in UTF-8 (R2007 and later: no code
 //!   page, no `\U+XXXX` escapes for a reader to decode);
+//! - a symbol the renderer groups (`<g data-symbol=…>`: a joint, a fixed
+//!   pivot, a slider block, a centre of mass) → an INSERT, on the layer of
+//!   its kind, of a block holding its entities about its base point
+//!   (`blocks`: symbols alike share a block, `JOINT`, `PIVOT`, …);
 //! - layers by the element's `class`, each with its ГОСТ 2.303 linetype
 //!   and lineweight; each entity also carries its own lineweight (370), the
 //!   stroke width of the SVG.
 //!
 //! The writer is this module's own (no DXF crate): the `dxf` crate (0.6.2)
 //! has no HATCH entity and would bring a dozen crates (chrono, image,
-//! uuid, …) for the fourteen kinds of record written here.
+//! uuid, …) for the fifteen kinds of record written here.
 
+mod blocks;
 mod document;
 mod entities;
 mod overlay;
 mod style;
 
 use crate::error::{Error, Result};
+use blocks::{Block, insert_symbol};
 use document::document;
 use entities::{Common, Entities, Target, W};
 pub use overlay::{OVERLAY_LAYER, into_copy};
@@ -254,15 +260,12 @@ fn f(n: &roxmltree::Node, a: &str) -> Option<f64> {
     n.attribute(a).and_then(|v| v.parse::<f64>().ok())
 }
 
-/// One element of the sheet (`w` × `h` mm) as its entities, each point of
-/// the page (y down) placed in the drawing by `place`.
-fn element(
-    e: &mut Entities,
-    n: roxmltree::Node,
-    (w, h): (f64, f64),
-    place: &dyn Fn(f64, f64) -> (f64, f64),
-) -> Result<()> {
-    let flip = |x: f64, y: f64| place(x, y);
+/// A map of the page's points to the DXF's: the sheet's y-up
+/// coordinates, or a block's own.
+type Place<'a> = &'a dyn Fn(f64, f64) -> (f64, f64);
+
+/// One element of the sheet as its entities, its points mapped by `flip`.
+fn element(e: &mut Entities, n: roxmltree::Node, (w, h): (f64, f64), flip: Place) -> Result<()> {
     let class = n.attribute("class").unwrap_or("").to_string();
     let stroke = n.attribute("stroke").filter(|s| *s != "none");
     let sw = f(&n, "stroke-width").unwrap_or(1.0);
@@ -392,8 +395,20 @@ fn text_element(
         };
         if rs.iter().all(|r| r.1 == 0) || e.target.legacy {
             let s = plain(&rs);
+            // A field narrowed to its cell (the title block's, SVG
+            // `textLength`) keeps its height and is narrowed by TEXT's
+            // width factor, by the renderer's estimate of its width.
+            let factor = f(&n, "textLength")
+                .map(|len| {
+                    let natural = crate::presentation::drawing::canvas::runs_width(
+                        &crate::words::notation::runs(&s),
+                        size,
+                    );
+                    (len / natural).clamp(0.1, 1.0)
+                })
+                .unwrap_or(1.0);
             if !s.trim().is_empty() {
-                e.text(&c, at, size, &s, anchor);
+                e.text(&c, at, (size, factor), &s, anchor);
             }
         } else {
             let width: f64 = rs
@@ -415,6 +430,52 @@ fn text_element(
         }
 }
 
+/// The elements under `n` in the order drawn: a symbol's group
+/// (`data-symbol`) as a block's INSERT, anything else as its entities.
+fn walk(e: &mut Entities, defs: &mut Vec<Block>, n: roxmltree::Node, wh: (f64, f64)) -> Result<()> {
+    let flip = |x: f64, y: f64| (x, wh.1 - y);
+    for ch in n.children().filter(|c| c.is_element()) {
+        if ch.has_tag_name("g") && ch.attribute("data-symbol").is_some() {
+            symbol(e, defs, ch, wh)?;
+        } else {
+            element(e, ch, wh, &flip)?;
+            walk(e, defs, ch, wh)?;
+        }
+    }
+    Ok(())
+}
+
+/// A symbol's group `g` (`data-symbol`, its base point `data-x`,
+/// `data-y` and turn `data-angle` on the page) as the INSERT of its block,
+/// the block's entities about the base point, turned back by the angle.
+fn symbol(
+    e: &mut Entities,
+    defs: &mut Vec<Block>,
+    g: roxmltree::Node,
+    (w, h): (f64, f64),
+) -> Result<()> {
+    let kind = g.attribute("data-symbol").unwrap_or("symbol");
+    let (Some(x), Some(y)) = (f(&g, "data-x"), f(&g, "data-y")) else {
+        return Err(Error::Internal(format!(
+            "the symbol {kind} has no base point (data-x, data-y)"
+        )));
+    };
+    let deg = f(&g, "data-angle").unwrap_or(0.0);
+    let base = (x, h - y);
+    let (sin, cos) = (-deg.to_radians()).sin_cos();
+    let local = move |px: f64, py: f64| {
+        let (dx, dy) = (px - base.0, (h - py) - base.1);
+        (dx * cos - dy * sin, dx * sin + dy * cos)
+    };
+    let draw = |into: &mut Entities| -> Result<()> {
+        for n in g.descendants().skip(1).filter(|n| n.is_element()) {
+            element(into, n, (w, h), &local)?;
+        }
+        Ok(())
+    };
+    insert_symbol(e, defs, (kind, base, deg), &draw)
+}
+
 /// The sheet's SVG (as the renderer writes it) as an ASCII DXF R2007.
 pub fn dxf(svg: &str) -> Result<String> {
     let doc = roxmltree::Document::parse(svg)
@@ -432,13 +493,14 @@ pub fn dxf(svg: &str) -> Result<String> {
         layers: vec!["0".into()],
         target: Target::sheet(),
     };
-    for n in root.descendants().filter(|n| n.is_element()) {
-        element(&mut e, n, (w, h), &|x, y| (x, h - y))?;
-    }
+    // Handles of the tables and blocks first: fixed, below 0x20.
+    e.owner = "1F".into();
+    let mut defs: Vec<Block> = Vec::new();
+    walk(&mut e, &mut defs, root, (w, h))?;
     let Entities {
         w: ents, layers, ..
     } = e;
-    Ok(document((w, h), &layers, ents))
+    Ok(document((w, h), &layers, &defs, ents))
 }
 
 #[cfg(test)]
