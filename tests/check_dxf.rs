@@ -146,6 +146,10 @@ fn variants(mu: f64) -> Vec<(&'static str, Value)> {
             json!({"version": "R2018", "lines": "line", "texts": "mtext", "scale": scale, "origin": [1.0e6, -2.5e6], "block": true}),
         ),
         (
+            "r2000_pole_p_the_scale_names_the_plan",
+            json!({"version": "R2000", "lines": "line", "texts": "text", "scale": scale, "origin": [150, 150], "pole": "p"}),
+        ),
+        (
             "r12_cp1251_block",
             json!({"version": "R12", "lines": "polyline", "texts": "text", "scale": comma, "origin": [150, 150], "block": true, "codepage": "ANSI_1251", "encoding": "cp1251"}),
         ),
@@ -169,7 +173,9 @@ fn twins(fixture: &str, position: usize, wrong: &str) {
         assert_eq!(code, status, "{tag} JSON twin");
         for (name, mut spec) in variants(mu) {
             spec["points"] = json!(pts);
-            spec["pole"] = json!("p_v");
+            if spec.get("pole").is_none() {
+                spec["pole"] = json!("p_v");
+            }
             let path = dir.join(format!("{tag}-{name}.dxf"));
             ezdxf(&path, spec);
             let (code, got) = report(fixture, &path, position);

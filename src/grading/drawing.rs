@@ -172,7 +172,7 @@ pub(super) fn answer_of(
         return Err(Error::fields(vec![i]));
     }
     let (pole_name, pole_at) = pole_label(&labels)?;
-    let plan = plan_of(&pole_name, plan)?;
+    let plan = plan_of(&pole_name, plan, stated_plan(&labels))?;
     let ends = Ends::new(ends);
     let pole = pole_end(&ends, pole_at)?;
     // The pole labelled again at another line end: which is the pole?
@@ -202,10 +202,43 @@ pub(super) fn answer_of(
     })
 }
 
+/// The plan a drawing's texts name, when they name one only: the scale's
+/// subscript (`μv = …`, `μ_a = …`, `mu_v = …`) or a title ("Velocity
+/// plan", "План швидкостей", "План ускорений" …).
+pub(crate) fn stated_plan(labels: &[(String, Point)]) -> Option<PlanKind> {
+    let mut named = labels.iter().filter_map(|(s, _)| {
+        let t = s.to_lowercase().replace([' ', '_', '{', '}'], "");
+        let scale = t
+            .strip_prefix('μ')
+            .or_else(|| t.strip_prefix('µ'))
+            .or_else(|| t.strip_prefix("mu"))
+            .filter(|r| r.contains('='));
+        if let Some(r) = scale {
+            // MTEXT's stacked subscript read as its letters: "μ\\s^v;".
+            let r = r.trim_start_matches("\\s^");
+            return match r.chars().next() {
+                Some('v') => Some(PlanKind::Velocity),
+                Some('a') => Some(PlanKind::Acceleration),
+                _ => None,
+            };
+        }
+        let velocity = ["velocit", "швидкост", "скорост"].iter().any(|w| t.contains(w));
+        let acceleration = ["accelera", "прискорен", "ускорен"].iter().any(|w| t.contains(w));
+        match (velocity, acceleration) {
+            (true, false) => Some(PlanKind::Velocity),
+            (false, true) => Some(PlanKind::Acceleration),
+            _ => None,
+        }
+    });
+    let first = named.next()?;
+    named.all(|k| k == first).then_some(first)
+}
+
 /// The plan a drawing is of: `asked` (--plan), else the one the pole's
-/// label `pole` names; the two must agree (a velocity plan's pole is p_v,
+/// label `pole` names, else the one the drawing's texts name (`stated`);
+/// --plan and the pole's label must agree (a velocity plan's pole is p_v,
 /// an acceleration plan's p_a).
-fn plan_of(pole: &str, asked: Option<PlanKind>) -> Result<PlanKind> {
+fn plan_of(pole: &str, asked: Option<PlanKind>, stated: Option<PlanKind>) -> Result<PlanKind> {
     let labelled = match pole.to_lowercase().as_str() {
         "p_v" | "pv" => Some(PlanKind::Velocity),
         "p_a" | "pa" => Some(PlanKind::Acceleration),
@@ -230,9 +263,11 @@ fn plan_of(pole: &str, asked: Option<PlanKind>) -> Result<PlanKind> {
             ),
         )),
         (Some(p), _) | (None, Some(p)) => Ok(p),
-        (None, None) => Err(whole(
-            "which plan is it? label the pole p_v or p_a, or give --plan",
-        )),
+        (None, None) => stated.ok_or_else(|| {
+            whole(
+                "which plan is it? label the pole p_v or p_a, write the scale as μ_v = … or μ_a = …, or give --plan",
+            )
+        }),
     }
 }
 
@@ -329,6 +364,27 @@ mod tests {
         for at in probes {
             assert_eq!(grid.snap(at), brute(at), "at {at:?}");
         }
+    }
+
+
+    /// The plan a drawing's texts name: the scale's subscript or a title
+    /// naming one plan; none when they name both, or disagree.
+    #[test]
+    fn a_drawing_names_its_plan_by_its_texts() {
+        let at = Point::ZERO;
+        let of = |texts: &[&str]| {
+            stated_plan(&texts.iter().map(|t| (t.to_string(), at)).collect::<Vec<_>>())
+        };
+        assert_eq!(of(&["p", "μv = 0.01 (m/s)/mm"]), Some(PlanKind::Velocity));
+        assert_eq!(of(&["μ_a = 0,05"]), Some(PlanKind::Acceleration));
+        assert_eq!(of(&["mu_v = 0.01"]), Some(PlanKind::Velocity));
+        assert_eq!(of(&["План прискорень, положення 3"]), Some(PlanKind::Acceleration));
+        assert_eq!(of(&["План скоростей"]), Some(PlanKind::Velocity));
+        assert_eq!(of(&["Velocity plan", "μ = 0.01"]), Some(PlanKind::Velocity));
+        assert_eq!(of(&["Plans of velocities and accelerations"]), None);
+        assert_eq!(of(&["μv = 0.01", "Acceleration plan"]), None);
+        assert_eq!(of(&["μ = 0.01", "a", "b"]), None);
+        assert_eq!(of(&["must = 3"]), None);
     }
 
 }

@@ -335,7 +335,7 @@ pub fn overlay_dxf(an: &Analysis, ans: &Answer, r: &Report, original: &[u8]) -> 
     c.write(&mut svg, 0.0, 0.0);
     svg.push_str("</svg>");
     let place = |x: f64, y: f64| (pole.x + x / unit, pole.y - y / unit);
-    crate::presentation::drawing::dxf::into_copy(original, &svg, &place, 1.0 / unit)
+    crate::presentation::drawing::dxf::overlay::into_copy(original, &svg, &place, 1.0 / unit)
 }
 
 /// The overlay's drawing (y up, the pole at the origin) and its title.

@@ -31,14 +31,13 @@
 mod blocks;
 mod document;
 mod entities;
-mod overlay;
+pub mod overlay;
 mod style;
 
 use crate::error::{Error, Result};
 use blocks::{Block, insert_symbol};
 use document::document;
 use entities::{Common, Entities, Target, W};
-pub use overlay::{OVERLAY_LAYER, into_copy};
 pub use style::{FONT_FILE, STYLE, layer_style};
 use style::escape;
 use std::fmt::Write as _;

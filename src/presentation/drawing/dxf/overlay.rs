@@ -15,7 +15,7 @@
 use super::entities::{Entities, Target, W};
 use crate::error::{Error, Result};
 
-pub use crate::grading::dxf::OVERLAY_LAYER;
+use crate::grading::dxf::OVERLAY_LAYER;
 
 /// The overlay layer's colour (ACI 5, blue): the right plan apart from
 /// the student's black lines and the red marks of the wrong points.
