@@ -528,6 +528,59 @@ fn the_overlay_is_written_into_a_copy_of_the_students_dxf() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The marked copy of docs/check.md's example (R2000 with no TABLES and
+/// no handles; its scale as a TEXT, which ezdxf reads without subclass
+/// markers): the overlay's handles took the numbers ezdxf gives the
+/// student's entities, whose audit dropped the student's lines. Marked
+/// again, the copy holds one overlay, not two.
+#[test]
+fn the_documented_answer_is_marked_without_handles() {
+    let doc =
+        std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let start = doc.find("```dxf\n").expect("a dxf block in docs/check.md") + 7;
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let mtext = "MTEXT\n8\nLETTERS\n10\n150\n20\n100\n40\n3.5\n71\n1\n1\n{\\fArial|b0|i0;\\U+03BC\\S^v; = 0,005 (m/s)/mm}\n";
+    assert!(text.contains(mtext));
+    let text = text.replace(
+        mtext,
+        "TEXT\n8\nLETTERS\n10\n150\n20\n100\n40\n3.5\n1\n\\U+03BCv = 0,005 (m/s)/mm\n",
+    );
+    let dir = fresh("doc_marked");
+    let answer = dir.join("answer.dxf");
+    std::fs::write(&answer, &text).unwrap();
+    let (points, _) = plan("four_bar", 2);
+    let places: serde_json::Map<String, Value> = points
+        .iter()
+        .map(|(k, p)| {
+            let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+            (k.clone(), json!([200.0 + x, 150.0 + y]))
+        })
+        .collect();
+    let mark = |from: &Path, to: &Path| {
+        let (code, _, err) = run(&[
+            "check",
+            "fixtures/four_bar.json",
+            from.to_str().unwrap(),
+            "--position",
+            "2",
+            "--dxf",
+            to.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 0, "{err}");
+    };
+    let (once, twice) = (dir.join("once.dxf"), dir.join("twice.dxf"));
+    mark(&answer, &once);
+    mark(&once, &twice);
+    let read = overlay_read(&answer, &once, &places);
+    assert_eq!(read["audit_errors"], json!([]), "{read}");
+    assert_eq!(read["original"], read["copy"], "{read}");
+    assert_eq!(read["missing"], json!([]), "{read}");
+    let again = overlay_read(&answer, &twice, &places);
+    assert_eq!(again["copy"], read["copy"], "{again}");
+    assert_eq!(again["overlay"], read["overlay"], "{again}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// tests/dxf_overlay.py's report on a marked copy.
 fn overlay_read(original: &Path, copy: &Path, points: &serde_json::Map<String, Value>) -> Value {
     let script = format!("{}/tests/dxf_overlay.py", env!("CARGO_MANIFEST_DIR"));

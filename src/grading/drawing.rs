@@ -222,6 +222,12 @@ pub(crate) fn stated_plan(labels: &[(String, Point)]) -> Option<PlanKind> {
                 _ => None,
             };
         }
+        // A title: a text about a plan. Velocities named elsewhere (given
+        // data beside an acceleration plan: "angular velocity ω1 = 10
+        // 1/s", "угловые скорости") name no plan.
+        if !t.contains("plan") && !t.contains("план") {
+            return None;
+        }
         let velocity = ["velocit", "швидкост", "скорост"].iter().any(|w| t.contains(w));
         let acceleration = ["accelera", "прискорен", "ускорен"].iter().any(|w| t.contains(w));
         match (velocity, acceleration) {
@@ -385,6 +391,13 @@ mod tests {
         assert_eq!(of(&["μv = 0.01", "Acceleration plan"]), None);
         assert_eq!(of(&["μ = 0.01", "a", "b"]), None);
         assert_eq!(of(&["must = 3"]), None);
+        // Given data beside an acceleration plan names no plan.
+        assert_eq!(of(&["Angular velocity of the crank ω1 = 10 1/s"]), None);
+        assert_eq!(of(&["Угловые скорости: ω2 = 1,5 1/с", "μ = 0,05"]), None);
+        assert_eq!(
+            of(&["Angular velocities: ω2 = 1.5 1/s", "Acceleration plan"]),
+            Some(PlanKind::Acceleration)
+        );
     }
 
 }

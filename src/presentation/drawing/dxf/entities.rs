@@ -47,6 +47,10 @@ pub(super) struct Target {
     /// R12 and older: no handles, owners or subclass markers; POLYLINE
     /// for LWPOLYLINE, TEXT for MTEXT, a fill's outline for a HATCH.
     pub(super) legacy: bool,
+    /// Handles and owners (R13 and later): left out for a file whose own
+    /// entities have none, whose reader numbers them all (a handle of
+    /// ours would take the number it gives one of the student's).
+    pub(super) handles: bool,
     /// Texts in ASCII, other letters as `\U+XXXX` (readable whatever the
     /// file's code page).
     pub(super) ascii: bool,
@@ -58,6 +62,10 @@ pub(super) struct Target {
     pub(super) layer: Option<String>,
     /// Grey shading (a plan's similar figures) filled; else left out.
     pub(super) shading: bool,
+    /// The colour of an entity that names none (else by layer): for a
+    /// file without a LAYER table, whose CAD gives an unknown layer the
+    /// colour of the student's lines.
+    pub(super) color: Option<i32>,
 }
 
 impl Target {
@@ -65,11 +73,13 @@ impl Target {
     pub(super) fn sheet() -> Target {
         Target {
             legacy: false,
+            handles: true,
             ascii: false,
             style: STYLE.into(),
             scale: 1.0,
             layer: None,
             shading: true,
+            color: None,
         }
     }
 }
@@ -90,16 +100,18 @@ impl Entities {
         }
         self.w.p(0, kind);
         if !self.target.legacy {
-            let h = self.w.h();
-            self.w.p(5, h);
-            if !self.owner.is_empty() {
-                let owner = self.owner.clone();
-                self.w.p(330, owner);
+            if self.target.handles {
+                let h = self.w.h();
+                self.w.p(5, h);
+                if !self.owner.is_empty() {
+                    let owner = self.owner.clone();
+                    self.w.p(330, owner);
+                }
             }
             self.w.p(100, "AcDbEntity");
         }
         self.w.p(8, &layer);
-        if let Some(col) = c.color {
+        if let Some(col) = c.color.or(self.target.color) {
             self.w.p(62, col);
         }
         if self.target.legacy {
