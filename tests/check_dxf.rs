@@ -539,7 +539,7 @@ fn the_documented_answer_is_marked_without_handles() {
         std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let start = doc.find("```dxf\n").expect("a dxf block in docs/check.md") + 7;
     let text = &doc[start..start + doc[start..].find("```").unwrap()];
-    let mtext = "MTEXT\n8\nLETTERS\n10\n150\n20\n100\n40\n3.5\n71\n1\n1\n{\\fArial|b0|i0;\\U+03BC\\S^v; = 0,005 (m/s)/mm}\n";
+    let mtext = "MTEXT\n100\nAcDbEntity\n8\nLETTERS\n100\nAcDbMText\n10\n150\n20\n100\n40\n3.5\n71\n1\n1\n{\\fArial|b0|i0;\\U+03BC\\S^v; = 0,005 (m/s)/mm}\n";
     assert!(text.contains(mtext));
     let text = text.replace(
         mtext,

@@ -225,7 +225,13 @@ pub(crate) fn stated_plan(labels: &[(String, Point)]) -> Option<PlanKind> {
         // A title: a text about a plan. Velocities named elsewhere (given
         // data beside an acceleration plan: "angular velocity ω1 = 10
         // 1/s", "угловые скорости") name no plan.
-        if !t.contains("plan") && !t.contains("план") {
+        // The word itself ("plan", "plans", "план", "плани"), not a
+        // part of another ("explanation").
+        let about_a_plan = s
+            .to_lowercase()
+            .split(|c: char| !c.is_alphanumeric())
+            .any(|w| w.starts_with("plan") || w.starts_with("план"));
+        if !about_a_plan {
             return None;
         }
         let velocity = ["velocit", "швидкост", "скорост"].iter().any(|w| t.contains(w));
@@ -390,6 +396,7 @@ mod tests {
         assert_eq!(of(&["Plans of velocities and accelerations"]), None);
         assert_eq!(of(&["μv = 0.01", "Acceleration plan"]), None);
         assert_eq!(of(&["μ = 0.01", "a", "b"]), None);
+        assert_eq!(of(&["Explanation of the velocity"]), None);
         assert_eq!(of(&["must = 3"]), None);
         // Given data beside an acceleration plan names no plan.
         assert_eq!(of(&["Angular velocity of the crank ω1 = 10 1/s"]), None);
