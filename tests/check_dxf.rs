@@ -53,13 +53,20 @@ fn plan(fixture: &str, position: usize) -> (serde_json::Map<String, Value>, f64)
 /// A DXF written by tests/dxf_answer.py from `spec` (its "path" set).
 fn ezdxf(path: &Path, mut spec: Value) {
     spec["path"] = json!(path.to_str().unwrap());
-    let script = format!("{}/tests/dxf_answer.py", env!("CARGO_MANIFEST_DIR"));
+    python("dxf_answer.py", &spec);
+}
+
+/// What the test script `tests/{script}` (python3 with ezdxf) prints,
+/// given `spec` on its standard input; a panic with its errors when it
+/// fails.
+fn python(script: &str, spec: &Value) -> Vec<u8> {
     let mut child = common::python_with_ezdxf()
-        .arg(script)
+        .arg(format!("{}/tests/{script}", env!("CARGO_MANIFEST_DIR")))
         .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()
-        .expect("python3 (with ezdxf: `python3 -m pip install ezdxf`, as .ci/run does)");
+        .expect("python3 (with ezdxf: the system's, or pip's into target/pydeps)");
     use std::io::Write;
     child
         .stdin
@@ -70,9 +77,10 @@ fn ezdxf(path: &Path, mut spec: Value) {
     let out = child.wait_with_output().unwrap();
     assert!(
         out.status.success(),
-        "ezdxf failed (install it: python3 -m pip install ezdxf): {}",
+        "tests/{script} failed: {}",
         String::from_utf8_lossy(&out.stderr)
     );
+    out.stdout
 }
 
 /// `check`'s JSON report of an answer at `position`, and its status.
@@ -383,10 +391,7 @@ fn bad_dxf_answers_are_refused_naming_what_and_where() {
 /// its title left alone; with CRLF line ends too.
 #[test]
 fn the_documented_dxf_answer_is_right() {
-    let doc =
-        std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
-    let start = doc.find("```dxf\n").expect("a dxf block in docs/check.md") + 7;
-    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let text = common::dxf_block("docs/check.md");
     let dir = fresh("doc");
     for (name, text) in [
         ("lf.dxf", text.to_string()),
@@ -535,10 +540,7 @@ fn the_overlay_is_written_into_a_copy_of_the_students_dxf() {
 /// again, the copy holds one overlay, not two.
 #[test]
 fn the_documented_answer_is_marked_without_handles() {
-    let doc =
-        std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
-    let start = doc.find("```dxf\n").expect("a dxf block in docs/check.md") + 7;
-    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let text = common::dxf_block("docs/check.md");
     let mtext = "MTEXT\n100\nAcDbEntity\n8\nLETTERS\n100\nAcDbMText\n10\n150\n20\n100\n40\n3.5\n71\n1\n1\n{\\fArial|b0|i0;\\U+03BC\\S^v; = 0,005 (m/s)/mm}\n";
     assert!(text.contains(mtext));
     let text = text.replace(
@@ -583,27 +585,6 @@ fn the_documented_answer_is_marked_without_handles() {
 
 /// tests/dxf_overlay.py's report on a marked copy.
 fn overlay_read(original: &Path, copy: &Path, points: &serde_json::Map<String, Value>) -> Value {
-    let script = format!("{}/tests/dxf_overlay.py", env!("CARGO_MANIFEST_DIR"));
-    let mut child = common::python_with_ezdxf()
-        .arg(script)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("python3 with ezdxf");
-    use std::io::Write;
     let spec = json!({"original": original, "copy": copy, "points": points});
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(spec.to_string().as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    serde_json::from_slice(&python("dxf_overlay.py", &spec)).unwrap()
 }

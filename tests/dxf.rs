@@ -84,19 +84,7 @@ fn dxf_sheets_match_their_svg_twins() {
             manifest.contains(".dxf\""),
             "{name}: sheets.json lists the DXF sheets"
         );
-        let o = common::python_with_ezdxf()
-            .arg(root.join("tests/dxf_check.py"))
-            .arg(&svg)
-            .arg(&dxf)
-            .output()
-            .expect("python3 runs");
-        assert!(
-            o.status.success(),
-            "{name}: the DXF sheets differ from the SVG ones:\n{}{}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        );
-        let out = String::from_utf8_lossy(&o.stdout);
+        let out = held_to_twins(name, &svg, &dxf);
         eprint!("{out}");
         // Every run draws the mechanism: its joints are blocks.
         let symbols: usize = out
@@ -115,10 +103,7 @@ fn dxf_sheets_match_their_svg_twins() {
 /// the page shows them, but for their handles (5) and owners (330).
 #[test]
 fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
-    let doc =
-        std::fs::read_to_string(format!("{}/docs/sheets.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
-    let start = doc.find("```dxf\n").expect("a dxf block in docs/sheets.md") + 7;
-    let excerpt = &doc[start..start + doc[start..].find("```").unwrap()];
+    let excerpt = common::dxf_block("docs/sheets.md");
     let out = std::env::temp_dir().join(format!("mechplan-dxf-doc-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
     draw(
@@ -133,17 +118,14 @@ fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
     );
     let file = std::fs::read_to_string(out.join("velocity_2.dxf")).unwrap();
     // Entities as lists of (code, value), handles and owners left out.
-    let entities = |text: &str| -> Vec<Vec<(String, String)>> {
-        let lines: Vec<&str> = text.lines().collect();
-        let mut all: Vec<Vec<(String, String)>> = Vec::new();
-        for pair in lines.chunks(2) {
-            let [c, v] = pair else { break };
-            let (c, v) = (c.trim().to_string(), v.trim().to_string());
-            if c == "0" {
+    let entities = |text: &str| -> Vec<Vec<(i32, String)>> {
+        let mut all: Vec<Vec<(i32, String)>> = Vec::new();
+        for (c, v) in pairs(text) {
+            if c == 0 {
                 all.push(Vec::new());
             }
-            if c != "5"
-                && c != "330"
+            if c != 5
+                && c != 330
                 && let Some(e) = all.last_mut()
             {
                 e.push((c, v));
@@ -152,7 +134,7 @@ fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
         all
     };
     let written = entities(&file);
-    let shown = entities(excerpt);
+    let shown = entities(&excerpt);
     assert_eq!(shown.len(), 4);
     for e in &shown {
         assert!(written.contains(e), "not in velocity_2.dxf: {e:?}");
@@ -281,21 +263,29 @@ fn every_gallery_sheet_reads_back_as_its_svg_twin() {
                     .is_some_and(|x| x == "dxf")
             })
             .count();
-        let o = common::python_with_ezdxf()
-            .arg(root.join("tests/dxf_check.py"))
-            .arg(&svg)
-            .arg(&dxf)
-            .output()
-            .expect("python3 runs");
-        assert!(
-            o.status.success(),
-            "{name}: the DXF sheets differ from the SVG ones:\n{}{}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        );
+        held_to_twins(name, &svg, &dxf);
     }
     assert!(sheets >= 80, "{sheets} sheets");
     let _ = std::fs::remove_dir_all(&base);
+}
+
+/// The DXF sheets in `dxf` held to their SVG twins in `svg` by
+/// tests/dxf_check.py (ezdxf): its report, or a panic naming `name` and
+/// what differs.
+fn held_to_twins(name: &str, svg: &Path, dxf: &Path) -> String {
+    let o = common::python_with_ezdxf()
+        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/dxf_check.py"))
+        .arg(svg)
+        .arg(dxf)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        o.status.success(),
+        "{name}: the DXF sheets differ from the SVG ones:\n{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
 /// A DXF file's code pairs.

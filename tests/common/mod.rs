@@ -99,3 +99,12 @@ pub fn python_with_ezdxf() -> std::process::Command {
     }
     c
 }
+
+/// The first ```dxf block of the project's document `doc` (docs/…), the
+/// example a test holds to what the program reads or writes.
+#[allow(dead_code)]
+pub fn dxf_block(doc: &str) -> String {
+    let text = std::fs::read_to_string(format!("{}/{doc}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let start = text.find("```dxf\n").expect("a dxf block in the document") + 7;
+    text[start..start + text[start..].find("```").unwrap()].to_string()
+}

@@ -297,20 +297,17 @@ fn header(seed: u32, (w, h): (f64, f64)) -> W {
     head.pt(10, (0.0, 0.0));
     var(&mut head, "$EXTMAX");
     head.pt(10, (w, h));
-    var(&mut head, "$LIMMIN");
-    head.p(10, 0);
-    head.p(20, 0);
-    var(&mut head, "$LIMMAX");
-    head.p(10, num(w));
-    head.p(20, num(h));
-    // The paper space's limits: the paper, which LibreCAD takes for its
-    // page (without them it prints on A4 portrait).
-    var(&mut head, "$PLIMMIN");
-    head.p(10, 0);
-    head.p(20, 0);
-    var(&mut head, "$PLIMMAX");
-    head.p(10, num(w));
-    head.p(20, num(h));
+    // The model space's limits and the paper space's ($PLIM…, which
+    // LibreCAD takes for its page: without them it prints on A4 portrait):
+    // the paper.
+    for limits in ["$LIM", "$PLIM"] {
+        var(&mut head, &format!("{limits}MIN"));
+        head.p(10, 0);
+        head.p(20, 0);
+        var(&mut head, &format!("{limits}MAX"));
+        head.p(10, num(w));
+        head.p(20, num(h));
+    }
     var(&mut head, "$LTSCALE");
     head.p(40, 1);
     var(&mut head, "$PSLTSCALE");
