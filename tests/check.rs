@@ -116,6 +116,7 @@ fn items_of(
                 quantity: mechplan::check::answer::Quantity::Point(name.to_string()),
                 value,
             },
+            rounding: 0.0,
         });
     }
     for q in &reference.measured {
@@ -139,6 +140,7 @@ fn items_of(
                 to: String::new(),
                 mm,
             },
+            rounding: 0.0,
         });
     }
     for (l, r) in p.rates.iter().enumerate() {
@@ -163,6 +165,7 @@ fn items_of(
                 quantity: mechplan::check::answer::Quantity::Rate(id.to_string()),
                 value: w,
             },
+            rounding: 0.0,
         });
     }
     out
@@ -249,7 +252,7 @@ fn answer(kind: PlanKind, mu: f64, mu_v: f64, position: usize, items: Vec<Item>)
         delta: 0.5,
         items,
         mu_v: (kind == PlanKind::Acceleration).then_some(mu_v),
-        omegas: Vec::new(),
+        stated: Vec::new(),
     }
 }
 

@@ -27,7 +27,7 @@
 
 mod common;
 use common::*;
-use mechplan::check::answer::{Answer, Given, Item, Quantity};
+use mechplan::check::answer::{Answer, Given, Item, Quantity, Stated, StatedQuantity};
 use mechplan::check::{Judgement, check};
 use mechplan::construction::{
     Drafting, Drawing, Mistake, Op, Plan, PlanKind, PointId, Setup, Variant, build_acceleration,
@@ -290,6 +290,7 @@ fn answer(
                 name: key.clone(),
                 at: *at,
             },
+            rounding: 0.0,
         });
         let Some(i) = reference.points.iter().position(|q| &q.key == key) else {
             continue;
@@ -304,6 +305,7 @@ fn answer(
                     quantity: Quantity::Point(name),
                     value: at[0].hypot(at[1]) * mu,
                 },
+                rounding: 0.0,
             });
         }
     }
@@ -314,8 +316,22 @@ fn answer(
         delta: 0.5,
         items,
         mu_v: (kind == PlanKind::Acceleration).then_some(mu_v),
-        omegas: if kind == PlanKind::Acceleration {
+        stated: if kind == PlanKind::Acceleration {
             omegas
+                .into_iter()
+                .map(|(id, w)| Stated {
+                    pointer: format!("/velocity/values/omega{id}"),
+                    key: format!("omega{id}"),
+                    quantity: StatedQuantity::Omega(id),
+                    value: w,
+                    // Three significant digits, as written.
+                    rounding: if w == 0.0 {
+                        5e-4
+                    } else {
+                        0.5 * 10f64.powi(w.abs().log10().floor() as i32 - 2)
+                    },
+                })
+                .collect()
         } else {
             Vec::new()
         },
@@ -946,6 +962,7 @@ fn the_grade_counts_every_item_and_the_pole_is_the_origin() {
             name: "p_v".into(),
             at: [5.0, 5.0],
         },
+        rounding: 0.0,
     });
     let err = check(an, solved, &a).unwrap_err().to_string();
     assert!(

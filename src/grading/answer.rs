@@ -35,6 +35,38 @@ pub struct Item {
     /// As the student wrote it ("p_v b", "ω2").
     pub key: String,
     pub given: Given,
+    /// How far the number as typed may be from what was read: half a unit
+    /// of its last digit (a point: the radius of both coordinates'
+    /// roundings), in the item's unit (mm, degrees, SI). 0 for what is
+    /// drawn (an SVG or DXF answer), whose coordinates are the drawing's.
+    pub rounding: f64,
+}
+
+/// A value the student states as read off the velocity plan an
+/// acceleration plan was drawn on (`velocity.values`): judged against the
+/// true value, and used, as stated, by every step that needs it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stated {
+    /// Where it came from (`/velocity/values/omega2`).
+    pub pointer: String,
+    /// As the student wrote it (`omega2`, `v_B3B2`).
+    pub key: String,
+    pub quantity: StatedQuantity,
+    /// Signed (counter-clockwise positive) for ω; a magnitude for v_rel.
+    pub value: f64,
+    /// Half a unit of its last digit as written (SI).
+    pub rounding: f64,
+}
+
+/// What a stated value is.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StatedQuantity {
+    /// ω of a link (its id).
+    Omega(String),
+    /// The relative sliding velocity of a point of one link on another,
+    /// as written after `v_` (`B3B2`: B of link 3 on link 2), resolved on
+    /// the scene's names when judged.
+    Slide(String),
 }
 
 #[derive(Clone, Debug)]
@@ -51,10 +83,49 @@ pub struct Answer {
     /// (m/s)/mm, whose measured ω give the normal components (their
     /// drafting error grows with it). `None`: the standard scale.
     pub mu_v: Option<f64>,
-    /// For an acceleration plan: the angular velocities the student took
-    /// from the velocity plan (link id, signed ω); the acceleration plan is
-    /// checked as built with them.
-    pub omegas: Vec<(String, f64)>,
+    /// For an acceleration plan: the values the student took from the
+    /// velocity plan (ω of links, relative sliding velocities); each is
+    /// judged against the true value, and the acceleration plan is
+    /// replayed as built with them.
+    pub stated: Vec<Stated>,
+}
+
+impl Answer {
+    /// The ω the student states for link `id`, if any.
+    pub fn stated_omega(&self, id: &str) -> Option<&Stated> {
+        self.stated
+            .iter()
+            .find(|s| matches!(&s.quantity, StatedQuantity::Omega(l) if l == id))
+    }
+}
+
+/// Half a unit of the last digit of a number as written (`"3.40"`,
+/// `"-12"`, `"1.5e-3"`, the number of `"1.07 cw"`): how far it may be from
+/// what was read before it was rounded to those digits.
+pub fn rounding_of(text: &str) -> f64 {
+    let t = text.trim().trim_start_matches(['-', '+']);
+    let (mantissa, exponent) = match t.find(['e', 'E']) {
+        Some(i) => (&t[..i], t[i + 1..].parse::<i32>().unwrap_or(0)),
+        None => (t, 0),
+    };
+    let decimals = mantissa.find('.').map_or(0, |i| mantissa.len() - i - 1) as i32;
+    0.5 * 10f64.powi(exponent - decimals)
+}
+
+/// [`rounding_of`] a JSON number or a number with its sense.
+fn rounding_of_value(v: &Value) -> f64 {
+    match v {
+        Value::Number(n) => rounding_of(&n.to_string()),
+        Value::String(s) => {
+            let lower = s.trim().to_lowercase();
+            let n = lower
+                .strip_suffix("ccw")
+                .or_else(|| lower.strip_suffix("cw"))
+                .unwrap_or(&lower);
+            rounding_of(n)
+        }
+        _ => 0.0,
+    }
 }
 
 /// The largest answer file read, JSON or SVG (8 MiB): a hand-drawn plan
@@ -340,7 +411,7 @@ pub fn from_json(text: &str) -> Result<Answer> {
     let mut items = measured_items(o, &mut issues);
     items.extend(value_items(o, plan, &mut issues));
     // The velocity plan an acceleration plan was drawn from.
-    let (mu_v, omegas) = velocity_plan(o, plan, &mut issues);
+    let (mu_v, stated) = velocity_plan(o, plan, &mut issues);
     if items.is_empty() && issues.is_empty() {
         issues.push(issue(
             "",
@@ -357,7 +428,7 @@ pub fn from_json(text: &str) -> Result<Answer> {
         delta: delta.unwrap(),
         items,
         mu_v,
-        omegas,
+        stated,
     })
 }
 
@@ -396,6 +467,7 @@ fn section(
 /// negative), the angles (degrees) and the points (mm from the pole).
 fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<Item> {
     let mut items = Vec::new();
+    let mut typed: Vec<[(f64, bool); 2]> = Vec::new();
     for (ptr, key, v) in section(o, "segments", issues) {
         let longest = |x: &str| {
             format!("{x} mm is longer than any sheet: a segment is at most {MAX_PLAN_MM} mm")
@@ -416,6 +488,7 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
                     to: String::new(),
                     mm,
                 },
+                rounding: rounding_of_value(&v),
             });
         }
     }
@@ -432,6 +505,7 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
                     to: String::new(),
                     deg,
                 },
+                rounding: rounding_of_value(&v),
             });
         }
     }
@@ -445,6 +519,7 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
                 };
                 let (x, y) = (coordinate(0), coordinate(1));
                 if let (Some(x), Some(y)) = (x, y) {
+                    typed.push([typed_rounding(&a[0]), typed_rounding(&a[1])]);
                     items.push(Item {
                         pointer: ptr,
                         key: key.clone(),
@@ -452,13 +527,34 @@ fn measured_items(o: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -
                             name: key,
                             at: [x, y],
                         },
+                        rounding: 0.0,
                     });
                 }
             }
             _ => issues.push(issue(&ptr, "expected [x, y] in mm from the pole")),
         }
     }
+    // A whole number among coordinates typed with decimals is one of
+    // them with its zeros left off ("12" for 12.0): it is rounded as the
+    // coarsest of them is; in an answer of whole numbers, to a millimetre.
+    let coarsest = typed
+        .iter()
+        .flatten()
+        .filter_map(|t| t.1.then_some(t.0))
+        .fold(None, |m: Option<f64>, r| Some(m.map_or(r, |m| m.max(r))));
+    let points = items.iter_mut().filter(|i| matches!(i.given, Given::Point { .. }));
+    for (it, [x, y]) in points.zip(&typed) {
+        let of = |(r, decimal): (f64, bool)| if decimal { r } else { coarsest.unwrap_or(r) };
+        it.rounding = of(*x).hypot(of(*y));
+    }
     items
+}
+
+/// The rounding of a coordinate as typed ([`rounding_of`]), and whether
+/// it was typed with a decimal point or an exponent (not a whole number).
+fn typed_rounding(v: &Value) -> (f64, bool) {
+    let whole = v.as_i64().is_some() || v.as_u64().is_some();
+    (rounding_of_value(v), !whole)
 }
 
 /// The derived values: a number, or a magnitude with its sense.
@@ -488,7 +584,10 @@ fn value_items(
             continue;
         }
         match value_item(plan, ptr, key, value) {
-            Ok(it) => items.push(it),
+            Ok(it) => items.push(Item {
+                rounding: rounding_of_value(&v),
+                ..it
+            }),
             Err(i) => issues.push(i),
         }
     }
@@ -538,6 +637,7 @@ fn value_item(
                 quantity: Quantity::Rate(link),
                 value,
             },
+            rounding: 0.0,
         }),
         Some((_, point)) => {
             if value < 0.0 {
@@ -550,6 +650,7 @@ fn value_item(
                     quantity: Quantity::Point(point),
                     value,
                 },
+                rounding: 0.0,
             })
         }
         None => Err(issue(
@@ -560,13 +661,13 @@ fn value_item(
 }
 
 /// The velocity plan an acceleration answer was drawn from: its scale
-/// and the ω taken from it.
+/// and the values taken from it.
 fn velocity_plan(
     o: &serde_json::Map<String, Value>,
     plan: Option<PlanKind>,
     issues: &mut Vec<Issue>,
-) -> (Option<f64>, Vec<(String, f64)>) {
-    let (mut mu_v, mut omegas) = (None, Vec::new());
+) -> (Option<f64>, Vec<Stated>) {
+    let (mut mu_v, mut stated) = (None, Vec::new());
     match o.get("velocity") {
         None => {}
         Some(_) if plan == Some(PlanKind::Velocity) => issues.push(issue(
@@ -588,7 +689,7 @@ fn velocity_plan(
             }
             match vo.get("values") {
                 None => {}
-                Some(Value::Object(vals)) => omegas = velocity_values(vals, issues),
+                Some(Value::Object(vals)) => stated = velocity_values(vals, issues),
                 Some(_) => issues.push(issue("/velocity/values", "expected an object")),
             }
         }
@@ -597,16 +698,13 @@ fn velocity_plan(
             "expected an object: { \"mu\": the velocity plan's scale, \"values\": { \"omega2\": … } }",
         )),
     }
-    (mu_v, omegas)
+    (mu_v, stated)
 }
 
-/// The ω (link id, signed) the student took from the velocity plan.
-fn velocity_values(
-    vals: &serde_json::Map<String, Value>,
-    issues: &mut Vec<Issue>,
-) -> Vec<(String, f64)> {
-    let mut omegas: Vec<(String, f64)> = Vec::new();
-    let mut pointers: Vec<String> = Vec::new();
+/// The values the student took from the velocity plan: the links' ω
+/// (signed) and relative sliding velocities (`v_B3B2`, magnitudes).
+fn velocity_values(vals: &serde_json::Map<String, Value>, issues: &mut Vec<Issue>) -> Vec<Stated> {
+    let mut stated: Vec<Stated> = Vec::new();
     for (k, v) in vals {
         let ptr = format!("/velocity/values/{}", escape(k));
         let value = match v {
@@ -616,29 +714,38 @@ fn velocity_values(
             v => number(v, &ptr, issues),
         }
         .filter(|&x| keep(value_issue(x, &ptr), issues));
-        match (quantity(k), value) {
-            (Some(('w', link)), Some(_)) if omegas.iter().any(|(l, _)| *l == link) => {
-                let first = omegas.iter().position(|(l, _)| *l == link).unwrap_or(0);
+        let quantity = match quantity(k) {
+            Some(('w', link)) => StatedQuantity::Omega(link),
+            Some(('v', rel)) => StatedQuantity::Slide(rel),
+            _ => {
                 issues.push(issue(
                     &ptr,
-                    format!(
-                        "ω{link} is given twice (also {}); give each once",
-                        pointers[first]
-                    ),
+                    format!("\"{k}\": the velocity plan's values here are the links' ω (omega2, ω3) and relative sliding velocities (v_B3B2)"),
                 ));
+                continue;
             }
-            (Some(('w', link)), Some(x)) => {
-                omegas.push((link, x));
-                pointers.push(ptr);
-            }
-            (_, None) => {}
-            _ => issues.push(issue(
+        };
+        let Some(value) = value else { continue };
+        if let Some(first) = stated.iter().find(|s| s.quantity == quantity) {
+            issues.push(issue(
                 &ptr,
-                format!("\"{k}\": the velocity plan's values here are the links' ω (omega2, ω3)"),
-            )),
+                format!("{k} is given twice (also {}); give each once", first.pointer),
+            ));
+            continue;
         }
+        if matches!(quantity, StatedQuantity::Slide(_)) && value < 0.0 {
+            issues.push(issue(&ptr, "a relative sliding velocity is given as a magnitude: it cannot be negative"));
+            continue;
+        }
+        stated.push(Stated {
+            pointer: ptr,
+            key: k.clone(),
+            quantity,
+            value,
+            rounding: rounding_of_value(v),
+        });
     }
-    omegas
+    stated
 }
 
 /// "1.2 cw" → −1.2, "1.2 ccw" → 1.2, "-0.4" → −0.4, in any case ("CW");

@@ -4,7 +4,7 @@
 //! a mistaken construction fits the answer as well.
 
 use super::verdict::{Candidate, MAX_TOLERANCE_OF_PLAN};
-use super::answer::{Answer, Given};
+use super::answer::{Answer, Given, StatedQuantity};
 use super::items::{Expected, expect};
 use crate::error::Result;
 use crate::format::num;
@@ -56,16 +56,21 @@ pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str, lang: Lang) ->
             ],
         ),
         Candidate::Branch(_) => w.branch.clone(),
+        Candidate::Stated { .. } => check::fill(&w.stated_plain, &[("name", what)]),
+        Candidate::DrawnScale { drawn, stated } => check::fill(
+            &w.scale_drawn,
+            &[
+                ("drawn", &decimals(&num(drawn), lang)),
+                ("stated", &decimals(&num(stated), lang)),
+                ("factor", &decimals(&num(stated / drawn), lang)),
+            ],
+        ),
         Candidate::Scale(f) if (f - 1000.0).abs() < 1e-9 || (f - 1e-3).abs() < 1e-12 => {
             w.scale_units.clone()
         }
         Candidate::Scale(_) => check::fill(&w.scale_inverted, &[("mu", &decimals(&num(mu), lang))]),
     }
 }
-
-/// The relative error of an angular velocity the student states: its
-/// rounding to three significant digits.
-const STATED_RATE_ROUNDING: f64 = 5e-3;
 
 /// What the plans of one answer are built from.
 pub(super) struct Builds<'a> {
@@ -74,22 +79,43 @@ pub(super) struct Builds<'a> {
     pub(super) ans: &'a Answer,
     /// The language of the report's sentences.
     pub(super) lang: Lang,
+    /// The scale the student drew at, where it is not the one stated (a
+    /// plan drawn at another μ): the replays are made at it.
+    pub(super) drawn_mu: Option<f64>,
+    /// Stated values (indices into `ans.stated`) a replay takes as true:
+    /// a value written wrong that the student's drawing did not use.
+    pub(super) unused: Vec<usize>,
 }
 
-impl Builds<'_> {
+impl<'a> Builds<'a> {
+    pub(super) fn new(an: &'a Analysis, s: &'a Solved, ans: &'a Answer, lang: Lang) -> Self {
+        Builds {
+            an,
+            s,
+            ans,
+            lang,
+            drawn_mu: None,
+            unused: Vec::new(),
+        }
+    }
+
     fn drive(&self) -> Drives {
         self.s.drives
     }
 
     /// The answer's plan built on configuration `c` with `variant`: a
     /// velocity plan at the student's μ; an acceleration plan at the
-    /// student's μ on their velocity plan (its μ_v, their measured ω).
+    /// student's μ on the true velocity plan at their μ_v (its ω and
+    /// relative velocities as measured there, not as the student states
+    /// them: the comparison with the true plan).
     pub(super) fn plan(&self, c: &Configuration, variant: Variant) -> Result<Plan> {
         self.build(c, variant, None)
     }
 
     /// [`Builds::plan`] replayed with the student's points `given` in
-    /// place of the constructed ones ([`construction::replay`]).
+    /// place of the constructed ones ([`construction::replay`]), at the
+    /// scale they drew at, every step with the values they state (their
+    /// ω, their relative sliding velocities), as their drawing was built.
     pub(super) fn replay(
         &self,
         c: &Configuration,
@@ -99,6 +125,19 @@ impl Builds<'_> {
         self.build(c, variant, Some(given))
     }
 
+    /// The velocity plan an acceleration answer stands on: at the
+    /// student's μ_v (default the standard one), drawn right.
+    pub(super) fn velocity_plan(&self, c: &Configuration) -> Result<Plan> {
+        let d = Drafting {
+            mu_v: self.ans.mu_v,
+            mu_a: None,
+            delta: self.ans.delta,
+            ..self.an.drafting
+        };
+        let st = self.an.setup();
+        Ok(build_plans(&st, c, self.drive(), Order::Velocity, d)?.velocity)
+    }
+
     fn build(
         &self,
         c: &Configuration,
@@ -106,8 +145,12 @@ impl Builds<'_> {
         given: Option<&Drawing>,
     ) -> Result<Plan> {
         let (ans, st) = (self.ans, self.an.setup());
+        let mu = match given {
+            Some(_) => self.drawn_mu.unwrap_or(ans.mu),
+            None => ans.mu,
+        };
         let d = Drafting {
-            mu_v: Some(ans.mu),
+            mu_v: Some(mu),
             mu_a: None,
             delta: ans.delta,
             variant,
@@ -125,20 +168,12 @@ impl Builds<'_> {
             ..d
         };
         let mut vel = build_plans(&st, c, self.drive(), Order::Velocity, dv)?.velocity;
-        for (id, w) in &ans.omegas {
-            if let Some(l) = self.an.mech.scene.link_index(id)
-                && let Some(r) = vel.rates[l].as_mut()
-            {
-                // The ω the student states is the ω their normals were
-                // computed with: its own error is its rounding (three
-                // significant digits, as a student writes it), not the
-                // velocity plan's drafting error.
-                *r = (*w, STATED_RATE_ROUNDING * w.abs());
-            }
+        if given.is_some() {
+            self.take_stated(c, &mut vel);
         }
         let da = Drafting {
             mu_v: ans.mu_v,
-            mu_a: Some(ans.mu),
+            mu_a: Some(mu),
             ..d
         };
         match given {
@@ -149,6 +184,92 @@ impl Builds<'_> {
             None => build_acceleration(&st, c, self.drive(), &vel, da),
         }
     }
+
+    /// Put the values the student states into the velocity plan `vel`
+    /// their acceleration plan stands on: each stated ω is the ω of its
+    /// link and of the links that turn with it (a slider and its guide:
+    /// the Coriolis acceleration of a rocking guide takes the ω the
+    /// student states for the guide), its error the rounding of the digits
+    /// written; a stated relative sliding velocity is the length of the
+    /// relative segment its Coriolis acceleration is built from.
+    fn take_stated(&self, c: &Configuration, vel: &mut Plan) {
+        let m = &self.an.mech;
+        let stated_links: Vec<usize> = self
+            .ans
+            .stated
+            .iter()
+            .filter_map(|s| match &s.quantity {
+                StatedQuantity::Omega(id) => m.scene.link_index(id),
+                StatedQuantity::Slide(_) => None,
+            })
+            .collect();
+        for (k, s) in self.ans.stated.iter().enumerate() {
+            if self.unused.contains(&k) {
+                continue;
+            }
+            match &s.quantity {
+                StatedQuantity::Omega(id) => {
+                    let Some(l) = m.scene.link_index(id) else { continue };
+                    for t in turning_with(m, l) {
+                        if (t == l || !stated_links.contains(&t)) && vel.rates[t].is_some() {
+                            vel.rates[t] = Some((s.value, s.rounding));
+                            vel.rate_sense[t] = true;
+                        }
+                    }
+                }
+                StatedQuantity::Slide(raw) => {
+                    let Some((p, l1, l2)) = super::items::slide_of(m, raw) else { continue };
+                    let Some(at) = world_of(m, c, p) else { continue };
+                    let find = |v: &Plan, l: usize| {
+                        let local = c.pose(l).local(at);
+                        let tol = 1e-9 * m.link_scale(l).max(1e-300);
+                        v.known_at(l, local, tol)
+                    };
+                    let (Some(i1), Some(i2)) = (find(vel, l1), find(vel, l2)) else { continue };
+                    let rel = vel.points[i1].at - vel.points[i2].at;
+                    if rel.hypot() == 0.0 {
+                        continue;
+                    }
+                    let length = s.value / vel.mu;
+                    let (moved, other) = if i1 != 0 { (i1, i2) } else { (i2, i1) };
+                    let sign = if moved == i1 { 1.0 } else { -1.0 };
+                    vel.points[moved].at = vel.points[other].at + rel * (sign * length / rel.hypot());
+                    vel.points[moved].err = s.rounding / vel.mu;
+                    vel.points[other].err = 0.0;
+                }
+            }
+        }
+    }
+}
+
+/// Where the mechanism's point `p` is in configuration `c` (on the first
+/// posed link that carries it).
+pub(super) fn world_of(
+    m: &crate::model::mechanism::Mechanism,
+    c: &Configuration,
+    p: usize,
+) -> Option<kurbo::Point> {
+    (0..m.links.len())
+        .find(|&l| m.links[l].points.contains(&p) && c.poses[l].is_some())
+        .map(|l| c.point(m, l, p))
+}
+
+/// The links that turn with link `l` (itself too): those joined to it by
+/// prismatic pairs, one after another (a slider shares its guide's ω).
+pub(super) fn turning_with(m: &crate::model::mechanism::Mechanism, l: usize) -> Vec<usize> {
+    let mut out = vec![l];
+    let mut k = 0;
+    while k < out.len() {
+        for pr in &m.prismatics {
+            for (a, b) in [(pr.slider, pr.guide), (pr.guide, pr.slider)] {
+                if a == out[k] && !out.contains(&b) && b != m.frame() {
+                    out.push(b);
+                }
+            }
+        }
+        k += 1;
+    }
+    out
 }
 
 /// A candidate's plan and how it fits the answer.

@@ -40,7 +40,7 @@ pub(super) fn refuse_inconsistent(
     let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
         return Ok(());
     };
-    let Ok(plan) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
+    let Ok(plan) = Builds::new(an, s, ans, lang).plan(&s.config, Variant::default()) else {
         return Ok(());
     };
     let other = s.plans.as_ref().and_then(|p| match ans.plan {
@@ -172,7 +172,7 @@ fn another_position(
         if k + 1 == ans.position {
             continue;
         }
-        let Ok(p) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
+        let Ok(p) = Builds::new(an, s, ans, lang).plan(&s.config, Variant::default()) else {
             continue;
         };
         if let Some((m, true)) = fit(&p, &points, ans.delta)

@@ -198,7 +198,7 @@ pub(super) fn answer_of(
         delta,
         items: points(&labels, &ends, pole, kind)?,
         mu_v: None,
-        omegas: Vec::new(),
+        stated: Vec::new(),
     })
 }
 
@@ -320,6 +320,7 @@ fn points(
                 name: name.clone(),
                 at: [rel.x, -rel.y],
             },
+            rounding: 0.0,
         });
     }
     if !issues.is_empty() {

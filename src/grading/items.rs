@@ -335,6 +335,41 @@ impl On<'_> {
     }
 }
 
+/// A relative sliding quantity as written after `v_` (`B3B2`: point B
+/// of link 3 relative to link 2): the point and the two links (indices),
+/// read on the scene's names (a point's name may end in digits, as a
+/// link's id: every split is tried, the point's name repeated).
+pub(super) fn slide_of(m: &crate::model::mechanism::Mechanism, raw: &str) -> Option<(usize, usize, usize)> {
+    let scene = &m.scene;
+    let mut found = None;
+    for (p, point) in scene.points.iter().enumerate() {
+        for exact in [true, false] {
+            let name = &point.name;
+            let starts = if exact {
+                raw.starts_with(name.as_str())
+            } else {
+                raw.to_lowercase().starts_with(&name.to_lowercase())
+            };
+            if !starts || raw.len() <= name.len() {
+                continue;
+            }
+            let rest = &raw[name.len()..];
+            let hay = if exact { rest.to_string() } else { rest.to_lowercase() };
+            let needle = if exact { name.clone() } else { name.to_lowercase() };
+            let Some(i) = hay.find(&needle).filter(|&i| i > 0) else {
+                continue;
+            };
+            let (l1, l2) = (&rest[..i], &rest[i + name.len()..]);
+            if let (Some(a), Some(b)) = (scene.link_index(l1), scene.link_index(l2))
+                && a != b
+            {
+                found = found.or(Some((p, a, b)));
+            }
+        }
+    }
+    found
+}
+
 pub(super) fn names(plan: &Plan) -> String {
     let mut v: Vec<String> = plan.points.iter().map(|p| p.name()).collect();
     v.dedup();

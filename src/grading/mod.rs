@@ -26,6 +26,7 @@ pub mod forces;
 mod items;
 pub mod read;
 mod relative;
+mod stated;
 mod steps;
 pub mod svg;
 pub mod dxf;
@@ -82,13 +83,48 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
 /// mistakes, the reasons, the items' names, the steps quoted) in that
 /// language, its numbers with the language's decimal mark.
 pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> Result<Report> {
-    let mut report = against_true_plan(an, solved, ans, lang)?;
-    pole_at_the_origin(ans, &report.plan_built)?;
     let s = position_of(solved, ans.position)?;
-    let b = Builds { an, s, ans, lang };
-    let Some(steps) = steps::judge(&b, &report.plan_built, lang)? else {
+    let b = Builds::new(an, s, ans, lang);
+    let stated = stated::judge(&b, lang)?;
+    let mut report = against_true_plan(an, solved, ans, lang, &stated)?;
+    pole_at_the_origin(ans, &report.plan_built)?;
+    let Some(mut steps) = steps::judge(&b, &report.plan_built, lang)? else {
         return Ok(report);
     };
+    // A stated value written wrong that the drawing did not use: the
+    // steps replayed with the true value for it fit better.
+    let wrong: Vec<usize> = (0..stated.len())
+        .filter(|&k| stated[k].found.is_some())
+        .collect();
+    let mut unused = false;
+    if !wrong.is_empty() {
+        let b = Builds {
+            unused: wrong,
+            ..Builds::new(an, s, ans, lang)
+        };
+        if let Some(other) = steps::judge(&b, &report.plan_built, lang)?
+            && other.wrong_steps() < steps.wrong_steps()
+        {
+            steps = other;
+            unused = true;
+        }
+    }
+    let w = crate::words::check::phrases(lang);
+    steps.put_first(
+        stated
+            .iter()
+            .filter_map(|j| j.found.clone())
+            .map(|mut f| {
+                // The drawing is built with the right value: only the
+                // number written is wrong.
+                if unused && let Some(m) = &mut f.mistake {
+                    m.push(' ');
+                    m.push_str(&w.stated_unused);
+                }
+                f
+            })
+            .collect(),
+    );
     let global = report.clone();
     report.verdicts = relative::verdicts(&b, &report, &steps);
     let second = SecondOpinion::of(&global, (&steps, report.grade()), lang);
@@ -133,6 +169,7 @@ fn against_true_plan(
     solved: &[Solved],
     ans: &Answer,
     lang: Lang,
+    stated: &[stated::StatedJudged],
 ) -> Result<Report> {
     let s = position_of(solved, ans.position)?;
     if !an.plans
@@ -144,16 +181,8 @@ fn against_true_plan(
             "the scene's want.plans does not include this plan",
         ));
     }
-    for (id, _) in &ans.omegas {
-        if an.mech.scene.link_index(id).is_none() {
-            return Err(Error::scene(
-                format!("/velocity/values/omega{id}"),
-                format!("unknown link \"{id}\""),
-            ));
-        }
-    }
     consistency::refuse_inconsistent(an, solved, ans, lang)?;
-    let b = Builds { an, s, ans, lang };
+    let b = Builds::new(an, s, ans, lang);
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();
     let mut issues = Vec::new();
@@ -196,6 +225,7 @@ fn against_true_plan(
             judgement,
         });
     }
+    verdicts.extend(stated.iter().map(|j| j.verdict.clone()));
     let mut report = Report {
         plan: ans.plan,
         position: ans.position,
@@ -210,7 +240,17 @@ fn against_true_plan(
         lang,
     };
     if report.wrong() > 0 {
-        report.diagnosis = Some(diagnose(&b, &report, &exp, &candidates));
+        // A value stated wrong is the mistake the plan is built on.
+        report.diagnosis = Some(match stated.iter().find_map(|j| j.found.as_ref()) {
+            Some(f) => Diagnosis {
+                mistake: f.mistake.clone(),
+                explanation: f.explanation,
+                step: Some(f.step.clone()),
+                explained: 1,
+                alternatives: Vec::new(),
+            },
+            None => diagnose(&b, &report, &exp, &candidates),
+        });
     }
     Ok(report)
 }

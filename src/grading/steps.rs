@@ -262,7 +262,7 @@ impl Judge<'_> {
             }
             // (An answer that states its ω shows a velocity plan's
             // mistake in those, not here.)
-            if kind == PlanKind::Acceleration && b.ans.omegas.is_empty() {
+            if kind == PlanKind::Acceleration && !states_omega(b.ans) {
                 let on_velocity = variant(None, PlanKind::Velocity);
                 if let Ok(p) = b.replay(&b.s.config, on_velocity, self.given) {
                     let c = Candidate::Mistake {
@@ -513,6 +513,13 @@ impl Judge<'_> {
         }
         best.map(|b| b.0)
     }
+}
+
+/// Does the answer state any ω it took from its velocity plan?
+fn states_omega(ans: &super::answer::Answer) -> bool {
+    ans.stated
+        .iter()
+        .any(|s| matches!(s.quantity, super::answer::StatedQuantity::Omega(_)))
 }
 
 /// Two candidates that name the same mistake.

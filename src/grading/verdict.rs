@@ -207,6 +207,19 @@ pub enum Candidate {
     /// Derived values scaled by a factor: μ in mm instead of m (1000 or
     /// 1/1000), or μ inverted (the factor is 1/μ²).
     Scale(f64),
+    /// A value stated as read off the velocity plan (`velocity.values`,
+    /// its index there) is wrong.
+    Stated {
+        /// Which stated value, in the answer's order.
+        index: usize,
+    },
+    /// The plan is drawn at another scale than the one stated.
+    DrawnScale {
+        /// The scale the points are drawn at.
+        drawn: f64,
+        /// The scale the answer states.
+        stated: f64,
+    },
 }
 
 /// The verdict on one point the student drew, at the step that draws it.
@@ -276,6 +289,27 @@ pub struct StepReport {
 }
 
 impl StepReport {
+    /// How many drawn points are wrong at their steps.
+    pub fn wrong_steps(&self) -> usize {
+        self.steps
+            .iter()
+            .filter(|s| s.judgement == Judgement::Wrong)
+            .count()
+    }
+    /// Put `found` (mistakes made before the plan is drawn: values read
+    /// off the velocity plan, the scale) first among the mistakes.
+    pub fn put_first(&mut self, found: Vec<Found>) {
+        let n = found.len();
+        if n == 0 {
+            return;
+        }
+        for s in &mut self.steps {
+            s.mistake = s.mistake.map(|k| k + n);
+        }
+        let rest = std::mem::take(&mut self.mistakes);
+        self.mistakes = found;
+        self.mistakes.extend(rest);
+    }
     pub fn grade(&self) -> Grade {
         if self.steps.iter().any(|s| s.judgement == Judgement::Wrong) {
             Grade::Wrong

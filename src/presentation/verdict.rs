@@ -72,9 +72,16 @@ pub fn to_text(r: &Report) -> String {
             let (e, g) = (fmt(e), fmt(g));
             let _ = writeln!(t, "      {}", fill(&w.on_plan, &[("expected", &e), ("given", &g)]));
         }
-        if let Some((k, s)) = &v.step {
-            let k = k.to_string();
-            let _ = writeln!(t, "      {}", fill(&w.drawn_at, &[("step", &k), ("sentence", s)]));
+        match &v.step {
+            // A value read off the velocity plan, before the plan is drawn.
+            Some((0, s)) => {
+                let _ = writeln!(t, "      {}", fill(&w.mistake_step, &[("sentence", s)]));
+            }
+            Some((k, s)) => {
+                let k = k.to_string();
+                let _ = writeln!(t, "      {}", fill(&w.drawn_at, &[("step", &k), ("sentence", s)]));
+            }
+            None => {}
         }
         if let Judgement::CannotJudge(why) = &v.judgement {
             let _ = writeln!(t, "      {}", fill(&w.cannot_judge_why, &[("why", why)]));
@@ -143,10 +150,14 @@ fn steps_text(
         Grade::Wrong if steps.mistakes.len() == 1 => {
             let f = &steps.mistakes[0];
             let mistake = f.mistake.clone().unwrap_or_else(|| w.not_recognised.clone());
-            fill(
-                &w.grade_wrong_one,
-                &[("step", &f.step.0.to_string()), ("mistake", &mistake)],
-            )
+            if f.step.0 == 0 {
+                fill(&w.grade_wrong_before, &[("mistake", &mistake)])
+            } else {
+                fill(
+                    &w.grade_wrong_one,
+                    &[("step", &f.step.0.to_string()), ("mistake", &mistake)],
+                )
+            }
         }
         Grade::Wrong if steps.mistakes.is_empty() => {
             fill(&w.grade_wrong_items, &[("count", &wrong.to_string())])
@@ -184,9 +195,12 @@ fn steps_text(
     let _ = writeln!(t, "{}", w.mistakes_heading);
     for (n, f) in steps.mistakes.iter().enumerate() {
         let mistake = f.mistake.clone().unwrap_or_else(|| w.not_recognised.clone());
-        let _ = writeln!(
-            t,
-            "  {}",
+        let line = if f.step.0 == 0 {
+            fill(
+                &w.mistake_line_before,
+                &[("n", &(n + 1).to_string()), ("mistake", &mistake)],
+            )
+        } else {
             fill(
                 &w.mistake_line,
                 &[
@@ -195,10 +209,13 @@ fn steps_text(
                     ("mistake", &mistake),
                 ],
             )
-        );
+        };
+        let _ = writeln!(t, "  {line}");
         let _ = writeln!(t, "     {}", fill(&w.mistake_step, &[("sentence", &f.step.1)]));
-        let points = f.points.join(", ");
-        let _ = writeln!(t, "     {}", fill(&w.mistake_points, &[("points", &points)]));
+        if !f.points.is_empty() {
+            let points = f.points.join(", ");
+            let _ = writeln!(t, "     {}", fill(&w.mistake_points, &[("points", &points)]));
+        }
         if f.mistake.is_none() && !f.alternatives.is_empty() {
             let _ = writeln!(t, "     {}", w.alternatives);
             for a in &f.alternatives {
@@ -433,6 +450,10 @@ fn explanation_json(e: crate::grading::Explanation) -> serde_json::Value {
         }
         E::Branch(g) => serde_json::json!({ "kind": "Branch", "group": g + 1 }),
         E::Scale(f) => serde_json::json!({ "kind": "Scale", "factor": f }),
+        E::Stated { index } => serde_json::json!({ "kind": "Stated", "index": index }),
+        E::DrawnScale { drawn, stated } => {
+            serde_json::json!({ "kind": "DrawnScale", "drawn": drawn, "stated": stated })
+        }
     }
 }
 

@@ -474,6 +474,37 @@ pub struct CheckPhrases {
     pub ambiguous: String,
     /// `{mistake}`.
     pub on_velocity_plan: String,
+    /// A value stated as read off the velocity plan: its item's name
+    /// (`{name}`), the step that reads it (`{sentence}`: the velocity
+    /// plan's measurement), a value given by the data (`{name}`,
+    /// `{value}`), the student's own number beside the right one
+    /// (`{value}`).
+    pub stated_item: String,
+    pub stated_step: String,
+    pub stated_given: String,
+    pub yours: String,
+    /// A stated value wrong: `{name}`, `{given}`, `{expected}`, `{tol}`,
+    /// `{unit}`; why: its sense (`{name}`), μ_v's units, another link's
+    /// length (`{name}`, `{own}`, `{other}`), one factor for every ω
+    /// (`{factor}`), read off wrong (`{name}`).
+    pub stated_wrong: String,
+    pub stated_sense: String,
+    pub stated_units: String,
+    pub stated_length: String,
+    pub stated_common: String,
+    pub stated_plain: String,
+    /// The drawing is built with the right value, not the one stated.
+    pub stated_unused: String,
+    /// The grade and a mistake's line for a mistake made before the plan
+    /// is drawn (a value read off the velocity plan, the scale): `{mistake}`;
+    /// `{n}`, `{mistake}`.
+    pub grade_wrong_before: String,
+    pub mistake_line_before: String,
+    /// A plan drawn at another scale than stated: `{drawn}`, `{stated}`,
+    /// `{factor}` (the drawn segments over the right ones); the scale's
+    /// step (`{mu}`, `{unit}`).
+    pub scale_drawn: String,
+    pub scale_step: String,
     /// Each typical mistake: made at one decision, made everywhere.
     pub mistakes: MistakePhrases,
     /// `{what}`, `{factor}`.

@@ -437,7 +437,7 @@ impl Plan {
         self.skipped.clear();
     }
     /// The plan point of the material point of `link` at `local`.
-    pub(super) fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
+    pub fn known_at(&self, link: usize, local: Vec2, tol: f64) -> Option<usize> {
         self.body
             .iter()
             .find(|k| k.link == link && (k.local - local).hypot2() <= tol * tol)

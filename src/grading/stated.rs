@@ -1,0 +1,277 @@
+//! The values an acceleration answer states as read off its velocity
+//! plan (`velocity.values`: the links' ω, relative sliding velocities),
+//! each judged against the true value with the tolerance of reading it
+//! off a velocity plan drawn at the student's μ_v with their pencil (the
+//! plan's drafting error of the measured segment) and of the digits it is
+//! written with. A value stated wrong is a mistake of its own, made before
+//! the acceleration plan is drawn; the plan is then judged as built with
+//! it (every normal component and Coriolis acceleration with the ω the
+//! student states), so its consistent steps are not blamed.
+
+use super::answer::{Stated, StatedQuantity};
+use super::candidates::Builds;
+use super::items::slide_of;
+use super::verdict::{Candidate, Found, Judgement, Verdict};
+use crate::error::{Issue, Result};
+use crate::format::format_number;
+use crate::kinematics::construction::{Op, Plan};
+use crate::lang::Lang;
+use crate::words::check;
+use crate::words::numbers::decimals;
+
+/// One stated value judged: its verdict, and the mistake when it is wrong.
+pub(super) struct StatedJudged {
+    pub(super) verdict: Verdict,
+    pub(super) found: Option<Found>,
+}
+
+/// The true value of a stated quantity on the velocity plan `vel`: the
+/// value (signed ω; a sliding velocity's magnitude), its drafting bound,
+/// its segment on the plan (mm) and the plan's step that measures it.
+struct Truth {
+    value: f64,
+    bound: f64,
+    mm_per_unit: f64,
+    step: Option<usize>,
+    unit: &'static str,
+}
+
+/// Every stated value of the answer judged; `Err` names a link or point
+/// the scene does not have.
+pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
+    if b.ans.stated.is_empty() {
+        return Ok(Vec::new());
+    }
+    let vel = b.velocity_plan(&b.s.config)?;
+    let mut issues = Vec::new();
+    let mut truths = Vec::new();
+    for s in &b.ans.stated {
+        match truth(b, &vel, s) {
+            Ok(t) => truths.push(t),
+            Err(i) => issues.push(i),
+        }
+    }
+    if !issues.is_empty() {
+        return Err(crate::error::Error::fields(issues));
+    }
+    let common = common_factor(b, &truths);
+    let w = check::phrases(lang);
+    let fmt = |x: f64| decimals(&format_number(x), lang);
+    let mut out = Vec::new();
+    for (index, (s, t)) in b.ans.stated.iter().zip(&truths).enumerate() {
+        let name = name_of(s);
+        let tol = t.bound + s.rounding;
+        let difference = (s.value - t.value).abs();
+        let wrong = difference > tol;
+        let sentence = match t.step {
+            Some(k) => check::step(&vel, k, lang),
+            None => check::fill(&w.stated_given, &[("name", &name), ("value", &fmt(t.value))]),
+        };
+        let step_text = check::fill(&w.stated_step, &[("sentence", &sentence)]);
+        let found = wrong.then(|| {
+            let yours = check::fill(
+                &w.yours,
+                &[("value", &format!("{} {}", fmt(s.value), crate::words::numbers::unit(t.unit, lang)))],
+            );
+            Found {
+                explanation: Some(Candidate::Stated { index }),
+                mistake: Some(diagnosis(b, s, t, common, lang)),
+                step: (0, format!("{step_text} ({yours})")),
+                points: Vec::new(),
+                alternatives: Vec::new(),
+            }
+        });
+        out.push(StatedJudged {
+            verdict: Verdict {
+                pointer: s.pointer.clone(),
+                key: s.key.clone(),
+                what: check::fill(&w.stated_item, &[("name", &name)]),
+                expected: t.value,
+                given: s.value,
+                difference,
+                tolerance: tol,
+                unit: t.unit,
+                on_plan: (t.mm_per_unit > 0.0)
+                    .then(|| (t.value.abs() * t.mm_per_unit, s.value.abs() * t.mm_per_unit)),
+                step: Some((0, step_text)),
+                judgement: if wrong { Judgement::Wrong } else { Judgement::Right },
+            },
+            found,
+        });
+    }
+    Ok(out)
+}
+
+/// The stated value's name as the lecture writes it: ω2, v_B3B2.
+fn name_of(s: &Stated) -> String {
+    match &s.quantity {
+        StatedQuantity::Omega(id) => format!("ω{id}"),
+        StatedQuantity::Slide(raw) => format!("v_{raw}"),
+    }
+}
+
+/// What the true velocity plan gives for stated value `s`.
+fn truth(b: &Builds, vel: &Plan, s: &Stated) -> std::result::Result<Truth, Issue> {
+    let m = &b.an.mech;
+    let issue = |message: String| Issue {
+        pointer: s.pointer.clone(),
+        message,
+    };
+    match &s.quantity {
+        StatedQuantity::Omega(id) => {
+            let l = m
+                .scene
+                .link_index(id)
+                .ok_or_else(|| issue(format!("unknown link \"{id}\"")))?;
+            let (value, bound) = vel.rates[l].ok_or_else(|| {
+                issue(format!(
+                    "link {id} is not constructed on the velocity plan: its ω is not read off it"
+                ))
+            })?;
+            let name = format!("ω{id}");
+            let step = vel.steps.iter().position(|st| match &st.op {
+                Op::Measure {
+                    rate: Some((r, ..)),
+                    ..
+                } => *r == name,
+                Op::Same { link, what, .. } => link == id && what == "ω",
+                _ => false,
+            });
+            let len = vel.rate_len[l];
+            Ok(Truth {
+                value,
+                bound,
+                mm_per_unit: if len > 0.0 { len / vel.mu } else { 0.0 },
+                step,
+                unit: "rad/s",
+            })
+        }
+        StatedQuantity::Slide(raw) => {
+            let (p, l1, l2) = slide_of(m, raw).ok_or_else(|| {
+                issue(format!(
+                    "cannot read \"{raw}\" as a point of one link relative to another (v_B3B2: B of link 3 on link 2)"
+                ))
+            })?;
+            let c = &b.s.config;
+            let at = super::candidates::world_of(m, c, p)
+                .ok_or_else(|| issue(format!("point {} is not on the velocity plan", m.point_name(p))))?;
+            let find = |l: usize| {
+                c.poses[l]?;
+                let local = c.pose(l).local(at);
+                vel.known_at(l, local, 1e-9 * m.link_scale(l).max(1e-300))
+            };
+            let (Some(i1), Some(i2)) = (find(l1), find(l2)) else {
+                return Err(issue(format!(
+                    "v_{raw}: the velocity plan has no points of {} on links {} and {} to read it off",
+                    m.point_name(p),
+                    m.link_id(l1),
+                    m.link_id(l2)
+                )));
+            };
+            let (a, z) = (&vel.points[i1], &vel.points[i2]);
+            Ok(Truth {
+                value: (a.at - z.at).hypot() * vel.mu,
+                bound: (a.err + z.err + b.ans.delta) * vel.mu,
+                mm_per_unit: 1.0 / vel.mu,
+                step: None,
+                unit: "m/s",
+            })
+        }
+    }
+}
+
+/// The factor by which every stated ω is off, where at least two are
+/// wrong and one factor explains them all (each within its tolerance):
+/// the velocity plan's μ_v applied wrongly.
+fn common_factor(b: &Builds, truths: &[Truth]) -> Option<f64> {
+    let pairs: Vec<(&Stated, &Truth)> = b
+        .ans
+        .stated
+        .iter()
+        .zip(truths)
+        .filter(|(s, t)| {
+            matches!(s.quantity, StatedQuantity::Omega(_))
+                && t.value != 0.0
+                && (s.value - t.value).abs() > t.bound + s.rounding
+        })
+        .collect();
+    if pairs.len() < 2 {
+        return None;
+    }
+    let (s0, t0) = pairs[0];
+    let q = s0.value / t0.value;
+    (q > 0.0
+        && pairs
+            .iter()
+            .all(|(s, t)| (s.value - q * t.value).abs() <= q.abs() * t.bound + s.rounding))
+    .then_some(q)
+}
+
+/// Why stated value `s` is wrong, in one sentence: its sense read the
+/// wrong way, μ_v in the wrong units, the link's length taken for
+/// another's, μ_v applied wrongly (every ω off by one factor), else read
+/// off wrong.
+fn diagnosis(b: &Builds, s: &Stated, t: &Truth, common: Option<f64>, lang: Lang) -> String {
+    let w = check::phrases(lang);
+    let fmt = |x: f64| decimals(&format_number(x), lang);
+    let name = name_of(s);
+    let unit = crate::words::numbers::unit(t.unit, lang);
+    let head = check::fill(
+        &w.stated_wrong,
+        &[
+            ("name", &name),
+            ("given", &fmt(s.value)),
+            ("expected", &fmt(t.value)),
+            ("tol", &fmt(t.bound + s.rounding)),
+            ("unit", &unit),
+        ],
+    );
+    let tol = t.bound + s.rounding;
+    let why = if matches!(s.quantity, StatedQuantity::Omega(_)) && (s.value + t.value).abs() <= tol {
+        check::fill(&w.stated_sense, &[("name", &name)])
+    } else if [1000.0, 1e-3]
+        .iter()
+        .any(|f| (s.value - f * t.value).abs() <= f * tol + s.rounding)
+    {
+        w.stated_units.clone()
+    } else if let Some((own, other)) = other_length(b, s, t) {
+        check::fill(
+            &w.stated_length,
+            &[("name", &name), ("own", &own), ("other", &other)],
+        )
+    } else if let Some(q) = common {
+        check::fill(&w.stated_common, &[("factor", &fmt(q))])
+    } else {
+        check::fill(&w.stated_plain, &[("name", &name)])
+    };
+    format!("{head} {why}")
+}
+
+/// Where a stated ω is its relative velocity over another link's length
+/// (ab read with the crank's length: ω2 = v_BA/l_OA): the link's own
+/// segment and the other one's, as l_AB, l_OA.
+fn other_length(b: &Builds, s: &Stated, t: &Truth) -> Option<(String, String)> {
+    let StatedQuantity::Omega(id) = &s.quantity else {
+        return None;
+    };
+    let m = &b.an.mech;
+    let l = m.scene.link_index(id)?;
+    let c = &b.s.config;
+    // Each moving link's length between its first two points, and its
+    // segment's name.
+    let length = |k: usize| -> Option<(f64, String)> {
+        let pts = &m.links[k].points;
+        let (&p, &q) = (pts.first()?, pts.get(1)?);
+        c.poses[k]?;
+        let d = (c.point(m, k, q) - c.point(m, k, p)).hypot();
+        (d > 0.0).then(|| (d, format!("l_{}{}", m.point_name(p), m.point_name(q))))
+    };
+    let (own, own_name) = length(l)?;
+    let tol = t.bound + s.rounding;
+    (0..m.links.len())
+        .filter(|&k| k != l && k != m.frame())
+        .filter_map(length)
+        .filter(|(d, _)| (d - own).abs() > 1e-6 * own)
+        .find(|(d, _)| (s.value.abs() - t.value.abs() * own / d).abs() <= tol * own / d + s.rounding)
+        .map(|(_, other)| (own_name, other))
+}
