@@ -388,7 +388,7 @@ fn seen(
         let nth = reference.points[..i].iter().filter(|q| q.id == id).count();
         drawing
             .points
-            .push((id, nth, kurbo::Vec2::new(at[0], at[1])));
+            .push((id, nth, kurbo::Vec2::new(at[0], at[1]), 0.0));
     }
     let d = Drafting {
         mu_v: Some(if kind == PlanKind::Velocity { mu } else { mu_v }),
@@ -675,7 +675,14 @@ fn mistaken_answers(
         let first = steps.mistakes.first();
         let sentence = first.and_then(|f| f.mistake.clone()).unwrap_or_default();
         let step = first.map(|f| f.step.0);
-        if named(m, &sentence) && step == Some(enters + 1) {
+        // A slip in the first (and only) vector laid off to length, every
+        // later point found by directions from it, is the plan drawn at
+        // another scale: named so, before the plan.
+        let rescaled = m == Mistake::Slip
+            && what.ends_with(" at 0")
+            && sentence.starts_with("The plan is drawn at μ")
+            && step == Some(0);
+        if (named(m, &sentence) && step == Some(enters + 1)) || rescaled {
             c.named_at_step += 1;
         } else {
             let kind_name = what.split(' ').next().unwrap().to_string();

@@ -238,13 +238,22 @@ fn the_answer_file_is_the_documented_one() {
         (r.plan, r.position, r.mu, r.delta, r.mu_v),
         (PlanKind::Acceleration, 2, 0.1, 0.5, Some(0.01))
     );
+    let omegas: Vec<(String, f64, f64)> = r
+        .stated
+        .iter()
+        .map(|s| match &s.quantity {
+            mechplan::check::answer::StatedQuantity::Omega(id) => (id.clone(), s.value, s.rounding),
+            q => panic!("{q:?}"),
+        })
+        .collect();
     assert_eq!(
-        r.omegas,
-        vec![("2".to_string(), -3.12), ("3".to_string(), 1.38)]
+        omegas,
+        vec![("2".to_string(), -3.12, 0.005), ("3".to_string(), 1.38, 0.005)]
     );
     assert_eq!(r.items.len(), 6, "{text}");
     assert!(r.items.iter().any(
         |i| matches!(&i.given, Given::Point { name, at } if name == "s2" && *at == [89.07, 64.72])
+            && (i.rounding - 0.005f64.hypot(0.005)).abs() < 1e-12
     ));
     assert!(
         r.items

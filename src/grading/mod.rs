@@ -26,6 +26,7 @@ pub mod forces;
 mod items;
 pub mod read;
 mod relative;
+mod scale;
 mod stated;
 mod steps;
 pub mod svg;
@@ -109,7 +110,13 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
             unused = true;
         }
     }
+    // A plan drawn at another scale than stated: one mistake, the steps
+    // judged at the drawn scale.
+    let drawn = scale::drawn_at_another(&b, &report.plan_built, &steps, lang)?;
     let w = crate::words::check::phrases(lang);
+    if let Some((other, _)) = &drawn {
+        steps = other.clone();
+    }
     steps.put_first(
         stated
             .iter()
@@ -125,6 +132,10 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
             })
             .collect(),
     );
+    if let Some((_, found)) = drawn {
+        report.verdicts.push(scale_verdict(ans, &found, lang));
+        steps.put_first(vec![found]);
+    }
     let global = report.clone();
     report.verdicts = relative::verdicts(&b, &report, &steps);
     let second = SecondOpinion::of(&global, (&steps, report.grade()), lang);
@@ -138,6 +149,32 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     report.second_opinion = Some(second);
     report.steps = Some(steps);
     Ok(report)
+}
+
+/// The verdict on the scale a plan states where it is drawn at another:
+/// wrong, the drawn scale expected.
+fn scale_verdict(ans: &Answer, found: &verdict::Found, lang: Lang) -> Verdict {
+    let drawn = match found.explanation {
+        Some(verdict::Candidate::DrawnScale { drawn, .. }) => drawn,
+        _ => ans.mu,
+    };
+    Verdict {
+        pointer: "/mu".into(),
+        key: "mu".into(),
+        what: crate::words::check::phrases(lang).scale_item.clone(),
+        expected: drawn,
+        given: ans.mu,
+        difference: (ans.mu - drawn).abs(),
+        tolerance: 0.0,
+        unit: if ans.plan == PlanKind::Velocity {
+            "(m/s)/mm"
+        } else {
+            "(m/s²)/mm"
+        },
+        on_plan: None,
+        step: Some(found.step.clone()),
+        judgement: Judgement::Wrong,
+    }
 }
 
 /// An answer's points are millimetres from the pole: a pole given

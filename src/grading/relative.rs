@@ -17,7 +17,9 @@ use crate::words::numbers::quantity;
 pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<Verdict> {
     let (standard, replay) = (&global.plan_built, &steps.replay);
     let w = check::phrases(b.lang);
-    let size = standard
+    // (The plan's size as drawn: a plan drawn at another scale than
+    // stated is judged at its own.)
+    let size = replay
         .points
         .iter()
         .map(|p| p.at.hypot())

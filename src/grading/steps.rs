@@ -47,7 +47,7 @@ pub(super) fn given_points(b: &Builds, standard: &Plan) -> Drawing {
         };
         let id = standard.points[i].id;
         let nth = standard.points[..i].iter().filter(|p| p.id == id).count();
-        out.points.push((id, nth, Vec2::new(at[0], at[1])));
+        out.points.push((id, nth, Vec2::new(at[0], at[1]), it.rounding));
     }
     out
 }

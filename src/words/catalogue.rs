@@ -505,6 +505,11 @@ pub struct CheckPhrases {
     /// step (`{mu}`, `{unit}`).
     pub scale_drawn: String,
     pub scale_step: String,
+    /// What the drawn scale is beside the stated one: μ inverted, μ in
+    /// the wrong units; the scale as an item of the report.
+    pub scale_drawn_inverted: String,
+    pub scale_drawn_units: String,
+    pub scale_item: String,
     /// Each typical mistake: made at one decision, made everywhere.
     pub mistakes: MistakePhrases,
     /// `{what}`, `{factor}`.

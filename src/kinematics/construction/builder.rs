@@ -176,7 +176,7 @@ impl<'a> Builder<'a> {
 
     /// In a replay, where the student drew the next plan point of `id`.
     #[inline]
-    pub fn given(&self, id: PointId) -> Option<Vec2> {
+    pub fn given(&self, id: PointId) -> Option<(Vec2, f64)> {
         if self.t.given.points.is_empty() {
             return None;
         }
@@ -186,7 +186,7 @@ impl<'a> Builder<'a> {
             .points
             .iter()
             .find(|g| g.0 == id && g.1 == nth)
-            .map(|g| g.2)
+            .map(|g| (g.2, g.3))
     }
 
     /// A new plan point `id` where the construction puts it, with its
@@ -196,20 +196,23 @@ impl<'a> Builder<'a> {
     #[inline]
     pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
         let (at, err) = match self.given(id) {
-            Some(given) => {
+            Some((given, rounding)) => {
                 let nth = self.nth(id);
+                // Read to δ, and typed to its digits.
+                let read = self.plan.delta + rounding;
                 self.plan.judged.push(Judged {
                     id,
                     nth,
                     point: self.plan.points.len(),
                     predicted: at,
-                    tol: err + self.plan.delta,
+                    tol: err + read,
                     given,
+                    rounding,
                     others: Vec::new(),
                     lines: Vec::new(),
                     step: self.taken,
                 });
-                (given, self.plan.delta)
+                (given, read)
             }
             None => (at, err),
         };
@@ -394,8 +397,10 @@ impl<'a> Builder<'a> {
         });
         let out = self.add_point(id, at.to_vec2(), err);
         if let Some(j) = self.plan.judged.last_mut().filter(|j| j.point == out) {
-            // A replay judges the student's point by the two lines.
-            j.lines = lines.to_vec();
+            // A replay judges the student's point by the two lines: each
+            // line's own error and the point read (to δ, typed to its
+            // digits) off it.
+            j.lines = lines.map(|(p, u, t)| (p, u, t + j.rounding)).to_vec();
         }
         self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
         self.step(|| Act::Intersect {

@@ -296,8 +296,9 @@ pub struct Plan {
 #[derive(Clone, Debug, Default)]
 pub struct Drawing {
     /// The `nth` plan point of an id, where the student drew it (mm from
-    /// the pole).
-    pub points: Vec<(PointId, usize, Vec2)>,
+    /// the pole), and how far the coordinates as typed may be from where
+    /// it was read (their rounding, mm; 0 for a drawing).
+    pub points: Vec<(PointId, usize, Vec2, f64)>,
     /// The pairs of leashes the right plan's class III groups took: where
     /// the student's points do not tell which pair they used, the same
     /// (so that a special point σ they measured is the same point).
@@ -323,6 +324,9 @@ pub struct Judged {
     pub tol: f64,
     /// Where the student drew it.
     pub given: Vec2,
+    /// The rounding of its coordinates as typed, mm: counted with the
+    /// reading of the point in every tolerance of its step.
+    pub rounding: f64,
     /// The same point by another right construction (a similar figure on
     /// another pair of known points): place and tolerance.
     pub others: Vec<(Vec2, f64)>,

@@ -258,7 +258,10 @@ impl Builder<'_> {
                     if self.variant.mistake.is_none() {
                         others.extend(self.relations(link, x, known));
                     }
-                    self.plan.judged.last_mut().expect("just judged").others = others;
+                    let j = self.plan.judged.last_mut().expect("just judged");
+                    // (Each read off as the point itself is: to δ, and
+                    // typed to its digits.)
+                    j.others = others.into_iter().map(|(p, t)| (p, t + j.rounding)).collect();
                 }
                 self.step(|| Act::Figure {
                     a: pa,
