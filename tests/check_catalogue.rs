@@ -675,9 +675,9 @@ fn mistaken_answers(
         let first = steps.mistakes.first();
         let sentence = first.and_then(|f| f.mistake.clone()).unwrap_or_default();
         let step = first.map(|f| f.step.0);
-        // A slip in the first (and only) vector laid off to length, every
-        // later point found by directions from it, is the plan drawn at
-        // another scale: named so, before the plan.
+        // A slip in the first vector laid off, every later point found
+        // from it by directions or by lengths too short to tell, is the
+        // plan drawn at another scale: named so, before the plan.
         let rescaled = m == Mistake::Slip
             && what.ends_with(" at 0")
             && sentence.starts_with("The plan is drawn at μ")

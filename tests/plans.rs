@@ -743,7 +743,8 @@ fn the_sweep_kernel_on_the_stiff_catalogue() {
 /// twin), on every fixture's sweep and every stress scene. The sweep's
 /// kernel (`sweep_kernel`, not taken) gives the same CSV, but not the
 /// same table: where it draws a plan at the neighbouring scale its
-/// check's worst quantity can be another (`class3_004` at 14°).
+/// check's worst quantity can be another (it did for `class3_004` at 14°
+/// while the arcs' error was first-order).
 #[test]
 fn a_sweep_that_keeps_no_plans_checks_them_numbers_only_with_the_same_results() {
     use mechplan::report::{Style, text_position};
@@ -844,8 +845,8 @@ fn a_sweep_that_keeps_no_plans_checks_them_numbers_only_with_the_same_results() 
         "{runs} sweeps, {positions} positions alike, {refused} refused alike; the sweep kernel's table differs at {kernel_differs:?}"
     );
     assert!(runs >= 50 && positions > 2000, "{runs} {positions}");
-    assert!(
-        kernel_differs.contains(&"class3_004, position 105".to_string()),
-        "{kernel_differs:?}"
-    );
+    // Where the kernel settles a plan at the neighbouring scale (a few of
+    // thousands, `Kernel`'s doc), its table may name another worst
+    // quantity; never more than those few.
+    assert!(kernel_differs.len() <= 4, "{kernel_differs:?}");
 }

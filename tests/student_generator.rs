@@ -248,7 +248,10 @@ fn the_answer_file_is_the_documented_one() {
         .collect();
     assert_eq!(
         omegas,
-        vec![("2".to_string(), -3.12, 0.005), ("3".to_string(), 1.38, 0.005)]
+        vec![
+            ("2".to_string(), -3.12, 0.005),
+            ("3".to_string(), 1.38, 0.005)
+        ]
     );
     assert_eq!(r.items.len(), 6, "{text}");
     assert!(r.items.iter().any(

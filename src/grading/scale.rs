@@ -47,6 +47,16 @@ fn factors(b: &Builds, standard: &Plan, steps: &StepReport) -> Vec<f64> {
     out
 }
 
+/// How far the drawn points are from their steps in all, each over its
+/// tolerance (a wrong one counted as 10 at most).
+fn misfit(steps: &StepReport) -> f64 {
+    steps
+        .steps
+        .iter()
+        .map(|s| (s.off / s.tolerance.max(1e-300)).min(10.0))
+        .sum()
+}
+
 /// The plan drawn at another scale than stated: where replaying the
 /// steps at a scale the student's points suggest leaves fewer steps wrong
 /// than at the stated one (and the first point right), the steps so
@@ -70,9 +80,15 @@ pub(super) fn drawn_at_another(
         .iter()
         .filter(|s| matches!(s.op, crate::kinematics::construction::Op::LayOff { .. }))
         .count();
-    if wrong == 0 || (wrong < 2 && lengths > 1) {
+    if wrong == 0 {
         return Ok(None);
     }
+    // One step wrong among several lengths: another scale only where the
+    // later lengths, drawn at it, fit at least as well as at the stated
+    // one (they may be too short to tell; then the scale explains as
+    // well as a slip does, and is the simpler account of a plan whose
+    // first vector alone is off).
+    let alone = wrong < 2 && lengths > 1;
     let mu = b.ans.mu;
     let mut best: Option<(StepReport, f64)> = None;
     for f in factors(b, standard, steps) {
@@ -106,7 +122,8 @@ pub(super) fn drawn_at_another(
             .first()
             .is_some_and(|s| s.judgement != super::Judgement::Wrong);
         let n = other.wrong_steps();
-        if first_right && n < wrong && best.as_ref().is_none_or(|x| n < x.0.wrong_steps()) {
+        let fits = !alone || misfit(&other) <= misfit(steps);
+        if fits && first_right && n < wrong && best.as_ref().is_none_or(|x| n < x.0.wrong_steps()) {
             best = Some((other, drawn));
         }
     }

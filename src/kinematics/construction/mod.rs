@@ -239,7 +239,7 @@ pub fn build_plans_numbers(
 /// but where the first construction at unit scale takes other
 /// scale-dependent choices (which pair of a class III group, a similar
 /// figure by division or by arcs) than the drawing does and its extent
-/// falls a standard step apart (2 plans of 5574 over the fixtures'
+/// falls a standard step apart (none of 5574 over the fixtures'
 /// sweeps, `tests/plans.rs`): then the plan is at the neighbouring scale,
 /// settled there, with the same values.
 pub struct Kernel {

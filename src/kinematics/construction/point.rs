@@ -35,12 +35,15 @@ fn off_line_pair(local: Vec2, known: &[(Vec2, usize)]) -> Option<(usize, usize, 
 }
 
 /// The figure on plan points `a`, `b` at the complex ratio ρ (the new
-/// point at a + ρ·(b − a)): its place, and its first-order error radius
-/// drawn by proportional division or by two arcs. The figure moves with its
-/// base (|1 − ρ|·e_a + |ρ|·e_b: an extension grows it by its ratio); a
-/// division adds δ and the point's offset from the line, which it does
-/// not draw; two arcs add √2·δ over the sine of the angle they meet at
-/// (the angle of the figure's sides at the new point).
+/// point at a + ρ·(b − a)): its place, and its error radius drawn by
+/// proportional division or by two arcs. The figure moves with its base
+/// (|1 − ρ|·e_a + |ρ|·e_b: an extension grows it by its ratio); a division
+/// adds δ and the point's offset from the line, which it does not draw;
+/// two arcs add how far their crossing moves with each radius off by up to
+/// δ ([`arcs_spread`]: the worst case of the construction itself, not its
+/// first-order δ/sin(φ/2), which falls short where the arcs meet at a
+/// glancing angle). `sine`: the sine of the angle of the figure's sides at
+/// the new point, the angle the arcs meet at.
 struct FigureOn {
     at: Vec2,
     divide: f64,
@@ -58,13 +61,51 @@ fn figure_on((a, b): (&PlanPoint, &PlanPoint), ratio: Vec2, delta: f64) -> Figur
     } else {
         1.0
     };
-    let arcs = moved + std::f64::consts::SQRT_2 * delta / sine.max(1e-300);
+    let arcs = moved + arcs_spread(a.at, b.at, at, delta);
     FigureOn {
         at,
         divide,
         arcs,
         sine,
     }
+}
+
+/// How far two arcs drawn from `a` and `b` through `s` put their crossing
+/// from `s` when each radius is off by up to `delta`: the largest move
+/// over the radii's errors at the corners and the middles of the sides of
+/// their square (where the crossing moves most: it moves monotonically
+/// with each radius). Where the arcs so drawn would not meet, the student
+/// marks the point between them, on the radical line (the chord's foot).
+/// To first order this is δ/sin(φ/2), φ the angle the arcs meet at; near
+/// tangency (a triangle with an angle of 160° and more at s) the
+/// crossing runs along the arcs farther than that.
+pub(super) fn arcs_spread(a: Vec2, b: Vec2, s: Vec2, delta: f64) -> f64 {
+    let d = b - a;
+    let dist = d.hypot();
+    if dist == 0.0 {
+        return delta;
+    }
+    let u = d / dist;
+    let side = if d.cross(s - a) < 0.0 { -1.0 } else { 1.0 };
+    let (r1, r2) = ((s - a).hypot(), (s - b).hypot());
+    let mut worst: f64 = 0.0;
+    for (e1, e2) in [
+        (1.0, 1.0),
+        (1.0, -1.0),
+        (-1.0, 1.0),
+        (-1.0, -1.0),
+        (1.0, 0.0),
+        (-1.0, 0.0),
+        (0.0, 1.0),
+        (0.0, -1.0),
+    ] {
+        let (ra, rb) = ((r1 + e1 * delta).max(0.0), (r2 + e2 * delta).max(0.0));
+        let x = (dist * dist + ra * ra - rb * rb) / (2.0 * dist);
+        let h = (ra * ra - x * x).max(0.0).sqrt();
+        let p = a + u * x + perp(u) * (side * h);
+        worst = worst.max((p - s).hypot());
+    }
+    worst
 }
 
 /// How a point of a link is placed ([`Builder::best_construction`]).
@@ -444,8 +485,9 @@ impl Builder<'_> {
     /// Each way's first-order error radius: the similar figure moves with
     /// its base as a + ρ·(b − a) does (|1 − ρ|·e_a + |ρ|·e_b: an extension
     /// beyond b grows it by its ratio), plus the pencil's δ for a division
-    /// and the point's offset from the line the division ignores, or √2·δ
-    /// over the sine of the arcs' angle; the relative vector adds δ per
+    /// and the point's offset from the line the division ignores, or how
+    /// far the arcs' crossing moves with their radii off by δ
+    /// ([`arcs_spread`]); the relative vector adds δ per
     /// vector laid off and the rate's error times the distance. The least
     /// wins, so a point a hair off a rod is divided, not found by two
     /// nearly tangent arcs.
