@@ -40,7 +40,7 @@ use serde_json::{Value, json};
 use std::collections::BTreeMap;
 
 /// The mistakes of the catalogue.
-const MISTAKES: [Mistake; 14] = [
+const MISTAKES: [Mistake; 16] = [
     Mistake::CoriolisReversed,
     Mistake::CoriolisForgotten,
     Mistake::CoriolisFactorOne,
@@ -55,6 +55,8 @@ const MISTAKES: [Mistake; 14] = [
     Mistake::OmegaWrongLink,
     Mistake::OmegaWrongSense,
     Mistake::NeighbourLink,
+    Mistake::SlideAcross,
+    Mistake::PointAtNeighbour,
 ];
 
 /// Words of a diagnosis that name each mistake.
@@ -75,6 +77,8 @@ fn named(m: Mistake, d: &str) -> bool {
         Mistake::OmegaWrongSense => &["against the sense of ω1"],
         Mistake::Slip => &["slip in one length"],
         Mistake::NeighbourLink => &["neighbouring link"],
+        Mistake::SlideAcross => &["along the wrong line"],
+        Mistake::PointAtNeighbour => &["at a neighbouring point"],
     };
     words.iter().any(|w| d.contains(w))
 }

@@ -21,7 +21,7 @@ use crate::model::structure::{AssurGroup, DyadKind};
 use crate::pipeline::Solved;
 
 /// The discrete mistakes tried, one element at a time and everywhere.
-pub(super) const MISTAKES: [Mistake; 14] = [
+pub(super) const MISTAKES: [Mistake; 16] = [
     Mistake::CoriolisReversed,
     Mistake::CoriolisForgotten,
     Mistake::CoriolisFactorOne,
@@ -36,12 +36,32 @@ pub(super) const MISTAKES: [Mistake; 14] = [
     Mistake::OmegaWrongLink,
     Mistake::OmegaWrongSense,
     Mistake::NeighbourLink,
+    Mistake::SlideAcross,
+    Mistake::PointAtNeighbour,
 ];
 
 /// The mistake of candidate `c` in one sentence in `lang` (`what`: the
 /// vector a slip lays off; `mu`: the student's scale).
 pub(super) fn mistake_sentence(c: Candidate, mu: f64, what: &str, lang: Lang) -> String {
+    mistake_sentence_at(c, mu, what, None, lang)
+}
+
+/// [`mistake_sentence`], in the scene's own letters where the mistake is
+/// made at one decision and `at` gives the right construction's step
+/// where it enters (the plan and the step's index).
+pub(super) fn mistake_sentence_at(
+    c: Candidate,
+    mu: f64,
+    what: &str,
+    at: Option<(&Plan, usize)>,
+    lang: Lang,
+) -> String {
     let w = check::phrases(lang);
+    if let (Candidate::Mistake { m, at: Some(_), .. }, Some((plan, k))) = (c, at)
+        && let Some(s) = check::mistake_here(lang, m, plan, k)
+    {
+        return s;
+    }
     match c {
         Candidate::Mistake { m, at, .. } => check::mistake(lang, m, at.is_some()).to_string(),
         Candidate::Slip { factor, .. } => check::fill(

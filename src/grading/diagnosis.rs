@@ -2,7 +2,7 @@
 //! construction that explains every item, clearly better than any other of
 //! another kind; two mistakes together; a slip in one laid-off length.
 
-use super::candidates::{Builds, Fit, expectations, mistake_sentence};
+use super::candidates::{Builds, Fit, expectations, mistake_sentence, mistake_sentence_at};
 use super::verdict::Candidate;
 use super::items::Expected;
 use super::{Diagnosis, Report};
@@ -79,7 +79,10 @@ fn one_mistake(b: &Builds, r: &Report, cands: &[Fit], n: usize) -> Option<Diagno
         .collect();
     explaining.sort_by(|a, b| a.1.total_cmp(&b.1));
     let &(best, misfit) = explaining.first()?;
-    let sentence_of = |f: &Fit| mistake_sentence(f.c, r.mu, &what_of(f, b.lang), b.lang);
+    let sentence_of = |f: &Fit| {
+        let at = r.plan_built.first_difference(&f.plan).map(|k| (&r.plan_built, k));
+        mistake_sentence_at(f.c, r.mu, &what_of(f, b.lang), at, b.lang)
+    };
     let name = sentence_of(best);
     // Explanations of another kind that fit about as well.
     let mut alternatives: Vec<String> = explaining[1..]

@@ -19,7 +19,7 @@
 //! apart.
 
 use super::answer::Given;
-use super::candidates::{Builds, MISTAKES, mistake_sentence, other_branches};
+use super::candidates::{Builds, MISTAKES, mistake_sentence_at, other_branches};
 use super::items::resolve;
 use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, StepReport, StepVerdict};
 use crate::accuracy::ACCURACY;
@@ -383,7 +383,30 @@ impl Judge<'_> {
         if adds && t.enters < t.plan.steps.len() {
             return (t.enters + 1, check::step(&t.plan, t.enters, self.lang));
         }
-        self.step(t.enters)
+        let (k, mut sentence) = self.step(t.enters);
+        if let Some(yours) = self.yours(k - 1) {
+            sentence.push_str(&format!(" ({yours})"));
+        }
+        (k, sentence)
+    }
+
+    /// The student's own length beside the right one of step `k` (from
+    /// 0), where it lays off a vector whose end the student drew
+    /// elsewhere: "yours: 75.58 mm".
+    fn yours(&self, k: usize) -> Option<String> {
+        let crate::kinematics::construction::Op::LayOff { from, to, value, .. } =
+            self.plain.steps.get(k)?.op
+        else {
+            return None;
+        };
+        self.plain.judged.iter().find(|j| j.point == to)?;
+        let pts = &self.plain.points;
+        let drawn = (pts[to].at - pts[from].at).hypot();
+        let right = value / self.plain.mu;
+        ((drawn - right).abs() > 0.01).then(|| {
+            let mm = quantity(drawn, "mm", self.lang);
+            check::fill(&check::phrases(self.lang).yours, &[("value", &mm)])
+        })
     }
 
     fn sentence(&self, t: &Try) -> String {
@@ -391,7 +414,8 @@ impl Judge<'_> {
             Some(crate::kinematics::construction::Op::LayOff { what, .. }) => what.clone(),
             _ => check::phrases(self.lang).a_vector.clone(),
         };
-        let s = mistake_sentence(t.c, self.b.ans.mu, &what, self.lang);
+        let at = Some((self.plain, t.enters));
+        let s = mistake_sentence_at(t.c, self.b.ans.mu, &what, at, self.lang);
         match t.c {
             Candidate::Mistake { both: true, .. } => {
                 check::fill(&check::phrases(self.lang).on_velocity_plan, &[("mistake", &s)])

@@ -512,6 +512,8 @@ pub struct CheckPhrases {
     pub scale_item: String,
     /// Each typical mistake: made at one decision, made everywhere.
     pub mistakes: MistakePhrases,
+    /// Some of them at one decision, in the scene's own letters.
+    pub lettered: LetteredPhrases,
     /// `{what}`, `{factor}`.
     pub slip_of: String,
     /// `{first}`, `{second}`.
@@ -568,4 +570,21 @@ pub struct MistakePhrases {
     pub omega_wrong_sense: [String; 2],
     pub slip: [String; 2],
     pub neighbour_link: [String; 2],
+    pub slide_across: [String; 2],
+    pub point_at_neighbour: [String; 2],
+}
+
+/// Typical mistakes made at one decision, in the scene's own letters
+/// (the right construction's step where the mistake enters): a
+/// perpendicular to the wrong link (`{a}`, `{dir_a}`, `{b}`, `{dir_b}`:
+/// the two lines as they must be), the guide's point taken for the
+/// slider's (`{out}`, `{at}`), a slide's line across its guide (`{out}`,
+/// `{at}`, `{dir}`), a point put at a neighbour's (`{out}`, `{fig}`).
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LetteredPhrases {
+    pub wrong_perpendicular: String,
+    pub wrong_link: String,
+    pub slide_across: String,
+    pub point_at_neighbour: String,
 }

@@ -41,8 +41,57 @@ pub fn mistake(lang: Lang, m: Mistake, one: bool) -> &'static str {
         Mistake::OmegaWrongSense => &w.omega_wrong_sense,
         Mistake::Slip => &w.slip,
         Mistake::NeighbourLink => &w.neighbour_link,
+        Mistake::SlideAcross => &w.slide_across,
+        Mistake::PointAtNeighbour => &w.point_at_neighbour,
     };
     if one { &pair[0] } else { &pair[1] }
+}
+
+/// Mistake `m` made at the one decision that step `k` of the right
+/// construction `plan` takes, in the scene's own letters (the lines, the
+/// points and the figure of that step), where the mistake has such a
+/// sentence and the step is of its kind; `None` otherwise.
+pub fn mistake_here(lang: Lang, m: Mistake, plan: &Plan, k: usize) -> Option<String> {
+    use crate::kinematics::construction::{Dir, Op};
+    let w = &phrases(lang).lettered;
+    let cw = super::construction::words(lang);
+    let p = |i: usize| plan.points.get(i).map(|x| x.name()).unwrap_or_default();
+    let text = match (m, &plan.steps.get(k)?.op) {
+        (Mistake::WrongPerpendicular, Op::Intersect { lines, .. }) => fill(
+            &w.wrong_perpendicular,
+            &[
+                ("a", &p(lines[0].through)),
+                ("dir_a", &super::construction::dir(cw, &lines[0].dir)),
+                ("b", &p(lines[1].through)),
+                ("dir_b", &super::construction::dir(cw, &lines[1].dir)),
+            ],
+        ),
+        (Mistake::WrongLink | Mistake::SlideAcross, Op::Intersect { lines, out, .. }) => {
+            let guide = lines.iter().find(|l| matches!(l.dir, Dir::Guide(_)))?;
+            let phrase = if m == Mistake::WrongLink {
+                &w.wrong_link
+            } else {
+                &w.slide_across
+            };
+            fill(
+                phrase,
+                &[
+                    ("out", &p(*out)),
+                    ("at", &p(guide.through)),
+                    ("dir", &super::construction::dir(cw, &guide.dir)),
+                ],
+            )
+        }
+        (
+            Mistake::PointAtNeighbour,
+            Op::Similar { out, figure, .. } | Op::Divide { out, figure, .. },
+        ) => fill(
+            &w.point_at_neighbour,
+            &[("out", &p(*out)), ("fig", &figure.concat())],
+        ),
+        _ => return None,
+    };
+    Some(decimals(&text, lang))
 }
 
 #[cfg(test)]

@@ -11,12 +11,13 @@ use crate::kinematics::construction::{Dir, Op, Plan, PlanKind, PlanLine, Why};
 pub use crate::lang::Lang;
 
 /// The construction's phrases in `lang`.
-fn words(lang: Lang) -> &'static Phrases {
+pub(super) fn words(lang: Lang) -> &'static Phrases {
     &super::catalogue::catalogue(lang).construction
 }
 
 
-fn dir(w: &Phrases, d: &Dir) -> String {
+/// A direction in words: `⊥ AB`, `∥ the guide of link 3` …
+pub(super) fn dir(w: &Phrases, d: &Dir) -> String {
     match d {
         Dir::Perp(seg) => format!("⊥ {seg}"),
         Dir::Along(seg) => format!("∥ {seg}"),
@@ -183,7 +184,10 @@ impl Speaker<'_> {
                 ("mu", self.mu),
                 ("value", &num(value)),
                 ("scale", &self.scale),
-                ("mm", &self.between(from, to)),
+                // The formula's result, the length the vector must have
+                // (in a replay the point may be drawn elsewhere: the
+                // report puts the student's length beside it).
+                ("mm", &num(value / self.plan.mu)),
                 ("dir", &dir(self.w, d)),
             ],
         )

@@ -157,6 +157,11 @@ impl Builder<'_> {
     /// a^k = 2·ω×v_rel turned by 90° in the sense of ω (on a rotating guide).
     fn slide(&mut self, kx: usize, u: Vec2, s: Slide, (x, xn): (Point, Name)) -> Ray {
         let way = Way::Guide(s.guide);
+        let u = if self.making(Mistake::SlideAcross) {
+            perp(u)
+        } else {
+            u
+        };
         if self.vel_kind() || self.t.nr[s.known] {
             return self.line(kx, u, way);
         }

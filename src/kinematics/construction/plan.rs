@@ -592,6 +592,12 @@ pub enum Mistake {
     /// sharing a joint with it): S₂ of the coupler built on the rocker's
     /// points as if it were the rocker's.
     NeighbourLink,
+    /// The relative sliding laid along the wrong line: the line of a
+    /// slide drawn ⊥ the guide instead of ∥ it.
+    SlideAcross,
+    /// A point of a link taken at the plan point of its nearest known
+    /// point on the link (s₂ drawn at b) instead of by its figure.
+    PointAtNeighbour,
 }
 
 /// How to build a plan besides the standard way: with a mistake, or with

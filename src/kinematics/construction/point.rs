@@ -250,6 +250,12 @@ impl Builder<'_> {
             learn(self, out);
             return out;
         }
+        if let PointId::Named(_) = id
+            && let Some(out) = self.at_neighbour(local, id, known)
+        {
+            learn(self, out);
+            return out;
+        }
         let out = match self.best_construction(link, local, x, known) {
             Construction::Figure { a, b, ratio, err } => {
                 let ((la, pa), (lb, pb)) = (known[a], known[b]);
@@ -295,9 +301,19 @@ impl Builder<'_> {
                     // is the relative vector of the link's rates from one
                     // of them (in the right construction: in a mistaken
                     // one it would be the right place again).
-                    let mut others = self.figures(local, known, mirrored);
-                    if self.variant.mistake.is_none() {
-                        others.extend(self.relations(link, x, known));
+                    // (A route through a point the student drew wrong is no
+                    // excuse: the figure on the student's own points is
+                    // judged, carried forward, by the route the plan takes;
+                    // another pair, or the link's rate, only where it
+                    // stands on points drawn right.)
+                    let known_right: Vec<(Vec2, usize)> = known
+                        .iter()
+                        .copied()
+                        .filter(|k| !self.drawn_wrong(k.1))
+                        .collect();
+                    let mut others = self.figures(local, &known_right, mirrored);
+                    if self.variant.mistake.is_none() && self.rate_stands_right(link) {
+                        others.extend(self.relations(link, x, &known_right));
                     }
                     let j = self.plan.judged.last_mut().expect("just judged");
                     // (Each read off as the point itself is: to δ, and
@@ -317,6 +333,27 @@ impl Builder<'_> {
         };
         learn(self, out);
         out
+    }
+
+    /// In a replay, is plan point `i` one the student drew off its step's
+    /// tolerance?
+    fn drawn_wrong(&self, i: usize) -> bool {
+        self.plan
+            .judged
+            .iter()
+            .any(|j| j.point == i && j.misfit() > 1.0)
+    }
+
+    /// Does the rate of `link` this plan measured stand on points drawn
+    /// right, with its sense read off the plan?
+    fn rate_stands_right(&self, link: usize) -> bool {
+        self.plan.rate_sense[link]
+            && self
+                .plan
+                .measured
+                .iter()
+                .filter(|q| q.of == super::plan::Quantity::Rate(link))
+                .all(|q| !self.drawn_wrong(q.from) && !self.drawn_wrong(q.to))
     }
 
     /// The places of the material point of `link` at `local` by the figure
@@ -432,6 +469,37 @@ impl Builder<'_> {
             out,
             figure: fig.expect("named when recorded"),
             by: By::Similar { link: nb },
+        });
+        Some(out)
+    }
+
+    /// The mistake of taking a named point at the plan point of one of
+    /// its link's known points (s₂ drawn at b), where it is made: the plan
+    /// point, else `None`.
+    fn at_neighbour(&mut self, local: Vec2, id: PointId, known: &[(Vec2, usize)]) -> Option<usize> {
+        if self.variant.mistake != Some(Mistake::PointAtNeighbour)
+            && self.variant.also != Some(Mistake::PointAtNeighbour)
+        {
+            return None;
+        }
+        // One decision per known point of the link, the nearest first
+        // (s₂ put at b or at a).
+        let mut near: Vec<(f64, usize)> = known
+            .iter()
+            .filter(|k| k.1 != 0)
+            .map(|k| ((k.0 - local).hypot2(), k.1))
+            .collect();
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let with = near
+            .into_iter()
+            .map(|n| n.1)
+            .find(|_| self.making(Mistake::PointAtNeighbour))?;
+        let (at, err) = (self.plan.points[with].at, self.plan.points[with].err);
+        let out = self.add_point(id, at, err + self.plan.delta);
+        self.step(|| Act::Coincide {
+            out,
+            with,
+            translates: None,
         });
         Some(out)
     }
