@@ -239,6 +239,8 @@ fn named(m: Mistake, d: &str) -> bool {
         Mistake::OmegaWrongSense => &["against the sense of ω1"],
         Mistake::Slip => &["slip in one length"],
         Mistake::NeighbourLink => &["neighbouring link"],
+        Mistake::SlideAcross => &["along the wrong line"],
+        Mistake::PointAtNeighbour => &["at a neighbouring point"],
     };
     words.iter().any(|w| d.contains(w))
 }
