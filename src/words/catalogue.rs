@@ -492,6 +492,9 @@ pub struct CheckPhrases {
     pub item_point: String,
     /// The overlay's title: `{plan}`, `{position}`, `{right}`, `{count}`.
     pub overlay_title: String,
+    /// An item written wrong, as the gradebook names it: `{what}`,
+    /// `{given}`, `{expected}`, `{tol}` (each with its unit).
+    pub written_right: String,
     /// A force plan's report: `{links}`, `{position}`, `{mu}`, `{delta}`.
     pub force_title: String,
     /// `{what}`, `{given}`, `{unit}`, `{expected}`, `{tol}`, `{verdict}`.
