@@ -611,7 +611,55 @@ fn a_reduced_overlay_keeps_its_labels_apart() {
         .lines()
         .find(|l| l.contains("class=\"heading\""))
         .unwrap();
-    assert!(content(title).contains("(1:"), "{title}");
+    assert!(content(title).ends_with("(1:2)"), "{title}");
     labels_and_legend("far", &a, &svg);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The gallery's picture of the overlay (docs/gallery/check_overlay.png,
+/// docs/check.md): the worked example rendered at 150 dpi (its letters
+/// legible on the page); `UPDATE_GOLDEN=1` (docs/gallery/make.sh) writes
+/// it. The rendering shows the three inks: the pale right plan, the
+/// student's blue crosses and letters, the red step; the picture kept in
+/// the docs is the sheet rendered now (its size).
+#[test]
+fn the_gallerys_picture_of_the_overlay() {
+    let dir = fresh("gallery");
+    let (_, _, svg) = overlay_of(&dir, "worked", "six_link_fig2_10", &worked_example(), &[]);
+    let png = mechplan::drawing::png(&svg, 150.0).unwrap();
+    let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
+    let count = |f: &dyn Fn(u8, u8, u8) -> bool| {
+        pixmap
+            .pixels()
+            .iter()
+            .filter(|p| p.alpha() == 255 && f(p.red(), p.green(), p.blue()))
+            .count()
+    };
+    let red = count(&|r, g, b| r > 170 && g < 60 && b < 60);
+    let blue = count(&|r, g, b| r < 80 && (70..140).contains(&g) && b > 140);
+    let grey = count(&|r, g, b| r == g && g == b && (120..200).contains(&r));
+    assert!(
+        red > 200 && blue > 40 && grey > 1000,
+        "red {red}, blue {blue}, grey {grey}"
+    );
+    let path = format!(
+        "{}/docs/gallery/check_overlay.png",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::write(&path, &png).unwrap();
+    }
+    let kept = std::fs::read(&path).unwrap_or_else(|_| panic!("{path} missing: UPDATE_GOLDEN=1"));
+    assert_eq!(
+        kept[16..24],
+        png[16..24],
+        "{path}: another size than the sheet's (UPDATE_GOLDEN=1)"
+    );
+    let page =
+        std::fs::read_to_string(format!("{}/docs/check.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    assert!(
+        page.contains("(gallery/check_overlay.png)"),
+        "docs/check.md shows it"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
