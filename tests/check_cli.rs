@@ -62,7 +62,7 @@ fn exit_status_follows_the_verdict() {
     assert!(out.contains("2 of 2 right"));
     assert!(std::path::Path::new(&o).exists());
     let overlay = std::fs::read_to_string(&o).unwrap();
-    assert!(overlay.contains("student-d") && overlay.contains("#c00000"));
+    assert!(overlay.contains("student-d") && overlay.contains("#1f5fa8"));
     let mut bad = good.clone();
     bad["points"]["d"] = serde_json::json!([d[0].as_f64().unwrap() + 15.0, d[1]]);
     let (s, a, o) = files("wrong", &bad);

@@ -549,3 +549,136 @@ fn refusals_and_the_default_output() {
     assert!(dir.join("mechplan-check/overlays/b.svg").is_file());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The number after `prefix` in `text` (a decimal comma read as a point),
+/// and whether it is there.
+fn number_after(text: &str, prefix: &str) -> Option<f64> {
+    let rest = &text[text.find(prefix)? + prefix.len()..];
+    let end = rest
+        .find(|c: char| !(c.is_ascii_digit() || matches!(c, '.' | ',' | '-' | 'e')))
+        .unwrap_or(rest.len());
+    rest[..end].replace(',', ".").parse().ok()
+}
+
+/// A wrong answer's `mistakes` column is never empty: a value (v_B, ε3)
+/// or a segment written wrong off points drawn right is named with what
+/// was written and what is right, in the report's language; beside a
+/// mistake at a step too; and an answer of values only names its wrong
+/// value when no typical mistake explains it.
+#[test]
+fn a_value_written_wrong_is_named_in_the_gradebook() {
+    let dir = fresh("values");
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    let doc = solved();
+    let mut noise = Noise(11);
+    let abcd = ["a", "b", "c", "d"];
+    let v = |k: usize, p: &str| {
+        let v = &doc["positions"][k - 1]["points"][p]["v"];
+        v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap())
+    };
+    let eps = |k: usize, l: &str| {
+        doc["positions"][k - 1]["links"][l]["epsilon"]
+            .as_f64()
+            .unwrap()
+    };
+    // (file, answer, what is named (en, uk), written, right).
+    let mut cases: Vec<(&str, Value, [&str; 2], f64, f64)> = Vec::new();
+    let mut a = points(&doc, "velocity", 3, &abcd, &mut noise);
+    a["values"] = json!({ "v_B": 1.3 * v(3, "B") });
+    cases.push((
+        "value-v03.json",
+        a,
+        ["v_B", "v_B"],
+        1.3 * v(3, "B"),
+        v(3, "B"),
+    ));
+    let mut a = points(&doc, "acceleration", 3, &abcd, &mut noise);
+    a["velocity"] = json!({ "mu": doc["positions"][2]["plans"]["velocity"]["mu"] });
+    a["values"] = json!({ "eps3": eps(3, "3") + 15.0 });
+    cases.push((
+        "eps-a03.json",
+        a,
+        ["ε3", "ε3"],
+        eps(3, "3") + 15.0,
+        eps(3, "3"),
+    ));
+    let mut a = points(&doc, "velocity", 7, &abcd, &mut noise);
+    let b = &doc["positions"][6]["plans"]["velocity"]["points"]["b"];
+    let pb = b[0].as_f64().unwrap().hypot(b[1].as_f64().unwrap());
+    a["segments"] = json!({ "p_v b": 1.2 * pb });
+    let seg = ["segment p_vb", "відрізок p_vb"];
+    cases.push(("segment-v07.json", a, seg, 1.2 * pb, pb));
+    let only = json!({ "plan": "velocity", "position": 2, "mu": 0.01, "values": { "v_B": 2.0 * v(2, "B") } });
+    cases.push((
+        "only-values-v02.json",
+        only,
+        ["v_B", "v_B"],
+        2.0 * v(2, "B"),
+        v(2, "B"),
+    ));
+    for (name, a, ..) in &cases {
+        std::fs::write(answers.join(name), a.to_string()).unwrap();
+    }
+    // A point moved and a value written wrong: both named.
+    let mut a = points(&doc, "velocity", 6, &abcd, &mut noise);
+    let x = a["points"]["d"][0].as_f64().unwrap();
+    a["points"]["d"][0] = json!(x + 15.0);
+    a["values"] = json!({ "v_B": 1.5 * v(6, "B") });
+    std::fs::write(answers.join("moved-and-value-v06.json"), a.to_string()).unwrap();
+    let langs = [
+        ("en", "written ", "right "),
+        ("uk", "записано ", "правильно "),
+    ];
+    for (l, (lang, written, right)) in langs.into_iter().enumerate() {
+        let out = dir.join(lang);
+        let (code, stdout, err) = run(&[
+            "check",
+            SCENE,
+            answers.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--lang",
+            lang,
+        ]);
+        assert_eq!(code, 1, "{stdout}{err}");
+        let rows = gradebook(&out.join("gradebook.csv"));
+        assert_eq!(rows.len(), 5);
+        for r in &rows {
+            let f = &r["file"];
+            assert_eq!(r["grade"], "wrong", "{f}: {r:?}");
+            assert!(
+                !r["mistakes"].is_empty(),
+                "{f}: a wrong row names its mistake"
+            );
+        }
+        let row = |f: &str| rows.iter().find(|r| r["file"] == f).unwrap();
+        for (name, _, what, given, expected) in &cases {
+            let m = &row(name)["mistakes"];
+            let what = format!("{}: {written}", what[l]);
+            assert!(m.contains(&what), "{name}: {m}");
+            let item = &m[m.find(&what).unwrap()..];
+            let g = number_after(item, &what).unwrap_or_else(|| panic!("{name}: {m}"));
+            assert!(
+                (g - given).abs() <= 1e-3 * given.abs(),
+                "{name}: written {g}, not {given}: {m}"
+            );
+            let e = number_after(item, right).unwrap_or_else(|| panic!("{name}: {m}"));
+            assert!(
+                (e - expected).abs() <= 0.05 * expected.abs(),
+                "{name}: right {e}, not {expected}: {m}"
+            );
+        }
+        let m = &row("moved-and-value-v06.json")["mistakes"];
+        assert!(
+            m.starts_with("step ") && m.contains(&format!("v_B: {written}")),
+            "{m}"
+        );
+        assert_eq!(
+            m.matches(" | ").count(),
+            1,
+            "the moved point's step and the value: {m}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -207,6 +207,19 @@ bash docs/gallery/forces.sh "$tmp/forces" >> "$index.tmp"
 # The summary page of a group of answers graded at once (check SCENE DIR),
 # photographed when a headless Chromium is at hand.
 bash docs/gallery/check_group.sh "$tmp" >> "$index.tmp"
+# The overlay of docs/check.md's worked example (check --svg), rendered by
+# tests/check_overlay.rs.
+UPDATE_GOLDEN=1 cargo test --release -q --test check_overlay the_gallerys_picture_of_the_overlay > /dev/null
+{
+  echo "## A check's overlay"
+  echo
+  echo "\`mechplan check SCENE ANSWER --svg OUT\` ([docs/check.md](../check.md#the-overlay---svg)):"
+  echo "the worked example, its step 5 in red as it should be drawn from the"
+  echo "student's own a, the student's points starred in blue over the right plan."
+  echo
+  echo "![the overlay of the worked example](check_overlay.png)"
+  echo
+} >> "$index.tmp"
 # The fill table (tests/sheet_fill.rs writes it between its markers).
 {
   echo "## How much of its field a drawing spans"

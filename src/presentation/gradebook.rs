@@ -10,7 +10,10 @@ use crate::grading::forces::ForceReport;
 use crate::grading::{Judgement, Report, Verdict};
 use crate::kinematics::construction::PlanKind;
 use crate::presentation::drawing::canvas::xml;
+use crate::lang::Lang;
 use crate::presentation::report::csv_field;
+use crate::words::check;
+use crate::words::numbers::quantity;
 use std::fmt::Write as _;
 
 /// An answer's grade: its check's status, or unreadable.
@@ -87,7 +90,10 @@ pub struct GradeRow {
     /// The mistakes named, each with the step where it enters
     /// (`step 7: A normal component ω²·l is forgotten.`); for a wrong
     /// answer no typical mistake explains, `not recognised` and the
-    /// explanations it cannot tell apart (`maybe: …`); empty when none.
+    /// explanations it cannot tell apart (`maybe: …`); then each item
+    /// wrong that no step's mistake covers, as written and as it should
+    /// be (`v_B: written 0.8679 m/s, right 0.6666 m/s ± 0.01000 m/s`);
+    /// never empty for a wrong answer, empty when nothing is wrong.
     pub mistakes: Vec<String>,
     /// The items' counts; `None` when unreadable.
     pub counts: Option<Counts>,
@@ -140,6 +146,7 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
                     }
                 }
             }
+            mistakes.extend(written_wrong(r));
             GradeRow {
                 file,
                 plan: Some(match r.plan {
@@ -157,7 +164,9 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
             let grade = Grade::of_status(r.status());
             let mistakes = match (&r.diagnosis, grade) {
                 (Some(m), _) => vec![m.clone()],
-                (None, Grade::Wrong) => vec!["not recognised".into()],
+                (None, Grade::Wrong) => std::iter::once("not recognised".to_string())
+                    .chain(items_wrong(&r.verdicts, r.lang, |_| true))
+                    .collect(),
                 (None, _) => Vec::new(),
             };
             GradeRow {
@@ -180,6 +189,50 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
             message: Some(message.to_string()),
         },
     }
+}
+
+/// The items that make an answer wrong without a step's mistake named
+/// for them, each as written and as it should be: a value (v_B, ω2, ε3)
+/// read wrong off points drawn right, a segment or a direction measured
+/// wrong, whatever else is judged wrong; a point judged at its step is
+/// its step's mistake's (named before them). An answer judged against the
+/// true plan alone (no points) has each wrong item named so, beside the
+/// mistake its diagnosis names.
+pub fn written_wrong(r: &Report) -> Vec<String> {
+    // The drawn points a step's mistake puts off their place.
+    let covered: Vec<&str> = r
+        .steps
+        .iter()
+        .flat_map(|st| st.mistakes.iter())
+        .flat_map(|f| f.points.iter().map(String::as_str))
+        .collect();
+    let uncovered = |v: &Verdict| {
+        let point = crate::grading::resolve(&r.plan_built, &v.key).map(|i| r.plan_built.points[i].name());
+        !point.is_some_and(|p| covered.contains(&p.as_str()))
+    };
+    items_wrong(&r.verdicts, r.lang, uncovered)
+}
+
+/// Each wrong item of `verdicts` that `keep` keeps: what it is, what was
+/// written and what is right, with the tolerance (`written_right`, in
+/// `lang`).
+fn items_wrong(verdicts: &[Verdict], lang: Lang, keep: impl Fn(&Verdict) -> bool) -> Vec<String> {
+    let w = check::phrases(lang);
+    verdicts
+        .iter()
+        .filter(|v| v.judgement == Judgement::Wrong && keep(v))
+        .map(|v| {
+            check::fill(
+                &w.written_right,
+                &[
+                    ("what", &v.what),
+                    ("given", &quantity(v.given, v.unit, lang)),
+                    ("expected", &quantity(v.expected, v.unit, lang)),
+                    ("tol", &quantity(v.tolerance, v.unit, lang)),
+                ],
+            )
+        })
+        .collect()
 }
 
 /// The gradebook's columns, in order.

@@ -3,8 +3,8 @@
 //! ([`report`]), the tables of results as data, for the terminal and the
 //! handout alike ([`tables`]), the sheets and the handout ([`drawing`]),
 //! the force analysis in the result ([`dynamics`]) and in steps
-//! ([`force_steps`]), a check's verdict as text, JSON and an overlay
-//! ([`verdict`]), a group of answers' gradebook and summary page
+//! ([`force_steps`]), a check's verdict as text and JSON ([`verdict`])
+//! and its overlay drawing ([`overlay`]), a group of answers' gradebook and summary page
 //! ([`gradebook`]), the work-precision report's table and plot
 //! ([`precision`]), the studies' tables ([`studies`]).
 
@@ -12,6 +12,7 @@ pub mod drawing;
 pub mod dynamics;
 pub mod force_steps;
 pub mod gradebook;
+pub mod overlay;
 pub mod precision;
 pub mod report;
 mod steps;

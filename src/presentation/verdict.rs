@@ -1,8 +1,8 @@
 //! A check's verdict (`crate::grading`'s report, data) as text for the
 //! terminal, as JSON, and as an SVG overlay of the student's points on the
-//! correct plan.
+//! correct plan (drawn by [`super::overlay`]).
 
-use crate::grading::answer::{Answer, Given};
+pub use super::overlay::{overlay, overlay_dxf};
 use crate::grading::forces::ForceReport;
 use crate::words::numbers;
 use crate::grading::{Grade, Judgement, Report, StepReport};
@@ -11,8 +11,6 @@ use crate::lang::Lang;
 use crate::words::check::{self, fill};
 use crate::words::numbers::{decimals, quantity, unit};
 use crate::kinematics::construction::PlanKind;
-use crate::kinematics::solve::Analysis;
-use kurbo::Vec2;
 
 /// The report as text for the terminal, in the report's language: the
 /// grade, the steps judged from the student's own points and the
@@ -313,128 +311,6 @@ fn judgement_word(j: &Judgement) -> &'static str {
         Judgement::Wrong => "wrong",
         Judgement::CannotJudge(_) => "cannot be judged",
     }
-}
-
-/// An SVG sheet with the correct plan (black) and the student's points
-/// (red crosses, labelled), for `check --svg`.
-pub fn overlay(an: &Analysis, ans: &Answer, r: &Report) -> String {
-    let (c, title) = overlay_canvas(an, ans, r);
-    crate::presentation::drawing::page_svg(
-        "check".into(),
-        title,
-        &c,
-        None,
-        &crate::presentation::drawing::DrawOptions::default(),
-    )
-    .svg
-}
-
-/// The overlay written into a copy of the student's own DXF file
-/// `original` (`check --dxf`): the same drawing as [`overlay`]'s, its
-/// title above it, placed at the student's pole in the file's units, on
-/// the layer [`crate::grading::dxf::OVERLAY_LAYER`].
-pub fn overlay_dxf(an: &Analysis, ans: &Answer, r: &Report, original: &[u8]) -> crate::error::Result<Vec<u8>> {
-    use crate::presentation::drawing::canvas::{FONT, Label};
-    let text = crate::grading::dxf::decode(original)?;
-    let (pole, unit) = crate::grading::dxf::pole_in_file(&text)?;
-    let (mut c, title) = overlay_canvas(an, ans, r);
-    let b = c.bounds();
-    c.text(
-        kurbo::Point::new(b.x0, b.y1 + 2.0 * FONT),
-        Label::new(title, ""),
-        FONT,
-        "heading",
-    );
-    // The canvas's y is up, its origin the student's pole (the answer's
-    // points are millimetres from it); written as SVG (y down) and placed
-    // back in the file's units.
-    let mut svg = String::from(r#"<svg xmlns="http://www.w3.org/2000/svg">"#);
-    c.write(&mut svg, 0.0, 0.0);
-    svg.push_str("</svg>");
-    let place = |x: f64, y: f64| (pole.x + x / unit, pole.y - y / unit);
-    crate::presentation::drawing::dxf::overlay::into_copy(original, &svg, &place, 1.0 / unit)
-}
-
-/// The overlay's drawing (y up, the pole at the origin) and its title.
-fn overlay_canvas(
-    an: &Analysis,
-    ans: &Answer,
-    r: &Report,
-) -> (crate::presentation::drawing::canvas::Canvas, String) {
-    use crate::presentation::drawing::canvas::{Canvas, Class, Label, SMALL};
-    let plan = &r.plan_built;
-    let mut c = Canvas::default();
-    crate::presentation::drawing::plan::draw(plan, &mut c, &an.points);
-    // The student's points: given directly, or the far end of a segment
-    // from the pole.
-    for it in &ans.items {
-        let at = match &it.given {
-            Given::Point { at, .. } => Some(kurbo::Point::new(at[0], at[1])),
-            _ => None,
-        };
-        if let Some(p) = at {
-            let d = 1.2;
-            c.prims
-                .push(crate::presentation::drawing::canvas::Prim::Seg {
-                    a: p + Vec2::new(-d, -d),
-                    b: p + Vec2::new(d, d),
-                    class: Class::Thin,
-                    id: Some(format!("student-{}", it.key)),
-                });
-            c.prims
-                .push(crate::presentation::drawing::canvas::Prim::Seg {
-                    a: p + Vec2::new(-d, d),
-                    b: p + Vec2::new(d, -d),
-                    class: Class::Thin,
-                    id: None,
-                });
-            c.label(p, Label::new(format!("{}*", it.key), ""), SMALL, None);
-            if let Some(crate::presentation::drawing::canvas::Prim::Text { class, .. }) =
-                c.prims.last_mut()
-            {
-                *class = "student";
-            }
-        }
-    }
-    // Judged step by step: where each step puts the point from the
-    // student's own earlier points, within its tolerance (a thin circle),
-    // and for a wrong step a line from there to where the student drew it.
-    if let Some(steps) = &r.steps {
-        use crate::presentation::drawing::canvas::Prim;
-        for v in &steps.steps {
-            let at = kurbo::Point::new(v.predicted.x, v.predicted.y);
-            c.prims.push(Prim::Circle {
-                c: at,
-                r: v.tolerance,
-                fill: "none",
-                stroke: 0.25,
-                id: Some(format!("step-{}-{}", v.step.0, v.point)),
-            });
-            if v.judgement == Judgement::Wrong {
-                let given = kurbo::Point::new(v.given.x, v.given.y);
-                c.prims.push(Prim::Seg {
-                    a: at,
-                    b: given,
-                    class: Class::Thin,
-                    id: Some(format!("wrong-step-{}", v.step.0)),
-                });
-            }
-        }
-    }
-    let w = check::phrases(r.lang);
-    let mut title = fill(
-        &w.overlay_title,
-        &[
-            ("plan", &w.plan[usize::from(r.plan == PlanKind::Acceleration)]),
-            ("position", &r.position.to_string()),
-            ("right", &r.right().to_string()),
-            ("count", &r.verdicts.len().to_string()),
-        ],
-    );
-    if let Some(m) = r.diagnosis.as_ref().and_then(|d| d.mistake.as_ref()) {
-        title.push_str(&format!(" — {m}"));
-    }
-    (c, title)
 }
 
 /// A typed explanation as JSON: its kind, and which element or factor.

@@ -530,6 +530,11 @@ pub struct CheckPhrases {
     pub item_point: String,
     /// The overlay's title: `{plan}`, `{position}`, `{right}`, `{count}`.
     pub overlay_title: String,
+    /// The overlay's marks and its legend.
+    pub overlay: OverlayPhrases,
+    /// An item written wrong, as the gradebook names it: `{what}`,
+    /// `{given}`, `{expected}`, `{tol}` (each with its unit).
+    pub written_right: String,
     /// A force plan's report: `{links}`, `{position}`, `{mu}`, `{delta}`.
     pub force_title: String,
     /// `{what}`, `{given}`, `{unit}`, `{expected}`, `{tol}`, `{verdict}`.
@@ -548,6 +553,23 @@ pub struct CheckPhrases {
     pub force_mistake_too: String,
     /// What an item is: a segment, a direction, a value.
     pub force_kinds: [String; 3],
+}
+
+/// The check's overlay: the wrong step's mark and the legend's lines.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OverlayPhrases {
+    /// The mark beside the wrong step's lines: `{step}`.
+    pub step: String,
+    /// The legend: the right plan, the student's point, where a step puts
+    /// it with its tolerance, a point off that place, the wrong step's
+    /// lines (drawn from the student's points; on the right plan).
+    pub right_plan: String,
+    pub your_point: String,
+    pub step_place: String,
+    pub off: String,
+    pub wrong_step_own: String,
+    pub wrong_step_right: String,
 }
 
 /// Each typical mistake in one sentence: made at one decision, made at

@@ -198,6 +198,35 @@ pub(crate) fn main_title_block(
     TitleBlock::new(info, name, opt.lang, number)
 }
 
+/// The sheet a drawing of extent `b` (mm) goes on: the first of
+/// `opt.sheet` and the larger sizes whose field holds it, else A1.
+fn sheet_for(b: Rect, opt: &DrawOptions) -> SheetSize {
+    SheetSize::ALL
+        .into_iter()
+        .filter(|s| s.mm().0 >= opt.sheet.mm().0)
+        .find(|&s| fits(b, field_size(&DrawOptions { sheet: s, ..*opt }, 0.0)))
+        .unwrap_or(SheetSize::A1)
+}
+
+/// How many times [`page_svg`] reduces a drawing of extent `b` (mm): 1
+/// when a sheet holds it, else the standard n of "1:n" that brings it
+/// within A1's field. A drawing that places its labels itself (the
+/// check's overlay) is drawn reduced by it before its labels are placed,
+/// since a reduction keeps the lettering's size.
+pub fn reduction(b: Rect, opt: &DrawOptions) -> f64 {
+    let size = sheet_for(b, opt);
+    let f = sheet::field(size, opt.title_block, 0.0);
+    let k = (f.width() / b.width())
+        .min(f.height() / b.height())
+        .min(1.0);
+    if k < 1.0 {
+        // The largest "1:n" reduction with n from the standard values.
+        standard_scale(1.0 / k, 1.0)
+    } else {
+        1.0
+    }
+}
+
 /// A single sheet from a canvas (the diagrams, the Frenet families, the
 /// `check --svg` overlay): on the first of `opt.sheet` and the larger
 /// sizes whose field holds it; a drawing larger than A1's field is drawn
@@ -210,23 +239,15 @@ pub fn page_svg(
     opt: &DrawOptions,
 ) -> Sheet {
     let b = c.bounds();
-    let size = SheetSize::ALL
-        .into_iter()
-        .filter(|s| s.mm().0 >= opt.sheet.mm().0)
-        .find(|&s| fits(b, field_size(&DrawOptions { sheet: s, ..*opt }, 0.0)))
-        .unwrap_or(SheetSize::A1);
+    let size = sheet_for(b, opt);
     let opt = DrawOptions {
         sheet: size,
         ..*opt
     };
     let f = sheet::field(size, opt.title_block, 0.0);
-    let k = (f.width() / b.width())
-        .min(f.height() / b.height())
-        .min(1.0);
+    let n = reduction(b, &opt);
     let mut page = Page::new(size);
-    let title = if k < 1.0 {
-        // The largest "1:n" reduction with n from the standard values.
-        let n = standard_scale(1.0 / k, 1.0);
+    let title = if n > 1.0 {
         let c2 = c.scaled(1.0 / n);
         let t = format!("{title} (1:{})", number(n, opt.lang));
         page.heading(&t, scale.as_deref());

@@ -17,6 +17,13 @@ pub fn draw(plan: &Plan, c: &mut Canvas, reported: &[usize]) {
     draw_steps(plan, c, reported);
 }
 
+/// [`draw`] with the points' labels left waiting ([`Canvas::label_later`]):
+/// a drawing that adds marks over the plan (a check's overlay) places
+/// them once everything is drawn, clear of those marks too.
+pub fn draw_labels_later(plan: &Plan, c: &mut Canvas, reported: &[usize]) {
+    steps_drawn(plan, c, reported, true);
+}
+
 /// The step (index into `plan.steps`) that puts each plan point on the
 /// plan: the pole, a laid-off vector's end, an intersection, a point of a
 /// similar figure, a divided segment, a coinciding point.
@@ -42,7 +49,13 @@ pub fn made_at(plan: &Plan) -> Vec<Option<usize>> {
 /// label: the step that made the point, the first made of a shared
 /// label's points). For drawing a plan step by step (the HTML handout).
 pub fn draw_steps(plan: &Plan, c: &mut Canvas, reported: &[usize]) -> Vec<usize> {
+    steps_drawn(plan, c, reported, false)
+}
+
+/// [`draw_steps`], its labels placed at once or left waiting (`later`).
+fn steps_drawn(plan: &Plan, c: &mut Canvas, reported: &[usize], later: bool) -> Vec<usize> {
     let mut d = Steps {
+        later,
         plan,
         start: c.prims.len(),
         steps: Vec::new(),
@@ -66,6 +79,8 @@ pub fn draw_steps(plan: &Plan, c: &mut Canvas, reported: &[usize]) -> Vec<usize>
 /// A plan being drawn: the step of each primitive added since `start`,
 /// the plan points shown (`used`) and the vectors drawn.
 struct Steps<'a> {
+    /// The labels left waiting for [`Canvas::place_pending`].
+    later: bool,
     plan: &'a Plan,
     start: usize,
     steps: Vec<usize>,
@@ -218,7 +233,12 @@ impl Steps<'_> {
                 let q = &plan.points[i];
                 label = label.and(q.label.0.clone(), q.label.1.clone());
             }
-            c.label(p, label, FONT, Some(format!("label-{}", first.key)));
+            let id = Some(format!("label-{}", first.key));
+            if self.later {
+                c.label_later(p, label, FONT, id);
+            } else {
+                c.label(p, label, FONT, id);
+            }
             self.tag(c, made_of(&members));
         }
     }

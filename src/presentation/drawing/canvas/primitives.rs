@@ -161,7 +161,16 @@ pub enum Prim {
         at: Point,
         angle: f64,
     },
-    /// The end of a symbol.
+    /// The start of a group of primitives up to [`Prim::End`] (a check's
+    /// overlay: the right plan, the student's marks, the wrong step):
+    /// `class` names it, `opacity` pales it (1: as drawn), and what would
+    /// be drawn black in it is drawn in `ink`.
+    Group {
+        class: &'static str,
+        opacity: f64,
+        ink: &'static str,
+    },
+    /// The end of a symbol or a group.
     End,
 }
 
@@ -184,7 +193,7 @@ impl Prim {
             Prim::Rich { at, .. } | Prim::Text { at, .. } | Prim::Symbol { at, .. } => {
                 *at = p(*at)
             }
-            Prim::End => {}
+            Prim::Group { .. } | Prim::End => {}
         }
         self
     }
@@ -348,6 +357,22 @@ impl Canvas {
         self.prims.push(Prim::End);
     }
 
+    /// What `draw` draws, as a group ([`Prim::Group`]): named `class`,
+    /// `opacity` times as strong, its black in `ink`.
+    pub fn group(
+        &mut self,
+        (class, opacity, ink): (&'static str, f64, &'static str),
+        draw: impl FnOnce(&mut Canvas),
+    ) {
+        self.prims.push(Prim::Group {
+            class,
+            opacity,
+            ink,
+        });
+        draw(self);
+        self.prims.push(Prim::End);
+    }
+
     /// The last primitive drawn, past the end of a symbol.
     pub fn last_drawn_mut(&mut self) -> Option<&mut Prim> {
         self.prims.iter_mut().rev().find(|p| !matches!(p, Prim::End))
@@ -433,7 +458,7 @@ impl Canvas {
                         0.2,
                     );
                 }
-                Prim::Symbol { .. } | Prim::End => {}
+                Prim::Symbol { .. } | Prim::Group { .. } | Prim::End => {}
             }
         }
         r.unwrap_or(Rect::ZERO)

@@ -80,12 +80,16 @@ fn runs_svg(rs: &[Run], size: f64) -> String {
 
 impl Canvas {
     /// Write the primitives as SVG elements, drawing coordinates mapped to
-    /// the page by x ↦ ox + x, y ↦ oy − y.
+    /// the page by x ↦ ox + x, y ↦ oy − y; within a [`Prim::Group`] what
+    /// is black is written in the group's ink.
     pub fn write(&self, out: &mut String, ox: f64, oy: f64) {
         let o = Origin { ox, oy };
+        // The ink of each open symbol or group, innermost last.
+        let mut inks: Vec<&'static str> = Vec::new();
         for p in &self.prims {
+            let ink = inks.last().copied().unwrap_or("black");
             match p {
-                Prim::Seg { a, b, class, id } => seg_svg(out, o, (*a, *b), *class, id),
+                Prim::Seg { a, b, class, id } => seg_svg(out, (o, ink), (*a, *b), *class, id),
                 Prim::Poly {
                     pts,
                     fill,
@@ -93,8 +97,9 @@ impl Canvas {
                     id,
                 } => {
                     let d: Vec<String> = pts.iter().map(|q| o.xy(*q)).collect();
-                    let stroke = stroke_attr(*stroke);
+                    let stroke = stroke_attr(*stroke, ink);
                     let id = id_attr(id);
+                    let fill = inked(fill, ink);
                     let _ = writeln!(
                         out,
                         r#"<polygon{id} points="{}" fill="{fill}"{stroke}/>"#,
@@ -109,7 +114,8 @@ impl Canvas {
                     id,
                 } => {
                     let id = id_attr(id);
-                    let stroke = stroke_attr(*stroke);
+                    let stroke = stroke_attr(*stroke, ink);
+                    let fill = inked(fill, ink);
                     let _ = writeln!(
                         out,
                         r#"<circle{id} cx="{}" cy="{}" r="{}" fill="{fill}"{stroke}/>"#,
@@ -118,21 +124,40 @@ impl Canvas {
                         fmt(*r)
                     );
                 }
-                Prim::Path { pts, line } => path_svg(out, o, pts, *line),
+                Prim::Path { pts, line } => path_svg(out, (o, ink), pts, *line),
                 Prim::Arrow { tip, dir } => {
                     let back = *tip - *dir;
                     let n = Vec2::new(-dir.y, dir.x) * ARROW_WIDTH;
                     let _ = writeln!(
                         out,
-                        r#"<polygon class="arrow" points="{} {} {}" fill="black"/>"#,
+                        r#"<polygon class="arrow" points="{} {} {}" fill="{ink}"/>"#,
                         o.xy(*tip),
                         o.xy(back + n),
                         o.xy(back - n)
                     );
                 }
-                Prim::Arc { c, r, a0, sweep } => arc_svg(out, o, *c, *r, (*a0, *sweep)),
-                Prim::Symbol { kind, at, angle } => symbol_svg(out, o, kind, *at, *angle),
-                Prim::End => out.push_str("</g>\n"),
+                Prim::Arc { c, r, a0, sweep } => arc_svg(out, (o, ink), *c, *r, (*a0, *sweep)),
+                Prim::Symbol { kind, at, angle } => {
+                    inks.push(ink);
+                    symbol_svg(out, o, kind, *at, *angle)
+                }
+                Prim::Group {
+                    class,
+                    opacity,
+                    ink,
+                } => {
+                    inks.push(inked(ink, inks.last().copied().unwrap_or("black")));
+                    let opacity = if *opacity < 1.0 {
+                        format!(r#" opacity="{}""#, fmt(*opacity))
+                    } else {
+                        String::new()
+                    };
+                    let _ = writeln!(out, r#"<g class="{class}"{opacity}>"#);
+                }
+                Prim::End => {
+                    inks.pop();
+                    out.push_str("</g>\n")
+                }
                 Prim::Rich {
                     at,
                     runs,
@@ -149,10 +174,11 @@ impl Canvas {
                     };
                     let _ = writeln!(
                         out,
-                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{anchor}>{}</text>"#,
+                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{anchor}{}>{}</text>"#,
                         o.x(*at),
                         o.y(*at),
                         fmt(*size),
+                        text_fill(ink),
                         runs_svg(runs, *size)
                     );
                 }
@@ -162,38 +188,57 @@ impl Canvas {
                     size,
                     id,
                     class,
-                } => {
-                    // A link's number in a circle, as the course writes
-                    // it: never read as a position's number beside it.
-                    if id.as_deref().is_some_and(|i| i.starts_with("link-")) {
-                        let w = label.width(*size);
-                        let c = Point::new(at.x + w / 2.0, at.y + 0.36 * size);
-                        let _ = writeln!(
-                            out,
-                            r#"<circle class="link-number" cx="{}" cy="{}" r="{}" fill="none" stroke="black" stroke-width="{}"/>"#,
-                            o.x(c),
-                            o.y(c),
-                            fmt(0.5 * w.max(0.6 * size) + 0.45 * size),
-                            fmt(THIN)
-                        );
-                    }
-                    let id = id_attr(id);
-                    let fill = if *class == "student" {
-                        r##" fill="#c00000""##
-                    } else {
-                        ""
-                    };
-                    let _ = writeln!(
-                        out,
-                        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{fill}>{}</text>"#,
-                        o.x(*at),
-                        o.y(*at),
-                        fmt(*size),
-                        label_svg(label, *size)
-                    );
-                }
+                } => text_svg(out, (o, ink), (*at, label, *size), id, class),
             }
         }
+    }
+}
+
+/// A label's text (a link's number in a circle).
+fn text_svg(
+    out: &mut String,
+    (o, ink): (Origin, &str),
+    (at, label, size): (Point, &Label, f64),
+    id: &Option<String>,
+    class: &str,
+) {
+    // A link's number in a circle, as the course writes it: never read
+    // as a position's number beside it.
+    if id.as_deref().is_some_and(|i| i.starts_with("link-")) {
+        let w = label.width(size);
+        let c = Point::new(at.x + w / 2.0, at.y + 0.36 * size);
+        let _ = writeln!(
+            out,
+            r#"<circle class="link-number" cx="{}" cy="{}" r="{}" fill="none" stroke="{ink}" stroke-width="{}"/>"#,
+            o.x(c),
+            o.y(c),
+            fmt(0.5 * w.max(0.6 * size) + 0.45 * size),
+            fmt(THIN)
+        );
+    }
+    let id = id_attr(id);
+    let _ = writeln!(
+        out,
+        r#"<text class="{class}"{id} x="{}" y="{}" font-size="{}"{}>{}</text>"#,
+        o.x(at),
+        o.y(at),
+        fmt(size),
+        text_fill(ink),
+        label_svg(label, size)
+    );
+}
+
+/// A colour as drawn in `ink`: black becomes the ink, others stay.
+fn inked(colour: &'static str, ink: &'static str) -> &'static str {
+    if colour == "black" { ink } else { colour }
+}
+
+/// ` fill="…"` of a text in `ink` (nothing for black, the default).
+fn text_fill(ink: &str) -> String {
+    if ink == "black" {
+        String::new()
+    } else {
+        format!(r#" fill="{ink}""#)
     }
 }
 
@@ -218,9 +263,14 @@ impl Origin {
     }
 }
 
-/// A segment `ab` as a line of its class's weight; a student's marks
-/// (check --svg, ids "student-…") in red.
-fn seg_svg(out: &mut String, o: Origin, (a, b): (Point, Point), class: Class, id: &Option<String>) {
+/// A segment `ab` as a line of its class's weight, in `ink`.
+fn seg_svg(
+    out: &mut String,
+    (o, color): (Origin, &str),
+    (a, b): (Point, Point),
+    class: Class,
+    id: &Option<String>,
+) {
     let w = match class {
         Class::Thin | Class::Hatch => THIN,
         Class::Bold => BOLD,
@@ -232,11 +282,6 @@ fn seg_svg(out: &mut String, o: Origin, (a, b): (Point, Point), class: Class, id
         Class::Thin => "thin",
         Class::Hatch => "hatch",
         Class::Bold => "bold",
-    };
-    let color = if id.as_deref().is_some_and(|i| i.starts_with("student-")) {
-        "#c00000"
-    } else {
-        "black"
     };
     let id = id_attr(id);
     let _ = writeln!(
@@ -269,7 +314,7 @@ fn symbol_svg(out: &mut String, o: Origin, kind: &str, at: Point, angle: f64) {
 }
 
 /// A polyline of one line type, its dashes fitted to its length.
-fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: Line) {
+fn path_svg(out: &mut String, (o, ink): (Origin, &str), pts: &[Point], line: Line) {
     let mut d = String::new();
     for (i, q) in pts.iter().enumerate() {
         d += if i == 0 { "M" } else { " L" };
@@ -285,7 +330,7 @@ fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: Line) {
     };
     let _ = writeln!(
         out,
-        r#"<path class="{}" d="{d}" fill="none" stroke="black" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
+        r#"<path class="{}" d="{d}" fill="none" stroke="{ink}" stroke-width="{}"{dash} stroke-linejoin="round"/>"#,
         line.class(),
         fmt(line.width())
     );
@@ -293,7 +338,7 @@ fn path_svg(out: &mut String, o: Origin, pts: &[Point], line: Line) {
 
 /// A thin circular arc about `c` of radius `r` from angle `a0` swept by
 /// `sweep` (rad, CCW positive).
-fn arc_svg(out: &mut String, o: Origin, c: Point, r: f64, (a0, sweep): (f64, f64)) {
+fn arc_svg(out: &mut String, (o, ink): (Origin, &str), c: Point, r: f64, (a0, sweep): (f64, f64)) {
     let p0 = c + Vec2::from_angle(a0) * r;
     let p1 = c + Vec2::from_angle(a0 + sweep) * r;
     // In page coordinates y is flipped: a CCW sweep is sweep-flag 0.
@@ -305,7 +350,7 @@ fn arc_svg(out: &mut String, o: Origin, c: Point, r: f64, (a0, sweep): (f64, f64
     let flag = if sweep > 0.0 { 0 } else { 1 };
     let _ = writeln!(
         out,
-        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="black" stroke-width="{}"/>"#,
+        r#"<path class="arc" d="M{} A{} {} 0 {large} {flag} {}" fill="none" stroke="{ink}" stroke-width="{}"/>"#,
         o.xy(p0),
         fmt(r),
         fmt(r),
@@ -360,10 +405,11 @@ fn id_attr(id: &Option<String>) -> String {
         .unwrap_or_default()
 }
 
-/// ` stroke="black" stroke-width="…"` of an outlined shape, else nothing.
-fn stroke_attr(stroke: f64) -> String {
+/// ` stroke="…" stroke-width="…"` of an outlined shape (in `ink`), else
+/// nothing.
+fn stroke_attr(stroke: f64, ink: &str) -> String {
     if stroke > 0.0 {
-        format!(r#" stroke="black" stroke-width="{}""#, fmt(stroke))
+        format!(r#" stroke="{ink}" stroke-width="{}""#, fmt(stroke))
     } else {
         String::new()
     }
