@@ -206,9 +206,22 @@ pub fn written_wrong(r: &Report) -> Vec<String> {
         .flat_map(|st| st.mistakes.iter())
         .flat_map(|f| f.points.iter().map(String::as_str))
         .collect();
+    // The values read off the velocity plan and the scale, wrong before
+    // the plan is drawn: each is its own mistake (step 0).
+    let before: Vec<&str> = r
+        .steps
+        .iter()
+        .flat_map(|st| st.mistakes.iter())
+        .filter(|f| f.step.0 == 0)
+        .map(|f| f.step.1.as_str())
+        .collect();
     let uncovered = |v: &Verdict| {
         let point = crate::grading::resolve(&r.plan_built, &v.key).map(|i| r.plan_built.points[i].name());
-        !point.is_some_and(|p| covered.contains(&p.as_str()))
+        let named_before = v
+            .step
+            .as_ref()
+            .is_some_and(|(k, s)| *k == 0 && before.iter().any(|f| f.starts_with(s.as_str())));
+        !point.is_some_and(|p| covered.contains(&p.as_str())) && !named_before
     };
     items_wrong(&r.verdicts, r.lang, uncovered)
 }

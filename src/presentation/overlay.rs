@@ -310,10 +310,11 @@ fn wrong_steps(c: &mut Canvas, r: &Report, k: f64, shown: &mut Shown) -> Vec<(us
             continue;
         }
         // A step of that plan as the report quotes it (not one a mistake
-        // adds, which the plan has not).
+        // adds, which the plan has not; the student's own length may
+        // follow the sentence).
         let Some(step) = n
             .checked_sub(1)
-            .filter(|&i| i < plan.steps.len() && check::step(unscaled, i, r.lang) == *sentence)
+            .filter(|&i| i < plan.steps.len() && sentence.starts_with(&check::step(unscaled, i, r.lang)))
             .map(|i| &plan.steps[i])
         else {
             continue;
