@@ -11,7 +11,7 @@
 use super::answer::{Stated, StatedQuantity};
 use super::candidates::Builds;
 use super::items::slide_of;
-use super::verdict::{Candidate, Found, Judgement, Verdict};
+use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, Verdict};
 use crate::error::{Issue, Result};
 use crate::format::format_number;
 use crate::kinematics::construction::{Op, Plan};
@@ -55,6 +55,9 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
         return Err(crate::error::Error::fields(issues));
     }
     let common = common_factor(b, &truths);
+    // The velocity plan's size: a value whose segment's tolerance exceeds
+    // a fifth of it cannot be read off the plan (near a dead point).
+    let size = vel.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
     let w = check::phrases(lang);
     let fmt = |x: f64| decimals(&format_number(x), lang);
     let mut out = Vec::new();
@@ -63,6 +66,11 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
         let tol = t.bound + s.rounding;
         let difference = (s.value - t.value).abs();
         let wrong = difference > tol;
+        let tol_mm = t.bound * t.mm_per_unit;
+        let unreadable = (!wrong && tol_mm > MAX_TOLERANCE_OF_PLAN * size).then(|| {
+            let q = |x: f64| crate::words::numbers::quantity(x, "mm", lang);
+            check::fill(&w.too_wide, &[("tol", &q(tol_mm)), ("size", &q(size))])
+        });
         let sentence = match t.step {
             Some(k) => check::step(&vel, k, lang),
             None => check::fill(&w.stated_given, &[("name", &name), ("value", &fmt(t.value))]),
@@ -94,7 +102,11 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
                 on_plan: (t.mm_per_unit > 0.0)
                     .then(|| (t.value.abs() * t.mm_per_unit, s.value.abs() * t.mm_per_unit)),
                 step: Some((0, step_text)),
-                judgement: if wrong { Judgement::Wrong } else { Judgement::Right },
+                judgement: match unreadable {
+                    _ if wrong => Judgement::Wrong,
+                    Some(why) => Judgement::CannotJudge(why),
+                    None => Judgement::Right,
+                },
             },
             found,
         });
