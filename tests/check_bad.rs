@@ -1,8 +1,8 @@
 //! Bad answers are refused (bad input, status 2) with the field named,
 //! never graded: a thing given twice under two spellings, a letter of no
-//! plan or of the other plan, a number that is not finite or absurd, an
-//! answer of another plan or position than it says (docs/check.md, "The
-//! answer file").
+//! plan or of the other plan, a number that is not finite or absurd, a
+//! position the scene has not, an answer of another plan or position than
+//! it says (docs/check.md, "The answer file").
 
 mod common;
 use common::*;
@@ -44,9 +44,10 @@ fn names(err: &str, pointer: &str, message: &str) -> bool {
 }
 
 /// Where plan point `name` is on the standard plan `kind` at position
-/// `k` (from 1), mm from the pole.
+/// `k` (its number: these scenes count their positions from 0, as their
+/// sheets do), mm from the pole.
 fn place(solved: &[Solved], k: usize, kind: PlanKind, name: &str) -> [f64; 2] {
-    let plans = solved[k - 1].plans.as_ref().unwrap();
+    let plans = solved[k].plans.as_ref().unwrap();
     let plan = match kind {
         PlanKind::Velocity => &plans.velocity,
         PlanKind::Acceleration => plans.acceleration.as_ref().unwrap(),
@@ -368,29 +369,51 @@ fn numbers_not_finite_or_absurd_are_refused_at_their_field() {
             "1e13 is absurd",
         ),
         (
-            json!({ "position": 0 }),
-            "/position",
-            "a whole position number from 1, found 0",
-        ),
-        (
             json!({ "position": -1 }),
             "/position",
-            "a whole position number from 1, found -1",
+            "expected a whole position number, found -1",
         ),
         (
             json!({ "position": 1.5 }),
             "/position",
-            "a whole position number from 1, found 1.5",
+            "expected a whole position number, found 1.5",
         ),
         (
             json!({ "position": 1e30 }),
             "/position",
-            "a whole position number from 1, found 1e+30",
+            "expected a whole position number, found 1e+30",
         ),
+        (
+            json!({ "position": "2" }),
+            "/position",
+            "expected a whole position number, found \"2\"",
+        ),
+        // The default scene counts 12 positions from 0, as its sheets do.
         (
             json!({ "position": 99999 }),
             "/position",
-            "position 99999 is not one of the scene's positions",
+            "position 99999 is not one of the scene's positions: they are numbered from 0 to 11",
+        ),
+        (
+            json!({ "position": 12 }),
+            "/position",
+            "position 12 is not one of the scene's positions: they are numbered from 0 to 11",
+        ),
+        // In the older numbering the answer states, the range is its own.
+        (
+            json!({ "position": 0, "positions_from": 1 }),
+            "/position",
+            "position 0 is not one of the scene's positions: they are numbered from 1 to 12",
+        ),
+        (
+            json!({ "positions_from": 2 }),
+            "/positions_from",
+            "expected 0 or 1, the number of the scene's first position in this answer, found 2",
+        ),
+        (
+            json!({ "positions_from": "1" }),
+            "/positions_from",
+            "expected 0 or 1, the number of the scene's first position in this answer, found \"1\"",
         ),
     ] {
         let e = v(extra.clone());
@@ -426,8 +449,9 @@ fn numbers_not_finite_or_absurd_are_refused_at_their_field() {
 /// A drawing whose pole's label says the other plan than the one asked
 /// is refused naming the plan; an answer whose points fit another position
 /// of the scene well, and not the stated one, is refused naming the
-/// position it fits. Answers that fit their own position, or no position,
-/// are judged as before.
+/// position it fits, by its number (the scene counts from 0, as its
+/// sheets do). Answers that fit their own position, or no position, are
+/// judged as before.
 #[test]
 fn an_answer_of_another_plan_or_position_is_refused() {
     let drawing = svg("p_a", "μ = 0.1", &[("b", 100.0, 110.0)]);
@@ -553,7 +577,7 @@ fn the_command_refuses_bad_answers_with_status_2() {
         ),
         (
             vec!["check", &scene, &other],
-            "/position: the answer fits position 4, not position 1 it states",
+            "/position: the answer fits position 4, not position 0 it states",
         ),
         (
             vec!["check", &scene, &pole, "--plan", "velocity"],

@@ -4,6 +4,7 @@
 use crate::error::{Error, Issue, Result};
 use crate::json::{escape, locate_bad_numbers, parse_strict};
 use crate::kinematics::construction::PlanKind;
+pub use super::position::StatedPosition;
 use serde_json::Value;
 
 /// One thing the student gave.
@@ -40,8 +41,9 @@ pub struct Item {
 #[derive(Clone, Debug)]
 pub struct Answer {
     pub plan: PlanKind,
-    /// 1-based position of the scene's positions.
-    pub position: usize,
+    /// The position it is of, as stated (`"position"`, `"positions_from"`,
+    /// `--position`), read in the study's numbering unless it says its own.
+    pub position: StatedPosition,
     /// The student's scale (real units per mm).
     pub mu: f64,
     /// Pencil precision, mm.
@@ -255,27 +257,6 @@ fn positive(v: &Value, at: &str, why: &str, issues: &mut Vec<Issue>) -> Option<f
     })
 }
 
-/// The answer's `position`: 1 when it gives none; `None` (with its
-/// issue) when it is not a number from 1.
-pub(super) fn position(
-    o: &serde_json::Map<String, Value>,
-    issues: &mut Vec<Issue>,
-) -> Option<usize> {
-    match o.get("position") {
-        None => Some(1),
-        Some(p) => match p.as_u64() {
-            Some(n) if n >= 1 => Some(usize::try_from(n).unwrap_or(usize::MAX)),
-            _ => {
-                issues.push(issue(
-                    "/position",
-                    format!("expected a whole position number from 1, found {p}"),
-                ));
-                None
-            }
-        },
-    }
-}
-
 /// A plan's name in the messages.
 fn plan_name(p: PlanKind) -> &'static str {
     if p == PlanKind::Velocity {
@@ -296,12 +277,12 @@ pub fn from_json(text: &str) -> Result<Answer> {
     };
     for k in o.keys() {
         if ![
-            "plan", "position", "mu", "delta", "segments", "angles", "points", "values", "title",
-            "velocity",
+            "plan", "position", "positions_from", "mu", "delta", "segments", "angles", "points",
+            "values", "title", "velocity",
         ]
         .contains(&k.as_str())
         {
-            issues.push(issue(format!("/{}", escape(k)), format!("unknown field \"{k}\" (allowed: plan, position, mu, delta, segments, angles, points, values, velocity)")));
+            issues.push(issue(format!("/{}", escape(k)), format!("unknown field \"{k}\" (allowed: plan, position, positions_from, mu, delta, segments, angles, points, values, velocity)")));
         }
     }
     let plan = match o.get("plan").and_then(Value::as_str) {
@@ -315,7 +296,7 @@ pub fn from_json(text: &str) -> Result<Answer> {
             None
         }
     };
-    let position = position(o, &mut issues);
+    let position = super::position::read(o, &mut issues);
     let mu = match o.get("mu") {
         None => {
             issues.push(issue(

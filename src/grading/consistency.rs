@@ -29,17 +29,15 @@ pub(super) const BETTER_FIT: f64 = 10.0;
 
 /// Refuse an answer whose names are of the other plan or of no plan, that
 /// gives a thing twice, or whose points fit another position of the scene
-/// instead of the one it states. A position the scene does not have, or a
-/// plan it cannot build, is left to [`super::check`] to refuse.
+/// instead of the one it states (`at`, its index). A plan the scene cannot
+/// build is left to [`super::check`] to refuse.
 pub(super) fn refuse_inconsistent(
     an: &Analysis,
     solved: &[Solved],
-    ans: &Answer,
+    (at, ans): (usize, &Answer),
     lang: Lang,
 ) -> Result<()> {
-    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
-        return Ok(());
-    };
+    let s = &solved[at];
     let Ok(plan) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
         return Ok(());
     };
@@ -57,7 +55,7 @@ pub(super) fn refuse_inconsistent(
     }
     issues.extend(given_twice(an, &plan, &ans.items));
     if issues.is_empty()
-        && let Some(i) = another_position(an, solved, ans, &plan, lang)
+        && let Some(i) = another_position(an, solved, (at, ans), &plan, lang)
     {
         issues.push(i);
     }
@@ -148,7 +146,7 @@ fn fit(plan: &Plan, points: &[(&str, [f64; 2])], delta: f64) -> Option<(f64, boo
 fn another_position(
     an: &Analysis,
     solved: &[Solved],
-    ans: &Answer,
+    (at, ans): (usize, &Answer),
     plan: &Plan,
     lang: Lang,
 ) -> Option<Issue> {
@@ -169,7 +167,7 @@ fn another_position(
     }
     let mut best: Option<(usize, f64)> = None;
     for (k, s) in solved.iter().enumerate() {
-        if k + 1 == ans.position {
+        if k == at {
             continue;
         }
         let Ok(p) = (Builds { an, s, ans, lang }).plan(&s.config, Variant::default()) else {
@@ -178,7 +176,7 @@ fn another_position(
         if let Some((m, true)) = fit(&p, &points, ans.delta)
             && best.is_none_or(|(_, b)| m < b)
         {
-            best = Some((k + 1, m));
+            best = Some((an.numbering.number(k), m));
         }
     }
     let (k, m) = best?;
@@ -186,7 +184,7 @@ fn another_position(
         pointer: "/position".into(),
         message: format!(
             "the answer fits position {k}, not position {} it states; give \"position\": {k} or --position {k}",
-            ans.position
+            an.numbering.number(at)
         ),
     })
 }

@@ -62,6 +62,8 @@ pub struct Diagnosis {
 #[derive(Clone, Debug)]
 pub struct Report {
     pub plan: PlanKind,
+    /// The position checked: the one the answer states, by its number in
+    /// the study's numbering (a `count` sweep from 0, given values from 1).
     pub position: usize,
     pub mu: f64,
     pub delta: f64,

@@ -80,7 +80,9 @@ pub struct GradeRow {
     pub file: String,
     /// `velocity`, `acceleration` or `force`; `None` when unreadable.
     pub plan: Option<&'static str>,
-    /// The position checked (from 1); `None` when unreadable.
+    /// The position checked, by its number in the study's numbering (a
+    /// `count` sweep from 0, given input values from 1: the number the
+    /// sheets show); `None` when unreadable.
     pub position: Option<usize>,
     /// The grade.
     pub grade: Grade,
