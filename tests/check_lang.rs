@@ -5,8 +5,9 @@
 //! keeps its keys, its judgements and its numbers machine-readable, only
 //! its sentences follow the language. The same wrong answer throughout:
 //! the six-link's velocity plan at position 0 turned through the pole
-//! (the crank's velocity laid off against ω1), its points taken from
-//! `solve --format json`, as tests/check_group.rs builds it.
+//! (the crank's velocity laid off against ω1, so that the report notes
+//! that the points fit position 0 with ω1 reversed), its points taken
+//! from `solve --format json`, as tests/check_group.rs builds it.
 
 use mechplan::{CheckRequest, Lang, Study};
 use serde_json::{Value, json};
@@ -86,12 +87,14 @@ fn decimal_points(text: &str) -> Vec<String> {
 }
 
 /// What the report must say in each language: the grade line's start,
-/// the mistake, the quoted step's start, a word of the table, English
-/// words that must not appear.
+/// the mistake, the note under it (the points fit with ω1 reversed), the
+/// quoted step's start, a word of the table, English words that must not
+/// appear.
 struct Words {
     lang: &'static str,
     grade: &'static str,
     mistake: &'static str,
+    note: &'static str,
     step: &'static str,
     table: &'static [&'static str],
 }
@@ -100,6 +103,7 @@ const UK: Words = Words {
     lang: "uk",
     grade: "Оцінка: НЕВІРНО на кроці 3.",
     mistake: "Швидкість кривошипа відкладено проти напрямку ω1.",
+    note: "Примітка: ваші точки відповідають положенню 0 з кривошипом, що обертається в інший бік (ω1 навпаки)",
     step: "Від p_v відкладаємо p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
         "Перевірка плану швидкостей, положення 0",
@@ -119,6 +123,7 @@ const RU: Words = Words {
     lang: "ru",
     grade: "Оценка: НЕВЕРНО на шаге 3.",
     mistake: "Скорость кривошипа отложена против направления ω1.",
+    note: "Примечание: ваши точки соответствуют положению 0 при кривошипе, вращающемся в другую сторону (ω1 наоборот)",
     step: "От p_v откладываем p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
         "Проверка плана скоростей, положение 0",
@@ -139,6 +144,7 @@ fn speaks(w: &Words, out: &str) {
     let lines: Vec<&str> = out.lines().collect();
     assert!(lines[1].starts_with(w.grade), "{}: {out}", w.lang);
     assert!(lines[1].contains(w.mistake), "{}: {out}", w.lang);
+    assert!(lines[2].starts_with(w.note), "{}: {out}", w.lang);
     let quoted = lines.iter().filter(|l| l.contains(w.step)).count();
     // The mistake's step, and the wrong item's step.
     assert_eq!(quoted, 2, "{}: {out}", w.lang);

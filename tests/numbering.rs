@@ -4,7 +4,10 @@
 //! lecture's: position 0 the extreme position that starts the working
 //! stroke), given input values from 1. Older answers and command lines
 //! (a `count` sweep counted from 1) are read as before with
-//! `"positions_from": 1` or `--positions-from 1`.
+//! `"positions_from": 1` or `--positions-from 1`. An answer whose points
+//! fit another position than it states, or its own with the crank turned
+//! the other way, is graded at the position it states (wrong), the report
+//! naming where they fit — never refused.
 
 use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
@@ -333,6 +336,120 @@ fn older_answers_and_command_lines_are_read_with_positions_from_1() {
     assert_eq!(code, 0, "{err}");
     let svg = std::fs::read_to_string(dir.join("d/velocity_12.svg")).unwrap();
     assert_eq!(printed(&svg).0, 12);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An answer drawn at position 4 but stating position 1 is graded at
+/// position 1: wrong (exit 1), its report (text in each language, and
+/// JSON) naming position 4 — not refused.
+#[test]
+fn an_answer_drawn_at_another_position_is_graded_at_its_own_and_names_it() {
+    let dir = fresh("elsewhere");
+    let six = scene("six_link_fig2_10");
+    let (_, json, _) = run(&["solve", &six, "--format", "json"]);
+    let doc: Value = serde_json::from_str(&json).unwrap();
+    let mut answer = answer_of(numbered(&doc, 4));
+    answer["position"] = json!(1);
+    let file = dir.join("four-as-one.json");
+    std::fs::write(&file, answer.to_string()).unwrap();
+    for (lang, note) in [
+        (
+            "en",
+            "Note: your points fit position 4, not position 1 that the answer states; it is graded at position 1.",
+        ),
+        (
+            "uk",
+            "Примітка: ваші точки відповідають положенню 4, а не положенню 1, зазначеному у відповіді; оцінено в положенні 1.",
+        ),
+        (
+            "ru",
+            "Примечание: ваши точки соответствуют положению 4, а не положению 1, указанному в ответе; оценено в положении 1.",
+        ),
+    ] {
+        let (code, out, err) = run(&["check", &six, s(&file), "--lang", lang]);
+        assert_eq!(code, 1, "{lang}: {out}{err}");
+        assert_eq!(out.lines().nth(2), Some(note), "{lang}: {out}");
+    }
+    let (code, out, _) = run(&["check", &six, s(&file), "--format", "json"]);
+    assert_eq!(code, 1);
+    let r: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(r["position"], 1);
+    assert_eq!(r["status"], 1);
+    assert!(r["wrong"].as_u64().unwrap() > 0);
+    assert_eq!(r["elsewhere"]["position"], 4);
+    assert_eq!(r["elsewhere"]["reversed"], false);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A Scotch yoke: a plan drawn with the crank turned the other way is the
+/// plan of the position half a turn away (its velocities all reversed).
+/// Such an answer was refused (exit 2, "fits position …"); it is graded at
+/// the position it states (the crank's velocity against ω1, exit 1), the
+/// report naming the reversed crank and the position it fits as well.
+#[test]
+fn a_reversed_crank_is_graded_and_named() {
+    let dir = fresh("reversed");
+    let yoke = json!({
+        "mechplan": 1,
+        "title": "Scotch yoke",
+        "points": { "O": [0, 0], "A": [0.0866025403784439, 0.05], "D": [0.0866025403784439, -0.2] },
+        "links": {
+            "0": { "points": ["O"] },
+            "1": { "points": ["O", "A"] },
+            "2": { "points": ["A"] },
+            "3": { "points": ["D"] }
+        },
+        "sliders": [
+            { "slider": "2", "guide": "3", "point": "A", "line": { "through": "D", "angle": 90 } },
+            { "slider": "3", "guide": "0", "point": "D", "line": { "through": [0, -0.2], "angle": 0 } }
+        ],
+        "lengths": { "O-A": 0.1 },
+        "input": { "link": "1", "pivot": "O", "angle": 30, "omega": 5 },
+        "positions": { "count": 12 }
+    });
+    let scene = dir.join("yoke.json");
+    std::fs::write(&scene, yoke.to_string()).unwrap();
+    let (_, json, _) = run(&["solve", s(&scene), "--format", "json"]);
+    let doc: Value = serde_json::from_str(&json).unwrap();
+    // Position 1's plan turned through the pole, at μ_v = 0.004 (m/s)/mm:
+    // position 7's, half a turn on.
+    let plan = &numbered(&doc, 1)["plans"]["velocity"];
+    let mu = 0.004;
+    let turned: serde_json::Map<String, Value> = ["a", "d"]
+        .iter()
+        .map(|k| {
+            let p = &plan["points"][*k];
+            let f = plan["mu"].as_f64().unwrap() / mu;
+            (
+                k.to_string(),
+                json!([-p[0].as_f64().unwrap() * f, -p[1].as_f64().unwrap() * f]),
+            )
+        })
+        .collect();
+    let answer = json!({ "plan": "velocity", "position": 1, "mu": mu, "points": turned });
+    let file = dir.join("reversed.json");
+    std::fs::write(&file, answer.to_string()).unwrap();
+    let (code, out, err) = run(&["check", s(&scene), s(&file)]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.contains("The crank's velocity is laid off against the sense of ω1."),
+        "{out}"
+    );
+    assert_eq!(
+        out.lines().nth(2),
+        Some(
+            "Note: your points fit position 1 with the crank turned the other way (ω1 reversed), and position 7 as well; it is graded at position 1 with ω1 as the scene gives it."
+        ),
+        "{out}"
+    );
+    let (_, out, _) = run(&["check", s(&scene), s(&file), "--format", "json"]);
+    let r: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        (r["position"].clone(), r["status"].clone()),
+        (json!(1), json!(1))
+    );
+    assert_eq!(r["elsewhere"]["reversed"], true);
+    assert_eq!(r["elsewhere"]["position"], 7);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -12,9 +12,10 @@
 //! [`Report`]), the items as a construction expects them (`items`), the
 //! mistaken constructions tried and what cannot be judged
 //! (`candidates`), the diagnosis (`diagnosis`), an answer refused before
-//! it is judged: a name of the other plan, a thing given twice, points
-//! drawn at another position (`consistency`); the position an answer
-//! states (`position`). The verdict is data: its
+//! it is judged: a name of the other plan, a thing given twice
+//! (`consistency`, which also finds where points drawn at another
+//! position fit: a note of the report, never a refusal), the position an
+//! answer states (`position`). The verdict is data: its
 //! text, JSON and overlay sheet are presentation's
 //! (`crate::presentation::verdict`), reading the answer's file the front
 //! door's (`crate::study`).
@@ -38,7 +39,7 @@ mod verdict;
 pub use verdict::Candidate as Explanation;
 pub use items::resolve;
 pub use verdict::{
-    Diagnosis, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
+    Diagnosis, Elsewhere, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
     StepVerdict, Verdict,
 };
 
@@ -151,7 +152,7 @@ fn against_true_plan(
             ));
         }
     }
-    consistency::refuse_inconsistent(an, solved, (at, ans), lang)?;
+    let elsewhere = consistency::refuse_inconsistent(an, solved, (at, ans), lang)?;
     let b = Builds { an, s, ans, lang };
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();
@@ -198,6 +199,7 @@ fn against_true_plan(
     let mut report = Report {
         plan: ans.plan,
         position: an.numbering.number(at),
+        elsewhere,
         mu: ans.mu,
         delta: ans.delta,
         worst_angle: plan.worst_angle_deg(),

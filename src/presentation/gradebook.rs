@@ -93,7 +93,9 @@ pub struct GradeRow {
     pub mistakes: Vec<String>,
     /// The items' counts; `None` when unreadable.
     pub counts: Option<Counts>,
-    /// Why an unreadable answer could not be checked; `None` otherwise.
+    /// Why an unreadable answer could not be checked; for one checked,
+    /// the report's note when its points fit another position (or this
+    /// one with ω1 reversed); `None` otherwise.
     pub message: Option<String>,
 }
 
@@ -152,7 +154,7 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
                 grade: Grade::of_status(r.status()),
                 mistakes,
                 counts: Some(counts(&r.verdicts)),
-                message: None,
+                message: super::verdict::elsewhere_note(r),
             }
         }
         Outcome::Force(r) => {

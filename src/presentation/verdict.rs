@@ -41,8 +41,18 @@ pub fn to_text(r: &Report) -> String {
     if r.worst_angle < 5.0 {
         let _ = writeln!(t, "{}", fill(&w.dead_centre, &[("angle", &fmt(r.worst_angle))]));
     }
-    if let Some(steps) = &r.steps {
-        steps_text(&mut t, w, (steps, r.grade(), r.wrong()), r.lang);
+    // The note of points that fit elsewhere: under the grade.
+    let note = elsewhere_note(r).map(|n| n + "\n").unwrap_or_default();
+    match &r.steps {
+        Some(steps) => {
+            let mut s = String::new();
+            steps_text(&mut s, w, (steps, r.grade(), r.wrong()), r.lang);
+            let cut = s.find('\n').map_or(s.len(), |i| i + 1);
+            t.push_str(&s[..cut]);
+            t.push_str(&note);
+            t.push_str(&s[cut..]);
+        }
+        None => t.push_str(&note),
     }
     let _ = writeln!(t, "{}", w.items_heading);
     let c = &w.items_columns;
@@ -110,6 +120,28 @@ pub fn to_text(r: &Report) -> String {
         None => diagnosis_text(&mut t, w, r),
     }
     t
+}
+
+/// The report's note on an answer whose points fit elsewhere than the
+/// position it states ([`crate::grading::Elsewhere`]): another position,
+/// the stated one with ω1 reversed, or both; `None` when they fit there
+/// (or fit nowhere).
+pub fn elsewhere_note(r: &Report) -> Option<String> {
+    let e = r.elsewhere?;
+    let w = check::phrases(r.lang);
+    let stated = r.position.to_string();
+    Some(match (e.reversed, e.position) {
+        (true, Some(k)) => fill(
+            &w.elsewhere_both,
+            &[("stated", &stated), ("position", &k.to_string())],
+        ),
+        (true, None) => fill(&w.elsewhere_reversed, &[("stated", &stated)]),
+        (false, Some(k)) => fill(
+            &w.elsewhere_position,
+            &[("stated", &stated), ("position", &k.to_string())],
+        ),
+        (false, None) => return None,
+    })
 }
 
 /// A number of the text report: [`crate::format::format_number`]'s
@@ -237,6 +269,9 @@ pub fn to_json(r: &Report) -> serde_json::Value {
     serde_json::json!({
         "plan": if r.plan == PlanKind::Velocity { "velocity" } else { "acceleration" },
         "position": r.position,
+        "elsewhere": r.elsewhere.map(|e| serde_json::json!({
+            "reversed": e.reversed, "position": e.position, "note": elsewhere_note(r),
+        })),
         "mu": r.mu,
         "delta": r.delta,
         "worst_angle": r.worst_angle,
