@@ -3,6 +3,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use mechplan::Lang;
+use mechplan::Numbering;
 use mechplan::PlanKind;
 use mechplan::{Format as SheetFormat, SheetSize};
 use std::path::PathBuf;
@@ -38,6 +39,12 @@ pub enum Command {
         /// (default: the scene's want.lang); json, csv and jsonl are written as they are.
         #[arg(long, value_parser = lang)]
         lang: Option<Lang>,
+        /// Number the positions from 0 or from 1 in everything the command reads and writes
+        /// (default: the scene's, a count sweep from 0 as the sheets show, given input
+        /// values from 1); 1 reads the older numbering of a count sweep (the K-th position
+        /// is position K).
+        #[arg(long, value_parser = numbering)]
+        positions_from: Option<Numbering>,
     },
     /// Check a hand-drawn plan of velocities, accelerations or forces (ANSWER: JSON, SVG or DXF) against the construction; exit 0 right, 1 wrong, 4 some items cannot be judged, 2 bad input, 3 output not written. Several ANSWERs or a folder: a group, graded into OUT/gradebook.csv, OUT/summary.html and OUT/overlays/ (exit 2 if an answer is unreadable, else 1 if one is wrong, else 4 if one cannot be judged).
     Check {
@@ -72,9 +79,17 @@ pub enum Command {
         /// For an SVG or DXF answer: velocity or acceleration, if the pole's label does not say.
         #[arg(long, value_parser = plan)]
         plan: Option<PlanKind>,
-        /// Which of the scene's positions, from 1 (default: the answer file's, else 1).
+        /// Which of the scene's positions: its number as the sheets show it (a count sweep
+        /// from 0, given input values from 1; default: the answer file's, else the first).
         #[arg(long)]
         position: Option<usize>,
+        /// Number the positions from 0 or from 1 in --position, in the answers that do not
+        /// state their own "positions_from", in the report and the gradebook (default: the
+        /// scene's, a count sweep from 0 as the sheets show, given input values from 1); 1
+        /// reads the older numbering of a count sweep (the K-th position is position K).
+        #[arg(long, value_parser = numbering)]
+        positions_from: Option<Numbering>,
+
         /// Language of the report: en, uk or ru (default: the scene's want.lang); JSON keeps
         /// its keys and judgements in English.
         #[arg(long, value_parser = lang)]
@@ -118,10 +133,17 @@ pub enum Command {
         /// course project on A1 (A2 with --sheet A2), with the ГОСТ 2.104 title block.
         #[arg(long, conflicts_with = "html")]
         course: bool,
-        /// Only the sheets of these positions (from 1; a list: 1,4,7), at the scales of the
-        /// whole set and numbered as in it; the folder's other sheets are left as they are.
+        /// Only the sheets of these positions, by the numbers the sheets show (a count sweep
+        /// from 0, given input values from 1; a list: 0,4,7), at the scales of the whole
+        /// set; the folder's other sheets are left as they are.
         #[arg(long, value_delimiter = ',', conflicts_with = "html")]
         position: Vec<usize>,
+        /// Number the positions from 0 or from 1 in everything the command reads and writes
+        /// (default: the scene's, a count sweep from 0 as the sheets show, given input
+        /// values from 1); 1 reads the older numbering of a count sweep (the K-th position
+        /// is position K).
+        #[arg(long, value_parser = numbering)]
+        positions_from: Option<Numbering>,
     },
     /// Work-precision report: each method's error against an extended-precision reference, and its run time.
     Precision {
@@ -144,9 +166,17 @@ pub enum Command {
     Centres {
         /// The scene file (JSON, see docs/scene-format.md).
         scene: PathBuf,
-        /// Only this position (from 1).
+        /// Only this position, its number as the sheets show it (a count sweep from 0, given
+        /// input values from 1).
         #[arg(long)]
         position: Option<usize>,
+        /// Number the positions from 0 or from 1 in everything the command reads and writes
+        /// (default: the scene's, a count sweep from 0 as the sheets show, given input
+        /// values from 1); 1 reads the older numbering of a count sweep (the K-th position
+        /// is position K).
+        #[arg(long, value_parser = numbering)]
+        positions_from: Option<Numbering>,
+
         #[arg(long, value_enum, default_value_t = Format::Table)]
         format: Format,
     },
@@ -247,6 +277,13 @@ pub fn lang(s: &str) -> Result<Lang, String> {
 
 pub fn sheet(s: &str) -> Result<SheetSize, String> {
     SheetSize::parse(s).ok_or_else(|| format!("unknown sheet \"{s}\": use A4, A3, A2 or A1"))
+}
+
+pub fn numbering(s: &str) -> Result<Numbering, String> {
+    s.parse()
+        .ok()
+        .and_then(Numbering::from_first)
+        .ok_or_else(|| format!("positions are numbered from 0 or from 1, not from \"{s}\""))
 }
 
 pub fn plan(s: &str) -> Result<PlanKind, String> {

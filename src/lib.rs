@@ -95,6 +95,7 @@ pub use error::{Error, Issue, Result};
 pub use kinematics::construction::PlanKind;
 pub use kurbo::{Point, Vec2};
 pub use lang::Lang;
+pub use model::scene::Numbering;
 pub use presentation::drawing::{Format, Sheet, SheetSize};
 pub use progress::{Progress, Silent};
 pub use study::DEFAULT_SCENE;

@@ -7,15 +7,20 @@ mod terminal;
 use clap::Parser;
 use cli::{CheckFormat, Cli, Command, Format, SolveFormat};
 use mechplan::Spool;
-use mechplan::{CheckRequest, DrawRequest, Error, Results, Study};
+use mechplan::{CheckRequest, DrawRequest, Error, Numbering, Results, Study};
 use std::path::Path;
 use std::process::ExitCode;
 use std::sync::Arc;
 use terminal::{stdout, wrote};
 
-/// A scene file read, long sweeps drawing a bar on a terminal.
-fn study(path: &Path) -> Result<Study, Error> {
-    Ok(Study::from_path(path)?.watched_by(Arc::new(terminal::Bar::default())))
+/// A scene file read, long sweeps drawing a bar on a terminal, its
+/// positions numbered as `--positions-from` says (else as the scene does).
+fn study(path: &Path, numbering: Option<Numbering>) -> Result<Study, Error> {
+    let study = Study::from_path(path)?.watched_by(Arc::new(terminal::Bar::default()));
+    Ok(match numbering {
+        Some(n) => study.numbered(n),
+        None => study,
+    })
 }
 
 /// The results in `style`: into the file `output`, or held back and
@@ -54,6 +59,7 @@ fn command(c: Command) -> Result<u8, Error> {
             output,
             steps,
             lang,
+            positions_from,
         } => {
             let style = match (steps, format) {
                 (true, _) => Results::Steps(lang),
@@ -62,7 +68,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 (false, SolveFormat::Csv) => Results::Csv,
                 (false, SolveFormat::Jsonl) => Results::Jsonl,
             };
-            results(&study(&scene)?, style, output.as_deref())?;
+            results(&study(&scene, positions_from)?, style, output.as_deref())?;
         }
         Command::Draw {
             scene,
@@ -77,6 +83,7 @@ fn command(c: Command) -> Result<u8, Error> {
             centres,
             course,
             position,
+            positions_from,
         } => {
             let req = DrawRequest {
                 dir: output,
@@ -91,7 +98,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 course,
                 positions: position,
             };
-            wrote(&study(&scene)?.draw(&req)?)?;
+            wrote(&study(&scene, positions_from)?.draw(&req)?)?;
         }
         Command::Check {
             scene,
@@ -104,6 +111,7 @@ fn command(c: Command) -> Result<u8, Error> {
             mu,
             plan,
             position,
+            positions_from,
             lang,
         } => {
             let req = CheckRequest {
@@ -114,6 +122,7 @@ fn command(c: Command) -> Result<u8, Error> {
                 mu,
                 plan,
                 position,
+                positions_from,
                 lang,
             };
             if mechplan::study::is_group(&answers, output.is_some()) {
@@ -162,7 +171,7 @@ fn studies(c: Command) -> Result<(), Error> {
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_else(|| "scene".into());
-            let report = study(&scene)?.precision(&settings)?;
+            let report = study(&scene, None)?.precision(&settings)?;
             match output {
                 Some(dir) => wrote(&report.write_into(&dir, &stem)?),
                 None => stdout(&report.to_markdown()),
@@ -171,9 +180,10 @@ fn studies(c: Command) -> Result<(), Error> {
         Command::Centres {
             scene,
             position,
+            positions_from,
             format,
         } => {
-            let study = study(&scene)?;
+            let study = study(&scene, positions_from)?;
             let centres = study.centres(position)?;
             stdout(&match format {
                 Format::Json => terminal::pretty(&centres.to_json()),
@@ -188,7 +198,7 @@ fn studies(c: Command) -> Result<(), Error> {
             n,
             format,
         } => {
-            let study = study(&scene)?;
+            let study = study(&scene, None)?;
             let inv = study.invariants(output.as_deref(), tolerance, min_dwell, n)?;
             stdout(&match format {
                 Format::Json => terminal::pretty(&inv.to_json()),
@@ -203,7 +213,7 @@ fn studies(c: Command) -> Result<(), Error> {
             output_dir,
             format,
         } => {
-            let study = study(&scene)?;
+            let study = study(&scene, None)?;
             let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
             match output_dir {
                 Some(dir) => wrote(&d.write_into(&dir, format.into())?),
@@ -242,6 +252,7 @@ fn finish(result: Result<u8, Error>) -> ExitCode {
                 "point",
                 "sheet",
                 "position",
+                "positions-from",
                 "tolerance",
                 "dpi",
                 "min-dwell",

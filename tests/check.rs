@@ -245,11 +245,13 @@ fn named(m: Mistake, d: &str) -> bool {
     words.iter().any(|w| d.contains(w))
 }
 
-/// An answer to a check: the items of plan `p` (noise from `rng`).
+/// An answer to a check: the items of plan `p` (noise from `rng`), at
+/// position `position` (its number: the scenes of [`positions`] list their
+/// input values, numbered from 1).
 fn answer(kind: PlanKind, mu: f64, mu_v: f64, position: usize, items: Vec<Item>) -> Answer {
     Answer {
         plan: kind,
-        position,
+        position: mechplan::check::position::StatedPosition::new(position),
         mu,
         delta: 0.5,
         items,

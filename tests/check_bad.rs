@@ -1,8 +1,9 @@
 //! Bad answers are refused (bad input, status 2) with the field named,
 //! never graded: a thing given twice under two spellings, a letter of no
-//! plan or of the other plan, a number that is not finite or absurd, an
-//! answer of another plan or position than it says (docs/check.md, "The
-//! answer file").
+//! plan or of the other plan, a number that is not finite or absurd, a
+//! position the scene has not, an answer of another plan than it says
+//! (docs/check.md, "The answer file"); an answer whose points fit another
+//! position is graded, never refused.
 
 mod common;
 use common::*;
@@ -44,9 +45,10 @@ fn names(err: &str, pointer: &str, message: &str) -> bool {
 }
 
 /// Where plan point `name` is on the standard plan `kind` at position
-/// `k` (from 1), mm from the pole.
+/// `k` (its number: these scenes count their positions from 0, as their
+/// sheets do), mm from the pole.
 fn place(solved: &[Solved], k: usize, kind: PlanKind, name: &str) -> [f64; 2] {
-    let plans = solved[k - 1].plans.as_ref().unwrap();
+    let plans = solved[k].plans.as_ref().unwrap();
     let plan = match kind {
         PlanKind::Velocity => &plans.velocity,
         PlanKind::Acceleration => plans.acceleration.as_ref().unwrap(),
@@ -368,29 +370,51 @@ fn numbers_not_finite_or_absurd_are_refused_at_their_field() {
             "1e13 is absurd",
         ),
         (
-            json!({ "position": 0 }),
-            "/position",
-            "a whole position number from 1, found 0",
-        ),
-        (
             json!({ "position": -1 }),
             "/position",
-            "a whole position number from 1, found -1",
+            "expected a whole position number, found -1",
         ),
         (
             json!({ "position": 1.5 }),
             "/position",
-            "a whole position number from 1, found 1.5",
+            "expected a whole position number, found 1.5",
         ),
         (
             json!({ "position": 1e30 }),
             "/position",
-            "a whole position number from 1, found 1e+30",
+            "expected a whole position number, found 1e+30",
         ),
+        (
+            json!({ "position": "2" }),
+            "/position",
+            "expected a whole position number, found \"2\"",
+        ),
+        // The default scene counts 12 positions from 0, as its sheets do.
         (
             json!({ "position": 99999 }),
             "/position",
-            "position 99999 is not one of the scene's positions",
+            "position 99999 is not one of the scene's positions: they are numbered from 0 to 11",
+        ),
+        (
+            json!({ "position": 12 }),
+            "/position",
+            "position 12 is not one of the scene's positions: they are numbered from 0 to 11",
+        ),
+        // In the older numbering the answer states, the range is its own.
+        (
+            json!({ "position": 0, "positions_from": 1 }),
+            "/position",
+            "position 0 is not one of the scene's positions: they are numbered from 1 to 12",
+        ),
+        (
+            json!({ "positions_from": 2 }),
+            "/positions_from",
+            "expected 0 or 1, the number of the scene's first position in this answer, found 2",
+        ),
+        (
+            json!({ "positions_from": "1" }),
+            "/positions_from",
+            "expected 0 or 1, the number of the scene's first position in this answer, found \"1\"",
         ),
     ] {
         let e = v(extra.clone());
@@ -424,12 +448,14 @@ fn numbers_not_finite_or_absurd_are_refused_at_their_field() {
 }
 
 /// A drawing whose pole's label says the other plan than the one asked
-/// is refused naming the plan; an answer whose points fit another position
-/// of the scene well, and not the stated one, is refused naming the
-/// position it fits. Answers that fit their own position, or no position,
-/// are judged as before.
+/// is refused naming the plan. An answer whose points fit another
+/// position of the scene well, and not the stated one, is never refused:
+/// it is graded at the position it states (wrong), its report naming the
+/// position it fits (tests/numbering.rs has the reversed crank). Answers
+/// that fit their own position, or no position, are judged as before,
+/// without the note.
 #[test]
-fn an_answer_of_another_plan_or_position_is_refused() {
+fn an_answer_of_another_plan_is_refused_one_of_another_position_graded() {
     let drawing = svg("p_a", "μ = 0.1", &[("b", 100.0, 110.0)]);
     let req = CheckRequest {
         plan: Some(PlanKind::Velocity),
@@ -472,17 +498,26 @@ fn an_answer_of_another_plan_or_position_is_refused() {
             )
             .unwrap()
         };
-        // Drawn at position 4, said to be position 1.
-        let e = check(&an, &solved, &answer(1, 4)).unwrap_err().to_string();
-        assert_eq!(
-            e,
-            "/position: the answer fits position 4, not position 1 it states; give \"position\": 4 or --position 4",
-            "{kind:?}"
+        // Drawn at position 4, said to be position 1: graded at 1, wrong,
+        // the report naming position 4.
+        let r = check(&an, &solved, &answer(1, 4)).unwrap();
+        assert_eq!(r.position, 1, "{kind:?}");
+        assert!(r.wrong() > 0, "{kind:?}");
+        assert_eq!(r.status(), 1, "{kind:?}");
+        let e = r.elsewhere.expect("the position it fits");
+        assert_eq!((e.position, e.reversed), (Some(4), false), "{kind:?}");
+        let text = mechplan::presentation::verdict::to_text(&r);
+        assert!(
+            text.contains(
+                "Note: your points fit position 4, not position 1 that the answer states; it is graded at position 1."
+            ),
+            "{kind:?}: {text}"
         );
-        // Drawn and said at position 4: right.
+        // Drawn and said at position 4: right, no note.
         let r = check(&an, &solved, &answer(4, 4)).unwrap();
         assert_eq!(r.wrong(), 0, "{kind:?}");
-        // Wrong everywhere (b 40 mm off): judged wrong, not refused.
+        assert_eq!(r.elsewhere, None, "{kind:?}");
+        // Wrong everywhere (b 40 mm off): judged wrong, no position named.
         let mut far = answer(4, 4);
         for it in &mut far.items {
             if let mechplan::check::answer::Given::Point { name, at } = &mut it.given
@@ -491,7 +526,9 @@ fn an_answer_of_another_plan_or_position_is_refused() {
                 at[0] += 40.0;
             }
         }
-        assert!(check(&an, &solved, &far).unwrap().wrong() > 0, "{kind:?}");
+        let r = check(&an, &solved, &far).unwrap();
+        assert!(r.wrong() > 0, "{kind:?}");
+        assert_eq!(r.elsewhere, None, "{kind:?}");
     }
 }
 
@@ -533,10 +570,6 @@ fn the_command_refuses_bad_answers_with_status_2() {
         "nan.json",
         r#"{ "plan": "velocity", "mu": 0.01, "points": { "b": [NaN, 2] } }"#,
     );
-    let other = temp(
-        "other.json",
-        &json!({ "plan": "velocity", "mu": 0.01, "points": { "b": b4, "c": c4 } }).to_string(),
-    );
     let pole = temp("pole.svg", &svg("p_a", "μ = 0.1", &[("b", 100.0, 110.0)]));
     let good = temp(
         "good.json",
@@ -552,10 +585,6 @@ fn the_command_refuses_bad_answers_with_status_2() {
             "/points/b/0: non-finite number NaN",
         ),
         (
-            vec!["check", &scene, &other],
-            "/position: the answer fits position 4, not position 1 it states",
-        ),
-        (
             vec!["check", &scene, &pole, "--plan", "velocity"],
             "--plan: the plan asked is the velocity plan, but the drawing's pole is labelled \"p_a\"",
         ),
@@ -568,7 +597,19 @@ fn the_command_refuses_bad_answers_with_status_2() {
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(expect), "{args:?}: {err}");
     }
-    // The same points at their position are judged.
+    // The same points at their position are judged; at another position
+    // (the answer states none: the first, position 0) graded wrong, with
+    // the note naming the position they fit.
     let (code, err) = run(&["check", &scene, &good, "--position", "4"]);
     assert_eq!(code, 0, "{err}");
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["check", &scene, &good])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("Note: your points fit position 4, not position 0 that the answer states"),
+        "{text}"
+    );
 }

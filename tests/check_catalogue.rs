@@ -315,7 +315,13 @@ fn answer(
     }
     Answer {
         plan: kind,
-        position,
+        // The `position`-th of the positions solved (some are a few picked
+        // out of a `count` sweep): counted from 1 whatever the scene's
+        // numbering, as `"positions_from": 1` reads it.
+        position: mechplan::check::position::StatedPosition::numbered(
+            position,
+            mechplan::scene::Numbering::FROM_1,
+        ),
         mu,
         delta: 0.5,
         items,

@@ -5,6 +5,7 @@
 //! answers are refused naming the field, with the command's statuses.
 
 use mechplan::check::forces::{ForceAnswer, check, from_json};
+use mechplan::check::position::StatedPosition;
 use mechplan::kinetostatics::force_plan::{self, ForceStep, Which};
 use mechplan::kinetostatics::loads::{self, Load, Origin};
 use mechplan::scene::Scene;
@@ -55,7 +56,7 @@ fn answer_from(an: &Analysis, s: &Solved, k: usize, mu: f64, loads: &[Load]) -> 
         }
     }
     ForceAnswer {
-        position: k + 1,
+        position: StatedPosition::new(an.numbering.number(k)),
         links: vec!["4".into(), "5".into()],
         mu,
         delta: 0.5,
@@ -219,7 +220,7 @@ fn the_command_answers_with_its_statuses() {
             .iter()
             .map(|(_, k, v)| (k.clone(), (*v).into()))
             .collect();
-        serde_json::json!({ "plan": "force", "position": a.position, "links": a.links, "mu": a.mu, "segments": seg })
+        serde_json::json!({ "plan": "force", "position": a.position.number, "links": a.links, "mu": a.mu, "segments": seg })
             .to_string()
     };
     let run = |text: String, extra: &[&str]| {
@@ -390,7 +391,9 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\">\n<g transform=\"translate(5 3)\">\n{body}<text x=\"10\" y=\"200\">μ_F = 2 N/mm</text>\n</g></svg>\n"
         )
     };
-    let ans = mechplan::check::forces::from_svg(&svg(None), None, 0.5, 1).unwrap();
+    // Drawn at the first position: an answer that states none is of it.
+    let first = StatedPosition::default();
+    let ans = mechplan::check::forces::from_svg(&svg(None), None, 0.5, first).unwrap();
     assert!(ans.segments.len() >= 5, "{:?}", ans.segments);
     let r = check(&an, &solved, &ans).unwrap();
     assert_eq!(
@@ -399,7 +402,7 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
         "{}",
         mechplan::presentation::verdict::force_to_text(&r)
     );
-    let ans = mechplan::check::forces::from_svg(&svg(Some("R_05")), None, 0.5, 1).unwrap();
+    let ans = mechplan::check::forces::from_svg(&svg(Some("R_05")), None, 0.5, first).unwrap();
     let r = check(&an, &solved, &ans).unwrap();
     assert!(
         r.wrong() >= 1,

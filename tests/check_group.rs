@@ -90,8 +90,9 @@ struct Built {
     position: usize,
     /// A piece of the mistakes' column ("" for none expected).
     mistake: &'static str,
-    /// A piece of the message (unreadable answers).
-    message: &'static str,
+    /// A piece of the message (unreadable answers; the note of one whose
+    /// points fit elsewhere).
+    message: String,
 }
 
 impl Built {
@@ -101,7 +102,7 @@ impl Built {
             plan,
             position,
             mistake: "",
-            message: "",
+            message: String::new(),
         }
     }
     fn kinematic(&self) -> bool {
@@ -109,10 +110,15 @@ impl Built {
     }
 }
 
-/// A plan's points `names` at position `k` (from 1), as a student reads
-/// them off: each coordinate within 0.1 mm.
+/// A plan's points `names` at position `k` (its number: the scene counts
+/// its 12 positions from 0, as its sheets do), as a student reads them
+/// off: each coordinate within 0.1 mm.
 fn points(doc: &Value, kind: &str, k: usize, names: &[&str], noise: &mut Noise) -> Value {
-    let plan = &doc["positions"][k - 1]["plans"][kind];
+    let plan = &doc["positions"][k]["plans"][kind];
+    assert_eq!(
+        doc["positions"][k]["position"], k,
+        "the result file's number"
+    );
     let mut pts = serde_json::Map::new();
     for n in names {
         let p = &plan["points"][*n];
@@ -122,15 +128,12 @@ fn points(doc: &Value, kind: &str, k: usize, names: &[&str], noise: &mut Noise) 
     json!({ "plan": kind, "position": k, "mu": plan["mu"], "points": pts })
 }
 
-/// The reactions of group (4, 5) at position `k` (from 1): R_34 at C,
-/// R_54 at D, the guide's R_05 on the slider, in N.
+/// The reactions of group (4, 5) at position `k` (its number, from 0):
+/// R_34 at C, R_54 at D, the guide's R_05 on the slider, in N.
 fn reactions(doc: &Value, k: usize) -> BTreeMap<&'static str, f64> {
     let mut out = BTreeMap::new();
     let norm = |v: &Value| v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap());
-    for pair in doc["positions"][k - 1]["dynamics"]["pairs"]
-        .as_array()
-        .unwrap()
-    {
+    for pair in doc["positions"][k]["dynamics"]["pairs"].as_array().unwrap() {
         if pair["slider"] == "5" {
             out.insert("R_05", norm(&pair["N"]));
         } else if pair["point"] == "C" {
@@ -154,7 +157,7 @@ fn force(doc: &Value, k: usize, mu: f64, factor: f64) -> Value {
     json!({ "plan": "force", "position": k, "links": ["4", "5"], "mu": mu, "values": values })
 }
 
-/// The velocity plan at position 1 drawn in a vector editor: the pole and
+/// The velocity plan at position 0 drawn in a vector editor: the pole and
 /// the ends of p_v a and p_v s2, labelled, with μ written on the sheet.
 fn drawn_svg(doc: &Value) -> String {
     let plan = &doc["positions"][0]["plans"]["velocity"];
@@ -188,7 +191,7 @@ fn drawn_svg(doc: &Value) -> String {
 
 /// The file name with `&`, quotes and angle brackets that the summary
 /// must escape.
-const ODD: &str = "right-v04 \"smith\" & <jones>.json";
+const ODD: &str = "right-v03 \"smith\" & <jones>.json";
 
 /// Write the 30 answers into `dir` (and two files the group must not
 /// take); what each was built to be, by file name.
@@ -203,11 +206,12 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
     let all = ["a", "b", "c", "d", "s2", "s3", "s4"];
     let abcd = ["a", "b", "c", "d"];
     // Right: velocity plans where the construction judges every point,
-    // the acceleration plan at position 3, each with all its points and
-    // with a, b, c, d only; and the SVG drawing.
-    for k in [1, 4, 5, 7, 8, 10] {
+    // the acceleration plan at position 2, each with all its points and
+    // with a, b, c, d only; and the SVG drawing (of position 0, the first:
+    // it states none).
+    for k in [0, 3, 4, 6, 7, 9] {
         for (tag, names) in [("all", &all[..]), ("abcd", &abcd[..])] {
-            let name = if k == 4 && tag == "abcd" {
+            let name = if k == 3 && tag == "abcd" {
                 ODD.to_string()
             } else {
                 format!("right-v{k:02}-{tag}.json")
@@ -217,21 +221,21 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
         }
     }
     for (tag, names) in [("all", &all[..]), ("abcd", &abcd[..])] {
-        let mut a = points(&doc, "acceleration", 3, names, &mut noise);
+        let mut a = points(&doc, "acceleration", 2, names, &mut noise);
         a["velocity"] = json!({ "mu": doc["positions"][2]["plans"]["velocity"]["mu"] });
         put(
-            &format!("right-a03-{tag}.json"),
+            &format!("right-a02-{tag}.json"),
             a.to_string(),
-            Built::new("right", "acceleration", 3),
+            Built::new("right", "acceleration", 2),
         );
     }
     put(
         "right-drawn.svg",
         drawn_svg(&doc),
-        Built::new("right", "velocity", 1),
+        Built::new("right", "velocity", 0),
     );
     // Wrong: the slider's point d moved 15 mm along the guide …
-    for k in [2, 5, 8, 11] {
+    for k in [1, 4, 7, 10] {
         let mut a = points(&doc, "velocity", k, &abcd, &mut noise);
         let x = a["points"]["d"][0].as_f64().unwrap();
         a["points"]["d"][0] = json!(x + 15.0);
@@ -243,7 +247,7 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
     }
     // … and the whole plan turned through the pole: the crank's velocity
     // laid off against ω1, a mistake the diagnosis names with its step.
-    for k in [4, 9] {
+    for k in [3, 8] {
         let mut a = points(&doc, "velocity", k, &abcd, &mut noise);
         for n in abcd {
             let p = a["points"][n].clone();
@@ -251,11 +255,12 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
         }
         let mut b = Built::new("wrong", "velocity", k);
         b.mistake = "against the sense of ω1";
+        b.message = format!("fit position {k} with the crank turned the other way (ω1 reversed)");
         put(&format!("wrong-reversed-v{k:02}.json"), a.to_string(), b);
     }
     // Force plans: right at 2 N/mm, R_34 half as long again (wrong), and
     // drawn at 200 N/mm, too small to tell (cannot be judged).
-    for k in [2, 6] {
+    for k in [1, 5] {
         put(
             &format!("force-right-{k:02}.json"),
             force(&doc, k, 2.0, 1.0).to_string(),
@@ -263,11 +268,11 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
         );
     }
     put(
-        "force-wrong-04.json",
-        force(&doc, 4, 2.0, 1.5).to_string(),
-        Built::new("wrong", "force", 4),
+        "force-wrong-03.json",
+        force(&doc, 3, 2.0, 1.5).to_string(),
+        Built::new("wrong", "force", 3),
     );
-    for k in [6, 9] {
+    for k in [5, 8] {
         put(
             &format!("force-small-{k:02}.json"),
             force(&doc, k, 200.0, 1.0).to_string(),
@@ -276,10 +281,10 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
     }
     // Acceleration plans where the true plan alone cannot tell the right
     // points from a mistake's; the steps judged from the student's own
-    // points can: at position 5 a tangential component drawn ∥ would put
+    // points can: at position 4 a tangential component drawn ∥ would put
     // b within its tolerance too, but b sits on the right construction,
     // where the mistaken one would put it far less likely.
-    for (k, names, grade) in [(5, &all[..], "right"), (11, &abcd[..], "right")] {
+    for (k, names, grade) in [(4, &all[..], "right"), (10, &abcd[..], "right")] {
         put(
             &format!("undecided-a{k:02}.json"),
             points(&doc, "acceleration", k, names, &mut noise).to_string(),
@@ -288,17 +293,17 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
     }
     // Unreadable: broken JSON, and a letter the plan has not.
     let mut b = Built::new("unreadable", "", 0);
-    b.message = "malformed JSON";
+    b.message = "malformed JSON".into();
     put(
         "unreadable-broken.json",
         r#"{"plan": "velocity", "mu": 0.01, "points": {"#.into(),
         b,
     );
     let mut b = Built::new("unreadable", "", 0);
-    b.message = "/points/q: unknown plan point \"q\"";
+    b.message = "/points/q: unknown plan point \"q\"".into();
     put(
         "unreadable-letter.json",
-        json!({ "plan": "velocity", "position": 4, "mu": 0.01, "points": { "q": [1, 2] } })
+        json!({ "plan": "velocity", "position": 3, "mu": 0.01, "points": { "q": [1, 2] } })
             .to_string(),
         b,
     );
@@ -383,13 +388,18 @@ fn a_folder_of_thirty_answers_is_graded_at_once() {
         assert_eq!(r["grade"], b.grade, "{f}: {r:?}");
         assert_eq!(r["plan"], b.plan, "{f}");
         if b.grade == "unreadable" {
-            assert!(r["message"].contains(b.message), "{f}: {r:?}");
+            assert!(r["message"].contains(&b.message), "{f}: {r:?}");
             for c in ["position", "mistakes", "right", "wrong", "undecided"] {
                 assert_eq!(r[c], "", "{f}: {c}");
             }
             continue;
         }
-        assert_eq!(r["message"], "", "{f}");
+        // A checked answer's message is the report's note, where its
+        // points fit elsewhere than stated.
+        match b.message.as_str() {
+            "" => assert_eq!(r["message"], "", "{f}"),
+            m => assert!(r["message"].contains(m), "{f}: {r:?}"),
+        }
         assert_eq!(r["position"], b.position.to_string(), "{f}");
         let n = |c: &str| r[c].parse::<usize>().unwrap();
         match b.grade {
@@ -429,7 +439,7 @@ fn a_folder_of_thirty_answers_is_graded_at_once() {
     assert_eq!(page.matches("href=").count(), kinematic.len());
     // Every text escaped, the scene named, the totals on top, nothing
     // fetched.
-    assert!(page.contains("right-v04 &quot;smith&quot; &amp; &lt;jones&gt;.json"));
+    assert!(page.contains("right-v03 &quot;smith&quot; &amp; &lt;jones&gt;.json"));
     assert!(!page.contains("<jones>"));
     assert!(page.contains("Scene: ") && page.contains("six_link_fig2_10.json"));
     assert!(page.contains("<b>19</b>right") && page.contains("<b>2</b>unreadable"));
@@ -462,9 +472,9 @@ fn files_given_are_a_group_with_the_worst_status() {
         args.extend(extra);
         run(&args)
     };
-    let right = "right-v05-all.json";
-    let wrong = "wrong-moved-v08.json";
-    let undecided = "force-small-09.json";
+    let right = "right-v04-all.json";
+    let wrong = "wrong-moved-v07.json";
+    let undecided = "force-small-08.json";
     let (code, stdout, err) = group(&[right, wrong, undecided], &[]);
     assert_eq!(code, 1, "{stdout}{err}");
     let rows = gradebook(&Path::new(&out).join("gradebook.csv"));
@@ -503,7 +513,7 @@ fn refusals_and_the_default_output() {
     let doc = solved();
     let mut noise = Noise(7);
     for p in [&a, &b] {
-        let ans = points(&doc, "velocity", 4, &["a", "b", "c", "d"], &mut noise);
+        let ans = points(&doc, "velocity", 3, &["a", "b", "c", "d"], &mut noise);
         std::fs::write(p, ans.to_string()).unwrap();
     }
     let (a, b, ad) = (
@@ -516,12 +526,40 @@ fn refusals_and_the_default_output() {
     let (code, _, err) = run(&["check", SCENE, a, b, "-o", o, "--svg", "x.svg"]);
     assert_eq!(code, 2);
     assert!(err.contains("--svg"), "{err}");
-    let (code, _, err) = run(&["check", SCENE, ad, "-o", o, "--position", "13"]);
+    let (code, _, err) = run(&["check", SCENE, ad, "-o", o, "--position", "12"]);
     assert_eq!(code, 2);
     assert!(
-        err.contains("--position") && err.contains("1 to 12"),
+        err.contains("--position") && err.contains("from 0 to 11"),
         "{err}"
     );
+    // In the older numbering (the answers state theirs: position 3 of
+    // the scene's numbering), position 12 is the last one.
+    let (code, out_text, err) = run(&[
+        "check",
+        SCENE,
+        ad,
+        "-o",
+        o,
+        "--position",
+        "12",
+        "--positions-from",
+        "1",
+    ]);
+    assert_eq!(code, 1, "{out_text}{err}");
+    let rows = gradebook(&out.join("gradebook.csv"));
+    assert!(rows.iter().all(|r| r["position"] == "12"), "{rows:?}");
+    // Drawn at the 4th position, graded at the 12th: each row's note names
+    // the 4th in the same numbering.
+    assert!(
+        rows.iter()
+            .all(|r| r["grade"] == "wrong"
+                && r["message"].contains("fit position 4, not position 12")),
+        "{rows:?}"
+    );
+    let (code, _, err) = run(&["check", SCENE, ad, "-o", o, "--positions-from", "2"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--positions-from"), "{err}");
+    std::fs::remove_dir_all(&out).unwrap();
     let empty = dir.join("empty");
     std::fs::create_dir_all(&empty).unwrap();
     let (code, _, err) = run(&["check", SCENE, empty.to_str().unwrap(), "-o", o]);
@@ -574,11 +612,11 @@ fn a_value_written_wrong_is_named_in_the_gradebook() {
     let mut noise = Noise(11);
     let abcd = ["a", "b", "c", "d"];
     let v = |k: usize, p: &str| {
-        let v = &doc["positions"][k - 1]["points"][p]["v"];
+        let v = &doc["positions"][k]["points"][p]["v"];
         v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap())
     };
     let eps = |k: usize, l: &str| {
-        doc["positions"][k - 1]["links"][l]["epsilon"]
+        doc["positions"][k]["links"][l]["epsilon"]
             .as_f64()
             .unwrap()
     };
@@ -594,7 +632,7 @@ fn a_value_written_wrong_is_named_in_the_gradebook() {
         v(3, "B"),
     ));
     let mut a = points(&doc, "acceleration", 3, &abcd, &mut noise);
-    a["velocity"] = json!({ "mu": doc["positions"][2]["plans"]["velocity"]["mu"] });
+    a["velocity"] = json!({ "mu": doc["positions"][3]["plans"]["velocity"]["mu"] });
     a["values"] = json!({ "eps3": eps(3, "3") + 15.0 });
     cases.push((
         "eps-a03.json",
@@ -604,7 +642,7 @@ fn a_value_written_wrong_is_named_in_the_gradebook() {
         eps(3, "3"),
     ));
     let mut a = points(&doc, "velocity", 7, &abcd, &mut noise);
-    let b = &doc["positions"][6]["plans"]["velocity"]["points"]["b"];
+    let b = &doc["positions"][7]["plans"]["velocity"]["points"]["b"];
     let pb = b[0].as_f64().unwrap().hypot(b[1].as_f64().unwrap());
     a["segments"] = json!({ "p_v b": 1.2 * pb });
     let seg = ["segment p_vb", "відрізок p_vb"];

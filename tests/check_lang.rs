@@ -4,9 +4,10 @@
 //! Ukrainian or Russian, its numbers with a decimal comma; `--format json`
 //! keeps its keys, its judgements and its numbers machine-readable, only
 //! its sentences follow the language. The same wrong answer throughout:
-//! the six-link's velocity plan at position 1 turned through the pole
-//! (the crank's velocity laid off against ω1), its points taken from
-//! `solve --format json`, as tests/check_group.rs builds it.
+//! the six-link's velocity plan at position 0 turned through the pole
+//! (the crank's velocity laid off against ω1, so that the report notes
+//! that the points fit position 0 with ω1 reversed), its points taken
+//! from `solve --format json`, as tests/check_group.rs builds it.
 
 use mechplan::{CheckRequest, Lang, Study};
 use serde_json::{Value, json};
@@ -44,8 +45,9 @@ fn path(p: &Path) -> String {
     p.display().to_string()
 }
 
-/// The velocity plan at position 1 with a, b, c, d turned through the
-/// pole: the crank's velocity reversed, a mistake named at step 3.
+/// The velocity plan at position 0 (the first: the scene counts from 0, as
+/// its sheets do) with a, b, c, d turned through the pole: the crank's
+/// velocity reversed, a mistake named at step 3.
 fn reversed() -> Value {
     let (code, out, err) = run(&["solve", SCENE, "--format", "json"]);
     assert_eq!(code, 0, "{err}");
@@ -57,7 +59,8 @@ fn reversed() -> Value {
         let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
         points.insert(n.into(), json!([-x, -y]));
     }
-    json!({ "plan": "velocity", "position": 1, "mu": plan["mu"], "points": points })
+    assert_eq!(doc["positions"][0]["position"], 0);
+    json!({ "plan": "velocity", "position": 0, "mu": plan["mu"], "points": points })
 }
 
 /// The scene with `want.lang` set to `lang` (`None`: as it is).
@@ -84,12 +87,14 @@ fn decimal_points(text: &str) -> Vec<String> {
 }
 
 /// What the report must say in each language: the grade line's start,
-/// the mistake, the quoted step's start, a word of the table, English
-/// words that must not appear.
+/// the mistake, the note under it (the points fit with ω1 reversed), the
+/// quoted step's start, a word of the table, English words that must not
+/// appear.
 struct Words {
     lang: &'static str,
     grade: &'static str,
     mistake: &'static str,
+    note: &'static str,
     step: &'static str,
     table: &'static [&'static str],
 }
@@ -98,9 +103,10 @@ const UK: Words = Words {
     lang: "uk",
     grade: "Оцінка: НЕВІРНО на кроці 3.",
     mistake: "Швидкість кривошипа відкладено проти напрямку ω1.",
+    note: "Примітка: ваші точки відповідають положенню 0 з кривошипом, що обертається в інший бік (ω1 навпаки)",
     step: "Від p_v відкладаємо p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
-        "Перевірка плану швидкостей, положення 1",
+        "Перевірка плану швидкостей, положення 0",
         "δ = 0,5000 мм",
         "Крок за кроком",
         "Помилки:",
@@ -117,9 +123,10 @@ const RU: Words = Words {
     lang: "ru",
     grade: "Оценка: НЕВЕРНО на шаге 3.",
     mistake: "Скорость кривошипа отложена против направления ω1.",
+    note: "Примечание: ваши точки соответствуют положению 0 при кривошипе, вращающемся в другую сторону (ω1 наоборот)",
     step: "От p_v откладываем p_va = ω1·l_O1A/μ_v = 1 / 0,004 = 250 мм",
     table: &[
-        "Проверка плана скоростей, положение 1",
+        "Проверка плана скоростей, положение 0",
         "δ = 0,5000 мм",
         "Шаг за шагом",
         "Ошибки:",
@@ -137,6 +144,7 @@ fn speaks(w: &Words, out: &str) {
     let lines: Vec<&str> = out.lines().collect();
     assert!(lines[1].starts_with(w.grade), "{}: {out}", w.lang);
     assert!(lines[1].contains(w.mistake), "{}: {out}", w.lang);
+    assert!(lines[2].starts_with(w.note), "{}: {out}", w.lang);
     let quoted = lines.iter().filter(|l| l.contains(w.step)).count();
     // The mistake's step, and the wrong item's step.
     assert_eq!(quoted, 2, "{}: {out}", w.lang);
@@ -303,7 +311,7 @@ fn the_library_takes_the_language_too() {
     speaks(&RU, &checked.to_text());
     let overlay = checked.overlay().unwrap();
     assert!(
-        overlay.contains("Проверка плана скоростей, положение 1 — верных 3 из 4"),
+        overlay.contains("Проверка плана скоростей, положение 0 — верных 3 из 4"),
         "{overlay}"
     );
     let english = Study::from_json(&scene_text(None)).unwrap();
@@ -340,7 +348,7 @@ fn a_force_plans_report_in_every_language() {
         }
     }
     let answer =
-        json!({ "plan": "force", "position": 2, "links": ["4", "5"], "mu": 2.0, "values": values });
+        json!({ "plan": "force", "position": 1, "links": ["4", "5"], "mu": 2.0, "values": values });
     let file = dir.join("force.json");
     std::fs::write(&file, answer.to_string()).unwrap();
     for (lang, heading, wrong) in [

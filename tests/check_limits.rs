@@ -152,7 +152,9 @@ fn a_large_svg_answer_is_read_in_linear_time() {
 #[test]
 fn position_outside_the_scene_is_bad_input() {
     let scene = six_link();
-    // The six-link fixture has 12 positions.
+    // The six-link fixture has 12 positions, counted from 0 as its sheets
+    // count them; `--positions-from 1` reads them from 1, as mechplan
+    // numbered them before.
     let svg = temp("plan.svg", &plan_svg(1, 0));
     let json = temp(
         "plan.json",
@@ -160,19 +162,33 @@ fn position_outside_the_scene_is_bad_input() {
     );
     for answer in [&svg, &json] {
         let a = answer.to_str().unwrap();
-        for p in ["0", "13"] {
-            let (o, _) = run(&["check", &scene, a, "--position", p]);
+        for (p, from, range) in [
+            ("12", None, "from 0 to 11"),
+            ("13", None, "from 0 to 11"),
+            ("0", Some("1"), "from 1 to 12"),
+            ("13", Some("1"), "from 1 to 12"),
+        ] {
+            let mut args = vec!["check", &scene, a, "--position", p];
+            args.extend(from.iter().flat_map(|f| ["--positions-from", f]));
+            let (o, _) = run(&args);
             assert_eq!(o.status.code(), Some(2), "{a} {p}: {}", stderr(&o));
             let err = stderr(&o);
             assert!(
                 err.contains("--position")
                     && err.contains(&format!("position {p} "))
-                    && err.contains("from 1 to 12"),
-                "{a} {p}: {err}"
+                    && err.contains(range),
+                "{a} {p} {from:?}: {err}"
             );
         }
-        for p in ["1", "12"] {
-            let (o, _) = run(&["check", &scene, a, "--position", p]);
+        for (p, from) in [
+            ("0", None),
+            ("11", None),
+            ("1", Some("1")),
+            ("12", Some("1")),
+        ] {
+            let mut args = vec!["check", &scene, a, "--position", p];
+            args.extend(from.iter().flat_map(|f| ["--positions-from", f]));
+            let (o, _) = run(&args);
             assert!(
                 matches!(o.status.code(), Some(0 | 1)),
                 "{a} {p}: {}",
@@ -184,20 +200,20 @@ fn position_outside_the_scene_is_bad_input() {
     // The answer file's own position, outside the scene's.
     let far = temp(
         "far.json",
-        r#"{ "plan": "velocity", "position": 13, "mu": 0.01, "points": { "b": [40, 20] } }"#,
+        r#"{ "plan": "velocity", "position": 12, "mu": 0.01, "points": { "b": [40, 20] } }"#,
     );
     let (o, _) = run(&["check", &scene, far.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(
-        stderr(&o).contains("/position") && stderr(&o).contains("from 1 to 12"),
+        stderr(&o).contains("/position") && stderr(&o).contains("from 0 to 11"),
         "{}",
         stderr(&o)
     );
-    for p in ["0", "13"] {
+    for p in ["12", "13"] {
         let (o, _) = run(&["centres", &scene, "--position", p]);
         assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
         assert!(
-            stderr(&o).contains("--position") && stderr(&o).contains("from 1 to 12"),
+            stderr(&o).contains("--position") && stderr(&o).contains("from 0 to 11"),
             "{}",
             stderr(&o)
         );

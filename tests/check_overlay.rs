@@ -75,7 +75,7 @@ fn answer(doc: &Value, kind: &str, k: usize, edit: impl Fn(&str, [f64; 2]) -> [f
         let [x, y] = edit(n, at);
         pts.insert(n.clone(), json!([x, y]));
     }
-    json!({ "plan": kind, "position": k, "mu": plan["mu"], "points": pts })
+    json!({ "plan": kind, "position": k, "positions_from": 1, "mu": plan["mu"], "points": pts })
 }
 
 /// The worked example's answer, read from docs/check.md.

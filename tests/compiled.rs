@@ -165,9 +165,10 @@ fn compiled_route_gives_the_interpreted_numbers_to_the_bit() {
     assert!(files >= 70 && positions > 20_000, "{files} {positions}");
 }
 
-/// A position's result without its wall times (`crosscheck.time_s`).
-fn untimed(an: &Analysis, s: &mechplan::Solved) -> serde_json::Value {
-    let mut v = mechplan::report::position_json(an, s);
+/// The result of position `k` (from 0) without its wall times
+/// (`crosscheck.time_s`).
+fn untimed(an: &Analysis, k: usize, s: &mechplan::Solved) -> serde_json::Value {
+    let mut v = mechplan::report::position_json(an, k, s);
     if let Some(c) = v.get_mut("crosscheck").and_then(|c| c.as_object_mut()) {
         c.remove("time_s");
     }
@@ -186,10 +187,10 @@ fn same_run(name: &str, an: &mut Analysis) -> usize {
             assert_eq!(a.len(), b.len(), "{name}");
             for (k, (a, b)) in a.iter().zip(&b).enumerate() {
                 assert_eq!(
-                    untimed(an, a).to_string(),
-                    untimed(an, b).to_string(),
+                    untimed(an, k, a).to_string(),
+                    untimed(an, k, b).to_string(),
                     "{name}, position {}",
-                    k + 1
+                    an.numbering.number(k)
                 );
             }
             a.len()

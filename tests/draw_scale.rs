@@ -215,8 +215,8 @@ fn a_scale_no_sheet_can_hold_is_refused_at_once() {
 
 #[test]
 fn a_plan_scale_that_overflows_one_position_is_refused_naming_it() {
-    // At μ_v = 0.01 (m/s)/mm the six-link's velocity plan at position 9
-    // is 184.6 mm tall, more than A4's 178 mm field: once drawn off the
+    // At μ_v = 0.01 (m/s)/mm the six-link's velocity plan at position 8
+    // (its sheets count from 0) is 184.6 mm tall, more than A4's 178 mm field: once drawn off the
     // sheet without a word, now refused with the scale that fits all
     // twelve positions, at which it is drawn.
     let scene = scene_with_scales("v-over", serde_json::json!({ "mu_v": 0.01 }));
@@ -226,7 +226,7 @@ fn a_plan_scale_that_overflows_one_position_is_refused_naming_it() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     for part in [
         "/want/scales/mu_v",
-        "136.7 mm × 184.6 mm at position 9",
+        "136.7 mm × 184.6 mm at position 8",
         "(260.0 mm × 178.0 mm)",
         "fits every position is 0.02 (m/s)/mm",
     ] {
@@ -236,7 +236,7 @@ fn a_plan_scale_that_overflows_one_position_is_refused_naming_it() {
     let out = dir("v-fits-out");
     let o = run(&["draw", &scene, "-o", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
-    for k in 1..=12 {
+    for k in 0..12 {
         assert_eq!(
             manifest_scale(&out, &format!("velocity_{k}.svg"), "mu_v"),
             0.02

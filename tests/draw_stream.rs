@@ -116,8 +116,9 @@ fn one_positions_sheets_are_those_of_the_whole_set() {
     };
     let o = draw(&full, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    // Positions 4 and 9 alone: the same sheets byte for byte (the scales
-    // of the whole set, the numbers in it), nothing else.
+    // Positions 4 and 9 alone (the numbers the sheets show: a count sweep
+    // from 0): the same sheets byte for byte (the scales of the whole set,
+    // the numbers in it), nothing else.
     let some = dir("one-some");
     let o = draw(&some, &["--position", "4,9"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -153,14 +154,48 @@ fn one_positions_sheets_are_those_of_the_whole_set() {
         serde_json::from_str(&std::fs::read_to_string(full.join("sheets.json")).unwrap()).unwrap();
     assert_eq!(manifest["sheets"].as_array().unwrap().len(), 37);
     assert_eq!(std::fs::read_dir(&full).unwrap().count(), 38);
-    // A position the scene has not: refused, naming it.
-    let o = draw(&dir("one-bad"), &["--position", "13"]);
-    assert_eq!(o.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.contains("13 is not a position of this scene (it has 12"),
-        "{err}"
+    // Each sheet of one position names it as its file does: in its
+    // heading, and in the manifest.
+    for n in names.iter().filter(|n| n.ends_with(".svg")) {
+        let k = &n[n.find('_').unwrap() + 1..n.len() - 4];
+        let svg = std::fs::read_to_string(some.join(n)).unwrap();
+        assert!(svg.contains(&format!("position {k},")), "{n}");
+    }
+    let listed: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(some.join("sheets.json")).unwrap()).unwrap();
+    for s in listed["sheets"].as_array().unwrap() {
+        let file = s["file"].as_str().unwrap();
+        let k: u64 = file[file.find('_').unwrap() + 1..file.len() - 4]
+            .parse()
+            .unwrap();
+        assert_eq!(s["position"], k, "{file}");
+    }
+    // In the older numbering, the same sheets are the 5th and the 10th,
+    // named and headed so.
+    let older = dir("one-older");
+    let o = draw(&older, &["--position", "5,10", "--positions-from", "1"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(older.join("velocity_5.svg")).unwrap();
+    assert!(svg.contains("position 5,"), "velocity_5.svg");
+    assert_eq!(
+        svg.replace("position 5,", "position 4,"),
+        std::fs::read_to_string(some.join("velocity_4.svg")).unwrap()
     );
+    // A position the scene has not: refused, naming the range.
+    for (p, from, range) in [("12", "0", "from 0 to 11"), ("0", "1", "from 1 to 12")] {
+        let o = draw(
+            &dir("one-bad"),
+            &["--position", p, "--positions-from", from],
+        );
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains(&format!(
+                "--position: position {p} is not one of the scene's positions: they are numbered {range}"
+            )),
+            "{err}"
+        );
+    }
 }
 
 #[test]

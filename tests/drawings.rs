@@ -47,11 +47,16 @@ fn golden(path: &str, got: &str) {
 #[test]
 fn golden_svg_sheets() {
     for name in FIXTURES {
-        let (_, _, sh) = fixture_sheets(name);
+        let (an, _, sh) = fixture_sheets(name);
+        // The first position's, by its number (a count sweep's position 0).
+        let first = an.numbering.number(0);
         for s in sh
             .iter()
-            .filter(|s| s.name.ends_with("_1") || s.name == "positions")
+            .filter(|s| s.position == Some(first) || s.name == "positions")
         {
+            if s.name != "positions" {
+                assert!(s.name.ends_with(&format!("_{first}")), "{}", s.name);
+            }
             golden(&format!("svg/{name}/{}.svg", s.name), &s.svg);
         }
     }
@@ -254,8 +259,10 @@ fn rendered_sheets_pass_the_layout_checks() {
                 .strip_prefix("velocity_")
                 .or(s.name.strip_prefix("acceleration_"))
             {
-                let pos: usize = k.parse().unwrap();
-                let plans = solved[pos - 1].plans.as_ref().unwrap();
+                let number: usize = k.parse().unwrap();
+                assert_eq!(s.position, Some(number), "{}", s.name);
+                let pos = an.numbering.index(number, solved.len()).unwrap();
+                let plans = solved[pos].plans.as_ref().unwrap();
                 let plan = if s.name.starts_with("velocity") {
                     &plans.velocity
                 } else {

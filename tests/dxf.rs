@@ -99,7 +99,7 @@ fn dxf_sheets_match_their_svg_twins() {
 }
 
 /// The example of docs/sheets.md ("An example: a vector of a plan"): the
-/// four-bar's velocity plan at position 2 holds those four entities as
+/// four-bar's velocity plan at position 1 holds those four entities as
 /// the page shows them, but for their handles (5) and owners (330).
 #[test]
 fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
@@ -112,11 +112,11 @@ fn the_documented_dxf_sheet_excerpt_is_what_draw_writes() {
             "--format",
             "dxf",
             "--position",
-            "2",
+            "1",
         ],
         &out,
     );
-    let file = std::fs::read_to_string(out.join("velocity_2.dxf")).unwrap();
+    let file = std::fs::read_to_string(out.join("velocity_1.dxf")).unwrap();
     // Entities as lists of (code, value), handles and owners left out.
     let entities = |text: &str| -> Vec<Vec<(i32, String)>> {
         let mut all: Vec<Vec<(i32, String)>> = Vec::new();
@@ -340,7 +340,8 @@ fn joints_and_sliders_are_blocks() {
     draw(&[fixture], &svg);
     draw(&[fixture, "--format", "dxf"], &dxf);
     let mut joints = 0;
-    for k in 1..=12 {
+    // The six-link's twelve positions, numbered from 0 as its sheets are.
+    for k in 0..12 {
         let s = std::fs::read_to_string(svg.join(format!("mechanism_{k}.svg"))).unwrap();
         let d = std::fs::read_to_string(dxf.join(format!("mechanism_{k}.dxf"))).unwrap();
         let doc = roxmltree::Document::parse(&s).unwrap();

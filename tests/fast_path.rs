@@ -81,12 +81,12 @@ fn the_fast_path_reports_route_a_checked_and_its_data_sensitivity() {
         assert_eq!(a.len(), b.len(), "{name}");
         let (mut linear, mut solved) = (0, 0);
         for (k, (a, b)) in a.iter().zip(&b).enumerate() {
-            let at = format!("{name}, position {}", k + 1);
+            let at = format!("{name}, position {}", full.numbering.number(k));
             assert!(b.plans.is_none(), "{at}");
             // The same numbers: route (a)'s, on both paths.
             assert_eq!(
-                numbers(report::position_json(&full, a)),
-                numbers(report::position_json(&fast, b)),
+                numbers(report::position_json(&full, k, a)),
+                numbers(report::position_json(&fast, k, b)),
                 "{at}"
             );
             let (ca, cb) = (a.check.as_ref().unwrap(), b.check.as_ref().unwrap());

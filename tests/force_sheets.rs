@@ -188,9 +188,11 @@ fn force_sheets_pass_the_layout_checks() {
 #[test]
 fn drawn_polygons_are_the_force_plans() {
     for name in DYNAMICS {
-        let (_, solved, sh) = solve(name, Lang::En);
+        let (an, solved, sh) = solve(name, Lang::En);
         for (k, s) in solved.iter().enumerate() {
-            let where_ = format!("{name} position {}", k + 1);
+            // Its number as the sheet and its file name it.
+            let number = an.numbering.number(k);
+            let where_ = format!("{name} position {number}");
             let plans = &s
                 .dynamics
                 .as_ref()
@@ -201,7 +203,7 @@ fn drawn_polygons_are_the_force_plans() {
                 .plans;
             let svg = &sh
                 .iter()
-                .find(|x| x.name == format!("forces_{}", k + 1))
+                .find(|x| x.name == format!("forces_{number}"))
                 .unwrap()
                 .svg;
             let lines: Vec<&str> = svg.lines().collect();
@@ -266,7 +268,7 @@ fn drawn_polygons_are_the_force_plans() {
 #[test]
 fn names_and_only_with_dynamics() {
     let (_, _, sh) = solve("six_link_fig2_10", Lang::Uk);
-    let s = sh.iter().find(|s| s.name == "forces_1").unwrap();
+    let s = sh.iter().find(|s| s.name == "forces_0").unwrap();
     assert!(s.title.starts_with("Силовий розрахунок"), "{}", s.title);
     for want in [
         ">M<tspan",
@@ -358,12 +360,22 @@ fn panel_sheets(name: &str, lang: Lang) -> (mechplan::Analysis, Vec<mechplan::So
     (an, solved, sh)
 }
 
-/// The position a sheet of [`panel_sheets`] draws (0-based).
+/// The position a sheet of [`panel_sheets`] draws (its index, from 0):
+/// the number the sheet states (its `position`, the number in its file's
+/// name), read in the scene's numbering.
 fn position_of(an: &mechplan::Analysis, solved: &[mechplan::Solved], s: &Sheet) -> usize {
+    let number = s.position.expect("a sheet of one position");
+    let k = an.numbering.index(number, solved.len()).unwrap();
     match s.name.strip_prefix("forces_") {
-        Some(k) => k.parse::<usize>().unwrap() - 1,
-        None => mechplan::drawing::chosen::position(an, solved),
+        Some(n) => assert_eq!(n.parse::<usize>().unwrap(), number, "{}", s.name),
+        None => assert_eq!(
+            k,
+            mechplan::drawing::chosen::position(an, solved),
+            "{}",
+            s.name
+        ),
     }
+    k
 }
 
 /// The two ends of a `<line>` (page mm).

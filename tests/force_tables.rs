@@ -25,7 +25,8 @@ fn run(v: &Value) -> mechplan::Result<Vec<Value>> {
     Ok(an
         .run()?
         .iter()
-        .map(|s| report::position_json(&an, s))
+        .enumerate()
+        .map(|(k, s)| report::position_json(&an, k, s))
         .collect())
 }
 

@@ -14,11 +14,18 @@ use mechplan::drawing::plan::{draw_steps, made_at};
 use mechplan::words::construction::{Lang, sentence};
 use std::collections::BTreeSet;
 
-fn fixture_handout(name: &str, lang: Lang) -> (Vec<mechplan::Solved>, String) {
+fn fixture_handout(name: &str, lang: Lang) -> (Vec<(usize, mechplan::Solved)>, String) {
     let scene = mechplan::Scene::from_json(&fixture(name).to_string()).unwrap();
     let (an, s) = solve(scene);
     let h = handout(&an, &s, lang);
-    (s, h)
+    // Each position with its number, as the handout shows it (a count
+    // sweep from 0, given input values from 1).
+    let numbered = s
+        .into_iter()
+        .enumerate()
+        .map(|(k, s)| (an.numbering.number(k), s))
+        .collect();
+    (numbered, h)
 }
 
 /// The text between `start` (inclusive) and the next `end` after it.
@@ -65,7 +72,7 @@ fn attr_values(html: &str, attr: &str) -> Vec<String> {
         .collect()
 }
 
-/// The figure of a plan: `pos-1-v`, `pos-3-a`.
+/// The figure of a plan: `pos-0-v`, `pos-3-a` (by the position's number).
 fn figure<'a>(h: &'a str, pos: usize, kind: &str) -> &'a str {
     between(h, &format!("id=\"pos-{pos}-{kind}\""), "</figure>")
         .unwrap_or_else(|| panic!("no figure pos-{pos}-{kind}"))
@@ -122,24 +129,21 @@ fn every_sentence_is_in_its_plan() {
     for name in ["six_link_fig2_10", "shaper_fig2_11"] {
         for lang in [Lang::En, Lang::Uk, Lang::Ru] {
             let (solved, h) = fixture_handout(name, lang);
-            for (k, s) in solved.iter().enumerate() {
+            for (k, s) in &solved {
                 for (kind, plan) in plans(s) {
-                    let fig = figure(&h, k + 1, kind);
+                    let fig = figure(&h, *k, kind);
                     assert_eq!(
                         attr_values(fig, "data-steps"),
                         vec![plan.steps.len().to_string()]
                     );
                     for i in 0..plan.steps.len() {
                         let li = between(fig, &format!("<li data-step=\"{}\">", i + 1), "</li>")
-                            .unwrap_or_else(|| {
-                                panic!("{name} pos {} {kind}: no step {}", k + 1, i + 1)
-                            });
+                            .unwrap_or_else(|| panic!("{name} pos {k} {kind}: no step {}", i + 1));
                         let want = sentence(plan, i, lang);
                         assert_eq!(
                             letters(&text(li)),
                             letters(&want),
-                            "{name} pos {} {kind} step {}",
-                            k + 1,
+                            "{name} pos {k} {kind} step {}",
                             i + 1
                         );
                         assert!(li.contains(&rich(&want)));
@@ -158,10 +162,10 @@ fn every_sentence_is_in_its_plan() {
 fn data_steps_cover_every_step() {
     for name in FIXTURES {
         let (solved, h) = fixture_handout(name, Lang::En);
-        for (k, s) in solved.iter().enumerate() {
+        for (k, s) in &solved {
             for (kind, plan) in plans(s) {
-                let at = format!("{name} pos {} {kind}", k + 1);
-                let fig = figure(&h, k + 1, kind);
+                let at = format!("{name} pos {k} {kind}");
+                let fig = figure(&h, *k, kind);
                 let n = plan.steps.len();
                 let all: BTreeSet<usize> = attr_values(fig, "data-step")
                     .iter()
@@ -300,7 +304,7 @@ fn a_dynamics_handout_has_the_force_analysis() {
         let (an, solved) = solve(scene);
         let h = handout(&an, &solved, lang);
         for (k, s) in solved.iter().enumerate() {
-            let pos = k + 1;
+            let pos = an.numbering.number(k);
             let at = format!("{name} {lang:?} position {pos}");
             let d = s.dynamics.as_ref().unwrap();
             let fp = d.force_plans.as_ref().unwrap();

@@ -54,10 +54,10 @@ bad() {
 }
 
 shots=(
-  "six_link_fig2_10 pos=2&step=9 velocity"
-  "six_link_fig2_10 pos=2&step=28 acceleration"
-  "shaper_fig2_11 pos=3&step=5 velocity"
-  "shaper_fig2_11 pos=3&step=27 acceleration"
+  "six_link_fig2_10 pos=1&step=9 velocity"
+  "six_link_fig2_10 pos=1&step=28 acceleration"
+  "shaper_fig2_11 pos=2&step=5 velocity"
+  "shaper_fig2_11 pos=2&step=27 acceleration"
 )
 
 for name in six_link_fig2_10 shaper_fig2_11 dynamics/six_link_fig2_10; do

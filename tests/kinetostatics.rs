@@ -31,7 +31,8 @@ fn positions(scene: &Value) -> Vec<Value> {
     an.run()
         .unwrap()
         .iter()
-        .map(|s| report::position_json(&an, s))
+        .enumerate()
+        .map(|(k, s)| report::position_json(&an, k, s))
         .collect()
 }
 

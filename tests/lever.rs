@@ -228,8 +228,8 @@ fn worked_example_digits() {
 fn result_file_carries_the_lever() {
     for name in ["worked_slider_crank", "arm_two_cylinders"] {
         let an = analysis(name);
-        for s in solved(&an) {
-            let p = mechplan::report::position_json(&an, &s);
+        for (k, s) in solved(&an).iter().enumerate() {
+            let p = mechplan::report::position_json(&an, k, s);
             let check = &p["dynamics"]["check"];
             let d = s.dynamics.as_ref().unwrap();
             let key = |i: usize| {

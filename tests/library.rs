@@ -109,8 +109,11 @@ fn points_and_links_read_by_name_agree_with_the_result_file() {
     let sol = study.solve().unwrap();
     let doc = sol.to_json();
     for (k, p) in sol.iter().enumerate() {
-        assert_eq!(p.number(), k + 1);
+        // A count sweep, numbered from 0 as its sheets and result file do.
+        assert_eq!(p.number(), k);
         let pos = &doc["positions"][k];
+        assert_eq!(pos["position"], json!(k));
+        assert_eq!(p.to_json()["position"], json!(k));
         let b = p.point("B").unwrap();
         let v = b.velocity().unwrap();
         assert_eq!(pos["points"]["B"]["v"], json!([v.x, v.y]));
@@ -180,12 +183,12 @@ fn sheets_as_svg_text_are_the_drawn_files() {
 fn an_answer_checked_as_data() {
     let study = Study::default_scene();
     let sol = study.solve().unwrap();
-    let p = sol.position(2).unwrap();
+    let p = sol.position(1).unwrap();
     let v = |name: &str| p.point(name).unwrap().velocity().unwrap();
     let answer = |vb: f64| {
         json!({
             "plan": "velocity",
-            "position": 2,
+            "position": 1,
             "mu": 0.01,
             "values": { "v_B": vb, "v_C": v("C").hypot() }
         })

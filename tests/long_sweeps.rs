@@ -60,13 +60,14 @@ fn streamed_text_is_the_document_byte_for_byte() {
     // run_each hands over what run returns, in order.
     let mut each = Vec::new();
     an.run_each(|s| {
-        each.push(without_times(report::position_json(&an, &s)));
+        each.push(without_times(report::position_json(&an, each.len(), &s)));
         Ok(())
     })
     .unwrap();
     let all: Vec<_> = solved
         .iter()
-        .map(|s| without_times(report::position_json(&an, s)))
+        .enumerate()
+        .map(|(k, s)| without_times(report::position_json(&an, k, s)))
         .collect();
     assert_eq!(each, all);
 }

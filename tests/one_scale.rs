@@ -88,7 +88,9 @@ fn check(scene: &str, lang: &str, name: &str) {
             .and_then(|s| s["scales"][key].as_f64())
     };
     let mut drawn = Vec::new();
-    for k in 1..=json["positions"].as_array().unwrap().len() {
+    // Each position's sheets, named by its number in the result file.
+    for pos in json["positions"].as_array().unwrap() {
+        let k = &pos["position"];
         drawn.push(('v', scale(format!("velocity_{k}.svg"), "mu_v").unwrap()));
         if let Some(a) = scale(format!("acceleration_{k}.svg"), "mu_a") {
             drawn.push(('a', a));

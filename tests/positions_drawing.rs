@@ -168,7 +168,7 @@ fn the_bold_position_is_not_a_dead_centre() {
         let bold = mechplan::drawing::chosen::position(study.analysis(), solved);
         let speed = |k: usize| {
             solution
-                .position(k + 1)
+                .position(study.numbering().number(k))
                 .unwrap()
                 .point(slider)
                 .unwrap()
@@ -177,15 +177,15 @@ fn the_bold_position_is_not_a_dead_centre() {
                 .hypot()
         };
         let top = (0..solved.len()).map(speed).fold(0.0, f64::max);
-        // Position 1 is the start of the working stroke: the slider stands.
+        // Position 0 is the start of the working stroke: the slider stands.
         assert!(
             speed(0) < 1e-9 * top,
-            "{name}: position 1 is not a dead centre"
+            "{name}: position 0 is not a dead centre"
         );
         assert!(
             speed(bold) > 0.3 * top,
             "{name}: bold position {} at {} of the top speed",
-            bold + 1,
+            bold,
             speed(bold) / top
         );
     }
@@ -205,10 +205,10 @@ fn labelled(svg: &str, prefix: &str) -> Vec<(String, String)> {
 
 /// The lecture numbers a `count` sweep 0 … 11 from the extreme position
 /// (Figs 2.1–2.3), and the diagrams' axis 0 … 12 beside it: the crank's
-/// marks, the slider's marks, every sheet's title, the course sheet's plan
-/// captions and the `solve --steps` text all write the same number for
-/// the same position, while file names keep counting from 1. A sweep of
-/// listed angles has no extreme to start from and is numbered from 1.
+/// marks (and their ids), the slider's marks, every sheet's title and file
+/// name, the course sheet's plan captions and the `solve --steps` text all
+/// write the same number for the same position. A sweep of listed angles
+/// has no extreme to start from and is numbered from 1.
 #[test]
 fn positions_are_numbered_as_the_lecture_numbers_them() {
     let exe = env!("CARGO_BIN_EXE_mechplan");
@@ -233,22 +233,22 @@ fn positions_are_numbered_as_the_lecture_numbers_them() {
     assert_eq!(crank.len(), 12, "{crank:?}");
     for (id, text) in &crank {
         let k: usize = id["pos-".len()..].parse().unwrap();
-        assert_eq!(text, &(k - 1).to_string(), "crank mark {id}");
+        assert_eq!(text, &k.to_string(), "crank mark {id}");
     }
     let slider = labelled(&positions, "slider-");
     assert!(!slider.is_empty(), "the slider's places are numbered");
     for (id, text) in &slider {
         let k: usize = id.rsplit('-').next().unwrap().parse().unwrap();
-        assert_eq!(text, &(k - 1).to_string(), "slider mark {id}");
+        assert_eq!(text, &k.to_string(), "slider mark {id}");
     }
-    for k in [1, 4, 12] {
+    for k in [0, 3, 11] {
         let svg = std::fs::read_to_string(dir.join(format!("velocity_{k}.svg"))).unwrap();
         assert!(
-            svg.contains(&format!("position {}, φ", k - 1)),
-            "velocity_{k}.svg is titled position {}",
-            k - 1
+            svg.contains(&format!("position {k}, φ")),
+            "velocity_{k}.svg is titled position {k}"
         );
     }
+    assert!(!dir.join("velocity_12.svg").exists());
     let course = std::fs::read_to_string(dir.join("course.svg")).unwrap();
     for k in 0..12 {
         assert!(

@@ -236,7 +236,13 @@ fn the_answer_file_is_the_documented_one() {
     let r = from_json(&text).unwrap();
     assert_eq!(
         (r.plan, r.position, r.mu, r.delta, r.mu_v),
-        (PlanKind::Acceleration, 2, 0.1, 0.5, Some(0.01))
+        (
+            PlanKind::Acceleration,
+            mechplan::check::position::StatedPosition::new(2),
+            0.1,
+            0.5,
+            Some(0.01)
+        )
     );
     let omegas: Vec<(String, f64, f64)> = r
         .stated

@@ -18,8 +18,11 @@ python3 - "$tmp/group/solved.json" "$answers" <<'PY'
 import json, math, random, sys
 doc, out = json.load(open(sys.argv[1])), sys.argv[2]
 random.seed(3)
+def at(k):
+    # Position k by its number, as the sheets and the result file give it.
+    return next(p for p in doc["positions"] if p["position"] == k)
 def points(kind, k, names, move=None, turn=False):
-    plan = doc["positions"][k - 1]["plans"][kind]
+    plan = at(k)["plans"][kind]
     pts = {}
     for n in names:
         x, y = (c + random.uniform(-0.1, 0.1) for c in plan["points"][n])
@@ -31,7 +34,7 @@ def points(kind, k, names, move=None, turn=False):
     return {"plan": kind, "position": k, "mu": plan["mu"], "points": pts}
 def force(k, mu, factor=1.0):
     values = {}
-    for p in doc["positions"][k - 1]["dynamics"]["pairs"]:
+    for p in at(k)["dynamics"]["pairs"]:
         if p.get("slider") == "5":
             values["R_05"] = math.hypot(*p["N"])
         elif p.get("point") == "C":

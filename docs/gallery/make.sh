@@ -21,7 +21,10 @@ for f in fixtures/*.json; do
   rm -f "$out/$n"/*.png
   echo "## $n" >> "$index.tmp"
   echo >> "$index.tmp"
-  for s in positions mechanism_1 velocity_1 acceleration_1; do
+  # The first position by its number (a count sweep's 0, else 1), as the
+  # manifest gives it.
+  first=$(python3 -c 'import json, sys; print(min(s["position"] for s in json.load(open(sys.argv[1]))["sheets"] if "position" in s))' "$tmp/$n/sheets.json")
+  for s in positions mechanism_$first velocity_$first acceleration_$first; do
     if [ -f "$tmp/$n/$s.png" ]; then
       cp "$tmp/$n/$s.png" "$out/$n/$s.png"
       echo "![$n $s]($n/$s.png)" >> "$index.tmp"
@@ -31,7 +34,7 @@ for f in fixtures/*.json; do
 done
 # The pictures of docs/centres.md, docs/frenet.md and docs/diagrams.md.
 ./target/release/mechplan draw fixtures/four_bar.json -o "$tmp/centres" --centres --format png > /dev/null
-cp "$tmp/centres/mechanism_5.png" "$out/centres_four_bar.png"
+cp "$tmp/centres/mechanism_4.png" "$out/centres_four_bar.png"
 ./target/release/mechplan frenet -o "$tmp/frenet" --format png > /dev/null
 cp "$tmp/frenet/fig5a.png" "$out/frenet_fig5a.png"
 cp "$tmp/frenet/fig2a.png" "$out/frenet_fig2a.png"
@@ -108,11 +111,11 @@ fi
 # Zhukovsky's lever (docs/kinetostatics.md, route 3): the six-link with
 # its loads, on the return stroke.
 ./target/release/mechplan draw fixtures/dynamics/six_link_fig2_10.json -o "$tmp/lever6" --format png --dpi 100 > /dev/null
-cp "$tmp/lever6/lever_10.png" "$out/lever_six_link_fig2_10.png"
+cp "$tmp/lever6/lever_9.png" "$out/lever_six_link_fig2_10.png"
 {
   echo "## Zhukovsky's lever"
   echo
-  echo "![the lever of the six-link at position 10](lever_six_link_fig2_10.png)"
+  echo "![the lever of the six-link at position 9](lever_six_link_fig2_10.png)"
   echo
 } >> "$index.tmp"
 # The course's second sheet, the force analysis (draw --course with a

@@ -1,47 +1,50 @@
-//! Is the answer one answer, of the plan and the position it states?
-//! Refused before anything is judged (bad input, each problem at its
-//! field): a name of the other plan (`k3`, a Coriolis point, or the pole
-//! `p_a` in a velocity answer; `p_v` in an acceleration answer), a name no
-//! plan has, a thing given twice under two spellings (`n2` and `n_2`),
-//! and points that do not fit the position the answer states but fit
-//! another position of the scene well.
+//! Is the answer one answer, of the plan it states, and are its points
+//! of the position it states? Refused before anything is judged (bad
+//! input, each problem at its field): a name of the other plan (`k3`, a
+//! Coriolis point, or the pole `p_a` in a velocity answer; `p_v` in an
+//! acceleration answer), a name no plan has, a thing given twice under
+//! two spellings (`n2` and `n_2`). Points that do not fit the position the
+//! answer states but fit another position of the scene well, or fit it
+//! with the crank turned the other way, are never refused: the answer is
+//! graded at the position it states, with a note saying where they fit
+//! ([`Elsewhere`]).
 //!
 //! Cost: one plan build at the stated position (the check builds it again;
 //! a plan build is a small part of a check, whose diagnosis builds dozens),
 //! and only when the answer gives at least two points that do not all fit
-//! there, one more plan build at each other position of the scene
-//! (docs/check.md measures it).
+//! there, one more plan build at each other position of the scene and one
+//! with ω1 reversed at the stated one (docs/check.md measures it).
 
 use super::answer::{Answer, Given, Item};
 use super::candidates::Builds;
 use super::items::{expect, given_twice, names, pole_of, resolve};
+use super::verdict::Elsewhere;
 use crate::error::{Error, Issue, Result};
-use crate::kinematics::construction::{Plan, PlanKind, PointId, Variant};
+use crate::kinematics::construction::{Mistake, Plan, PlanKind, PointId, Variant};
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
 use crate::pipeline::Solved;
 use kurbo::Vec2;
 
-/// How much better another position must fit the answer's points than
-/// the stated one (Σ distance/tolerance) for the answer to be refused as
-/// drawn at that position.
+/// How much better another position (or the stated one with ω1
+/// reversed) must fit the answer's points than the stated one (Σ
+/// distance/tolerance) for the report to say the points fit there.
 pub(super) const BETTER_FIT: f64 = 10.0;
 
-/// Refuse an answer whose names are of the other plan or of no plan, that
-/// gives a thing twice, or whose points fit another position of the scene
-/// instead of the one it states. A position the scene does not have, or a
-/// plan it cannot build, is left to [`super::check`] to refuse.
+/// Refuse an answer whose names are of the other plan or of no plan, or
+/// that gives a thing twice; else where its points fit if not at the
+/// position it states (`at`, the index of the stated position): the note
+/// of its report, never a refusal. A plan the scene cannot build is left
+/// to [`super::check`] to refuse.
 pub(super) fn refuse_inconsistent(
     an: &Analysis,
     solved: &[Solved],
-    ans: &Answer,
+    (at, ans): (usize, &Answer),
     lang: Lang,
-) -> Result<()> {
-    let Some(s) = ans.position.checked_sub(1).and_then(|k| solved.get(k)) else {
-        return Ok(());
-    };
+) -> Result<Option<Elsewhere>> {
+    let s = &solved[at];
     let Ok(plan) = Builds::new(an, s, ans, lang).plan(&s.config, Variant::default()) else {
-        return Ok(());
+        return Ok(None);
     };
     let other = s.plans.as_ref().and_then(|p| match ans.plan {
         PlanKind::Velocity => p.acceleration.as_ref(),
@@ -56,13 +59,8 @@ pub(super) fn refuse_inconsistent(
         }
     }
     issues.extend(given_twice(an, &plan, &ans.items));
-    if issues.is_empty()
-        && let Some(i) = another_position(an, solved, ans, &plan, lang)
-    {
-        issues.push(i);
-    }
     if issues.is_empty() {
-        Ok(())
+        Ok(elsewhere(an, solved, (at, ans), &plan, lang))
     } else {
         Err(Error::fields(issues))
     }
@@ -140,18 +138,20 @@ fn fit(plan: &Plan, points: &[(&str, [f64; 2])], delta: f64) -> Option<(f64, boo
     Some((misfit, within))
 }
 
-/// The refusal of an answer whose points (two or more) do not fit the
-/// stated position's `plan` but fit another position's within their
-/// tolerances, [`BETTER_FIT`] times better: the position it was drawn at.
-/// Every other position's plan is built (at the student's μ) only when
-/// the stated one does not fit.
-fn another_position(
+/// Where the answer's points (two or more) fit when they do not fit the
+/// stated position's `plan` (the position at index `at`): the stated
+/// position with ω1 reversed, and the other position that fits best, each
+/// when it fits every point within its tolerance and [`BETTER_FIT`] times
+/// better than the stated one (both, where a symmetric mechanism's
+/// reversed plan equals another position's). The other plans are built
+/// (at the student's μ) only when the stated one does not fit.
+fn elsewhere(
     an: &Analysis,
     solved: &[Solved],
-    ans: &Answer,
+    (at, ans): (usize, &Answer),
     plan: &Plan,
     lang: Lang,
-) -> Option<Issue> {
+) -> Option<Elsewhere> {
     let points: Vec<(&str, [f64; 2])> = ans
         .items
         .iter()
@@ -167,26 +167,28 @@ fn another_position(
     if within {
         return None;
     }
+    let fits = |s: &Solved, variant: Variant| {
+        let p = Builds::new(an, s, ans, lang).plan(&s.config, variant).ok()?;
+        match fit(&p, &points, ans.delta) {
+            Some((m, true)) if stated > BETTER_FIT * m => Some(m),
+            _ => None,
+        }
+    };
+    let reversed = fits(&solved[at], Variant::everywhere(Mistake::OmegaWrongSense));
     let mut best: Option<(usize, f64)> = None;
     for (k, s) in solved.iter().enumerate() {
-        if k + 1 == ans.position {
+        if k == at {
             continue;
         }
-        let Ok(p) = Builds::new(an, s, ans, lang).plan(&s.config, Variant::default()) else {
-            continue;
-        };
-        if let Some((m, true)) = fit(&p, &points, ans.delta)
+        if let Some(m) = fits(s, Variant::default())
             && best.is_none_or(|(_, b)| m < b)
         {
-            best = Some((k + 1, m));
+            best = Some((k, m));
         }
     }
-    let (k, m) = best?;
-    (stated > BETTER_FIT * m).then(|| Issue {
-        pointer: "/position".into(),
-        message: format!(
-            "the answer fits position {k}, not position {} it states; give \"position\": {k} or --position {k}",
-            ans.position
-        ),
+    let position = best.map(|(k, _)| an.numbering.number(k));
+    (reversed.is_some() || position.is_some()).then_some(Elsewhere {
+        reversed: reversed.is_some(),
+        position,
     })
 }

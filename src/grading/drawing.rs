@@ -152,7 +152,7 @@ pub(super) fn answer_of(
     mu: Option<f64>,
     plan: Option<PlanKind>,
     delta: f64,
-    position: usize,
+    position: super::position::StatedPosition,
 ) -> Result<Answer> {
     let Drawing { labels, lines, kind } = drawing;
     let ends: Vec<Point> = lines.into_iter().flatten().collect();

@@ -588,6 +588,7 @@ fn parse_in(text: &str) -> Result<(Drawing, f64)> {
 /// Read a DXF answer (its text decoded, [`decode`]). `mu`, `plan` come
 /// from the command line when the drawing does not state them (a
 /// "μ = 0.01" text, and the pole's label p_v / p_a).
+/// `position` is the number of the position in the study's numbering.
 pub fn from_dxf(
     text: &str,
     mu: Option<f64>,
@@ -595,6 +596,7 @@ pub fn from_dxf(
     delta: f64,
     position: usize,
 ) -> Result<Answer> {
+    let position = super::position::StatedPosition::new(position);
     super::drawing::answer_of(parse(text)?, mu, plan, delta, position)
 }
 

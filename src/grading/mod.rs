@@ -12,8 +12,10 @@
 //! [`Report`]), the items as a construction expects them (`items`), the
 //! mistaken constructions tried and what cannot be judged
 //! (`candidates`), the diagnosis (`diagnosis`), an answer refused before
-//! it is judged: a name of the other plan, a thing given twice, points
-//! drawn at another position (`consistency`). The verdict is data: its
+//! it is judged: a name of the other plan, a thing given twice
+//! (`consistency`, which also finds where points drawn at another
+//! position fit: a note of the report, never a refusal), the position an
+//! answer states (`position`). The verdict is data: its
 //! text, JSON and overlay sheet are presentation's
 //! (`crate::presentation::verdict`), reading the answer's file the front
 //! door's (`crate::study`).
@@ -24,6 +26,8 @@ mod consistency;
 mod diagnosis;
 pub mod forces;
 mod items;
+mod numbers;
+pub mod position;
 pub mod read;
 mod relative;
 mod scale;
@@ -38,7 +42,7 @@ mod verdict;
 pub use verdict::Candidate as Explanation;
 pub use items::resolve;
 pub use verdict::{
-    Diagnosis, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
+    Diagnosis, Elsewhere, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
     StepVerdict, Verdict,
 };
 
@@ -54,21 +58,18 @@ use candidates::{Builds, candidates, cannot_judge};
 use diagnosis::diagnose;
 use items::expect;
 
-/// Position `position` (from 1) of `solved`; a position the scene does
-/// not have is refused, naming the range.
-fn position_of(solved: &[Solved], position: usize) -> Result<&Solved> {
-    position
-        .checked_sub(1)
-        .and_then(|k| solved.get(k))
-        .ok_or_else(|| {
-            Error::scene(
-                "/position",
-                format!(
-                    "position {position} is not one of the scene's positions: they are numbered from 1 to {}",
-                    solved.len()
-                ),
-            )
-        })
+/// The position `stated` of `solved`: its index and the position; one the
+/// scene does not have is refused, naming the range in the numbering in
+/// force (the answer's own, else the study's, `an.numbering`).
+fn position_of<'s>(
+    an: &Analysis,
+    solved: &'s [Solved],
+    stated: position::StatedPosition,
+) -> Result<(usize, &'s Solved)> {
+    let k = stated
+        .index(an.numbering, solved.len())
+        .map_err(|m| Error::scene("/position", m))?;
+    Ok((k, &solved[k]))
 }
 
 /// Check `answer` against the scene's analysis: an answer that draws
@@ -84,7 +85,7 @@ pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
 /// mistakes, the reasons, the items' names, the steps quoted) in that
 /// language, its numbers with the language's decimal mark.
 pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> Result<Report> {
-    let s = position_of(solved, ans.position)?;
+    let (_, s) = position_of(an, solved, ans.position)?;
     let b = Builds::new(an, s, ans, lang);
     let stated = stated::judge(&b, lang)?;
     let mut report = against_true_plan(an, solved, ans, lang, &stated)?;
@@ -208,7 +209,7 @@ fn against_true_plan(
     lang: Lang,
     stated: &[stated::StatedJudged],
 ) -> Result<Report> {
-    let s = position_of(solved, ans.position)?;
+    let (at, s) = position_of(an, solved, ans.position)?;
     if !an.plans
         || an.order.is_none()
         || (ans.plan == PlanKind::Acceleration && an.order != Some(Order::Acceleration))
@@ -218,7 +219,7 @@ fn against_true_plan(
             "the scene's want.plans does not include this plan",
         ));
     }
-    consistency::refuse_inconsistent(an, solved, ans, lang)?;
+    let elsewhere = consistency::refuse_inconsistent(an, solved, (at, ans), lang)?;
     let b = Builds::new(an, s, ans, lang);
     let plan = b.plan(&s.config, Variant::default())?;
     let mut exp = Vec::new();
@@ -265,7 +266,8 @@ fn against_true_plan(
     verdicts.extend(stated.iter().map(|j| j.verdict.clone()));
     let mut report = Report {
         plan: ans.plan,
-        position: ans.position,
+        position: an.numbering.number(at),
+        elsewhere,
         mu: ans.mu,
         delta: ans.delta,
         worst_angle: plan.worst_angle_deg(),

@@ -3,17 +3,40 @@
 
 use super::answer::{Answer, check_size, delta_issue, from_json};
 use crate::error::{Error, Result};
+use super::position::StatedPosition;
 use crate::kinematics::construction::PlanKind;
+use crate::model::scene::Numbering;
 
 /// What the command line may say about an answer: an SVG's scale and plan
 /// where the drawing does not state them, the pencil's δ, the position
-/// (each overrides the answer's own).
+/// (each overrides the answer's own), and the numbering of the position
+/// it says and of an answer's that states none (`--positions-from`).
 #[derive(Clone, Debug, Default)]
 pub struct Reading {
     pub mu: Option<f64>,
     pub plan: Option<PlanKind>,
     pub delta: Option<f64>,
     pub position: Option<usize>,
+    pub positions_from: Option<Numbering>,
+}
+
+impl Reading {
+    /// The position an answer states, with the command line's over it:
+    /// `--position` (in the numbering of `--positions-from`, else the
+    /// study's) over the answer's own; `--positions-from` the numbering of
+    /// an answer's position that states none.
+    pub fn over(&self, own: StatedPosition) -> StatedPosition {
+        match self.position {
+            Some(p) => StatedPosition {
+                number: Some(p),
+                from: self.positions_from,
+            },
+            None => StatedPosition {
+                number: own.number,
+                from: own.from.or(self.positions_from),
+            },
+        }
+    }
 }
 
 /// Read an answer's text — JSON, or a drawing: an SVG drawn in a vector
@@ -36,7 +59,7 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
                 r.mu,
                 r.plan,
                 r.delta.unwrap_or(0.5),
-                r.position.unwrap_or(1),
+                StatedPosition::default(),
             )
         })
     } else {
@@ -46,9 +69,7 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
     if let Some(d) = r.delta {
         ans.delta = d;
     }
-    if let Some(p) = r.position {
-        ans.position = p;
-    }
+    ans.position = r.over(ans.position);
     Ok(ans)
 }
 

@@ -250,6 +250,7 @@ impl Page {
 /// Read an SVG answer. `mu`, `plan` come from the command line when the
 /// drawing does not state them (a "μ = 0.01" text, and the pole's label
 /// p_v / p_a); a plan asked that the pole's label contradicts is refused.
+/// `position` is the number of the position in the study's numbering.
 pub fn from_svg(
     text: &str,
     mu: Option<f64>,
@@ -257,6 +258,7 @@ pub fn from_svg(
     delta: f64,
     position: usize,
 ) -> Result<Answer> {
+    let position = super::position::StatedPosition::new(position);
     super::drawing::answer_of(parse(text)?, mu, plan, delta, position)
 }
 

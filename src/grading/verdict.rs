@@ -59,10 +59,26 @@ pub struct Diagnosis {
     pub alternatives: Vec<String>,
 }
 
+/// Where an answer's points fit when they do not fit the position it
+/// states (the answer is graded at the stated position all the same, and
+/// its report says this): the stated position with the crank turned the
+/// other way (ω1 reversed), another position, or both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Elsewhere {
+    /// They fit the stated position with ω1 reversed.
+    pub reversed: bool,
+    /// They fit this position (its number, in the study's numbering).
+    pub position: Option<usize>,
+}
+
 #[derive(Clone, Debug)]
 pub struct Report {
     pub plan: PlanKind,
+    /// The position checked: the one the answer states, by its number in
+    /// the study's numbering (a `count` sweep from 0, given values from 1).
     pub position: usize,
+    /// Where the answer's points fit if not at the stated position.
+    pub elsewhere: Option<Elsewhere>,
     pub mu: f64,
     pub delta: f64,
     pub verdicts: Vec<Verdict>,
@@ -135,6 +151,28 @@ impl SecondOpinion {
 }
 
 impl Report {
+    /// The report's note on an answer whose points fit elsewhere than the
+    /// position it states ([`Elsewhere`]): another position, the stated
+    /// one with ω1 reversed, or both, in the report's language; `None`
+    /// when they fit there (or fit nowhere).
+    pub fn elsewhere_note(&self) -> Option<String> {
+        let e = self.elsewhere?;
+        let w = crate::words::check::phrases(self.lang);
+        let fill = crate::words::check::fill;
+        let stated = self.position.to_string();
+        Some(match (e.reversed, e.position) {
+            (true, Some(k)) => fill(
+                &w.elsewhere_both,
+                &[("stated", &stated), ("position", &k.to_string())],
+            ),
+            (true, None) => fill(&w.elsewhere_reversed, &[("stated", &stated)]),
+            (false, Some(k)) => fill(
+                &w.elsewhere_position,
+                &[("stated", &stated), ("position", &k.to_string())],
+            ),
+            (false, None) => return None,
+        })
+    }
     pub fn wrong(&self) -> usize {
         self.verdicts
             .iter()

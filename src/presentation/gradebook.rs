@@ -83,7 +83,9 @@ pub struct GradeRow {
     pub file: String,
     /// `velocity`, `acceleration` or `force`; `None` when unreadable.
     pub plan: Option<&'static str>,
-    /// The position checked (from 1); `None` when unreadable.
+    /// The position checked, by its number in the study's numbering (a
+    /// `count` sweep from 0, given input values from 1: the number the
+    /// sheets show); `None` when unreadable.
     pub position: Option<usize>,
     /// The grade.
     pub grade: Grade,
@@ -97,7 +99,9 @@ pub struct GradeRow {
     pub mistakes: Vec<String>,
     /// The items' counts; `None` when unreadable.
     pub counts: Option<Counts>,
-    /// Why an unreadable answer could not be checked; `None` otherwise.
+    /// Why an unreadable answer could not be checked; for one checked,
+    /// the report's note when its points fit another position (or this
+    /// one with ω1 reversed); `None` otherwise.
     pub message: Option<String>,
 }
 
@@ -157,7 +161,7 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
                 grade: Grade::of_status(r.status()),
                 mistakes,
                 counts: Some(counts(&r.verdicts)),
-                message: None,
+                message: r.elsewhere_note(),
             }
         }
         Outcome::Force(r) => {

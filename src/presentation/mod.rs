@@ -21,15 +21,12 @@ pub mod tables;
 mod text_table;
 pub mod verdict;
 
-/// The number a person reads for the sweep's position `k` (counted from 0):
-/// where the positions start at an extreme position (`positions.count`),
-/// the lecture's, from 0 — position 0 is the start of the working stroke,
-/// as the diagrams' axis 0 … n on the same sheet counts; other sweeps (the
-/// user's own list of input values) from 1, as files, `--position` and the
-/// result file count every sweep (what a program reads or a user types).
+/// The number of the sweep's position `k` (counted from 0), as every
+/// output writes it and every input reads it: in the study's numbering
+/// ([`crate::kinematics::solve::Analysis::numbering`]), by default the
+/// scene's — a `count` sweep from 0 (the lecture's: position 0 is the start
+/// of the working stroke, as the diagrams' axis 0 … n on the same sheet
+/// counts), the input values given (`angles`, `s`, `values`) from 1.
 pub(crate) fn position_number(an: &crate::kinematics::solve::Analysis, k: usize) -> usize {
-    match an.mech.scene.positions {
-        crate::model::scene::PositionsSpec::Count { .. } => k,
-        _ => k + 1,
-    }
+    an.numbering.number(k)
 }

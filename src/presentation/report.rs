@@ -52,7 +52,13 @@ pub fn to_json(an: &Analysis, solved: &[Solved]) -> Value {
     let mut doc = json_head(an);
     doc.insert(
         "positions".into(),
-        Value::Array(solved.iter().map(|s| position_json(an, s)).collect()),
+        Value::Array(
+            solved
+                .iter()
+                .enumerate()
+                .map(|(k, s)| position_json(an, k, s))
+                .collect(),
+        ),
     );
     Value::Object(doc)
 }
@@ -123,10 +129,13 @@ impl Orders {
     }
 }
 
-/// One position of the result document.
-pub fn position_json(an: &Analysis, s: &Solved) -> Value {
+/// One position of the result document, the `k`-th (from 0) of the
+/// sweep: first its `position`, its number as the sheets show it (the
+/// study's numbering: a `count` sweep from 0, given input values from 1).
+pub fn position_json(an: &Analysis, k: usize, s: &Solved) -> Value {
     let want = Orders::of(an);
     let mut o = Map::new();
+    o.insert("position".into(), json!(super::position_number(an, k)));
     o.insert("input".into(), inputs_json(an, s, want));
     o.insert("points".into(), points_json(an, s, want));
     o.insert("links".into(), links_json(an, s, want));
@@ -396,13 +405,14 @@ pub fn csv_head(an: &Analysis) -> String {
     cols.join(",") + "\n"
 }
 
-/// The CSV row of position `k` (from 0), the columns of [`csv_head`], the
-/// numbers as the JSON result writes them.
+/// The CSV row of position `k` (from 0), the columns of [`csv_head`] (its
+/// `position` the number the sheets show), the numbers as the JSON result
+/// writes them.
 pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
     let m = &an.mech;
     let Orders { vel, acc, .. } = Orders::of(an);
     let mut row = String::with_capacity(512);
-    row.push_str(&(k + 1).to_string());
+    row.push_str(&super::position_number(an, k).to_string());
     let mut cell = |x: f64| {
         row.push(',');
         push_num(&mut row, x);
@@ -470,13 +480,13 @@ pub fn text_position(an: &Analysis, style: Style, k: usize, s: &Solved) -> Strin
         Style::Steps(lang) => steps_position(an, k, s, lang),
         Style::Csv => csv_row(an, k, s),
         Style::Jsonl => {
-            serde_json::to_string(&position_json(an, s)).expect("JSON of finite numbers") + "\n"
+            serde_json::to_string(&position_json(an, k, s)).expect("JSON of finite numbers") + "\n"
         }
         Style::Json => {
             // An element of the top-level array: pretty-printed two levels
             // deep, so every line is indented by four spaces (strings
             // escape their line breaks, so lines are the printer's own).
-            let text = serde_json::to_string_pretty(&position_json(an, s))
+            let text = serde_json::to_string_pretty(&position_json(an, k, s))
                 .expect("JSON of finite numbers");
             let mut out = String::with_capacity(text.len() + text.len() / 8);
             out.push_str(if k == 0 { "[\n" } else { ",\n" });

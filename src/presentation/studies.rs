@@ -28,7 +28,8 @@ fn place_text(p: &Place, l: Lang) -> String {
     }
 }
 
-/// The centres of the chosen positions (`position`: from 1; all if `None`)
+/// The centres of the chosen positions (`position`: its number in the
+/// study's numbering, as the sheets show it; all if `None`)
 /// as a table in `l`, every number in its decimal mark.
 /// A position's inputs as the solve table writes them: "φ = 40.804°",
 /// "s = 0.050000 m", to the table's digits, not the shortest decimal of
@@ -54,7 +55,7 @@ pub fn centres_table(
     let word = &catalogue(l).sheets.position;
     let mut out = String::new();
     for (k, s) in solved.iter().enumerate() {
-        if position.is_some_and(|p| p != k + 1) {
+        if position.is_some_and(|p| p != super::position_number(an, k)) {
             continue;
         }
         let cs = find(an, &s.config);
@@ -98,7 +99,7 @@ pub fn centres_json(
     let m = &an.mech;
     let mut list = Vec::new();
     for (k, s) in solved.iter().enumerate() {
-        if position.is_some_and(|p| p != k + 1) {
+        if position.is_some_and(|p| p != super::position_number(an, k)) {
             continue;
         }
         let cs = find(an, &s.config);
@@ -125,7 +126,7 @@ pub fn centres_json(
             })
             .collect();
         list.push(json!({
-            "position": k + 1,
+            "position": super::position_number(an, k),
             "q": s.q,
             "centres": centres,
             "undetermined": undetermined,

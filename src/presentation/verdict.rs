@@ -39,8 +39,18 @@ pub fn to_text(r: &Report) -> String {
     if r.worst_angle < 5.0 {
         let _ = writeln!(t, "{}", fill(&w.dead_centre, &[("angle", &fmt(r.worst_angle))]));
     }
-    if let Some(steps) = &r.steps {
-        steps_text(&mut t, w, (steps, r.grade(), r.wrong()), r.lang);
+    // The note of points that fit elsewhere: under the grade.
+    let note = r.elsewhere_note().map(|n| n + "\n").unwrap_or_default();
+    match &r.steps {
+        Some(steps) => {
+            let mut s = String::new();
+            steps_text(&mut s, w, (steps, r.grade(), r.wrong()), r.lang);
+            let cut = s.find('\n').map_or(s.len(), |i| i + 1);
+            t.push_str(&s[..cut]);
+            t.push_str(&note);
+            t.push_str(&s[cut..]);
+        }
+        None => t.push_str(&note),
     }
     let _ = writeln!(t, "{}", w.items_heading);
     let c = &w.items_columns;
@@ -252,6 +262,9 @@ pub fn to_json(r: &Report) -> serde_json::Value {
     serde_json::json!({
         "plan": if r.plan == PlanKind::Velocity { "velocity" } else { "acceleration" },
         "position": r.position,
+        "elsewhere": r.elsewhere.map(|e| serde_json::json!({
+            "reversed": e.reversed, "position": e.position, "note": r.elsewhere_note(),
+        })),
         "mu": r.mu,
         "delta": r.delta,
         "worst_angle": r.worst_angle,

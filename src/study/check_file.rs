@@ -24,7 +24,7 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         ));
     }
     let parsed = studies::parse_answer(&text, &name, svg, req)?;
-    let study = Study::from_path(scene)?;
+    let study = study_for(scene, req)?;
     studies::position_of(&study, &parsed, &name, req)?;
     let checked = studies::check_parsed(&study.solve()?, parsed, req.lang)?;
     if let Some(out) = &req.overlay
@@ -43,6 +43,17 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         checked.to_text()
     };
     Ok((text, checked.status()))
+}
+
+/// The scene file read for a check: numbered as `req.positions_from`
+/// says (`--positions-from`: the report and the gradebook number the
+/// positions so), else as the scene does.
+pub(super) fn study_for(scene: &Path, req: &CheckRequest) -> Result<Study> {
+    let study = Study::from_path(scene)?;
+    Ok(match req.positions_from {
+        Some(n) => study.numbered(n),
+        None => study,
+    })
 }
 
 /// Whether an answer file is a drawing by its extension (.svg, .dxf).

@@ -126,7 +126,7 @@ pub fn check_group(
     progress: &dyn Progress,
 ) -> Result<Graded> {
     let files = answer_files(answers)?;
-    let study = Study::from_path(scene)?;
+    let study = super::check_file::study_for(scene, req)?;
     validate(&study, req)?;
     let solution = study.solve()?;
     let title = scene_name(&study, scene);
@@ -159,7 +159,7 @@ fn validate(study: &Study, req: &CheckRequest) -> Result<()> {
         ));
     }
     if let Some(p) = req.position {
-        study.position_in_range("position", p)?;
+        study.position_index("position", p)?;
     }
     Ok(())
 }

@@ -10,8 +10,10 @@
 //! // The lecture's six-link mechanism, embedded in the crate.
 //! let study = Study::from_json(mechplan::DEFAULT_SCENE)?;
 //! let solution = study.solve()?;
-//! // The slider D's velocity at the first position, by route (a) …
-//! let d = solution.position(1)?.point("D")?;
+//! // The slider D's velocity at the first position (position 0: the
+//! // scene's twelve positions are numbered from 0, as its sheets are),
+//! // by route (a) …
+//! let d = solution.position(0)?.point("D")?;
 //! let v = d.velocity().expect("the scene asks for velocities");
 //! // … and as measured on the velocity plan: the same, within its bound.
 //! let measured = d.measured_velocity().expect("the scene asks for plans");

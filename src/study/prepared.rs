@@ -6,7 +6,7 @@ use super::files;
 use crate::error::{Error, Result, in_file};
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
-use crate::model::scene::Scene;
+use crate::model::scene::{Numbering, Scene};
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
@@ -87,9 +87,11 @@ pub struct DrawRequest {
     /// The course sheet (A1, or A2 with `sheet`), besides the sheets the
     /// scene asks for.
     pub course: bool,
-    /// Only these positions' sheets (from 1; empty: every sheet), at the
-    /// scales of the whole set and numbered as in it; the folder's other
-    /// sheets are left as they are.
+    /// Only these positions' sheets (empty: every sheet), by their
+    /// numbers in the study's numbering ([`Study::numbering`]: a `count`
+    /// sweep from 0, given input values from 1), the numbers the sheets
+    /// and their files show; drawn at the scales of the whole set; the
+    /// folder's other sheets are left as they are.
     pub positions: Vec<usize>,
 }
 
@@ -137,6 +139,16 @@ impl DrawRequest {
         }
         Ok(())
     }
+}
+
+/// The index (from 0) of position `number` of `count` positions numbered
+/// by `numbering`; else the message naming the range.
+pub(super) fn position_index(
+    numbering: Numbering,
+    number: usize,
+    count: usize,
+) -> std::result::Result<usize, String> {
+    crate::grading::position::StatedPosition::new(number).index(numbering, count)
 }
 
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
@@ -259,19 +271,49 @@ impl Study {
         Ok(self.analysis.input_values()?.len())
     }
 
-    /// Is `position` (from 1) one of the scene's? An error naming
-    /// `parameter` and the range if not.
-    pub fn position_in_range(&self, parameter: &str, position: usize) -> Result<()> {
-        let count = self.position_count()?;
-        if (1..=count).contains(&position) {
-            return Ok(());
+    /// How this study numbers its positions in everything it writes and
+    /// reads (sheets and their files, result files, `--position`, reports,
+    /// the gradebook, the handout): the scene's — a `count` sweep from 0
+    /// (position 0 the extreme position that starts the working stroke,
+    /// as the lecture numbers them), given input values (`angles`, `s`,
+    /// `values`) from 1 — unless [`Study::numbered`] says otherwise.
+    pub fn numbering(&self) -> Numbering {
+        self.analysis.numbering
+    }
+
+    /// The same study with its positions numbered by `numbering` in
+    /// everything it writes and reads (`--positions-from`):
+    /// [`Numbering::FROM_1`] reads and writes a `count` sweep's positions
+    /// as mechplan numbered them before the one numbering (the K-th
+    /// position is position K).
+    ///
+    /// ```
+    /// use mechplan::{Numbering, Study};
+    /// let study = Study::default_scene(); // a count sweep of 12
+    /// assert_eq!(study.numbering(), Numbering::FROM_0);
+    /// assert_eq!(study.solve()?.position(11)?.number(), 11); // the last
+    /// let older = study.numbered(Numbering::FROM_1);
+    /// assert_eq!(older.solve()?.position(12)?.number(), 12); // the same
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn numbered(&self, numbering: Numbering) -> Study {
+        if numbering == self.analysis.numbering {
+            return self.clone();
         }
-        Err(Error::scene(
-            parameter,
-            format!(
-                "position {position} is not one of the scene's positions: they are numbered from 1 to {count}"
-            ),
-        ))
+        let mut an = (*self.analysis).clone();
+        an.numbering = numbering;
+        Study {
+            analysis: Arc::new(an),
+            watcher: self.watcher.clone(),
+        }
+    }
+
+    /// The index (from 0, in the sweep's order) of position `number`, in
+    /// the study's numbering ([`Study::numbering`]); an error naming
+    /// `parameter` and the range if the scene has no such position.
+    pub fn position_index(&self, parameter: &str, number: usize) -> Result<usize> {
+        let count = self.position_count()?;
+        position_index(self.numbering(), number, count).map_err(|m| Error::scene(parameter, m))
     }
 
     /// Each position as it is solved, in order, told to the watcher.

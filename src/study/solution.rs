@@ -43,25 +43,18 @@ impl<'a> Solution<'a> {
         self.positions.is_empty()
     }
 
-    /// Position `number` (from 1, as the result files count them); an
-    /// error naming the range if there is none.
+    /// Position `number`, in the study's numbering ([`Study::numbering`]:
+    /// a `count` sweep from 0, given input values from 1), as the sheets,
+    /// the result files and `--position` number it; an error naming the
+    /// range if there is none.
     pub fn position(&self, number: usize) -> Result<PositionResult<'_>> {
-        let s = number
-            .checked_sub(1)
-            .and_then(|k| self.positions.get(k))
-            .ok_or_else(|| {
-                Error::scene(
-                    "position",
-                    format!(
-                        "position {number} is not one of the scene's positions: they are numbered from 1 to {}",
-                        self.positions.len()
-                    ),
-                )
-            })?;
+        let k = super::prepared::position_index(self.an().numbering, number, self.positions.len())
+            .map_err(|m| Error::scene("position", m))?;
+        let s = &self.positions[k];
         Ok(PositionResult {
             an: &self.study.analysis,
             solved: Cow::Borrowed(s),
-            number,
+            index: k,
         })
     }
 
@@ -73,7 +66,7 @@ impl<'a> Solution<'a> {
             .map(|(k, s)| PositionResult {
                 an: &self.study.analysis,
                 solved: Cow::Borrowed(s),
-                number: k + 1,
+                index: k,
             })
     }
 
@@ -130,25 +123,18 @@ impl<'a> Solution<'a> {
         sink: &mut dyn FnMut(Sheet) -> Result<()>,
     ) -> Result<SheetSize> {
         req.validate()?;
-        if let Some(&k) = req
+        let numbering = self.an().numbering;
+        let only = req
             .positions
             .iter()
-            .find(|&&k| k == 0 || k > self.positions.len())
-        {
-            return Err(Error::scene(
-                "position",
-                format!(
-                    "{k} is not a position of this scene (it has {}, numbered from 1)",
-                    self.positions.len()
-                ),
-            ));
-        }
+            .map(|&k| super::prepared::position_index(numbering, k, self.positions.len()))
+            .collect::<std::result::Result<Vec<usize>, String>>()
+            .map_err(|m| Error::scene("position", m))?;
         let sizes = match req.sheet {
             Some(s) => vec![s],
             None => SheetSize::ALL.to_vec(),
         };
         let opt = req.options(self.study.lang());
-        let only: Vec<usize> = req.positions.iter().map(|k| k - 1).collect();
         drawing::sheets_on_each(self.an(), &self.positions, &opt, (&sizes, &only), sink)
     }
 
@@ -194,13 +180,17 @@ impl<'a> Solution<'a> {
 pub struct PositionResult<'a> {
     an: &'a Analysis,
     solved: Cow<'a, Solved>,
-    number: usize,
+    /// Its index in the sweep, from 0.
+    index: usize,
 }
 
 impl PositionResult<'_> {
-    /// The position's number, from 1.
+    /// The position's number, in the study's numbering
+    /// ([`Study::numbering`]): a `count` sweep's positions from 0 (the
+    /// sheets' "position 0" is the extreme position that starts the
+    /// working stroke), given input values' from 1.
     pub fn number(&self) -> usize {
-        self.number
+        self.an.numbering.number(self.index)
     }
 
     /// Every input's coordinate (a crank's angle in rad, a slider's or a
@@ -269,7 +259,7 @@ impl PositionResult<'_> {
     /// The position's object of the result file (a line of
     /// `--format jsonl`).
     pub fn to_json(&self) -> serde_json::Value {
-        report::position_json(self.an, &self.solved)
+        report::position_json(self.an, self.index, &self.solved)
     }
 
     /// The solved position itself (the internals, for the project's own
@@ -429,7 +419,7 @@ impl<'a> Iterator for Positions<'a> {
                 Some(Ok(PositionResult {
                     an: &self.study.analysis,
                     solved: Cow::Owned(s),
-                    number: self.next,
+                    index: self.next - 1,
                 }))
             }
             Some(Err(e)) => {

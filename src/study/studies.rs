@@ -6,13 +6,14 @@
 
 use super::{Solution, Study, Written, files, write_sheets};
 use crate::error::{Error, Result, in_file};
-use crate::grading::answer::Answer;
+use crate::grading::answer::{Answer, StatedPosition};
 use crate::grading::forces::{self, ForceAnswer, ForceReport};
 use crate::grading::read::{self, Reading};
 use crate::grading::{self, Report};
 use crate::kinematics::construction::PlanKind;
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
+use crate::model::scene::Numbering;
 use crate::presentation::drawing::{self, DrawOptions, Format, Sheet};
 use crate::presentation::{precision as precision_text, studies as tables, verdict};
 use crate::studies::diagrams::Diagrams;
@@ -37,8 +38,16 @@ pub struct CheckRequest {
     pub mu: Option<f64>,
     /// Which plan the answer is (`--plan`), over the answer's own.
     pub plan: Option<PlanKind>,
-    /// The position (`--position`, from 1), over the answer's own.
+    /// The position (`--position`), over the answer's own: its number in
+    /// the numbering `positions_from`, else the study's
+    /// ([`Study::numbering`]: a `count` sweep from 0, given input values
+    /// from 1), as the sheets show it.
     pub position: Option<usize>,
+    /// The numbering of `position` and of an answer's `position` that
+    /// states no `positions_from` (`--positions-from`); `None`: the
+    /// study's. ([`crate::check_file`] and [`crate::check_group`] number
+    /// the report and the gradebook by it too.)
+    pub positions_from: Option<Numbering>,
     /// The language of a kinematic plan's report (`--lang`): its
     /// sentences, and its numbers' decimal mark in the text; default: the
     /// scene's `want.lang`. The JSON's keys and judgements stay English.
@@ -60,8 +69,9 @@ impl Study {
     /// ```
     /// let study = mechplan::Study::default_scene();
     /// // A student read v_B = 0.3 m/s off a velocity plan drawn at
-    /// // μ_v = 0.01 (m/s)/mm, at position 2.
-    /// let answer = r#"{ "plan": "velocity", "position": 2, "mu": 0.01,
+    /// // μ_v = 0.01 (m/s)/mm, at position 1 (the scene counts its twelve
+    /// // positions from 0, as its sheets do).
+    /// let answer = r#"{ "plan": "velocity", "position": 1, "mu": 0.01,
     ///                   "values": { "v_B": 0.3 } }"#;
     /// let checked = study.check_answer(answer, "answer.json", false)?;
     /// assert_eq!(checked.wrong(), 1); // v_B is 0.83 m/s there
@@ -73,7 +83,8 @@ impl Study {
             .check_answer(text, name, svg, &CheckRequest::default())
     }
 
-    /// The instant centres of every position (or of `position`, from 1).
+    /// The instant centres of every position (or of `position`, its
+    /// number in the study's numbering, [`Study::numbering`]).
     pub fn centres(&self, position: Option<usize>) -> Result<Centres<'_>> {
         self.solve()?.into_centres(position)
     }
@@ -121,14 +132,24 @@ pub(super) enum Parsed {
 }
 
 impl Parsed {
-    /// The position the answer is of (from 1), and whether the command
-    /// line said it (else the answer did).
-    fn position(&self, req: &CheckRequest) -> (usize, bool) {
-        let own = match self {
+    /// The position the answer is of, as stated (the command line's over
+    /// the answer's own).
+    fn position(&self) -> StatedPosition {
+        match self {
             Parsed::Kinematic(a) => a.position,
             Parsed::Force(a) => a.position,
-        };
-        (req.position.unwrap_or(own), req.position.is_some())
+        }
+    }
+}
+
+/// What the command line says of an answer (`req`) as read over it.
+fn reading(req: &CheckRequest) -> Reading {
+    Reading {
+        mu: req.mu,
+        plan: req.plan,
+        delta: req.delta,
+        position: req.position,
+        positions_from: req.positions_from,
     }
 }
 
@@ -143,13 +164,12 @@ pub(super) fn parse_answer(
     if let Some(f) = parse_force_answer(text, name, svg, req)? {
         return Ok(Parsed::Force(f));
     }
-    let r = Reading {
-        mu: req.mu,
-        plan: req.plan,
-        delta: req.delta,
-        position: req.position,
-    };
-    Ok(Parsed::Kinematic(read::from_text(text, name, svg, &r)?))
+    Ok(Parsed::Kinematic(read::from_text(
+        text,
+        name,
+        svg,
+        &reading(req),
+    )?))
 }
 
 /// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
@@ -165,8 +185,12 @@ fn parse_force_answer(
         if !forces::is_force_svg(text) {
             return Ok(None);
         }
-        let (delta, position) = (req.delta.unwrap_or(0.5), req.position.unwrap_or(1));
-        forces::from_svg(text, req.mu, delta, position)
+        forces::from_svg(
+            text,
+            req.mu,
+            req.delta.unwrap_or(0.5),
+            StatedPosition::default(),
+        )
     } else {
         if !forces::is_force_answer(text) {
             return Ok(None);
@@ -208,25 +232,24 @@ fn parse_force_answer(
             ));
         }
     }
-    if let Some(p) = req.position {
-        ans.position = p;
-    }
+    ans.position = reading(req).over(ans.position);
     Ok(Some(ans))
 }
 
 /// The answer's position is one of the scene's: an error naming the
-/// option, or the answer's field in its file (`name`).
+/// option, or the answer's field in its file (`name`), with the range in
+/// the numbering in force.
 pub(super) fn position_of(
     study: &Study,
     parsed: &Parsed,
     name: &str,
     req: &CheckRequest,
 ) -> Result<()> {
-    match parsed.position(req) {
-        (p, true) => study.position_in_range("position", p),
-        (p, false) => study
-            .position_in_range("/position", p)
-            .map_err(in_file(name)),
+    let count = study.position_count()?;
+    match parsed.position().index(study.numbering(), count) {
+        Ok(_) => Ok(()),
+        Err(m) if req.position.is_some() => Err(Error::scene("position", m)),
+        Err(m) => Err(in_file(name)(Error::scene("/position", m))),
     }
 }
 
@@ -348,10 +371,11 @@ impl<'a> Solution<'a> {
         check_parsed(self, parsed, req.lang)
     }
 
-    /// The instant centres (of `position`, from 1, or of every position).
+    /// The instant centres (of `position`, its number in the study's
+    /// numbering, or of every position).
     pub fn into_centres(self, position: Option<usize>) -> Result<Centres<'a>> {
         if let Some(p) = position {
-            self.study().position_in_range("position", p)?;
+            self.study().position_index("position", p)?;
         }
         Ok(Centres {
             solution: self,

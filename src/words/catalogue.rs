@@ -451,6 +451,12 @@ pub struct CheckPhrases {
     /// `{right}`, `{wrong}`, `{unjudged}`.
     pub second_opinion: String,
     pub second_agrees: String,
+    /// The note of an answer whose points fit another position:
+    /// `{position}`, `{stated}`; with ω1 reversed at the stated one:
+    /// `{stated}`; both: `{stated}`, `{position}`.
+    pub elsewhere_position: String,
+    pub elsewhere_reversed: String,
+    pub elsewhere_both: String,
     /// `{why}`.
     pub second_disagrees: String,
     /// `{step}`.

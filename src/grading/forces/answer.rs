@@ -8,7 +8,9 @@ use serde_json::{Map, Value};
 /// A student's force plan.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ForceAnswer {
-    pub position: usize,
+    /// The position it is of, as stated (`"position"`, `"positions_from"`,
+    /// `--position`).
+    pub position: crate::grading::answer::StatedPosition,
     /// The links of the plan (a group's, or the input link).
     pub links: Vec<String>,
     /// μ_F, N/mm.
@@ -46,8 +48,9 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
     let Some(o) = v.as_object() else {
         return Err(Error::fields(vec![issue("", "an answer is a JSON object")]));
     };
-    const FIELDS: [&str; 10] = [
-        "plan", "position", "links", "mu", "delta", "mu_l", "segments", "angles", "values", "title",
+    const FIELDS: [&str; 11] = [
+        "plan", "position", "positions_from", "links", "mu", "delta", "mu_l", "segments",
+        "angles", "values", "title",
     ];
     for k in o.keys() {
         if !FIELDS.contains(&k.as_str()) {
@@ -57,7 +60,7 @@ pub fn from_json(text: &str) -> Result<ForceAnswer> {
             ));
         }
     }
-    let position = super::super::answer::position(o, &mut issues).unwrap_or(1);
+    let position = crate::grading::position::read(o, &mut issues).unwrap_or_default();
     let links = links(o, &mut issues);
     let mu = positive(o, "mu", &mut issues).filter(|&m| {
         // A scale no drawing has (a subnormal, 10³⁰⁰ N/mm) makes every
@@ -185,7 +188,12 @@ const SNAP_MM: f64 = 10.0;
 /// written on it ("μ_F = 2 N/mm"; `mu` overrides). Read: each label's
 /// nearest segment (by its middle, within 10 mm) gives the force's length;
 /// the plan is the one whose forces the labels name (no `links` needed).
-pub fn from_svg(text: &str, mu: Option<f64>, delta: f64, position: usize) -> Result<ForceAnswer> {
+pub fn from_svg(
+    text: &str,
+    mu: Option<f64>,
+    delta: f64,
+    position: crate::grading::answer::StatedPosition,
+) -> Result<ForceAnswer> {
     // A problem of the drawing as a whole: no pointer ("svg" would be
     // read as the option --svg); the file is named by the caller.
     let bad = |m: String| {

@@ -27,6 +27,7 @@ use answer::issue;
 /// The check of a force plan.
 #[derive(Clone, Debug)]
 pub struct ForceReport {
+    /// The position checked, by its number in the study's numbering.
     pub position: usize,
     pub links: Vec<String>,
     pub mu: f64,
@@ -225,7 +226,7 @@ pub fn check_in(
     ans: &ForceAnswer,
     lang: Lang,
 ) -> Result<ForceReport> {
-    let s = super::position_of(solved, ans.position)?;
+    let (at, s) = super::position_of(an, solved, ans.position)?;
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return Err(Error::scene(
             "/plan",
@@ -233,7 +234,7 @@ pub fn check_in(
         ));
     };
     let right_loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);
-    let ans = &with_links(an, right_loads, &fp.plans, ans)?;
+    let ans = &with_links(an, right_loads, &fp.plans, (an.numbering.number(at), ans))?;
     let Some((w, _)) = which(an, &fp.plans, &ans.links) else {
         let all: Vec<String> = fp
             .plans
@@ -305,7 +306,7 @@ pub fn check_in(
         })
         .flatten();
     Ok(ForceReport {
-        position: ans.position,
+        position: an.numbering.number(at),
         links: ans.links.clone(),
         mu: ans.mu,
         delta,
@@ -321,7 +322,7 @@ fn with_links(
     an: &Analysis,
     loads: &[Load],
     plans: &[ForcePlan],
-    ans: &ForceAnswer,
+    (position, ans): (usize, &ForceAnswer),
 ) -> Result<ForceAnswer> {
     let mut ans = ans.clone();
     if ans.links.is_empty() {
@@ -336,8 +337,7 @@ fn with_links(
             return Err(Error::scene(
                 "svg",
                 format!(
-                    "no force plan of position {} has all the forces labelled ({})",
-                    ans.position,
+                    "no force plan of position {position} has all the forces labelled ({})",
                     names.join(", ")
                 ),
             ));

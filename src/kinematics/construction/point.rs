@@ -296,29 +296,7 @@ impl Builder<'_> {
                 };
                 let out = self.add_point(id, at, e);
                 if self.plan.judged.last().is_some_and(|j| j.point == out) {
-                    // A replay: the same point by the figure on any other
-                    // pair of the link's known points is as right, and so
-                    // is the relative vector of the link's rates from one
-                    // of them (in the right construction: in a mistaken
-                    // one it would be the right place again).
-                    // (A route through a point the student drew wrong is no
-                    // excuse: the figure on the student's own points is
-                    // judged, carried forward, by the route the plan takes;
-                    // another pair, or the link's rate, only where it
-                    // stands on points drawn right.)
-                    let known_right: Vec<(Vec2, usize)> = known
-                        .iter()
-                        .copied()
-                        .filter(|k| !self.drawn_wrong(k.1))
-                        .collect();
-                    let mut others = self.figures(local, &known_right, mirrored);
-                    if self.variant.mistake.is_none() && self.rate_stands_right(link) {
-                        others.extend(self.relations(link, x, &known_right));
-                    }
-                    let j = self.plan.judged.last_mut().expect("just judged");
-                    // (Each read off as the point itself is: to δ, and
-                    // typed to its digits.)
-                    j.others = others.into_iter().map(|(p, t)| (p, t + j.rounding)).collect();
+                    self.other_routes(link, (x, local), known, mirrored);
                 }
                 self.step(|| Act::Figure {
                     a: pa,
@@ -333,6 +311,29 @@ impl Builder<'_> {
         };
         learn(self, out);
         out
+    }
+
+    /// A replay: the same point by the figure on any other pair of the
+    /// link's known points is as right, and so is the relative vector of
+    /// the link's rates from one of them (in the right construction: in a
+    /// mistaken one it would be the right place again) — but a route
+    /// through a point the student drew wrong is no excuse: the figure on
+    /// the student's own points is judged, carried forward, by the route
+    /// the plan takes; another pair, or the link's rate, only where it
+    /// stands on points drawn right. Each is read off as the point itself
+    /// is (to δ, and typed to its digits).
+    fn other_routes(&mut self, link: usize, (x, local): (Point, Vec2), known: &[(Vec2, usize)], mirrored: bool) {
+        let known_right: Vec<(Vec2, usize)> = known
+            .iter()
+            .copied()
+            .filter(|k| !self.drawn_wrong(k.1))
+            .collect();
+        let mut others = self.figures(local, &known_right, mirrored);
+        if self.variant.mistake.is_none() && self.rate_stands_right(link) {
+            others.extend(self.relations(link, x, &known_right));
+        }
+        let j = self.plan.judged.last_mut().expect("just judged");
+        j.others = others.into_iter().map(|(p, t)| (p, t + j.rounding)).collect();
     }
 
     /// In a replay, is plan point `i` one the student drew off its step's

@@ -81,6 +81,12 @@ pub struct Analysis {
     /// Scale of the plan of the mechanism, m/mm: `want.scales.mu_l`, else
     /// the standard value that draws the sketch's extent within 200 mm.
     pub mu_l: f64,
+    /// How the positions are numbered in everything written and read
+    /// (sheets, file names, result files, `--position`, reports): the
+    /// scene's ([`crate::model::scene::PositionsSpec::numbering`]: a
+    /// `count` sweep from 0, given values from 1), or another a study
+    /// asks for (`--positions-from`).
+    pub numbering: crate::model::scene::Numbering,
 }
 
 /// Plan scales fixed for single positions: by index from 0, (μ_v, μ_a).
@@ -160,6 +166,7 @@ impl Analysis {
             ..Drafting::default()
         };
         let plans = sc.want.plans && order.is_some();
+        let numbering = sc.positions.numbering();
         Ok(Analysis {
             mech,
             structure,
@@ -174,6 +181,7 @@ impl Analysis {
             drafting,
             scales_at: Default::default(),
             mu_l,
+            numbering,
         })
     }
 

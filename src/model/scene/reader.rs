@@ -3,7 +3,7 @@
 //! links, coordinates).
 
 use crate::lang::Lang;
-use super::{LinkSpec, NamedPoint, PositionsSpec, Scene};
+use super::{LinkSpec, NamedPoint, Numbering, PositionsSpec, Scene};
 use crate::error::Issue;
 use crate::json::escape;
 use kurbo::Point;
@@ -200,7 +200,8 @@ impl Reader {
             count,
             top.get("want").and_then(|w| w.get("plans_at")),
         ) {
-            w.plans_at = self.plans_at(at, n);
+            let numbering = positions.as_ref().map_or(Numbering::FROM_1, |p| p.numbering());
+            w.plans_at = self.plans_at(at, n, numbering);
         }
         let dynamics = self.dynamics(top.get("dynamics"), &points, &links, frame, count);
         if let (Some(w), None) = (want.as_ref(), top.get("dynamics"))

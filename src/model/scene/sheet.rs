@@ -3,7 +3,7 @@
 //! on the course sheet.
 
 use super::reader::Reader;
-use super::{PlansAt, SheetInfo};
+use super::{Numbering, PlansAt, SheetInfo};
 use serde_json::Value;
 
 impl Reader {
@@ -65,26 +65,44 @@ impl Reader {
         s
     }
 
-    /// `want.plans_at`: a list of positions (from 1) whose acceleration
-    /// plans go on the course sheet, or `{ "velocity": [...] | "all",
-    /// "acceleration": [...] }`; checked against the number of positions.
-    pub(super) fn plans_at(&mut self, v: &Value, positions: usize) -> PlansAt {
+    /// `want.plans_at`: a list of positions whose acceleration plans go
+    /// on the course sheet, or `{ "velocity": [...] | "all",
+    /// "acceleration": [...], "positions_from": 0 | 1 }`; the numbers in
+    /// the scene's `numbering` (a `count` sweep from 0, given values
+    /// from 1) unless `positions_from` says otherwise, checked against
+    /// the number of positions, kept as the k-th positions (from 1).
+    pub(super) fn plans_at(&mut self, v: &Value, positions: usize, numbering: Numbering) -> PlansAt {
+        let mut numbering = numbering;
+        if let Some(f) = v.get("positions_from") {
+            match f.as_u64().and_then(Numbering::from_first) {
+                Some(n) => numbering = n,
+                None => self.err(
+                    "/want/plans_at/positions_from",
+                    format!("expected 0 or 1, the number of the first position in plans_at, found {f}"),
+                ),
+            }
+        }
+        let range = numbering.range_text(positions);
         let list = |r: &mut Self, v: &Value, at: &str| -> Vec<usize> {
             let Some(a) = v.as_array() else {
-                r.err(at, "expected a list of position numbers (from 1)");
+                r.err(at, format!("expected a list of position numbers ({range})"));
                 return Vec::new();
             };
             let mut out = Vec::new();
             for (k, x) in a.iter().enumerate() {
-                match x.as_u64() {
-                    Some(n) if n >= 1 && n as usize <= positions => {
-                        if !out.contains(&(n as usize)) {
-                            out.push(n as usize)
+                let index = x
+                    .as_u64()
+                    .and_then(|n| usize::try_from(n).ok())
+                    .and_then(|n| numbering.index(n, positions));
+                match index {
+                    Some(i) => {
+                        if !out.contains(&(i + 1)) {
+                            out.push(i + 1)
                         }
                     }
-                    _ => r.err(
+                    None => r.err(
                         format!("{at}/{k}"),
-                        format!("expected a position number from 1 to {positions}"),
+                        format!("expected a position number {range}"),
                     ),
                 }
             }
@@ -98,7 +116,11 @@ impl Reader {
         let Some(o) = self.object(v, "/want/plans_at") else {
             return p;
         };
-        self.only_keys(o, "/want/plans_at", &["velocity", "acceleration"]);
+        self.only_keys(
+            o,
+            "/want/plans_at",
+            &["velocity", "acceleration", "positions_from"],
+        );
         if let Some(x) = o.get("velocity")
             && x.as_str() != Some("all")
         {

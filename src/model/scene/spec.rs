@@ -128,6 +128,74 @@ pub enum PositionsSpec {
     Count { count: usize, output: Option<usize> },
 }
 
+impl PositionsSpec {
+    /// How the scene's positions are numbered: a `count` sweep from 0
+    /// (position 0 is the extreme position that starts the working stroke,
+    /// as the lecture numbers them), every other sweep (the input values
+    /// given: `angles`, `s`, `values`, or the one position) from 1.
+    pub fn numbering(&self) -> Numbering {
+        match self {
+            PositionsSpec::Count { .. } => Numbering::FROM_0,
+            _ => Numbering::FROM_1,
+        }
+    }
+}
+
+/// How positions are numbered: the number of the first, 0 or 1. One
+/// numbering serves every number a person reads or types and a program
+/// reads (the sheets and their files, `--position`, the result files, a
+/// checked answer's `position`, its report, the gradebook, the handout):
+/// the scene's (a `count` sweep from 0, given input values from 1),
+/// unless a study is numbered otherwise (`--positions-from`,
+/// `Study::numbered`); an answer may state its own (`"positions_from"`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Numbering {
+    first: usize,
+}
+
+impl Numbering {
+    /// From 0: a `count` sweep's own numbering.
+    pub const FROM_0: Numbering = Numbering { first: 0 };
+    /// From 1: the numbering of given input values, and the older one of
+    /// every sweep.
+    pub const FROM_1: Numbering = Numbering { first: 1 };
+
+    /// The numbering whose first position is `first`; `None` unless it is
+    /// 0 or 1.
+    pub fn from_first(first: u64) -> Option<Numbering> {
+        match first {
+            0 => Some(Numbering::FROM_0),
+            1 => Some(Numbering::FROM_1),
+            _ => None,
+        }
+    }
+
+    /// The number of the first position: 0 or 1.
+    pub fn first(self) -> usize {
+        self.first
+    }
+
+    /// The number of the position at `index` (from 0, in the sweep's order).
+    pub fn number(self, index: usize) -> usize {
+        index + self.first
+    }
+
+    /// The index (from 0) of position `number` among `count` positions;
+    /// `None` if there is no such position.
+    pub fn index(self, number: usize, count: usize) -> Option<usize> {
+        number.checked_sub(self.first).filter(|&k| k < count)
+    }
+
+    /// The numbers of `count` positions, for a message: "from 0 to 11".
+    pub fn range_text(self, count: usize) -> String {
+        format!(
+            "from {} to {}",
+            self.first,
+            (count + self.first).saturating_sub(1)
+        )
+    }
+}
+
 /// The text for `lang` among `by` (a title given in several languages),
 /// else `default`.
 pub fn in_lang<'a>(
@@ -179,8 +247,9 @@ pub struct SheetInfo {
     pub scale: Option<String>,
 }
 
-/// Which positions' plans the course sheet shows (`want.plans_at`, from
-/// 1); `None`: the default.
+/// Which positions' plans the course sheet shows (`want.plans_at`, read
+/// in the scene's numbering), as the k-th positions (from 1, in the
+/// sweep's order); `None`: the default.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PlansAt {
     pub velocity: Option<Vec<usize>>,

@@ -6,7 +6,8 @@ use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
 use crate::pipeline::Solved;
 
-/// Which positions' plans the sheet shows (numbers from 1): the velocity
+/// Which positions' plans the sheet shows (the k-th, from 1: ordinals, not
+/// the positions' numbers, which `position_number` gives): the velocity
 /// plans of every position (of every k-th beyond 24 positions) unless
 /// `want.plans_at` says; the acceleration plans of `want.plans_at`, by
 /// default the first position (the start of the working stroke) and the

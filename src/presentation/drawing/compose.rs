@@ -15,6 +15,7 @@ use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
+use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use kurbo::Rect;
 use std::collections::BTreeMap;
@@ -287,7 +288,9 @@ fn compose_each(
         // After every sheet of the sources before this one, those left
         // out included.
         let i = counts.range(..at).map(|(_, c)| c).sum::<usize>() + within;
-        sink(render(an, opt, p, (lead + i, lead + n)))
+        let mut sheet = render(an, opt, p, (lead + i, lead + n));
+        sheet.position = at.map(|k| position_number(an, k));
+        sink(sheet)
     })?;
     if all && let Some(d) = diagram::wanted(an, opt)? {
         sink(d)?;
@@ -360,7 +363,7 @@ fn figures(
             emit(Some(k), Pending {
                 centre_on: Some(centre_on),
                 ..pending(
-                    format!("mechanism_{}", k + 1),
+                    format!("mechanism_{}", position_number(an, k)),
                     format!("{}, {pos}", w.mechanism),
                     scale_text("l", mu_l, "m", opt.lang),
                     ("mu_l", mu_l),
@@ -432,7 +435,7 @@ fn position_sheets(
         out.push(Pending {
             table: t,
             ..pending(
-                format!("{name}_{}", k + 1),
+                format!("{name}_{}", position_number(an, k)),
                 format!("{title}, {pos}"),
                 scale_text(sym, plan.mu, unit, opt.lang),
                 (key, plan.mu),
@@ -451,7 +454,7 @@ fn position_sheets(
             scale: None,
             scales,
             ..pending(
-                format!("forces_{}", k + 1),
+                format!("forces_{}", position_number(an, k)),
                 format!("{}, {pos}", forces::title(opt.lang)),
                 String::new(),
                 ("mu_l", 0.0),
@@ -578,7 +581,7 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
             "the plan at μ_{sym} = {mu} {unit} (want.scales.{key}) is at least (its points alone) {} × {} at position {} ({} times the field), larger than the field of sheet {:?} ({} × {})",
             q(points.width()),
             q(points.height()),
-            k + 1,
+            position_number(an, k),
             crate::format::format_number(ratio),
             opt.sheet,
             q(f.0),

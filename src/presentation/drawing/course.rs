@@ -32,7 +32,8 @@ use std::collections::HashMap;
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
     Positions(positions::Trajectories),
-    /// The velocity plans of these positions (from 1) at one μ_v, in a
+    /// The velocity plans of these positions (the k-th, from 1: not their
+    /// numbers, which `position_number` gives) at one μ_v, in a
     /// grid of this many columns.
     Velocities(Vec<usize>, usize),
     /// The acceleration plan of a position.
@@ -191,6 +192,7 @@ fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<S
     Ok(Sheet {
         name: "course".into(),
         title,
+        position: None,
         size,
         scales,
         svg: page.finish(),
@@ -539,7 +541,8 @@ fn extent(p: &Plan) -> Rect {
     })
 }
 
-/// The table of the results of the positions `at` (from 1): a row per
+/// The table of the results of the positions `at` (the k-th, from 1;
+/// headed by their numbers as the sheets show them): a row per
 /// quantity the plans give (its unit in the first column), a column per
 /// position.
 fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang: Lang) -> Ruled {

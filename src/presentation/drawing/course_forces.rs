@@ -246,6 +246,7 @@ fn forces_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<O
     Ok(Some(Sheet {
         name: "course_forces".into(),
         title: name.into(),
+        position: Some(crate::presentation::position_number(an, k)),
         size,
         scales: placed.iter().flat_map(|(f, _)| f.scales.clone()).collect(),
         svg: page.finish(),

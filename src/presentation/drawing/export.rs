@@ -41,12 +41,16 @@ pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
                     false => serde_json::json!(all),
                 });
             }
-            serde_json::json!({
+            let mut sheet = serde_json::json!({
                 "file": name(f),
                 "title": s.title,
                 "size": format!("{:?}", s.size),
                 "scales": scales,
-            })
+            });
+            if let Some(k) = s.position {
+                sheet["position"] = serde_json::json!(k);
+            }
+            sheet
         })
         .collect();
     let mut doc = serde_json::json!({ "mechplan": 1, "sheets": list });

@@ -45,7 +45,7 @@
     return [a, b];
   }
   function show(i) {
-    if (!frames.length) { showPos(1); return; }
+    if (!frames.length) { if (sections.length) showPos(+sections[0].getAttribute('data-pos')); return; }
     i = Math.max(0, Math.min(frames.length - 1, i));
     g = i;
     var f = frames[i], P = plans[f.j];

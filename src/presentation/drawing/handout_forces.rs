@@ -50,7 +50,7 @@ pub(super) fn section(h: &mut String, an: &Analysis, (k, s): (usize, &Solved), l
         return;
     };
     let w = &crate::words::catalogue(lang).handout;
-    let pos = k + 1;
+    let pos = crate::presentation::position_number(an, k);
     let _ = writeln!(
         h,
         "<div class=\"forces\" id=\"pos-{pos}-forces\">\n<h3>{}</h3>",

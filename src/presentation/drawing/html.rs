@@ -10,7 +10,8 @@
 //! elements with `data-step` ≤ the current step. Steps that draw nothing
 //! new (measuring a segment already drawn) mark what they use for their
 //! own step only. `#step=N` opens the N-th step of the whole handout,
-//! `#pos=P` (and `#pos=P&step=K`) a position, `#selftest` steps through
+//! `#pos=P` (and `#pos=P&step=K`) position P (its number as the page shows
+//! it: a `count` sweep from 0), `#selftest` steps through
 //! every step and reports in the page's title.
 //!
 //! The page's style and script are files beside this one (`handout.css`,
@@ -440,8 +441,7 @@ fn page_head(an: &Analysis, solved: &[Solved], lang: Lang, w: &HandoutPhrases) -
     for (k, s) in solved.iter().enumerate() {
         let _ = writeln!(
             h,
-            "<button type=\"button\" class=\"tab\" data-pos=\"{}\">{} {}</button>",
-            k + 1,
+            "<button type=\"button\" class=\"tab\" data-pos=\"{0}\">{0} {1}</button>",
             crate::presentation::position_number(an, k),
             rich(&crate::words::numbers::decimals(
                 &format!("· {}", input_text(an, s, lang)),
@@ -465,11 +465,10 @@ fn position_section(
 ) {
     let w = ui(lang);
     let sheet_words = words(lang);
-    let pos = k + 1;
+    let pos = crate::presentation::position_number(an, k);
     let heading = format!(
-        "{} {}: {}; {}",
+        "{} {pos}: {}; {}",
         w.position,
-        crate::presentation::position_number(an, k),
         input_text(an, s, lang),
         drive_text(an, s, lang)
     );

@@ -168,6 +168,7 @@ pub(super) fn render(an: &Analysis, opt: &DrawOptions, p: Pending, number: (usiz
     Sheet {
         name: p.name,
         title: p.title,
+        position: None,
         size: opt.sheet,
         scales: p.scales,
         svg: page.finish(),
@@ -261,6 +262,7 @@ pub fn page_svg(
     Sheet {
         name,
         title,
+        position: None,
         size,
         scales: Vec::new(),
         svg: page.finish(),

@@ -10,6 +10,7 @@ use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
 use crate::kinematics::construction::scale::standard_scale;
 use crate::kinematics::solve::Analysis;
+use crate::presentation::position_number;
 use crate::kinetostatics::lever::{Lever, LeverForce, Part};
 use crate::kinetostatics::{Balancing, Origin};
 use crate::words::catalogue::LeverPhrases;
@@ -373,11 +374,11 @@ pub(super) fn pending(
         let t = table(an, &l, opt.lang);
         let (name, title) = if several {
             (
-                format!("lever_{}_{}", k + 1, input + 1),
+                format!("lever_{}_{}", position_number(an, k), input + 1),
                 format!("{}, {}, {pos}", w.title, input_text(&l, opt.lang)),
             )
         } else {
-            (format!("lever_{}", k + 1), format!("{}, {pos}", w.title))
+            (format!("lever_{}", position_number(an, k)), format!("{}, {pos}", w.title))
         };
         out.push(super::Pending {
             sheet: None,

@@ -77,6 +77,11 @@ pub struct Sheet {
     pub name: String,
     /// The sheet's title, as its heading says it.
     pub title: String,
+    /// The position a sheet of one position draws (its plan of the
+    /// mechanism, plans, forces, lever; the course's force analysis): its
+    /// number as the heading and the file's name say it, in the study's
+    /// numbering (a `count` sweep from 0, given input values from 1).
+    pub position: Option<usize>,
     /// The sheet format it is drawn on.
     pub size: SheetSize,
     /// The scales of its figures by name (`mu_l` m/mm, `mu_v` (m/s)/mm,

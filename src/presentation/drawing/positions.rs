@@ -1,5 +1,6 @@
 //! The positions sheet (lecture Fig. 2.1): the mechanism in every solved
-//! position, numbered from 1, the first in main lines, every rigid link a
+//! position, numbered as the sheets number them (a `count` sweep from 0,
+//! given values from 1), the analysed one in main lines, every rigid link a
 //! closed figure in each, the output's extreme positions the others leave
 //! out in dash-dot-dot lines, with the trajectories of the coupler points
 //! drawn through many more positions.
@@ -98,7 +99,7 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
                 at,
                 Label::new(crate::presentation::position_number(an, k).to_string(), ""),
                 SMALL,
-                Some(format!("pos-{}", k + 1)),
+                Some(format!("pos-{}", crate::presentation::position_number(an, k))),
             );
         }
     }
@@ -124,7 +125,10 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
                     at,
                     Label::new(crate::presentation::position_number(an, k).to_string(), ""),
                     SMALL,
-                    Some(format!("slider-{j}-pos-{}", k + 1)),
+                    Some(format!(
+                        "slider-{j}-pos-{}",
+                        crate::presentation::position_number(an, k)
+                    )),
                 );
             }
         }
