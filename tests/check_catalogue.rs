@@ -391,6 +391,7 @@ fn seen(
     let mut drawing = Drawing {
         points: Vec::new(),
         triads: reference.triads.clone(),
+        circles: Vec::new(),
     };
     for (key, at) in points {
         let i = reference.points.iter().position(|q| &q.key == key)?;

@@ -33,6 +33,7 @@ mod relative;
 mod scale;
 mod stated;
 mod steps;
+mod table;
 pub mod svg;
 pub mod dxf;
 mod dxf_text;

@@ -5,9 +5,8 @@
 //! a point drawn wrong is judged as a reading, not as the mistake again.
 
 use super::candidates::Builds;
-use super::items::{expect, resolve};
+use super::items::expect;
 use super::verdict::{Judgement, MAX_TOLERANCE_OF_PLAN, Report, StepReport, Verdict};
-use super::answer::Given;
 use crate::words::check;
 use crate::words::numbers::quantity;
 
@@ -25,22 +24,25 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
         .map(|p| p.at.hypot())
         .fold(0.0, f64::max);
     let n = b.ans.items.len();
+    let gives = super::table::gives(b, standard);
     let mut out: Vec<Verdict> = b
         .ans
         .items
         .iter()
         .zip(&global.verdicts)
-        .map(|(it, g)| {
-            if let Given::Point { name, .. } = &it.given {
-                let step = resolve(standard, name).and_then(|i| {
-                    let id = standard.points[i].id;
-                    let nth = standard.points[..i].iter().filter(|p| p.id == id).count();
-                    let k = replay
-                        .judged
-                        .iter()
-                        .position(|j| j.id == id && j.nth == nth)?;
-                    Some(&steps.steps[k])
-                });
+        .zip(&gives)
+        .map(|((it, g), gives)| {
+            // A point the item gives (drawn, or a table's measure of it):
+            // judged at the step that draws it.
+            if let Some((i, _)) = gives {
+                let i = *i;
+                let id = standard.points[i].id;
+                let nth = standard.points[..i].iter().filter(|p| p.id == id).count();
+                let step = replay
+                    .judged
+                    .iter()
+                    .position(|j| j.id == id && j.nth == nth)
+                    .map(|k| &steps.steps[k]);
                 return match step {
                     Some(s) => Verdict {
                         pointer: it.pointer.clone(),

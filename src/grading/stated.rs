@@ -11,7 +11,7 @@
 use super::answer::{Stated, StatedQuantity};
 use super::candidates::Builds;
 use super::items::slide_of;
-use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, Verdict};
+use super::verdict::{Candidate, Found, Judgement, Verdict};
 use crate::error::{Issue, Result};
 use crate::format::format_number;
 use crate::kinematics::construction::{Op, Plan};
@@ -66,11 +66,11 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
         let tol = t.bound + s.rounding;
         let difference = (s.value - t.value).abs();
         let wrong = difference > tol;
-        let tol_mm = t.bound * t.mm_per_unit;
-        let unreadable = (!wrong && tol_mm > MAX_TOLERANCE_OF_PLAN * size).then(|| {
-            let q = |x: f64| crate::words::numbers::quantity(x, "mm", lang);
-            check::fill(&w.too_wide, &[("tol", &q(tol_mm)), ("size", &q(size))])
-        });
+        let unreadable = if wrong {
+            None
+        } else {
+            ambiguous(b, s, t, size, lang)
+        };
         let sentence = match t.step {
             Some(k) => check::step(&vel, k, lang),
             None => check::fill(&w.stated_given, &[("name", &name), ("value", &fmt(t.value))]),
@@ -192,6 +192,65 @@ fn truth(b: &Builds, vel: &Plan, s: &Stated) -> std::result::Result<Truth, Issue
     }
 }
 
+/// The typical ways a value is read off the velocity plan wrong, as
+/// factors of the true value, each with its name: the sense the wrong way
+/// (×−1), μ_v in the wrong units (×1000, ×1/1000), the relative segment
+/// taken half or twice (×½, ×2), the link's length taken for another's
+/// (× l_own/l_other).
+fn misreadings(b: &Builds, s: &Stated, lang: Lang) -> Vec<(f64, String)> {
+    let w = check::phrases(lang);
+    let name = name_of(s);
+    let mut out = vec![
+        (-1.0, check::fill(&w.stated_sense, &[("name", &name)])),
+        (1000.0, w.stated_units.clone()),
+        (1e-3, w.stated_units.clone()),
+        (0.5, check::fill(&w.stated_plain, &[("name", &name)])),
+        (2.0, check::fill(&w.stated_plain, &[("name", &name)])),
+    ];
+    if matches!(s.quantity, StatedQuantity::Slide(_)) {
+        out.remove(0);
+    }
+    out.extend(lengths(b, s).into_iter().map(|(f, own, other)| {
+        let args = [("name", name.as_str()), ("own", &own), ("other", &other)];
+        (f, check::fill(&w.stated_length, &args))
+    }));
+    out
+}
+
+/// Why a stated value within its tolerance cannot be judged: a typical
+/// misreading ([`misreadings`]) puts the value within its own tolerance
+/// too (the misread value's tolerance scales with it), visibly apart from
+/// the true one (by more than the rounding of the digits written). On a
+/// velocity plan drawn so coarsely, or so near a dead point, that its
+/// tolerance covers both, the stated value could be either; elsewhere a
+/// value near the true one is right.
+fn ambiguous(b: &Builds, s: &Stated, t: &Truth, size: f64, lang: Lang) -> Option<String> {
+    let w = check::phrases(lang);
+    let fmt = |x: f64| decimals(&format_number(x), lang);
+    misreadings(b, s, lang).into_iter().find_map(|(f, why)| {
+        let value = f * t.value;
+        let within = (s.value - value).abs() <= f.abs() * t.bound + s.rounding;
+        let apart = (value - t.value).abs() > 2.0 * s.rounding;
+        (within && apart).then(|| {
+            // Drawn k times larger, the velocity plan's bound shrinks k
+            // times while the two values stay apart.
+            let k = (2.0 * (f.abs() + 1.0) * t.bound / (value - t.value).abs()).max(1.1);
+            let tol_mm = t.bound * t.mm_per_unit;
+            let _ = size;
+            check::fill(
+                &w.ambiguous_stated,
+                &[
+                    ("tol", &fmt(t.bound + s.rounding)),
+                    ("mistake", &why),
+                    ("value", &fmt(value)),
+                    ("mm", &fmt(tol_mm)),
+                    ("k", &fmt((k * 10.0).ceil() / 10.0)),
+                ],
+            )
+        })
+    })
+}
+
 /// The factor by which every stated ω is off, where at least two are
 /// wrong and one factor explains them all (each within its tolerance):
 /// the velocity plan's μ_v applied wrongly.
@@ -259,15 +318,18 @@ fn diagnosis(b: &Builds, s: &Stated, t: &Truth, common: Option<f64>, lang: Lang)
     format!("{head} {why}")
 }
 
-/// Where a stated ω is its relative velocity over another link's length
-/// (ab read with the crank's length: ω2 = v_BA/l_OA): the link's own
-/// segment and the other one's, as l_AB, l_OA.
-fn other_length(b: &Builds, s: &Stated, t: &Truth) -> Option<(String, String)> {
+/// The factors l_own/l_other by which a stated ω is off where it is its
+/// relative velocity over another link's length (ab read with the
+/// crank's length: ω2 = v_BA/l_OA), with the link's own segment and the
+/// other one's, as l_AB, l_OA.
+fn lengths(b: &Builds, s: &Stated) -> Vec<(f64, String, String)> {
     let StatedQuantity::Omega(id) = &s.quantity else {
-        return None;
+        return Vec::new();
     };
     let m = &b.an.mech;
-    let l = m.scene.link_index(id)?;
+    let Some(l) = m.scene.link_index(id) else {
+        return Vec::new();
+    };
     let c = &b.s.config;
     // Each moving link's length between its first two points, and its
     // segment's name.
@@ -278,12 +340,23 @@ fn other_length(b: &Builds, s: &Stated, t: &Truth) -> Option<(String, String)> {
         let d = (c.point(m, k, q) - c.point(m, k, p)).hypot();
         (d > 0.0).then(|| (d, format!("l_{}{}", m.point_name(p), m.point_name(q))))
     };
-    let (own, own_name) = length(l)?;
-    let tol = t.bound + s.rounding;
+    let Some((own, own_name)) = length(l) else {
+        return Vec::new();
+    };
     (0..m.links.len())
         .filter(|&k| k != l && k != m.frame())
         .filter_map(length)
         .filter(|(d, _)| (d - own).abs() > 1e-6 * own)
-        .find(|(d, _)| (s.value.abs() - t.value.abs() * own / d).abs() <= tol * own / d + s.rounding)
-        .map(|(_, other)| (own_name, other))
+        .map(|(d, other)| (own / d, own_name.clone(), other))
+        .collect()
+}
+
+/// Where a stated ω is its relative velocity over another link's length:
+/// the link's own segment and the other one's.
+fn other_length(b: &Builds, s: &Stated, t: &Truth) -> Option<(String, String)> {
+    let tol = t.bound + s.rounding;
+    lengths(b, s)
+        .into_iter()
+        .find(|(f, ..)| (s.value.abs() - t.value.abs() * f).abs() <= tol * f + s.rounding)
+        .map(|(_, own, other)| (own, other))
 }

@@ -18,9 +18,7 @@
 //! says how much larger the plan would have to be drawn to tell them
 //! apart.
 
-use super::answer::Given;
 use super::candidates::{Builds, MISTAKES, mistake_sentence_at, other_branches};
-use super::items::resolve;
 use super::verdict::{Candidate, Found, Judgement, MAX_TOLERANCE_OF_PLAN, StepReport, StepVerdict};
 use crate::accuracy::ACCURACY;
 use crate::error::Result;
@@ -30,26 +28,10 @@ use crate::words::check;
 use crate::words::numbers::{decimals, quantity};
 use kurbo::Vec2;
 
-/// The points the answer draws, as a replay takes them: the `nth` plan
-/// point of an id (as the right plan `standard` has it), where the student
-/// drew it. The pole is the origin of the student's coordinates.
+/// The points the answer gives, as a replay takes them
+/// ([`super::table::drawing`]: drawn points, and a table's measures).
 pub(super) fn given_points(b: &Builds, standard: &Plan) -> Drawing {
-    let mut out = Drawing {
-        points: Vec::new(),
-        triads: standard.triads.clone(),
-    };
-    for it in &b.ans.items {
-        let Given::Point { name, at } = &it.given else {
-            continue;
-        };
-        let Some(i) = resolve(standard, name).filter(|&i| i != 0) else {
-            continue;
-        };
-        let id = standard.points[i].id;
-        let nth = standard.points[..i].iter().filter(|p| p.id == id).count();
-        out.points.push((id, nth, Vec2::new(at[0], at[1]), it.rounding));
-    }
-    out
+    super::table::drawing(b, standard)
 }
 
 /// A mistaken construction replayed on the student's points, and the
@@ -84,7 +66,7 @@ struct Judge<'a> {
 /// point (its segments and values are then judged on the right plan).
 pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<StepReport>> {
     let given = given_points(b, standard);
-    if given.points.is_empty() {
+    if given.points.is_empty() && given.circles.is_empty() {
         return Ok(None);
     }
     let plain = b.replay(&b.s.config, Variant::default(), &given)?;
@@ -340,7 +322,11 @@ impl Judge<'_> {
                     ([_, _], [_, _]) => separation(e, x) > visible,
                     _ => f.2 > visible,
                 };
-                seen && odds(e, x) >= 0.0
+                // A point known by its length alone: the mistake's own
+                // replay puts every later point of the answer on its
+                // circle too, or the answer rules it out.
+                let whole = !e.on_circle || f.0.plan.judged.iter().all(|y| y.misfit() <= 1.0);
+                seen && whole && odds(e, x) >= 0.0
             })
             .min_by(|a, b| a.2.total_cmp(&b.2))?;
         let mu = self.b.ans.mu;
@@ -356,6 +342,19 @@ impl Judge<'_> {
             .min(e.misfit_at(x.nearest().0))
             .max(1e-9);
         let k = (2.0 / m).max(1.1);
+        if e.on_circle {
+            // A length without its direction: the direction decides.
+            let seg = format!("{} {}", self.plain.points[0].name(), self.plain.points[e.point].name());
+            return Some(check::fill(
+                &check::phrases(self.lang).ambiguous_circle,
+                &[
+                    ("tol", &quantity(tol, "mm", self.lang)),
+                    ("moved", &quantity(*moved, "mm", self.lang)),
+                    ("mistake", &self.sentence(t)),
+                    ("seg", &seg),
+                ],
+            ));
+        }
         Some(check::fill(
             &check::phrases(self.lang).ambiguous_step,
             &[

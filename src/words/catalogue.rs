@@ -478,6 +478,9 @@ pub struct CheckPhrases {
     pub ambiguous_step: String,
     /// `{tol}`, `{moved}`, `{mistake}`.
     pub ambiguous: String,
+    /// A point known by its length from the pole only: `{tol}`,
+    /// `{moved}`, `{mistake}`, `{seg}`.
+    pub ambiguous_circle: String,
     /// `{mistake}`.
     pub on_velocity_plan: String,
     /// A value stated as read off the velocity plan: its item's name
@@ -501,6 +504,10 @@ pub struct CheckPhrases {
     pub stated_plain: String,
     /// The drawing is built with the right value, not the one stated.
     pub stated_unused: String,
+    /// A stated value that a typical misreading gives as well: `{tol}`,
+    /// `{mistake}`, `{value}`, `{mm}` (the tolerance on the velocity
+    /// plan), `{k}` (how many times larger to draw it).
+    pub ambiguous_stated: String,
     /// The grade and a mistake's line for a mistake made before the plan
     /// is drawn (a value read off the velocity plan, the scale): `{mistake}`;
     /// `{n}`, `{mistake}`.

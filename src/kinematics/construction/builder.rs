@@ -177,7 +177,7 @@ impl<'a> Builder<'a> {
     /// In a replay, where the student drew the next plan point of `id`.
     #[inline]
     pub fn given(&self, id: PointId) -> Option<(Vec2, f64)> {
-        if self.t.given.points.is_empty() {
+        if self.t.given.points.is_empty() && self.t.given.circles.is_empty() {
             return None;
         }
         let nth = self.nth(id);
@@ -189,13 +189,33 @@ impl<'a> Builder<'a> {
             .map(|g| (g.2, g.3))
     }
 
+    /// In a replay, the next plan point of `id` where the student's
+    /// circle about the pole (their length without its direction) is
+    /// nearest the construction's place `at`, and its rounding.
+    fn on_circle(&self, id: PointId, at: Vec2) -> Option<(Vec2, f64)> {
+        if self.t.given.circles.is_empty() {
+            return None;
+        }
+        let nth = self.nth(id);
+        let &(_, _, r, rounding) = self
+            .t
+            .given
+            .circles
+            .iter()
+            .find(|c| c.0 == id && c.1 == nth)?;
+        let d = at.hypot();
+        let unit = if d > 0.0 { at / d } else { Vec2::new(1.0, 0.0) };
+        Some((unit * r, rounding))
+    }
+
     /// A new plan point `id` where the construction puts it, with its
     /// error radius; in a replay, a point the student drew is judged
     /// against that place and then taken where the student drew it, read
     /// to δ: every later step starts from the student's own points.
     #[inline]
     pub fn add_point(&mut self, id: PointId, at: Vec2, err: f64) -> usize {
-        let (at, err) = match self.given(id) {
+        let circle = self.on_circle(id, at);
+        let (at, err) = match self.given(id).or(circle) {
             Some((given, rounding)) => {
                 let nth = self.nth(id);
                 // Read to δ, and typed to its digits.
@@ -208,6 +228,7 @@ impl<'a> Builder<'a> {
                     tol: err + read,
                     given,
                     rounding,
+                    on_circle: circle.is_some(),
                     others: Vec::new(),
                     lines: Vec::new(),
                     step: self.taken,

@@ -303,6 +303,13 @@ pub struct Drawing {
     /// the student's points do not tell which pair they used, the same
     /// (so that a special point σ they measured is the same point).
     pub triads: Vec<(usize, usize, usize)>,
+    /// Points known only by their distance from the pole (a table's
+    /// segment without its direction, a value |v_X|): the `nth` plan
+    /// point of an id on the circle of this radius about the pole (mm),
+    /// and its rounding. A replay puts such a point where the circle is
+    /// nearest the step's place: its step is judged by how far the circle
+    /// passes from it, and every later step starts from there.
+    pub circles: Vec<(PointId, usize, f64, f64)>,
 }
 
 /// A point a student drew, as the construction's step that draws it
@@ -327,6 +334,10 @@ pub struct Judged {
     /// The rounding of its coordinates as typed, mm: counted with the
     /// reading of the point in every tolerance of its step.
     pub rounding: f64,
+    /// Known only by its distance from the pole ([`Drawing::circles`]):
+    /// the student's point is where that circle is nearest the step's
+    /// place, so the step judges its length, not its direction.
+    pub on_circle: bool,
     /// The same point by another right construction (a similar figure on
     /// another pair of known points): place and tolerance.
     pub others: Vec<(Vec2, f64)>,

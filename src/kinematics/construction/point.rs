@@ -613,7 +613,7 @@ impl Builder<'_> {
         }
         // A replay draws a point of a link the way the student did, by
         // its figure where the link has two known points.
-        let replay = !self.t.given.points.is_empty() && best.is_some();
+        let replay = !(self.t.given.points.is_empty() && self.t.given.circles.is_empty()) && best.is_some();
         if let Some((_, rate_err)) = self.plan.rates[link].filter(|_| !replay) {
             for (a, &(la, pa)) in known.iter().enumerate() {
                 let r = (x - self.c.pose(link).apply(la)).hypot();
