@@ -865,34 +865,7 @@ fn one_early_mistake_is_carried_forward() {
 /// it but the elided items, in order).
 #[test]
 fn the_worked_example_in_the_docs() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let page = std::fs::read_to_string(format!("{root}/docs/check.md")).unwrap();
-    let example = &page[page.find("### A worked example").unwrap()..];
-    let block = |fence: &str| {
-        let start = example.find(fence).unwrap() + fence.len();
-        let end = start + example[start..].find("```").unwrap();
-        example[start..end].to_string()
-    };
-    let (answer, printed) = (block("```json\n"), block("```text\n"));
-    let dir = std::env::temp_dir().join(format!("mechplan-worked-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("answer.json");
-    std::fs::write(&file, answer).unwrap();
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(["check", &format!("{root}/fixtures/six_link_fig2_10.json")])
-        .arg(&file)
-        .output()
-        .unwrap();
-    std::fs::remove_dir_all(&dir).ok();
-    assert_eq!(out.status.code(), Some(1));
-    let text = String::from_utf8(out.stdout).unwrap();
-    let mut lines = text.lines();
-    for want in printed.lines().filter(|l| *l != "…") {
-        assert!(
-            lines.any(|l| l == want),
-            "the page prints a line the command does not, in this order:\n{want}\n---\n{text}"
-        );
-    }
+    check_docs_example("### A worked example", "six_link_fig2_10");
 }
 
 /// A forgotten a^n_BA is named at the step that should have laid it off,

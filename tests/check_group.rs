@@ -615,11 +615,7 @@ fn a_value_written_wrong_is_named_in_the_gradebook() {
         let v = &doc["positions"][k]["points"][p]["v"];
         v[0].as_f64().unwrap().hypot(v[1].as_f64().unwrap())
     };
-    let eps = |k: usize, l: &str| {
-        doc["positions"][k]["links"][l]["epsilon"]
-            .as_f64()
-            .unwrap()
-    };
+    let eps = |k: usize, l: &str| doc["positions"][k]["links"][l]["epsilon"].as_f64().unwrap();
     // (file, answer, what is named (en, uk), written, right).
     let mut cases: Vec<(&str, Value, [&str; 2], f64, f64)> = Vec::new();
     let mut a = points(&doc, "velocity", 3, &abcd, &mut noise);

@@ -108,3 +108,47 @@ pub fn dxf_block(doc: &str) -> String {
     let start = text.find("```dxf\n").expect("a dxf block in the document") + 7;
     text[start..start + text[start..].find("```").unwrap()].to_string()
 }
+
+/// A worked example of docs/check.md, as the page prints it: the first
+/// ```json block after the line `heading` is the answer, checked by the
+/// command on `fixtures/{fixture}.json`; the command exits with status 1
+/// (an answer with a mistake) and prints every line of the first ```text
+/// block after the heading, in that order (a line "…" stands for lines
+/// the page leaves out).
+pub fn check_docs_example(heading: &str, fixture: &str) {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let page = std::fs::read_to_string(format!("{root}/docs/check.md")).unwrap();
+    let at = page
+        .find(&format!("\n{heading}\n"))
+        .unwrap_or_else(|| panic!("docs/check.md has no heading {heading:?}"));
+    let example = &page[at..];
+    let block = |fence: &str| {
+        let start = example.find(fence).unwrap() + fence.len();
+        let end = start + example[start..].find("```").unwrap();
+        example[start..end].to_string()
+    };
+    let (answer, printed) = (block("```json\n"), block("```text\n"));
+    let tag: String = heading
+        .chars()
+        .filter(char::is_ascii_alphanumeric)
+        .collect();
+    let dir = std::env::temp_dir().join(format!("mechplan-docs-{}-{tag}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("answer.json");
+    std::fs::write(&file, answer).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["check", &format!("{root}/fixtures/{fixture}.json")])
+        .arg(&file)
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{heading}: {text}");
+    let mut lines = text.lines();
+    for want in printed.lines().filter(|l| *l != "…") {
+        assert!(
+            lines.any(|l| l == want),
+            "{heading}: the page prints a line the command does not, in this order:\n{want}\n---\n{text}"
+        );
+    }
+}
