@@ -336,7 +336,8 @@ pub(super) fn expectations(b: &Builds, p: &Plan, factor: f64) -> Option<Vec<Expe
 }
 
 /// Is item `k` (within its tolerance) one this answer cannot be judged
-/// on? Either its tolerance exceeds [`MAX_TOLERANCE_OF_PLAN`] of the plan,
+/// on (why, and whether because a typical mistake explains the whole
+/// answer as well)? Either its tolerance exceeds [`MAX_TOLERANCE_OF_PLAN`] of the plan,
 /// or the whole answer fits some typical mistake's construction within its
 /// tolerances as well, and that construction moves this item visibly (by
 /// more than the pencil's δ): the answer could be that mistake drawn
@@ -348,7 +349,7 @@ pub(super) fn cannot_judge(
     candidates: &[Fit],
     student_mu: f64,
     lang: Lang,
-) -> Option<String> {
+) -> Option<(String, bool)> {
     let w = check::phrases(lang);
     let quantity = |x: f64, unit: &str| quantity(x, unit, lang);
     // An item's tolerance in mm on the plan.
@@ -356,7 +357,7 @@ pub(super) fn cannot_judge(
     let tol_mm = mm(e)?;
     if size > 0.0 && tol_mm > MAX_TOLERANCE_OF_PLAN * size {
         let (tol, size) = (quantity(tol_mm, "mm"), quantity(size, "mm"));
-        return Some(check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]));
+        return Some((check::fill(&w.too_wide, &[("tol", &tol), ("size", &size)]), false));
     }
     for f in candidates {
         let other = &f.items[k];
@@ -371,13 +372,16 @@ pub(super) fn cannot_judge(
         let judges = mm(other).is_none_or(|t| t <= MAX_TOLERANCE_OF_PLAN * size);
         if moved > e.visible && fits && judges {
             let mistake = mistake_sentence(f.c, student_mu, &e.what, lang);
-            return Some(check::fill(
-                &w.ambiguous,
-                &[
-                    ("tol", &quantity(e.tol, e.unit)),
-                    ("moved", &quantity(moved, e.unit)),
-                    ("mistake", &mistake),
-                ],
+            return Some((
+                check::fill(
+                    &w.ambiguous,
+                    &[
+                        ("tol", &quantity(e.tol, e.unit)),
+                        ("moved", &quantity(moved, e.unit)),
+                        ("mistake", &mistake),
+                    ],
+                ),
+                true,
             ));
         }
     }

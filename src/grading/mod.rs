@@ -89,7 +89,7 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     let (_, s) = position_of(an, solved, ans.position)?;
     let b = Builds::new(an, s, ans, lang);
     let stated = stated::judge(&b, lang)?;
-    let mut report = against_true_plan(an, solved, ans, lang, &stated)?;
+    let (mut report, _) = against_true_plan(an, solved, ans, lang, &stated)?;
     pole_at_the_origin(ans, &report.plan_built)?;
     let Some(mut steps) = steps::judge(&b, &report.plan_built, lang)? else {
         return Ok(report);
@@ -141,13 +141,23 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     let global = report.clone();
     report.verdicts = relative::verdicts(&b, &report, &steps);
     let second = SecondOpinion::of(&global, (&steps, report.grade()), lang);
-    report.diagnosis = steps.mistakes.first().map(|f| Diagnosis {
-        mistake: f.mistake.clone(),
-        explanation: f.explanation,
-        step: Some(f.step.clone()),
-        explained: f.points.len(),
-        alternatives: f.alternatives.clone(),
-    });
+    // The mistake of the first wrong step; where it is not recognised,
+    // or every step is right but items read off them are wrong (a
+    // table's rates, values), the one the true plan's comparison names
+    // from all the items together, if any.
+    let global_named = global.diagnosis.clone().filter(|d| d.mistake.is_some());
+    report.diagnosis = steps
+        .mistakes
+        .first()
+        .filter(|f| f.mistake.is_some() || global_named.is_none())
+        .map(|f| Diagnosis {
+            mistake: f.mistake.clone(),
+            explanation: f.explanation,
+            step: Some(f.step.clone()),
+            explained: f.points.len(),
+            alternatives: f.alternatives.clone(),
+        })
+        .or_else(|| global_named.filter(|_| report.wrong() > 0));
     report.second_opinion = Some(second);
     report.steps = Some(steps);
     Ok(report)
@@ -202,14 +212,16 @@ fn pole_at_the_origin(ans: &Answer, plan: &crate::kinematics::construction::Plan
 }
 
 /// Every item of `answer` against the true plan at the student's scale,
-/// with the tolerance accumulated along the whole construction.
+/// with the tolerance accumulated along the whole construction; and which
+/// items cannot be judged because a typical mistake explains the whole
+/// answer as well.
 fn against_true_plan(
     an: &Analysis,
     solved: &[Solved],
     ans: &Answer,
     lang: Lang,
     stated: &[stated::StatedJudged],
-) -> Result<Report> {
+) -> Result<(Report, Vec<bool>)> {
     let (at, s) = position_of(an, solved, ans.position)?;
     if !an.plans
         || an.order.is_none()
@@ -238,14 +250,19 @@ fn against_true_plan(
     // The plan's size: the farthest of its points from the pole.
     let size = plan.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
     let mut verdicts = Vec::new();
+    let mut ambiguous = vec![false; ans.items.len()];
     for (k, (it, e)) in ans.items.iter().zip(&exp).enumerate() {
         let difference = (e.given - e.expected).abs();
         let judgement = if difference > e.tol {
             Judgement::Wrong
         } else {
-            cannot_judge(k, e, (size, plan.mu), &candidates, ans.mu, lang)
-                .map(Judgement::CannotJudge)
-                .unwrap_or(Judgement::Right)
+            match cannot_judge(k, e, (size, plan.mu), &candidates, ans.mu, lang) {
+                Some((why, by_mistake)) => {
+                    ambiguous[k] = by_mistake;
+                    Judgement::CannotJudge(why)
+                }
+                None => Judgement::Right,
+            }
         };
         verdicts.push(Verdict {
             pointer: it.pointer.clone(),
@@ -292,5 +309,5 @@ fn against_true_plan(
             None => diagnose(&b, &report, &exp, &candidates),
         });
     }
-    Ok(report)
+    Ok((report, ambiguous))
 }

@@ -5,8 +5,9 @@
 //! a point drawn wrong is judged as a reading, not as the mistake again.
 
 use super::candidates::Builds;
+use super::answer::{Given, Item};
 use super::items::expect;
-use super::verdict::{Judgement, MAX_TOLERANCE_OF_PLAN, Report, StepReport, Verdict};
+use super::verdict::{Judgement, MAX_TOLERANCE_OF_PLAN, Report, StepReport, StepVerdict, Verdict};
 use crate::words::check;
 use crate::words::numbers::quantity;
 
@@ -44,7 +45,7 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
                     .position(|j| j.id == id && j.nth == nth)
                     .map(|k| &steps.steps[k]);
                 return match step {
-                    Some(s) => Verdict {
+                    Some(s) if matches!(it.given, Given::Point { .. }) => Verdict {
                         pointer: it.pointer.clone(),
                         key: it.key.clone(),
                         what: check::fill(&w.point_from_own, &[("name", &s.point)]),
@@ -57,6 +58,9 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
                         step: Some(s.step.clone()),
                         judgement: s.judgement.clone(),
                     },
+                    // A table's measure of the point: in its own terms,
+                    // against what the step puts there, judged as the step.
+                    Some(s) => table_verdict(b, it, g, s),
                     None => g.clone(),
                 };
             }
@@ -92,4 +96,48 @@ pub(super) fn verdicts(b: &Builds, global: &Report, steps: &StepReport) -> Vec<V
     // the true ones, as the true plan's report has them.
     out.extend(global.verdicts.iter().skip(n).cloned());
     out
+}
+
+/// The verdict of a table's measure `it` of a point (a segment from the
+/// pole, its direction, the point's value) judged at that point's step
+/// `s`: what the step puts there in the measure's own unit, the student's
+/// measure, the step's tolerance in that unit, the step's judgement. (`g`:
+/// the true plan's verdict, for its name.)
+fn table_verdict(b: &Builds, it: &Item, g: &Verdict, s: &StepVerdict) -> Verdict {
+    let (p, mu) = (s.predicted, b.ans.mu);
+    let (expected, given, tolerance, unit) = match &it.given {
+        Given::Segment { mm, .. } => (p.hypot(), *mm, s.tolerance, "mm"),
+        Given::Angle { deg, .. } => {
+            let at = p.atan2().to_degrees();
+            let given = at + crate::geom::wrap_pi((deg - at).to_radians()).to_degrees();
+            let tol = (s.tolerance / p.hypot().max(1e-300))
+                .min(std::f64::consts::PI)
+                .to_degrees();
+            // (Written from the point to the pole: the opposite direction.)
+            let reversed = g.expected.is_finite()
+                && crate::geom::wrap_pi((g.expected - at).to_radians()).abs() > 1.0;
+            let at = if reversed { at + 180.0 } else { at };
+            let given = at + crate::geom::wrap_pi((given - at).to_radians()).to_degrees();
+            (at, given, tol, "°")
+        }
+        Given::Value { value, .. } => (p.hypot() * mu, *value, s.tolerance * mu, g.unit),
+        Given::Point { .. } => (0.0, s.off, s.tolerance, "mm"),
+    };
+    Verdict {
+        pointer: it.pointer.clone(),
+        key: it.key.clone(),
+        what: g.what.clone(),
+        expected,
+        given,
+        difference: (given - expected).abs(),
+        tolerance,
+        unit,
+        on_plan: match &it.given {
+            Given::Segment { mm, .. } => Some((p.hypot(), *mm)),
+            Given::Value { value, .. } => Some((p.hypot(), value / mu)),
+            _ => None,
+        },
+        step: Some(s.step.clone()),
+        judgement: s.judgement.clone(),
+    }
 }

@@ -80,7 +80,9 @@ pub(super) fn drawn_at_another(
         .iter()
         .filter(|s| matches!(s.op, crate::kinematics::construction::Op::LayOff { .. }))
         .count();
-    if wrong == 0 {
+    // (One point tells a wrong length from another scale no more than a
+    // slip: a scale is read off two points at least.)
+    if wrong == 0 || steps.steps.len() < 2 {
         return Ok(None);
     }
     // One step wrong among several lengths: another scale only where the
@@ -145,10 +147,23 @@ pub(super) fn drawn_at_another(
     let c = Candidate::DrawnScale { drawn, stated: mu };
     let mut mistake = super::candidates::mistake_sentence(c, mu, "", lang);
     let ratio = mu / drawn;
-    if (mu * drawn - 1.0).abs() < 0.02 {
+    let inverted = (mu * drawn - 1.0).abs() < 0.02;
+    let units = [1000.0, 1e-3].iter().any(|k| (ratio / k - 1.0).abs() < 0.02);
+    // An answer of values alone draws nothing: its values are off by the
+    // factor, μ applied wrongly.
+    let values_only = b
+        .ans
+        .items
+        .iter()
+        .all(|it| matches!(it.given, super::answer::Given::Value { .. }));
+    if values_only && units {
+        mistake = w.scale_units.clone();
+    } else if values_only && inverted {
+        mistake = check::fill(&w.scale_inverted, &[("mu", &fmt(mu))]);
+    } else if inverted {
         mistake.push(' ');
         mistake.push_str(&w.scale_drawn_inverted);
-    } else if [1000.0, 1e-3].iter().any(|k| (ratio / k - 1.0).abs() < 0.02) {
+    } else if units {
         mistake.push(' ');
         mistake.push_str(&w.scale_drawn_units);
     }

@@ -12,6 +12,7 @@ use super::answer::{Stated, StatedQuantity};
 use super::candidates::Builds;
 use super::items::slide_of;
 use super::verdict::{Candidate, Found, Judgement, Verdict};
+use crate::accuracy::ACCURACY;
 use crate::error::{Issue, Result};
 use crate::format::format_number;
 use crate::kinematics::construction::{Op, Plan};
@@ -220,7 +221,8 @@ fn misreadings(b: &Builds, s: &Stated, lang: Lang) -> Vec<(f64, String)> {
 /// Why a stated value within its tolerance cannot be judged: a typical
 /// misreading ([`misreadings`]) puts the value within its own tolerance
 /// too (the misread value's tolerance scales with it), visibly apart from
-/// the true one (by more than the rounding of the digits written). On a
+/// the true one (by more than the rounding of the digits written), and no
+/// worse than the true value explains it. On a
 /// velocity plan drawn so coarsely, or so near a dead point, that its
 /// tolerance covers both, the stated value could be either; elsewhere a
 /// value near the true one is right.
@@ -229,9 +231,23 @@ fn ambiguous(b: &Builds, s: &Stated, t: &Truth, size: f64, lang: Lang) -> Option
     let fmt = |x: f64| decimals(&format_number(x), lang);
     misreadings(b, s, lang).into_iter().find_map(|(f, why)| {
         let value = f * t.value;
-        let within = (s.value - value).abs() <= f.abs() * t.bound + s.rounding;
-        let apart = (value - t.value).abs() > 2.0 * s.rounding;
-        (within && apart).then(|| {
+        let (tol_t, tol_m) = (t.bound + s.rounding, f.abs() * t.bound + s.rounding);
+        let within = (s.value - value).abs() <= tol_m;
+        // Two readings less than 2δ apart on the velocity plan (or within
+        // the digits written) are one reading: each is drawn to δ.
+        let moved = (value - t.value).abs();
+        let apart = moved > 2.0 * s.rounding
+            && (t.mm_per_unit == 0.0 || moved * t.mm_per_unit > 2.0 * b.ans.delta);
+        // As likely a reading as the right one: each scatters within its
+        // own tolerance as a step's point does (ACCURACY.step_scatter), so
+        // the misreading's wider spread makes a value near it less likely.
+        let density = |d: f64, tol: f64| {
+            let m = d / tol.max(1e-300);
+            ACCURACY.step_scatter * (1.0 - m * m).max(1e-300).ln() - tol.max(1e-300).ln()
+        };
+        let likelier =
+            density((s.value - value).abs(), tol_m) >= density((s.value - t.value).abs(), tol_t);
+        (within && apart && likelier).then(|| {
             // Drawn k times larger, the velocity plan's bound shrinks k
             // times while the two values stay apart.
             let k = (2.0 * (f.abs() + 1.0) * t.bound / (value - t.value).abs()).max(1.1);

@@ -319,6 +319,12 @@ impl Judge<'_> {
                 // (their meeting points may lie far apart along lines at
                 // a glancing angle); else where their places do.
                 let seen = match (e.lines.as_slice(), x.lines.as_slice()) {
+                    // A point known by its length alone: where the two
+                    // constructions' lengths are apart (a plan turned
+                    // through the pole has every length the same).
+                    _ if e.on_circle => {
+                        (x.predicted.hypot() - e.predicted.hypot()).abs() > visible
+                    }
                     ([_, _], [_, _]) => separation(e, x) > visible,
                     _ => f.2 > visible,
                 };

@@ -233,7 +233,10 @@ impl<'a> Builder<'a> {
                     lines: Vec::new(),
                     step: self.taken,
                 });
-                (given, read)
+                // A point known by its length alone is known along its
+                // circle only as well as the step places it.
+                let known = if circle.is_some() { err + read } else { read };
+                (given, known)
             }
             None => (at, err),
         };
