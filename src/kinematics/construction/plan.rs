@@ -263,8 +263,9 @@ pub struct Plan {
     pub rate_len: Vec<f64>,
     /// Whether the sense of each rate can be read off the plan: the end of
     /// its relative segment clear of the link's line by more than its
-    /// drafting error (only a plan drawn wrong has it on the line; then
-    /// the rate is known in magnitude only).
+    /// drafting error (a plan drawn wrong has it on the line, and so has
+    /// one of a link that hardly turns; then the rate is known in
+    /// magnitude only).
     pub rate_sense: Vec<bool>,
     pub measured: Vec<Measured>,
     /// Smallest sine of an intersection angle (1 when none).
