@@ -518,10 +518,17 @@ fn a_hand_drawn_boom_plan_is_checked() {
         },
     )
     .unwrap();
+    // The points drawn, and the values read off them: a table of values
+    // alone leaves the directions open, and with the plan's worst-case
+    // tolerances it cannot decide here (a Coriolis acceleration ⊥ the
+    // cylinder moves b along the line its tangential part draws).
     let answer = |plans: &mechplan::construction::Plans| {
         let a = plans.acceleration.as_ref().unwrap();
         let mut values = serde_json::Map::new();
+        let mut points = serde_json::Map::new();
         for n in ["B", "E", "K", "P"] {
+            let at = a.points[a.of_point[m.scene.point_index(n).unwrap()].unwrap()].at;
+            points.insert(n.to_lowercase(), json!([at.x, at.y]));
             let x = a.value_of(m.scene.point_index(n).unwrap()).unwrap().hypot();
             values.insert(format!("a_{n}"), json!(x));
         }
@@ -533,6 +540,7 @@ fn a_hand_drawn_boom_plan_is_checked() {
             "plan": "acceleration",
             "mu": a.mu,
             "velocity": { "mu": plans.velocity.mu },
+            "points": points,
             "values": values
         })
         .to_string();
@@ -546,7 +554,11 @@ fn a_hand_drawn_boom_plan_is_checked() {
         mechplan::presentation::verdict::to_text(&right)
     );
     let r = check(&an, &solved, &answer(&wrong)).unwrap();
-    assert!(r.wrong() > 0);
+    assert!(
+        r.wrong() > 0,
+        "{}",
+        mechplan::presentation::verdict::to_text(&r)
+    );
     let d = r.diagnosis.unwrap().mistake.unwrap();
     assert!(d.contains("Coriolis acceleration is forgotten"), "{d}");
 }

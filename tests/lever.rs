@@ -215,7 +215,7 @@ fn worked_example_digits() {
     }
     digits(l.f_b, 2, "967.20");
     digits(l.value(), 2, "96.72");
-    digits(l.err, 2, "5.44");
+    digits(l.err, 2, "5.83");
     assert!(matches!(
         l.balancing,
         mechplan::kinetostatics::Balancing::Moment(_)

@@ -140,6 +140,7 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     }
     let global = report.clone();
     report.verdicts = relative::verdicts(&b, &report, &steps);
+    table_with_true_plan(&b, &mut report, &global, &mut steps);
     let second = SecondOpinion::of(&global, (&steps, report.grade()), lang);
     // The mistake of the first wrong step; where it is not recognised,
     // or every step is right but items read off them are wrong (a
@@ -161,6 +162,92 @@ pub fn check_in(an: &Analysis, solved: &[Solved], ans: &Answer, lang: Lang) -> R
     report.second_opinion = Some(second);
     report.steps = Some(steps);
     Ok(report)
+}
+
+/// A table (no point drawn) judged by its steps, and beside them by the
+/// true plan: its numbers are readings a student may have made each on
+/// its own, not a drawing each step of which stands on the last. So a
+/// point it gives that fits the true plan is right even where it does not
+/// follow from the table's earlier points (the step's mistake is then no
+/// mistake), and where its steps find nothing wrong, an item the true
+/// plan finds wrong — beyond the tolerance accumulated along the whole
+/// construction, which no honest table exceeds — is wrong (the
+/// direction a table of lengths leaves open can hide a mistake from its
+/// steps, not from its rates and values).
+fn table_with_true_plan(b: &Builds, report: &mut Report, global: &Report, steps: &mut StepReport) {
+    let drawn = b
+        .ans
+        .items
+        .iter()
+        .any(|it| matches!(it.given, answer::Given::Point { .. }));
+    if drawn {
+        return;
+    }
+    let n = b.ans.items.len();
+    let gives = table::gives(b, &global.plan_built);
+    let mut cleared: Vec<String> = Vec::new();
+    for ((v, g), gives) in report.verdicts.iter_mut().zip(&global.verdicts).zip(&gives) {
+        if let Some((i, _)) = gives
+            && v.judgement == Judgement::Wrong
+            && g.judgement == Judgement::Right
+        {
+            *v = g.clone();
+            cleared.push(global.plan_built.points[*i].name());
+        }
+    }
+    if !cleared.is_empty() {
+        let true_plan = &global.plan_built;
+        for (st, j) in steps.steps.iter_mut().zip(&steps.replay.judged) {
+            if st.judgement == Judgement::Wrong && cleared.contains(&st.point) {
+                // Judged against the true plan: its place there, how far
+                // the student's length (or point) is from it, and its
+                // accumulated tolerance.
+                let right = &true_plan.points[j.point.min(true_plan.points.len() - 1)];
+                st.predicted = right.at;
+                st.off = if j.on_circle {
+                    (st.given.hypot() - right.at.hypot()).abs()
+                } else {
+                    (st.given - right.at).hypot()
+                };
+                st.tolerance = right.err + b.ans.delta;
+                st.judgement = Judgement::Right;
+                st.mistake = None;
+            }
+        }
+        for f in &mut steps.mistakes {
+            f.points.retain(|p| !cleared.contains(p));
+        }
+        // Mistakes left without a point they put off their place (made
+        // before the plan, with no points, stay).
+        let keep: Vec<bool> = steps
+            .mistakes
+            .iter()
+            .map(|f| f.step.0 == 0 || !f.points.is_empty())
+            .collect();
+        let mut index = Vec::new();
+        let mut m = 0;
+        for &k in &keep {
+            index.push(m);
+            m += usize::from(k);
+        }
+        for st in &mut steps.steps {
+            st.mistake = st.mistake.filter(|&i| keep[i]).map(|i| index[i]);
+        }
+        let mut i = 0;
+        steps.mistakes.retain(|_| {
+            i += 1;
+            keep[i - 1]
+        });
+    }
+    if steps.wrong_steps() == 0 {
+        for k in 0..n {
+            if global.verdicts[k].judgement == Judgement::Wrong
+                && report.verdicts[k].judgement != Judgement::Wrong
+            {
+                report.verdicts[k] = global.verdicts[k].clone();
+            }
+        }
+    }
 }
 
 /// The verdict on the scale a plan states where it is drawn at another:

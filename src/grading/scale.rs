@@ -92,6 +92,11 @@ pub(super) fn drawn_at_another(
     // first vector alone is off).
     let alone = wrong < 2 && lengths > 1;
     let mu = b.ans.mu;
+    let points_drawn = b
+        .ans
+        .items
+        .iter()
+        .any(|it| matches!(it.given, super::answer::Given::Point { .. }));
     let mut best: Option<(StepReport, f64)> = None;
     for f in factors(b, standard, steps) {
         // A factor the pencil could draw is no other scale.
@@ -124,7 +129,9 @@ pub(super) fn drawn_at_another(
             .first()
             .is_some_and(|s| s.judgement != super::Judgement::Wrong);
         let n = other.wrong_steps();
-        let fits = !alone || misfit(&other) <= misfit(steps);
+        // A table's numbers are readings each on its own: another scale
+        // is what they show only where it explains every one.
+        let fits = (!alone || misfit(&other) <= misfit(steps)) && (points_drawn || n == 0);
         if fits && first_right && n < wrong && best.as_ref().is_none_or(|x| n < x.0.wrong_steps()) {
             best = Some((other, drawn));
         }
@@ -134,6 +141,15 @@ pub(super) fn drawn_at_another(
     };
     // The values are read with the μ the student states.
     other.replay.mu = mu;
+    Ok(Some((other, scale_mistake(b, drawn, lang))))
+}
+
+/// The mistake of a plan drawn at `drawn` instead of the stated scale:
+/// made before the plan, named with both scales (and as μ inverted or in
+/// the wrong units where it is; for an answer of values alone, as μ
+/// applied so), the scale's step quoted with the student's beside it.
+fn scale_mistake(b: &Builds, drawn: f64, lang: Lang) -> Found {
+    let mu = b.ans.mu;
     let w = check::phrases(lang);
     let fmt = |x: f64| decimals(&format_number(x), lang);
     let u = unit(
@@ -169,14 +185,11 @@ pub(super) fn drawn_at_another(
     }
     let step = check::fill(&w.scale_step, &[("mu", &fmt(mu)), ("unit", &u)]);
     let yours = check::fill(&w.yours, &[("value", &format!("μ = {} {u}", fmt(drawn)))]);
-    Ok(Some((
-        other,
-        Found {
-            explanation: Some(c),
-            mistake: Some(mistake),
-            step: (0, format!("{step} ({yours})")),
-            points: Vec::new(),
-            alternatives: Vec::new(),
-        },
-    )))
+    Found {
+        explanation: Some(c),
+        mistake: Some(mistake),
+        step: (0, format!("{step} ({yours})")),
+        points: Vec::new(),
+        alternatives: Vec::new(),
+    }
 }

@@ -5,8 +5,8 @@
 //! order of attachment, the measured values).
 
 use super::plan::{
-    Drawing, Judged, Known, Measured, Mistake, Plan, PlanKind, PlanPoint, PointId, Quantity, Setup, Variant,
-    non_rotating,
+    Drawing, Judged, Known, Measured, Mistake, Plan, PlanKind, PlanPoint, PointId, Quantity, Setup,
+    Variant, non_rotating,
 };
 use super::record::{Act, Name, Product, Rate, Ray, Reading, Relation, Seg, Way, What, key_label};
 use crate::accuracy::ACCURACY;
@@ -155,6 +155,17 @@ impl<'a> Builder<'a> {
         self.vel
             .and_then(|v| v.rates[l].map(|r| r.1))
             .unwrap_or(0.0)
+    }
+    /// The error of the value of a normal component ω²·r of `link`
+    /// computed with `w` (`r` its length, m), ω known to ±Δω: |(ω ± Δω)²
+    /// − ω²|·r ≤
+    /// (2|ω| + Δω)·Δω·r — the worst case, not only its first order
+    /// 2|ω|·Δω·r (a stated ω is anywhere within half a unit of its last
+    /// digit of what was read).
+    #[inline]
+    pub fn normal_err(&self, link: usize, w: f64, r: f64) -> f64 {
+        let dw = self.omega_err(link);
+        (2.0 * w.abs() + dw) * dw * r
     }
 
     /// The place of the next plan point of `id` among those of its id
@@ -413,7 +424,13 @@ impl<'a> Builder<'a> {
                 ),
             ));
         };
-        let err = a.err.hypot(b.err) / sin_angle;
+        // The worst case of two lines each shifted by up to its error: the
+        // corner of their parallelogram, √(e1² + e2² + 2·e1·e2·|cos θ|) /
+        // sin θ (the sides' first-order √(e1² + e2²)/sin θ falls short
+        // where the lines meet at a glancing angle: along them the point
+        // moves by up to (e1 + e2·|cos θ|)/sin θ).
+        let cos = (1.0 - sin_angle * sin_angle).max(0.0).sqrt();
+        let err = (a.err * a.err + b.err * b.err + 2.0 * a.err * b.err * cos).sqrt() / sin_angle;
         let delta = self.plan.delta;
         let lines = [&a, &b].map(|r| {
             let l = drawn(r);
@@ -463,8 +480,9 @@ impl<'a> Builder<'a> {
         let err = err_mm * mu / len;
         // The sense is read from the side of the link's line the relative
         // segment's end lies on: within the drafting error of that line it
-        // cannot be read (only a plan drawn wrong has it there), and the
-        // rate is known only in magnitude.
+        // cannot be read (a plan drawn wrong has it there, and so has one
+        // of a link that hardly turns), and the rate is known only in
+        // magnitude.
         let sense_known = !(len > 0.0 && (r.cross(rel) / len).abs() / mu <= err_mm);
         self.plan.rate_sense[link] = sense_known;
         self.plan.rates[link] = Some((value, err));

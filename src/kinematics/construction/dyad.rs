@@ -146,7 +146,7 @@ impl Builder<'_> {
         } else {
             -1.0
         };
-        let err = 2.0 * w.abs() * self.omega_err(link) * r.hypot();
+        let err = self.normal_err(link, w, r.hypot());
         let n = self.normal(j, r * (toward * w * w), link, (xn, jn), seg, err);
         (self.line(n, u, Way::Perp(seg)), n)
     }
@@ -314,7 +314,7 @@ impl Builder<'_> {
                 -1.0
             };
             let r = x - jw;
-            let err = 2.0 * w.abs() * self.omega_err(c.link) * r.hypot();
+            let err = self.normal_err(c.link, w, r.hypot());
             from = self.normal(j, r * (toward * w * w), c.link, (xu, jn), seg, err);
         }
         if turns && d.rate != 0.0 {

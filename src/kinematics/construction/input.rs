@@ -212,7 +212,9 @@ impl Builder<'_> {
 
     /// Lay off from `from` the Coriolis acceleration 2·ω×v_rel of X of
     /// link `unknown` sliding on `known` (ω of `known`, `vrel` the relative
-    /// velocity, `verr` the error of its value): the point k.
+    /// velocity, `verr` the error of its value): the point k. The error of
+    /// its length is the worst case of ω ± Δω and v_rel ± Δv:
+    /// 2·(|ω|·Δv + Δω·|v_rel| + Δω·Δv).
     pub(super) fn coriolis(
         &mut self,
         from: usize,
@@ -221,7 +223,10 @@ impl Builder<'_> {
         (x, unknown, known): (Name, usize, usize),
         verr: f64,
     ) -> usize {
-        if self.forgets(Mistake::CoriolisForgotten, PointId::Coriolis { link: unknown }) {
+        if self.forgets(
+            Mistake::CoriolisForgotten,
+            PointId::Coriolis { link: unknown },
+        ) {
             return from;
         }
         let sense = if self.making(Mistake::CoriolisReversed) {
@@ -241,7 +246,7 @@ impl Builder<'_> {
             What::Coriolis { x, unknown, known },
             Way::Turned { x, unknown, known },
             PointId::Coriolis { link: unknown },
-            2.0 * (w.abs() * verr + self.omega_err(known) * vrel.hypot()),
+            2.0 * (w.abs() * verr + self.omega_err(known) * (vrel.hypot() + verr)),
         )
     }
 }

@@ -36,6 +36,7 @@ mod record;
 pub mod scale;
 mod settle;
 mod triad;
+mod variant;
 
 pub use plan::{
     Dir, Drafting, Drawing, Judged, Known, Measured, Mistake, Op, Plan, PlanKind, PlanLine, PlanPoint, Plans,

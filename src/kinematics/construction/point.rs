@@ -322,7 +322,13 @@ impl Builder<'_> {
     /// the plan takes; another pair, or the link's rate, only where it
     /// stands on points drawn right. Each is read off as the point itself
     /// is (to δ, and typed to its digits).
-    fn other_routes(&mut self, link: usize, (x, local): (Point, Vec2), known: &[(Vec2, usize)], mirrored: bool) {
+    fn other_routes(
+        &mut self,
+        link: usize,
+        (x, local): (Point, Vec2),
+        known: &[(Vec2, usize)],
+        mirrored: bool,
+    ) {
         let known_right: Vec<(Vec2, usize)> = known
             .iter()
             .copied()
@@ -333,7 +339,10 @@ impl Builder<'_> {
             others.extend(self.relations(link, x, &known_right));
         }
         let j = self.plan.judged.last_mut().expect("just judged");
-        j.others = others.into_iter().map(|(p, t)| (p, t + j.rounding)).collect();
+        j.others = others
+            .into_iter()
+            .map(|(p, t)| (p, t + j.rounding))
+            .collect();
     }
 
     /// In a replay, is plan point `i` one the student drew off its step's
@@ -346,15 +355,13 @@ impl Builder<'_> {
     }
 
     /// Does the rate of `link` this plan measured stand on points drawn
-    /// right, with its sense read off the plan?
+    /// right?
     fn rate_stands_right(&self, link: usize) -> bool {
-        self.plan.rate_sense[link]
-            && self
-                .plan
-                .measured
-                .iter()
-                .filter(|q| q.of == super::plan::Quantity::Rate(link))
-                .all(|q| !self.drawn_wrong(q.from) && !self.drawn_wrong(q.to))
+        self.plan
+            .measured
+            .iter()
+            .filter(|q| q.of == super::plan::Quantity::Rate(link))
+            .all(|q| !self.drawn_wrong(q.from) && !self.drawn_wrong(q.to))
     }
 
     /// The places of the material point of `link` at `local` by the figure
@@ -389,9 +396,21 @@ impl Builder<'_> {
     /// points (ω×AX; −ω²·AX + ε×AX), each with its tolerance: the error
     /// radius as [`Builder::best_construction`] reckons it, plus δ for
     /// reading the point. None before the plan has measured the rates.
+    ///
+    /// Where the plan does not show the rate's sense (its relative segment
+    /// within its error of the link's line: a link that hardly turns, as
+    /// near an extreme position), the student may read it either way: the
+    /// rate is then anywhere within ±(|rate| + its error), and the route
+    /// is the one of no rate (the known point, and the normal ω²·AX on an
+    /// acceleration plan) with the whole |rate|·AX added to its tolerance.
     fn relations(&self, link: usize, x: Point, known: &[(Vec2, usize)]) -> Vec<(Vec2, f64)> {
         let Some((rate, rate_err)) = self.plan.rates[link] else {
             return Vec::new();
+        };
+        let (rate, rate_err) = if self.plan.rate_sense[link] {
+            (rate, rate_err)
+        } else {
+            (0.0, rate_err + rate.abs())
         };
         let (delta, mu) = (self.plan.delta, self.plan.mu);
         let w = self.omega(link);
@@ -418,9 +437,7 @@ impl Builder<'_> {
     fn relation_err(&self, link: usize, from_err: f64, r: f64, rate_err: f64) -> f64 {
         let (delta, mu) = (self.plan.delta, self.plan.mu);
         let normal = match self.omega(link) {
-            w if !self.vel_kind() && w != 0.0 => {
-                delta + 2.0 * w.abs() * self.omega_err(link) * r / mu
-            }
+            w if !self.vel_kind() && w != 0.0 => delta + self.normal_err(link, w, r) / mu,
             _ => 0.0,
         };
         from_err + normal + delta + rate_err * r / mu
@@ -437,7 +454,12 @@ impl Builder<'_> {
             return None;
         }
         let m = self.m();
-        let shares = |l: usize| m.links[l].points.iter().any(|p| m.links[link].points.contains(p));
+        let shares = |l: usize| {
+            m.links[l]
+                .points
+                .iter()
+                .any(|p| m.links[link].points.contains(p))
+        };
         let (nb, (la, pa), (lb, pb)) = (0..m.links.len())
             .filter(|&l| l != link && l != m.frame() && !self.t.nr[l] && shares(l))
             .find_map(|l| {
@@ -531,7 +553,7 @@ impl Builder<'_> {
         } else {
             if w != 0.0 && !self.forgets(Mistake::NormalForgotten, PointId::Normal { link }) {
                 let normal = What::Product(Product::squared(Rate::Omega(link), seg));
-                let err = 2.0 * w.abs() * self.omega_err(link) * r.hypot();
+                let err = self.normal_err(link, w, r.hypot());
                 let n = PointId::Normal { link };
                 from = self.lay_off(pa, -r * (w * w), normal, Way::Toward((figure, an)), n, err);
                 self.note_normal(link, from);

@@ -173,7 +173,7 @@ impl Builder<'_> {
             let (wl, wb) = (b.omega(leash), b.omega(t.base));
             let r1 = jw[n] - e[n].1;
             if wl != 0.0 && !b.forgets(Mistake::NormalForgotten, PointId::Normal { link: leash }) {
-                let err = 2.0 * wl.abs() * b.omega_err(leash) * r1.hypot();
+                let err = b.normal_err(leash, wl, r1.hypot());
                 let (x, j) = (jn[n], e[n].2);
                 let toward = b.normal_sense();
                 from = b.normal(from, r1 * (toward * wl * wl), leash, (x, j), (j, x), err);
@@ -181,7 +181,7 @@ impl Builder<'_> {
             let r2 = sw - jw[n];
             let base = PointId::Normal { link: t.base };
             if wb != 0.0 && r2.hypot() > 0.0 && !b.forgets(Mistake::NormalForgotten, base) {
-                let err = 2.0 * wb.abs() * b.omega_err(t.base) * r2.hypot();
+                let err = b.normal_err(t.base, wb, r2.hypot());
                 let xj = (sname, jn[n]);
                 let toward = b.normal_sense();
                 from = b.normal(from, r2 * (toward * wb * wb), t.base, xj, xj, err);
