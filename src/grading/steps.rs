@@ -121,7 +121,19 @@ pub(super) fn judge(b: &Builds, standard: &Plan, lang: Lang) -> Result<Option<St
             let tol = quantity(tolerance.max(along), "mm", lang);
             let size = quantity(size, "mm", lang);
             let w = check::phrases(lang);
-            let why = check::fill(&w.too_wide_step, &[("tol", &tol), ("size", &size)]);
+            // A table's lengths leave their points' directions open: those
+            // directions would decide it.
+            let open: Vec<String> = plain.judged[..=k]
+                .iter()
+                .filter(|x| x.on_circle)
+                .map(|x| format!("{} {}", plain.points[0].name(), plain.points[x.point].name()))
+                .collect();
+            let why = if open.is_empty() {
+                check::fill(&w.too_wide_step, &[("tol", &tol), ("size", &size)])
+            } else {
+                let segs = open.join(", ");
+                check::fill(&w.too_wide_table, &[("tol", &tol), ("size", &size), ("segs", &segs)])
+            };
             v.judgement = Judgement::CannotJudge(why);
         } else if e.misfit() <= 1.0 {
             v.judgement = j

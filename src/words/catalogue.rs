@@ -473,6 +473,9 @@ pub struct CheckPhrases {
     pub point_from_own: String,
     /// `{tol}`, `{size}`.
     pub too_wide_step: String,
+    /// The same where a table gives points by their lengths only: `{tol}`,
+    /// `{size}`, `{segs}` (the segments whose directions are open).
+    pub too_wide_table: String,
     pub too_wide: String,
     /// `{tol}`, `{moved}`, `{mistake}`, `{k}`, `{mu}`.
     pub ambiguous_step: String,

@@ -442,6 +442,20 @@ impl<'a> Builder<'a> {
             // line's own error and the point read (to δ, typed to its
             // digits) off it.
             j.lines = lines.map(|(p, u, t)| (p, u, t + j.rounding)).to_vec();
+            // A point known by its length alone lies where its circle
+            // crosses the two lines' bands: along the circle, as far as
+            // the narrower crossing lets it (a band crossed squarely pins
+            // it), never farther than the meeting point's own error.
+            if j.on_circle && j.given.hypot() > 0.0 {
+                let t = perp(j.given / j.given.hypot());
+                let along = j
+                    .lines
+                    .iter()
+                    .map(|&(_, u, tol)| tol / t.cross(u).abs().max(1e-300))
+                    .fold(f64::INFINITY, f64::min);
+                let point = &mut self.plan.points[out];
+                point.err = point.err.min(along);
+            }
         }
         self.plan.worst_sin = self.plan.worst_sin.min(sin_angle);
         self.step(|| Act::Intersect {

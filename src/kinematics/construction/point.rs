@@ -314,14 +314,15 @@ impl Builder<'_> {
     }
 
     /// A replay: the same point by the figure on any other pair of the
-    /// link's known points is as right, and so is the relative vector of
-    /// the link's rates from one of them (in the right construction: in a
-    /// mistaken one it would be the right place again) — but a route
-    /// through a point the student drew wrong is no excuse: the figure on
-    /// the student's own points is judged, carried forward, by the route
-    /// the plan takes; another pair, or the link's rate, only where it
-    /// stands on points drawn right. Each is read off as the point itself
-    /// is (to δ, and typed to its digits).
+    /// link's known points is as right — the student's own points, drawn
+    /// right or carried forward from a mistake — and so is the relative
+    /// vector of the link's rates from one of them (in the right
+    /// construction: in a mistaken one it would be the right place again);
+    /// but a rate measured off a point the student drew wrong is no excuse
+    /// (its sense read off a relative segment drawn along the link allows
+    /// the mirrored figure too): the relative vector only where the rate
+    /// and its start stand on points drawn right. Each is read off as the
+    /// point itself is (to δ, and typed to its digits).
     fn other_routes(
         &mut self,
         link: usize,
@@ -334,7 +335,7 @@ impl Builder<'_> {
             .copied()
             .filter(|k| !self.drawn_wrong(k.1))
             .collect();
-        let mut others = self.figures(local, &known_right, mirrored);
+        let mut others = self.figures(local, known, mirrored);
         if self.variant.mistake.is_none() && self.rate_stands_right(link) {
             others.extend(self.relations(link, x, &known_right));
         }
