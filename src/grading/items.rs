@@ -108,7 +108,7 @@ pub(super) fn expect(
         delta,
         lang,
     };
-    match &it.given {
+    let mut e = match &it.given {
         Given::Segment { from, mm, .. } => on.segment(from, *mm),
         Given::Angle { from, deg, .. } => on.angle(from, *deg),
         Given::Point { name, at } => on.point(name, *at),
@@ -120,7 +120,12 @@ pub(super) fn expect(
             quantity: Quantity::Rate(id),
             value,
         } => on.rate(id, *value),
-    }
+    }?;
+    // The number as typed may be off what was read by half a unit of its
+    // last digit (in the item's unit), but by no more than the item's own
+    // tolerance: v_B = 0.3 for 0.345 is a wrong reading, not a rounding.
+    e.tol += it.rounding.min(e.tol);
+    Ok(e)
 }
 
 /// An item `it` on `plan`, the pencil precision `delta`, named in `lang`.

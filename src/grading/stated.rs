@@ -55,14 +55,24 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
     if !issues.is_empty() {
         return Err(crate::error::Error::fields(issues));
     }
-    let common = common_factor(b, &truths);
-    // The velocity plan's size: a value whose segment's tolerance exceeds
-    // a fifth of it cannot be read off the plan (near a dead point).
-    let size = vel.points.iter().map(|p| p.at.hypot()).fold(0.0, f64::max);
+    // A number written to fewer digits than the plan reads it to (ω = 3
+    // read off as 3.40) is allowed its rounding only up to the plan's own
+    // bound: a coarse number is no licence for a wrong one.
+    let stated: Vec<Stated> = b
+        .ans
+        .stated
+        .iter()
+        .zip(&truths)
+        .map(|(s, t)| Stated {
+            rounding: s.rounding.min(t.bound),
+            ..s.clone()
+        })
+        .collect();
+    let common = common_factor(&stated, &truths);
     let w = check::phrases(lang);
     let fmt = |x: f64| decimals(&format_number(x), lang);
     let mut out = Vec::new();
-    for (index, (s, t)) in b.ans.stated.iter().zip(&truths).enumerate() {
+    for (index, (s, t)) in stated.iter().zip(&truths).enumerate() {
         let name = name_of(s);
         let tol = t.bound + s.rounding;
         let difference = (s.value - t.value).abs();
@@ -70,7 +80,7 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
         let unreadable = if wrong {
             None
         } else {
-            ambiguous(b, s, t, size, lang)
+            ambiguous(b, s, t, &vel, lang)
         };
         let sentence = match t.step {
             Some(k) => check::step(&vel, k, lang),
@@ -84,7 +94,7 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
             );
             Found {
                 explanation: Some(Candidate::Stated { index }),
-                mistake: Some(diagnosis(b, s, t, common, lang)),
+                mistake: Some(diagnosis(b, s, t, &vel, common, lang)),
                 step: (0, format!("{step_text} ({yours})")),
                 points: Vec::new(),
                 alternatives: Vec::new(),
@@ -198,7 +208,7 @@ fn truth(b: &Builds, vel: &Plan, s: &Stated) -> std::result::Result<Truth, Issue
 /// (×−1), μ_v in the wrong units (×1000, ×1/1000), the relative segment
 /// taken half or twice (×½, ×2), the link's length taken for another's
 /// (× l_own/l_other).
-fn misreadings(b: &Builds, s: &Stated, lang: Lang) -> Vec<(f64, String)> {
+fn misreadings(b: &Builds, s: &Stated, vel: &Plan, lang: Lang) -> Vec<(f64, String)> {
     let w = check::phrases(lang);
     let name = name_of(s);
     let mut out = vec![
@@ -211,7 +221,7 @@ fn misreadings(b: &Builds, s: &Stated, lang: Lang) -> Vec<(f64, String)> {
     if matches!(s.quantity, StatedQuantity::Slide(_)) {
         out.remove(0);
     }
-    out.extend(lengths(b, s).into_iter().map(|(f, own, other)| {
+    out.extend(lengths(b, s, vel).into_iter().map(|(f, own, other)| {
         let args = [("name", name.as_str()), ("own", &own), ("other", &other)];
         (f, check::fill(&w.stated_length, &args))
     }));
@@ -226,17 +236,23 @@ fn misreadings(b: &Builds, s: &Stated, lang: Lang) -> Vec<(f64, String)> {
 /// velocity plan drawn so coarsely, or so near a dead point, that its
 /// tolerance covers both, the stated value could be either; elsewhere a
 /// value near the true one is right.
-fn ambiguous(b: &Builds, s: &Stated, t: &Truth, size: f64, lang: Lang) -> Option<String> {
+fn ambiguous(b: &Builds, s: &Stated, t: &Truth, vel: &Plan, lang: Lang) -> Option<String> {
     let w = check::phrases(lang);
     let fmt = |x: f64| decimals(&format_number(x), lang);
-    misreadings(b, s, lang).into_iter().find_map(|(f, why)| {
+    misreadings(b, s, vel, lang).into_iter().find_map(|(f, why)| {
         let value = f * t.value;
         let (tol_t, tol_m) = (t.bound + s.rounding, f.abs() * t.bound + s.rounding);
         let within = (s.value - value).abs() <= tol_m;
         // Two readings less than 2δ apart on the velocity plan (or within
-        // the digits written) are one reading: each is drawn to δ.
+        // the digits written) are one reading: each is drawn to δ; nor is
+        // a misreading another reading where it changes the value by less
+        // than half the true reading's tolerance and less than a quarter
+        // of the value (an honest hand scatters that far: a factor near 1,
+        // as two links of nearly one length give, is no alternative; half
+        // or twice the value always is).
         let moved = (value - t.value).abs();
         let apart = moved > 2.0 * s.rounding
+            && moved > (0.5 * tol_t).min(0.25 * t.value.abs())
             && (t.mm_per_unit == 0.0 || moved * t.mm_per_unit > 2.0 * b.ans.delta);
         // As likely a reading as the right one: each scatters within its
         // own tolerance as a step's point does (ACCURACY.step_scatter), so
@@ -252,7 +268,6 @@ fn ambiguous(b: &Builds, s: &Stated, t: &Truth, size: f64, lang: Lang) -> Option
             // times while the two values stay apart.
             let k = (2.0 * (f.abs() + 1.0) * t.bound / (value - t.value).abs()).max(1.1);
             let tol_mm = t.bound * t.mm_per_unit;
-            let _ = size;
             check::fill(
                 &w.ambiguous_stated,
                 &[
@@ -270,10 +285,8 @@ fn ambiguous(b: &Builds, s: &Stated, t: &Truth, size: f64, lang: Lang) -> Option
 /// The factor by which every stated ω is off, where at least two are
 /// wrong and one factor explains them all (each within its tolerance):
 /// the velocity plan's μ_v applied wrongly.
-fn common_factor(b: &Builds, truths: &[Truth]) -> Option<f64> {
-    let pairs: Vec<(&Stated, &Truth)> = b
-        .ans
-        .stated
+fn common_factor(stated: &[Stated], truths: &[Truth]) -> Option<f64> {
+    let pairs: Vec<(&Stated, &Truth)> = stated
         .iter()
         .zip(truths)
         .filter(|(s, t)| {
@@ -298,7 +311,14 @@ fn common_factor(b: &Builds, truths: &[Truth]) -> Option<f64> {
 /// wrong way, μ_v in the wrong units, the link's length taken for
 /// another's, μ_v applied wrongly (every ω off by one factor), else read
 /// off wrong.
-fn diagnosis(b: &Builds, s: &Stated, t: &Truth, common: Option<f64>, lang: Lang) -> String {
+fn diagnosis(
+    b: &Builds,
+    s: &Stated,
+    t: &Truth,
+    vel: &Plan,
+    common: Option<f64>,
+    lang: Lang,
+) -> String {
     let w = check::phrases(lang);
     let fmt = |x: f64| decimals(&format_number(x), lang);
     let name = name_of(s);
@@ -321,7 +341,7 @@ fn diagnosis(b: &Builds, s: &Stated, t: &Truth, common: Option<f64>, lang: Lang)
         .any(|f| (s.value - f * t.value).abs() <= f * tol + s.rounding)
     {
         w.stated_units.clone()
-    } else if let Some((own, other)) = other_length(b, s, t) {
+    } else if let Some((own, other)) = other_length(b, s, t, vel) {
         check::fill(
             &w.stated_length,
             &[("name", &name), ("own", &own), ("other", &other)],
@@ -335,10 +355,14 @@ fn diagnosis(b: &Builds, s: &Stated, t: &Truth, common: Option<f64>, lang: Lang)
 }
 
 /// The factors l_own/l_other by which a stated ω is off where it is its
-/// relative velocity over another link's length (ab read with the
-/// crank's length: ω2 = v_BA/l_OA), with the link's own segment and the
-/// other one's, as l_AB, l_OA.
-fn lengths(b: &Builds, s: &Stated) -> Vec<(f64, String, String)> {
+/// relative velocity over another length: ab read with the crank's length
+/// (ω2 = v_BA/l_OA), a rocking guide's whole length for the length the
+/// slider stands at (l_CD for l_CB3). Its own length is the one the
+/// velocity plan `vel` measures it over; the others, the lengths it
+/// measures the other links' ω over, the cranks' and the link's own whole
+/// length (between its first two points). Each with the two segments'
+/// names (l_AB, l_OA).
+fn lengths(b: &Builds, s: &Stated, vel: &Plan) -> Vec<(f64, String, String)> {
     let StatedQuantity::Omega(id) = &s.quantity else {
         return Vec::new();
     };
@@ -347,31 +371,62 @@ fn lengths(b: &Builds, s: &Stated) -> Vec<(f64, String, String)> {
         return Vec::new();
     };
     let c = &b.s.config;
-    // Each moving link's length between its first two points, and its
-    // segment's name.
-    let length = |k: usize| -> Option<(f64, String)> {
+    // The segments the velocity plan measures rates over: (link, length,
+    // name).
+    let measured: Vec<(usize, f64, String)> = vel
+        .steps
+        .iter()
+        .filter_map(|st| match &st.op {
+            Op::Measure {
+                length: Some(len),
+                rate: Some((name, _, (j, x))),
+                ..
+            } => {
+                let k = m.scene.link_index(name.trim_start_matches('ω'))?;
+                Some((k, *len, format!("l_{j}{x}")))
+            }
+            _ => None,
+        })
+        .collect();
+    let whole = |k: usize| -> Option<(f64, String)> {
         let pts = &m.links[k].points;
         let (&p, &q) = (pts.first()?, pts.get(1)?);
         c.poses[k]?;
         let d = (c.point(m, k, q) - c.point(m, k, p)).hypot();
         (d > 0.0).then(|| (d, format!("l_{}{}", m.point_name(p), m.point_name(q))))
     };
-    let Some((own, own_name)) = length(l) else {
+    let Some((own, own_name)) = measured
+        .iter()
+        .find(|x| x.0 == l)
+        .map(|x| (x.1, x.2.clone()))
+        .or_else(|| whole(l))
+    else {
         return Vec::new();
     };
-    (0..m.links.len())
-        .filter(|&k| k != l && k != m.frame())
-        .filter_map(length)
-        .filter(|(d, _)| (d - own).abs() > 1e-6 * own)
-        .map(|(d, other)| (own / d, own_name.clone(), other))
-        .collect()
+    // The lengths a student takes by mistake: another link's the plan
+    // measures a rate over, the crank's, the link's own whole length (a
+    // rocking guide's CD for the CB3 the slider stands at).
+    let mut others: Vec<(f64, String)> = measured
+        .iter()
+        .filter(|x| x.0 != l)
+        .map(|x| (x.1, x.2.clone()))
+        .collect();
+    let inputs = m.scene.inputs().map(|i| i.link());
+    others.extend(inputs.chain([l]).filter(|&k| k != m.frame()).filter_map(whole));
+    let mut out: Vec<(f64, String, String)> = Vec::new();
+    for (d, name) in others {
+        if (d - own).abs() > 1e-6 * own && !out.iter().any(|o| o.2 == name) {
+            out.push((own / d, own_name.clone(), name));
+        }
+    }
+    out
 }
 
 /// Where a stated ω is its relative velocity over another link's length:
 /// the link's own segment and the other one's.
-fn other_length(b: &Builds, s: &Stated, t: &Truth) -> Option<(String, String)> {
+fn other_length(b: &Builds, s: &Stated, t: &Truth, vel: &Plan) -> Option<(String, String)> {
     let tol = t.bound + s.rounding;
-    lengths(b, s)
+    lengths(b, s, vel)
         .into_iter()
         .find(|(f, ..)| (s.value.abs() - t.value.abs() * f).abs() <= tol * f + s.rounding)
         .map(|(_, own, other)| (own, other))

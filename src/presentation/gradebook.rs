@@ -212,13 +212,22 @@ pub fn written_wrong(r: &Report) -> Vec<String> {
         .collect();
     // The values read off the velocity plan and the scale, wrong before
     // the plan is drawn: each is its own mistake (step 0).
-    let before: Vec<&str> = r
+    let mut before: Vec<&str> = r
         .steps
         .iter()
         .flat_map(|st| st.mistakes.iter())
         .filter(|f| f.step.0 == 0)
         .map(|f| f.step.1.as_str())
         .collect();
+    // (An answer judged against the true plan alone names it as its
+    // diagnosis.)
+    before.extend(
+        r.diagnosis
+            .iter()
+            .filter_map(|d| d.step.as_ref())
+            .filter(|(k, _)| *k == 0)
+            .map(|(_, s)| s.as_str()),
+    );
     let uncovered = |v: &Verdict| {
         let point = crate::grading::resolve(&r.plan_built, &v.key).map(|i| r.plan_built.points[i].name());
         let named_before = v

@@ -74,7 +74,7 @@ impl Study {
     /// let answer = r#"{ "plan": "velocity", "position": 1, "mu": 0.01,
     ///                   "values": { "v_B": 0.3 } }"#;
     /// let checked = study.check_answer(answer, "answer.json", false)?;
-    /// assert_eq!(checked.wrong(), 1); // v_B is 0.83 m/s there
+    /// assert_eq!(checked.wrong(), 1); // v_B is 0.345 m/s there
     /// assert!(checked.to_text().contains("WRONG"));
     /// # Ok::<(), mechplan::Error>(())
     /// ```

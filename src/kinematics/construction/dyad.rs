@@ -225,14 +225,25 @@ impl Builder<'_> {
                 self.intersect(la, lb, id)?
             }
             // The guide's coincident point taken as the slider's: the
-            // relative sliding ignored.
-            Some(Mistake::WrongLink) if self.forgets(Mistake::WrongLink, id) => sides
-                .iter()
-                .find_map(|s| match s {
-                    Side::Slide { kx, .. } => Some(*kx),
-                    Side::Rigid { .. } | Side::Cylinder(_) => None,
-                })
-                .expect("a slide"),
+            // relative sliding ignored, the point drawn where the other
+            // link's point is (so that a replay finds it there).
+            Some(Mistake::WrongLink) if self.making(Mistake::WrongLink) => {
+                let kx = sides
+                    .iter()
+                    .find_map(|s| match s {
+                        Side::Slide { kx, .. } => Some(*kx),
+                        Side::Rigid { .. } | Side::Cylinder(_) => None,
+                    })
+                    .expect("a slide");
+                let (at, err) = (self.plan.points[kx].at, self.plan.points[kx].err);
+                let out = self.add_point(id, at, err);
+                self.step(|| Act::Coincide {
+                    out,
+                    with: kx,
+                    translates: None,
+                });
+                out
+            }
             _ => self.intersect(la, lb, id)?,
         };
         for side in sides {
