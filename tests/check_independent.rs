@@ -34,6 +34,10 @@
 //!   an arbitrary value; every point of the acceleration plan drawn with
 //!   it (its normal components and the Coriolis accelerations of the
 //!   links turning with L); the step is "ω read off the velocity plan";
+//! - b′: a wrong stated sliding velocity v_B3B2 on a moving guide
+//!   (acceleration answers): written ×2 or ×0.5 (the relative segment read
+//!   at twice or half μ_v), the Coriolis acceleration 2·ω·v_rel drawn with
+//!   it; the step is the value before the plan, named by its key;
 //! - c: a plan drawn at another μ than stated: "×f" is a plan drawn f
 //!   times as large as its stated μ gives (drawn at μ/f; f = 2, 0.5, 2.5,
 //!   0.4); "inverted" a plan drawn at μ that states 1/μ (the scale written
@@ -137,6 +141,9 @@ impl Seen {
 enum Named {
     /// The stated ω: a mistake at the step "ω read off the velocity plan".
     StatedOmega,
+    /// A stated sliding velocity (its key, v_B3B2): the first mistake,
+    /// before the plan, names it.
+    StatedSlide(String),
     /// The scale: a mistake naming the scale (drawn at μ = X, stated
     /// μ = Y).
     Scale,
@@ -429,6 +436,7 @@ fn independent_answers_against_the_grader() {
                 let mut trials = honest(&ctx, &mut book);
                 if !made {
                     trials.extend(wrong_omega(&ctx));
+                    trials.extend(wrong_slide(&ctx));
                     trials.extend(wrong_mu(&ctx));
                     trials.extend(parallel_then_mirrored(&ctx, &mut book));
                     trials.extend(wrong_line(&ctx, &mut book));
@@ -515,6 +523,9 @@ fn run(ctx: &Ctx, t: Trial, book: &mut Book, debug: bool) {
     }
     if r.wrong() == 0 {
         tally.undecided_only += 1;
+        if debug {
+            eprintln!("UNDECIDED ONLY {}\n{}", t.answer.to_json(), text());
+        }
         return;
     }
     let Some(steps) = r.steps.as_ref() else {
@@ -539,6 +550,10 @@ fn run(ctx: &Ctx, t: Trial, book: &mut Book, debug: bool) {
             let t = format!("{} {}", sentence(f), f.step.1).to_lowercase();
             t.contains("ω") && t.contains("velocity plan")
         }),
+        Named::StatedSlide(key) => steps
+            .mistakes
+            .first()
+            .is_some_and(|f| f.step.0 == 0 && sentence(f).contains(key.as_str())),
         Named::Scale => steps.mistakes.first().is_some_and(|f| {
             let t = sentence(f).to_lowercase();
             matches!(f.explanation, Some(Explanation::Scale(_)))
@@ -851,6 +866,72 @@ fn wrong_omega(ctx: &Ctx) -> Vec<Trial> {
                     &stated,
                 ),
                 mistake: Some((seen, Named::StatedOmega, Vec::new())),
+            });
+        }
+    }
+    out
+}
+
+/// b′: a wrong stated sliding velocity on a moving guide, the Coriolis
+/// acceleration drawn with it.
+fn wrong_slide(ctx: &Ctx) -> Vec<Trial> {
+    let mut out = Vec::new();
+    if ctx.kind != PlanKind::Acceleration {
+        return out;
+    }
+    let m = &ctx.m;
+    for (k, q) in m.pairs.iter().enumerate() {
+        let v = ctx.vel.v_rel[k];
+        // A driven pair's sliding velocity is given, not read; a guide on
+        // the frame has no Coriolis term.
+        let driven = m
+            .inputs
+            .iter()
+            .any(|i| matches!(i, Input::Slide { pair, .. } if *pair == k));
+        if driven || !m.moving(q.guide) || !m.moving(q.slider) || v.abs() < 1e-9 {
+            continue;
+        }
+        // As the lecture writes it: the point on the guide relative to
+        // the point on the slider (v_B3B2, B of guide 3 on slider 2).
+        let p = &m.names[q.point];
+        let key = format!("v_{p}{}{p}{}", m.links[q.guide].id, m.links[q.slider].id);
+        for (what, f) in [("×2", 2.0), ("×0.5", 0.5)] {
+            let mut rng = rng_for(&format!("{} {} {key} {what}", ctx.name, ctx.k));
+            let wrong = significant(v.abs() * f, 3);
+            let mut vel = ctx.vel.clone();
+            vel.v_rel[k] = wrong * v.signum();
+            let exact_w = omegas_used(m, &ctx.vel, &ctx.stated_exact);
+            let Some(bad) = ctx.draw(&Options::default(), &vel, &exact_w, ctx.mu) else {
+                continue;
+            };
+            let mut seen = ctx.seen_anywhere(&bad, &ctx.truth);
+            let mut kind = format!("b′ stated v_rel {what}");
+            if seen == Seen::Invisible {
+                // The guide does not turn: the number alone is wrong, seen
+                // where its segment on the velocity plan is off by more
+                // than 2δ and twice the 2δ of reading it.
+                seen = Seen::of((wrong - v.abs()).abs() / ctx.mu_v, 2.0 * DELTA);
+                kind = format!("b′ stated v_rel {what}, only the number wrong (the plan the same)");
+            }
+            let stated = ctx.stated_honest(&mut rng);
+            let w = omegas_used(m, &ctx.vel, &stated);
+            let Some(drawn) = ctx.draw(&Options::default(), &vel, &w, ctx.mu) else {
+                continue;
+            };
+            let d = drawn.moved(&pencil(&mut rng, drawn.0.len(), DELTA));
+            let mut answer = ctx.answer(
+                &format!("{key} stated {wrong} instead of {:.4}", v.abs()),
+                &d,
+                ctx.mu,
+                &stated,
+            );
+            if let Some((_, values)) = &mut answer.velocity {
+                values.push((key.clone(), wrong));
+            }
+            out.push(Trial {
+                kind,
+                answer,
+                mistake: Some((seen, Named::StatedSlide(key.clone()), Vec::new())),
             });
         }
     }

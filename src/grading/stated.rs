@@ -34,6 +34,9 @@ struct Truth {
     bound: f64,
     mm_per_unit: f64,
     step: Option<usize>,
+    /// A sliding velocity's segment on the plan (b2b3), where no step
+    /// measures it.
+    segment: Option<String>,
     unit: &'static str,
 }
 
@@ -82,9 +85,21 @@ pub(super) fn judge(b: &Builds, lang: Lang) -> Result<Vec<StatedJudged>> {
         } else {
             ambiguous(b, s, t, &vel, lang)
         };
-        let sentence = match t.step {
-            Some(k) => check::step(&vel, k, lang),
-            None => check::fill(&w.stated_given, &[("name", &name), ("value", &fmt(t.value))]),
+        let sentence = match (t.step, &t.segment) {
+            (Some(k), _) => check::step(&vel, k, lang),
+            (None, Some(segment)) => check::fill(
+                &w.stated_slide,
+                &[
+                    ("name", &name),
+                    ("segment", segment),
+                    ("mm", &fmt(t.value * t.mm_per_unit)),
+                    ("mu", &fmt(1.0 / t.mm_per_unit)),
+                    ("value", &fmt(t.value)),
+                ],
+            ),
+            (None, None) => {
+                check::fill(&w.stated_given, &[("name", &name), ("value", &fmt(t.value))])
+            }
         };
         let step_text = check::fill(&w.stated_step, &[("sentence", &sentence)]);
         let found = wrong.then(|| {
@@ -166,6 +181,7 @@ fn truth(b: &Builds, vel: &Plan, s: &Stated) -> std::result::Result<Truth, Issue
                 bound,
                 mm_per_unit: if len > 0.0 { len / vel.mu } else { 0.0 },
                 step,
+                segment: None,
                 unit: "rad/s",
             })
         }
@@ -197,6 +213,7 @@ fn truth(b: &Builds, vel: &Plan, s: &Stated) -> std::result::Result<Truth, Issue
                 bound: (a.err + z.err + b.ans.delta) * vel.mu,
                 mm_per_unit: 1.0 / vel.mu,
                 step: None,
+                segment: Some(format!("{}{}", z.name(), a.name())),
                 unit: "m/s",
             })
         }

@@ -494,6 +494,8 @@ pub struct CheckPhrases {
     pub stated_item: String,
     pub stated_step: String,
     pub stated_given: String,
+    /// A stated sliding velocity's segment measured on the velocity plan.
+    pub stated_slide: String,
     pub yours: String,
     /// A stated value wrong: `{name}`, `{given}`, `{expected}`, `{tol}`,
     /// `{unit}`; why: its sense (`{name}`), μ_v's units, another link's

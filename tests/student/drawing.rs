@@ -379,7 +379,7 @@ pub struct AnswerFile {
     pub angles: Vec<(String, f64)>,
     pub values: Vec<(String, f64)>,
     /// An acceleration answer's velocity plan: μ_v and the ω read off it
-    /// (link id, signed).
+    /// (link id, signed), and sliding velocities by their keys (v_B3B2).
     pub velocity: Option<(f64, Vec<(String, f64)>)>,
 }
 
@@ -427,7 +427,16 @@ impl AnswerFile {
                     "values".into(),
                     Value::Object(
                         w.iter()
-                            .map(|(id, x)| (format!("omega{id}"), json!(x)))
+                            .map(|(id, x)| {
+                                // A sliding velocity by its key (v_B3B2),
+                                // an ω by its link's id.
+                                let key = if id.starts_with("v_") {
+                                    id.clone()
+                                } else {
+                                    format!("omega{id}")
+                                };
+                                (key, json!(x))
+                            })
                             .collect(),
                     ),
                 );
