@@ -35,6 +35,12 @@ pub enum Quantity {
     Point(String),
     /// ω or ε of a link (by id).
     Rate(String),
+    /// The relative (sliding) acceleration a^r of a prismatic pair, as
+    /// written after `a^r_` (`B3B2`): the segment from the Coriolis
+    /// point to the slider's point.
+    Sliding(String),
+    /// The Coriolis acceleration a^k of a prismatic pair (`a^k_B3B2`).
+    Coriolis(String),
 }
 
 #[derive(Clone, Debug)]
@@ -135,8 +141,17 @@ pub fn split_segment(key: &str, known: &dyn Fn(&str) -> bool) -> Option<(String,
 }
 
 /// Parse "ω2", "omega2", "w2", "ε3", "eps3", "epsilon3" → (is ε, link id);
-/// "v_B", "vB", "a_D" → (is a, point name).
+/// "v_B", "vB", "a_D" → (is a, point name); "v_B3B2", "a_B3B2" (a
+/// point of one link relative to another, resolved on the scene);
+/// "a^r_B3B2", "ar_B3B2" → ('r', …), "a^k_B3B2", "ak_B3B2" → ('k', …).
 fn quantity(key: &str) -> Option<(char, String)> {
+    for (prefix, kind) in [("a^r_", 'r'), ("ar_", 'r'), ("a^k_", 'k'), ("ak_", 'k')] {
+        if let Some(rest) = key.strip_prefix(prefix)
+            && rest.chars().next().is_some_and(|c| c.is_ascii_uppercase())
+        {
+            return Some((kind, rest.to_string()));
+        }
+    }
     for (prefix, kind) in [
         ("omega", 'w'),
         ("ω", 'w'),
@@ -426,6 +441,24 @@ fn value_item(
             },
             rounding: 0.0,
         }),
+        Some((c @ ('r' | 'k'), pair)) => {
+            if value < 0.0 {
+                return Err(issue(&ptr, "a magnitude cannot be negative"));
+            }
+            Ok(Item {
+                pointer: ptr,
+                key,
+                given: Given::Value {
+                    quantity: if c == 'r' {
+                        Quantity::Sliding(pair)
+                    } else {
+                        Quantity::Coriolis(pair)
+                    },
+                    value,
+                },
+                rounding: 0.0,
+            })
+        }
         Some((_, point)) => {
             if value < 0.0 {
                 return Err(issue(&ptr, "a magnitude cannot be negative"));
@@ -442,7 +475,7 @@ fn value_item(
         }
         None => Err(issue(
             &ptr,
-            format!("unknown quantity \"{key}\": use v_B, a_D, ω2 (omega2), ε3 (eps3)"),
+            format!("unknown quantity \"{key}\": use v_B, a_D, ω2 (omega2), ε3 (eps3), v_B3B2, a^r_B3B2, a^k_B3B2"),
         )),
     }
 }

@@ -5,7 +5,7 @@
 use super::answer::{self, Given, Item, Quantity};
 use crate::error::Issue;
 use crate::format::num;
-use crate::kinematics::construction::{Plan, PlanKind};
+use crate::kinematics::construction::{Op, Plan, PlanKind, PointId};
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
 use crate::words::catalogue::CheckPhrases;
@@ -120,6 +120,14 @@ pub(super) fn expect(
             quantity: Quantity::Rate(id),
             value,
         } => on.rate(id, *value),
+        Given::Value {
+            quantity: Quantity::Sliding(raw),
+            value,
+        } => on.pair(raw, Part::Sliding, *value),
+        Given::Value {
+            quantity: Quantity::Coriolis(raw),
+            value,
+        } => on.pair(raw, Part::Coriolis, *value),
     }?;
     // The number as typed may be off what was read by half a unit of its
     // last digit (in the item's unit), but by no more than the item's own
@@ -260,6 +268,11 @@ impl On<'_> {
                 .collect();
             on.join(", ")
         };
+        // v_B3B2, a_B3B2: B of link 3 relative to link 2, the segment
+        // b2b3.
+        if m.scene.point_index(name).is_none() && slide_of(m, name).is_some() {
+            return self.pair(name, Part::Whole, value);
+        }
         let pi = m.scene.point_index(name).ok_or_else(|| {
             self.issue(format!(
                 "unknown point \"{name}\" (this plan gives: {})",
@@ -335,6 +348,134 @@ impl On<'_> {
             visible: if len > 0.0 { delta * mu / len } else { bound },
             on_plan: (len > 0.0).then(|| (r.abs() * len / mu, value.abs() * len / mu)),
             point: measured.map(|q| q.to),
+            place: None,
+        })
+    }
+}
+
+/// Which part of a prismatic pair's relative motion an item gives.
+#[derive(Clone, Copy, PartialEq)]
+enum Part {
+    /// v_B3B2 (the sliding velocity) or a_B3B2 (the whole relative
+    /// acceleration): the segment between the pair's two points.
+    Whole,
+    /// a^r_B3B2: from the Coriolis point to the point it is laid toward.
+    Sliding,
+    /// a^k_B3B2: from the point it is laid off from to the Coriolis point.
+    Coriolis,
+}
+
+impl On<'_> {
+    /// A value of the prismatic pair `raw` (`B3B2`), read off this plan's
+    /// segment for `part`.
+    fn pair(&self, raw: &str, part: Part, value: f64) -> std::result::Result<Expected, Issue> {
+        let (plan, delta) = (self.plan, self.delta);
+        let (p, mu) = (&plan.points, plan.mu);
+        let m = &self.an.mech;
+        let (sym, unit) = match (plan.kind, part) {
+            (PlanKind::Velocity, Part::Whole) => ("v_", "m/s"),
+            (PlanKind::Velocity, _) => {
+                return Err(self.issue(format!(
+                    "\"{}\" belongs to the acceleration plan, but this answer is the velocity plan",
+                    self.it.key
+                )));
+            }
+            (_, Part::Whole) => ("a_", "m/s²"),
+            (_, Part::Sliding) => ("a^r_", "m/s²"),
+            (_, Part::Coriolis) => ("a^k_", "m/s²"),
+        };
+        let (q, l1, l2) = slide_of(m, raw).ok_or_else(|| {
+            self.issue(format!(
+                "cannot read \"{raw}\" as a point of one link relative to another (B3B2: B of link 3 on link 2)"
+            ))
+        })?;
+        // The pair's point as a point of link l on this plan: its own
+        // named point where the link carries it, else its coincident one.
+        let on_link = |l: usize| {
+            if l == m.frame() {
+                // The frame's every point is the pole.
+                return Some(0);
+            }
+            p.iter()
+                .position(|x| x.id == PointId::Coincident { point: q, link: l })
+                .or_else(|| {
+                    m.links[l]
+                        .points
+                        .contains(&q)
+                        .then(|| plan.of_point[q])
+                        .flatten()
+                })
+        };
+        let pts = on_link(l1).zip(on_link(l2));
+        // The steps that lay off the pair's Coriolis acceleration and its
+        // given relative vector (a driven pair: a cylinder), as (from, to).
+        let laid = |of: &dyn Fn(PointId) -> bool| {
+            plan.steps.iter().find_map(|st| match &st.op {
+                Op::LayOff { from, to, .. } if of(p[*to].id) => Some((*from, *to)),
+                _ => None,
+            })
+        };
+        let cor = laid(&|id| {
+            matches!(id, PointId::Coriolis { link } if link == l1 || link == l2)
+        });
+        let rel = laid(&|id| {
+            matches!(id, PointId::Relative { link } if link == l1 || link == l2)
+        });
+        if pts.is_none() && rel.is_none() && cor.is_none() {
+            return Err(self.issue(format!(
+                "{sym}{raw}: this plan has no points of {} on links {} and {} to read it off",
+                m.point_name(q),
+                m.link_id(l1),
+                m.link_id(l2)
+            )));
+        }
+        // The segments whose vector sum the item is.
+        let segments: Vec<(usize, usize)> = match part {
+            Part::Coriolis => cor.into_iter().collect(),
+            Part::Sliding => match (rel, cor, pts) {
+                (Some(r), ..) => vec![r],
+                (None, Some((from, k)), Some((i1, i2))) => {
+                    vec![(k, if from == i1 { i2 } else { i1 })]
+                }
+                (None, _, Some(ends)) => vec![ends],
+                // A driven pair whose given relative acceleration is 0:
+                // nothing laid off.
+                (None, _, None) => Vec::new(),
+            },
+            Part::Whole => match (pts, rel) {
+                (Some(ends), _) => vec![ends],
+                (None, r) => cor.into_iter().chain(r).collect(),
+            },
+        };
+        let len = segments
+            .iter()
+            .map(|&(a, z)| p[z].at - p[a].at)
+            .fold(Vec2::ZERO, |x, y| x + y)
+            .hypot();
+        // A segment laid off is as good as its own step (its end's error
+        // less its start's: δ and its value's); one between two points
+        // found apart, their errors added.
+        let own = |a: usize, z: usize| {
+            [cor, rel]
+                .into_iter()
+                .flatten()
+                .any(|step| step == (a, z))
+                .then(|| (p[z].err - p[a].err).max(0.0))
+        };
+        let err: f64 = segments
+            .iter()
+            .map(|&(a, z)| own(a, z).unwrap_or(p[a].err + p[z].err))
+            .sum();
+        let last = segments.iter().map(|&(a, z)| a.max(z)).max();
+        Ok(Expected {
+            what: format!("{sym}{raw}"),
+            expected: len * mu,
+            given: value,
+            tol: (err + delta) * mu,
+            unit,
+            visible: delta * mu,
+            on_plan: Some((len, value / mu)),
+            point: last,
             place: None,
         })
     }
@@ -441,6 +582,10 @@ fn said(an: &Analysis, plan: &Plan, it: &Item) -> Option<(Said, String)> {
             Said::Rate(scene.link_index(id)?),
             format!("{rate_sym}{id}"),
         ),
+        Given::Value {
+            quantity: Quantity::Sliding(_) | Quantity::Coriolis(_),
+            ..
+        } => return None,
     })
 }
 

@@ -111,7 +111,11 @@ pub(super) fn gives(b: &Builds, standard: &Plan) -> Vec<Option<(usize, Gives)>> 
         };
         taken.push(i);
         let mu = b.ans.mu;
-        out[k] = Some((i, Gives::Circle(value / mu, it.rounding / mu)));
+        // A value's digits place its circle no worse than the pencil's
+        // twice: v_B = 0.6 written for 0.58 is read off coarsely, and a
+        // 12 mm ring would let any point through.
+        let rounding = (it.rounding / mu).min(2.0 * b.ans.delta);
+        out[k] = Some((i, Gives::Circle(value / mu, rounding)));
     }
     out
 }
