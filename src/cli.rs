@@ -229,6 +229,26 @@ pub enum Command {
         #[arg(long, default_value_t = 36)]
         count: usize,
     },
+    /// A local web page to grade a plan drawn on paper from its photo: choose a scene, open the photo, click the rectangle's corners and the plan's points, read the verdict (docs/serve.md). Nothing is fetched from outside or sent elsewhere.
+    Serve {
+        /// Where to listen: 127.0.0.1 (this machine only) by default; an address of the
+        /// classroom's network (e.g. 0.0.0.0:8080) lets other machines in.
+        #[arg(long, default_value = "127.0.0.1:8080")]
+        listen: String,
+        /// A scene file to offer beside the bundled examples (repeat for several).
+        #[arg(long)]
+        scene: Vec<PathBuf>,
+        /// The teacher's folder: its subfolders of answers (marks files with their photos,
+        /// JSON, SVG, DXF) can be graded from the page into a gradebook.
+        #[arg(long)]
+        teacher: Option<PathBuf>,
+        /// The largest photo accepted, MB.
+        #[arg(long, default_value_t = 20)]
+        max_upload_mb: usize,
+        /// Requests handled at once (students grading at the same time).
+        #[arg(long, default_value_t = 8)]
+        workers: usize,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]

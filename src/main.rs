@@ -2,6 +2,7 @@
 //! [`Study`] (the front door every command goes through).
 
 mod cli;
+mod serve;
 mod terminal;
 
 use clap::Parser;
@@ -144,6 +145,19 @@ fn command(c: Command) -> Result<u8, Error> {
             format,
             count,
         } => wrote(&mechplan::frenet(&output, format.into(), count)?)?,
+        Command::Serve {
+            listen,
+            scene,
+            teacher,
+            max_upload_mb,
+            workers,
+        } => serve::run(serve::Options {
+            listen,
+            scenes: scene,
+            teacher,
+            max_upload_mb,
+            workers,
+        })?,
         study_command => studies(study_command)?,
     }
     Ok(0)
@@ -224,6 +238,7 @@ fn studies(c: Command) -> Result<(), Error> {
         Command::Solve { .. }
         | Command::Draw { .. }
         | Command::Check { .. }
+        | Command::Serve { .. }
         | Command::Frenet { .. } => Ok(()),
     }
 }
