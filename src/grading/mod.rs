@@ -37,6 +37,7 @@ mod table;
 pub mod svg;
 pub mod dxf;
 mod dxf_text;
+mod letters;
 pub(crate) mod drawing;
 mod verdict;
 
