@@ -332,8 +332,8 @@ fn with(base: &Value, extra: Value) -> Value {
 }
 
 /// Habit 1: the pole as books and students letter it — P, p, p_v, pv,
-/// "p v", pᵥ, p\S^v; (stacked), π (its scale naming the velocity plan),
-/// π in an MTEXT with its font's codes — each read as the velocity
+/// "p v", pᵥ, p\S^v; (stacked), р typed in the Cyrillic layout, π (its
+/// scale naming the velocity plan), π in an MTEXT with its font's codes — each read as the velocity
 /// plan's pole; π alone (the scale names no plan), π_a, p_a, pa, "p a",
 /// pₐ, π in an MTEXT with font codes as the acceleration plan's; each
 /// graded as its JSON twin.
@@ -356,6 +356,8 @@ fn the_pole_lettered_as_books_and_students_do_reads_as_the_json_twin() {
             with(&text("π", sv()), json!({"version": "R12"})),
         ),
         ("pi_mtext_font".into(), mtext("π", sv())),
+        // Typed in the Cyrillic layout.
+        ("p_cyrillic".into(), text("р", sv())),
     ];
     let n = velocity.len();
     habits("four_bar", 1, "velocity", "b", velocity);
