@@ -482,6 +482,53 @@ fn a_plan_on_a_sheet_with_its_frame_title_block_and_construction_reads_as_the_js
     eprintln!("habits 3 and 4 (a sheet): {n} of {n} files read");
 }
 
+/// Both plans of a position on one sheet, the velocity plan's pole p_v
+/// and the acceleration plan's π: each read when asked (`--plan`), the
+/// other plan's pole and letters left out and noted — graded as the JSON
+/// twin of the plan asked.
+#[test]
+fn two_plans_on_one_sheet_each_read_when_asked() {
+    let (v, mu_v) = plan_of("slider_driven_rocker", 2, "velocity");
+    let (a, mu_a) = plan_of("slider_driven_rocker", 2, "acceleration");
+    let dir = fresh("two_plans");
+    let path = dir.join("both.dxf");
+    ezdxf(
+        &path,
+        json!({"version": "R2018", "lines": "line", "texts": "text", "scale": format!("μv = {mu_v} (m/s)/mm"), "origin": [200, 200], "pole": "p_v", "points": v,
+               "second": {"pole": "π", "points": a, "offset": [300, 0]}, "captions": [[format!("μa = {mu_a} (m/s²)/mm"), 300, -60]]}),
+    );
+    for (kind, points, mu) in [("velocity", &v, mu_v), ("acceleration", &a, mu_a)] {
+        let twin = dir.join(format!("{kind}.json"));
+        std::fs::write(
+            &twin,
+            json!({"plan": kind, "position": 2, "mu": mu, "points": points}).to_string(),
+        )
+        .unwrap();
+        let (code, expected) = report("slider_driven_rocker", &twin, 2);
+        // μ is given: the sheet states two.
+        let (got_code, out, err) = run(&[
+            "check",
+            &scene("slider_driven_rocker"),
+            path.to_str().unwrap(),
+            "--position",
+            "2",
+            "--plan",
+            kind,
+            "--mu",
+            &mu.to_string(),
+            "--format",
+            "json",
+        ]);
+        assert_eq!(got_code, code, "{kind}: {out}{err}");
+        let got: Value = serde_json::from_str(&out).unwrap();
+        alike(&expected, &got, kind);
+        let notes = got["notes"].to_string();
+        let other_pole = if kind == "velocity" { "π" } else { "p_v" };
+        assert!(notes.contains(other_pole), "{kind}: {notes}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The report in words tells what was left out.
 #[test]
 fn the_text_report_notes_what_was_left_out() {

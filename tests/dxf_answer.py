@@ -26,6 +26,9 @@ Reads a JSON spec on stdin and writes the DXF file it names:
   captions  texts put beside the plan: [text, dx, dy] from the pole (mm)
   hatch     true: a HATCH (a ground's hatching) beside the plan
   dimension true: a DIMENSION measuring the first vector, rendered
+  second    {"pole": …, "points": {…}, "offset": [dx, dy]}: a second plan
+            (the other plan of the same position) drawn beside the first,
+            its pole offset from the first's, as TEXT and LINE
   arcs      true: construction arcs and circles as a student draws them
             (a similar figure by two arcs: ARCs about the pole and the
             first point through the last point; a CIRCLE at the pole; an
@@ -118,6 +121,13 @@ if spec.get("frame"):
     msp.add_text("TMM 2026", dxfattribs={"layer": "TITLE", "height": 3.5, "insert": (300, 10)})
 for text, dx, dy in spec.get("captions", []):
     msp.add_text(text, dxfattribs={"height": 3.5, "insert": (ox + dx, oy + dy)})
+if spec.get("second"):
+    sec = spec["second"]
+    sx0, sy0 = ox + sec["offset"][0], oy + sec["offset"][1]
+    msp.add_text(sec["pole"], dxfattribs={"height": 3.5, "insert": (sx0 + 1.5, sy0 + 1.5)})
+    for name, (x, y) in sec["points"].items():
+        msp.add_line((sx0, sy0), (sx0 + x, sy0 + y))
+        msp.add_text(name, dxfattribs={"height": 3.5, "insert": (sx0 + x + 1.5, sy0 + y + 1.5)})
 SHEETS = {"A4": (210, 297), "A3": (420, 297), "A2": (594, 420), "A1": (841, 594), "A0": (1189, 841)}
 if spec.get("sheet"):
     w, hh = SHEETS[spec["sheet"]]

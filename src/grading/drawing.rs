@@ -15,6 +15,7 @@ use super::answer::{Answer, Given, Item};
 use crate::error::{Error, Issue, Result};
 use crate::kinematics::construction::PlanKind;
 use super::letters::{is_pole, plan_letter, scale_statement};
+use super::touching::plan_lines;
 use kurbo::Point;
 use std::collections::{HashMap, HashSet};
 
@@ -114,21 +115,6 @@ pub(super) fn whole(message: &str) -> Error {
     }])
 }
 
-/// How near a line's end must come to another line to be drawn from it,
-/// mm: a CAD's object snap puts it there exactly, a hand without the snap
-/// within a pencil's width; a frame or a title block is drawn farther
-/// from the plan than that.
-pub(super) const TOUCH_MM: f64 = 1.0;
-
-/// The most segment samples kept to find which lines touch (a segment
-/// past the budget is found touching at its ends only): a plan of a few
-/// dozen lines on an A0 sheet needs some thousands.
-const MAX_SAMPLES: usize = 4_000_000;
-
-/// The most (line end, nearby segment) pairs looked at: a drawing crowded
-/// past it is refused, not read for minutes.
-const MAX_TOUCH_CHECKS: usize = 300_000_000;
-
 /// What a text of a drawing is read as.
 #[derive(Clone, Debug, PartialEq)]
 enum Text {
@@ -167,14 +153,25 @@ fn pole_name(t: &Text) -> Option<&str> {
 
 /// The drawing's pole: the first text read as the pole's letter that
 /// stands next to a line's end (`all`: every line's), its index and that
-/// end. No such text, or none next to an end, is refused saying what to
-/// change.
-fn find_pole(labels: &[(String, Point)], texts: &[Text], all: &Ends) -> Result<(usize, Point)> {
-    let mut poles = texts
-        .iter()
-        .enumerate()
-        .filter(|(_, t)| pole_name(t).is_some())
-        .peekable();
+/// end — of the poles of the plan `prefer` (the plan asked or named by
+/// the texts) first, so that of a velocity and an acceleration plan drawn
+/// on one sheet the one asked is read. No such text, or none next to an
+/// end, is refused saying what to change.
+fn find_pole(
+    labels: &[(String, Point)],
+    texts: &[Text],
+    all: &Ends,
+    prefer: Option<PlanKind>,
+) -> Result<(usize, Point)> {
+    let other_plans = |t: &Text| {
+        let kind = pole_name(t).and_then(labelled_plan);
+        prefer.is_some() && kind.is_some() && kind != prefer
+    };
+    let mut order: Vec<usize> = (0..texts.len())
+        .filter(|&k| pole_name(&texts[k]).is_some())
+        .collect();
+    order.sort_by_key(|&k| other_plans(&texts[k]));
+    let mut poles = order.into_iter().map(|k| (k, &texts[k])).peekable();
     if poles.peek().is_none() {
         let others = quoted(
             labels
@@ -220,104 +217,6 @@ fn quoted<'a>(texts: impl Iterator<Item = &'a str>) -> String {
     out.join(", ")
 }
 
-/// The distance from `p` to the segment `a`–`b`.
-fn to_segment(p: Point, a: Point, b: Point) -> f64 {
-    let ab = b - a;
-    let len2 = ab.hypot2();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - a.lerp(b, t)).hypot()
-}
-
-/// Segments in the cells they pass through: each its line's index and its
-/// two ends.
-type Segments = HashMap<(i64, i64), Vec<(usize, Point, Point)>>;
-
-/// Which of the drawing's lines are the plan's: those joined to a line
-/// through the pole's end `pole`, one by one, each touching the next (a
-/// point of one — an end or a polyline's vertex — within [`TOUCH_MM`] of
-/// the other, at its end or along it), as a plan's vectors meet at their
-/// points. A frame, a title block's lines, a mechanism's scheme or a
-/// second plan beside the plan touch none of its lines and are left out:
-/// a label beside a frame's corner names no point.
-///
-/// Linear in the drawing's size: segments are sampled every half cell
-/// into cells of [`SNAP_MM`], and each point looks only at its cell and
-/// the eight around it.
-fn plan_lines(lines: &[Vec<Point>], pole: Point) -> Result<Vec<bool>> {
-    let finite = |p: &Point| p.x.is_finite() && p.y.is_finite();
-    let mut cells: Segments = HashMap::new();
-    let mut budget = MAX_SAMPLES;
-    for (i, l) in lines.iter().enumerate() {
-        let segments: Vec<(Point, Point)> = match l.as_slice() {
-            [p] => vec![(*p, *p)],
-            l => l.windows(2).map(|w| (w[0], w[1])).collect(),
-        };
-        for (a, b) in segments {
-            if !(finite(&a) && finite(&b)) {
-                continue;
-            }
-            let len = (b - a).hypot();
-            let wanted = ((len / (SNAP_MM / 2.0)).ceil().min(usize::MAX as f64) as usize).max(1);
-            let steps = if wanted <= budget {
-                budget -= wanted;
-                wanted
-            } else {
-                1
-            };
-            let mut last = None;
-            for k in 0..=steps {
-                let c = Ends::cell(a.lerp(b, k as f64 / steps as f64));
-                if last != Some(c) {
-                    cells.entry(c).or_default().push((i, a, b));
-                    last = Some(c);
-                }
-            }
-        }
-    }
-    let mut parent: Vec<usize> = (0..lines.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    let mut checks = 0usize;
-    for (j, l) in lines.iter().enumerate() {
-        for v in l.iter().filter(|p| finite(p)) {
-            let (cx, cy) = Ends::cell(*v);
-            for dx in -1..=1i64 {
-                for dy in -1..=1i64 {
-                    let key = (cx.saturating_add(dx), cy.saturating_add(dy));
-                    for &(i, a, b) in cells.get(&key).into_iter().flatten() {
-                        checks += 1;
-                        if checks > MAX_TOUCH_CHECKS {
-                            return Err(whole(&format!(
-                                "the drawing's lines are too crowded to be read (more than {MAX_TOUCH_CHECKS} line ends beside other lines); a plan is a few dozen lines: leave out hatching drawn as lines"
-                            )));
-                        }
-                        let (ri, rj) = (root(&mut parent, i), root(&mut parent, j));
-                        if ri != rj && to_segment(*v, a, b) <= TOUCH_MM {
-                            parent[ri] = rj;
-                        }
-                    }
-                }
-            }
-        }
-    }
-    let poles: HashSet<usize> = (0..lines.len())
-        .filter(|&i| lines[i].contains(&pole))
-        .map(|i| root(&mut parent, i))
-        .collect();
-    Ok((0..lines.len())
-        .map(|i| poles.contains(&root(&mut parent, i)))
-        .collect())
-}
-
 /// The ends of the plan's lines ([`plan_lines`]), where its labels snap.
 fn plan_ends(lines: &[Vec<Point>], pole: Point) -> Result<Ends> {
     let on = plan_lines(lines, pole)?;
@@ -333,10 +232,11 @@ fn plan_ends(lines: &[Vec<Point>], pole: Point) -> Result<Ends> {
 
 /// Where a drawing's pole is (its coordinates, mm): the line end its
 /// label names, as [`answer_of`] finds it.
-pub(super) fn pole_of(drawing: &Drawing) -> Result<Point> {
+/// `plan`: the plan the answer was read as.
+pub(super) fn pole_of(drawing: &Drawing, plan: Option<PlanKind>) -> Result<Point> {
     let texts: Vec<Text> = drawing.labels.iter().map(|(s, _)| text_kind(s)).collect();
     let all = Ends::new(drawing.lines.iter().flatten().copied().collect());
-    find_pole(&drawing.labels, &texts, &all).map(|(_, e)| e)
+    find_pole(&drawing.labels, &texts, &all, plan).map(|(_, e)| e)
 }
 
 /// A drawing read as an answer ([`answer_and_notes`] without its notes).
@@ -389,14 +289,10 @@ pub(crate) fn answer_and_notes(
         return Err(Error::fields(vec![i]));
     }
     let all = Ends::new(lines.iter().flatten().copied().collect());
-    let (pole_k, pole) = find_pole(&labels, &texts, &all)?;
+    let stated = stated_plan(&labels);
+    let (pole_k, pole) = find_pole(&labels, &texts, &all, plan.or(stated))?;
     let pole_label = pole_name(&texts[pole_k]).unwrap_or("p");
-    let plan = plan_of(
-        pole_label,
-        labels[pole_k].0.trim(),
-        plan,
-        stated_plan(&labels),
-    )?;
+    let plan = plan_of(pole_label, labels[pole_k].0.trim(), plan, stated)?;
     let ends = plan_ends(&lines, pole)?;
     let mut astray: Vec<&str> = Vec::new();
     // The pole labelled again at another end of the plan: which is the
@@ -498,6 +394,17 @@ fn plan_named(s: &str) -> Option<PlanKind> {
     }
 }
 
+/// The plan a pole's name (as [`plan_letter`] reads it) says by its
+/// subscript: p_v the velocity plan's, p_a the acceleration plan's; `p`,
+/// `π` alone none.
+fn labelled_plan(pole: &str) -> Option<PlanKind> {
+    match pole.to_lowercase().as_str() {
+        "pv" | "πv" => Some(PlanKind::Velocity),
+        "pa" | "πa" => Some(PlanKind::Acceleration),
+        _ => None,
+    }
+}
+
 /// The plan a drawing is of: `asked` (--plan), else the one the pole's
 /// label `pole` (a name as [`plan_letter`] reads it; `shown`: the label
 /// as written, for a message) names, else the one
@@ -512,11 +419,7 @@ fn plan_of(
     asked: Option<PlanKind>,
     stated: Option<PlanKind>,
 ) -> Result<PlanKind> {
-    let labelled = match pole.to_lowercase().as_str() {
-        "pv" | "πv" => Some(PlanKind::Velocity),
-        "pa" | "πa" => Some(PlanKind::Acceleration),
-        _ => None,
-    };
+    let labelled = labelled_plan(pole);
     let name = |k: PlanKind| {
         if k == PlanKind::Velocity {
             "velocity"

@@ -586,10 +586,11 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
 
 /// Where a DXF answer's pole is in its file (drawing units, y up), and
 /// the file's millimetres per unit: where `check --dxf` draws the
-/// overlay.
-pub fn pole_in_file(text: &str) -> Result<(Point, f64)> {
+/// overlay. `plan`: the plan the answer was read as (of two plans on one
+/// sheet, its pole).
+pub fn pole_in_file(text: &str, plan: Option<PlanKind>) -> Result<(Point, f64)> {
     let (d, unit) = parse_in(text)?;
-    let pole = super::drawing::pole_of(&d)?;
+    let pole = super::drawing::pole_of(&d, plan)?;
     Ok((Point::new(pole.x / unit, -pole.y / unit), unit))
 }
 

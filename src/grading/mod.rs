@@ -38,6 +38,7 @@ pub mod svg;
 pub mod dxf;
 mod dxf_text;
 mod letters;
+mod touching;
 pub(crate) mod drawing;
 mod verdict;
 
