@@ -92,7 +92,8 @@ pub(crate) fn stated_mu(labels: &[(String, Point)], prefix: &str) -> Option<f64>
 
 /// The scale one text states ([`stated_mu`]).
 fn mu_of(s: &str, prefix: &str) -> Option<f64> {
-    // The Greek letter, the micro sign (a code page's μ) or "mu".
+    // What follows the Greek letter, the micro sign (a code page's μ) or
+    // "mu", anywhere in the text.
     let rest = scale_statement(s)?.replace(' ', "");
     let rest = rest.strip_prefix(prefix)?;
     // A decimal point or comma ("0,01" as written in uk/ru).
@@ -129,6 +130,8 @@ enum Text {
     Other,
 }
 
+/// What a text is read as: a scale before a letter (a "μv = …" is never
+/// a point), a letter before a title, and everything else left out.
 fn text_kind(s: &str) -> Text {
     if s.trim().is_empty() {
         Text::Other
