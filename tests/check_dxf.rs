@@ -101,12 +101,21 @@ fn report(fixture: &str, answer: &Path, position: usize) -> (i32, Value) {
 }
 
 /// The same report: every value alike but the items' pointers (a JSON
-/// answer's /points/b, a drawing's "dxf: label b") and numbers within
+/// answer's /points/b, a drawing's "dxf: label b"), their keys' spelling
+/// (n_2, n2), a drawing's notes, and numbers within
 /// 1e-6 (a CAD's coordinates are rounded in the file's text); a
 /// tolerance of the JSON twin `a` may be wider than the drawing's by the
 /// rounding of its typed coordinates (to 0.1 mm: by up to 0.071 mm),
 /// which a drawing has not.
 fn alike(a: &Value, b: &Value, at: &str) {
+    // A point's key is its name as the student spells it: a drawing's
+    // label s_2, "s 2", s₂ is read as s2, the plan's n_2 as n2.
+    if at.ends_with("/key")
+        && let (Some(p), Some(q)) = (a.as_str(), b.as_str())
+    {
+        assert_eq!(p.replace('_', ""), q.replace('_', ""), "at {at}");
+        return;
+    }
     if at.ends_with("/tolerance")
         && let (Some(p), Some(q)) = (a.as_f64(), b.as_f64())
     {
@@ -115,9 +124,11 @@ fn alike(a: &Value, b: &Value, at: &str) {
     }
     match (a, b) {
         (Value::Object(x), Value::Object(y)) => {
+            // A drawing's notes on what its reading left out are the
+            // drawing's own; the grading is compared.
             let keys = |m: &serde_json::Map<String, Value>| {
                 m.keys()
-                    .filter(|k| *k != "pointer")
+                    .filter(|k| *k != "pointer" && *k != "notes")
                     .cloned()
                     .collect::<Vec<_>>()
             };
@@ -254,6 +265,360 @@ fn dxf_answers_of_the_four_bar_read_as_their_json_twins() {
 #[test]
 fn dxf_answers_of_the_six_link_read_as_their_json_twins() {
     twins("six_link_fig2_10", 6, "c");
+}
+
+/// The plan `kind` ("velocity", "acceleration") of `fixture` at
+/// `position` as `solve` gives it: its points and μ.
+fn plan_of(fixture: &str, position: usize, kind: &str) -> (serde_json::Map<String, Value>, f64) {
+    let (code, out, err) = run(&["solve", &scene(fixture), "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let at = v["positions"].as_array().unwrap().iter();
+    let p = &at.clone().find(|p| p["position"] == position).unwrap()["plans"][kind];
+    (
+        p["points"].as_object().unwrap().clone(),
+        p["mu"].as_f64().unwrap(),
+    )
+}
+
+/// Each habit (`specs`: a name and what tests/dxf_answer.py draws) of a
+/// right plan and of a wrong one (point `wrong` reflected through the
+/// pole) of `kind` is graded exactly as its JSON twin; the reports of
+/// the wrong ones are returned (with their habit's name) for what they
+/// note.
+fn habits(
+    fixture: &str,
+    position: usize,
+    kind: &str,
+    wrong: &str,
+    specs: Vec<(String, Value)>,
+) -> Vec<(String, Value)> {
+    let dir = fresh(&format!("{fixture}-{kind}-habits"));
+    let (points, mu) = plan_of(fixture, position, kind);
+    let mut bad = points.clone();
+    let p = bad[wrong].as_array().unwrap().clone();
+    bad[wrong] = json!([-p[0].as_f64().unwrap(), -p[1].as_f64().unwrap()]);
+    let mut reports = Vec::new();
+    for (tag, pts, status) in [("right", &points, 0), ("wrong", &bad, 1)] {
+        let answer = json!({"plan": kind, "position": position, "mu": mu, "points": pts});
+        let twin = dir.join(format!("{tag}.json"));
+        std::fs::write(&twin, answer.to_string()).unwrap();
+        let (code, expected) = report(fixture, &twin, position);
+        assert_eq!(code, status, "{tag} JSON twin: {expected}");
+        for (name, spec) in &specs {
+            let mut spec = spec.clone();
+            spec["points"] = json!(pts);
+            let path = dir.join(format!("{tag}-{name}.dxf"));
+            ezdxf(&path, spec);
+            let (code, got) = report(fixture, &path, position);
+            assert_eq!(code, status, "{tag} {name}: {got}");
+            alike(&expected, &got, &format!("{tag} {name}"));
+            if tag == "wrong" {
+                reports.push((name.clone(), got));
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    reports
+}
+
+/// A spec of tests/dxf_answer.py: `base` with `extra`'s keys over it.
+fn with(base: &Value, extra: Value) -> Value {
+    let mut v = base.clone();
+    for (k, x) in extra.as_object().unwrap() {
+        v[k] = x.clone();
+    }
+    v
+}
+
+/// Habit 1: the pole as books and students letter it — P, p, p_v, pv,
+/// "p v", pᵥ, p\S^v; (stacked), р typed in the Cyrillic layout, π (its
+/// scale naming the velocity plan), π in an MTEXT with its font's codes — each read as the velocity
+/// plan's pole; π alone (the scale names no plan), π_a, p_a, pa, "p a",
+/// pₐ, π in an MTEXT with font codes as the acceleration plan's; each
+/// graded as its JSON twin.
+#[test]
+fn the_pole_lettered_as_books_and_students_do_reads_as_the_json_twin() {
+    let (_, mu_v) = plan_of("four_bar", 1, "velocity");
+    let text = |pole: &str, scale: String| json!({"version": "R2018", "lines": "line", "texts": "text", "scale": scale, "origin": [150, 150], "pole": pole});
+    let mtext = |pole: &str, scale: String| json!({"version": "R2018", "lines": "lwpolyline", "texts": "mtext", "scale": scale, "origin": [150, 150], "pole": pole, "font": "\\fArial|b0|i1|c0|p34;"});
+    let sv = || format!("μv = {mu_v} (m/s)/mm");
+    let velocity: Vec<(String, Value)> = vec![
+        ("P".into(), text("P", sv())),
+        ("p".into(), text("p", sv())),
+        ("p_v".into(), text("p_v", sv())),
+        ("pv".into(), text("pv", sv())),
+        ("p_space_v".into(), text("p v", sv())),
+        ("p_unicode_v".into(), text("pᵥ", sv())),
+        ("p_stacked_v".into(), mtext("p\\S^v;", sv())),
+        (
+            "pi_r12".into(),
+            with(&text("π", sv()), json!({"version": "R12"})),
+        ),
+        ("pi_mtext_font".into(), mtext("π", sv())),
+        // Typed in the Cyrillic layout.
+        ("p_cyrillic".into(), text("р", sv())),
+    ];
+    let n = velocity.len();
+    habits("four_bar", 1, "velocity", "b", velocity);
+    // An acceleration plan whose points stand apart by more than a
+    // label's reach (15.6 mm at the least).
+    let (_, mu_a) = plan_of("slider_driven_rocker", 2, "acceleration");
+    let sa = || format!("μ = {mu_a} (m/s²)/mm");
+    let acceleration: Vec<(String, Value)> = vec![
+        ("pi".into(), text("π", sa())),
+        ("pi_a".into(), text("π_a", sa())),
+        ("p_a".into(), text("p_a", sa())),
+        ("pa".into(), text("pa", sa())),
+        ("p_space_a".into(), text("p a", sa())),
+        ("p_unicode_a".into(), text("pₐ", sa())),
+        ("pi_mtext_font".into(), mtext("π", sa())),
+    ];
+    let m = acceleration.len();
+    habits("slider_driven_rocker", 2, "acceleration", "b", acceleration);
+    eprintln!("habit 1 (the pole): {} of {} files read", n + m, n + m);
+}
+
+/// Habit 2: a point's index in every form — "s 2", s_2, s_{2}, s₂, MTEXT
+/// stacked either way (s\S^2;, s\S2^;) — read as s2, graded as the JSON
+/// twin (the six-link's s2, s4 and d_0).
+#[test]
+fn labels_with_an_index_in_every_form_read_as_the_json_twin() {
+    let (_, mu) = plan_of("six_link_fig2_10", 6, "velocity");
+    let base = json!({"version": "R2018", "lines": "line", "texts": "text", "scale": format!("μv = {mu} (m/s)/mm"), "origin": [150, 150], "pole": "p_v"});
+    let mut specs: Vec<(String, Value)> = Vec::new();
+    for index in ["space", "underscore", "braces", "unicode"] {
+        for texts in ["text", "mtext"] {
+            specs.push((
+                format!("{index}_{texts}"),
+                with(&base, json!({"index": index, "texts": texts})),
+            ));
+        }
+    }
+    specs.push((
+        "stacked_mtext".into(),
+        with(&base, json!({"index": "stacked", "texts": "mtext"})),
+    ));
+    let n = specs.len();
+    habits("six_link_fig2_10", 6, "velocity", "c", specs);
+    eprintln!("habit 2 (indices): {n} of {n} files read");
+}
+
+/// Habits 3 and 4: a plan on a sheet — the sheet's border and frame
+/// (A4 … A0), a title block of lines touching the frame filled with its
+/// texts (a group, "Лист 3", the format "A3" beside the frame's corner,
+/// the litera "У"), captions beside the plan (one within a label's reach
+/// of a point, the scale written in words), hatching, a dimension of a
+/// vector, construction arcs and circles and a polyline's bulge whose end
+/// stands at a label — is graded as its JSON twin; what was left out is
+/// noted in the report (JSON "notes", and the text's "note:" lines),
+/// never refused.
+#[test]
+fn a_plan_on_a_sheet_with_its_frame_title_block_and_construction_reads_as_the_json_twin() {
+    let (points, mu) = plan_of("four_bar", 1, "velocity");
+    let b = points["b"].as_array().unwrap();
+    let (bx, by) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+    let captions = json!([
+        ["Velocity plan, position 1", 10, -60],
+        ["Scale of velocities: 0.005 (m/s) in 1 mm", 10, -70],
+        // Beside the point b, nearer to its end than b's own label.
+        ["(fig. 3)", bx + 1.0, by - 3.0],
+    ]);
+    // The scale in a sentence of a Cyrillic title, in code page 1251.
+    let mut in_words = captions.clone();
+    in_words
+        .as_array_mut()
+        .unwrap()
+        .push(json!(["Масштаб μv = 0,005 (м/с)/мм", 10, -80]));
+    let base = json!({"version": "R2018", "lines": "line", "texts": "text", "scale": format!("μv = {mu} (m/s)/mm"), "origin": [300, 400], "pole": "p_v", "captions": captions});
+    let mut specs: Vec<(String, Value)> = Vec::new();
+    for sheet in ["A4", "A3", "A2", "A1", "A0"] {
+        specs.push((
+            format!("sheet_{sheet}"),
+            with(&base, json!({"sheet": sheet})),
+        ));
+    }
+    specs.push((
+        "sheet_mtext_lwpolyline_pi".into(),
+        with(
+            &base,
+            json!({"sheet": "A3", "texts": "mtext", "lines": "lwpolyline", "pole": "π"}),
+        ),
+    ));
+    specs.push((
+        "r12_cp1251_sheet_block".into(),
+        with(&base, json!({"version": "R12", "sheet": "A3", "block": true, "codepage": "ANSI_1251", "encoding": "cp1251", "scale": null, "captions": in_words})),
+    ));
+    specs.push((
+        "hatch_dimension_arcs".into(),
+        with(
+            &base,
+            json!({"hatch": true, "dimension": true, "arcs": true}),
+        ),
+    ));
+    specs.push((
+        "everything_at_once".into(),
+        with(&base, json!({"sheet": "A2", "hatch": true, "dimension": true, "arcs": true, "texts": "mtext"})),
+    ));
+    let n = specs.len();
+    let reports = habits("four_bar", 1, "velocity", "b", specs);
+    for (name, r) in &reports {
+        let notes: Vec<&str> = r["notes"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{name}: no notes in {r}"))
+            .iter()
+            .map(|n| n.as_str().unwrap())
+            .collect();
+        let notes = notes.join("\n");
+        if name.contains("sheet") || name.contains("everything") {
+            for left_out in ["Machine Design, gr. 41", "Лист 3", "У", "(fig. 3)"] {
+                assert!(notes.contains(left_out), "{name}: {notes}");
+            }
+            assert!(notes.contains("\"A3\""), "{name}: {notes}");
+        } else {
+            assert!(notes.contains("(fig. 3)"), "{name}: {notes}");
+        }
+    }
+    eprintln!("habits 3 and 4 (a sheet): {n} of {n} files read");
+}
+
+/// Both plans of a position on one sheet, the velocity plan's pole p_v
+/// and the acceleration plan's π: each read when asked (`--plan`), the
+/// other plan's pole and letters left out and noted — graded as the JSON
+/// twin of the plan asked.
+#[test]
+fn two_plans_on_one_sheet_each_read_when_asked() {
+    let (v, mu_v) = plan_of("slider_driven_rocker", 2, "velocity");
+    let (a, mu_a) = plan_of("slider_driven_rocker", 2, "acceleration");
+    let dir = fresh("two_plans");
+    let path = dir.join("both.dxf");
+    ezdxf(
+        &path,
+        json!({"version": "R2018", "lines": "line", "texts": "text", "scale": format!("μv = {mu_v} (m/s)/mm"), "origin": [200, 200], "pole": "p_v", "points": v,
+               "second": {"pole": "π", "points": a, "offset": [300, 0]}, "captions": [[format!("μa = {mu_a} (m/s²)/mm"), 300, -60]]}),
+    );
+    for (kind, points, mu) in [("velocity", &v, mu_v), ("acceleration", &a, mu_a)] {
+        let twin = dir.join(format!("{kind}.json"));
+        std::fs::write(
+            &twin,
+            json!({"plan": kind, "position": 2, "mu": mu, "points": points}).to_string(),
+        )
+        .unwrap();
+        let (code, expected) = report("slider_driven_rocker", &twin, 2);
+        // μ is given: the sheet states two.
+        let (got_code, out, err) = run(&[
+            "check",
+            &scene("slider_driven_rocker"),
+            path.to_str().unwrap(),
+            "--position",
+            "2",
+            "--plan",
+            kind,
+            "--mu",
+            &mu.to_string(),
+            "--format",
+            "json",
+        ]);
+        assert_eq!(got_code, code, "{kind}: {out}{err}");
+        let got: Value = serde_json::from_str(&out).unwrap();
+        alike(&expected, &got, kind);
+        let notes = got["notes"].to_string();
+        let other_pole = if kind == "velocity" { "π" } else { "p_v" };
+        assert!(notes.contains(other_pole), "{kind}: {notes}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The report in words tells what was left out.
+#[test]
+fn the_text_report_notes_what_was_left_out() {
+    let dir = fresh("notes");
+    let (points, mu) = plan_of("four_bar", 1, "velocity");
+    let path = dir.join("sheet.dxf");
+    ezdxf(
+        &path,
+        json!({"version": "R2018", "lines": "line", "texts": "text", "scale": format!("μv = {mu} (m/s)/mm"), "origin": [300, 400], "pole": "π", "sheet": "A3", "points": points}),
+    );
+    let (code, out, err) = run(&[
+        "check",
+        &scene("four_bar"),
+        path.to_str().unwrap(),
+        "--position",
+        "1",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("note: texts read as no plan letter, left out:") && out.contains("\"Лист 3\""),
+        "{out}"
+    );
+    assert!(
+        out.contains("note: letters next to no end of the plan's lines"),
+        "{out}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Refused only where the plan cannot be found, saying what to change:
+/// a sheet whose texts hold no pole (the texts it read named), a pole's
+/// letter beside no line's end, a pole with no letter beside its plan's
+/// ends (only a frame's corner near one).
+#[test]
+fn a_drawing_without_its_plan_is_refused_saying_what_to_change() {
+    let dir = fresh("no_plan");
+    let f = dir.join("answer.dxf");
+    let text =
+        |s: &str, x: f64, y: f64| format!("0\nTEXT\n8\n0\n10\n{x}\n20\n{y}\n40\n3.5\n1\n{s}\n");
+    let line = |x0: f64, y0: f64, x1: f64, y1: f64| {
+        format!("0\nLINE\n8\n0\n10\n{x0}\n20\n{y0}\n11\n{x1}\n21\n{y1}\n")
+    };
+    let frame = [
+        line(0.0, 0.0, 420.0, 0.0),
+        line(420.0, 0.0, 420.0, 297.0),
+        line(420.0, 297.0, 0.0, 297.0),
+        line(0.0, 297.0, 0.0, 0.0),
+    ]
+    .concat();
+    // No pole: the texts read are named.
+    let body = format!(
+        "0\nSECTION\n2\nENTITIES\n{frame}{}{}{}0\nENDSEC\n",
+        line(100.0, 100.0, 150.0, 130.0),
+        text("Лист 3", 300.0, 10.0),
+        text("mu = 0.005", 300.0, 30.0)
+    );
+    let err = refused(&f, hand(&body).as_bytes(), &["--position", "1"]);
+    assert!(
+        err.contains("no pole")
+            && err.contains("π")
+            && err.contains("\"Лист 3\"")
+            && err.contains("label the pole"),
+        "{err}"
+    );
+    // The pole's letter beside no line's end.
+    let body = format!(
+        "0\nSECTION\n2\nENTITIES\n{frame}{}{}{}0\nENDSEC\n",
+        line(100.0, 100.0, 150.0, 130.0),
+        text("p_v", 200.0, 200.0),
+        text("mu = 0.005", 300.0, 30.0)
+    );
+    let err = refused(&f, hand(&body).as_bytes(), &["--position", "1"]);
+    assert!(
+        err.contains("\"p_v\" is not next to any line's end") && err.contains("within 8 mm"),
+        "{err}"
+    );
+    // The pole and a vector, its letter beside the frame's corner only.
+    let body = format!(
+        "0\nSECTION\n2\nENTITIES\n{frame}{}{}{}{}0\nENDSEC\n",
+        line(100.0, 100.0, 150.0, 130.0),
+        text("p_v", 101.5, 101.5),
+        text("b", 415.0, 290.0),
+        text("mu = 0.005", 300.0, 30.0)
+    );
+    let err = refused(&f, hand(&body).as_bytes(), &["--position", "1"]);
+    assert!(
+        err.contains("no point of the plan is labelled") && err.contains("\"b\""),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A DXF written by hand: its groups, one per line pair.

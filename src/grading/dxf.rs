@@ -233,6 +233,26 @@ impl<'a> Entity<'a> {
         Ok(out)
     }
 
+    /// An LWPOLYLINE's vertices, each with its bulge (group 42 after
+    /// its x, y; 0 when it has none): the arc to the next vertex.
+    fn points_bulged(&self) -> Result<Vec<(Point, f64)>> {
+        let ps = self.points()?;
+        let mut bulges = vec![0.0; ps.len()];
+        let mut k: Option<usize> = None;
+        for g in &self.groups {
+            match g.code {
+                10 => k = Some(k.map_or(0, |k| k + 1)),
+                42 => {
+                    if let Some(b) = k.and_then(|k| bulges.get_mut(k)) {
+                        *b = g.value.parse::<f64>().ok().filter(|x| x.is_finite()).unwrap_or(0.0);
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(ps.into_iter().zip(bulges).collect())
+    }
+
     fn flags(&self, code: i32) -> i64 {
         self.value(code)
             .and_then(|v| v.parse::<i64>().ok())
@@ -408,11 +428,12 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
         match e.kind {
             "LINE" => out.lines.push(vec![world * e.point(10)?, world * e.point(11)?]),
             "LWPOLYLINE" => {
-                let mut ps: Vec<Point> = e.points()?.into_iter().map(|p| t * p).collect();
-                if e.flags(70) & 1 == 1 && ps.len() > 2 {
-                    ps.push(ps[0]);
-                }
-                out.lines.push(ps);
+                let ps: Vec<(Point, f64)> = e
+                    .points_bulged()?
+                    .into_iter()
+                    .map(|(p, b)| (t * p, b))
+                    .collect();
+                out.lines.extend(straight_runs(&ps, e.flags(70) & 1 == 1));
             }
             "POLYLINE" => {
                 // Meshes and polyface meshes are no plan's vectors.
@@ -421,12 +442,9 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
                 }
                 let mut ps = Vec::new();
                 for v in &e.vertices {
-                    ps.push(t * v.point(10)?);
+                    ps.push((t * v.point(10)?, v.num(42, Some(0.0))?));
                 }
-                if e.flags(70) & 1 == 1 && ps.len() > 2 {
-                    ps.push(ps[0]);
-                }
-                out.lines.push(ps);
+                out.lines.extend(straight_runs(&ps, e.flags(70) & 1 == 1));
             }
             "TEXT" | "MTEXT" => out.labels.push(label(e, t)?),
             "INSERT" => {
@@ -458,6 +476,39 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
         }
     }
     Ok(())
+}
+
+/// A polyline's straight runs: its vertices (each with the bulge of the
+/// segment to the next; `closed`: the last's back to the first) cut
+/// where a segment bulges. A bulge is an arc — a construction arc, a
+/// rounded corner — never a plan's vector, and its ends are not where a
+/// label may snap: a similar figure built by two arcs ends them beside
+/// the point they find.
+fn straight_runs(ps: &[(Point, f64)], closed: bool) -> Vec<Vec<Point>> {
+    let mut runs = Vec::new();
+    let Some(&(first, _)) = ps.first() else {
+        return runs;
+    };
+    let mut run = vec![first];
+    let n = ps.len();
+    let last = if closed && n > 2 { n } else { n - 1 };
+    for k in 0..last {
+        let next = ps[(k + 1) % n].0;
+        if ps[k].1 != 0.0 {
+            if run.len() > 1 {
+                runs.push(std::mem::take(&mut run));
+            }
+            run = vec![next];
+        } else {
+            run.push(next);
+        }
+    }
+    // A lone vertex is a point drawn, as an unclosed one-vertex polyline
+    // was read before.
+    if run.len() > 1 || (runs.is_empty() && n == 1) {
+        runs.push(run);
+    }
+    runs
 }
 
 /// A text's content (formatting stripped) and where it is: the middle of
@@ -535,10 +586,11 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
 
 /// Where a DXF answer's pole is in its file (drawing units, y up), and
 /// the file's millimetres per unit: where `check --dxf` draws the
-/// overlay.
-pub fn pole_in_file(text: &str) -> Result<(Point, f64)> {
+/// overlay. `plan`: the plan the answer was read as (of two plans on one
+/// sheet, its pole).
+pub fn pole_in_file(text: &str, plan: Option<PlanKind>) -> Result<(Point, f64)> {
     let (d, unit) = parse_in(text)?;
-    let pole = super::drawing::pole_of(&d)?;
+    let pole = super::drawing::pole_of(&d, plan)?;
     Ok((Point::new(pole.x / unit, -pole.y / unit), unit))
 }
 

@@ -37,6 +37,8 @@ mod table;
 pub mod svg;
 pub mod dxf;
 mod dxf_text;
+mod letters;
+mod touching;
 pub(crate) mod drawing;
 mod verdict;
 

@@ -46,15 +46,28 @@ impl Reading {
 /// answer (`name`, its file). Reading the file is the front door's
 /// (`crate::study`).
 pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
+    from_text_noted(text, name, svg, r).map(|(a, _)| a)
+}
+
+/// [`from_text`], and the notes on what of a drawing was left out (its
+/// texts that are no plan letter, letters beside no end of the plan:
+/// [`super::drawing::answer_and_notes`]) for the report; a JSON answer
+/// has none.
+pub fn from_text_noted(
+    text: &str,
+    name: &str,
+    svg: bool,
+    r: &Reading,
+) -> Result<(Answer, Vec<String>)> {
     let in_answer = crate::error::in_file(name);
     check_size(text.len() as u64).map_err(&in_answer)?;
     if let Some(i) = r.delta.and_then(|d| delta_issue(d, "delta")) {
         return Err(Error::fields(vec![i]));
     }
     let svg = svg || text.trim_start().starts_with('<') || super::dxf::looks_like_dxf(text);
-    let mut ans = if svg {
+    let (mut ans, notes) = if svg {
         drawing(text).and_then(|d| {
-            super::drawing::answer_of(
+            super::drawing::answer_and_notes(
                 d,
                 r.mu,
                 r.plan,
@@ -63,14 +76,14 @@ pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answe
             )
         })
     } else {
-        from_json(text)
+        from_json(text).map(|a| (a, Vec::new()))
     }
     .map_err(&in_answer)?;
     if let Some(d) = r.delta {
         ans.delta = d;
     }
     ans.position = r.over(ans.position);
-    Ok(ans)
+    Ok((ans, notes))
 }
 
 /// A drawing's text, read by its format: DXF when it looks like one

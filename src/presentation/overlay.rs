@@ -61,7 +61,7 @@ pub fn overlay_dxf(
     original: &[u8],
 ) -> crate::error::Result<Vec<u8>> {
     let text = crate::grading::dxf::decode(original)?;
-    let (pole, unit) = crate::grading::dxf::pole_in_file(&text)?;
+    let (pole, unit) = crate::grading::dxf::pole_in_file(&text, Some(ans.plan))?;
     let (mut c, title) = overlay_canvas(an, ans, r, 1.0);
     let b = c.bounds();
     c.text(

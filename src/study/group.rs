@@ -245,7 +245,19 @@ fn check_files(
         .iter()
         .zip(&checked)
         .map(|((name, _), c)| match c {
-            Ok(Checked::Kinematic(k)) => gradebook::row_of(name, Outcome::Kinematic(&k.report)),
+            Ok(Checked::Kinematic(k)) => {
+                let mut row = gradebook::row_of(name, Outcome::Kinematic(&k.report));
+                // What the drawing's reading left out, after the report's
+                // own note.
+                if !k.notes.is_empty() {
+                    let notes = k.notes.join("; ");
+                    row.message = Some(match row.message.take() {
+                        Some(m) => format!("{m}; {notes}"),
+                        None => notes,
+                    });
+                }
+                row
+            }
             Ok(Checked::Force(r)) => gradebook::row_of(name, Outcome::Force(r)),
             Err(e) => gradebook::row_of(name, Outcome::Unreadable(&e.to_string())),
         })

@@ -125,8 +125,9 @@ impl Study {
 }
 
 pub(super) enum Parsed {
-    /// A plan of velocities or accelerations.
-    Kinematic(Answer),
+    /// A plan of velocities or accelerations, and the notes on what of
+    /// its drawing was left out.
+    Kinematic(Answer, Vec<String>),
     /// A force plan.
     Force(ForceAnswer),
 }
@@ -136,7 +137,7 @@ impl Parsed {
     /// the answer's own).
     fn position(&self) -> StatedPosition {
         match self {
-            Parsed::Kinematic(a) => a.position,
+            Parsed::Kinematic(a, _) => a.position,
             Parsed::Force(a) => a.position,
         }
     }
@@ -164,12 +165,8 @@ pub(super) fn parse_answer(
     if let Some(f) = parse_force_answer(text, name, svg, req)? {
         return Ok(Parsed::Force(f));
     }
-    Ok(Parsed::Kinematic(read::from_text(
-        text,
-        name,
-        svg,
-        &reading(req),
-    )?))
+    let (answer, notes) = read::from_text_noted(text, name, svg, &reading(req))?;
+    Ok(Parsed::Kinematic(answer, notes))
 }
 
 /// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
@@ -257,13 +254,14 @@ pub(super) fn position_of(
 /// `lang` (default: the scene's `want.lang`).
 pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -> Result<Checked> {
     Ok(match parsed {
-        Parsed::Kinematic(ans) => {
+        Parsed::Kinematic(ans, notes) => {
             let lang = lang.unwrap_or_else(|| sol.study().lang());
             let report = grading::check_in(sol.an(), sol.all(), &ans, lang)?;
             Checked::Kinematic(Box::new(KinematicCheck {
                 analysis: Arc::clone(&sol.study().analysis),
                 answer: ans,
                 report,
+                notes,
             }))
         }
         Parsed::Force(ans) => {
@@ -291,6 +289,10 @@ pub struct KinematicCheck {
     answer: Answer,
     /// The verdicts, item by item, and the diagnosis.
     pub report: Report,
+    /// What of a drawn answer was left out when it was read (texts that
+    /// are no plan letter, letters beside no end of the plan): told in
+    /// the report, so that a teacher sees what was not graded.
+    pub notes: Vec<String>,
 }
 
 impl Checked {
@@ -312,14 +314,28 @@ impl Checked {
     /// The report in words, as `mechplan check` prints it.
     pub fn to_text(&self) -> String {
         match self {
-            Checked::Kinematic(k) => verdict::to_text(&k.report),
+            Checked::Kinematic(k) => {
+                let mut text = verdict::to_text(&k.report);
+                for n in &k.notes {
+                    text.push_str(&format!("note: {n}\n"));
+                }
+                text
+            }
             Checked::Force(r) => verdict::force_to_text(r),
         }
     }
     /// The report as JSON (`mechplan check --format json`).
     pub fn to_json(&self) -> serde_json::Value {
         match self {
-            Checked::Kinematic(k) => verdict::to_json(&k.report),
+            Checked::Kinematic(k) => {
+                let mut v = verdict::to_json(&k.report);
+                if !k.notes.is_empty()
+                    && let Some(o) = v.as_object_mut()
+                {
+                    o.insert("notes".into(), serde_json::json!(k.notes));
+                }
+                v
+            }
             Checked::Force(r) => verdict::force_to_json(r),
         }
     }
