@@ -8,6 +8,7 @@ use super::{Solution, Study, Written, files, write_sheets};
 use crate::error::{Error, Result, in_file};
 use crate::grading::answer::{Answer, StatedPosition};
 use crate::grading::forces::{self, ForceAnswer, ForceReport};
+use crate::grading::photo::PhotoReading;
 use crate::grading::read::{self, Reading};
 use crate::grading::{self, Report};
 use crate::kinematics::construction::PlanKind;
@@ -125,8 +126,9 @@ impl Study {
 }
 
 pub(super) enum Parsed {
-    /// A plan of velocities or accelerations.
-    Kinematic(Answer),
+    /// A plan of velocities or accelerations (and, read from a marks
+    /// file, what the report says of its photo).
+    Kinematic(Answer, Option<PhotoReading>),
     /// A force plan.
     Force(ForceAnswer),
 }
@@ -136,7 +138,7 @@ impl Parsed {
     /// the answer's own).
     fn position(&self) -> StatedPosition {
         match self {
-            Parsed::Kinematic(a) => a.position,
+            Parsed::Kinematic(a, _) => a.position,
             Parsed::Force(a) => a.position,
         }
     }
@@ -164,12 +166,17 @@ pub(super) fn parse_answer(
     if let Some(f) = parse_force_answer(text, name, svg, req)? {
         return Ok(Parsed::Force(f));
     }
-    Ok(Parsed::Kinematic(read::from_text(
-        text,
-        name,
-        svg,
-        &reading(req),
-    )?))
+    // A marks file's photo, found against the marks file's folder.
+    let folder = std::path::Path::new(name)
+        .parent()
+        .map(std::path::Path::to_path_buf);
+    let photo_file = move |f: &str| {
+        let p = folder.as_ref().map_or_else(|| f.into(), |b| b.join(f));
+        std::fs::read(&p).map_err(|e| format!("{}: {e}", p.display()))
+    };
+    let (ans, photo) =
+        read::from_text_with_photo(text, name, svg, &reading(req), Some(&photo_file))?;
+    Ok(Parsed::Kinematic(ans, photo))
 }
 
 /// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
@@ -257,13 +264,14 @@ pub(super) fn position_of(
 /// `lang` (default: the scene's `want.lang`).
 pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -> Result<Checked> {
     Ok(match parsed {
-        Parsed::Kinematic(ans) => {
+        Parsed::Kinematic(ans, photo) => {
             let lang = lang.unwrap_or_else(|| sol.study().lang());
             let report = grading::check_in(sol.an(), sol.all(), &ans, lang)?;
             Checked::Kinematic(Box::new(KinematicCheck {
                 analysis: Arc::clone(&sol.study().analysis),
                 answer: ans,
                 report,
+                photo,
             }))
         }
         Parsed::Force(ans) => {
@@ -291,6 +299,8 @@ pub struct KinematicCheck {
     answer: Answer,
     /// The verdicts, item by item, and the diagnosis.
     pub report: Report,
+    /// A photographed plan's photo: its scale, conditioning and snapping.
+    pub photo: Option<PhotoReading>,
 }
 
 impl Checked {
@@ -312,14 +322,23 @@ impl Checked {
     /// The report in words, as `mechplan check` prints it.
     pub fn to_text(&self) -> String {
         match self {
-            Checked::Kinematic(k) => verdict::to_text(&k.report),
+            Checked::Kinematic(k) => {
+                let photo = k.photo.as_ref().map(PhotoReading::to_text);
+                photo.unwrap_or_default() + &verdict::to_text(&k.report)
+            }
             Checked::Force(r) => verdict::force_to_text(r),
         }
     }
     /// The report as JSON (`mechplan check --format json`).
     pub fn to_json(&self) -> serde_json::Value {
         match self {
-            Checked::Kinematic(k) => verdict::to_json(&k.report),
+            Checked::Kinematic(k) => {
+                let mut v = verdict::to_json(&k.report);
+                if let (Some(p), Some(o)) = (&k.photo, v.as_object_mut()) {
+                    o.insert("photo".into(), p.to_json());
+                }
+                v
+            }
             Checked::Force(r) => verdict::force_to_json(r),
         }
     }
