@@ -203,6 +203,11 @@ pub fn from_json(text: &str) -> Result<Answer> {
         .contains(&k.as_str())
         {
             issues.push(issue(format!("/{}", escape(k)), format!("unknown field \"{k}\" (allowed: plan, position, positions_from, mu, delta, segments, angles, points, values, velocity)")));
+            // A photographed plan's marks (`grading::photo`, which reads
+            // them into this answer: it is read there, not here).
+            if k == "photo" {
+                issues.push(issue("/photo", "a marks file of a photographed plan is read by check::photo::from_marks (as mechplan check and Study::check_answer read it), not as an answer's text"));
+            }
         }
     }
     let plan = match o.get("plan").and_then(Value::as_str) {

@@ -27,10 +27,13 @@ mod diagnosis;
 pub mod forces;
 mod items;
 mod numbers;
+pub mod photo;
 pub mod position;
 pub mod read;
 mod relative;
 mod scale;
+#[cfg(feature = "photo")]
+mod snap;
 mod stated;
 mod steps;
 mod table;

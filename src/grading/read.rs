@@ -3,6 +3,7 @@
 
 use super::answer::{Answer, check_size, delta_issue, from_json};
 use crate::error::{Error, Result};
+use super::photo::{PhotoFile, PhotoReading};
 use super::position::StatedPosition;
 use crate::kinematics::construction::PlanKind;
 use crate::model::scene::Numbering;
@@ -46,25 +47,29 @@ impl Reading {
 /// answer (`name`, its file). Reading the file is the front door's
 /// (`crate::study`).
 pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
-    from_text_noted(text, name, svg, r).map(|(a, _)| a)
+    from_text_full(text, name, svg, r, None).map(|(a, ..)| a)
 }
 
-/// [`from_text`], and the notes on what of a drawing was left out (its
+/// [`from_text`], with the notes on what of a drawing was left out (its
 /// texts that are no plan letter, letters beside no end of the plan:
-/// [`super::drawing::answer_and_notes`]) for the report; a JSON answer
-/// has none.
-pub fn from_text_noted(
+/// [`super::drawing::answer_and_notes`]; a JSON answer has none) and, for
+/// a marks file (a JSON answer with `photo`, [`super::photo`]), what the
+/// report says of its photo, read by `photo_file` (the front door's:
+/// reading files is not the grading's).
+pub fn from_text_full(
     text: &str,
     name: &str,
     svg: bool,
     r: &Reading,
-) -> Result<(Answer, Vec<String>)> {
+    photo_file: Option<PhotoFile>,
+) -> Result<(Answer, Vec<String>, Option<PhotoReading>)> {
     let in_answer = crate::error::in_file(name);
     check_size(text.len() as u64).map_err(&in_answer)?;
     if let Some(i) = r.delta.and_then(|d| delta_issue(d, "delta")) {
         return Err(Error::fields(vec![i]));
     }
     let svg = svg || text.trim_start().starts_with('<') || super::dxf::looks_like_dxf(text);
+    let mut photo = None;
     let (mut ans, notes) = if svg {
         drawing(text).and_then(|d| {
             super::drawing::answer_and_notes(
@@ -75,6 +80,11 @@ pub fn from_text_noted(
                 StatedPosition::default(),
             )
         })
+    } else if is_marks_text(text) {
+        super::photo::from_marks(text, photo_file).map(|(a, p)| {
+            photo = Some(p);
+            (a, Vec::new())
+        })
     } else {
         from_json(text).map(|a| (a, Vec::new()))
     }
@@ -83,7 +93,17 @@ pub fn from_text_noted(
         ans.delta = d;
     }
     ans.position = r.over(ans.position);
-    Ok((ans, notes))
+    Ok((ans, notes, photo))
+}
+
+/// Whether a JSON answer's text is a marks file (an object with
+/// `photo`); a text that is no JSON object is left to [`from_json`]'s
+/// messages.
+fn is_marks_text(text: &str) -> bool {
+    serde_json::from_str::<serde_json::Value>(text)
+        .ok()
+        .and_then(|v| v.as_object().map(super::photo::is_marks))
+        .unwrap_or(false)
 }
 
 /// A drawing's text, read by its format: DXF when it looks like one

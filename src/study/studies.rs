@@ -8,6 +8,7 @@ use super::{Solution, Study, Written, files, write_sheets};
 use crate::error::{Error, Result, in_file};
 use crate::grading::answer::{Answer, StatedPosition};
 use crate::grading::forces::{self, ForceAnswer, ForceReport};
+use crate::grading::photo::PhotoReading;
 use crate::grading::read::{self, Reading};
 use crate::grading::{self, Report};
 use crate::kinematics::construction::PlanKind;
@@ -125,9 +126,10 @@ impl Study {
 }
 
 pub(super) enum Parsed {
-    /// A plan of velocities or accelerations, and the notes on what of
-    /// its drawing was left out.
-    Kinematic(Answer, Vec<String>),
+    /// A plan of velocities or accelerations, the notes on what of its
+    /// drawing was left out, and (read from a marks file) what the report
+    /// says of its photo.
+    Kinematic(Answer, Vec<String>, Option<PhotoReading>),
     /// A force plan.
     Force(ForceAnswer),
 }
@@ -137,7 +139,7 @@ impl Parsed {
     /// the answer's own).
     fn position(&self) -> StatedPosition {
         match self {
-            Parsed::Kinematic(a, _) => a.position,
+            Parsed::Kinematic(a, ..) => a.position,
             Parsed::Force(a) => a.position,
         }
     }
@@ -165,8 +167,17 @@ pub(super) fn parse_answer(
     if let Some(f) = parse_force_answer(text, name, svg, req)? {
         return Ok(Parsed::Force(f));
     }
-    let (answer, notes) = read::from_text_noted(text, name, svg, &reading(req))?;
-    Ok(Parsed::Kinematic(answer, notes))
+    // A marks file's photo, found against the marks file's folder.
+    let folder = std::path::Path::new(name)
+        .parent()
+        .map(std::path::Path::to_path_buf);
+    let photo_file = move |f: &str| {
+        let p = folder.as_ref().map_or_else(|| f.into(), |b| b.join(f));
+        std::fs::read(&p).map_err(|e| format!("{}: {e}", p.display()))
+    };
+    let (ans, notes, photo) =
+        read::from_text_full(text, name, svg, &reading(req), Some(&photo_file))?;
+    Ok(Parsed::Kinematic(ans, notes, photo))
 }
 
 /// A force plan's answer (a JSON answer whose `plan` is `"force"`, or an
@@ -254,7 +265,7 @@ pub(super) fn position_of(
 /// `lang` (default: the scene's `want.lang`).
 pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -> Result<Checked> {
     Ok(match parsed {
-        Parsed::Kinematic(ans, notes) => {
+        Parsed::Kinematic(ans, notes, photo) => {
             let lang = lang.unwrap_or_else(|| sol.study().lang());
             let report = grading::check_in(sol.an(), sol.all(), &ans, lang)?;
             Checked::Kinematic(Box::new(KinematicCheck {
@@ -262,6 +273,7 @@ pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -
                 answer: ans,
                 report,
                 notes,
+                photo,
             }))
         }
         Parsed::Force(ans) => {
@@ -293,6 +305,8 @@ pub struct KinematicCheck {
     /// are no plan letter, letters beside no end of the plan): told in
     /// the report, so that a teacher sees what was not graded.
     pub notes: Vec<String>,
+    /// A photographed plan's photo: its scale, conditioning and snapping.
+    pub photo: Option<PhotoReading>,
 }
 
 impl Checked {
@@ -315,7 +329,8 @@ impl Checked {
     pub fn to_text(&self) -> String {
         match self {
             Checked::Kinematic(k) => {
-                let mut text = verdict::to_text(&k.report);
+                let photo = k.photo.as_ref().map(PhotoReading::to_text);
+                let mut text = photo.unwrap_or_default() + &verdict::to_text(&k.report);
                 for n in &k.notes {
                     text.push_str(&format!("note: {n}\n"));
                 }
@@ -329,10 +344,13 @@ impl Checked {
         match self {
             Checked::Kinematic(k) => {
                 let mut v = verdict::to_json(&k.report);
-                if !k.notes.is_empty()
-                    && let Some(o) = v.as_object_mut()
-                {
-                    o.insert("notes".into(), serde_json::json!(k.notes));
+                if let Some(o) = v.as_object_mut() {
+                    if !k.notes.is_empty() {
+                        o.insert("notes".into(), serde_json::json!(k.notes));
+                    }
+                    if let Some(p) = &k.photo {
+                        o.insert("photo".into(), p.to_json());
+                    }
                 }
                 v
             }

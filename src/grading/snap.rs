@@ -1,0 +1,254 @@
+//! A photographed plan's clicks moved to the crossings of its pencil
+//! lines (`"snap": true` in a marks file, docs/check.md): a click is a
+//! millimetre or so off, the crossing the student drew is where the
+//! point is. Around each click, the dark pixels of the photo (against the
+//! paper's own brightness there) are found as straight lines by a Hough
+//! transform, each line refined by a least-squares fit to the pixels
+//! along it, and the click moved to the nearest crossing of two of them
+//! that meet at 15° or more, if one lies within the radius.
+
+use crate::error::{Error, Result};
+use image::{DynamicImage, GrayImage, ImageDecoder, ImageReader};
+use std::io::Cursor;
+
+/// Two lines meeting at less than this are no crossing a click can be
+/// moved to: along nearly parallel lines the crossing slides far with a
+/// pixel's error.
+const MIN_CROSSING_DEG: f64 = 15.0;
+
+/// How far beyond the snapping radius the lines are looked for, mm: a
+/// crossing at the radius's edge still has this much of its lines seen.
+const MARGIN_MM: f64 = 2.0;
+
+/// The shortest line found, mm: shorter dark strokes are a letter, a
+/// smudge or noise.
+const MIN_LINE_MM: f64 = 1.5;
+
+/// The most lines looked for around one click (a pole may have many).
+const MAX_LINES: usize = 8;
+
+/// The photo as displayed: its file's bytes decoded (JPEG or PNG) with
+/// its EXIF orientation applied, in grey.
+pub fn load(bytes: &[u8]) -> Result<GrayImage> {
+    let bad = |why: String| {
+        Error::scene(
+            "/photo/file",
+            format!("the photo cannot be decoded: {why}"),
+        )
+    };
+    let reader = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| bad(e.to_string()))?;
+    let mut decoder = reader.into_decoder().map_err(|e| bad(e.to_string()))?;
+    let orientation = decoder
+        .orientation()
+        .unwrap_or(image::metadata::Orientation::NoTransforms);
+    let mut img = DynamicImage::from_decoder(decoder).map_err(|e| bad(e.to_string()))?;
+    img.apply_orientation(orientation);
+    Ok(img.to_luma8())
+}
+
+/// A line fitted to dark pixels: a point on it and its unit direction,
+/// and where its pixels begin and end along it (from `at`).
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    at: [f64; 2],
+    dir: [f64; 2],
+    ends: [f64; 2],
+}
+
+impl Line {
+    /// The point `t` along it.
+    fn point(&self, t: f64) -> [f64; 2] {
+        [self.at[0] + t * self.dir[0], self.at[1] + t * self.dir[1]]
+    }
+}
+
+/// The crossing of pencil lines nearest `click` (px) within `radius`
+/// px, where `px_per_mm` is the photo's scale there; `None` where there
+/// is none.
+pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
+    let reach = radius + MARGIN_MM * px_per_mm;
+    let (w, h) = (img.width() as i64, img.height() as i64);
+    let x0 = ((click[0] - reach).floor() as i64).clamp(0, w);
+    let x1 = ((click[0] + reach).ceil() as i64).clamp(0, w);
+    let y0 = ((click[1] - reach).floor() as i64).clamp(0, h);
+    let y1 = ((click[1] + reach).ceil() as i64).clamp(0, h);
+    if x1 - x0 < 3 || y1 - y0 < 3 {
+        return None;
+    }
+    // The window's pixels within reach of the click (centres at +0.5).
+    let mut px: Vec<([f64; 2], f64)> = Vec::new();
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let c = [x as f64 + 0.5, y as f64 + 0.5];
+            if (c[0] - click[0]).hypot(c[1] - click[1]) <= reach {
+                px.push((c, f64::from(img.get_pixel(x as u32, y as u32)[0])));
+            }
+        }
+    }
+    // Darkness against the paper's brightness here (the window's
+    // median: most of it is paper), kept above 40 % of the darkest.
+    let mut values: Vec<f64> = px.iter().map(|p| p.1).collect();
+    values.sort_by(f64::total_cmp);
+    let paper = values[values.len() / 2];
+    let darkest = values[values.len() / 100];
+    if paper - darkest < 30.0 {
+        return None;
+    }
+    let cut = 0.4 * (paper - darkest);
+    let mut dark: Vec<([f64; 2], f64)> = px
+        .iter()
+        .filter(|p| paper - p.1 > cut)
+        .map(|p| (p.0, paper - p.1))
+        .collect();
+    let mut lines = Vec::new();
+    let min_pixels = MIN_LINE_MM * px_per_mm;
+    let band = (0.25 * px_per_mm).max(1.5);
+    while lines.len() < MAX_LINES {
+        let Some(mut line) = hough_peak(&dark, click, reach, min_pixels) else {
+            break;
+        };
+        // Refine: fit the pixels along it, twice.
+        for _ in 0..2 {
+            let near: Vec<([f64; 2], f64)> =
+                dark.iter().copied().filter(|p| distance(&line, p.0) <= band).collect();
+            match fit(&near) {
+                Some(l) => line = l,
+                None => break,
+            }
+        }
+        // Its ends: the 2nd and 98th percentiles of its pixels along it.
+        let mut along: Vec<f64> = dark
+            .iter()
+            .filter(|p| distance(&line, p.0) <= band)
+            .map(|p| (p.0[0] - line.at[0]) * line.dir[0] + (p.0[1] - line.at[1]) * line.dir[1])
+            .collect();
+        along.sort_by(f64::total_cmp);
+        if let (Some(first), Some(last)) = (along.first(), along.last()) {
+            let n = along.len() - 1;
+            line.ends = [along[n / 50].max(*first), along[n - n / 50].min(*last)];
+        }
+        let before = dark.len();
+        dark.retain(|p| distance(&line, p.0) > band * 1.5);
+        if before - dark.len() < min_pixels as usize {
+            break;
+        }
+        lines.push(line);
+    }
+    let min_sin = MIN_CROSSING_DEG.to_radians().sin();
+    let mut best: Option<([f64; 2], f64)> = None;
+    for i in 0..lines.len() {
+        for j in i + 1..lines.len() {
+            let (a, b) = (lines[i], lines[j]);
+            let s = a.dir[0] * b.dir[1] - a.dir[1] * b.dir[0];
+            if s.abs() < min_sin {
+                continue;
+            }
+            let d = [b.at[0] - a.at[0], b.at[1] - a.at[1]];
+            let t = (d[0] * b.dir[1] - d[1] * b.dir[0]) / s;
+            let x = [a.at[0] + t * a.dir[0], a.at[1] + t * a.dir[1]];
+            let r = (x[0] - click[0]).hypot(x[1] - click[1]);
+            if r <= radius && best.is_none_or(|(_, r0)| r < r0) {
+                best = Some((x, r));
+            }
+        }
+    }
+    best.map(|b| b.0).or_else(|| common_end(&lines, click, radius, px_per_mm))
+}
+
+/// Where lines that meet at too small an angle to cross sharply end
+/// together (the rays from a plan's pole to points in much the same
+/// direction, which may read as one line): the mean of the ends within
+/// `radius` of `click` in the largest group of them within half a
+/// millimetre of one another, one end alone too; `None` where no line
+/// ends there (a line's end at the window's edge is beyond the radius).
+fn common_end(lines: &[Line], click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
+    let ends: Vec<[f64; 2]> = lines
+        .iter()
+        .flat_map(|l| [l.point(l.ends[0]), l.point(l.ends[1])])
+        .filter(|e| (e[0] - click[0]).hypot(e[1] - click[1]) <= radius)
+        .collect();
+    let near = 0.5 * px_per_mm;
+    let group = |e: &[f64; 2]| -> Vec<[f64; 2]> {
+        ends.iter()
+            .copied()
+            .filter(|f| (f[0] - e[0]).hypot(f[1] - e[1]) <= near)
+            .collect()
+    };
+    let best = ends.iter().map(group).max_by_key(Vec::len)?;
+    (!best.is_empty()).then(|| {
+        let n = best.len() as f64;
+        best.iter()
+            .fold([0.0, 0.0], |m, e| [m[0] + e[0] / n, m[1] + e[1] / n])
+    })
+}
+
+/// The distance of `p` from line `l`.
+fn distance(l: &Line, p: [f64; 2]) -> f64 {
+    ((p[0] - l.at[0]) * l.dir[1] - (p[1] - l.at[1]) * l.dir[0]).abs()
+}
+
+/// The strongest straight line among the dark pixels (weighted by their
+/// darkness), if enough pixels lie on it: a Hough transform over 1°
+/// directions and 1 px offsets from the click.
+fn hough_peak(dark: &[([f64; 2], f64)], click: [f64; 2], reach: f64, min_pixels: f64) -> Option<Line> {
+    const ANGLES: usize = 180;
+    let rho_bins = (2.0 * reach).ceil() as usize + 3;
+    let trig: Vec<(f64, f64)> = (0..ANGLES)
+        .map(|k| (k as f64).to_radians().sin_cos())
+        .collect();
+    let mut acc = vec![0.0f64; ANGLES * rho_bins];
+    let mut count = vec![0u32; ANGLES * rho_bins];
+    for (p, w) in dark {
+        let (x, y) = (p[0] - click[0], p[1] - click[1]);
+        for (k, (s, c)) in trig.iter().enumerate() {
+            let rho = x * c + y * s + reach + 1.0;
+            let r = rho.round() as usize;
+            if r < rho_bins {
+                acc[k * rho_bins + r] += w;
+                count[k * rho_bins + r] += 1;
+            }
+        }
+    }
+    let (i, _) = acc
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))?;
+    if f64::from(count[i]) < min_pixels {
+        return None;
+    }
+    let (k, r) = (i / rho_bins, i % rho_bins);
+    let (s, c) = trig[k];
+    let rho = r as f64 - reach - 1.0;
+    Some(Line {
+        at: [click[0] + rho * c, click[1] + rho * s],
+        dir: [-s, c],
+        ends: [0.0, 0.0],
+    })
+}
+
+/// The line through weighted pixels by total least squares (the
+/// principal axis of their spread); `None` for too few.
+fn fit(pts: &[([f64; 2], f64)]) -> Option<Line> {
+    let sw: f64 = pts.iter().map(|p| p.1).sum();
+    if pts.len() < 3 || sw <= 0.0 {
+        return None;
+    }
+    let m = pts.iter().fold([0.0, 0.0], |m, (p, w)| {
+        [m[0] + p[0] * w / sw, m[1] + p[1] * w / sw]
+    });
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    for (p, w) in pts {
+        let (dx, dy) = (p[0] - m[0], p[1] - m[1]);
+        sxx += w * dx * dx;
+        sxy += w * dx * dy;
+        syy += w * dy * dy;
+    }
+    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    Some(Line {
+        at: m,
+        dir: [theta.cos(), theta.sin()],
+        ends: [0.0, 0.0],
+    })
+}

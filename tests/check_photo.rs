@@ -1,0 +1,868 @@
+//! Plans on paper, photographed and marked (docs/check.md, "Plans on
+//! paper: photos and marks"). The right plans come from the method's own
+//! solver (tests/student), never from mechplan's construction; each is
+//! put on an A4 sheet inside its frame, the sheet "photographed" by a
+//! camera of this file's own (tilted up to 15°, turned, 8–12 px per mm),
+//! and a marks file written with the frame's corners and the points where
+//! the camera puts them, clicked carefully (each up to 0.15 mm off on the
+//! sheet). Each marks file must get its JSON twin's verdict: the right
+//! plan right, a mistaken one wrong with the same first mistake.
+
+mod student;
+
+use kurbo::Vec2;
+use mechplan::PlanKind;
+use mechplan::check::answer::from_json;
+use mechplan::check::{Grade, Report, check};
+use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
+use serde_json::{Map, Value, json};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use student::drawing::{Drawing, Source, acceleration_plan, standard_mu, velocity_plan};
+use student::rigid::{Model, Options};
+use student::scenes;
+
+/// The A4 sheet, mm, and its frame (20 mm left, 5 mm on the other sides).
+pub const SHEET: [f64; 2] = [210.0, 297.0];
+pub const FRAME_AT: [f64; 2] = [20.0, 5.0];
+pub const FRAME: [f64; 2] = [185.0, 287.0];
+
+/// A camera over the sheet: a pinhole at distance `d` (mm) above the
+/// sheet's centre, the sheet tilted by `tilt` (radians about x) and `yaw`
+/// (about y), the image turned by `turn` and shifted so that it is all in
+/// view; `f` in px so that the sheet's centre is `scale` px per mm.
+#[derive(Clone, Copy, Debug)]
+pub struct Camera {
+    pub tilt: f64,
+    pub yaw: f64,
+    pub turn: f64,
+    pub scale: f64,
+    pub d: f64,
+    pub offset: [f64; 2],
+}
+
+impl Camera {
+    /// A camera of random pose: each tilt up to 15°, any turn.
+    pub fn random(rng: &mut StdRng) -> Camera {
+        let deg = |x: f64| x.to_radians();
+        let mut c = Camera {
+            tilt: deg(rng.random_range(-15.0..15.0)),
+            yaw: deg(rng.random_range(-15.0..15.0)),
+            turn: deg(rng.random_range(-180.0..180.0)),
+            scale: rng.random_range(8.0..12.0),
+            d: 500.0,
+            offset: [0.0, 0.0],
+        };
+        // Shift so that the sheet's corners are 40 px inside the image.
+        let corners = [[0.0, 0.0], [SHEET[0], 0.0], SHEET, [0.0, SHEET[1]]];
+        let px: Vec<[f64; 2]> = corners.iter().map(|&p| c.to_px(p)).collect();
+        let lo = px
+            .iter()
+            .fold([f64::INFINITY; 2], |m, p| [m[0].min(p[0]), m[1].min(p[1])]);
+        c.offset = [40.0 - lo[0], 40.0 - lo[1]];
+        c
+    }
+
+    /// The pixel (x right, y down, origin at the image's top-left corner)
+    /// of sheet point `p` (mm, x right, y up, origin bottom-left).
+    pub fn to_px(&self, p: [f64; 2]) -> [f64; 2] {
+        let (x, y) = (p[0] - SHEET[0] / 2.0, p[1] - SHEET[1] / 2.0);
+        // The sheet turned about x by tilt, then about y by yaw.
+        let (ct, st) = (self.tilt.cos(), self.tilt.sin());
+        let (y1, z1) = (y * ct, y * st);
+        let (cy, sy) = (self.yaw.cos(), self.yaw.sin());
+        let (x2, z2) = (x * cy + z1 * sy, -x * sy + z1 * cy);
+        let z = self.d + z2;
+        let f = self.scale * self.d;
+        let (u, v) = (f * x2 / z, -f * y1 / z);
+        let (cr, sr) = (self.turn.cos(), self.turn.sin());
+        [
+            u * cr - v * sr + self.offset[0],
+            u * sr + v * cr + self.offset[1],
+        ]
+    }
+
+    /// The image's size that holds the whole sheet with a margin.
+    pub fn size(&self) -> [u32; 2] {
+        let corners = [[0.0, 0.0], [SHEET[0], 0.0], SHEET, [0.0, SHEET[1]]];
+        let hi = corners
+            .iter()
+            .map(|&p| self.to_px(p))
+            .fold([0.0f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
+        [(hi[0] + 40.0).ceil() as u32, (hi[1] + 40.0).ceil() as u32]
+    }
+
+    /// The frame's corners in px: bottom-left, bottom-right, top-right,
+    /// top-left of the upright sheet.
+    pub fn frame_px(&self) -> [[f64; 2]; 4] {
+        let [x, y] = FRAME_AT;
+        let [w, h] = FRAME;
+        [[x, y], [x + w, y], [x + w, y + h], [x, y + h]].map(|p| self.to_px(p))
+    }
+}
+
+/// A plan on the sheet: its points (mm from the pole) and the pole's
+/// place on the sheet, the plan centred in the frame.
+#[derive(Clone, Debug)]
+pub struct OnSheet {
+    pub points: Vec<(String, Vec2)>,
+    pub pole: [f64; 2],
+}
+
+impl OnSheet {
+    pub fn new(points: Vec<(String, Vec2)>) -> OnSheet {
+        let (mut lo, mut hi) = (Vec2::ZERO, Vec2::ZERO);
+        for (_, p) in &points {
+            lo = Vec2::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Vec2::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        let mid = (lo + hi) * 0.5;
+        let centre = [FRAME_AT[0] + FRAME[0] / 2.0, FRAME_AT[1] + FRAME[1] / 2.0];
+        OnSheet {
+            points,
+            pole: [centre[0] - mid.x, centre[1] - mid.y],
+        }
+    }
+    /// Point `p` (mm from the pole) on the sheet.
+    pub fn sheet(&self, p: Vec2) -> [f64; 2] {
+        [self.pole[0] + p.x, self.pole[1] + p.y]
+    }
+}
+
+/// A point `r` mm from `p` on the sheet in a random direction, as
+/// clicked: its pixel.
+pub fn click(cam: &Camera, p: [f64; 2], r: f64, rng: &mut StdRng) -> [f64; 2] {
+    let a = rng.random_range(0.0..std::f64::consts::TAU);
+    let q = cam.to_px([p[0] + r * a.cos(), p[1] + r * a.sin()]);
+    // Clicks are read to a hundredth of a pixel.
+    q.map(|x| (x * 100.0).round() / 100.0)
+}
+
+/// The answer's JSON twin: its points (mm from the pole, 0.01 mm).
+pub fn twin(kind: PlanKind, position: usize, mu: f64, points: &[(String, Vec2)]) -> Value {
+    let r = |x: f64| (x * 100.0).round() / 100.0;
+    let pts: Map<String, Value> = points
+        .iter()
+        .map(|(k, p)| (k.clone(), json!([r(p.x), r(p.y)])))
+        .collect();
+    json!({
+        "plan": if kind == PlanKind::Velocity { "velocity" } else { "acceleration" },
+        "position": position, "mu": mu, "points": pts,
+    })
+}
+
+/// The marks file of `plan` photographed by `cam`: the frame's corners
+/// and each point (the pole `p_v` or `p_a`) clicked up to `off` mm from where it is.
+pub fn marks(
+    twin: &Value,
+    plan: &OnSheet,
+    cam: &Camera,
+    off: (f64, f64),
+    file: &str,
+    rng: &mut StdRng,
+) -> Value {
+    let mut m = twin.clone();
+    let o = m.as_object_mut().unwrap();
+    let corners: Vec<Value> = cam
+        .frame_px()
+        .iter()
+        .map(|c| {
+            let r = rng.random_range(0.0..=off.0.min(0.15));
+            let a = rng.random_range(0.0..std::f64::consts::TAU);
+            let q = [
+                c[0] + r * cam.scale * a.cos(),
+                c[1] + r * cam.scale * a.sin(),
+            ];
+            json!([
+                (q[0] * 100.0).round() / 100.0,
+                (q[1] * 100.0).round() / 100.0
+            ])
+        })
+        .collect();
+    o.insert(
+        "photo".into(),
+        json!({ "file": file, "rectangle_px": corners, "rectangle_mm": FRAME }),
+    );
+    let mut pts = Map::new();
+    let pole = click(cam, plan.pole, rng.random_range(off.0..=off.1), rng);
+    // The pole by its plan's name: `p` may be a point of the scene (P).
+    let pole_key = if twin["plan"] == "velocity" {
+        "p_v"
+    } else {
+        "p_a"
+    };
+    pts.insert(pole_key.into(), json!(pole));
+    for (k, p) in &plan.points {
+        let at = click(cam, plan.sheet(*p), rng.random_range(off.0..=off.1), rng);
+        pts.insert(k.clone(), json!(at));
+    }
+    o.insert("points".into(), Value::Object(pts));
+    m
+}
+
+/// The verdict to compare: the grade and the first mistake (its step and
+/// sentence, its measured numbers left out: "laid off 0.7307 times its
+/// right length" is the same mistake read 0.7269).
+fn verdict(r: &Report) -> (Grade, Option<(usize, Option<String>)>) {
+    let first = r.steps.as_ref().and_then(|s| s.mistakes.first()).map(|f| {
+        let words = f.mistake.as_ref().map(|m| {
+            m.chars()
+                .filter(|c| !c.is_ascii_digit() && *c != '.')
+                .collect::<String>()
+        });
+        (f.step.0, words)
+    });
+    (r.grade(), first)
+}
+
+/// How far the twin's first wrong step is beyond its tolerance, mm; a
+/// mistake within 0.5 mm of it (the clicks move each point by up to
+/// 0.15 mm, the pole too, and the steps' own points with them) is on
+/// the edge, where a careful reading may fall either side.
+fn margin(r: &Report) -> Option<f64> {
+    let s = r.steps.as_ref()?;
+    s.steps
+        .iter()
+        .find(|v| v.judgement == mechplan::check::Judgement::Wrong)
+        .map(|v| v.off - v.tolerance)
+}
+
+/// One plan to photograph: the scene, its answer's JSON twin and the
+/// plan on the sheet; `right`: whether it is the right plan.
+pub struct Trial {
+    pub case: usize,
+    pub title: String,
+    pub twin: Value,
+    pub plan: OnSheet,
+    pub right: bool,
+    /// The pencil lines: pairs of points, mm from the pole.
+    pub lines: Vec<(Vec2, Vec2)>,
+}
+
+/// The lines a velocity or acceleration plan is drawn with: a ray from the
+/// pole to every point, and every two points of one link joined.
+fn lines_of(m: &Model, d: &Drawing) -> Vec<(Vec2, Vec2)> {
+    let mut out: Vec<(Vec2, Vec2)> = d.0.iter().map(|(_, _, p)| (Vec2::ZERO, *p)).collect();
+    for (l, body) in m.links.iter().enumerate() {
+        if l == m.frame {
+            continue;
+        }
+        let mut pts: Vec<Vec2> = body
+            .points
+            .iter()
+            .filter(|&&p| d.0.iter().any(|x| x.1 == Source::Named(p)))
+            .map(|&p| d.of_point(p))
+            .collect();
+        pts.extend(d.0.iter().filter_map(|(_, s, p)| match s {
+            Source::On { link, .. } if *link == l => Some(*p),
+            _ => None,
+        }));
+        for i in 0..pts.len() {
+            for j in i + 1..pts.len() {
+                out.push((pts[i], pts[j]));
+            }
+        }
+    }
+    out.retain(|(a, b)| (*a - *b).hypot() > 1.0);
+    out
+}
+
+/// Every fixture at its three positions, both plans at the standard
+/// scale: the right plan, the plan turned through the pole (the input's
+/// velocity or acceleration reversed), and the right plan with its last
+/// point 6 mm off.
+pub fn trials() -> (Vec<scenes::Case>, Vec<Trial>) {
+    let cases = scenes::fixtures();
+    let mut out = Vec::new();
+    for (ci, case) in cases.iter().enumerate() {
+        for (k, s) in case.solved.iter().enumerate() {
+            let m = Model::new(&case.json, &case.an, s);
+            let Some(vel) = m.velocities(&Options::default()) else {
+                continue;
+            };
+            let Some(acc) = m.accelerations(&vel, &vel.omega, &Options::default()) else {
+                continue;
+            };
+            for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
+                let vectors = match kind {
+                    PlanKind::Velocity => velocity_plan(&m, &vel),
+                    PlanKind::Acceleration => acceleration_plan(&m, &acc),
+                };
+                let mu = standard_mu(vectors.largest());
+                let d = vectors.at_scale(mu);
+                if d.0.is_empty() {
+                    continue;
+                }
+                let lines = lines_of(&m, &d);
+                let pts: Vec<(String, Vec2)> =
+                    d.0.iter().map(|(k, _, p)| (k.clone(), *p)).collect();
+                let reversed: Vec<(String, Vec2)> =
+                    pts.iter().map(|(k, p)| (k.clone(), -*p)).collect();
+                let mut moved = pts.clone();
+                let last = moved.len() - 1;
+                let p = moved[last].1;
+                let perp = if p.hypot() > 1e-9 {
+                    Vec2::new(-p.y, p.x) / p.hypot()
+                } else {
+                    Vec2::new(1.0, 0.0)
+                };
+                moved[last].1 = p + perp * 6.0;
+                let moved_lines: Vec<(Vec2, Vec2)> = lines
+                    .iter()
+                    .map(|&(a, b)| {
+                        let f = |x: Vec2| {
+                            if (x - p).hypot() < 1e-9 {
+                                moved[last].1
+                            } else {
+                                x
+                            }
+                        };
+                        (f(a), f(b))
+                    })
+                    .collect();
+                let neg: Vec<(Vec2, Vec2)> = lines.iter().map(|&(a, b)| (-a, -b)).collect();
+                for (tag, points, lines, right) in [
+                    ("right", pts.clone(), lines.clone(), true),
+                    ("reversed", reversed, neg, false),
+                    ("last point off", moved, moved_lines, false),
+                ] {
+                    out.push(Trial {
+                        case: ci,
+                        title: format!("{} position {} {kind:?}: {tag}", case.name, k + 1),
+                        twin: twin(kind, k + 1, mu, &points),
+                        plan: OnSheet::new(points),
+                        right,
+                        lines,
+                    });
+                }
+            }
+        }
+    }
+    (cases, out)
+}
+
+/// Grade an answer's JSON text, or a marks file's (read without its
+/// photo).
+fn grade(case: &scenes::Case, text: &str) -> Result<Report, String> {
+    let ans = if text.contains("\"photo\"") {
+        mechplan::check::photo::from_marks(text, None).map(|(a, _)| a)
+    } else {
+        from_json(text)
+    }
+    .map_err(|e| format!("{e}"))?;
+    check(&case.an, &case.solved, &ans).map_err(|e| format!("{e}"))
+}
+
+fn rng_for(title: &str) -> StdRng {
+    let seed = title.bytes().fold(0xcbf29ce484222325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100000001b3)
+    });
+    StdRng::seed_from_u64(seed)
+}
+
+/// Careful clicks (each up to 0.15 mm off on the sheet) through a tilted,
+/// turned camera: a plan its twin finds right is right, one its twin
+/// finds wrong (beyond the edge, [`margin`]) is wrong with the same first
+/// mistake; a twin that cannot judge is never made wrong.
+#[test]
+fn careful_clicks_get_the_twins_verdict() {
+    let (cases, trials) = trials();
+    let (mut n, mut same, mut right_right, mut wrong_wrong, mut edge, mut undecided) =
+        (0, 0, 0, 0, 0, 0);
+    let mut differ = Vec::new();
+    for t in &trials {
+        let case = &cases[t.case];
+        let Ok(twin_report) = grade(case, &t.twin.to_string()) else {
+            continue;
+        };
+        let mut rng = rng_for(&t.title);
+        let cam = Camera::random(&mut rng);
+        let m = marks(&t.twin, &t.plan, &cam, (0.0, 0.15), "plan.jpg", &mut rng);
+        let r = grade(case, &m.to_string()).unwrap_or_else(|e| panic!("{}: {e}", t.title));
+        n += 1;
+        let (a, b) = (verdict(&twin_report), verdict(&r));
+        if a == b {
+            same += 1;
+            right_right += usize::from(t.right && a.0 == Grade::Right);
+            wrong_wrong += usize::from(!t.right && a.0 == Grade::Wrong);
+            continue;
+        }
+        let on_edge = margin(&twin_report).is_some_and(|d| d < 0.5);
+        let fine = match a.0 {
+            Grade::CannotJudge => b.0 != Grade::Wrong,
+            Grade::Wrong if on_edge => true,
+            _ => false,
+        };
+        if fine {
+            if a.0 == Grade::CannotJudge {
+                undecided += 1;
+            } else {
+                edge += 1;
+            }
+            continue;
+        }
+        let off = |r: &Report| {
+            r.steps.as_ref().map(|s| {
+                s.steps
+                    .iter()
+                    .map(|v| format!("{} {:.2}/{:.2}", v.point, v.off, v.tolerance))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            })
+        };
+        differ.push(format!(
+            "{}: twin {a:?}, photo {b:?}\n  twin steps {:?}\n  photo steps {:?}",
+            t.title,
+            off(&twin_report),
+            off(&r)
+        ));
+    }
+    eprintln!(
+        "careful clicks: {n} marks files, {same} with the twin's verdict ({right_right} right plans right, {wrong_wrong} mistaken ones wrong); {undecided} the twin cannot judge and the photo does not call wrong; {edge} wrong within 0.5 mm of the tolerance read otherwise"
+    );
+    assert!(n >= 200, "only {n} cases");
+    assert!(differ.is_empty(), "{}", differ.join("\n"));
+}
+
+/// The binary on `args`: its exit status, standard output and error.
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+/// A fresh folder for one test.
+fn fresh(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mechplan-photo-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+const SCENE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/fixtures/six_link_fig2_10.json"
+);
+
+/// A marks file of the six-link's right velocity plan at position 1 (the
+/// first trial), its photo's name `plan.jpg`.
+fn six_link_marks() -> Value {
+    let (_, trials) = trials();
+    let t = trials
+        .iter()
+        .find(|t| {
+            t.title
+                .starts_with("six_link_fig2_10 position 1 Velocity: right")
+        })
+        .unwrap();
+    let mut rng = rng_for(&t.title);
+    let cam = Camera::random(&mut rng);
+    let mut m = marks(&t.twin, &t.plan, &cam, (0.0, 0.1), "plan.jpg", &mut rng);
+    // The fixture's own positions (the scene file as it is).
+    m.as_object_mut().unwrap().remove("position");
+    m
+}
+
+fn write(dir: &Path, name: &str, v: &Value) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, v.to_string()).unwrap();
+    p.display().to_string()
+}
+
+/// The command reads a marks file, finds its photo beside it and states
+/// the photo's scale.
+#[test]
+fn the_command_reads_a_marks_file() {
+    let dir = fresh("cli");
+    std::fs::write(dir.join("plan.jpg"), b"not read without snap").unwrap();
+    let m = six_link_marks();
+    let f = write(&dir, "marks.json", &m);
+    let (code, out, err) = run(&["check", SCENE, &f]);
+    assert!(code == 0 || code == 1 || code == 4, "{err}");
+    assert!(out.contains("px per mm"), "{out}");
+    let (_, json_out, err) = run(&["check", SCENE, &f, "--format", "json"]);
+    let v: Value = serde_json::from_str(&json_out).unwrap_or_else(|e| panic!("{e}: {err}"));
+    let s = v["photo"]["px_per_mm"].as_f64().unwrap();
+    assert!((7.0..14.0).contains(&s), "{s}");
+    // The photo is found against the marks file's folder.
+    std::fs::remove_file(dir.join("plan.jpg")).unwrap();
+    let (code, _, err) = run(&["check", SCENE, &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("/photo/file"), "{err}");
+}
+
+/// Bad marks are refused (status 2) with a message naming the field.
+#[test]
+fn bad_marks_are_refused_naming_the_field() {
+    let dir = fresh("bad");
+    std::fs::write(dir.join("plan.jpg"), b"x").unwrap();
+    let good = six_link_marks();
+    let c = good["photo"]["rectangle_px"].clone();
+    let edit = |f: &dyn Fn(&mut Value)| {
+        let mut m = good.clone();
+        f(&mut m);
+        m
+    };
+    let cases: Vec<(&str, Value, &str)> = vec![
+        (
+            "crossed corners",
+            edit(&|m| m["photo"]["rectangle_px"] = json!([c[0], c[2], c[1], c[3]])),
+            "/photo/rectangle_px",
+        ),
+        (
+            "mirrored corners",
+            edit(&|m| m["photo"]["rectangle_px"] = json!([c[1], c[0], c[3], c[2]])),
+            "/photo/rectangle_px",
+        ),
+        (
+            "three corners on a line",
+            edit(&|m| {
+                let mid = json!([
+                    (c[0][0].as_f64().unwrap() + c[2][0].as_f64().unwrap()) / 2.0,
+                    (c[0][1].as_f64().unwrap() + c[2][1].as_f64().unwrap()) / 2.0
+                ]);
+                m["photo"]["rectangle_px"] = json!([c[0], mid, c[2], c[3]]);
+            }),
+            "/photo/rectangle_px",
+        ),
+        (
+            "a corner repeated",
+            edit(&|m| m["photo"]["rectangle_px"] = json!([c[0], c[0], c[2], c[3]])),
+            "/photo/rectangle_px",
+        ),
+        (
+            "three corners",
+            edit(&|m| m["photo"]["rectangle_px"] = json!([c[0], c[1], c[2]])),
+            "/photo/rectangle_px",
+        ),
+        (
+            "a flat rectangle",
+            edit(&|m| m["photo"]["rectangle_mm"] = json!([185, 0])),
+            "/photo/rectangle_mm",
+        ),
+        (
+            "a negative rectangle",
+            edit(&|m| m["photo"]["rectangle_mm"] = json!([-185, 287])),
+            "/photo/rectangle_mm",
+        ),
+        (
+            "no pole",
+            edit(&|m| {
+                m["points"].as_object_mut().unwrap().remove("p_v");
+            }),
+            "/points",
+        ),
+        (
+            "the pole twice",
+            edit(&|m| m["points"]["π"] = m["points"]["p_v"].clone()),
+            "/points/π",
+        ),
+        (
+            "a coordinate not a number",
+            edit(&|m| m["points"]["b"] = json!(["NaN", 3])),
+            "/points/b/0",
+        ),
+        (
+            "a corner not a number",
+            edit(&|m| m["photo"]["rectangle_px"][2][1] = json!(null)),
+            "/photo/rectangle_px/2/1",
+        ),
+        (
+            "an unknown field of the photo",
+            edit(&|m| m["photo"]["dpi"] = json!(300)),
+            "/photo/dpi",
+        ),
+        (
+            "an unknown field",
+            edit(&|m| m["rotation"] = json!(90)),
+            "/rotation",
+        ),
+        (
+            "no photo file",
+            edit(&|m| m["photo"]["file"] = json!("elsewhere.jpg")),
+            "/photo/file",
+        ),
+        (
+            "the photo not an object",
+            edit(&|m| m["photo"] = json!("plan.jpg")),
+            "/photo",
+        ),
+    ];
+    for (what, m, field) in cases {
+        let f = write(&dir, "bad.json", &m);
+        let (code, _, err) = run(&["check", SCENE, &f]);
+        assert_eq!(code, 2, "{what}: {err}");
+        assert!(err.contains(field), "{what}: {err}");
+        assert!(!err.contains("panicked"), "{what}: {err}");
+    }
+    // A literal NaN or an overflowing number is no JSON number.
+    let text = good.to_string().replacen(
+        "\"rectangle_mm\":[185.0,287.0]",
+        "\"rectangle_mm\":[1e999,287.0]",
+        1,
+    );
+    assert!(text.contains("1e999"), "{text}");
+    std::fs::write(dir.join("big.json"), text).unwrap();
+    let (code, _, err) = run(&["check", SCENE, &path(&dir.join("big.json"))]);
+    assert_eq!(code, 2, "{err}");
+}
+
+fn path(p: &Path) -> String {
+    p.display().to_string()
+}
+
+/// A small rectangle far from the plan is said to be badly conditioned.
+#[test]
+fn a_small_rectangle_far_from_the_plan_is_badly_conditioned() {
+    let dir = fresh("cond");
+    std::fs::write(dir.join("plan.jpg"), b"x").unwrap();
+    let mut m = six_link_marks();
+    // A 10 mm square at the frame's bottom-left corner, by the same
+    // camera: the corners' pixels recomputed from the frame's map.
+    let c: Vec<[f64; 2]> = serde_json::from_value(m["photo"]["rectangle_px"].clone()).unwrap();
+    let lerp = |s: f64, t: f64| {
+        // Bilinear on the frame's corners: close enough for a small square
+        // that is itself the rectangle (its own corners define the map).
+        let b = [
+            c[0][0] + (c[1][0] - c[0][0]) * s,
+            c[0][1] + (c[1][1] - c[0][1]) * s,
+        ];
+        let tp = [
+            c[3][0] + (c[2][0] - c[3][0]) * s,
+            c[3][1] + (c[2][1] - c[3][1]) * s,
+        ];
+        [b[0] + (tp[0] - b[0]) * t, b[1] + (tp[1] - b[1]) * t]
+    };
+    let (s, t) = (10.0 / FRAME[0], 10.0 / FRAME[1]);
+    m["photo"]["rectangle_px"] = json!([lerp(0.0, 0.0), lerp(s, 0.0), lerp(s, t), lerp(0.0, t)]);
+    m["photo"]["rectangle_mm"] = json!([10, 10]);
+    let f = write(&dir, "small.json", &m);
+    let (code, out, err) = run(&["check", SCENE, &f]);
+    assert!(code != 2, "{err}");
+    assert!(out.contains("badly conditioned"), "{out}");
+    let good = write(&dir, "good.json", &six_link_marks());
+    let (_, out, _) = run(&["check", SCENE, &good]);
+    assert!(!out.contains("badly conditioned"), "{out}");
+}
+
+/// A pencil line's width on the sheet, mm, and how much darker than the
+/// paper it is (of 255).
+const PENCIL_MM: f64 = 0.35;
+const PENCIL_DARK: f64 = 120.0;
+
+/// The sheet of `t` photographed by `cam`: the table around it, the
+/// paper (lit a little unevenly), the frame and the plan's lines in
+/// pencil (antialiased, each `PENCIL_MM` wide), then blurred (a 3 px
+/// box, once each way), with noise (±8 grey levels).
+pub fn photograph(t: &Trial, cam: &Camera, rng: &mut StdRng) -> image::GrayImage {
+    let [w, h] = cam.size();
+    let (wu, hu) = (w as usize, h as usize);
+    let mut v = vec![70.0f32; wu * hu];
+    let sheet = [[0.0, 0.0], [SHEET[0], 0.0], SHEET, [0.0, SHEET[1]]].map(|p| cam.to_px(p));
+    let inside = |p: [f64; 2]| {
+        let s: Vec<f64> = (0..4)
+            .map(|i| {
+                let (a, b) = (sheet[i], sheet[(i + 1) % 4]);
+                (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+            })
+            .collect();
+        s.iter().all(|&x| x <= 0.0) || s.iter().all(|&x| x >= 0.0)
+    };
+    for y in 0..hu {
+        for x in 0..wu {
+            let c = [x as f64 + 0.5, y as f64 + 0.5];
+            if inside(c) {
+                v[y * wu + x] = (222.0 + 18.0 * c[0] / w as f64) as f32;
+            }
+        }
+    }
+    let mut segments: Vec<([f64; 2], [f64; 2])> = Vec::new();
+    let f = cam.frame_px();
+    for i in 0..4 {
+        segments.push((f[i], f[(i + 1) % 4]));
+    }
+    for (a, b) in &t.lines {
+        segments.push((cam.to_px(t.plan.sheet(*a)), cam.to_px(t.plan.sheet(*b))));
+    }
+    let half = 0.5 * PENCIL_MM * cam.scale;
+    for (a, b) in segments {
+        let (lo, hi) = (
+            [a[0].min(b[0]) - half - 2.0, a[1].min(b[1]) - half - 2.0],
+            [a[0].max(b[0]) + half + 2.0, a[1].max(b[1]) + half + 2.0],
+        );
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let len2 = d[0] * d[0] + d[1] * d[1];
+        for y in (lo[1].max(0.0) as usize)..(hi[1].min(h as f64) as usize) {
+            for x in (lo[0].max(0.0) as usize)..(hi[0].min(w as f64) as usize) {
+                let c = [x as f64 + 0.5, y as f64 + 0.5];
+                let s = (((c[0] - a[0]) * d[0] + (c[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0);
+                let dist = (c[0] - a[0] - s * d[0]).hypot(c[1] - a[1] - s * d[1]);
+                let cover = (half + 0.5 - dist).clamp(0.0, 1.0);
+                let i = y * wu + x;
+                v[i] = v[i].min((f64::from(v[i]) - PENCIL_DARK * cover) as f32);
+            }
+        }
+    }
+    // A 3 px box blur, along x then along y.
+    let mut b = v.clone();
+    for y in 0..hu {
+        for x in 1..wu - 1 {
+            let i = y * wu + x;
+            b[i] = (v[i - 1] + v[i] + v[i + 1]) / 3.0;
+        }
+    }
+    for y in 1..hu - 1 {
+        for x in 0..wu {
+            let i = y * wu + x;
+            v[i] = (b[i - wu] + b[i] + b[i + wu]) / 3.0;
+        }
+    }
+    image::GrayImage::from_fn(w, h, |x, y| {
+        let n: f32 = rng.random_range(-8.0..8.0);
+        image::Luma([(v[y as usize * wu + x as usize] + n).clamp(0.0, 255.0) as u8])
+    })
+}
+
+/// `img` written as JPEG (quality 85) to `path`; with `turned`, stored
+/// turned a quarter left with EXIF orientation 6 (a viewer turns it a
+/// quarter right: displayed as `img`), as a phone held sideways stores
+/// it.
+pub fn write_jpeg(img: &image::GrayImage, path: &Path, turned: bool) {
+    use image::ImageEncoder;
+    let mut out = Vec::new();
+    let mut enc = image::codecs::jpeg::JpegEncoder::new_with_quality(&mut out, 85);
+    let stored = if turned {
+        // A TIFF header, one IFD entry: Orientation (0x0112), SHORT, 6.
+        let exif = vec![
+            0x49, 0x49, 0x2a, 0, 8, 0, 0, 0, 1, 0, 0x12, 0x01, 3, 0, 1, 0, 0, 0, 6, 0, 0, 0, 0, 0,
+            0, 0,
+        ];
+        enc.set_exif_metadata(exif).unwrap();
+        image::imageops::rotate270(img)
+    } else {
+        img.clone()
+    };
+    enc.write_image(
+        stored.as_raw(),
+        stored.width(),
+        stored.height(),
+        image::ExtendedColorType::L8,
+    )
+    .unwrap();
+    std::fs::write(path, out).unwrap();
+}
+
+/// Rough clicks (each 0.8–1.5 mm off on the sheet) snapped to the
+/// photo's pencil crossings: the twin's verdict in at least 85 % of the
+/// marks files (the aim is 95 %, not yet met: docs/check.md), a mistaken plan its twin finds wrong never right (a
+/// point 6 mm off that its twin finds right is no mistake the photo must
+/// find); every fifth photo stored
+/// turned with its EXIF orientation.
+#[test]
+fn rough_clicks_snapped_get_the_twins_verdict() {
+    use rayon::prelude::*;
+    let (cases, trials) = trials();
+    let dir = fresh("snap");
+    type Done = (bool, bool, String, Vec<Option<f64>>, Vec<f64>);
+    let results: Vec<Option<Done>> = trials
+        .par_iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let case = &cases[t.case];
+            let twin_report = grade(case, &t.twin.to_string()).ok()?;
+            let mut rng = rng_for(&format!("snap {}", t.title));
+            let cam = Camera::random(&mut rng);
+            let img = photograph(t, &cam, &mut rng);
+            let file = dir.join(format!("plan{i}.jpg"));
+            write_jpeg(&img, &file, i % 5 == 0);
+            let mut m = marks(&t.twin, &t.plan, &cam, (0.8, 1.5), &path(&file), &mut rng);
+            // Corners clicked carefully: they are not snapped.
+            let careful = marks(&t.twin, &t.plan, &cam, (0.0, 0.15), &path(&file), &mut rng);
+            m["photo"] = careful["photo"].clone();
+            m["snap"] = json!(true);
+            let read = |f: &str| std::fs::read(f).map_err(|e| e.to_string());
+            let (ans, reading) = mechplan::check::photo::from_marks(&m.to_string(), Some(&read))
+                .unwrap_or_else(|e| panic!("{}: {e}", t.title));
+            let r = check(&case.an, &case.solved, &ans).unwrap();
+            let (a, b) = (verdict(&twin_report), verdict(&r));
+            let fine = a == b
+                || (a.0 == Grade::CannotJudge && b.0 != Grade::Wrong)
+                || (a.0 == Grade::Wrong && margin(&twin_report).is_some_and(|d| d < 0.5));
+            let accepted_wrong = !t.right && a.0 == Grade::Wrong && b.0 == Grade::Right;
+            let moves = reading
+                .snapped
+                .unwrap()
+                .moves
+                .into_iter()
+                .map(|m| m.1)
+                .collect();
+            // Where each point was read, against where it is drawn.
+            let left: Vec<f64> = ans
+                .items
+                .iter()
+                .filter_map(|it| match &it.given {
+                    mechplan::check::answer::Given::Point { name, at } => {
+                        let p = t.plan.points.iter().find(|p| p.0 == *name)?.1;
+                        Some((at[0] - p.x).hypot(at[1] - p.y))
+                    }
+                    _ => None,
+                })
+                .collect();
+            Some((
+                fine,
+                accepted_wrong,
+                format!("{}: twin {a:?}, photo {b:?}", t.title),
+                moves,
+                left,
+            ))
+        })
+        .collect();
+    let done: Vec<_> = results.into_iter().flatten().collect();
+    let n = done.len();
+    let same = done.iter().filter(|d| d.0).count();
+    let accepted: Vec<&String> = done.iter().filter(|d| d.1).map(|d| &d.2).collect();
+    let moves: Vec<f64> = done
+        .iter()
+        .flat_map(|d| d.3.iter().flatten().copied())
+        .collect();
+    let kept = done
+        .iter()
+        .flat_map(|d| d.3.iter())
+        .filter(|m| m.is_none())
+        .count();
+    let quantiles = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        let q = |f: f64| {
+            v.get(((v.len() as f64 - 1.0) * f) as usize)
+                .copied()
+                .unwrap_or(0.0)
+        };
+        format!(
+            "median {:.2} mm, 95th percentile {:.2}, most {:.2}",
+            q(0.5),
+            q(0.95),
+            q(1.0)
+        )
+    };
+    let left: Vec<f64> = done.iter().flat_map(|d| d.4.iter().copied()).collect();
+    eprintln!(
+        "rough clicks snapped: {n} photos, {same} with the twin's verdict ({:.1} %); {} points moved ({}), {kept} kept where clicked; each point (from the pole) then off where drawn by {}",
+        100.0 * same as f64 / n as f64,
+        moves.len(),
+        quantiles(moves.clone()),
+        quantiles(left),
+    );
+    for d in done.iter().filter(|d| !d.0) {
+        eprintln!("  {}", d.2);
+    }
+    assert!(n >= 200, "only {n} photos");
+    assert!(accepted.is_empty(), "mistaken plans accepted: {accepted:?}");
+    assert!(same * 100 >= 85 * n, "{same} of {n}");
+}
