@@ -382,30 +382,14 @@ fn photo(state: &State, rq: &mut Request) -> Reply {
     reply_json(&json!({ "id": id, "width": w, "height": h }))
 }
 
-/// A JPEG's or PNG's width and height from its header, without decoding
-/// its pixels.
+/// A JPEG's or PNG's width and height from its header (the image
+/// crate reads the header only, never the pixels).
 fn dimensions(bytes: &[u8]) -> Option<(u32, u32)> {
-    if bytes.starts_with(b"\x89PNG") {
-        let w = u32::from_be_bytes(bytes.get(16..20)?.try_into().ok()?);
-        let h = u32::from_be_bytes(bytes.get(20..24)?.try_into().ok()?);
-        return Some((w, h));
-    }
-    // JPEG: the first start-of-frame segment's height and width.
-    let mut i = 2;
-    while i + 9 < bytes.len() {
-        if bytes[i] != 0xFF {
-            return None;
-        }
-        let marker = bytes[i + 1];
-        let len = usize::from(u16::from_be_bytes([bytes[i + 2], bytes[i + 3]]));
-        if (0xC0..=0xCF).contains(&marker) && ![0xC4, 0xC8, 0xCC].contains(&marker) {
-            let h = u16::from_be_bytes([bytes[i + 5], bytes[i + 6]]);
-            let w = u16::from_be_bytes([bytes[i + 7], bytes[i + 8]]);
-            return Some((u32::from(w), u32::from(h)));
-        }
-        i += 2 + len;
-    }
-    None
+    image::ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
+        .ok()?
+        .into_dimensions()
+        .ok()
 }
 
 /// Grade the page's marks: written as a marks file beside the photo

@@ -225,10 +225,19 @@ fn bad_uploads_are_answered_and_the_server_goes_on() {
     assert!(e["error"].as_str().unwrap().contains("20 MB"), "{e}");
     alive(&s);
     // A PNG header that claims 100 000 × 100 000 pixels: a bomb.
-    let mut png = b"\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR".to_vec();
-    png.extend(100_000u32.to_be_bytes());
-    png.extend(100_000u32.to_be_bytes());
-    png.extend([8, 2, 0, 0, 0, 0, 0, 0, 0]);
+    let mut ihdr = b"IHDR".to_vec();
+    ihdr.extend(100_000u32.to_be_bytes());
+    ihdr.extend(100_000u32.to_be_bytes());
+    ihdr.extend([8, 2, 0, 0, 0]);
+    let mut png = b"\x89PNG\r\n\x1a\n\0\0\0\x0d".to_vec();
+    png.extend(&ihdr);
+    png.extend(crc32fast::hash(&ihdr).to_be_bytes());
+    // An empty IDAT and the end: a whole file, but for its pixels.
+    for chunk in [&b"IDAT"[..], &b"IEND"[..]] {
+        png.extend(0u32.to_be_bytes());
+        png.extend(chunk);
+        png.extend(crc32fast::hash(chunk).to_be_bytes());
+    }
     let (status, e) = post_bytes(&s, "/api/photo", &png);
     assert_eq!(status, 400);
     assert!(e["error"].as_str().unwrap().contains("megapixels"), "{e}");
