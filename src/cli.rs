@@ -69,6 +69,11 @@ pub enum Command {
         /// (MECHPLAN-CHECK), to open in the CAD it was drawn in.
         #[arg(long)]
         dxf: Option<PathBuf>,
+        /// For a marks file (a photographed plan): write an SVG of the photo with the plan
+        /// from the student's points, their points and the wrong steps drawn over it in the
+        /// photo's own perspective (the photo linked, not copied).
+        #[arg(long)]
+        photo_overlay: Option<PathBuf>,
         /// Pencil precision δ in mm (default: the answer's, else 0.5).
         #[arg(long)]
         delta: Option<f64>,

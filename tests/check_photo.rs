@@ -866,3 +866,89 @@ fn rough_clicks_snapped_get_the_twins_verdict() {
     assert!(accepted.is_empty(), "mistaken plans accepted: {accepted:?}");
     assert!(same * 100 >= 85 * n, "{same} of {n}");
 }
+
+/// The circles of `colour` in an overlay SVG: their centres (px).
+fn circles(svg: &str, colour: &str) -> Vec<[f64; 2]> {
+    svg.split("<circle")
+        .skip(1)
+        .map(|c| c.split('>').next().unwrap())
+        .filter(|c| c.contains(&format!("stroke=\"{colour}\"")))
+        .map(|c| {
+            let attr = |name: &str| -> f64 {
+                let from = c.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+                c[from..].split('"').next().unwrap().parse().unwrap()
+            };
+            [attr("cx"), attr("cy")]
+        })
+        .collect()
+}
+
+/// `check --photo-overlay` draws over the photo in its own perspective:
+/// the student's points where the camera put them, and the wrong step's
+/// right place where the camera shows the right plan's point (the test's
+/// own camera model, not the engine's homography), the photo linked by
+/// its name beside the overlay.
+#[test]
+fn the_photo_overlay_is_drawn_in_the_photos_perspective() {
+    let (cases, trials) = trials();
+    let find = |tag: &str| {
+        trials
+            .iter()
+            .find(|t| t.title == format!("four_bar position 2 Velocity: {tag}"))
+            .unwrap()
+    };
+    let (wrong, right) = (find("last point off"), find("right"));
+    let dir = fresh("overlay");
+    let mut rng = rng_for("overlay");
+    let cam = Camera::random(&mut rng);
+    let img = photograph(wrong, &cam, &mut rng);
+    write_jpeg(&img, &dir.join("plan.jpg"), false);
+    let m = marks(
+        &wrong.twin,
+        &wrong.plan,
+        &cam,
+        (0.0, 0.0),
+        "plan.jpg",
+        &mut rng,
+    );
+    let marks_file = write(&dir, "marks.json", &m);
+    let scene = write(&dir, "scene.json", &cases[wrong.case].json);
+    let out = dir.join("overlay.svg");
+    let (code, report, err) = run(&["check", &scene, &marks_file, "--photo-overlay", &path(&out)]);
+    assert_eq!(code, 1, "{report}{err}");
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        svg.contains("href=\"plan.jpg\""),
+        "the photo beside it, by its name"
+    );
+    assert!(
+        svg.contains(&format!("width=\"{}\"", img.width())),
+        "the photo's size"
+    );
+    // Every point the student clicked, where the camera shows it.
+    let blue = circles(&svg, "#1f5fbf");
+    for (name, p) in &wrong.plan.points {
+        let px = cam.to_px(wrong.plan.sheet(*p));
+        let near = blue
+            .iter()
+            .map(|c| (c[0] - px[0]).hypot(c[1] - px[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            near < 0.5,
+            "{name}: {near} px from where the camera shows it"
+        );
+    }
+    // The wrong step's right place: the right plan's point as the camera
+    // shows it (from the same pole).
+    let red = circles(&svg, "#c62828");
+    assert_eq!(red.len(), 1, "one wrong step: {report}");
+    let (name, p) = right.plan.points.last().unwrap();
+    let px = cam.to_px(wrong.plan.sheet(*p));
+    let d = (red[0][0] - px[0]).hypot(red[0][1] - px[1]);
+    assert!(d < 1.0, "{name}'s right place is {d} px off in the overlay");
+    // Not a marks file: refused, naming the option.
+    let twin = write(&dir, "twin.json", &wrong.twin);
+    let (code, _, err) = run(&["check", &scene, &twin, "--photo-overlay", &path(&out)]);
+    assert_eq!(code, 2);
+    assert!(err.contains("photo-overlay"), "{err}");
+}

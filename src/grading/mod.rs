@@ -27,6 +27,7 @@ mod diagnosis;
 pub mod forces;
 mod items;
 mod numbers;
+mod homography;
 pub mod photo;
 pub mod position;
 pub mod read;

@@ -13,6 +13,7 @@ pub mod dynamics;
 pub mod force_steps;
 pub mod gradebook;
 pub mod overlay;
+pub mod photo_overlay;
 pub mod precision;
 pub mod report;
 mod steps;

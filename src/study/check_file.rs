@@ -32,6 +32,9 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
     {
         super::files::write_atomically(out, overlay.as_bytes())?;
     }
+    if let Some(out) = &req.overlay_photo {
+        photo_overlay(&checked, answer, out)?;
+    }
     if let (Some(out), Some(bytes)) = (&req.overlay_dxf, &dxf_bytes)
         && let Some(copy) = checked.overlay_dxf(bytes)
     {
@@ -43,6 +46,53 @@ pub fn check_file(scene: &Path, answer: &Path, req: &CheckRequest) -> Result<(St
         checked.to_text()
     };
     Ok((text, checked.status()))
+}
+
+/// Write the overlay of a photographed plan (`--photo-overlay`) to
+/// `out`: the photo is found against the marks file `answer`'s folder and
+/// linked from the SVG by its name where both are in one folder, else by
+/// its absolute path.
+#[cfg(feature = "photo")]
+fn photo_overlay(checked: &super::Checked, answer: &Path, out: &Path) -> Result<()> {
+    let not_marks = || {
+        Error::scene(
+            "photo-overlay",
+            "--photo-overlay draws over the photo of a marks file (a JSON answer with \"photo\" and its \"file\"): this answer has none",
+        )
+    };
+    let file = checked.photo_file().ok_or_else(not_marks)?;
+    let photo = answer.parent().unwrap_or(Path::new("")).join(file);
+    let bytes = std::fs::read(&photo)
+        .map_err(|e| Error::scene("/photo/file", format!("{}: {e}", photo.display())))?;
+    let size = crate::grading::photo::displayed_size(&bytes)?;
+    let folder = |p: &Path| {
+        p.parent()
+            .map(|d| {
+                if d.as_os_str().is_empty() {
+                    Path::new(".")
+                } else {
+                    d
+                }
+            })
+            .and_then(|d| d.canonicalize().ok())
+    };
+    let href = match (folder(&photo), folder(out)) {
+        (Some(a), Some(b)) if a == b => file.rsplit('/').next().unwrap_or(file).to_string(),
+        _ => photo.canonicalize().map_or_else(
+            |_| photo.display().to_string(),
+            |p| format!("file://{}", p.display()),
+        ),
+    };
+    let svg = checked.photo_overlay(&href, size).ok_or_else(not_marks)?;
+    super::files::write_atomically(out, svg.as_bytes())
+}
+
+#[cfg(not(feature = "photo"))]
+fn photo_overlay(_: &super::Checked, _: &Path, _: &Path) -> Result<()> {
+    Err(Error::scene(
+        "photo-overlay",
+        "this build of mechplan has no photo feature: build it with its default features",
+    ))
 }
 
 /// The scene file read for a check: numbered as `req.positions_from`

@@ -33,6 +33,9 @@ pub struct CheckRequest {
     pub overlay: Option<PathBuf>,
     /// Where to write the overlay into a copy of a DXF answer (`--dxf`).
     pub overlay_dxf: Option<PathBuf>,
+    /// Where to write the overlay of a photographed plan in the photo's
+    /// own perspective (`--photo-overlay`, a marks file only).
+    pub overlay_photo: Option<PathBuf>,
     /// The pencil's precision δ, mm (`--delta`), over the answer's own.
     pub delta: Option<f64>,
     /// The plan's scale μ (`--mu`), over the answer's own.
@@ -230,6 +233,7 @@ fn parse_force_answer(
     for (set, option) in [
         (req.overlay.is_some(), "svg"),
         (req.overlay_dxf.is_some(), "dxf"),
+        (req.overlay_photo.is_some(), "photo-overlay"),
     ] {
         if set {
             return Err(Error::scene(
@@ -362,6 +366,26 @@ impl Checked {
     pub fn overlay(&self) -> Option<String> {
         match self {
             Checked::Kinematic(k) => Some(verdict::overlay(&k.analysis, &k.answer, &k.report)),
+            Checked::Force(_) => None,
+        }
+    }
+    /// The overlay of a photographed plan (an answer read from a marks
+    /// file): an SVG of the photo's `size` (px, as displayed) showing the
+    /// photo at `href` and over it, in its perspective, the plan from the
+    /// student's points, their points and the wrong steps; `None` for
+    /// any other answer.
+    pub fn photo_overlay(&self, href: &str, size: (u32, u32)) -> Option<String> {
+        match self {
+            Checked::Kinematic(k) => k.photo.as_ref().map(|p| {
+                crate::presentation::photo_overlay::photo_overlay(&k.report, p, href, size)
+            }),
+            Checked::Force(_) => None,
+        }
+    }
+    /// The photo's file a marks file names, if this answer is one.
+    pub fn photo_file(&self) -> Option<&str> {
+        match self {
+            Checked::Kinematic(k) => k.photo.as_ref().and_then(|p| p.file.as_deref()),
             Checked::Force(_) => None,
         }
     }
