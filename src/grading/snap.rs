@@ -5,7 +5,8 @@
 //! paper's own brightness there) are found as straight lines by a Hough
 //! transform, each line refined by a least-squares fit to the pixels
 //! along it, and the click moved to the nearest crossing of two of them
-//! that meet at 15° or more, if one lies within the radius.
+//! that meet at 15° or more where a line ends (a vertex of the plan),
+//! else the nearest crossing, if one lies within the radius.
 
 use crate::error::{Error, Result};
 use image::{DynamicImage, GrayImage, ImageDecoder, ImageReader};
@@ -136,8 +137,31 @@ pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -
         }
         lines.push(line);
     }
+    nearest_crossing(&lines, click, radius, px_per_mm)
+}
+
+/// How close to a crossing a line's end is to make it a vertex, mm.
+const END_NEAR_MM: f64 = 0.6;
+
+/// The distance between two points.
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// The crossing of two lines at 15° or more nearest the click within
+/// the radius where a line ends (a plan's points are where its vectors
+/// end: the rays from the pole, the lines between a link's points; two
+/// lines that merely pass each other there mark no point), else the
+/// nearest crossing at all, else where lines end together.
+fn nearest_crossing(lines: &[Line], click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
     let min_sin = MIN_CROSSING_DEG.to_radians().sin();
+    let near = END_NEAR_MM * px_per_mm;
+    let ends: Vec<[f64; 2]> = lines
+        .iter()
+        .flat_map(|l| [l.point(l.ends[0]), l.point(l.ends[1])])
+        .collect();
     let mut best: Option<([f64; 2], f64)> = None;
+    let mut best_end: Option<([f64; 2], f64)> = None;
     for i in 0..lines.len() {
         for j in i + 1..lines.len() {
             let (a, b) = (lines[i], lines[j]);
@@ -148,13 +172,17 @@ pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -
             let d = [b.at[0] - a.at[0], b.at[1] - a.at[1]];
             let t = (d[0] * b.dir[1] - d[1] * b.dir[0]) / s;
             let x = [a.at[0] + t * a.dir[0], a.at[1] + t * a.dir[1]];
-            let r = (x[0] - click[0]).hypot(x[1] - click[1]);
+            let r = dist(x, click);
             if r <= radius && best.is_none_or(|(_, r0)| r < r0) {
                 best = Some((x, r));
             }
+            let ended = ends.iter().any(|e| dist(*e, x) <= near);
+            if ended && r <= radius && best_end.is_none_or(|(_, r0)| r < r0) {
+                best_end = Some((x, r));
+            }
         }
     }
-    best.map(|b| b.0).or_else(|| common_end(&lines, click, radius, px_per_mm))
+    best_end.or(best).map(|b| b.0).or_else(|| common_end(lines, click, radius, px_per_mm))
 }
 
 /// Where lines that meet at too small an angle to cross sharply end
