@@ -392,8 +392,8 @@ fn dimensions(bytes: &[u8]) -> Option<(u32, u32)> {
         .ok()
 }
 
-/// Grade the page's marks: written as a marks file beside the photo
-/// (when there is one), checked as `mechplan check` checks it; the report
+/// Grade the page's marks: the photo copied beside where their marks
+/// file would be, checked as `mechplan check` checks it; the report
 /// as text and JSON, the exit status `check` would give, the overlay.
 fn check(state: &State, body: &Value) -> Reply {
     let scene = body["scene"]
@@ -425,32 +425,27 @@ fn check(state: &State, body: &Value) -> Reply {
             );
         }
     }
-    let file = dir.join("marks.json");
-    std::fs::write(&file, marks.to_string()).map_err(|e| Failure(500, e.to_string()))?;
+    // Graded once, as `check` grades a marks file of this name: its photo
+    // found beside it.
     let lang = body["lang"].as_str().and_then(mechplan::Lang::parse);
-    let overlay = dir.join("overlay.svg");
     let req = CheckRequest {
-        json: true,
-        overlay: Some(overlay.clone()),
         lang,
         ..CheckRequest::default()
     };
-    let (report, status) = mechplan::check_file(scene, &file, &req)?;
-    let text = mechplan::check_file(
-        scene,
-        &file,
-        &CheckRequest {
-            lang,
-            ..CheckRequest::default()
-        },
-    )?
-    .0;
-    let svg = std::fs::read_to_string(&overlay).unwrap_or_default();
+    let name = dir.join("marks.json").display().to_string();
+    let checked = Study::from_path(scene).and_then(|study| {
+        study
+            .solve()?
+            .check_answer(&marks.to_string(), &name, false, &req)
+    });
     let _ = std::fs::remove_dir_all(&dir);
+    let checked = checked?;
+    let (status, text, report) = (checked.status(), checked.to_text(), checked.to_json());
+    let svg = checked.overlay().unwrap_or_default();
     reply_json(&json!({
         "status": status,
         "text": text,
-        "report": serde_json::from_str::<Value>(&report).unwrap_or(Value::Null),
+        "report": report,
         "overlay": svg,
         "marks": marks,
     }))

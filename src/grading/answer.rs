@@ -446,35 +446,19 @@ fn value_item(
             },
             rounding: 0.0,
         }),
-        Some((c @ ('r' | 'k'), pair)) => {
+        Some((c, name)) => {
             if value < 0.0 {
                 return Err(issue(&ptr, "a magnitude cannot be negative"));
             }
+            let quantity = match c {
+                'r' => Quantity::Sliding(name),
+                'k' => Quantity::Coriolis(name),
+                _ => Quantity::Point(name),
+            };
             Ok(Item {
                 pointer: ptr,
                 key,
-                given: Given::Value {
-                    quantity: if c == 'r' {
-                        Quantity::Sliding(pair)
-                    } else {
-                        Quantity::Coriolis(pair)
-                    },
-                    value,
-                },
-                rounding: 0.0,
-            })
-        }
-        Some((_, point)) => {
-            if value < 0.0 {
-                return Err(issue(&ptr, "a magnitude cannot be negative"));
-            }
-            Ok(Item {
-                pointer: ptr,
-                key,
-                given: Given::Value {
-                    quantity: Quantity::Point(point),
-                    value,
-                },
+                given: Given::Value { quantity, value },
                 rounding: 0.0,
             })
         }
