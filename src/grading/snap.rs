@@ -1,12 +1,14 @@
-//! A photographed plan's clicks moved to the crossings of its pencil
-//! lines (`"snap": true` in a marks file, docs/check.md): a click is a
-//! millimetre or so off, the crossing the student drew is where the
-//! point is. Around each click, the dark pixels of the photo (against the
-//! paper's own brightness there) are found as straight lines by a Hough
-//! transform, each line refined by a least-squares fit to the pixels
-//! along it, and the click moved to the nearest crossing of two of them
-//! that meet at 15° or more where a line ends (a vertex of the plan),
-//! else the nearest crossing, if one lies within the radius.
+//! A photographed plan's clicks moved to the points its pencil lines
+//! mark (`"snap": true` in a marks file, docs/check.md): a click is a
+//! millimetre or so off, the vertex the student drew is where the point
+//! is. Around each click, the dark pixels of the photo (against the
+//! paper's own brightness there; a millimetre grid's colour reads as
+//! paper) are found as straight lines by a Hough transform, each line
+//! refined by a least-squares fit to the pixels along it and its ends
+//! found along the pencil, and the click moved to the nearest place
+//! where lines end together (a plan's points are where its vectors end),
+//! else to a crossing, a line's end or onto the nearest line, if one
+//! lies within the radius ([`vertex`]).
 
 use crate::error::{Error, Result};
 use image::{DynamicImage, GrayImage, ImageDecoder, ImageReader};
@@ -29,7 +31,11 @@ const MIN_LINE_MM: f64 = 1.5;
 const MAX_LINES: usize = 8;
 
 /// The photo as displayed: its file's bytes decoded (JPEG or PNG) with
-/// its EXIF orientation applied, in grey.
+/// its EXIF orientation applied, each pixel as bright as its brightest
+/// colour channel. Graphite is dark in every channel, while the printed
+/// grid of millimetre paper (orange, green or blue) is bright in its own
+/// colour's channel: so the grid reads as paper and only the pencil as
+/// lines. A grey photo is its own grey.
 pub fn load(bytes: &[u8]) -> Result<GrayImage> {
     let bad = |why: String| {
         Error::scene(
@@ -46,7 +52,11 @@ pub fn load(bytes: &[u8]) -> Result<GrayImage> {
         .unwrap_or(image::metadata::Orientation::NoTransforms);
     let mut img = DynamicImage::from_decoder(decoder).map_err(|e| bad(e.to_string()))?;
     img.apply_orientation(orientation);
-    Ok(img.to_luma8())
+    let rgb = img.to_rgb8();
+    Ok(GrayImage::from_fn(rgb.width(), rgb.height(), |x, y| {
+        let p = rgb.get_pixel(x, y).0;
+        image::Luma([p[0].max(p[1]).max(p[2])])
+    }))
 }
 
 /// A line fitted to dark pixels: a point on it and its unit direction,
@@ -103,6 +113,7 @@ pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -
         .filter(|p| paper - p.1 > cut)
         .map(|p| (p.0, paper - p.1))
         .collect();
+    let all = dark.clone();
     let mut lines = Vec::new();
     let min_pixels = MIN_LINE_MM * px_per_mm;
     let band = (0.25 * px_per_mm).max(1.5);
@@ -119,17 +130,11 @@ pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -
                 None => break,
             }
         }
-        // Its ends: the 2nd and 98th percentiles of its pixels along it.
-        let mut along: Vec<f64> = dark
-            .iter()
-            .filter(|p| distance(&line, p.0) <= band)
-            .map(|p| (p.0[0] - line.at[0]) * line.dir[0] + (p.0[1] - line.at[1]) * line.dir[1])
-            .collect();
-        along.sort_by(f64::total_cmp);
-        if let (Some(first), Some(last)) = (along.first(), along.last()) {
-            let n = along.len() - 1;
-            line.ends = [along[n / 50].max(*first), along[n - n / 50].min(*last)];
-        }
+        // Its ends among all the pencil's pixels, not only those no
+        // line found before has taken: where two lines meet at a few
+        // degrees, the first takes the second's pixels near their
+        // common end, and the rest would seem to end where they part.
+        line.ends = ends(&all, &line, band, 0.5 * px_per_mm);
         let before = dark.len();
         dark.retain(|p| distance(&line, p.0) > band * 1.5);
         if before - dark.len() < min_pixels as usize {
@@ -137,7 +142,36 @@ pub fn crossing(img: &GrayImage, click: [f64; 2], radius: f64, px_per_mm: f64) -
         }
         lines.push(line);
     }
-    nearest_crossing(&lines, click, radius, px_per_mm)
+    vertex(&lines, click, radius, px_per_mm)
+}
+
+/// Where the pencil along `line` begins and ends (from `line.at`): the
+/// longest run of the pixels within `band` of it with no gap wider than
+/// `gap` px, so that a stroke merely crossing its extension beyond its
+/// end does not lengthen it.
+fn ends(pts: &[([f64; 2], f64)], line: &Line, band: f64, gap: f64) -> [f64; 2] {
+    let mut along: Vec<f64> = pts
+        .iter()
+        .filter(|p| distance(line, p.0) <= band)
+        .map(|p| (p.0[0] - line.at[0]) * line.dir[0] + (p.0[1] - line.at[1]) * line.dir[1])
+        .collect();
+    along.sort_by(f64::total_cmp);
+    let Some(&first) = along.first() else {
+        return [0.0, 0.0];
+    };
+    let (mut best, mut start, mut count, mut most) = ([first, first], first, 0usize, 0usize);
+    for w in along.windows(2) {
+        count += 1;
+        if w[1] - w[0] > gap {
+            start = w[1];
+            count = 0;
+        }
+        if count >= most {
+            most = count;
+            best = [start, w[1]];
+        }
+    }
+    best
 }
 
 /// How close to a crossing a line's end is to make it a vertex, mm.
@@ -148,68 +182,118 @@ fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// The crossing of two lines at 15° or more nearest the click within
-/// the radius where a line ends (a plan's points are where its vectors
-/// end: the rays from the pole, the lines between a link's points; two
-/// lines that merely pass each other there mark no point), else the
-/// nearest crossing at all, else where lines end together.
-fn nearest_crossing(lines: &[Line], click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
+/// The crossing of lines `a` and `b`, with the sine of their angle.
+fn cross(a: &Line, b: &Line) -> ([f64; 2], f64) {
+    let s = a.dir[0] * b.dir[1] - a.dir[1] * b.dir[0];
+    if s == 0.0 {
+        return ([f64::NAN; 2], 0.0);
+    }
+    let d = [b.at[0] - a.at[0], b.at[1] - a.at[1]];
+    let t = (d[0] * b.dir[1] - d[1] * b.dir[0]) / s;
+    ([a.at[0] + t * a.dir[0], a.at[1] + t * a.dir[1]], s)
+}
+
+/// The plan's point the click means, within `radius` of it. A plan's
+/// points are where its vectors end (the rays from the pole, the lines
+/// between a link's points), so, in this order of preference:
+/// 1. where two or more lines end together (the nearest such place):
+///    their crossing where two of them meet at 15° or more, else the mean
+///    of their ends (rays from a pole toward points in much the same
+///    direction meet at a few degrees, where a crossing slides);
+/// 2. a crossing at 15° or more where one line ends (a point marked on
+///    a line by the ray that ends there);
+/// 3. any crossing at 15° or more; 4. a line's end alone;
+/// 5. the foot of the click on the nearest line (a point in the middle
+///    of a line, as a plan at a dead centre has: the line says where the
+///    point is across it, the click along it);
+///
+/// otherwise the click stays (`None`).
+fn vertex(lines: &[Line], click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
     let min_sin = MIN_CROSSING_DEG.to_radians().sin();
     let near = END_NEAR_MM * px_per_mm;
-    let ends: Vec<[f64; 2]> = lines
+    // Each line's ends, with the line they belong to.
+    let ends: Vec<([f64; 2], usize)> = lines
         .iter()
-        .flat_map(|l| [l.point(l.ends[0]), l.point(l.ends[1])])
+        .enumerate()
+        .flat_map(|(i, l)| [(l.point(l.ends[0]), i), (l.point(l.ends[1]), i)])
         .collect();
-    let mut best: Option<([f64; 2], f64)> = None;
-    let mut best_end: Option<([f64; 2], f64)> = None;
+    // The lines ending within `near` of `x`.
+    let ending_at = |x: [f64; 2]| -> Vec<usize> {
+        let mut v: Vec<usize> = ends
+            .iter()
+            .filter(|e| dist(e.0, x) <= near)
+            .map(|e| e.1)
+            .collect();
+        v.sort_unstable();
+        v.dedup();
+        v
+    };
+    let nearest = |c: &mut Vec<[f64; 2]>| -> Option<[f64; 2]> {
+        c.retain(|x| x[0].is_finite() && dist(*x, click) <= radius);
+        c.iter().copied().min_by(|a, b| dist(*a, click).total_cmp(&dist(*b, click)))
+    };
+    // 1. Places where two or more lines end together.
+    let mut together: Vec<[f64; 2]> = Vec::new();
+    for (e, _) in &ends {
+        let group = ending_at(*e);
+        if group.len() < 2 {
+            continue;
+        }
+        let sharp = group
+            .iter()
+            .flat_map(|&i| group.iter().map(move |&j| (i, j)))
+            .filter(|(i, j)| i < j)
+            .map(|(i, j)| cross(&lines[i], &lines[j]))
+            .filter(|(x, s)| s.abs() >= min_sin && dist(*x, *e) <= near)
+            .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()));
+        together.push(match sharp {
+            Some((x, _)) => x,
+            None => {
+                let mine: Vec<[f64; 2]> = ends
+                    .iter()
+                    .filter(|f| group.contains(&f.1) && dist(f.0, *e) <= near)
+                    .map(|f| f.0)
+                    .collect();
+                let n = mine.len() as f64;
+                mine.iter().fold([0.0, 0.0], |m, f| [m[0] + f[0] / n, m[1] + f[1] / n])
+            }
+        });
+    }
+    if let Some(x) = nearest(&mut together) {
+        return Some(x);
+    }
+    // 2 and 3. Crossings, where a line ends first.
+    let mut crossings: Vec<([f64; 2], bool)> = Vec::new();
     for i in 0..lines.len() {
         for j in i + 1..lines.len() {
-            let (a, b) = (lines[i], lines[j]);
-            let s = a.dir[0] * b.dir[1] - a.dir[1] * b.dir[0];
-            if s.abs() < min_sin {
-                continue;
-            }
-            let d = [b.at[0] - a.at[0], b.at[1] - a.at[1]];
-            let t = (d[0] * b.dir[1] - d[1] * b.dir[0]) / s;
-            let x = [a.at[0] + t * a.dir[0], a.at[1] + t * a.dir[1]];
-            let r = dist(x, click);
-            if r <= radius && best.is_none_or(|(_, r0)| r < r0) {
-                best = Some((x, r));
-            }
-            let ended = ends.iter().any(|e| dist(*e, x) <= near);
-            if ended && r <= radius && best_end.is_none_or(|(_, r0)| r < r0) {
-                best_end = Some((x, r));
+            let (x, s) = cross(&lines[i], &lines[j]);
+            if s.abs() >= min_sin {
+                crossings.push((x, !ending_at(x).is_empty()));
             }
         }
     }
-    best_end.or(best).map(|b| b.0).or_else(|| common_end(lines, click, radius, px_per_mm))
-}
-
-/// Where lines that meet at too small an angle to cross sharply end
-/// together (the rays from a plan's pole to points in much the same
-/// direction, which may read as one line): the mean of the ends within
-/// `radius` of `click` in the largest group of them within half a
-/// millimetre of one another, one end alone too; `None` where no line
-/// ends there (a line's end at the window's edge is beyond the radius).
-fn common_end(lines: &[Line], click: [f64; 2], radius: f64, px_per_mm: f64) -> Option<[f64; 2]> {
-    let ends: Vec<[f64; 2]> = lines
+    let mut ended: Vec<[f64; 2]> = crossings.iter().filter(|c| c.1).map(|c| c.0).collect();
+    if let Some(x) = nearest(&mut ended) {
+        return Some(x);
+    }
+    let mut any: Vec<[f64; 2]> = crossings.iter().map(|c| c.0).collect();
+    if let Some(x) = nearest(&mut any) {
+        return Some(x);
+    }
+    // 4. A line's end alone.
+    let mut alone: Vec<[f64; 2]> = ends.iter().map(|e| e.0).collect();
+    if let Some(x) = nearest(&mut alone) {
+        return Some(x);
+    }
+    // 5. The foot on the nearest line, where the line is drawn.
+    let mut feet: Vec<[f64; 2]> = lines
         .iter()
-        .flat_map(|l| [l.point(l.ends[0]), l.point(l.ends[1])])
-        .filter(|e| (e[0] - click[0]).hypot(e[1] - click[1]) <= radius)
+        .filter_map(|l| {
+            let t = (click[0] - l.at[0]) * l.dir[0] + (click[1] - l.at[1]) * l.dir[1];
+            (t >= l.ends[0] && t <= l.ends[1]).then(|| l.point(t))
+        })
         .collect();
-    let near = 0.5 * px_per_mm;
-    let group = |e: &[f64; 2]| -> Vec<[f64; 2]> {
-        ends.iter()
-            .copied()
-            .filter(|f| (f[0] - e[0]).hypot(f[1] - e[1]) <= near)
-            .collect()
-    };
-    let best = ends.iter().map(group).max_by_key(Vec::len)?;
-    (!best.is_empty()).then(|| {
-        let n = best.len() as f64;
-        best.iter()
-            .fold([0.0, 0.0], |m, e| [m[0] + e[0] / n, m[1] + e[1] / n])
-    })
+    nearest(&mut feet)
 }
 
 /// The distance of `p` from line `l`.
