@@ -5,6 +5,7 @@
 //! its force analysis; it reads as its position (`Deref`).
 
 mod inputs;
+mod rescaled;
 mod run;
 
 pub use inputs::InputPositions;

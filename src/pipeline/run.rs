@@ -24,6 +24,7 @@ use std::time::Instant as Clock;
 const JUMP: f64 = 0.25;
 
 /// A position found in order by both routes, before its rates.
+#[derive(Clone)]
 struct Placed<'a> {
     /// The position's number in the scene's order, from 0.
     index: usize,
@@ -79,7 +80,21 @@ impl Analysis {
     pub fn run_each_with(
         &self,
         progress: &dyn crate::progress::Progress,
+        f: impl FnMut(Solved) -> Result<()>,
+    ) -> Result<()> {
+        self.run_kept(progress, &|_| Vec::new(), f, |_| Ok(()))
+    }
+
+    /// [`Analysis::run_each_with`], the positions `keep` names (of their
+    /// number; from 0) kept as found; when every position is handed over,
+    /// `then` is given what finishes a kept one again as another analysis
+    /// (this one with other scales) would.
+    pub(super) fn run_kept(
+        &self,
+        progress: &dyn crate::progress::Progress,
+        keep: &dyn Fn(usize) -> Vec<usize>,
         mut f: impl FnMut(Solved) -> Result<()>,
+        then: impl FnOnce(&mut dyn FnMut(&Analysis, usize) -> Result<Solved>) -> Result<()>,
     ) -> Result<()> {
         let InputPositions {
             values,
@@ -105,6 +120,8 @@ impl Analysis {
         // class II groups (a class III group is tracked in small steps).
         let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
         progress.start(values.len(), "positions");
+        let keep = keep(values.len());
+        let mut kept: Vec<Placed> = Vec::new();
         let checks = Checks {
             changed: &changed,
             residuals: eqs.as_ref(),
@@ -152,6 +169,7 @@ impl Analysis {
                 let rounding = &roundings[from..from + chunk.len()];
                 let route = (program, &mut state, &mut kernel);
                 let (placed, stop) = self.place_chunk((from, chunk), rounding, &mut ps, route, &mut cs);
+                kept.extend(Placed::kept(&placed, &keep));
                 let checks = &checks;
                 let finish = move || {
                     crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program))
@@ -180,8 +198,14 @@ impl Analysis {
                 Some(before) => deliver(before, &mut hand),
                 None => Ok(()),
             }
-        });        progress.finish();
-        done
+        });
+        progress.finish();
+        done?;
+        then(&mut |an: &Analysis, k: usize| {
+            let p = kept.iter().find(|p| p.index == k);
+            let p = p.ok_or_else(|| Error::Internal(format!("position {k} was not kept")))?;
+            an.finish(p, &checks, program)
+        })
     }
 
     /// How a run finds its positions ([`Route`]): route (a) compiled for
@@ -600,6 +624,20 @@ impl Analysis {
                 }
             }
         }
+    }
+}
+
+impl<'a> Placed<'a> {
+    /// The positions of `placed` that `keep` names, kept to be finished
+    /// again one on its own (not by the sweep's kernel, which built their
+    /// plans at the run's scales).
+    fn kept(placed: &[Placed<'a>], keep: &[usize]) -> Vec<Placed<'a>> {
+        let kept = placed.iter().filter(|p| keep.contains(&p.index));
+        kept.map(|p| Placed {
+            kernel: None,
+            ..p.clone()
+        })
+        .collect()
     }
 }
 

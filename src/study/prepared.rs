@@ -191,7 +191,64 @@ impl Study {
             analysis: Arc::new(analysis),
             watcher: Watcher::default(),
         };
-        study.for_sheets(&DrawRequest::default())
+        // No sheet is composed here: the course sheet's scales are chosen
+        // where it is drawn ([`Study::draw`]), or where a result file
+        // states them (`solve --format json`, `jsonl`, `--steps`).
+        Ok(study.fitted(&DrawRequest::default()))
+    }
+
+    /// Whether the sheets `opt` draws include the course sheet (`--course`,
+    /// or `"course"` in the scene's `want.drawings`) with plans on it.
+    pub(super) fn course_drawn(&self, opt: &DrawOptions) -> bool {
+        let an = &self.analysis;
+        an.plans && (opt.course || an.mech.scene.want.drawings.iter().any(|d| d == "course"))
+    }
+
+    /// The same study with its plans left to mechplan fitting the field
+    /// of a single sheet of `req` (its size, title block, table): nothing
+    /// solved, no sheet composed.
+    pub(super) fn fitted(&self, req: &DrawRequest) -> Study {
+        let opt = req.options(self.lang());
+        let field = drawing::plan_field(&opt);
+        if field == self.analysis.drafting.field {
+            return self.clone();
+        }
+        let mut an = (*self.analysis).clone();
+        an.drafting.field = field;
+        Study {
+            analysis: Arc::new(an),
+            watcher: self.watcher.clone(),
+        }
+    }
+
+    /// Every position solved for the sheets `req` draws, the pipeline run
+    /// once: the plans fit a single sheet of `req` ([`Study::fitted`]);
+    /// where the course sheet is drawn, its scales are chosen from the
+    /// positions solved (by composing it) and the plans it shows are
+    /// finished again at them ([`Analysis::run_rescaled`]), so that the
+    /// sheets, tables and handout state the μ of the sheet each plan is
+    /// drawn on. The study so prepared (its `scales_at` the course
+    /// sheet's), and the positions.
+    pub(super) fn solved_for_sheets(&self, req: &DrawRequest) -> Result<(Study, Vec<Solved>)> {
+        let opt = req.options(self.lang());
+        let fitted = self.fitted(req);
+        if !fitted.course_drawn(&opt) {
+            let solved = fitted.solved()?;
+            return Ok((fitted, solved));
+        }
+        let mut an = (*fitted.analysis).clone();
+        an.scales_at = Arc::default();
+        let (solved, scales) = an.run_rescaled(
+            self.watcher.get(),
+            &|n| drawing::course::shown(&an, n),
+            |all| drawing::course::plan_scales(&an, all, &opt),
+        )?;
+        an.scales_at = scales;
+        let study = Study {
+            analysis: Arc::new(an),
+            watcher: self.watcher.clone(),
+        };
+        Ok((study, solved))
     }
 
     /// The same study with its plans at the scales of the sheets `req`
@@ -202,15 +259,16 @@ impl Study {
     /// course sheet is drawn (`req.course`, or `"course"` in the scene's
     /// `want.drawings`), the plans it shows are built at its scales (one
     /// μ_v for all its velocity plans), found by composing it from a first
-    /// run. (`draw` prepares its study so; a study prepared for another
-    /// sheet draws its plans at their own scales.)
+    /// run — a run of its own, for a study to be solved again at them:
+    /// [`Study::draw`] does not call this but runs the pipeline once, and
+    /// a study read ([`Study::from_json`]) composes no sheet. (A study
+    /// prepared for another sheet draws its plans at their own scales.)
     pub fn for_sheets(&self, req: &DrawRequest) -> Result<Study> {
         let opt = req.options(self.lang());
         let mut an = (*self.analysis).clone();
         an.drafting.field = drawing::plan_field(&opt);
 
-        let course = opt.course || an.mech.scene.want.drawings.iter().any(|d| d == "course");
-        if course && an.plans {
+        if self.course_drawn(&opt) {
             let mut first = Vec::new();
             an.run_each_with(self.watcher.get(), |s| {
                 first.push(s);
@@ -349,6 +407,21 @@ impl Study {
     ) -> Result<()> {
         // A table or CSV prints no plan: its plans are only checked, built
         // numbers only (`Analysis::keep_plans`: the same plans to the bit).
+        // A result file that states the plans' μ states, for the plans
+        // the course sheet shows (`"course"` in `want.drawings`), the
+        // course sheet's, chosen here (by composing it from a run of its
+        // own) since it is asked for: reading the scene composes nothing.
+        let course;
+        let study = match style {
+            Results::Json | Results::Jsonl | Results::Steps(_)
+                if self.analysis.scales_at.is_empty()
+                    && self.course_drawn(&DrawRequest::default().options(self.lang())) =>
+            {
+                course = self.for_sheets(&DrawRequest::default())?;
+                &course
+            }
+            _ => self,
+        };
         let lean;
         let an = match style {
             Results::Table(_) | Results::Csv
@@ -360,7 +433,7 @@ impl Study {
                 lean = a;
                 &lean
             }
-            _ => &*self.analysis,
+            _ => &*study.analysis,
         };
         let style = self.style(style);
         out(&report::text_head(an, style))?;

@@ -367,7 +367,9 @@ impl Study {
     /// and the notes for the user.
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         req.validate()?;
-        self.for_sheets(req)?.solve()?.draw(req)
+        // The pipeline run once; the course sheet's scales chosen from it.
+        let (study, solved) = self.solved_for_sheets(req)?;
+        Solution::new(&study, solved).draw(req)
     }
 
     /// Every position, solved as it is read (flat memory; see

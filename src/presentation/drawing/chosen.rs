@@ -13,7 +13,11 @@ use crate::pipeline::Solved;
 /// default the first position (the start of the working stroke) and the
 /// one in the middle of the working stroke.
 pub fn chosen(an: &Analysis, solved: &[Solved]) -> (Vec<usize>, Vec<usize>) {
-    let n = solved.len();
+    chosen_of(an, solved.len())
+}
+
+/// [`chosen`] of `n` positions (which only their number decides).
+pub fn chosen_of(an: &Analysis, n: usize) -> (Vec<usize>, Vec<usize>) {
     let at = &an.mech.scene.want.plans_at;
     let velocity = at.velocity.clone().unwrap_or_else(|| {
         let step = if n <= 24 { 1 } else { n.div_ceil(12) };

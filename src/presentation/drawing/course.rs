@@ -143,6 +143,16 @@ fn layout_with(
     Ok(placed)
 }
 
+/// The positions (from 0) of `n` whose plans the course sheet shows: the
+/// ones [`plan_scales`] may fix the scales of, known before any is solved.
+pub fn shown(an: &Analysis, n: usize) -> Vec<usize> {
+    let (vel_at, acc_at) = super::chosen::chosen_of(an, n);
+    let mut at: Vec<usize> = vel_at.into_iter().chain(acc_at).filter(|&k| k >= 1).map(|k| k - 1).collect();
+    at.sort_unstable();
+    at.dedup();
+    at
+}
+
 /// The scales the course sheet draws its plans at, by position (from 0:
 /// μ_v, μ_a): one μ_v for every velocity plan it shows, each acceleration
 /// plan's μ_a. Built at them, the plans state them everywhere.
