@@ -31,7 +31,8 @@ const MARKS_FIELDS: [&str; 2] = ["photo", "snap"];
 /// sheet: a careless click is 1–1.5 mm off, and a wider radius reaches
 /// the crossings of other lines more often than it saves a click further
 /// off (tests/check_photo.rs: 2.5 mm got 208 of 234 plans as their twin,
-/// 2.0 mm 212, 1.8 mm 216).
+/// 2.0 mm 212, 1.8 mm 216). Only with `photo` (snapping decodes the photo).
+#[cfg(feature = "photo")]
 pub const SNAP_RADIUS_MM: f64 = 1.8;
 
 /// The fields of an answer a marks file may have too (as `from_json`

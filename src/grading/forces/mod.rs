@@ -215,6 +215,7 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
 }
 
 /// Check a force-plan answer against the analysis (the report in English).
+#[cfg(feature = "internals")]
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
     check_in(an, solved, ans, Lang::En)
 }
