@@ -48,10 +48,9 @@ mod verdict;
 
 pub use verdict::Candidate as Explanation;
 pub use items::resolve;
-#[cfg(feature = "internals")]
-pub use verdict::Found;
 pub use verdict::{
-    Diagnosis, Grade, Judgement, Report, SecondOpinion, StepReport, Verdict,
+    Candidate, Diagnosis, Elsewhere, Found, Grade, Judgement, Report, SecondOpinion, StepReport,
+    StepVerdict, Verdict,
 };
 
 use crate::error::{Error, Result};

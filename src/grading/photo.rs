@@ -86,6 +86,7 @@ pub struct PhotoReading {
     /// map back from the sheet to the photo, for the overlay drawn in the
     /// photo's own perspective.
     pub corners_px: [[f64; 2]; 4],
+    /// The rectangle's size on the sheet, mm.
     pub size_mm: [f64; 2],
     /// The pole on the sheet, mm from the rectangle's bottom-left corner.
     pub pole_mm: [f64; 2],
