@@ -264,9 +264,12 @@ pub enum DrawFormat {
     Dxf,
 }
 
-impl From<DrawFormat> for SheetFormat {
-    fn from(f: DrawFormat) -> SheetFormat {
-        match f {
+impl DrawFormat {
+    /// The library's sheet format (an inherent method, not `From`: a
+    /// trait impl on the library's public type would make this enum
+    /// reachable from outside yet unnameable).
+    pub fn sheet(self) -> SheetFormat {
+        match self {
             DrawFormat::Svg => SheetFormat::Svg,
             DrawFormat::Png => SheetFormat::Png,
             DrawFormat::Pdf => SheetFormat::Pdf,

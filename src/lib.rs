@@ -32,12 +32,6 @@
 //! studies, verification → pipeline → words → grading → presentation →
 //! study (this front door).
 
-// Without `internals`, items the project's tests reach but the front door
-// does not (the test-only switches, the reference twins of the fast
-// routes) are unused: the same items the dead-code lint passes over when
-// the modules are public, as they are for the tests.
-#![cfg_attr(not(feature = "internals"), allow(dead_code, unused_imports))]
-
 /// The data-flow modules: private to the API, public to the project's own
 /// tests, benches and fuzz targets with the `internals` feature (no
 /// stability promised there).

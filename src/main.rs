@@ -88,7 +88,7 @@ fn command(c: Command) -> Result<u8, Error> {
         } => {
             let req = DrawRequest {
                 dir: output,
-                format: format.into(),
+                format: format.sheet(),
                 dpi,
                 sheet,
                 lang,
@@ -146,7 +146,7 @@ fn command(c: Command) -> Result<u8, Error> {
             output,
             format,
             count,
-        } => wrote(&mechplan::frenet(&output, format.into(), count)?)?,
+        } => wrote(&mechplan::frenet(&output, format.sheet(), count)?)?,
         Command::Serve {
             listen,
             scene,
@@ -232,7 +232,7 @@ fn studies(c: Command) -> Result<(), Error> {
             let study = study(&scene, None)?;
             let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
             match output_dir {
-                Some(dir) => wrote(&d.write_into(&dir, format.into())?),
+                Some(dir) => wrote(&d.write_into(&dir, format.sheet())?),
                 None => stdout(&d.to_table()),
             }
         }

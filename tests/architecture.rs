@@ -631,3 +631,114 @@ fn phrases_live_in_the_words_catalogues() {
     }
     assert!(found.is_empty(), "{}", found.join("\n"));
 }
+
+/// Every source file under `src/`, the binary's and the crate root's too.
+fn every_source() -> BTreeMap<String, String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut all = sources();
+    for f in OUTSIDE {
+        all.insert(
+            f.to_string(),
+            std::fs::read_to_string(root.join(f)).unwrap(),
+        );
+    }
+    all
+}
+
+/// Whether an attribute's text allows (or expects) `dead_code`, or the
+/// whole `unused` group it belongs to.
+fn silences_dead_code(attr: &str) -> bool {
+    let a: String = attr.chars().filter(|c| !c.is_whitespace()).collect();
+    ["allow(", "expect("].iter().any(|k| {
+        a.match_indices(k).any(|(p, _)| {
+            let args = &a[p + k.len()..];
+            let args = &args[..args.find(')').unwrap_or(args.len())];
+            args.split(',').any(|x| x == "dead_code" || x == "unused")
+        })
+    })
+}
+
+/// Where the dead-code lint is silenced in `sources`: an inner attribute
+/// (`#![…]`: a module or the whole crate) always, an item's own
+/// `#[allow(dead_code)]` where the line right above it is no `//`
+/// comment saying why.
+fn silenced_dead_code(sources: &BTreeMap<String, String>) -> Vec<String> {
+    let mut found = Vec::new();
+    for (file, text) in sources {
+        let lines: Vec<&str> = text.lines().collect();
+        let mut i = 0;
+        while i < lines.len() {
+            let t = lines[i].trim_start();
+            if !(t.starts_with("#[") || t.starts_with("#![")) {
+                i += 1;
+                continue;
+            }
+            // The whole attribute, over as many lines as its brackets take.
+            let start = i;
+            let mut attr = String::new();
+            let mut depth = 0i64;
+            loop {
+                let l = lines[i];
+                attr.push_str(l);
+                attr.push('\n');
+                depth += l.matches('[').count() as i64 - l.matches(']').count() as i64;
+                i += 1;
+                if depth <= 0 || i == lines.len() {
+                    break;
+                }
+            }
+            if !silences_dead_code(&attr) {
+                continue;
+            }
+            let at = format!("{file}:{}", start + 1);
+            if t.starts_with("#![") {
+                found.push(format!("{at}: dead code allowed module- or crate-wide"));
+                continue;
+            }
+            let above = start.checked_sub(1).map(|k| lines[k].trim_start());
+            let why = above.is_some_and(|a| {
+                a.starts_with("//") && !a.starts_with("///") && !a.starts_with("//!") && a.len() > 3
+            });
+            if !why {
+                found.push(format!(
+                    "{at}: allow(dead_code) without a comment line right above it saying why"
+                ));
+            }
+        }
+    }
+    found
+}
+
+/// The compiler sees all the code: no module- or crate-wide
+/// `allow(dead_code)` (code only the tests use is compiled only with the
+/// `internals` feature instead), and an item's own only under a comment
+/// saying why.
+#[test]
+fn dead_code_is_allowed_only_item_by_item_and_said_why() {
+    let found = silenced_dead_code(&every_source());
+    assert!(found.is_empty(), "{}", found.join("\n"));
+    // The check itself catches each kind.
+    let mut house = BTreeMap::new();
+    house.insert(
+        "crate.rs".to_string(),
+        "//! A crate.\n#![cfg_attr(\n    not(feature = \"internals\"),\n    allow(dead_code, unused_imports)\n)]\n".to_string(),
+    );
+    house.insert("module.rs".to_string(), "#![allow(unused)]\n".to_string());
+    house.insert(
+        "item.rs".to_string(),
+        "/// A thing.\n#[allow(dead_code)]\nfn f() {}\n".to_string(),
+    );
+    house.insert(
+        "said.rs".to_string(),
+        "/// A thing.\n// Read only by a unit test.\n#[allow(clippy::x, dead_code)]\nfn f() {}\n"
+            .to_string(),
+    );
+    let v = silenced_dead_code(&house);
+    assert_eq!(v.len(), 3, "{v:?}");
+    assert!(v[0].starts_with("crate.rs:2: dead code allowed"), "{v:?}");
+    assert!(
+        v[1].starts_with("item.rs:2: allow(dead_code) without"),
+        "{v:?}"
+    );
+    assert!(v[2].starts_with("module.rs:1: dead code allowed"), "{v:?}");
+}

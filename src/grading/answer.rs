@@ -5,8 +5,8 @@ use crate::error::{Error, Issue, Result};
 use crate::json::{escape, locate_bad_numbers, parse_strict};
 use crate::kinematics::construction::PlanKind;
 pub use super::numbers::{
-    MAX_ANGLE_DEG, MAX_ANSWER_BYTES, MAX_DELTA_MM, MAX_PLAN_MM, MAX_VALUE, MU_RANGE, check_size,
-    coordinate_issue, delta_issue, mu_issue, rounding_of,
+    MAX_ANGLE_DEG, MAX_ANSWER_BYTES, MAX_PLAN_MM, check_size, coordinate_issue, delta_issue,
+    mu_issue,
 };
 use super::numbers::{
     bounded, issue, keep, number, parse_with_sense, positive, rounding_of_value,
@@ -104,15 +104,6 @@ pub struct Answer {
     /// judged against the true value, and the acceleration plan is
     /// replayed as built with them.
     pub stated: Vec<Stated>,
-}
-
-impl Answer {
-    /// The ω the student states for link `id`, if any.
-    pub fn stated_omega(&self, id: &str) -> Option<&Stated> {
-        self.stated
-            .iter()
-            .find(|s| matches!(&s.quantity, StatedQuantity::Omega(l) if l == id))
-    }
 }
 
 /// Split "p_v b", "p_v-b", "ab" into two names; without a separator, the

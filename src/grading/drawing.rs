@@ -234,7 +234,7 @@ fn plan_ends(lines: &[Vec<Point>], pole: Point) -> Result<Ends> {
 }
 
 /// Where a drawing's pole is (its coordinates, mm): the line end its
-/// label names, as [`answer_of`] finds it.
+/// label names, as [`answer_and_notes`] finds it.
 /// `plan`: the plan the answer was read as.
 pub(super) fn pole_of(drawing: &Drawing, plan: Option<PlanKind>) -> Result<Point> {
     let texts: Vec<Text> = drawing.labels.iter().map(|(s, _)| text_kind(s)).collect();
@@ -243,6 +243,7 @@ pub(super) fn pole_of(drawing: &Drawing, plan: Option<PlanKind>) -> Result<Point
 }
 
 /// A drawing read as an answer ([`answer_and_notes`] without its notes).
+#[cfg(feature = "internals")]
 pub(super) fn answer_of(
     drawing: Drawing,
     mu: Option<f64>,

@@ -13,7 +13,7 @@
 //! file's size but for blocks, which are inserted at most [`MAX_DEPTH`]
 //! deep and into at most [`MAX_ENTITIES`] entities in all.
 
-use super::answer::{Answer, check_size};
+use super::answer::check_size;
 use super::drawing::{Drawing, whole};
 use crate::error::Result;
 use crate::kinematics::construction::PlanKind;
@@ -635,21 +635,6 @@ fn parse_in(text: &str) -> Result<(Drawing, f64)> {
         kind: "dxf",
     };
     Ok((d, unit))
-}
-
-/// Read a DXF answer (its text decoded, [`decode`]). `mu`, `plan` come
-/// from the command line when the drawing does not state them (a
-/// "μ = 0.01" text, and the pole's label p_v / p_a).
-/// `position` is the number of the position in the study's numbering.
-pub fn from_dxf(
-    text: &str,
-    mu: Option<f64>,
-    plan: Option<PlanKind>,
-    delta: f64,
-    position: usize,
-) -> Result<Answer> {
-    let position = super::position::StatedPosition::new(position);
-    super::drawing::answer_of(parse(text)?, mu, plan, delta, position)
 }
 
 #[cfg(test)]

@@ -49,6 +49,7 @@ impl Homography {
     }
 
     /// The inverse map (sheet mm to photo px).
+    #[cfg(test)]
     pub fn inverse(&self) -> Option<Homography> {
         let m = self.0.try_inverse()?;
         // Keep w > 0 on the sheet's side of the horizon.

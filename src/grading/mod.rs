@@ -49,7 +49,7 @@ mod verdict;
 pub use verdict::Candidate as Explanation;
 pub use items::resolve;
 pub use verdict::{
-    Diagnosis, Elsewhere, Found, Grade, Judgement, MAX_TOLERANCE_OF_PLAN, Report, SecondOpinion, StepReport,
+    Candidate, Diagnosis, Elsewhere, Found, Grade, Judgement, Report, SecondOpinion, StepReport,
     StepVerdict, Verdict,
 };
 
@@ -84,6 +84,7 @@ fn position_of<'s>(
 /// verdicts decide; the comparison with the true plan is the second
 /// opinion), one that gives only segments and values against the true
 /// plan.
+#[cfg(feature = "internals")]
 pub fn check(an: &Analysis, solved: &[Solved], ans: &Answer) -> Result<Report> {
     check_in(an, solved, ans, Lang::En)
 }

@@ -31,7 +31,8 @@ const MARKS_FIELDS: [&str; 2] = ["photo", "snap"];
 /// sheet: a careless click is 1–1.5 mm off, and a wider radius reaches
 /// the crossings of other lines more often than it saves a click further
 /// off (tests/check_photo.rs: 2.5 mm got 208 of 234 plans as their twin,
-/// 2.0 mm 212, 1.8 mm 216).
+/// 2.0 mm 212, 1.8 mm 216). Only with `photo` (snapping decodes the photo).
+#[cfg(feature = "photo")]
 pub const SNAP_RADIUS_MM: f64 = 1.8;
 
 /// The fields of an answer a marks file may have too (as `from_json`
@@ -85,6 +86,7 @@ pub struct PhotoReading {
     /// map back from the sheet to the photo, for the overlay drawn in the
     /// photo's own perspective.
     pub corners_px: [[f64; 2]; 4],
+    /// The rectangle's size on the sheet, mm.
     pub size_mm: [f64; 2],
     /// The pole on the sheet, mm from the rectangle's bottom-left corner.
     pub pole_mm: [f64; 2],

@@ -34,6 +34,7 @@ impl StatedPosition {
     }
 
     /// Position `number` in the numbering `from`.
+    #[cfg(feature = "internals")]
     pub fn numbered(number: usize, from: Numbering) -> StatedPosition {
         StatedPosition {
             number: Some(number),

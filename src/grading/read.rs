@@ -45,12 +45,7 @@ impl Reading {
 /// its first character is `<`, or it starts as a DXF does) —
 /// refusing one larger than [`super::answer::MAX_ANSWER_BYTES`]; its problems name the
 /// answer (`name`, its file). Reading the file is the front door's
-/// (`crate::study`).
-pub fn from_text(text: &str, name: &str, svg: bool, r: &Reading) -> Result<Answer> {
-    from_text_full(text, name, svg, r, None).map(|(a, ..)| a)
-}
-
-/// [`from_text`], with the notes on what of a drawing was left out (its
+/// (`crate::study`). With the answer, the notes on what of a drawing was left out (its
 /// texts that are no plan letter, letters beside no end of the plan:
 /// [`super::drawing::answer_and_notes`]; a JSON answer has none) and, for
 /// a marks file (a JSON answer with `photo`, [`super::photo`]), what the

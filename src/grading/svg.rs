@@ -9,10 +9,9 @@
 //! are refused before parsing, by a linear scan), each element's transform
 //! is composed once from its parent's.
 
-use super::answer::{Answer, check_size};
+use super::answer::check_size;
 use super::drawing::{Drawing, whole};
 use crate::error::Result;
-use crate::kinematics::construction::PlanKind;
 use kurbo::Point;
 
 /// The deepest nesting of elements read (an editor's layers and groups
@@ -251,13 +250,14 @@ impl Page {
 /// drawing does not state them (a "μ = 0.01" text, and the pole's label
 /// p_v / p_a); a plan asked that the pole's label contradicts is refused.
 /// `position` is the number of the position in the study's numbering.
+#[cfg(feature = "internals")]
 pub fn from_svg(
     text: &str,
     mu: Option<f64>,
-    plan: Option<PlanKind>,
+    plan: Option<crate::kinematics::construction::PlanKind>,
     delta: f64,
     position: usize,
-) -> Result<Answer> {
+) -> Result<super::answer::Answer> {
     let position = super::position::StatedPosition::new(position);
     super::drawing::answer_of(parse(text)?, mu, plan, delta, position)
 }

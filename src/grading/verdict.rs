@@ -19,15 +19,22 @@ pub enum Judgement {
 /// The verdict on one item.
 #[derive(Clone, Debug)]
 pub struct Verdict {
+    /// Where the item is in the answer (a JSON pointer).
     pub pointer: String,
+    /// The item's key in the answer (`p_v b`, `ω2`).
     pub key: String,
     /// What was checked, in words ("segment p_v b", "ω2").
     pub what: String,
+    /// The true value, in `unit` (a point: 0, its given value being its
+    /// distance from the true place).
     pub expected: f64,
+    /// The student's value, in `unit`.
     pub given: f64,
     /// |given − expected| (for points: the distance between them).
     pub difference: f64,
+    /// How far the given value may be from the true one and still be right.
     pub tolerance: f64,
+    /// The unit of the values.
     pub unit: &'static str,
     /// The same item on the plan, in mm (values: their segment), where it
     /// has one: (expected, given).
@@ -35,10 +42,12 @@ pub struct Verdict {
     /// The step of the construction that draws the item's point (1-based)
     /// and its sentence.
     pub step: Option<(usize, String)>,
+    /// Right, wrong, or cannot be judged (and why).
     pub judgement: Judgement,
 }
 
 impl Verdict {
+    /// Whether the item is right.
     pub fn ok(&self) -> bool {
         self.judgement == Judgement::Right
     }
@@ -71,19 +80,26 @@ pub struct Elsewhere {
     pub position: Option<usize>,
 }
 
+///The check of a plan of velocities or accelerations: the verdicts item
+/// by item, the diagnosis, and the right plan at the student's scale.
 #[derive(Clone, Debug)]
 pub struct Report {
+    /// Velocities or accelerations.
     pub plan: PlanKind,
     /// The position checked: the one the answer states, by its number in
     /// the study's numbering (a `count` sweep from 0, given values from 1).
     pub position: usize,
     /// Where the answer's points fit if not at the stated position.
     pub elsewhere: Option<Elsewhere>,
+    /// The plan's scale (real value per mm).
     pub mu: f64,
+    /// The pencil precision δ the tolerances rest on, mm.
     pub delta: f64,
+    /// The verdicts, item by item.
     pub verdicts: Vec<Verdict>,
     /// Worst intersection angle of the construction (degrees).
     pub worst_angle: f64,
+    /// The typical mistake that explains the wrong items, if one does.
     pub diagnosis: Option<Diagnosis>,
     /// The correct plan at the student's scale (for the overlay).
     pub plan_built: Plan,
@@ -101,8 +117,11 @@ pub struct Report {
 /// its counts, and where the two disagree, why.
 #[derive(Clone, Debug)]
 pub struct SecondOpinion {
+    /// Items right by the comparison.
     pub right: usize,
+    /// Items wrong by the comparison.
     pub wrong: usize,
+    /// Items it cannot judge.
     pub unjudged: usize,
     /// What it names, if anything.
     pub mistake: Option<String>,
@@ -173,6 +192,7 @@ impl Report {
             (false, None) => return None,
         })
     }
+    /// How many items are wrong.
     pub fn wrong(&self) -> usize {
         self.verdicts
             .iter()
@@ -190,12 +210,14 @@ impl Report {
             Grade::Right
         }
     }
+    /// How many items cannot be judged.
     pub fn unjudged(&self) -> usize {
         self.verdicts
             .iter()
             .filter(|v| matches!(v.judgement, Judgement::CannotJudge(_)))
             .count()
     }
+    /// How many items are right.
     pub fn right(&self) -> usize {
         self.verdicts.iter().filter(|v| v.ok()).count()
     }
@@ -276,6 +298,7 @@ pub struct StepVerdict {
     pub off: f64,
     /// The step's own tolerance, mm.
     pub tolerance: f64,
+    /// Right, wrong, or cannot be judged (and why).
     pub judgement: Judgement,
     /// The mistake that explains it (an index into
     /// [`StepReport::mistakes`]), when it is wrong.
@@ -348,6 +371,7 @@ impl StepReport {
         self.mistakes = found;
         self.mistakes.extend(rest);
     }
+    /// The grade of the steps: wrong if a step is, else cannot judge if one cannot be judged, else right.
     pub fn grade(&self) -> Grade {
         if self.steps.iter().any(|s| s.judgement == Judgement::Wrong) {
             Grade::Wrong

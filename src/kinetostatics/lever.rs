@@ -25,9 +25,6 @@ use crate::kinematics::solve::{Analysis, Position};
 use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 
-/// The turn of the velocity plan into the lever: 90° counter-clockwise.
-pub const TURN: f64 = std::f64::consts::FRAC_PI_2;
-
 /// What a force on the lever stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Part {
@@ -54,7 +51,8 @@ pub struct LeverForce {
     pub plan_point: Option<usize>,
     /// Where it acts on the lever: the plan point turned, mm from the pole.
     pub at: Vec2,
-    /// Its drafting error radius, mm.
+    /// Its drafting error radius, mm (for [`Lever::err`]).
+    #[cfg(feature = "internals")]
     pub err: f64,
     /// The force, N.
     pub f: Vec2,
@@ -88,18 +86,20 @@ pub struct Lever {
     pub moment_b: f64,
     /// Every known force (couples as their pairs) on the lever.
     pub forces: Vec<LeverForce>,
-    /// The turn of the plan into the lever, rad ([`TURN`]).
-    pub turn: f64,
     /// The velocity plan's scale, (m/s)/mm (with several inputs: per unit
     /// rate of this input).
     pub mu_v: f64,
     /// The first-order drafting bound of `balancing`: the plan points'
-    /// error radii times the forces, Σ|F|·err, divided as M_b is.
+    /// error radii times the forces, Σ|F|·err, divided as M_b is (read by
+    /// the tests).
+    #[cfg(feature = "internals")]
     pub err: f64,
     /// Σ|moment| of the known forces, divided as M_b is: the size of the
     /// sum M_b came from (the scale of its rounding).
     pub scale: f64,
-    /// The largest |moment| of one known force, divided as M_b is.
+    /// The largest |moment| of one known force, divided as M_b is (read by
+    /// the tests).
+    #[cfg(feature = "internals")]
     pub largest: f64,
     /// The velocity plan the lever was turned from.
     pub plan: Plan,
@@ -309,6 +309,7 @@ fn lever_forces(an: &Analysis, s: &Position, plan: &Plan, loads: &[Load]) -> Res
                 origin,
                 plan_point: p.point,
                 at,
+                #[cfg(feature = "internals")]
                 err: p.err,
                 f,
                 arm,
@@ -353,6 +354,7 @@ fn lever_forces(an: &Analysis, s: &Position, plan: &Plan, loads: &[Load]) -> Res
 struct LeverDrive {
     point: usize,
     at: Vec2,
+    #[cfg(feature = "internals")]
     err: f64,
     dir: Vec2,
     per_unit: f64,
@@ -372,6 +374,7 @@ fn lever_drive(an: &Analysis, s: &Position, plan: &Plan, input: usize) -> Result
             LeverDrive {
                 point: a,
                 at: turned(pa.at),
+                #[cfg(feature = "internals")]
                 err: pa.err,
                 dir: perp(oa) / oa.hypot(),
                 per_unit: oa.hypot(),
@@ -388,6 +391,7 @@ fn lever_drive(an: &Analysis, s: &Position, plan: &Plan, input: usize) -> Result
             LeverDrive {
                 point: pr.point,
                 at: turned(rod.at - barrel.at),
+                #[cfg(feature = "internals")]
                 err: rod.err + barrel.err,
                 dir: u,
                 per_unit: 1.0,
@@ -413,6 +417,7 @@ pub fn lever_at(
     let LeverDrive {
         point: point_b,
         at: at_b,
+        #[cfg(feature = "internals")]
         err: err_b,
         dir: dir_b,
         per_unit,
@@ -430,7 +435,9 @@ pub fn lever_at(
     // Divided as M_b is: the moment sum over the arm, times l_OA on a crank.
     let divide = per_unit / arm_unit.abs();
     let scale = forces.iter().map(|f| f.moment.abs()).sum::<f64>() * divide;
+    #[cfg(feature = "internals")]
     let largest = forces.iter().map(|f| f.moment.abs()).fold(0.0, f64::max) * divide;
+    #[cfg(feature = "internals")]
     let drafting: f64 = forces.iter().map(|f| f.f.hypot() * f.err).sum::<f64>() + f_b.abs() * err_b;
     let value = f_b * per_unit;
     let balancing = if m.scene.input_at(input).is_crank() {
@@ -454,10 +461,11 @@ pub fn lever_at(
         arm_b: arm_unit.abs(),
         moment_b: arm_unit * f_b,
         forces,
-        turn: TURN,
         mu_v: plan.mu,
+        #[cfg(feature = "internals")]
         err: drafting * divide,
         scale,
+        #[cfg(feature = "internals")]
         largest,
         plan,
     })

@@ -20,7 +20,6 @@ use crate::model::scene::InputSpec;
 use kurbo::{Point, Vec2};
 use nalgebra::{DMatrix, DVector};
 
-pub use crate::model::scene::MAX_MOVING_LINKS;
 
 /// The unknowns found: in the mechanism's order of pairs and the scene's
 /// order of inputs.

@@ -91,11 +91,6 @@ impl Demand {
         self.include[l]
     }
 
-    /// Is point `p` reported?
-    pub fn reports(&self, p: usize) -> bool {
-        self.points.binary_search(&p).is_ok()
-    }
-
     /// The link that reports point `p`: the first solved link carrying it.
     pub fn carrier(&self, _mech: &Mechanism, p: usize) -> usize {
         self.carriers[p].expect("reported points are carried by solved links")

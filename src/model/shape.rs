@@ -52,7 +52,6 @@ pub enum Placement {
 /// link's list and the message.
 #[derive(Clone, Debug)]
 pub struct ShapeIssue {
-    pub link: usize,
     /// Index of the point in the link's `points`; `None`: the link as a whole.
     pub point: Option<usize>,
     pub message: String,
@@ -341,7 +340,6 @@ impl Shaping<'_> {
 
     fn issue(&self, point: Option<usize>, message: String) -> ShapeIssue {
         ShapeIssue {
-            link: self.l,
             point,
             message,
         }

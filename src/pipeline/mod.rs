@@ -11,7 +11,7 @@ mod run;
 pub use inputs::InputPositions;
 
 pub use crate::kinematics::solve::{Analysis, Position};
-pub use crate::verification::crosscheck::{BOUND_ROUNDINGS, Bounds, CrossCheck, MAX_REL_DIFF};
+pub use crate::verification::crosscheck::CrossCheck;
 
 use crate::kinetostatics::Dynamics;
 

@@ -4,24 +4,30 @@
 use super::{Analysis, InputPositions, Position, RUN_CHUNK, Solved};
 use crate::kinematics::solve::Motions;
 use crate::error::{Error, Result};
-use crate::geom::Pose;
 use crate::geom::wrap_pi;
-use crate::kinematics::analytic::Motion;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
 use crate::kinematics::analytic::{Coords, Drives, Order, contour};
 use crate::kinematics::compiled::{Program, State};
-use crate::kinematics::construction::{Kernel, Plans, build_plans, build_plans_numbers};
+#[cfg(feature = "internals")]
+use crate::kinematics::construction::Kernel;
+use crate::kinematics::construction::{Plans, build_plans, build_plans_numbers};
 use crate::kinematics::positions::{Configuration, PositionSolver};
+#[cfg(feature = "internals")]
 use crate::kinematics::solve::Corruption;
 use crate::model::scene::InputSpec;
 use crate::verification::crosscheck::{ChangedData, Costs, Residuals};
-use kurbo::Vec2;
 use std::time::Instant as Clock;
 
 /// The change between two positions (a link's turn in rad, or its move
 /// over the sketch's size) above which the fast path halves the span
 /// between them to tell a quick motion from a jump of route (a).
 const JUMP: f64 = 0.25;
+
+/// Without `internals` no sweep's kernel is ever asked for
+/// (`Analysis::sweep_kernel` is the tests' and benches' switch): a
+/// kernel that cannot be made, so the run's route carries none.
+#[cfg(not(feature = "internals"))]
+type Kernel = std::convert::Infallible;
 
 /// A position found in order by both routes, before its rates.
 #[derive(Clone)]
@@ -216,12 +222,11 @@ impl Analysis {
     /// checked and it is asked for (`sweep_kernel`).
     fn route(&self) -> Result<Route<'_>> {
         let m = &self.mech;
-        let program = match self.reference {
+        let program = match self.reference() {
             false => Some(Program::new(m, &self.structure, &self.need)?),
             true => None,
         };
-        let kernel = (self.plans && !self.keep_plans && !self.reference && self.sweep_kernel)
-            .then(Kernel::new);
+        let kernel = self.kernel();
         let state = if self.plans {
             None
         } else {
@@ -474,7 +479,7 @@ impl Analysis {
     fn finish(&self, p: &Placed, checks: &Checks, program: Option<&Program>) -> Result<Solved> {
         let m = &self.mech;
         let rates = self.input_rates();
-        let (q, mut config) = (p.q, p.config.clone());
+        let (q, config) = (p.q, p.config.clone());
         let drives = self.drives_at(&q);
         let w = drives.len();
         let t0 = Clock::now();
@@ -505,7 +510,12 @@ impl Analysis {
             }
         }
         let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
-        self.corrupt(&mut config, &mut motion);
+        #[cfg(feature = "internals")]
+        let config = {
+            let mut config = config;
+            self.corrupt(&mut config, &mut motion);
+            config
+        };
         let motions = Motions {
             motion,
             analogue,
@@ -533,7 +543,7 @@ impl Analysis {
         // Where the result keeps no plans they are only checked: built
         // numbers only (the same plans to the bit), or by the sweep's
         // kernel (`Analysis::sweep_kernel`; where it refused, on their own).
-        let lean = !self.keep_plans && !self.reference;
+        let lean = !self.keep_plans && !self.reference();
         let checked = p.kernel.as_ref().and_then(|k| k.0.as_ref());
         let (setup, d) = (self.setup(), self.drafting_at(p.index));
         let plans = match self.order {
@@ -559,9 +569,44 @@ impl Analysis {
         Ok(solved)
     }
 
+    /// Whether the run takes the twins kept as references
+    /// (`Analysis::reference`, tests and benches only).
+    fn reference(&self) -> bool {
+        #[cfg(feature = "internals")]
+        return self.reference;
+        #[cfg(not(feature = "internals"))]
+        false
+    }
+
+    /// The sweep's kernel where plans are only checked and it is asked
+    /// for (`Analysis::sweep_kernel`, tests and benches only).
+    #[cfg(feature = "internals")]
+    fn kernel(&self) -> Option<Kernel> {
+        (self.plans && !self.keep_plans && !self.reference && self.sweep_kernel).then(Kernel::new)
+    }
+
+    /// No sweep's kernel without `internals`.
+    #[cfg(not(feature = "internals"))]
+    fn kernel(&self) -> Option<Kernel> {
+        None
+    }
+
+    /// Without `internals` there is no kernel to build with.
+    #[cfg(not(feature = "internals"))]
+    fn kernel_plans(
+        &self,
+        k: &mut Kernel,
+        _: &Configuration,
+        _: (Coords, usize),
+        _: Order,
+    ) -> (Option<Plans>, f64) {
+        match *k {}
+    }
+
     /// The plans of a position by the sweep's kernel `k`, numbers only (as
     /// the one-position build's, [`Kernel`]), and their time; `None` where
     /// it refuses.
+    #[cfg(feature = "internals")]
     fn kernel_plans(
         &self,
         k: &mut Kernel,
@@ -584,7 +629,14 @@ impl Analysis {
     /// Put the deliberate error of [`Analysis::corrupt`] (tests only) into
     /// route (a)'s answer: into the link that reports the last point on a
     /// moving link (so that reported numbers change).
-    fn corrupt(&self, config: &mut Configuration, motion: &mut [Option<Motion>]) {
+    #[cfg(feature = "internals")]
+    fn corrupt(
+        &self,
+        config: &mut Configuration,
+        motion: &mut [Option<crate::kinematics::analytic::Motion>],
+    ) {
+        use crate::geom::Pose;
+        use kurbo::Vec2;
         let Some(c) = self.corrupt else { return };
         let m = &self.mech;
         // The link that reports the last reported point on a moving link.

@@ -12,10 +12,12 @@ use crate::verification::crosscheck::{CrossCheck, Method};
 use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};
 
+#[cfg(feature = "internals")]
 pub use super::steps::to_steps;
 use super::steps::{steps_head, steps_position};
 use crate::json::{number as num, vec2};
 pub(crate) use super::text_table::group_kinds;
+#[cfg(feature = "internals")]
 pub use super::text_table::to_table;
 use super::text_table::{table_head, table_position};
 
@@ -513,6 +515,7 @@ pub fn text_tail(_an: &Analysis, style: Style, count: usize) -> String {
 
 /// The whole result text in `style` (as [`text_head`], [`text_position`]
 /// of each, [`text_tail`]).
+#[cfg(feature = "internals")]
 pub fn to_text(an: &Analysis, solved: &[Solved], style: Style) -> String {
     let mut t = text_head(an, style);
     for (k, s) in solved.iter().enumerate() {

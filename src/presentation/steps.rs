@@ -10,6 +10,7 @@ use crate::words::construction::Lang;
 use std::fmt::Write as _;
 
 /// The constructions as numbered lecture-style steps (`solve --steps`).
+#[cfg(feature = "internals")]
 pub fn to_steps(an: &Analysis, solved: &[Solved], lang: Lang) -> String {
     let mut t = steps_head(an, lang);
     for (i, s) in solved.iter().enumerate() {

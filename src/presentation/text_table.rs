@@ -43,6 +43,7 @@ fn sense(x: f64, scale: f64, l: Lang) -> &'static str {
 
 /// A table for the terminal in `l`: points with |v|, |a|; links with ω,
 /// ε and senses.
+#[cfg(feature = "internals")]
 pub fn to_table(an: &Analysis, solved: &[Solved], l: Lang) -> String {
     let mut t = table_head(an, l);
     for (i, s) in solved.iter().enumerate() {

@@ -85,12 +85,15 @@ pub enum Why {
 /// All instant centres of the solved links at one position.
 #[derive(Clone, Debug)]
 pub struct Centres {
-    /// Links taking part (the frame and the solved links), ascending.
+    /// Links taking part (the frame and the solved links), ascending
+    /// (read by the tests).
+    #[cfg(feature = "internals")]
     pub links: Vec<usize>,
     pub found: Vec<Centre>,
     pub undetermined: Vec<Undetermined>,
 }
 
+#[cfg(feature = "internals")]
 impl Centres {
     /// The centre of links `a` and `b` (in either order), if found.
     pub fn get(&self, a: usize, b: usize) -> Option<&Centre> {
@@ -132,6 +135,7 @@ pub fn find(an: &Analysis, c: &Configuration) -> Centres {
     }
     let found = k.centres(&mut undetermined);
     Centres {
+        #[cfg(feature = "internals")]
         links: k.links,
         found,
         undetermined,

@@ -75,6 +75,7 @@ pub struct Diagrams {
     pub dir: f64,
     /// +1 or −1: the output's coordinate turned so that the displacement
     /// from the extreme position is positive (the working stroke's sense).
+    #[cfg(feature = "internals")]
     pub along: f64,
     /// Crank angle step, rad (a driving slider: the slide's step, m).
     pub h: f64,
@@ -389,6 +390,7 @@ impl Diagrams {
             n,
             phi0,
             dir,
+            #[cfg(feature = "internals")]
             along,
             h,
             stroke: stroke.is_some(),
@@ -448,6 +450,7 @@ impl Diagrams {
     /// The mean of the analytic s′ over interval k (Gauss–Legendre on the
     /// transfer function): what the chord's ray gives by the mean value
     /// theorem the lecture cites.
+#[cfg(feature = "internals")]
     pub fn mean_velocity(&self, out: &mut Output, k: usize) -> Result<f64> {
         let mut sum = 0.0;
         for (x, w) in GAUSS8 {

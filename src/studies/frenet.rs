@@ -35,6 +35,7 @@ pub fn rod_angle(k: f64, l: f64, s: f64) -> f64 {
 
 /// The slider-crank's rod point at distance `rho` from A (eq. 8, as
 /// printed in `001`).
+#[cfg(feature = "internals")]
 pub fn rod_point(k: f64, l: f64, rho: f64, s: f64) -> Point {
     let ks = k * s;
     Point::new(
@@ -44,6 +45,7 @@ pub fn rod_point(k: f64, l: f64, rho: f64, s: f64) -> Point {
 }
 
 /// The same point by the general formulation (eqs. 3, 5, 7).
+#[cfg(feature = "internals")]
 pub fn rod_point_general(k: f64, l: f64, rho: f64, s: f64) -> Point {
     let (a, alpha) = on_circle(k, s);
     in_trihedron(a, alpha, rho, rod_angle(k, l, s))

@@ -227,11 +227,6 @@ impl<'a> Output<'a> {
         Ok(out)
     }
 
-    /// Is this a point's path (not a link's slide or angle)?
-    pub fn is_path(&self) -> bool {
-        self.point.is_some()
-    }
-
     /// (s, ds/dφ, d²s/dφ²) at crank angle φ, reached continuously.
     pub fn at(&mut self, phi: f64) -> Result<(f64, f64, f64)> {
         let m = &self.an.mech;

@@ -35,6 +35,28 @@ mod sheets;
 mod solution;
 mod studies;
 
+/// The verdicts of a checked answer, by name: what a [`Checked`] holds
+/// ([`KinematicCheck::report`], [`Checked::Force`], a photographed
+/// plan's [`KinematicCheck::photo`]).
+pub mod verdict {
+    pub use crate::grading::forces::ForceReport;
+    pub use crate::grading::photo::{PhotoReading, Snapped};
+    pub use crate::grading::{
+        Candidate, Diagnosis, Elsewhere, Found, Grade, Judgement, Report, SecondOpinion,
+        StepReport, StepVerdict, Verdict,
+    };
+}
+
+/// A plan of velocities or accelerations as built, by name: the plans a
+/// verdict compares with ([`verdict::Report`]), their points, lines and
+/// steps, and the typical mistakes a wrong plan is explained by.
+pub mod plan {
+    pub use crate::kinematics::construction::plan::{Known, Quantity, Step};
+    pub use crate::kinematics::construction::{
+        Dir, Field, Judged, Measured, Mistake, Op, Plan, PlanLine, PlanPoint, PointId, Why,
+    };
+}
+
 pub use check_file::check_file;
 pub use group::{GRADEBOOK, Graded, OVERLAYS, SUMMARY, check_group, is_group};
 pub use prepared::{DEFAULT_SCENE, DrawRequest, Results, Study, read};

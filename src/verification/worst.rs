@@ -24,7 +24,9 @@ pub enum Quantity {
 }
 
 impl Quantity {
-    /// The quantities in the order of [`Quantity::index`].
+    /// The quantities in the order of [`Quantity::index`] (the unit tests
+    /// go through them all).
+    #[cfg(test)]
     pub const ALL: [Quantity; 6] = [
         Quantity::Position,
         Quantity::Velocity,

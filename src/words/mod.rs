@@ -19,7 +19,5 @@ pub mod notation;
 pub mod numbers;
 pub mod terminal;
 
-pub use crate::lang::Lang;
-
-pub use catalogue::{Catalogue, catalogue};
+pub use catalogue::catalogue;
 pub use notation::Label;

@@ -29,9 +29,13 @@ use answer::issue;
 pub struct ForceReport {
     /// The position checked, by its number in the study's numbering.
     pub position: usize,
+    /// The links whose force plan was checked.
     pub links: Vec<String>,
+    /// The plan's scale, N per mm.
     pub mu: f64,
+    /// The pencil precision δ the tolerances rest on, mm.
     pub delta: f64,
+    /// The verdicts, item by item.
     pub verdicts: Vec<Verdict>,
     /// The typical mistake that explains every wrong item, if one does.
     pub diagnosis: Option<String>,
@@ -40,6 +44,7 @@ pub struct ForceReport {
 }
 
 impl ForceReport {
+    /// How many items are wrong.
     pub fn wrong(&self) -> usize {
         self.verdicts
             .iter()
@@ -215,6 +220,7 @@ fn difference(kind: &str, a: f64, b: f64) -> f64 {
 }
 
 /// Check a force-plan answer against the analysis (the report in English).
+#[cfg(feature = "internals")]
 pub fn check(an: &Analysis, solved: &[Solved], ans: &ForceAnswer) -> Result<ForceReport> {
     check_in(an, solved, ans, Lang::En)
 }

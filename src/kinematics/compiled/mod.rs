@@ -145,24 +145,6 @@ impl<'a> Program<'a> {
         }
     }
 
-    /// The number of steps (positions and rates).
-    pub fn len(&self) -> usize {
-        self.place.len() + self.rate.len()
-    }
-
-    /// Whether the program has no steps (never: the frame's rate is one).
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
-    /// Positions at the input coordinate `q` (a single input), reached
-    /// continuously from the last solved position, as
-    /// [`crate::kinematics::positions::PositionSolver::solve`].
-    #[inline]
-    pub fn positions(&self, st: &mut State, q: f64) -> Result<()> {
-        self.positions_coords(st, Coords::one(q))
-    }
-
     /// Positions at the input coordinates `q`, reached continuously from
     /// the last solved position (class III groups tracked in small
     /// steps), as [`crate::kinematics::positions::PositionSolver::solve_coords`].
@@ -177,12 +159,6 @@ impl<'a> Program<'a> {
         Ok(())
     }
 
-    /// Positions at `q` from the current tracked state, without stepping,
-    /// as [`crate::kinematics::positions::PositionSolver::solve_at_coords`].
-    pub fn positions_at(&self, st: &mut State, q: Coords) -> Result<()> {
-        self.place(st, &q)
-    }
-
     /// Velocities (and accelerations when `order` asks) of every solved
     /// link at the positions in `st`, as
     /// [`crate::kinematics::analytic::contour::solve`] gives them.
@@ -190,17 +166,11 @@ impl<'a> Program<'a> {
         self.rates_of(st, &drive.into(), order)
     }
 
-    /// Positions at `drive`'s coordinates (tracked from the last) and
-    /// their rates: one step of a sweep.
-    pub fn solve(&self, st: &mut State, drive: impl Into<Drives>, order: Order) -> Result<()> {
-        let drives: Drives = drive.into();
-        self.positions_coords(st, drives.coords())?;
-        self.rates_of(st, &drives, order)
-    }
-
-    /// [`Program::solve`] of a mechanism with one input: the same steps,
-    /// without gathering the inputs into [`Drives`] and [`Coords`].
+    /// Positions at `drive`'s coordinate (tracked from the last) and their
+    /// rates, one step of a sweep of a mechanism with one input, without
+    /// gathering the inputs into [`Drives`] and [`Coords`].
     #[inline]
+    #[cfg(feature = "internals")]
     pub fn solve_one(&self, st: &mut State, drive: Drive, order: Order) -> Result<()> {
         assert_eq!(self.m.scene.input_count(), 1, "a mechanism with one input");
         if self.triad_step.is_empty() {
@@ -287,7 +257,8 @@ fn group_steps(
 }
 
 impl Program<'_> {
-    /// [`Program::positions_at`], the coordinates by reference.
+    /// Positions at the coordinates `q` from the current tracked state,
+    /// without stepping.
     pub(super) fn place(&self, st: &mut State, q: &[f64]) -> Result<()> {
         let (m, s) = (self.m, self.s);
         let c = &mut st.config;

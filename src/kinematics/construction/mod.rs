@@ -39,8 +39,8 @@ mod triad;
 mod variant;
 
 pub use plan::{
-    Dir, Drafting, Drawing, Judged, Known, Measured, Mistake, Op, Plan, PlanKind, PlanLine, PlanPoint, Plans,
-    PointId, Quantity, Setup, Step, Variant, Why, non_rotating,
+    Dir, Drafting, Drawing, Judged, Measured, Mistake, Op, Plan, PlanKind, PlanLine, PlanPoint, Plans,
+    PointId, Setup, Variant, Why, non_rotating,
 };
 pub use scale::Field;
 
@@ -242,7 +242,9 @@ pub fn build_plans_numbers(
 /// figure by division or by arcs) than the drawing does and its extent
 /// falls a standard step apart (none of 5574 over the fixtures'
 /// sweeps, `tests/plans.rs`): then the plan is at the neighbouring scale,
-/// settled there, with the same values.
+/// settled there, with the same values. The build of
+/// `Analysis::sweep_kernel` (tests and benches only).
+#[cfg(feature = "internals")]
 pub struct Kernel {
     /// The last position's plans, their buffers for the next (empty
     /// until the first build).
@@ -257,6 +259,7 @@ pub struct Kernel {
     pub settled: usize,
 }
 
+#[cfg(feature = "internals")]
 impl Kernel {
     pub fn new() -> Kernel {
         Kernel {
@@ -311,6 +314,7 @@ impl Kernel {
 /// One plan of a sweep's position, numbers only, tried first at the
 /// scale it was last drawn at (`last`, with its band), which it then
 /// keeps: whether it settled there at once.
+#[cfg(feature = "internals")]
 fn sweep_plan(
     (st, c, drive, d): (&Setup, &Configuration, Drives, &Drafting),
     kind: (PlanKind, Option<&Plan>),
@@ -327,6 +331,7 @@ fn sweep_plan(
     Ok(settled)
 }
 
+#[cfg(feature = "internals")]
 impl Default for Kernel {
     fn default() -> Self {
         Kernel::new()

@@ -22,16 +22,33 @@ pub enum PointId {
     /// A named point of the mechanism (its index): b, s2.
     Named(usize),
     /// A named point as a point of another link: b_3 is B of link 3.
-    Coincident { point: usize, link: usize },
+    Coincident {
+        /// The named point.
+        point: usize,
+        /// The link it is taken as a point of.
+        link: usize,
+    },
     /// The end of a normal component ω²·l of a link: n_2.
-    Normal { link: usize },
+    Normal {
+        /// The link.
+        link: usize,
+    },
     /// The end of a Coriolis acceleration of a link's sliding: k_3.
-    Coriolis { link: usize },
+    Coriolis {
+        /// The sliding link.
+        link: usize,
+    },
     /// The end of the given relative velocity (relative acceleration) of
     /// a link in a driving pair, laid off first on a cylinder's side: r_3.
-    Relative { link: usize },
+    Relative {
+        /// The link.
+        link: usize,
+    },
     /// The special point of a class III group on its base link: s_4.
-    Special { base: usize },
+    Special {
+        /// The group's base link.
+        base: usize,
+    },
 }
 
 impl PointId {
@@ -53,8 +70,11 @@ impl PointId {
 /// subscript for drawings. Numbers-only builds leave the names empty.
 #[derive(Clone, Debug)]
 pub struct PlanPoint {
+    /// Which point it is.
     pub id: PointId,
+    /// Its name in result files (`b`, `n_2`); empty in numbers-only builds.
     pub key: String,
+    /// Its letters and subscript for drawings.
     pub label: (String, String),
     /// Millimetres from the pole.
     pub at: Vec2,
@@ -131,8 +151,11 @@ pub enum Dir {
 /// A line drawn on the plan: through a plan point, in a direction.
 #[derive(Clone, Debug)]
 pub struct PlanLine {
+    /// The plan point it is drawn through (an index into the plan's points).
     pub through: usize,
+    /// Its direction, a unit vector.
     pub unit: Vec2,
+    /// What the direction is, in words.
     pub dir: Dir,
     /// Offset error of the drawn line, mm.
     pub err: f64,
@@ -154,61 +177,103 @@ pub enum Why {
 #[derive(Clone, Debug)]
 pub enum Op {
     /// The pole (plan point 0) and the frame points that lie there.
-    Pole { fixed: Vec<String> },
+    Pole {
+        /// The names of the frame points at the pole.
+        fixed: Vec<String>,
+    },
     /// Lay off a known vector `what` (real value `value`) from `from`.
     LayOff {
+        /// The plan point laid off from.
         from: usize,
+        /// The plan point it ends at.
         to: usize,
+        /// The vector's name.
         what: String,
+        /// Its real magnitude.
         value: f64,
+        /// Its direction, in words.
         dir: Dir,
     },
     /// Two lines and their intersection.
     Intersect {
+        /// The two lines.
         lines: [PlanLine; 2],
+        /// The plan point at their intersection.
         out: usize,
+        /// The sine of the angle between them.
         sin_angle: f64,
     },
     /// The similarity theorem: a triangle on `a b` similar to the link's.
     Similar {
+        /// The first known plan point.
         a: usize,
+        /// The second known plan point.
         b: usize,
+        /// The plan point found.
         out: usize,
+        /// The three points' names, as on the link.
         figure: [String; 3],
+        /// The link's name.
         link: String,
     },
     /// A point of a link on the line of two others: divide the segment.
     Divide {
+        /// The first known plan point.
         a: usize,
+        /// The second known plan point.
         b: usize,
+        /// The plan point found.
         out: usize,
+        /// The three points' names, as on the link.
         figure: [String; 3],
+        /// The ratio the segment `a b` is divided in.
         ratio: f64,
     },
     /// A point coinciding with another (a translating link, or the pole).
-    Coincide { out: usize, with: usize, why: Why },
+    Coincide {
+        /// The plan point placed.
+        out: usize,
+        /// The plan point it coincides with.
+        with: usize,
+        /// Why.
+        why: Why,
+    },
     /// Measure a segment: `quantity` = length × μ; for a relative segment
     /// also the link's angular rate (name, signed value, link segment).
     Measure {
+        /// The segment's first plan point.
         from: usize,
+        /// The segment's second plan point.
         to: usize,
+        /// The quantity's name.
         quantity: String,
+        /// Its value, real units.
         value: f64,
+        /// The link length the rate is measured over, m, where it is one.
         length: Option<f64>,
+        /// The link's angular rate: its name, signed value and link segment.
         rate: Option<(String, f64, (String, String))>,
     },
     /// Links in a prismatic pair share ω (ε).
     Same {
+        /// The link whose rate is given.
         link: String,
+        /// The link it shares the rate with.
         from_link: String,
+        /// The rate's name.
         what: String,
     },
     /// The vector equations of a group, as the lecture writes them.
-    Equation { text: String },
+    Equation {
+        /// The equations' text.
+        text: String,
+    },
 }
 
+///A step of the construction: one drafting operation.
 #[derive(Clone, Debug)]
 pub struct Step {
+    /// What is drawn.
     pub op: Op,
 }
 
@@ -225,12 +290,17 @@ pub enum Quantity {
 /// A measured quantity with its drafting-error bound.
 #[derive(Clone, Debug)]
 pub struct Measured {
+    /// What it is.
     pub of: Quantity,
     /// Its name (`ω2`, `v_B`); empty in numbers-only builds.
     pub quantity: String,
+    /// The segment's first plan point.
     pub from: usize,
+    /// The segment's second plan point.
     pub to: usize,
+    /// The segment's length on the plan, mm.
     pub mm: f64,
+    /// The value, real units (length × μ).
     pub value: f64,
     /// First-order bound of the drafting error of `value` (real units).
     pub bound: f64,
@@ -240,19 +310,24 @@ pub struct Measured {
 /// on it, and the plan point (one flat list for the whole plan).
 #[derive(Clone, Copy, Debug)]
 pub struct Known {
+    /// The link.
     pub link: usize,
+    /// The point's local coordinates on the link.
     pub local: Vec2,
+    /// The plan point.
     pub point: usize,
 }
 
 /// A plan: the replayable list of steps and the named plan points.
 #[derive(Clone, Debug)]
 pub struct Plan {
+    /// Velocities or accelerations.
     pub kind: PlanKind,
     /// Scale coefficient: real value per mm.
     pub mu: f64,
     /// Pencil precision δ used for the error model, mm.
     pub delta: f64,
+    /// The plan points, the pole first.
     pub points: Vec<PlanPoint>,
     /// The steps in words (empty in numbers-only builds).
     pub steps: Vec<Step>,
@@ -268,6 +343,7 @@ pub struct Plan {
     /// one of a link that hardly turns; then the rate is known in
     /// magnitude only).
     pub rate_sense: Vec<bool>,
+    /// Every quantity measured on the plan.
     pub measured: Vec<Measured>,
     /// Smallest sine of an intersection angle (1 when none).
     pub worst_sin: f64,
@@ -280,7 +356,7 @@ pub struct Plan {
     /// With a deliberate mistake: how many decisions of its kind the
     /// construction took (whether made wrong or not).
     pub decisions: usize,
-    /// A replay of a student's drawing ([`super::replay`]): each point the
+    /// A replay of a student's drawing (the construction's `replay`): each point the
     /// student drew, judged at the step that draws it from the student's
     /// own earlier points.
     pub judged: Vec<Judged>,
@@ -320,6 +396,7 @@ pub struct Drawing {
 /// earlier step's error is carried into this one).
 #[derive(Clone, Debug)]
 pub struct Judged {
+    /// Which point it is.
     pub id: PointId,
     /// Which plan point of that id (a link may have several normal points).
     pub nth: usize,
@@ -336,7 +413,7 @@ pub struct Judged {
     /// The rounding of its coordinates as typed, mm: counted with the
     /// reading of the point in every tolerance of its step.
     pub rounding: f64,
-    /// Known only by its distance from the pole ([`Drawing::circles`]):
+    /// Known only by its distance from the pole (`Drawing::circles`):
     /// the student's point is where that circle is nearest the step's
     /// place, so the step judges its length, not its direction.
     pub on_circle: bool,
@@ -512,6 +589,7 @@ impl Plan {
         }
         (self.steps.len() != other.steps.len()).then_some(self.steps.len().min(other.steps.len()))
     }
+    /// The plan point named `key` (`b`, `n_2`), if the plan has it.
     pub fn point(&self, key: &str) -> Option<&PlanPoint> {
         self.points.iter().find(|p| p.key == key)
     }

@@ -98,6 +98,7 @@ fn standard_of_ratio(target: f64) -> f64 {
 /// standard value `mu`, narrowed by a hundred-billionth at both ends
 /// (so that rounding at the ends never matters): every ratio in
 /// `lo..=hi` gives `mu`. `None` when `mu` is not a standard value.
+#[cfg(any(test, feature = "internals"))]
 pub fn band(mu: f64) -> Option<(f64, f64)> {
     if !(mu.is_finite() && mu > 0.0) {
         return None;

@@ -8,7 +8,7 @@ use kurbo::Vec2;
 
 impl Plan {
     /// Whether this plan, drawn at its scale μ (a standard value whose
-    /// [`band`] is `band`), is the plan `field`'s [`Field::scale`] picks μ for from a
+    /// `scale::band` is `band`), is the plan `field`'s [`Field::scale`] picks μ for from a
     /// construction at unit scale. The two constructions differ by their
     /// rounding only, a few ulps amplified as the drafting error is (by
     /// 1/sin θ at every intersection: the plan's error radii over δ); so μ

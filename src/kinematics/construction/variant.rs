@@ -7,7 +7,7 @@ use crate::kinematics::analytic::Order as PlanKind;
 /// A typical student's mistake, built into the construction on purpose so
 /// that a hand-drawn plan can be diagnosed by the mistake that explains it.
 /// Each kind is a decision the construction takes at certain steps (every
-/// normal component, every similar figure …); [`Variant::at`] makes it at
+/// normal component, every similar figure …); `Variant::at` makes it at
 /// one of them only.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Mistake {
@@ -40,7 +40,7 @@ pub enum Mistake {
     /// The crank's velocity laid off against the sense of ω1.
     OmegaWrongSense,
     /// One vector laid off with a wrong length (an arithmetic or measuring
-    /// slip): its length times [`Variant::factor`].
+    /// slip): its length times `Variant::factor`.
     Slip,
     /// A point of a link placed by the figure of a neighbouring link (one
     /// sharing a joint with it): S₂ of the coupler built on the rocker's

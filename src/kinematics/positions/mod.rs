@@ -20,7 +20,7 @@ use crate::model::structure::{AssurGroup, Dyad, DyadKind, Step, Structure};
 pub(crate) use dyad::{rocking_guide, rrr_points, solve_group_dyad};
 pub(crate) use input::{CrankFrame, crank_frame};
 pub use input::{
-    place_across, place_input, sketch_input, sketch_slider_ref, slide_pose, slide_ref,
+    place_across, place_input, sketch_input, sketch_slider_ref, slide_pose,
 };
 use triad::triad_scale;
 pub use configuration::*;

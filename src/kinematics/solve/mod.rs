@@ -59,10 +59,12 @@ pub struct Analysis {
     /// where the build alone's first construction at unit scale takes
     /// other scale-dependent choices (docs/performance.md, issue 24).
     #[doc(hidden)]
+    #[cfg(feature = "internals")]
     pub sweep_kernel: bool,
     /// A deliberate error put into route (a)'s answer, for the tests that
     /// show the cross-check catches it; never set by mechplan itself.
     #[doc(hidden)]
+    #[cfg(feature = "internals")]
     pub corrupt: Option<Corruption>,
     /// Run the twins kept as references (tests and benches only): route
     /// (a) interpreted (`PositionSolver`, `contour::solve`) instead of
@@ -71,6 +73,7 @@ pub struct Analysis {
     /// (not numbers only), as before issue 24: the same results, the old
     /// cost.
     #[doc(hidden)]
+    #[cfg(feature = "internals")]
     pub reference: bool,
     /// Fixed scales and the pencil precision of the plans.
     pub drafting: Drafting,
@@ -105,6 +108,7 @@ impl std::ops::Deref for Analysis {
 /// (acceleration) of its frame's origin by `x` times the largest velocity
 /// (acceleration) of a reported point at that position.
 #[doc(hidden)]
+#[cfg(feature = "internals")]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Corruption {
     Position(f64),
@@ -175,8 +179,11 @@ impl Analysis {
             plans,
             keep_plans: true,
             printed_check: true,
+            #[cfg(feature = "internals")]
             sweep_kernel: false,
+            #[cfg(feature = "internals")]
             corrupt: None,
+            #[cfg(feature = "internals")]
             reference: false,
             drafting,
             scales_at: Default::default(),

@@ -29,7 +29,9 @@ mod known;
 mod plan;
 
 use known::Applied;
-pub use plan::{Drawn, DrawnLine, Force, ForcePlan, ForcePlans, ForceStep, Part};
+#[cfg(feature = "internals")]
+pub use plan::Drawn;
+pub use plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
 
 use super::loads::Load;
 use crate::error::{Error, Result};

@@ -222,14 +222,6 @@ impl AssurGroup {
         v.sort_unstable();
         v
     }
-    /// The links the group places, without allocation (in the group's
-    /// own order: [`Dyad::placed_links`], [`Triad::placed_links`]).
-    pub fn placed_links(&self) -> GroupLinks {
-        match self {
-            AssurGroup::Dyad(d) => d.placed_links(),
-            AssurGroup::Triad(t) => t.placed_links(),
-        }
-    }
     /// The two links of a cylinder in the group (in the dyad's slot, the
     /// other).
     pub fn cylinder(&self) -> Option<(usize, usize)> {
@@ -364,14 +356,6 @@ impl Structure {
                 index,
                 group: &self.groups[index],
             }),
-        })
-    }
-
-    /// The input whose pair is `pair`, driving a cylinder or a chained
-    /// slider (None for the others).
-    pub fn input_of_pair(&self, pair: usize) -> Option<usize> {
-        self.roles.iter().position(|r| {
-            matches!(r, InputRole::Chained { pair: p, .. } | InputRole::InGroup { pair: p, .. } if *p == pair)
         })
     }
 

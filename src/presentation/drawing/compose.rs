@@ -55,6 +55,7 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
 /// scene fixes that does not fit is replaced by the one that fills (the
 /// sheets say which). `mechplan draw` uses [`sheets_on`], which refuses
 /// instead.
+#[cfg(feature = "internals")]
 pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
     match sheets_on(an, solved, opt, &[opt.sheet]) {
         Ok((s, _)) => s,
@@ -67,7 +68,8 @@ pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet>
 enum Scale {
     /// The scene's μ_l (`want.scales.mu_l`) when it gives one.
     Scene,
-    /// Chosen to fill, whatever the scene says.
+    /// Chosen to fill, whatever the scene says ([`sheets`]).
+    #[cfg(feature = "internals")]
     Fill,
 }
 
@@ -77,6 +79,7 @@ enum Scale {
 /// none: a refusal with the reason (the drawing's size at that μ_l, the
 /// field's size, the smallest standard μ_l that fits the first of
 /// `sizes`, and the smallest sheet that would hold it).
+#[cfg(feature = "internals")]
 pub fn sheets_on(
     an: &Analysis,
     solved: &[Solved],
@@ -221,6 +224,7 @@ fn misfit(
 /// Compose the sheets on `opt.sheet`: the positions sheet, and per
 /// position the plan of the mechanism and the plans asked for; the course
 /// sheet when asked; the diagrams sheet when asked.
+#[cfg(feature = "internals")]
 fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
     compose_each(an, solved, opt, (how, &[]), &mut |s| {
@@ -302,6 +306,7 @@ fn compose_each(
 fn shared_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Shared> {
     let fixed_l = match how {
         Scale::Scene => an.mech.scene.want.scales.mu_l,
+        #[cfg(feature = "internals")]
         Scale::Fill => None,
     };
     let field = field_size(opt, 0.0);

@@ -6,7 +6,9 @@
 
 use super::{Format, Sheet};
 #[cfg(feature = "render")]
-pub use render::{pdf, pdf_book, png, tree};
+pub use render::{pdf, pdf_book, png};
+#[cfg(all(feature = "render", feature = "internals"))]
+pub use render::tree;
 #[cfg(not(feature = "render"))]
 pub use unrendered::{pdf, pdf_book, png};
 use std::path::PathBuf;

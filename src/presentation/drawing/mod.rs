@@ -40,12 +40,14 @@ pub mod sheet;
 pub mod table;
 mod wall;
 
-#[cfg(feature = "render")]
+#[cfg(all(feature = "render", feature = "internals"))]
 pub use export::tree;
 pub use export::{pdf, pdf_book, png};
 
 pub(crate) use captions::{position_text, scale_label, scale_text, words};
-pub use compose::{sheets, sheets_on, sheets_on_each};
+#[cfg(feature = "internals")]
+pub use compose::{sheets, sheets_on};
+pub use compose::sheets_on_each;
 pub use layout::plan_field;
 pub(crate) use layout::{Pending, field_size, fill, lower_scale, mechanism_extent, page_svg, reduction, main_title_block, title_block};
 pub use output::{DrawOptions, Format, Sheet, SheetSize};

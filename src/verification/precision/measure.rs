@@ -19,11 +19,13 @@ use std::time::Instant;
 #[derive(Default)]
 struct Errors {
     e: [Vec<f64>; 5],
+    /// Positions (× seeds) compared ([`Row::compared`], tests only).
+    #[cfg(feature = "internals")]
     n: usize,
 }
 
 impl Errors {
-    fn stats(mut self) -> ([Option<Stat>; 5], usize) {
+    fn stats(&mut self) -> [Option<Stat>; 5] {
         let mut out = [None; 5];
         for (k, v) in self.e.iter_mut().enumerate() {
             if v.is_empty() {
@@ -40,7 +42,7 @@ impl Errors {
                 median: med,
             });
         }
-        (out, self.n)
+        out
     }
 }
 
@@ -72,7 +74,10 @@ fn d_real(x: &Real, y: f64) -> f64 {
 
 impl Errors {
     fn add(&mut self, t: &Truth, g: &Got, size: f64) {
-        self.n += 1;
+        #[cfg(feature = "internals")]
+        {
+            self.n += 1;
+        }
         if let Some(p) = &g.places {
             for (r, p) in t.points.iter().zip(p) {
                 self.e[0].push(r.at.dist_f64(p.to_vec2()) / size);
@@ -123,6 +128,7 @@ fn time_per_call(min_time: f64, mut f: impl FnMut() -> Result<()>) -> Result<f64
 }
 
 /// Run every method on the scene (as [`run_watched`], watched by no one).
+#[cfg(feature = "internals")]
 pub fn run(an: &Analysis, set: &Settings) -> Result<Report> {
     run_watched(an, set, &crate::progress::Silent)
 }
@@ -187,7 +193,6 @@ pub fn run_watched(
         rows.push(bench.hand()?);
     }
     Ok(Report {
-        title: m.scene.title.clone(),
         positions: bench.qs.len(),
         rows,
     })
@@ -253,14 +258,14 @@ struct Bench<'a> {
 }
 
 /// A method's row: its errors' statistics and its time per position.
-fn row(method: &str, setting: String, time: f64, errs: Errors) -> Row {
-    let (err, compared) = errs.stats();
+fn row(method: &str, setting: String, time: f64, mut errs: Errors) -> Row {
     Row {
         method: method.into(),
         setting,
         time,
-        err,
-        compared,
+        err: errs.stats(),
+        #[cfg(feature = "internals")]
+        compared: errs.n,
     }
 }
 

@@ -28,6 +28,8 @@
 
 
 mod measure;
-pub use measure::{run, run_watched};
+#[cfg(feature = "internals")]
+pub use measure::run;
+pub use measure::run_watched;
 mod report;
 pub use report::*;

@@ -42,7 +42,9 @@ pub struct Stat {
     pub median: f64,
 }
 
-/// The kinds of output quantity, in the order of [`Row::err`].
+/// The kinds of output quantity, in the order of [`Row::err`] (named by
+/// the tests).
+#[cfg(feature = "internals")]
 pub const KINDS: [&str; 5] = ["place", "v", "a", "ω", "ε"];
 
 /// One method at one setting.
@@ -54,14 +56,16 @@ pub struct Row {
     pub setting: String,
     /// Run time per position, seconds.
     pub time: f64,
-    /// Per kind of [`KINDS`]; `None` where the method does not give it.
+    /// Per kind of quantity (place, v, a, ω, ε); `None` where the method does not give it.
     pub err: [Option<Stat>; 5],
-    /// Positions (× seeds) compared.
+    /// Positions (× seeds) compared (read by the tests).
+    #[cfg(feature = "internals")]
     pub compared: usize,
 }
 
 impl Row {
     /// The largest of the row's maximum errors.
+    #[cfg(feature = "internals")]
     pub fn worst(&self) -> f64 {
         self.err.iter().flatten().map(|s| s.max).fold(0.0, f64::max)
     }
@@ -78,7 +82,6 @@ impl Row {
 /// The whole report of one scene.
 #[derive(Clone, Debug)]
 pub struct Report {
-    pub title: String,
     pub positions: usize,
     pub rows: Vec<Row>,
 }

@@ -20,8 +20,9 @@
 
 
 mod model;
+#[cfg(feature = "internals")]
 pub use model::Exact;
 mod real;
-pub use real::{BITS, Real, V2};
+pub use real::Real;
 mod solution;
 pub use solution::*;

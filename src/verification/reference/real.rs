@@ -5,7 +5,7 @@
 use crate::kinematics::analytic::equations::{Number, Vector};
 use dashu_float::FBig;
 use dashu_float::round::mode::HalfEven;
-use kurbo::{Point, Vec2};
+use kurbo::Vec2;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Working precision, bits (≈ 57 decimal digits).
@@ -185,14 +185,13 @@ impl Number for Real {
 pub type V2 = Vector<Real>;
 
 impl Vector<Real> {
-    pub fn from_point(p: Point) -> V2 {
-        V2::new(Real::from_f64(p.x), Real::from_f64(p.y))
-    }
+#[cfg(feature = "internals")]
     pub fn to_vec2(&self) -> Vec2 {
         Vec2::new(self.x.to_f64(), self.y.to_f64())
     }
-    pub fn to_point(&self) -> Point {
-        Point::new(self.x.to_f64(), self.y.to_f64())
+#[cfg(feature = "internals")]
+    pub fn to_point(&self) -> kurbo::Point {
+        kurbo::Point::new(self.x.to_f64(), self.y.to_f64())
     }
     /// |a − b| as an f64, for an f64 `b`.
     pub fn dist_f64(&self, b: Vec2) -> f64 {

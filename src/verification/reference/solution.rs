@@ -1,13 +1,11 @@
 //! The extended-precision solution of a scene: route (b)'s equations solved at about 57 digits, position by position.
 
 use crate::error::{Error, Result};
-use crate::kinematics::analytic::Coords;
 use crate::kinematics::analytic::equations::{Constraint, Equations, Pose};
 use crate::kinematics::positions::{Configuration, PositionSolver, describe_input};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::InputSpec;
 use super::real::{Real, V2};
-use kurbo::{Point, Vec2};
 use super::model::{Exact, Numbers, local_of, prisms, shapes};
 
 /// The motion of one link: its pose, and the velocity and acceleration of
@@ -32,7 +30,8 @@ pub struct RefPoint {
 
 impl RefPoint {
     /// Rounded to f64: (place, velocity, acceleration).
-    pub fn to_f64(&self) -> (Point, Vec2, Vec2) {
+    #[cfg(feature = "internals")]
+    pub fn to_f64(&self) -> (kurbo::Point, kurbo::Vec2, kurbo::Vec2) {
         (self.at.to_point(), self.v.to_vec2(), self.a.to_vec2())
     }
 }
@@ -40,7 +39,6 @@ impl RefPoint {
 /// One solved position.
 #[derive(Clone, Debug)]
 pub struct RefState {
-    pub q: Real,
     /// Per link (scene order); `None` for links not solved.
     pub links: Vec<Option<RefMotion>>,
     /// Local coordinates of the links' points (parallel to the mechanism's).
@@ -137,27 +135,24 @@ impl<'a> Reference<'a> {
         })
     }
 
-    /// The (first) input's rates (ω1, ε1) or (v, a) as the reference takes
-    /// them.
-    pub fn rates(&self) -> (Real, Real) {
-        self.rates[0].clone()
-    }
-
     /// Solve at the input coordinate `q` (rad or m), an exact binary value.
+#[cfg(feature = "internals")]
     pub fn solve_f64(&mut self, q: f64) -> Result<RefState> {
         self.solve(&Real::from_f64(q))
     }
 
     /// Solve at the input coordinate `q` given in extended precision.
+#[cfg(feature = "internals")]
     pub fn solve(&mut self, q: &Real) -> Result<RefState> {
         self.solve_coords(std::slice::from_ref(q))
     }
 
     /// Solve at the input coordinates `q` (one per input) given in
     /// extended precision.
+#[cfg(feature = "internals")]
     pub fn solve_coords(&mut self, q: &[Real]) -> Result<RefState> {
         let qf: Vec<f64> = q.iter().map(|x| x.to_f64()).collect();
-        let c = self.ps.solve_coords(Coords::new(&qf))?;
+        let c = self.ps.solve_coords(crate::kinematics::analytic::Coords::new(&qf))?;
         self.refine_coords(q, &c)
     }
 
@@ -166,11 +161,6 @@ impl<'a> Reference<'a> {
     /// the sketch shows. Each then refines on its own ([`Reference::refine`]).
     pub fn starts(&mut self, qs: &[f64]) -> Result<Vec<Configuration>> {
         qs.iter().map(|&q| self.ps.solve(q)).collect()
-    }
-
-    /// [`Reference::starts`] of several inputs.
-    pub fn starts_coords(&mut self, qs: &[Coords]) -> Result<Vec<Configuration>> {
-        qs.iter().map(|&q| self.ps.solve_coords(q)).collect()
     }
 
     /// Newton's method in extended precision from the double precision
@@ -211,7 +201,6 @@ impl<'a> Reference<'a> {
         let g = self.eq.gamma(&poses, &xd, &acc);
         let xdd = gauss(j, g).ok_or_else(|| fail("singular Jacobian".into()))?;
         Ok(RefState {
-            q: q[0].clone(),
             links: self.motions(&x, &xd, &xdd),
             local: self.local.clone(),
             points_of: m.links.iter().map(|l| l.points.clone()).collect(),
@@ -333,6 +322,7 @@ pub fn gauss(mut a: Vec<Vec<Real>>, mut b: Vec<Real>) -> Option<Vec<Real>> {
 }
 
 /// The reference at one input coordinate (rad or m, an exact binary value).
+#[cfg(feature = "internals")]
 pub fn solve(an: &Analysis, q: f64) -> Result<RefState> {
     Reference::new(an)?.solve_f64(q)
 }

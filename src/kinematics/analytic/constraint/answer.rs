@@ -62,7 +62,6 @@ impl ConstraintSolver<'_> {
         let j = self.jacobian(&u.q);
         let lu = j.clone().lu();
         let conditioning = match conditioning {
-            Conditioning::None => f64::NAN,
             Conditioning::Exact => self.scaled_conditioning(&j),
             Conditioning::Decided(threshold) => self
                 .conditioning_at_least(&j, &lu)
@@ -149,6 +148,7 @@ impl ConstraintSolver<'_> {
     /// SVD, the lower bound [`Conditioning::Decided`] rests on, and the
     /// number of unknowns n (the bound is within a factor n). For tests.
     #[doc(hidden)]
+    #[cfg(feature = "internals")]
     pub fn conditioning_both(&self, u: &Unknowns) -> (f64, Option<f64>, usize) {
         let j = self.jacobian(&u.q);
         let lu = j.clone().lu();
@@ -163,8 +163,6 @@ pub type Factors = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
 /// What [`ConstraintSolver::corrected`] finds of the conditioning.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Conditioning {
-    /// Nothing (NaN).
-    None,
     /// σ_min/σ_max of the scaled Jacobian, by its SVD.
     Exact,
     /// A lower bound on it where that bound is at least the threshold

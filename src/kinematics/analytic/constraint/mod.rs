@@ -11,6 +11,6 @@
 
 mod answer;
 mod path;
-pub use answer::{Conditioning, Corrected, Factors, Unknowns};
+pub use answer::{Conditioning, Factors, Unknowns};
 mod solver;
 pub use solver::*;

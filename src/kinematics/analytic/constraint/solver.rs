@@ -337,14 +337,6 @@ impl<'a> ConstraintSolver<'a> {
         self.solve_positions_along(x, span)
     }
 
-    /// Positions at input coordinate `x` (a single input), reached from
-    /// the previous solve by turning the input through `span` (which way
-    /// round a rocking crank goes is the caller's: the way the mechanism
-    /// assembles).
-    pub fn solve_positions_by(&mut self, x: f64, span: f64) -> Result<()> {
-        self.solve_positions_along(Coords::one(x), Coords::one(span))
-    }
-
     /// Positions at input coordinates `x`, reached from the previous solve
     /// by moving the inputs through `span` (straight in the inputs).
     pub fn solve_positions_along(&mut self, x: Coords, span: Coords) -> Result<()> {
@@ -379,12 +371,6 @@ impl<'a> ConstraintSolver<'a> {
                 self.q[3 * i + 2] = a - TAU * (a / TAU).round();
             }
         }
-    }
-
-    /// The first input's coordinate of the last solved position (the
-    /// sketch's before the first).
-    pub fn last_input(&self) -> f64 {
-        self.last_inputs().first()
     }
 
     /// The input coordinates of the last solved position (the sketch's

@@ -24,16 +24,6 @@ fn cell_of(p: Point) -> (i64, i64) {
 }
 
 impl Grid {
-    /// Every item, in the order added.
-    pub fn iter(&self) -> impl Iterator<Item = &(Point, Point)> {
-        self.items.iter()
-    }
-    pub fn len(&self) -> usize {
-        self.items.len()
-    }
-    pub fn is_empty(&self) -> bool {
-        self.items.is_empty()
-    }
     pub fn push(&mut self, seg: (Point, Point)) {
         let k = self.items.len() as u32;
         self.items.push(seg);

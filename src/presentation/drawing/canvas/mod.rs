@@ -17,6 +17,5 @@ mod render;
 
 pub use label::{Label, runs_width};
 pub use placement::{lettering, with_lettering};
-pub use grid::Grid;
 pub use render::{fmt, xml};
 pub use primitives::*;

@@ -38,7 +38,6 @@ use crate::error::{Error, Result};
 use blocks::{Block, insert_symbol};
 use document::document;
 use entities::{Common, Entities, Target, W};
-pub use style::{FONT_FILE, STYLE, layer_style};
 use style::escape;
 use std::fmt::Write as _;
 
