@@ -759,8 +759,20 @@ pub fn photograph(t: &Trial, cam: &Camera, paper: Paper, rng: &mut StdRng) -> im
         );
         let d = [b[0] - a[0], b[1] - a[1]];
         let len2 = d[0] * d[0] + d[1] * d[1];
+        // Each row only where the stroke's band crosses it (a long
+        // slanting grid line's box is most of the photo).
+        let len = len2.sqrt();
+        let n = [-d[1] / len, d[0] / len];
+        let r = half + 2.0;
         for y in (lo[1].max(0.0) as usize)..(hi[1].min(h as f64) as usize) {
-            for x in (lo[0].max(0.0) as usize)..(hi[0].min(w as f64) as usize) {
+            let cy = y as f64 + 0.5 - a[1];
+            let (mut x0, mut x1) = (lo[0], hi[0]);
+            if n[0].abs() > 1e-9 {
+                let (p, q) = ((-r - n[1] * cy) / n[0], (r - n[1] * cy) / n[0]);
+                x0 = x0.max(a[0] + p.min(q) - 1.0);
+                x1 = x1.min(a[0] + p.max(q) + 1.0);
+            }
+            for x in (x0.max(0.0) as usize)..(x1.min(w as f64).max(0.0) as usize) {
                 let c = [x as f64 + 0.5, y as f64 + 0.5];
                 let s = (((c[0] - a[0]) * d[0] + (c[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0);
                 let dist = (c[0] - a[0] - s * d[0]).hypot(c[1] - a[1] - s * d[1]);

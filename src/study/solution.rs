@@ -248,6 +248,44 @@ impl PositionResult<'_> {
         })
     }
 
+    /// The plan of `kind` as the construction drew it at this position:
+    /// its scale μ ([`Plan::mu`], real value per mm), its points in mm
+    /// from the pole by name ([`Plan::points`]: [`PlanPoint::key`],
+    /// [`PlanPoint::at`] and the drafting error [`PlanPoint::err`]), its
+    /// lines and its steps; `None` where the scene asks for no such plan
+    /// (no accelerations asked, or a position whose plans could not be
+    /// built).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use mechplan::{PlanKind, Study};
+    /// use mechplan::study::plan::Plan;
+    ///
+    /// let study = Study::from_json(mechplan::DEFAULT_SCENE)?;
+    /// let solution = study.solve()?;
+    /// let position = solution.position(3)?;
+    /// let plan: &Plan = position.plan(PlanKind::Velocity).expect("velocities are asked");
+    /// let b = plan.points.iter().find(|p| p.key == "b").expect("b is drawn");
+    /// // b's length on the plan times μ_v is v_B.
+    /// let v_b = position.point("B")?.velocity().unwrap().hypot();
+    /// assert!((b.at.hypot() * plan.mu - v_b).abs() < 1e-9 * v_b);
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    ///
+    /// [`Plan::mu`]: crate::study::plan::Plan::mu
+    /// [`Plan::points`]: crate::study::plan::Plan::points
+    /// [`PlanPoint::key`]: crate::study::plan::PlanPoint::key
+    /// [`PlanPoint::at`]: crate::study::plan::PlanPoint::at
+    /// [`PlanPoint::err`]: crate::study::plan::PlanPoint::err
+    pub fn plan(&self, kind: crate::PlanKind) -> Option<&crate::study::plan::Plan> {
+        let plans = self.solved.plans.as_ref()?;
+        match kind {
+            crate::PlanKind::Velocity => Some(&plans.velocity),
+            crate::PlanKind::Acceleration => plans.acceleration.as_ref(),
+        }
+    }
+
     /// The balancing moment (N·m, of a crank) or force (N, of a slider or
     /// cylinder) of every input, by the links' equilibrium; `None` without
     /// the scene's `dynamics`.
