@@ -7,6 +7,7 @@
 mod inputs;
 mod rescaled;
 mod run;
+mod switches;
 
 pub use inputs::InputPositions;
 

@@ -5,6 +5,7 @@
 use super::prepared::Watcher;
 use super::{DrawRequest, SheetWriter, Study, Written, files};
 use crate::error::{Error, Result};
+use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, Sheet, SheetSize};
@@ -273,16 +274,14 @@ impl PositionResult<'_> {
     /// # Ok::<(), mechplan::Error>(())
     /// ```
     ///
-    /// [`Plan::mu`]: crate::study::plan::Plan::mu
-    /// [`Plan::points`]: crate::study::plan::Plan::points
     /// [`PlanPoint::key`]: crate::study::plan::PlanPoint::key
     /// [`PlanPoint::at`]: crate::study::plan::PlanPoint::at
     /// [`PlanPoint::err`]: crate::study::plan::PlanPoint::err
-    pub fn plan(&self, kind: crate::PlanKind) -> Option<&crate::study::plan::Plan> {
+    pub fn plan(&self, kind: PlanKind) -> Option<&Plan> {
         let plans = self.solved.plans.as_ref()?;
         match kind {
-            crate::PlanKind::Velocity => Some(&plans.velocity),
-            crate::PlanKind::Acceleration => plans.acceleration.as_ref(),
+            PlanKind::Velocity => Some(&plans.velocity),
+            PlanKind::Acceleration => plans.acceleration.as_ref(),
         }
     }
 
