@@ -90,7 +90,7 @@ pub use kinematics::construction::PlanKind;
 pub use kurbo::{Point, Vec2};
 pub use lang::Lang;
 pub use model::scene::Numbering;
-pub use presentation::drawing::{Format, Sheet, SheetSize};
+pub use presentation::drawing::{Format, Sheet, SheetKind, SheetSize};
 pub use progress::{Progress, Silent};
 pub use study::DEFAULT_SCENE;
 pub use study::files::{Spool, write_atomically};

@@ -6,7 +6,7 @@ use super::files::write_error;
 use crate::error::Result;
 use crate::presentation::drawing::dxf::dxf;
 use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
-use crate::presentation::drawing::{Format, Sheet, pdf, pdf_book, png};
+use crate::presentation::drawing::{Format, Sheet, SheetKind, pdf, pdf_book, png};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
@@ -323,12 +323,6 @@ fn looks_like_a_sheet(p: &Path) -> bool {
     if !matches!(ext, "svg" | "png" | "pdf" | "dxf") {
         return false;
     }
-    let numbered = |prefix: &str| {
-        stem.strip_prefix(prefix)
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-    };
-    matches!(stem, "positions" | "diagrams" | "course" | "sheets")
-        || ["mechanism_", "velocity_", "acceleration_"]
-            .iter()
-            .any(|p| numbered(p))
+    // A sheet by its kind, or the document of them all.
+    SheetKind::parse(stem).is_some() || stem == "sheets"
 }

@@ -8,6 +8,7 @@ use super::layout::{
     Pending, field_size, fill, fits, lower_scale, mechanism_bounds, mechanism_canvas,
     mechanism_extent, render,
 };
+use super::kind::SheetKind;
 use super::output::{DrawOptions, Sheet, SheetSize};
 use super::{course, course_forces, diagram, forces, lever, plan, positions, sheet, table};
 use super::{position_text, scale_text, words};
@@ -355,7 +356,7 @@ fn figures(
     let w = words(opt.lang);
     if let Some((mu, c)) = shared.positions.as_ref().filter(|_| chosen(None)) {
         emit(None, pending(
-            "positions".into(),
+            SheetKind::Positions.stem(),
             w.positions.clone(),
             scale_text("l", *mu, "m", opt.lang),
             ("mu_l", *mu),
@@ -368,7 +369,7 @@ fn figures(
             emit(Some(k), Pending {
                 centre_on: Some(centre_on),
                 ..pending(
-                    format!("mechanism_{}", position_number(an, k)),
+                    SheetKind::Mechanism(position_number(an, k)).stem(),
                     format!("{}, {pos}", w.mechanism),
                     scale_text("l", mu_l, "m", opt.lang),
                     ("mu_l", mu_l),
@@ -423,9 +424,9 @@ fn position_sheets(
     };
     for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
         let Some(plans) = &s.plans else { break };
-        let (name, title) = match kind {
-            PlanKind::Velocity => ("velocity", &w.velocities[..]),
-            PlanKind::Acceleration => ("acceleration", &w.accelerations[..]),
+        let (name, title, sheet) = match kind {
+            PlanKind::Velocity => ("velocity", &w.velocities[..], SheetKind::Velocity as fn(usize) -> SheetKind),
+            PlanKind::Acceleration => ("acceleration", &w.accelerations[..], SheetKind::Acceleration as fn(usize) -> SheetKind),
         };
         if !asked(an, solved, name)
             || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
@@ -440,7 +441,7 @@ fn position_sheets(
         out.push(Pending {
             table: t,
             ..pending(
-                format!("{name}_{}", position_number(an, k)),
+                sheet(position_number(an, k)).stem(),
                 format!("{title}, {pos}"),
                 scale_text(sym, plan.mu, unit, opt.lang),
                 (key, plan.mu),
@@ -459,7 +460,7 @@ fn position_sheets(
             scale: None,
             scales,
             ..pending(
-                format!("forces_{}", position_number(an, k)),
+                SheetKind::Forces(position_number(an, k)).stem(),
                 format!("{}, {pos}", forces::title(opt.lang)),
                 String::new(),
                 ("mu_l", 0.0),

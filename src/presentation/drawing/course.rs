@@ -200,7 +200,7 @@ fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<S
     page.title_block(&super::main_title_block(an, opt, &title, (1, sheets)));
     let scales = placed.iter().flat_map(|(f, _)| f.scales.clone()).collect();
     Ok(Sheet {
-        name: "course".into(),
+        name: super::SheetKind::Course.stem(),
         title,
         position: None,
         size,

@@ -244,7 +244,7 @@ fn forces_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<O
     let name = title(opt.lang);
     page.title_block(&super::title_block(an, opt, name, (2, 2)));
     Ok(Some(Sheet {
-        name: "course_forces".into(),
+        name: super::SheetKind::CourseForces.stem(),
         title: name.into(),
         position: Some(crate::presentation::position_number(an, k)),
         size,

@@ -21,7 +21,7 @@ const GAP: f64 = 14.0;
 /// The diagrams' sheet.
 pub fn sheet(an: &Analysis, d: &Diagrams, opt: &DrawOptions) -> Sheet {
     let c = figure(an, d, opt.lang);
-    page_svg("diagrams".into(), title(an, d, opt.lang), &c, None, opt)
+    page_svg(super::SheetKind::Diagrams.stem(), title(an, d, opt.lang), &c, None, opt)
 }
 
 /// The sheet's heading: what the diagrams are of, localised.

@@ -8,6 +8,7 @@
 
 use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
+use super::kind::SheetKind;
 use crate::kinematics::construction::scale::standard_scale;
 use crate::kinematics::solve::Analysis;
 use crate::presentation::position_number;
@@ -374,11 +375,19 @@ pub(super) fn pending(
         let t = table(an, &l, opt.lang);
         let (name, title) = if several {
             (
-                format!("lever_{}_{}", position_number(an, k), input + 1),
+                SheetKind::Lever {
+                    position: position_number(an, k),
+                    input: Some(input),
+                }
+                .stem(),
                 format!("{}, {}, {pos}", w.title, input_text(&l, opt.lang)),
             )
         } else {
-            (format!("lever_{}", position_number(an, k)), format!("{}, {pos}", w.title))
+            let sheet = SheetKind::Lever {
+                position: position_number(an, k),
+                input: None,
+            };
+            (sheet.stem(), format!("{}, {pos}", w.title))
         };
         out.push(super::Pending {
             sheet: None,
