@@ -742,3 +742,85 @@ fn dead_code_is_allowed_only_item_by_item_and_said_why() {
     );
     assert!(v[2].starts_with("module.rs:1: dead code allowed"), "{v:?}");
 }
+
+/// The names `src/lib.rs` re-exports at the root for the API (its `pub
+/// use` lines not behind `internals`, and its public modules).
+fn root_api(lib: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut internal = false;
+    let mut stmt = String::new();
+    for line in lib.lines() {
+        let t = line.trim();
+        if t.starts_with("#[cfg(feature = \"internals\")]") {
+            internal = true;
+            continue;
+        }
+        if t.starts_with("#[") || t.starts_with("//") {
+            continue;
+        }
+        if stmt.is_empty() && !(t.starts_with("pub use ") || t.starts_with("pub mod ")) {
+            internal = false;
+            continue;
+        }
+        stmt.push_str(t);
+        stmt.push(' ');
+        if !t.ends_with(';') {
+            continue;
+        }
+        let s = std::mem::take(&mut stmt);
+        if std::mem::take(&mut internal) {
+            continue;
+        }
+        if let Some(m) = s.strip_prefix("pub mod ") {
+            out.push(m.trim().trim_end_matches(';').to_string());
+            continue;
+        }
+        let body = s
+            .trim_start_matches("pub use ")
+            .trim()
+            .trim_end_matches(';');
+        let names = match body.find('{') {
+            Some(i) => body[i + 1..body.rfind('}').unwrap_or(body.len())].to_string(),
+            None => body.to_string(),
+        };
+        for n in names.split(',') {
+            let n = n.trim();
+            if n.is_empty() || n == "self" {
+                continue;
+            }
+            let last = n.rsplit("::").next().unwrap_or(n);
+            let last = last.rsplit(" as ").next().unwrap_or(last);
+            out.push(last.trim().to_string());
+        }
+    }
+    out
+}
+
+/// docs/architecture.md's list of the API, as rustdoc lists it, names
+/// every item the root re-exports and every public module.
+#[test]
+fn the_api_list_in_the_docs_names_every_root_item() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let lib = std::fs::read_to_string(root.join("src/lib.rs")).unwrap();
+    let doc = std::fs::read_to_string(root.join("docs/architecture.md")).unwrap();
+    let from = doc
+        .find("## The API, item by item")
+        .expect("docs/architecture.md: no section \"The API, item by item\"");
+    let list = &doc[from..];
+    let list = &list[..list[3..].find("\n## ").map_or(list.len(), |i| i + 3)];
+    let names = root_api(&lib);
+    assert!(names.len() > 30, "{names:?}");
+    let missing: Vec<&String> = names
+        .iter()
+        .filter(|n| {
+            let module = format!("`{n}::");
+            // rustdoc lists an item by the module that defines it.
+            let defined = format!("::{n}`");
+            !list.contains(&format!("`{n}`")) && !list.contains(&module) && !list.contains(&defined)
+        })
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "root items not in docs/architecture.md's API list: {missing:?}"
+    );
+}
