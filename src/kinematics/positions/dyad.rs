@@ -51,16 +51,16 @@ pub(crate) fn rocking_guide(m: &Mechanism, d: &Dyad) -> RockingGuide {
 
 /// The error of dyad `gi` that failed at `q` for the reason `why` (a
 /// singular position when `why` is marked so, else a failure to assemble).
-fn dyad_error(m: &Mechanism, s: &Structure, gi: usize, q: &[f64], why: String) -> Error {
+fn dyad_error(m: &Mechanism, s: &Structure, gi: usize, q: &[f64], why: Failure) -> Error {
     let g = &s.groups[gi];
     let kind = match g {
         AssurGroup::Dyad(d) => d.kind.name(),
         AssurGroup::Triad(_) => "class III",
     };
     let group = format!("group {} ({kind})", g.label(m));
-    match why.strip_prefix(SINGULAR) {
-        Some(why) => Error::singular(describe_input(m, q), format!("{group}: {why}")),
-        None => Error::assembly(group, describe_input(m, q), why),
+    match why {
+        Failure::Singular(why) => Error::singular(describe_input(m, q), format!("{group}: {why}")),
+        Failure::Assembly(why) => Error::assembly(group, describe_input(m, q), why),
     }
 }
 
@@ -68,9 +68,19 @@ fn known_point(m: &Mechanism, c: &Configuration, conn: &Conn, known_side: usize)
     c.point(m, known_side, point_of(conn.joint))
 }
 
-/// The mark of a dyad's failure that is a singular position, not a
-/// failure to assemble.
-const SINGULAR: &str = "singular: ";
+/// Why a dyad could not be placed, in words: it does not close there,
+/// or the position is singular (it closes, but in no unique way).
+enum Failure {
+    Assembly(String),
+    Singular(String),
+}
+
+/// A failure said in words is a failure to assemble.
+impl From<String> for Failure {
+    fn from(why: String) -> Failure {
+        Failure::Assembly(why)
+    }
+}
 
 /// Place dyad `gi` of the structure at the input coordinates `q` on its
 /// branch `sign` (a cylinder in it at its input's slide); a failure is
@@ -99,15 +109,15 @@ pub(crate) fn rrr_points(d: &Dyad) -> (usize, usize, usize) {
 }
 
 /// Place dyad `d` on its branch `sign`, a cylinder in it (`cyl`) at its
-/// slide; the reason of a failure (marked [`SINGULAR`] when the position
-/// is singular, not impossible).
+/// slide; the reason of a failure ([`Failure::Singular`] when the
+/// position is singular, not impossible).
 fn solve_dyad(
     m: &Mechanism,
     d: &Dyad,
     cyl: Option<(Cylinder, f64)>,
     sign: f64,
     c: &mut Configuration,
-) -> std::result::Result<(), String> {
+) -> std::result::Result<(), Failure> {
     // A cylinder is one link of variable length: the other of its two
     // placed in the frame of the one in the dyad's slot, at the slide.
     let rel = cyl.map(|(cy, x)| {
@@ -170,7 +180,7 @@ impl Placing<'_> {
     }
 
     /// RRR: the circles about B and D meet at C.
-    fn rrr(&self, sign: f64, c: &mut Configuration) -> std::result::Result<(), String> {
+    fn rrr(&self, sign: f64, c: &mut Configuration) -> std::result::Result<(), Failure> {
         let (m, d) = (self.m, self.d);
         let [l1, l2] = d.links;
         let (pb, pc, pd) = rrr_points(d);
@@ -203,7 +213,7 @@ impl Placing<'_> {
     }
 
     /// RRP: the circle about B meets the guide line of link 2.
-    fn rrp(&self, sign: f64, c: &mut Configuration) -> std::result::Result<(), String> {
+    fn rrp(&self, sign: f64, c: &mut Configuration) -> std::result::Result<(), Failure> {
         let (m, d) = (self.m, self.d);
         let [l1, l2] = d.links;
         let (pb, pc) = (point_of(d.ext1.joint), point_of(d.mid.joint));
@@ -239,7 +249,7 @@ fn rpr(
     d: &Dyad,
     sign: f64,
     c: &mut Configuration,
-) -> std::result::Result<(), String> {
+) -> std::result::Result<(), Failure> {
     let rg = rocking_guide(m, d);
     let known_of = |p: usize| {
         if p == point_of(d.ext1.joint) {
@@ -257,11 +267,11 @@ fn rpr(
     if dist <= tol && rg.h.abs() <= tol {
         // The pin on the guide's pivot: any direction through it is
         // a guide line; the position is singular, not impossible.
-        return Err(format!(
-            "{SINGULAR}{} is on {} (the guide through it), so the guide's direction is not determined",
+        return Err(Failure::Singular(format!(
+            "{} is on {} (the guide through it), so the guide's direction is not determined",
             m.point_name(rg.pin_slider),
             m.point_name(rg.pin_guide)
-        ));
+        )));
     }
     if !s.is_finite() || rg.h.abs() - dist > tol || dist <= tol {
         return Err(format!(
@@ -270,7 +280,8 @@ fn rpr(
             m.point_name(rg.pin_guide),
             m.point_name(rg.pin_slider),
             quantity(dist, "m")
-        ));
+        )
+        .into());
     }
     let s = s.clamp(-1.0, 1.0);
     let gamma_minus_beta = s.atan2(sign * (1.0 - s * s).max(0.0).sqrt());
@@ -285,7 +296,7 @@ fn rpr(
 }
 
 /// PRP: the two guide lines through C meet.
-fn prp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<(), String> {
+fn prp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<(), Failure> {
     let [l1, l2] = d.links;
     let min_sin = ACCURACY.min_line_sine;
     let pc = point_of(d.mid.joint);
@@ -296,7 +307,9 @@ fn prp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<()
     let a = slide_line(m, j1, k1, &c.pose(k1), th1, m.local(l1, pc));
     let b = slide_line(m, j2, k2, &c.pose(k2), th2, m.local(l2, pc));
     let LineCut::Point { at, .. } = intersect_lines(&a, &b, min_sin) else {
-        return Err("the two guides are parallel: the joint is not determined".into());
+        return Err(Failure::Assembly(
+            "the two guides are parallel: the joint is not determined".into(),
+        ));
     };
     c.poses[l1] = Some(Pose::through(at, m.local(l1, pc), th1));
     c.poses[l2] = Some(Pose::through(at, m.local(l2, pc), th2));
@@ -305,7 +318,7 @@ fn prp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<()
 
 /// RPP: link 1 through B at the angle of the guides, the slide where its
 /// guide line meets link 2's.
-fn rpp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<(), String> {
+fn rpp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<(), Failure> {
     let [l1, l2] = d.links;
     let min_sin = ACCURACY.min_line_sine;
     let pb = point_of(d.ext1.joint);
@@ -319,7 +332,9 @@ fn rpp(m: &Mechanism, d: &Dyad, c: &mut Configuration) -> std::result::Result<()
     let a = slide_line(m, j2, k2, &c.pose(k2), th2, Vec2::ZERO);
     let bl = slide_line(m, jm, l1, &p1, th2, Vec2::ZERO);
     let LineCut::Point { at, .. } = intersect_lines(&a, &bl, min_sin) else {
-        return Err("the two guides are parallel: the slide is not determined".into());
+        return Err(Failure::Assembly(
+            "the two guides are parallel: the slide is not determined".into(),
+        ));
     };
     c.poses[l2] = Some(Pose::new(at, th2));
     Ok(())
