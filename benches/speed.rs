@@ -20,9 +20,9 @@
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
-//! - `positions_sheet/six_link_{200,2000}`: `drawing::sheets` of the
-//!   positions sheet alone (the mechanism in every position, trajectories,
-//!   numbering), positions solved beforehand;
+//! - `positions_sheet/six_link_{200,2000}`: `studies::trajectories` +
+//!   `drawing::sheets` of the positions sheet alone (the mechanism in every
+//!   position, trajectories, numbering), positions solved beforehand;
 //! - `sweep/six_link_3600/{1,2}_threads`: `Analysis::run` over 3600
 //!   positions of the six-link fixture on a rayon pool of one thread and of
 //!   two (the per-position work runs in parallel, `mechplan::progress`);
@@ -59,6 +59,7 @@ use mechplan::compiled::Program;
 use mechplan::construction::{Kernel, Setup, build_plans, build_plans_numbers};
 use mechplan::drawing::{self, DrawOptions};
 use mechplan::positions::{Configuration, PositionSolver};
+use mechplan::studies::trajectories::trajectories;
 use mechplan::{Analysis, Scene};
 use std::hint::black_box;
 
@@ -270,7 +271,9 @@ fn draw(cr: &mut Criterion) {
     g.bench_function("six_link_12", |b| {
         b.iter(|| {
             let solved = an.run().unwrap();
-            black_box(drawing::sheets(&an, &solved, &opt))
+            let t =
+                drawing::draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
+            black_box(drawing::sheets(&an, &solved, t.as_ref(), &opt))
         })
     });
     g.finish();
@@ -289,10 +292,14 @@ fn positions_sheet(cr: &mut Criterion) {
         let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
         let solved = an.run().unwrap();
         let opt = DrawOptions::default();
-        assert_eq!(drawing::sheets(&an, &solved, &opt).len(), 1);
-        g.bench_function(format!("six_link_{n}"), |b| {
-            b.iter(|| black_box(drawing::sheets(&an, &solved, &opt)))
-        });
+        // The trajectories solved (studies::trajectories) and drawn, as
+        // `mechplan draw` does.
+        let sheets = || {
+            let t = trajectories(&an, &solved);
+            drawing::sheets(&an, &solved, Some(&t), &opt)
+        };
+        assert_eq!(sheets().len(), 1);
+        g.bench_function(format!("six_link_{n}"), |b| b.iter(|| black_box(sheets())));
     }
     g.finish();
 }

@@ -824,3 +824,149 @@ fn the_api_list_in_the_docs_names_every_root_item() {
         "root items not in docs/architecture.md's API list: {missing:?}"
     );
 }
+
+/// What presentation may name from `kinematics::positions`: a solved
+/// position's configuration, read, and the inputs described in words.
+/// Every other item there solves (the position solver, the groups'
+/// closed forms, the branches, the continuation).
+const POSITIONS_READ: &[&str] = &["Configuration", "describe_input", "describe_input_with"];
+
+/// Calls that solve: the position solver's methods, the output's extreme
+/// positions found by root finding (the working stroke), the pipeline's
+/// runs, the kinematic diagrams' sweep of positions.
+const SOLVING_CALLS: &[&str] = &[
+    ".solve(",
+    ".solve_at(",
+    ".solve_coords(",
+    ".solve_at_coords(",
+    "working_stroke(",
+    "working_stroke_start(",
+    "stroke_start(",
+    "in_line_extremes(",
+    ".run(",
+    ".run_each",
+    ".run_rescaled(",
+    "Diagrams::build(",
+    "Diagrams::build_point(",
+];
+
+/// Solving presentation still does, to be moved out (issue 39): the
+/// course sheet's and the force sheet's analysed position chosen from the
+/// working stroke's crank angle, the diagrams sheets' sweep. Each is a
+/// file and the call it makes; any other is a failure, and so is one of
+/// these gone (the list is kept true).
+const KNOWN_SOLVING: &[(&str, &str)] = &[
+    ("presentation/drawing/chosen.rs", "working_stroke("),
+    ("presentation/drawing/diagram.rs", "Diagrams::build("),
+    ("presentation/drawing/course.rs", "Diagrams::build("),
+];
+
+/// Where presentation solves (docs/architecture.md: it reads a finished
+/// solution and never solves again): the position solver named, an item
+/// of `kinematics::positions` that solves, a solving call
+/// ([`SOLVING_CALLS`]) beyond the [`KNOWN_SOLVING`] ones, and a known one
+/// no longer there.
+fn presentation_solving(sources: &BTreeMap<String, String>) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut known_seen = BTreeSet::new();
+    for (file, text) in sources
+        .iter()
+        .filter(|(f, _)| f.starts_with("presentation/"))
+    {
+        let c = without_unit_tests(&code(text));
+        if has_word(&c, "PositionSolver") {
+            found.push(format!("{file}: uses PositionSolver"));
+        }
+        for p in named_paths(&c, &module_of(file)) {
+            if p.len() >= 2 && p[0] == "kinematics" && p[1] == "positions" {
+                let item = p.get(2).map_or("", String::as_str);
+                if !POSITIONS_READ.contains(&item) {
+                    found.push(format!(
+                        "{file}: uses crate::{} (solving: presentation reads {POSITIONS_READ:?} only)",
+                        p.join("::")
+                    ));
+                }
+            }
+        }
+        for call in SOLVING_CALLS {
+            if !c.contains(call) {
+                continue;
+            }
+            if KNOWN_SOLVING.contains(&(file.as_str(), *call)) {
+                known_seen.insert((file.as_str(), *call));
+            } else {
+                found.push(format!("{file}: solves ({call}…)"));
+            }
+        }
+    }
+    for k in KNOWN_SOLVING {
+        if !known_seen.contains(k) {
+            found.push(format!(
+                "{}: no longer calls {}: strike it from KNOWN_SOLVING",
+                k.0, k.1
+            ));
+        }
+    }
+    found
+}
+
+/// Presentation never solves: the positions' trajectories and the
+/// output's extreme positions are data of the solution
+/// (`studies::trajectories`, computed by the study layer), not solved
+/// where they are drawn.
+#[test]
+fn presentation_never_solves() {
+    let found = presentation_solving(&sources());
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}
+
+#[test]
+fn solving_in_presentation_is_caught() {
+    let file = "presentation/drawing/positions.rs";
+    // The position solver, imported and called.
+    let mut house = sources();
+    house.get_mut(file).unwrap().push_str(
+        "\nuse crate::kinematics::positions::{Configuration, PositionSolver};\nfn f(an: &Analysis) { let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone()).unwrap(); let _ = ps.solve(0.0); }\n",
+    );
+    let v = presentation_solving(&house);
+    for bad in [
+        "uses PositionSolver",
+        "crate::kinematics::positions::PositionSolver",
+        "(.solve(…)",
+    ] {
+        assert!(
+            v.iter().any(|p| p.contains(file) && p.contains(bad)),
+            "{bad}: {v:?}"
+        );
+    }
+    assert!(!v.iter().any(|p| p.contains("::Configuration")), "{v:?}");
+    // A solving item of kinematics::positions under another name, and
+    // the module whole.
+    let mut house = sources();
+    house
+        .get_mut(file)
+        .unwrap()
+        .push_str("\nuse crate::kinematics::positions::solve_group_dyad as dyad;\nuse crate::kinematics::positions;\n");
+    let v = presentation_solving(&house);
+    assert!(
+        v.iter().any(|p| p.contains("positions::solve_group_dyad")),
+        "{v:?}"
+    );
+    assert!(
+        v.iter()
+            .any(|p| p.contains("uses crate::kinematics::positions (")),
+        "{v:?}"
+    );
+    // The extreme positions' root finding, where it is not known.
+    let mut house = sources();
+    house
+        .get_mut(file)
+        .unwrap()
+        .push_str("\nfn g(an: &Analysis) { let _ = an.working_stroke(0); }\n");
+    let v = presentation_solving(&house);
+    assert!(
+        v.iter()
+            .any(|p| p.contains(file) && p.contains("working_stroke(")),
+        "{v:?}"
+    );
+}

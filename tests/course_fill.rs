@@ -6,7 +6,10 @@
 //! (uk), the compressor (ru) and the boom use at least 65 % each.
 //! `UPDATE_GOLDEN=1` writes the table into docs/gallery/README.md.
 
-use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
+mod common;
+
+use common::sheets;
+use mechplan::drawing::{DrawOptions, Sheet, sheet, tree};
 use mechplan::words::construction::Lang;
 
 /// The share of the sheet's field (less its title block) inside the box

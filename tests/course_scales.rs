@@ -77,23 +77,35 @@ fn solving_with_the_course_sheet_listed_composes_no_sheet() {
     std::fs::write(&with, scene("six_link_fig2_10.json", Some(360), true)).unwrap();
     std::fs::write(&without, scene("six_link_fig2_10.json", Some(360), false)).unwrap();
     // Interleaved, the best of several runs each: the machine's load
-    // weighs on both alike.
-    let (mut a, mut b) = (Duration::MAX, Duration::MAX);
-    let (mut csv_a, mut csv_b) = (Vec::new(), Vec::new());
-    for _ in 0..3 {
-        let (t, o) = best_csv(&with, 3);
-        (a, csv_a) = (a.min(t), o);
-        let (t, o) = best_csv(&without, 3);
-        (b, csv_b) = (b.min(t), o);
+    // weighs on both alike. A busy machine (other tests' processes) can
+    // still tilt one round; up to four rounds are measured, and one
+    // within the bound passes — the fault this guards against (composing
+    // the sheet at reading) costs 28 times, in every round.
+    let (mut rounds, mut within) = (Vec::new(), false);
+    for _ in 0..4 {
+        let (mut a, mut b) = (Duration::MAX, Duration::MAX);
+        let (mut csv_a, mut csv_b) = (Vec::new(), Vec::new());
+        for _ in 0..3 {
+            let (t, o) = best_csv(&with, 3);
+            (a, csv_a) = (a.min(t), o);
+            let (t, o) = best_csv(&without, 3);
+            (b, csv_b) = (b.min(t), o);
+        }
+        assert_eq!(csv_a, csv_b, "the CSV does not depend on the course sheet");
+        let ratio = a.as_secs_f64() / b.as_secs_f64();
+        eprintln!(
+            "solve --format csv, 360 positions: with course {a:?}, without {b:?}, ratio {ratio:.2}"
+        );
+        rounds.push(format!("{a:?} against {b:?} ({ratio:.2} times)"));
+        if ratio <= 1.5 {
+            within = true;
+            break;
+        }
     }
-    assert_eq!(csv_a, csv_b, "the CSV does not depend on the course sheet");
-    let ratio = a.as_secs_f64() / b.as_secs_f64();
-    eprintln!(
-        "solve --format csv, 360 positions: with course {a:?}, without {b:?}, ratio {ratio:.2}"
-    );
     assert!(
-        ratio <= 1.5,
-        "solve --format csv with \"course\" listed takes {a:?}, without {b:?}: {ratio:.2} times"
+        within,
+        "solve --format csv with \"course\" listed, against without, in every round: {}",
+        rounds.join("; ")
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -5,8 +5,9 @@
 //! it, and the plans on it built at the scales their captions state.
 
 mod common;
+use common::sheets;
 use common::*;
-use mechplan::drawing::{DrawOptions, SheetSize, sheets, tree};
+use mechplan::drawing::{DrawOptions, SheetSize, tree};
 
 const FIGS: [&str; 3] = ["six_link_fig2_10", "shaper_fig2_11", "compressor_fig2_12"];
 
@@ -23,7 +24,8 @@ fn course_in(name: &str, size: SheetSize, lang: mechplan::Lang) -> mechplan::dra
         lang,
         ..DrawOptions::default()
     };
-    let (sh, _) = mechplan::drawing::sheets_on(&an, &s, &opt, &[size]).unwrap();
+    let t = mechplan::studies::trajectories::trajectories(&an, &s);
+    let (sh, _) = mechplan::drawing::sheets_on(&an, &s, Some(&t), &opt, &[size]).unwrap();
     sh.into_iter()
         .find(|s| s.name == "course")
         .expect("a course sheet")
@@ -363,7 +365,9 @@ fn force_course_sheets_pass_the_layout_checks() {
                 course: true,
                 ..DrawOptions::default()
             };
-            let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &opt, &[size]).unwrap();
+            let t = mechplan::studies::trajectories::trajectories(&an, &solved);
+            let (sh, _) =
+                mechplan::drawing::sheets_on(&an, &solved, Some(&t), &opt, &[size]).unwrap();
             let s = sh
                 .iter()
                 .find(|s| s.name == "course_forces")
@@ -414,7 +418,9 @@ fn force_course_sheets_pass_the_layout_checks() {
         course: true,
         ..DrawOptions::default()
     };
-    let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &opt, &[SheetSize::A1]).unwrap();
+    let t = mechplan::studies::trajectories::trajectories(&an, &solved);
+    let (sh, _) =
+        mechplan::drawing::sheets_on(&an, &solved, Some(&t), &opt, &[SheetSize::A1]).unwrap();
     assert!(sh.iter().all(|s| s.name != "course_forces"));
 }
 

@@ -5,8 +5,9 @@
 //! Regenerate the golden files with UPDATE_GOLDEN=1.
 
 mod common;
+use common::sheets;
 use common::*;
-use mechplan::drawing::{DrawOptions, Sheet, sheets};
+use mechplan::drawing::{DrawOptions, Sheet};
 use serde_json::{Value, json};
 
 fn fixture_sheets(name: &str) -> (mechplan::Analysis, Vec<mechplan::Solved>, Vec<Sheet>) {

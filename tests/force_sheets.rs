@@ -6,7 +6,10 @@
 //! `ForcePlan::points` placed as the sheet places them (its start point's
 //! dot, μ_F as the caption prints it) to 0.01 mm.
 
-use mechplan::drawing::{DrawOptions, Sheet, sheet, sheets, tree};
+mod common;
+
+use common::sheets;
+use mechplan::drawing::{DrawOptions, Sheet, sheet, tree};
 use mechplan::kinetostatics::force_plan::{Force, ForceStep};
 use mechplan::words::construction::Lang;
 use mechplan::words::forces::force_name;

@@ -3,8 +3,9 @@
 //! the fuzzer finds becomes a named test here, inline, asserting a clean
 //! error or success; the limits each get a test with its message.
 
-use mechplan::drawing::{DrawOptions, sheets};
+use mechplan::drawing::{DrawOptions, draws_trajectories, sheets};
 use mechplan::scene::{MAX_FILE_BYTES, MAX_LINKS, MAX_MAGNITUDE, MAX_POINTS, MAX_POSITIONS};
+use mechplan::studies::trajectories::trajectories;
 use mechplan::{Analysis, Error, Scene};
 use std::fmt::Write as _;
 
@@ -14,7 +15,9 @@ fn pipeline(text: &str) -> Result<usize, Error> {
     let scene = Scene::from_json(text)?;
     let an = Analysis::new(scene)?;
     let solved = an.run()?;
-    Ok(sheets(&an, &solved, &DrawOptions::default()).len())
+    let opt = DrawOptions::default();
+    let t = draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
+    Ok(sheets(&an, &solved, t.as_ref(), &opt).len())
 }
 
 /// The error message of a scene the reader must reject.

@@ -3,6 +3,8 @@
 //! kernel's velocity plan, equals the links' equilibrium's; a wrong sign
 //! of one inertia force unbalances it; the worked example's printed digits.
 
+mod common;
+
 use mechplan::construction::Naming;
 use mechplan::kinetostatics::lever::{self, Lever, Part};
 use mechplan::kinetostatics::{Load, Origin, loads};
@@ -255,7 +257,8 @@ fn result_file_carries_the_lever() {
 /// of the worked example.
 #[test]
 fn lever_sheets() {
-    use mechplan::drawing::{DrawOptions, sheets};
+    use common::sheets;
+    use mechplan::drawing::DrawOptions;
     let names = |an: &Analysis| -> Vec<String> {
         let solved = solved(an);
         sheets(an, &solved, &DrawOptions::default())
@@ -310,7 +313,7 @@ fn lever_without_dynamics_is_refused() {
     let an = Analysis::new(Scene::from_json(&with.to_string()).unwrap()).unwrap();
     let solved = solved(&an);
     let names: Vec<String> =
-        mechplan::drawing::sheets(&an, &solved, &mechplan::drawing::DrawOptions::default())
+        common::sheets(&an, &solved, &mechplan::drawing::DrawOptions::default())
             .into_iter()
             .map(|s| s.name)
             .collect();

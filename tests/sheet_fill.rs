@@ -6,7 +6,10 @@
 //! chosen for the field of the sheet asked for. `UPDATE_GOLDEN=1` writes the table into
 //! docs/gallery/README.md.
 
-use mechplan::drawing::{DrawOptions, SheetSize, sheet, sheets, tree};
+mod common;
+
+use common::sheets;
+use mechplan::drawing::{DrawOptions, SheetSize, sheet, tree};
 
 /// Rendering resolution: 1 px = 0.85 mm, finer than a label's height.
 const DPI: f32 = 30.0;

@@ -5,8 +5,11 @@
 //! point) or placed closer than a block's size by the mechanism itself; an
 //! arrowhead never longer than 0.4 of its vector (no blobs).
 
+mod common;
+
+use common::sheets;
 use kurbo::{Point, Vec2};
-use mechplan::drawing::{DrawOptions, sheets};
+use mechplan::drawing::DrawOptions;
 
 /// What the checks read from one sheet (page mm).
 #[derive(Default)]

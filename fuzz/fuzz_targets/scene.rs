@@ -1,9 +1,11 @@
 //! Arbitrary bytes as a scene: `Scene::from_json` → `Analysis::new` →
-//! `run` → `drawing::sheets` must never panic (errors are fine).
+//! `run` → `studies::trajectories` → `drawing::sheets` must never panic
+//! (errors are fine).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use mechplan::drawing::{DrawOptions, sheets};
+use mechplan::drawing::{DrawOptions, draws_trajectories, sheets};
+use mechplan::studies::trajectories::trajectories;
 use mechplan::scene::PositionsSpec;
 use mechplan::{Analysis, Scene};
 
@@ -32,5 +34,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(solved) = an.run() else {
         return;
     };
-    let _ = sheets(&an, &solved, &DrawOptions::default());
+    let opt = DrawOptions::default();
+    let t = draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
+    let _ = sheets(&an, &solved, t.as_ref(), &opt);
 });

@@ -1,9 +1,12 @@
 //! Studies of a solved mechanism, numbers only: instant centres
 //! ([`centres`]), motion-law invariants ([`invariants`]), kinematic
 //! diagrams by the chord method ([`diagrams`]), link positions in the
-//! Frenet trihedron ([`frenet`]).
+//! Frenet trihedron ([`frenet`]), the points' trajectories and the
+//! output's extreme positions the drawings of the positions show
+//! ([`trajectories`]).
 
 pub mod centres;
 pub mod diagrams;
 pub mod frenet;
 pub mod invariants;
+pub mod trajectories;

@@ -11,6 +11,7 @@ use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
 use crate::progress::{Progress, Silent};
+use crate::studies::trajectories::trajectories;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -241,7 +242,7 @@ impl Study {
         let (solved, scales) = an.run_rescaled(
             self.watcher.get(),
             &|n| drawing::course::shown(&an, n),
-            |all| drawing::course::plan_scales(&an, all, &opt),
+            |all| drawing::course::plan_scales(&an, all, &trajectories(&an, all), &opt),
         )?;
         an.scales_at = scales;
         let study = Study {
@@ -274,7 +275,8 @@ impl Study {
                 first.push(s);
                 Ok(())
             })?;
-            an.scales_at = Arc::new(drawing::course::plan_scales(&an, &first, &opt)?);
+            let t = trajectories(&an, &first);
+            an.scales_at = Arc::new(drawing::course::plan_scales(&an, &first, &t, &opt)?);
         }
         let same = an.drafting.field == self.analysis.drafting.field
             && an.scales_at == self.analysis.scales_at;

@@ -10,6 +10,7 @@ use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, Sheet, SheetSize};
 use crate::presentation::report;
+use crate::studies::trajectories::trajectories;
 use kurbo::{Point, Vec2};
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -136,7 +137,11 @@ impl<'a> Solution<'a> {
             None => SheetSize::ALL.to_vec(),
         };
         let opt = req.options(self.study.lang());
-        drawing::sheets_on_each(self.an(), &self.positions, &opt, (&sizes, &only), sink)
+        let (an, solved) = (self.an(), &self.positions);
+        // The trajectories and the output's extreme positions solved here,
+        // only for the sheets that draw them: presentation never solves.
+        let t = drawing::draws_trajectories(an, solved, &opt).then(|| trajectories(an, solved));
+        drawing::sheets_on_each(an, solved, t.as_ref(), &opt, (&sizes, &only), sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written

@@ -152,3 +152,16 @@ pub fn check_docs_example(heading: &str, fixture: &str) {
         );
     }
 }
+
+/// The sheets `opt` draws of `solved` (`drawing::sheets`), the points'
+/// trajectories and the output's extreme positions solved first where a
+/// sheet draws them, as `Study::draw` does: presentation never solves.
+pub fn sheets(
+    an: &Analysis,
+    solved: &[Solved],
+    opt: &mechplan::drawing::DrawOptions,
+) -> Vec<mechplan::drawing::Sheet> {
+    let t = mechplan::drawing::draws_trajectories(an, solved, opt)
+        .then(|| mechplan::studies::trajectories::trajectories(an, solved));
+    mechplan::drawing::sheets(an, solved, t.as_ref(), opt)
+}

@@ -18,6 +18,7 @@ use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::presentation::position_number;
 use crate::pipeline::Solved;
+use crate::studies::trajectories::Trajectories;
 use kurbo::Rect;
 use std::collections::BTreeMap;
 
@@ -49,18 +50,32 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
     }
 }
 
+/// Whether the sheets `opt` draws for `solved` draw the positions' trajectories
+/// and the output's extreme positions (the positions sheet, the course
+/// sheet): the caller then computes them
+/// ([`crate::studies::trajectories::trajectories`]) and hands them to
+/// [`sheets_on_each`], which only reads them.
+pub fn draws_trajectories(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> bool {
+    asked(an, solved, "positions") || opt.course || asked(an, solved, "course")
+}
+
 /// The drawings a scene asks for (`want.drawings`; by default the plan
 /// of the mechanism and the plans wanted, plus the positions sheet when
 /// there are several positions), one sheet per drawing and position, on
 /// `opt.sheet`, each figure at the scale that fills its field; a μ_l the
 /// scene fixes that does not fit is replaced by the one that fills (the
 /// sheets say which). `mechplan draw` uses [`sheets_on`], which refuses
-/// instead.
+/// instead. `t`: the trajectories, where [`draws_trajectories`].
 #[cfg(feature = "internals")]
-pub fn sheets(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Vec<Sheet> {
-    match sheets_on(an, solved, opt, &[opt.sheet]) {
+pub fn sheets(
+    an: &Analysis,
+    solved: &[Solved],
+    t: Option<&Trajectories>,
+    opt: &DrawOptions,
+) -> Vec<Sheet> {
+    match sheets_on(an, solved, t, opt, &[opt.sheet]) {
         Ok((s, _)) => s,
-        Err(_) => compose(an, solved, opt, Scale::Fill).unwrap_or_default(),
+        Err(_) => compose(an, solved, t, opt, Scale::Fill).unwrap_or_default(),
     }
 }
 
@@ -84,11 +99,12 @@ enum Scale {
 pub fn sheets_on(
     an: &Analysis,
     solved: &[Solved],
+    t: Option<&Trajectories>,
     opt: &DrawOptions,
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
     let mut sheets = Vec::new();
-    let size = sheets_on_each(an, solved, opt, (sizes, &[]), &mut |s| {
+    let size = sheets_on_each(an, solved, t, opt, (sizes, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -98,10 +114,14 @@ pub fn sheets_on(
 /// [`sheets_on`], each sheet handed to `sink` as soon as it is drawn (a
 /// sheet is dropped there: memory flat in the number of positions); with
 /// `only` (positions from 0, none: all), only those positions' sheets,
-/// drawn at the scales of the whole set and numbered as in it.
+/// drawn at the scales of the whole set and numbered as in it. `t`: the
+/// trajectories of `solved`, computed by the caller where
+/// [`draws_trajectories`] (presentation never solves); without them such
+/// a sheet is an internal error.
 pub fn sheets_on_each(
     an: &Analysis,
     solved: &[Solved],
+    t: Option<&Trajectories>,
     opt: &DrawOptions,
     (sizes, only): (&[SheetSize], &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
@@ -112,10 +132,13 @@ pub fn sheets_on_each(
             sheet: first,
             ..*opt
         };
-        compose_each(an, solved, &opt, (Scale::Scene, only), sink)?;
+        compose_each(an, solved, t, &opt, (Scale::Scene, only), sink)?;
         return Ok(first);
     };
-    let t = asked(an, solved, "positions").then(|| positions::trajectories(an, solved));
+    let t = match asked(an, solved, "positions") {
+        true => Some(positions::given(t)?),
+        false => None,
+    };
     // Counted before anything is drawn: the joints alone at μ_l. A drawing
     // that no standard sheet could hold is refused at once (drawn at such
     // a scale, its hatching alone would run to millions of strokes).
@@ -126,20 +149,20 @@ pub fn sheets_on_each(
         ..*opt
     };
     if !solved.is_empty() && !fits(joints, field_size(&largest, 0.0)) {
-        return Err(misfit(an, solved, opt, sizes, (joints, true), mu_l, t.as_ref()));
+        return Err(misfit(an, solved, opt, sizes, (joints, true), mu_l, t));
     }
-    let u = mechanism_union(an, solved, opt, mu_l, t.as_ref());
+    let u = mechanism_union(an, solved, opt, mu_l, t);
     for &size in sizes {
         let opt = DrawOptions {
             sheet: size,
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            compose_each(an, solved, &opt, (Scale::Scene, only), sink)?;
+            compose_each(an, solved, t, &opt, (Scale::Scene, only), sink)?;
             return Ok(size);
         }
     }
-    Err(misfit(an, solved, opt, sizes, (u, false), mu_l, t.as_ref()))
+    Err(misfit(an, solved, opt, sizes, (u, false), mu_l, t))
 }
 
 /// The extent of the mechanism's drawings at `mu_l`: every position's
@@ -149,7 +172,7 @@ fn mechanism_union(
     solved: &[Solved],
     opt: &DrawOptions,
     mu_l: f64,
-    t: Option<&positions::Trajectories>,
+    t: Option<&Trajectories>,
 ) -> Rect {
     let mut u = mechanism_bounds(an, solved, opt, mu_l);
     if let Some(t) = t {
@@ -170,7 +193,7 @@ fn misfit(
     sizes: &[SheetSize],
     (u, at_least): (Rect, bool),
     mu_l: f64,
-    t: Option<&positions::Trajectories>,
+    t: Option<&Trajectories>,
 ) -> Error {
     use crate::format::format_quantity as q;
     let first = sizes.first().copied().unwrap_or(opt.sheet);
@@ -226,9 +249,15 @@ fn misfit(
 /// position the plan of the mechanism and the plans asked for; the course
 /// sheet when asked; the diagrams sheet when asked.
 #[cfg(feature = "internals")]
-fn compose(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Vec<Sheet>> {
+fn compose(
+    an: &Analysis,
+    solved: &[Solved],
+    t: Option<&Trajectories>,
+    opt: &DrawOptions,
+    how: Scale,
+) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
-    compose_each(an, solved, opt, (how, &[]), &mut |s| {
+    compose_each(an, solved, t, opt, (how, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -253,17 +282,18 @@ struct Shared {
 fn compose_each(
     an: &Analysis,
     solved: &[Solved],
+    t: Option<&Trajectories>,
     opt: &DrawOptions,
     (how, only): (Scale, &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
 ) -> Result<()> {
     fixed_plan_scales(an, solved, opt)?;
-    let shared = shared_scales(an, solved, opt, how)?;
+    let shared = shared_scales(an, solved, t, opt, how)?;
     let all = only.is_empty();
     let mut lead = 0;
     if opt.course || asked(an, solved, "course") {
         lead += 1;
-        let course = course::sheet(an, solved, opt)?;
+        let course = course::sheet(an, solved, positions::given(t)?, opt)?;
         let forces = course_forces::sheet(an, solved, opt)?;
         lead += usize::from(forces.is_some());
         if all {
@@ -304,7 +334,13 @@ fn compose_each(
 }
 
 /// The scales of the sheets every position shares ([`Shared`]).
-fn shared_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale) -> Result<Shared> {
+fn shared_scales(
+    an: &Analysis,
+    solved: &[Solved],
+    t: Option<&Trajectories>,
+    opt: &DrawOptions,
+    how: Scale,
+) -> Result<Shared> {
     let fixed_l = match how {
         Scale::Scene => an.mech.scene.want.scales.mu_l,
         #[cfg(feature = "internals")]
@@ -321,10 +357,10 @@ fn shared_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions, how: Scale
         return Ok(out);
     }
     if asked(an, solved, "positions") {
-        let t = positions::trajectories(an, solved);
+        let t = positions::given(t)?;
         let draw = |mu: f64| {
             let mut c = Canvas::default();
-            positions::draw(an, solved, &t, &mut c, mu);
+            positions::draw(an, solved, t, &mut c, mu);
             Some(c)
         };
         out.positions = Some(match fixed_l {

@@ -26,12 +26,13 @@ use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
+use crate::studies::trajectories::Trajectories;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
 
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
-    Positions(positions::Trajectories),
+    Positions(&'a Trajectories),
     /// The velocity plans of these positions (the k-th, from 1: not their
     /// numbers, which `position_number` gives) at one μ_v, in a
     /// grid of this many columns.
@@ -47,17 +48,18 @@ enum Source<'a> {
 /// drawing read at arm's length), their indices 2.5 mm.
 pub const COURSE_LETTERING: f64 = 2.5 / (0.7 * 2.5) * 1.0001;
 
-/// The course sheet of `solved` (every position of the scene), its
+/// The course sheet of `solved` (every position of the scene), with their
+/// trajectories `t` ([`crate::studies::trajectories::trajectories`]), its
 /// lettering [`COURSE_LETTERING`] times the other sheets'.
-pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
-    super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, opt))
+pub fn sheet(an: &Analysis, solved: &[Solved], t: &Trajectories, opt: &DrawOptions) -> Result<Sheet> {
+    super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, t, opt))
 }
 
 /// The sheet's figures placed on its field, and the positions whose plans
 /// they show (velocity, acceleration).
 type Layout = (Vec<(Figure, Point)>, (Vec<usize>, Vec<usize>));
 
-fn layout(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Layout> {
+fn layout(an: &Analysis, solved: &[Solved], t: &Trajectories, opt: &DrawOptions) -> Result<Layout> {
     let size = size(opt);
     let lang = opt.lang;
     let chosen = chosen(an, solved);
@@ -70,7 +72,7 @@ fn layout(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Layout>
     let n = chosen.0.len();
     let default = grid(n).0;
     let laid = |cols: usize| {
-        let sources = sources(an, solved, &chosen, &fixed, cols);
+        let sources = sources((solved, t), &chosen, &fixed, cols);
         layout_with(an, solved, lang, size, sources)
     };
     let mut best = laid(default)?;
@@ -155,14 +157,16 @@ pub fn shown(an: &Analysis, n: usize) -> Vec<usize> {
 
 /// The scales the course sheet draws its plans at, by position (from 0:
 /// μ_v, μ_a): one μ_v for every velocity plan it shows, each acceleration
-/// plan's μ_a. Built at them, the plans state them everywhere.
+/// plan's μ_a. Built at them, the plans state them everywhere. `t`: the
+/// trajectories of `solved` the sheet draws.
 pub fn plan_scales(
     an: &Analysis,
     solved: &[Solved],
+    t: &Trajectories,
     opt: &DrawOptions,
 ) -> Result<crate::kinematics::solve::ScalesAt> {
     let (placed, (vel_at, _)) = super::canvas::with_lettering(COURSE_LETTERING, || {
-        layout(an, solved, opt)
+        layout(an, solved, t, opt)
     })?;
     let mut out = crate::kinematics::solve::ScalesAt::new();
     for (f, _) in &placed {
@@ -184,10 +188,15 @@ pub fn plan_scales(
     Ok(out)
 }
 
-fn course_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Sheet> {
+fn course_sheet(
+    an: &Analysis,
+    solved: &[Solved],
+    t: &Trajectories,
+    opt: &DrawOptions,
+) -> Result<Sheet> {
     let size = size(opt);
     let w = words(opt.lang);
-    let (placed, _) = layout(an, solved, opt)?;
+    let (placed, _) = layout(an, solved, t, opt)?;
     let mut page = Page::new(size);
     place(&mut page, &placed);
     let title = w.course.to_string();
@@ -280,15 +289,13 @@ fn fixed_figures(
 /// the `chosen` positions' plans (drawn at a scale), then the `fixed`
 /// ones (share 0).
 fn sources<'a>(
-    an: &Analysis,
-    solved: &[Solved],
+    (solved, t): (&[Solved], &'a Trajectories),
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
     fixed: &'a [Figure],
     cols: usize,
 ) -> Vec<(Source<'a>, f64)> {
     let (has_plans, has_acc) = has_plans(solved);
-    let mut sources: Vec<(Source, f64)> =
-        vec![(Source::Positions(positions::trajectories(an, solved)), 0.34)];
+    let mut sources: Vec<(Source, f64)> = vec![(Source::Positions(t), 0.34)];
     if has_plans {
         sources.push((Source::Velocities(vel_at.clone(), cols), 0.22));
     }
