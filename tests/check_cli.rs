@@ -1,19 +1,7 @@
 //! The `check` command: exit status 0 right, 1 wrong, 2 bad input; the
 //! overlay SVG is written only on success.
 
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
+mod common;
 
 fn files(tag: &str, answer: &serde_json::Value) -> (String, String, String) {
     let dir = std::env::temp_dir().join(format!("mechplan-check-{tag}-{}", std::process::id()));
@@ -49,7 +37,7 @@ fn files(tag: &str, answer: &serde_json::Value) -> (String, String, String) {
 fn exit_status_follows_the_verdict() {
     // Expected values from solve --format json.
     let (s, _, _) = files("solve", &serde_json::json!({}));
-    let (code, out, _) = run(&["solve", &s, "--format", "json"]);
+    let (code, out, _) = common::run(&["solve", &s, "--format", "json"]);
     assert_eq!(code, 0);
     let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
     let plan = &doc["positions"][0]["plans"]["acceleration"];
@@ -57,7 +45,7 @@ fn exit_status_follows_the_verdict() {
     let d = &plan["points"]["d"];
     let good = serde_json::json!({ "plan": "acceleration", "mu": mu, "points": { "d": d, "b_3": plan["points"]["b_3"] } });
     let (s, a, o) = files("good", &good);
-    let (code, out, err) = run(&["check", &s, &a, "--svg", &o]);
+    let (code, out, err) = common::run(&["check", &s, &a, "--svg", &o]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("2 of 2 right"));
     assert!(std::path::Path::new(&o).exists());
@@ -66,7 +54,7 @@ fn exit_status_follows_the_verdict() {
     let mut bad = good.clone();
     bad["points"]["d"] = serde_json::json!([d[0].as_f64().unwrap() + 15.0, d[1]]);
     let (s, a, o) = files("wrong", &bad);
-    let (code, out, _) = run(&["check", &s, &a, "--svg", &o, "--format", "json"]);
+    let (code, out, _) = common::run(&["check", &s, &a, "--svg", &o, "--format", "json"]);
     assert_eq!(code, 1);
     let rep: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(rep["wrong"], 1);
@@ -74,7 +62,7 @@ fn exit_status_follows_the_verdict() {
         "bad",
         &serde_json::json!({ "plan": "acceleration", "points": { "d": [1, 2] } }),
     );
-    let (code, _, err) = run(&["check", &s, &a, "--svg", &o]);
+    let (code, _, err) = common::run(&["check", &s, &a, "--svg", &o]);
     assert_eq!(code, 2);
     assert!(err.contains("/mu"), "{err}");
     assert!(
@@ -91,7 +79,7 @@ fn cannot_be_judged_has_its_own_status() {
     let dir = std::env::temp_dir().join(format!("mechplan-check-unjudged-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let scene = format!("{}/fixtures/class3_004.json", env!("CARGO_MANIFEST_DIR"));
-    let (code, out, _) = run(&["solve", &scene, "--format", "json"]);
+    let (code, out, _) = common::run(&["solve", &scene, "--format", "json"]);
     assert_eq!(code, 0);
     let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
     let plan = &doc["positions"][0]["plans"]["acceleration"];
@@ -100,13 +88,13 @@ fn cannot_be_judged_has_its_own_status() {
     });
     let a = dir.join("answer.json");
     std::fs::write(&a, answer.to_string()).unwrap();
-    let (code, out, err) = run(&["check", &scene, a.to_str().unwrap()]);
+    let (code, out, err) = common::run(&["check", &scene, a.to_str().unwrap()]);
     assert_eq!(code, 4, "{out}{err}");
     assert!(
         out.contains("CANNOT BE JUDGED") && out.contains("exceeds a fifth of the plan"),
         "{out}"
     );
-    let (code, out, _) = run(&["check", &scene, a.to_str().unwrap(), "--format", "json"]);
+    let (code, out, _) = common::run(&["check", &scene, a.to_str().unwrap(), "--format", "json"]);
     assert_eq!(code, 4);
     let r: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(r["status"], 4);
@@ -120,7 +108,7 @@ fn cannot_be_judged_has_its_own_status() {
 #[test]
 fn the_overlay_stays_on_its_sheet() {
     let (s, _, _) = files("big-solve", &serde_json::json!({}));
-    let (code, out, _) = run(&["solve", &s, "--format", "json"]);
+    let (code, out, _) = common::run(&["solve", &s, "--format", "json"]);
     assert_eq!(code, 0);
     let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
     let plan = &doc["positions"][0]["plans"]["acceleration"];
@@ -134,7 +122,7 @@ fn the_overlay_stays_on_its_sheet() {
     let far = serde_json::json!([d[0].as_f64().unwrap() + 700.0, d[1]]);
     let answer = serde_json::json!({ "plan": "acceleration", "mu": mu, "points": { "d": far, "b_3": at("b_3") } });
     let (s, a, o) = files("big", &answer);
-    let (code, out, err) = run(&["check", &s, &a, "--svg", &o]);
+    let (code, out, err) = common::run(&["check", &s, &a, "--svg", &o]);
     assert_eq!(code, 1, "{out}{err}");
     let svg = std::fs::read_to_string(&o).unwrap();
     let tree = mechplan::drawing::tree(&svg).unwrap();

@@ -9,7 +9,7 @@
 mod common;
 
 use serde_json::{Value, json};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 fn run(args: &[&str]) -> (i32, String, String) {
@@ -23,14 +23,6 @@ fn run(args: &[&str]) -> (i32, String, String) {
         String::from_utf8_lossy(&out.stdout).into(),
         String::from_utf8_lossy(&out.stderr).into(),
     )
-}
-
-/// A fresh folder for one test.
-fn fresh(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mechplan-dxf-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn scene(name: &str) -> String {
@@ -190,7 +182,7 @@ fn variants(mu: f64) -> Vec<(&'static str, Value)> {
 /// reflected through the pole, a vector drawn the wrong way) is graded
 /// exactly as its JSON twin.
 fn twins(fixture: &str, position: usize, wrong: &str) {
-    let dir = fresh(fixture);
+    let dir = common::fresh("dxf", fixture);
     let (points, mu) = plan(fixture, position);
     let mut bad = points.clone();
     let p = bad[wrong].as_array().unwrap().clone();
@@ -293,7 +285,7 @@ fn habits(
     wrong: &str,
     specs: Vec<(String, Value)>,
 ) -> Vec<(String, Value)> {
-    let dir = fresh(&format!("{fixture}-{kind}-habits"));
+    let dir = common::fresh("dxf", &format!("{fixture}-{kind}-habits"));
     let (points, mu) = plan_of(fixture, position, kind);
     let mut bad = points.clone();
     let p = bad[wrong].as_array().unwrap().clone();
@@ -490,7 +482,7 @@ fn a_plan_on_a_sheet_with_its_frame_title_block_and_construction_reads_as_the_js
 fn two_plans_on_one_sheet_each_read_when_asked() {
     let (v, mu_v) = plan_of("slider_driven_rocker", 2, "velocity");
     let (a, mu_a) = plan_of("slider_driven_rocker", 2, "acceleration");
-    let dir = fresh("two_plans");
+    let dir = common::fresh("dxf", "two_plans");
     let path = dir.join("both.dxf");
     ezdxf(
         &path,
@@ -532,7 +524,7 @@ fn two_plans_on_one_sheet_each_read_when_asked() {
 /// The report in words tells what was left out.
 #[test]
 fn the_text_report_notes_what_was_left_out() {
-    let dir = fresh("notes");
+    let dir = common::fresh("dxf", "notes");
     let (points, mu) = plan_of("four_bar", 1, "velocity");
     let path = dir.join("sheet.dxf");
     ezdxf(
@@ -564,7 +556,7 @@ fn the_text_report_notes_what_was_left_out() {
 /// ends (only a frame's corner near one).
 #[test]
 fn a_drawing_without_its_plan_is_refused_saying_what_to_change() {
-    let dir = fresh("no_plan");
+    let dir = common::fresh("dxf", "no_plan");
     let f = dir.join("answer.dxf");
     let text =
         |s: &str, x: f64, y: f64| format!("0\nTEXT\n8\n0\n10\n{x}\n20\n{y}\n40\n3.5\n1\n{s}\n");
@@ -637,7 +629,7 @@ fn refused(file: &Path, bytes: &[u8], extra: &[&str]) -> String {
 
 #[test]
 fn bad_dxf_answers_are_refused_naming_what_and_where() {
-    let dir = fresh("bad");
+    let dir = common::fresh("dxf", "bad");
     let f = dir.join("answer.dxf");
     // Binary DXF.
     let err = refused(&f, b"AutoCAD Binary DXF\r\n\x1a\x00\x00\x00SECTION", &[]);
@@ -768,7 +760,7 @@ fn bad_dxf_answers_are_refused_naming_what_and_where() {
 #[test]
 fn the_documented_dxf_answer_is_right() {
     let text = common::dxf_block("docs/check.md");
-    let dir = fresh("doc");
+    let dir = common::fresh("dxf", "doc");
     for (name, text) in [
         ("lf.dxf", text.to_string()),
         ("crlf.dxf", text.replace('\n', "\r\n")),
@@ -798,7 +790,7 @@ fn the_documented_dxf_answer_is_right() {
 /// copy's line ends the original's. A JSON answer is refused.
 #[test]
 fn the_overlay_is_written_into_a_copy_of_the_students_dxf() {
-    let dir = fresh("overlay");
+    let dir = common::fresh("dxf", "overlay");
     let (points, mu) = plan("six_link_fig2_10", 2);
     let mut wrong = points.clone();
     let c = wrong["c"].as_array().unwrap().clone();
@@ -923,7 +915,7 @@ fn the_documented_answer_is_marked_without_handles() {
         mtext,
         "TEXT\n8\nLETTERS\n10\n150\n20\n100\n40\n3.5\n1\n\\U+03BCv = 0,005 (m/s)/mm\n",
     );
-    let dir = fresh("doc_marked");
+    let dir = common::fresh("dxf", "doc_marked");
     let answer = dir.join("answer.dxf");
     std::fs::write(&answer, &text).unwrap();
     let (points, _) = plan("four_bar", 1);

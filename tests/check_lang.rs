@@ -9,37 +9,16 @@
 //! that the points fit position 0 with ω1 reversed), its points taken
 //! from `solve --format json`, as tests/check_group.rs builds it.
 
+mod common;
+
 use mechplan::{CheckRequest, Lang, Study};
 use serde_json::{Value, json};
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 const SCENE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/fixtures/six_link_fig2_10.json"
 );
-
-/// The binary on `args`: its exit status, standard output and standard
-/// error.
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
-/// A fresh folder for one test.
-fn fresh(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mechplan-lang-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn path(p: &Path) -> String {
     p.display().to_string()
@@ -49,7 +28,7 @@ fn path(p: &Path) -> String {
 /// its sheets do) with a, b, c, d turned through the pole: the crank's
 /// velocity reversed, a mistake named at step 3.
 fn reversed() -> Value {
-    let (code, out, err) = run(&["solve", SCENE, "--format", "json"]);
+    let (code, out, err) = common::run(&["solve", SCENE, "--format", "json"]);
     assert_eq!(code, 0, "{err}");
     let doc: Value = serde_json::from_str(&out).unwrap();
     let plan = &doc["positions"][0]["plans"]["velocity"];
@@ -173,15 +152,15 @@ fn speaks(w: &Words, out: &str) {
 /// exit status 1; `--lang en` is the English report.
 #[test]
 fn the_report_is_in_the_language_asked() {
-    let dir = fresh("asked");
+    let dir = common::fresh("lang", "asked");
     let answer = dir.join("answer.json");
     std::fs::write(&answer, reversed().to_string()).unwrap();
     for w in [&UK, &RU] {
-        let (code, out, err) = run(&["check", SCENE, &path(&answer), "--lang", w.lang]);
+        let (code, out, err) = common::run(&["check", SCENE, &path(&answer), "--lang", w.lang]);
         assert_eq!(code, 1, "{}: {err}{out}", w.lang);
         speaks(w, &out);
     }
-    let (code, out, _) = run(&["check", SCENE, &path(&answer), "--lang", "en"]);
+    let (code, out, _) = common::run(&["check", SCENE, &path(&answer), "--lang", "en"]);
     assert_eq!(code, 1);
     assert!(
         out.contains(
@@ -190,7 +169,7 @@ fn the_report_is_in_the_language_asked() {
         "{out}"
     );
     assert!(out.contains("1 / 0.004 = 250 mm"), "{out}");
-    let (code, _, err) = run(&["check", SCENE, &path(&answer), "--lang", "de"]);
+    let (code, _, err) = common::run(&["check", SCENE, &path(&answer), "--lang", "de"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("unknown language \"de\""), "{err}");
 }
@@ -199,18 +178,18 @@ fn the_report_is_in_the_language_asked() {
 /// `--lang`; `--lang` still decides over it.
 #[test]
 fn the_scene_language_is_the_default() {
-    let dir = fresh("scene");
+    let dir = common::fresh("lang", "scene");
     let answer = dir.join("answer.json");
     std::fs::write(&answer, reversed().to_string()).unwrap();
     for w in [&UK, &RU] {
         let scene = dir.join(format!("scene-{}.json", w.lang));
         std::fs::write(&scene, scene_text(Some(w.lang))).unwrap();
-        let (code, out, err) = run(&["check", &path(&scene), &path(&answer)]);
+        let (code, out, err) = common::run(&["check", &path(&scene), &path(&answer)]);
         assert_eq!(code, 1, "{}: {err}{out}", w.lang);
         speaks(w, &out);
-        let (_, asked, _) = run(&["check", SCENE, &path(&answer), "--lang", w.lang]);
+        let (_, asked, _) = common::run(&["check", SCENE, &path(&answer), "--lang", w.lang]);
         assert_eq!(out, asked, "{}", w.lang);
-        let (code, out, _) = run(&["check", &path(&scene), &path(&answer), "--lang", "en"]);
+        let (code, out, _) = common::run(&["check", &path(&scene), &path(&answer), "--lang", "en"]);
         assert_eq!(code, 1);
         assert!(out.contains("Grade: WRONG at step 3."), "{out}");
     }
@@ -221,10 +200,10 @@ fn the_scene_language_is_the_default() {
 /// quoted step, the item's name) in Ukrainian.
 #[test]
 fn json_stays_machine_readable() {
-    let dir = fresh("json");
+    let dir = common::fresh("lang", "json");
     let answer = dir.join("answer.json");
     std::fs::write(&answer, reversed().to_string()).unwrap();
-    let (code, out, err) = run(&[
+    let (code, out, err) = common::run(&[
         "check",
         SCENE,
         &path(&answer),
@@ -263,12 +242,12 @@ fn json_stays_machine_readable() {
 /// group's grades machine words.
 #[test]
 fn a_group_is_checked_in_the_language_asked() {
-    let dir = fresh("group");
+    let dir = common::fresh("lang", "group");
     let answers = dir.join("answers");
     std::fs::create_dir_all(&answers).unwrap();
     std::fs::write(answers.join("reversed.json"), reversed().to_string()).unwrap();
     let out_dir = dir.join("out");
-    let (code, out, err) = run(&[
+    let (code, out, err) = common::run(&[
         "check",
         SCENE,
         &path(&answers),
@@ -326,12 +305,12 @@ fn the_library_takes_the_language_too() {
 /// verdicts and its numbers (decimal commas) in Ukrainian and Russian.
 #[test]
 fn a_force_plans_report_in_every_language() {
-    let dir = fresh("force");
+    let dir = common::fresh("lang", "force");
     let scene = format!(
         "{}/fixtures/dynamics/six_link_fig2_10.json",
         env!("CARGO_MANIFEST_DIR")
     );
-    let (code, out, _) = run(&["solve", &scene, "--format", "json"]);
+    let (code, out, _) = common::run(&["solve", &scene, "--format", "json"]);
     assert_eq!(code, 0);
     let doc: Value = serde_json::from_str(&out).unwrap();
     let mut values = serde_json::Map::new();
@@ -356,7 +335,7 @@ fn a_force_plans_report_in_every_language() {
         ("uk", "План сил ланок", "НЕВІРНО"),
         ("ru", "План сил звеньев", "НЕВЕРНО"),
     ] {
-        let (code, out, err) = run(&["check", &scene, &path(&file), "--lang", lang]);
+        let (code, out, err) = common::run(&["check", &scene, &path(&file), "--lang", lang]);
         assert_eq!(code, 1, "{out}{err}");
         assert!(
             out.contains(heading) && out.contains(wrong),

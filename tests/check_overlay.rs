@@ -12,7 +12,6 @@
 
 mod common;
 use serde_json::{Value, json};
-use std::path::PathBuf;
 
 const WRONG_INK: &str = "#c00000";
 const STUDENT_INK: &str = "#1f5fa8";
@@ -21,29 +20,9 @@ fn fixture_path(name: &str) -> String {
     format!("{}/fixtures/{name}.json", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
-/// A fresh folder for one test.
-fn fresh(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mechplan-overlay-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// A fixture's result file (`solve --format json`).
 fn solved(fixture: &str) -> Value {
-    let (code, out, err) = run(&["solve", &fixture_path(fixture), "--format", "json"]);
+    let (code, out, err) = common::run(&["solve", &fixture_path(fixture), "--format", "json"]);
     assert_eq!(code, 0, "{err}");
     serde_json::from_str(&out).unwrap()
 }
@@ -107,7 +86,7 @@ fn overlay_of(
     );
     let mut args = vec!["check", &scene, f, "--svg", s, "--format", "json"];
     args.extend(extra);
-    let (code, out, err) = run(&args);
+    let (code, out, err) = common::run(&args);
     assert!(code == 0 || code == 1, "{tag}: {err}");
     (
         code,
@@ -382,7 +361,7 @@ fn ends(l: &str) -> (kurbo::Point, kurbo::Point) {
 /// overlaps, the legend and the wrong steps.
 #[test]
 fn overlays_label_the_plan_letters_clear_of_each_other_with_a_legend() {
-    let dir = fresh("cases");
+    let dir = common::fresh("overlay", "cases");
     let six = solved("six_link_fig2_10");
     let shaper = solved("shaper_fig2_11");
     let four = solved("four_bar");
@@ -462,7 +441,7 @@ fn overlays_label_the_plan_letters_clear_of_each_other_with_a_legend() {
 /// names the step too.
 #[test]
 fn the_worked_examples_step_is_drawn_from_the_students_points() {
-    let dir = fresh("worked");
+    let dir = common::fresh("overlay", "worked");
     let a = worked_example();
     let (_, report, svg) = overlay_of(&dir, "worked", "six_link_fig2_10", &a, &[]);
     assert_eq!(report["mistakes"][0]["step"], 5);
@@ -524,7 +503,7 @@ fn the_worked_examples_step_is_drawn_from_the_students_points() {
 /// from the student's own points (the circle of its tolerance).
 #[test]
 fn an_intersections_two_lines_meet_where_the_step_puts_the_point() {
-    let dir = fresh("meet");
+    let dir = common::fresh("overlay", "meet");
     let six = solved("six_link_fig2_10");
     let a = answer(&six, "velocity", 2, |key, p| {
         if key == "d" { [p[0] + 15.0, p[1]] } else { p }
@@ -556,7 +535,7 @@ fn an_intersections_two_lines_meet_where_the_step_puts_the_point() {
 /// legend and the mark in Ukrainian.
 #[test]
 fn a_value_written_wrong_is_shown_and_the_legend_follows_the_language() {
-    let dir = fresh("value");
+    let dir = common::fresh("overlay", "value");
     let six = solved("six_link_fig2_10");
     let mut a = answer(&six, "velocity", 2, |_, p| p);
     let v = &six["positions"][1]["points"]["B"]["v"];
@@ -597,7 +576,7 @@ fn a_value_written_wrong_is_shown_and_the_legend_follows_the_language() {
 /// keep clear of each other.
 #[test]
 fn a_reduced_overlay_keeps_its_labels_apart() {
-    let dir = fresh("reduced");
+    let dir = common::fresh("overlay", "reduced");
     let shaper = solved("shaper_fig2_11");
     let k = 8.0;
     let mut a = answer(&shaper, "acceleration", 1, |key, p| {
@@ -624,7 +603,7 @@ fn a_reduced_overlay_keeps_its_labels_apart() {
 /// the docs is the sheet rendered now (its size).
 #[test]
 fn the_gallerys_picture_of_the_overlay() {
-    let dir = fresh("gallery");
+    let dir = common::fresh("overlay", "gallery");
     let (_, _, svg) = overlay_of(&dir, "worked", "six_link_fig2_10", &worked_example(), &[]);
     let png = mechplan::drawing::png(&svg, 150.0).unwrap();
     let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();

@@ -8,6 +8,8 @@
 //! sheet). Each marks file must get its JSON twin's verdict: the right
 //! plan right, a mistaken one wrong with the same first mistake.
 
+mod common;
+
 mod student;
 
 use kurbo::Vec2;
@@ -17,8 +19,7 @@ use mechplan::check::{Grade, Report, check};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use serde_json::{Map, Value, json};
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 use student::drawing::{Drawing, Source, acceleration_plan, standard_mu, velocity_plan};
 use student::rigid::{Model, Options};
 use student::scenes;
@@ -465,27 +466,6 @@ fn careful_clicks_get_the_twins_verdict() {
     assert!(differ.is_empty(), "{}", differ.join("\n"));
 }
 
-/// The binary on `args`: its exit status, standard output and error.
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
-/// A fresh folder for one test.
-fn fresh(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mechplan-photo-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 const SCENE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/fixtures/six_link_fig2_10.json"
@@ -520,20 +500,20 @@ fn write(dir: &Path, name: &str, v: &Value) -> String {
 /// the photo's scale.
 #[test]
 fn the_command_reads_a_marks_file() {
-    let dir = fresh("cli");
+    let dir = common::fresh("photo", "cli");
     std::fs::write(dir.join("plan.jpg"), b"not read without snap").unwrap();
     let m = six_link_marks();
     let f = write(&dir, "marks.json", &m);
-    let (code, out, err) = run(&["check", SCENE, &f]);
+    let (code, out, err) = common::run(&["check", SCENE, &f]);
     assert!(code == 0 || code == 1 || code == 4, "{err}");
     assert!(out.contains("px per mm"), "{out}");
-    let (_, json_out, err) = run(&["check", SCENE, &f, "--format", "json"]);
+    let (_, json_out, err) = common::run(&["check", SCENE, &f, "--format", "json"]);
     let v: Value = serde_json::from_str(&json_out).unwrap_or_else(|e| panic!("{e}: {err}"));
     let s = v["photo"]["px_per_mm"].as_f64().unwrap();
     assert!((7.0..14.0).contains(&s), "{s}");
     // The photo is found against the marks file's folder.
     std::fs::remove_file(dir.join("plan.jpg")).unwrap();
-    let (code, _, err) = run(&["check", SCENE, &f]);
+    let (code, _, err) = common::run(&["check", SCENE, &f]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("/photo/file"), "{err}");
 }
@@ -541,7 +521,7 @@ fn the_command_reads_a_marks_file() {
 /// Bad marks are refused (status 2) with a message naming the field.
 #[test]
 fn bad_marks_are_refused_naming_the_field() {
-    let dir = fresh("bad");
+    let dir = common::fresh("photo", "bad");
     std::fs::write(dir.join("plan.jpg"), b"x").unwrap();
     let good = six_link_marks();
     let c = good["photo"]["rectangle_px"].clone();
@@ -637,7 +617,7 @@ fn bad_marks_are_refused_naming_the_field() {
     ];
     for (what, m, field) in cases {
         let f = write(&dir, "bad.json", &m);
-        let (code, _, err) = run(&["check", SCENE, &f]);
+        let (code, _, err) = common::run(&["check", SCENE, &f]);
         assert_eq!(code, 2, "{what}: {err}");
         assert!(err.contains(field), "{what}: {err}");
         assert!(!err.contains("panicked"), "{what}: {err}");
@@ -650,7 +630,7 @@ fn bad_marks_are_refused_naming_the_field() {
     );
     assert!(text.contains("1e999"), "{text}");
     std::fs::write(dir.join("big.json"), text).unwrap();
-    let (code, _, err) = run(&["check", SCENE, &path(&dir.join("big.json"))]);
+    let (code, _, err) = common::run(&["check", SCENE, &path(&dir.join("big.json"))]);
     assert_eq!(code, 2, "{err}");
 }
 
@@ -661,7 +641,7 @@ fn path(p: &Path) -> String {
 /// A small rectangle far from the plan is said to be badly conditioned.
 #[test]
 fn a_small_rectangle_far_from_the_plan_is_badly_conditioned() {
-    let dir = fresh("cond");
+    let dir = common::fresh("photo", "cond");
     std::fs::write(dir.join("plan.jpg"), b"x").unwrap();
     let mut m = six_link_marks();
     // A 10 mm square at the frame's bottom-left corner, by the same
@@ -684,11 +664,11 @@ fn a_small_rectangle_far_from_the_plan_is_badly_conditioned() {
     m["photo"]["rectangle_px"] = json!([lerp(0.0, 0.0), lerp(s, 0.0), lerp(s, t), lerp(0.0, t)]);
     m["photo"]["rectangle_mm"] = json!([10, 10]);
     let f = write(&dir, "small.json", &m);
-    let (code, out, err) = run(&["check", SCENE, &f]);
+    let (code, out, err) = common::run(&["check", SCENE, &f]);
     assert!(code != 2, "{err}");
     assert!(out.contains("badly conditioned"), "{out}");
     let good = write(&dir, "good.json", &six_link_marks());
-    let (_, out, _) = run(&["check", SCENE, &good]);
+    let (_, out, _) = common::run(&["check", SCENE, &good]);
     assert!(!out.contains("badly conditioned"), "{out}");
 }
 
@@ -904,7 +884,7 @@ pub fn write_jpeg(img: &image::RgbImage, path: &Path, turned: bool) {
 fn rough_clicks_snapped_get_the_twins_verdict() {
     use rayon::prelude::*;
     let (cases, trials) = trials();
-    let dir = fresh("snap");
+    let dir = common::fresh("photo", "snap");
     type Done = (bool, bool, String, Vec<Option<f64>>, Vec<f64>, &'static str);
     let results: Vec<Option<Done>> = trials
         .par_iter()
@@ -1046,7 +1026,7 @@ fn the_photo_overlay_is_drawn_in_the_photos_perspective() {
             .unwrap()
     };
     let (wrong, right) = (find("last point off"), find("right"));
-    let dir = fresh("overlay");
+    let dir = common::fresh("photo", "overlay");
     let mut rng = rng_for("overlay");
     let cam = Camera::random(&mut rng);
     let img = photograph(wrong, &cam, Paper::Plain, &mut rng);
@@ -1062,7 +1042,8 @@ fn the_photo_overlay_is_drawn_in_the_photos_perspective() {
     let marks_file = write(&dir, "marks.json", &m);
     let scene = write(&dir, "scene.json", &cases[wrong.case].json);
     let out = dir.join("overlay.svg");
-    let (code, report, err) = run(&["check", &scene, &marks_file, "--photo-overlay", &path(&out)]);
+    let (code, report, err) =
+        common::run(&["check", &scene, &marks_file, "--photo-overlay", &path(&out)]);
     assert_eq!(code, 1, "{report}{err}");
     let svg = std::fs::read_to_string(&out).unwrap();
     assert!(
@@ -1096,7 +1077,7 @@ fn the_photo_overlay_is_drawn_in_the_photos_perspective() {
     assert!(d < 1.0, "{name}'s right place is {d} px off in the overlay");
     // Not a marks file: refused, naming the option.
     let twin = write(&dir, "twin.json", &wrong.twin);
-    let (code, _, err) = run(&["check", &scene, &twin, "--photo-overlay", &path(&out)]);
+    let (code, _, err) = common::run(&["check", &scene, &twin, "--photo-overlay", &path(&out)]);
     assert_eq!(code, 2);
     assert!(err.contains("photo-overlay"), "{err}");
 }

@@ -4,20 +4,15 @@
 //! folder recognises cannot drift apart. The sheets of an earlier
 //! version left in a folder are told, whatever their kind.
 
+mod common;
+
 use mechplan::SheetKind;
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 fn fixture(name: &str) -> String {
     format!("{}/fixtures/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-fn fresh(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mechplan-names-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// `mechplan draw SCENE -o DIR ARGS`: its status and what it printed.
@@ -57,7 +52,7 @@ fn every_sheet_drawn_is_named_by_its_kind() {
         ("dynamics/six_link_fig2_10.json", &["--course"][..]),
         ("four_bar.json", &[][..]),
     ] {
-        let dir = fresh(&scene.replace('/', "-"));
+        let dir = common::fresh("names", &scene.replace('/', "-"));
         let (code, out) = draw(scene, &dir, args);
         assert_eq!(code, 0, "{scene}: {out}");
         for e in std::fs::read_dir(&dir).unwrap() {
@@ -90,7 +85,7 @@ fn every_sheet_drawn_is_named_by_its_kind() {
 
 #[test]
 fn sheets_of_every_kind_not_from_this_run_are_told() {
-    let dir = fresh("stale");
+    let dir = common::fresh("names", "stale");
     let old = [
         "velocity_99.svg",
         "forces_99.svg",

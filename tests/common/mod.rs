@@ -165,3 +165,26 @@ pub fn sheets(
         .then(|| mechplan::studies::trajectories::trajectories(an, solved));
     mechplan::drawing::sheets(an, solved, t.as_ref(), opt)
 }
+
+/// The `mechplan` binary on `args`: its exit status, standard output and
+/// standard error.
+pub fn run(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+/// A fresh, empty folder for one test of `suite`:
+/// `mechplan-SUITE-TAG-PID` in the temporary folder.
+pub fn fresh(suite: &str, tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("mechplan-{suite}-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
