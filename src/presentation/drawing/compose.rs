@@ -460,9 +460,9 @@ fn position_sheets(
     };
     for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
         let Some(plans) = &s.plans else { break };
-        let (name, title, sheet) = match kind {
-            PlanKind::Velocity => ("velocity", &w.velocities[..], SheetKind::Velocity as fn(usize) -> SheetKind),
-            PlanKind::Acceleration => ("acceleration", &w.accelerations[..], SheetKind::Acceleration as fn(usize) -> SheetKind),
+        let (name, title) = match kind {
+            PlanKind::Velocity => ("velocity", &w.velocities[..]),
+            PlanKind::Acceleration => ("acceleration", &w.accelerations[..]),
         };
         if !asked(an, solved, name)
             || (kind == PlanKind::Acceleration && plans.acceleration.is_none())
@@ -470,14 +470,15 @@ fn position_sheets(
             continue;
         }
         let (plan, c, t) = plan_figure(an, s, kind, opt);
-        let (sym, unit, key) = match kind {
-            PlanKind::Velocity => ("v", "m/s", "mu_v"),
-            PlanKind::Acceleration => ("a", "m/s²", "mu_a"),
+        let n = position_number(an, k);
+        let (sym, unit, key, sheet) = match kind {
+            PlanKind::Velocity => ("v", "m/s", "mu_v", SheetKind::Velocity(n)),
+            PlanKind::Acceleration => ("a", "m/s²", "mu_a", SheetKind::Acceleration(n)),
         };
         out.push(Pending {
             table: t,
             ..pending(
-                sheet(position_number(an, k)).stem(),
+                sheet.stem(),
                 format!("{title}, {pos}"),
                 scale_text(sym, plan.mu, unit, opt.lang),
                 (key, plan.mu),
