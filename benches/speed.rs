@@ -20,7 +20,7 @@
 //! - `constraint/*`: route (b) (`solve_positions` + `solve_rates`);
 //! - `draw/six_link_12`: `Analysis::run` + `drawing::sheets` of the
 //!   six-link fixture with its 12 positions (the whole `draw` but writing);
-//! - `positions_sheet/six_link_{200,2000}`: `studies::trajectories` +
+//! - `positions_sheet/six_link_{200,2000}`: `studies::sheet_data` +
 //!   `drawing::sheets` of the positions sheet alone (the mechanism in every
 //!   position, trajectories, numbering), positions solved beforehand;
 //! - `sweep/six_link_3600/{1,2}_threads`: `Analysis::run` over 3600
@@ -59,7 +59,7 @@ use mechplan::compiled::Program;
 use mechplan::construction::{Kernel, Setup, build_plans, build_plans_numbers};
 use mechplan::drawing::{self, DrawOptions};
 use mechplan::positions::{Configuration, PositionSolver};
-use mechplan::studies::trajectories::trajectories;
+use mechplan::studies::sheet_data::SheetData;
 use mechplan::{Analysis, Scene};
 use std::hint::black_box;
 
@@ -271,9 +271,9 @@ fn draw(cr: &mut Criterion) {
     g.bench_function("six_link_12", |b| {
         b.iter(|| {
             let solved = an.run().unwrap();
-            let t =
-                drawing::draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
-            black_box(drawing::sheets(&an, &solved, t.as_ref(), &opt))
+            let needs = drawing::sheet_needs(&an, &solved, &opt, true);
+            let data = SheetData::solve(&an, &solved, needs).unwrap();
+            black_box(drawing::sheets(&an, &solved, &data, &opt))
         })
     });
     g.finish();
@@ -292,11 +292,12 @@ fn positions_sheet(cr: &mut Criterion) {
         let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
         let solved = an.run().unwrap();
         let opt = DrawOptions::default();
-        // The trajectories solved (studies::trajectories) and drawn, as
+        // The trajectories solved (studies::sheet_data) and drawn, as
         // `mechplan draw` does.
         let sheets = || {
-            let t = trajectories(&an, &solved);
-            drawing::sheets(&an, &solved, Some(&t), &opt)
+            let needs = drawing::sheet_needs(&an, &solved, &opt, true);
+            let data = SheetData::solve(&an, &solved, needs).unwrap();
+            drawing::sheets(&an, &solved, &data, &opt)
         };
         assert_eq!(sheets().len(), 1);
         g.bench_function(format!("six_link_{n}"), |b| b.iter(|| black_box(sheets())));

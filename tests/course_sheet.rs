@@ -24,8 +24,8 @@ fn course_in(name: &str, size: SheetSize, lang: mechplan::Lang) -> mechplan::dra
         lang,
         ..DrawOptions::default()
     };
-    let t = mechplan::studies::trajectories::trajectories(&an, &s);
-    let (sh, _) = mechplan::drawing::sheets_on(&an, &s, Some(&t), &opt, &[size]).unwrap();
+    let data = sheet_data(&an, &s, &opt);
+    let (sh, _) = mechplan::drawing::sheets_on(&an, &s, &data, &opt, &[size]).unwrap();
     sh.into_iter()
         .find(|s| s.name == "course")
         .expect("a course sheet")
@@ -365,9 +365,8 @@ fn force_course_sheets_pass_the_layout_checks() {
                 course: true,
                 ..DrawOptions::default()
             };
-            let t = mechplan::studies::trajectories::trajectories(&an, &solved);
-            let (sh, _) =
-                mechplan::drawing::sheets_on(&an, &solved, Some(&t), &opt, &[size]).unwrap();
+            let data = sheet_data(&an, &solved, &opt);
+            let (sh, _) = mechplan::drawing::sheets_on(&an, &solved, &data, &opt, &[size]).unwrap();
             let s = sh
                 .iter()
                 .find(|s| s.name == "course_forces")
@@ -418,9 +417,9 @@ fn force_course_sheets_pass_the_layout_checks() {
         course: true,
         ..DrawOptions::default()
     };
-    let t = mechplan::studies::trajectories::trajectories(&an, &solved);
+    let data = sheet_data(&an, &solved, &opt);
     let (sh, _) =
-        mechplan::drawing::sheets_on(&an, &solved, Some(&t), &opt, &[SheetSize::A1]).unwrap();
+        mechplan::drawing::sheets_on(&an, &solved, &data, &opt, &[SheetSize::A1]).unwrap();
     assert!(sh.iter().all(|s| s.name != "course_forces"));
 }
 
@@ -464,4 +463,15 @@ fn the_letter_cells_are_filled() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("/sheet/letter"), "{e}");
+}
+
+/// What the sheets `opt` draws need beyond the positions, solved (as
+/// `Study::draw` does before drawing).
+fn sheet_data(
+    an: &mechplan::Analysis,
+    solved: &[mechplan::Solved],
+    opt: &DrawOptions,
+) -> mechplan::studies::sheet_data::SheetData {
+    let needs = mechplan::drawing::sheet_needs(an, solved, opt, true);
+    mechplan::studies::sheet_data::SheetData::solve(an, solved, needs).unwrap()
 }

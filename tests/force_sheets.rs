@@ -373,7 +373,7 @@ fn position_of(an: &mechplan::Analysis, solved: &[mechplan::Solved], s: &Sheet) 
         Some(n) => assert_eq!(n.parse::<usize>().unwrap(), number, "{}", s.name),
         None => assert_eq!(
             k,
-            mechplan::drawing::chosen::position(an, solved),
+            mechplan::studies::chosen::Chosen::of(an, solved.len()).analysed(solved.len()),
             "{}",
             s.name
         ),

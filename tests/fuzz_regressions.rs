@@ -3,9 +3,9 @@
 //! the fuzzer finds becomes a named test here, inline, asserting a clean
 //! error or success; the limits each get a test with its message.
 
-use mechplan::drawing::{DrawOptions, draws_trajectories, sheets};
+use mechplan::drawing::{DrawOptions, sheet_needs, sheets};
 use mechplan::scene::{MAX_FILE_BYTES, MAX_LINKS, MAX_MAGNITUDE, MAX_POINTS, MAX_POSITIONS};
-use mechplan::studies::trajectories::trajectories;
+use mechplan::studies::sheet_data::SheetData;
 use mechplan::{Analysis, Error, Scene};
 use std::fmt::Write as _;
 
@@ -16,8 +16,8 @@ fn pipeline(text: &str) -> Result<usize, Error> {
     let an = Analysis::new(scene)?;
     let solved = an.run()?;
     let opt = DrawOptions::default();
-    let t = draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
-    Ok(sheets(&an, &solved, t.as_ref(), &opt).len())
+    let data = SheetData::solve(&an, &solved, sheet_needs(&an, &solved, &opt, true))?;
+    Ok(sheets(&an, &solved, &data, &opt).len())
 }
 
 /// The error message of a scene the reader must reject.

@@ -466,10 +466,8 @@ fn plans_at_names_positions_by_their_numbers() {
         let study = mechplan::Study::from_json(&v.to_string())?;
         let solution = study.solve()?;
         // The k-th positions (from 1) the course sheet shows.
-        Ok::<_, mechplan::Error>(mechplan::drawing::chosen::chosen(
-            study.analysis(),
-            solution.solved(),
-        ))
+        let c = mechplan::studies::chosen::Chosen::of(study.analysis(), solution.solved().len());
+        Ok::<_, mechplan::Error>((c.velocity, c.acceleration))
     };
     let (_, acc) = chosen(json!([0, 11])).unwrap();
     assert_eq!(acc, [1, 12]);

@@ -165,7 +165,8 @@ fn the_bold_position_is_not_a_dead_centre() {
         let study = mechplan::Study::from_json(&text).unwrap();
         let solution = study.solve().unwrap();
         let solved = solution.solved();
-        let bold = mechplan::drawing::chosen::position(study.analysis(), solved);
+        let bold = mechplan::studies::chosen::Chosen::of(study.analysis(), solved.len())
+            .analysed(solved.len());
         let speed = |k: usize| {
             solution
                 .position(study.numbering().number(k))

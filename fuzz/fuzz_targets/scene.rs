@@ -1,11 +1,11 @@
 //! Arbitrary bytes as a scene: `Scene::from_json` → `Analysis::new` →
-//! `run` → `studies::trajectories` → `drawing::sheets` must never panic
+//! `run` → `studies::sheet_data` → `drawing::sheets` must never panic
 //! (errors are fine).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use mechplan::drawing::{DrawOptions, draws_trajectories, sheets};
-use mechplan::studies::trajectories::trajectories;
+use mechplan::drawing::{DrawOptions, sheet_needs, sheets};
+use mechplan::studies::sheet_data::SheetData;
 use mechplan::scene::PositionsSpec;
 use mechplan::{Analysis, Scene};
 
@@ -35,6 +35,8 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let opt = DrawOptions::default();
-    let t = draws_trajectories(&an, &solved, &opt).then(|| trajectories(&an, &solved));
-    let _ = sheets(&an, &solved, t.as_ref(), &opt);
+    let Ok(data) = SheetData::solve(&an, &solved, sheet_needs(&an, &solved, &opt, true)) else {
+        return;
+    };
+    let _ = sheets(&an, &solved, &data, &opt);
 });

@@ -381,16 +381,21 @@ fn plan_named(s: &str) -> Option<PlanKind> {
     // data beside an acceleration plan: "angular velocity ω1 = 10
     // 1/s", "угловые скорости") name no plan.
     // The word itself ("plan", "plans", "план", "плани"), not a
-    // part of another ("explanation").
-    let about_a_plan = s
-        .to_lowercase()
-        .split(|c: char| !c.is_alphanumeric())
-        .any(|w| w.starts_with("plan") || w.starts_with("план"));
+    // part of another ("explanation"); in any language's words
+    // (`reading` of the catalogues).
+    let lower = s.to_lowercase();
+    let words: Vec<&str> = lower.split(|c: char| !c.is_alphanumeric()).collect();
+    let every = || crate::words::catalogue::every_reading();
+    let about_a_plan = every().any(|r| {
+        r.plan_words
+            .iter()
+            .any(|p| words.iter().any(|w| w.starts_with(p.as_str())))
+    });
     if !about_a_plan {
         return None;
     }
-    let velocity = ["velocit", "швидкост", "скорост"].iter().any(|w| t.contains(w));
-    let acceleration = ["accelera", "прискорен", "ускорен"].iter().any(|w| t.contains(w));
+    let velocity = every().any(|r| r.velocity_stems.iter().any(|w| t.contains(w.as_str())));
+    let acceleration = every().any(|r| r.acceleration_stems.iter().any(|w| t.contains(w.as_str())));
     match (velocity, acceleration) {
         (true, false) => Some(PlanKind::Velocity),
         (false, true) => Some(PlanKind::Acceleration),

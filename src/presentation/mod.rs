@@ -1,14 +1,12 @@
 //! Presentation: reads a finished solution and writes it for people,
 //! never solving again. What a sheet draws beyond the solved positions
-//! comes solved: the positions' trajectories and the output's extreme
-//! positions are data of the solution
-//! ([`crate::studies::trajectories::Trajectories`]), computed by the study
-//! layer when the positions or the course sheet is asked for
-//! ([`drawing::draws_trajectories`]) and only drawn here
-//! (`tests/architecture.rs` checks that no file here names the position
-//! solver or its solving items; the working stroke's crank angle that
-//! chooses the analysed position and the diagrams sheets' sweep are still
-//! found here, listed there as still to move). The result file and the terminal's table
+//! comes solved: the positions' trajectories, the output's extreme
+//! positions, the positions a course singles out (from the working
+//! stroke) and the kinematic diagrams are data of the solution
+//! ([`crate::studies::sheet_data::SheetData`]), solved by the study layer
+//! for the sheets a request draws ([`drawing::sheet_needs`]) and only
+//! drawn here (`tests/architecture.rs` checks that no file here names the
+//! position solver, its solving items or a solving call). The result file and the terminal's table
 //! ([`report`]), the tables of results as data, for the terminal and the
 //! handout alike ([`tables`]), the sheets and the handout ([`drawing`]),
 //! the force analysis in the result ([`dynamics`]) and in steps

@@ -88,51 +88,120 @@ pub fn centres_table(
     decimals(&out, l)
 }
 
-/// The centres as JSON: per position, `{"P13": {"at": [x, y]} | {"infinity":
-/// [dx, dy]}, "how", "sin_angle"}` and the undetermined ones with why.
-pub fn centres_json(
-    an: &Analysis,
-    solved: &[Solved],
-    position: Option<usize>,
-) -> serde_json::Value {
-    use serde_json::{Map, Value, json};
+/// The instant centres of one position, as `mechplan centres --format
+/// json` writes them (its element of `positions`).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct CentresAt {
+    /// The position's number in the study's numbering.
+    pub position: usize,
+    /// Its input coordinate as the file writes it: rad for a crank's
+    /// angle, m for a driving slider's slide.
+    pub q: f64,
+    /// The centres found, in the order of the file's `centres` object.
+    #[serde(serialize_with = "centres_by_name")]
+    pub centres: Vec<InstantCentre>,
+    /// The centres Kennedy's theorem cannot place at this position.
+    pub undetermined: Vec<UndeterminedCentre>,
+}
+
+/// One instant centre of velocity of two links.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct InstantCentre {
+    /// Its name, P13 (the file's key).
+    #[serde(skip)]
+    pub name: String,
+    /// Where it is, m (absent at infinity).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub at: Option<[f64; 2]>,
+    /// At infinity: the unit direction it lies in (the two links
+    /// translate relative to each other, perpendicular to it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub infinity: Option<[f64; 2]>,
+    /// The two links' ids.
+    pub links: [String; 2],
+    /// How it was found: a pair's joint, a prismatic pair, Kennedy's lines.
+    pub how: String,
+    /// Sine of the angle between the two Kennedy lines that place it (1
+    /// for a pair): its error is about the lines' error over it.
+    pub sin_angle: f64,
+}
+
+/// A centre that cannot be placed, with the reason.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct UndeterminedCentre {
+    /// The two links' ids.
+    pub links: [String; 2],
+    /// Why Kennedy's lines do not place it.
+    pub why: String,
+}
+
+/// The centres as the file's object: name → centre.
+fn centres_by_name<S: serde::Serializer>(list: &[InstantCentre], s: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = s.serialize_map(Some(list.len()))?;
+    for c in list {
+        m.serialize_entry(&c.name, c)?;
+    }
+    m.end()
+}
+
+/// The centres of the chosen positions (`position`: its number in the
+/// study's numbering; all if `None`), typed.
+pub fn centres_records(an: &Analysis, solved: &[Solved], position: Option<usize>) -> Vec<CentresAt> {
     let m = &an.mech;
+    let ids = |l: (usize, usize)| [m.link_id(l.0).to_string(), m.link_id(l.1).to_string()];
     let mut list = Vec::new();
     for (k, s) in solved.iter().enumerate() {
         if position.is_some_and(|p| p != super::position_number(an, k)) {
             continue;
         }
         let cs = find(an, &s.config);
-        let mut centres = Map::new();
-        for c in &cs.found {
-            let (p, sub) = name(m, c);
-            let mut e = match c.place {
-                Place::At(p) => json!({ "at": [p.x, p.y] }),
-                Place::Infinity(d) => json!({ "infinity": [d.x, d.y] }),
-            };
-            e["links"] = json!([m.link_id(c.links.0), m.link_id(c.links.1)]);
-            e["how"] = Value::String(how(m, &c.how, Lang::En));
-            e["sin_angle"] = json!(c.sin_angle);
-            centres.insert(format!("{p}{sub}"), e);
-        }
-        let undetermined: Vec<Value> = cs
-            .undetermined
+        let centres = cs
+            .found
             .iter()
-            .map(|u| {
-                json!({
-                    "links": [m.link_id(u.links.0), m.link_id(u.links.1)],
-                    "why": why(m, u.links, u.why, Lang::En),
-                })
+            .map(|c| {
+                let (p, sub) = name(m, c);
+                let (at, infinity) = match c.place {
+                    Place::At(p) => (Some([p.x, p.y]), None),
+                    Place::Infinity(d) => (None, Some([d.x, d.y])),
+                };
+                InstantCentre {
+                    name: format!("{p}{sub}"),
+                    at,
+                    infinity,
+                    links: ids(c.links),
+                    how: how(m, &c.how, Lang::En),
+                    sin_angle: c.sin_angle,
+                }
             })
             .collect();
-        list.push(json!({
-            "position": super::position_number(an, k),
-            "q": s.q,
-            "centres": centres,
-            "undetermined": undetermined,
-        }));
+        let undetermined = cs
+            .undetermined
+            .iter()
+            .map(|u| UndeterminedCentre {
+                links: ids(u.links),
+                why: why(m, u.links, u.why, Lang::En),
+            })
+            .collect();
+        list.push(CentresAt {
+            position: super::position_number(an, k),
+            q: s.q,
+            centres,
+            undetermined,
+        });
     }
-    json!({ "positions": list })
+    list
+}
+
+/// The centres as JSON: per position, `{"P13": {"at": [x, y]} | {"infinity":
+/// [dx, dy]}, "links", "how", "sin_angle"}` and the undetermined ones with
+/// why ([`centres_records`], serialised).
+pub fn centres_json(
+    an: &Analysis,
+    solved: &[Solved],
+    position: Option<usize>,
+) -> serde_json::Value {
+    serde_json::json!({ "positions": centres_records(an, solved, position) })
 }
 
 /// The table of the diagrams in `l`: per node and per interval midpoint
@@ -335,35 +404,79 @@ pub fn invariants_table(an: &Analysis, set: &Settings, list: &[Phase]) -> String
     out
 }
 
-/// The phases as JSON (angles in degrees).
-pub fn invariants_json(an: &Analysis, set: &Settings, list: &[Phase]) -> serde_json::Value {
-    use serde_json::json;
-    let phases: Vec<_> = list
-        .iter()
-        .map(|p| {
-            let mut v = json!({
-                "phase": p.kind.name(),
-                "start_deg": p.start.to_degrees().rem_euclid(360.0),
-                "span_deg": p.span.to_degrees(),
-                "s0": p.s0,
-                "s1": p.s1,
-                "stroke": p.stroke,
-            });
-            if let Some(k) = p.peaks {
-                v["B"] = json!(k.b);
-                v["C"] = json!(k.c);
-                v["D"] = json!(k.d);
-                v["x_B"] = json!(k.x_b);
-                v["x_C"] = json!(k.x_c);
-                v["x_D"] = json!(k.x_d);
-            }
-            v
+/// One phase of an output's motion, as `mechplan invariants --format
+/// json` writes it: angles in degrees, as the file.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct PhaseRecord {
+    /// "recess", "dwell" or "approach".
+    pub phase: &'static str,
+    /// The crank angle it starts at, degrees in [0, 360).
+    pub start_deg: f64,
+    /// Its span in the sense of rotation, degrees.
+    pub span_deg: f64,
+    /// The output's coordinate at its start (m or rad).
+    pub s0: f64,
+    /// The output's coordinate at its end (m or rad).
+    pub s1: f64,
+    /// The stroke |s1 − s0| (a dwell: its largest deviation).
+    pub stroke: f64,
+    /// A moving phase's peak constants.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub peaks: Option<PeakConstants>,
+}
+
+/// The peak constants of a moving phase's dimensionless motion law (x
+/// from 0 to 1 over the phase), and where they are reached.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct PeakConstants {
+    /// B = max|b|, the peak of the velocity b = s'/S.
+    #[serde(rename = "B")]
+    pub b: f64,
+    /// C = max|c|, the peak of the acceleration c = s''/S.
+    #[serde(rename = "C")]
+    pub c: f64,
+    /// D = max|d|, the peak of the kinetic power d = b·c.
+    #[serde(rename = "D")]
+    pub d: f64,
+    /// Where B is reached (x from 0 to 1 over the phase).
+    #[serde(rename = "x_B")]
+    pub x_b: f64,
+    /// Where C is reached.
+    #[serde(rename = "x_C")]
+    pub x_c: f64,
+    /// Where D is reached.
+    #[serde(rename = "x_D")]
+    pub x_d: f64,
+}
+
+/// The phases, typed ([`PhaseRecord`]).
+pub fn phase_records(list: &[Phase]) -> Vec<PhaseRecord> {
+    list.iter()
+        .map(|p| PhaseRecord {
+            phase: p.kind.name(),
+            start_deg: p.start.to_degrees().rem_euclid(360.0),
+            span_deg: p.span.to_degrees(),
+            s0: p.s0,
+            s1: p.s1,
+            stroke: p.stroke,
+            peaks: p.peaks.map(|k| PeakConstants {
+                b: k.b,
+                c: k.c,
+                d: k.d,
+                x_b: k.x_b,
+                x_c: k.x_c,
+                x_d: k.x_d,
+            }),
         })
-        .collect();
-    json!({
+        .collect()
+}
+
+/// The phases as JSON (angles in degrees; [`phase_records`], serialised).
+pub fn invariants_json(an: &Analysis, set: &Settings, list: &[Phase]) -> serde_json::Value {
+    serde_json::json!({
         "output": an.mech.link_id(set.output),
         "tolerance": set.tolerance,
         "min_dwell_deg": set.min_dwell.to_degrees(),
-        "phases": phases,
+        "phases": phase_records(list),
     })
 }

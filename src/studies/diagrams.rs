@@ -79,6 +79,9 @@ pub struct Diagrams {
     pub along: f64,
     /// Crank angle step, rad (a driving slider: the slide's step, m).
     pub h: f64,
+    /// The abscissa's extent: a revolution, 2π rad (a driving slider: its
+    /// stroke, m).
+    pub span: f64,
     /// The abscissa is a driving slider's slide over its stroke (m), not
     /// a crank's revolution: the curves do not close.
     pub stroke: bool,
@@ -368,11 +371,6 @@ impl Diagrams {
         let (s0, along) = along_working_stroke(&mut s, &mut ds, &mut dds, stroke.is_none());
         let ds_mid = sm.midpoints(along)?;
         let dense = sm.dense(s0, along)?;
-        // Scales: the revolution (the stroke) over `l` mm.
-        let mu_phi = match stroke {
-            Some((lo, hi)) => (hi - lo) / l,
-            None => TAU / l,
-        };
         let range = s.iter().fold(0.0f64, |a, &x| a.max(x.abs()));
         if range.is_nan() || range <= 1e-12 * m.size {
             return Err(Error::scene(
@@ -380,10 +378,8 @@ impl Diagrams {
                 "it does not move over the revolution: there is no diagram to draw",
             ));
         }
-        let cons = Chords::of(&s, range, h / mu_phi, stroke.is_some());
-        let mu_v = cons.mu_s / (cons.h1 * mu_phi);
-        let mu_a = mu_v / (cons.h2 * mu_phi);
-        Ok(Diagrams {
+        // The sampled curves; their scales are chosen by `at_length`.
+        let sampled = Diagrams {
             output,
             point,
             slide,
@@ -393,12 +389,39 @@ impl Diagrams {
             #[cfg(feature = "internals")]
             along,
             h,
+            span: match stroke {
+                Some((lo, hi)) => hi - lo,
+                None => TAU,
+            },
             stroke: stroke.is_some(),
             s,
             ds,
             dds,
             ds_mid,
             dense,
+            mu_s: 0.0,
+            mu_phi: 0.0,
+            h1: 0.0,
+            h2: 0.0,
+            mu_v: 0.0,
+            mu_a: 0.0,
+            y1: Vec::new(),
+            y2: Vec::new(),
+        };
+        Ok(sampled.at_length(l))
+    }
+
+    /// The same diagrams drawn with the abscissa `l` mm long for the
+    /// revolution (the stroke): their scales and the rays' ordinates
+    /// chosen anew, the sampled curves kept. Arithmetic only, no solving:
+    /// a sheet scales the diagrams the study sampled to its own room.
+    pub fn at_length(&self, l: f64) -> Diagrams {
+        let mu_phi = self.span / l;
+        let range = self.s.iter().fold(0.0f64, |a, &x| a.max(x.abs()));
+        let cons = Chords::of(&self.s, range, self.h / mu_phi, self.stroke);
+        let mu_v = cons.mu_s / (cons.h1 * mu_phi);
+        let mu_a = mu_v / (cons.h2 * mu_phi);
+        Diagrams {
             mu_s: cons.mu_s,
             mu_phi,
             h1: cons.h1,
@@ -407,7 +430,8 @@ impl Diagrams {
             mu_a,
             y1: cons.y1,
             y2: cons.y2,
-        })
+            ..self.clone()
+        }
     }
 
     /// The abscissa's symbol (letters, subscript) and unit: φ1 in rad, or

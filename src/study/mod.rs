@@ -57,6 +57,15 @@ pub mod plan {
     };
 }
 
+/// The studies' results as typed records, by name: what [`Centres`] and
+/// [`Invariants`] give besides their table and JSON (the same numbers, in
+/// the units the files use).
+pub mod records {
+    pub use crate::presentation::studies::{
+        CentresAt, InstantCentre, PeakConstants, PhaseRecord, UndeterminedCentre,
+    };
+}
+
 pub use check_file::check_file;
 pub use group::{GRADEBOOK, Graded, OVERLAYS, SUMMARY, check_group, is_group};
 pub use prepared::{DEFAULT_SCENE, DrawRequest, Results, Study, read};

@@ -11,7 +11,8 @@ use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
 use crate::progress::{Progress, Silent};
-use crate::studies::trajectories::trajectories;
+use crate::studies::chosen::Chosen;
+use crate::studies::sheet_data::{SheetData, SheetNeeds};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -168,6 +169,16 @@ impl Study {
     /// docs/scene-format.md). Every problem of the scene is reported at
     /// once, each with its JSON pointer.
     ///
+    /// # Errors
+    ///
+    /// [`Error::Input`]: broken JSON ([`Input::Json`](crate::error::Input::Json)), every problem of
+    /// the fields at once, each at its JSON pointer (unknown names, a
+    /// missing or non-finite number: [`Input::Fields`](crate::error::Input::Fields)), a structure with
+    /// a mobility other than the number of inputs ([`Input::Structure`](crate::error::Input::Structure));
+    /// [`Error::Unsolvable`] where the sketch cannot be assembled.
+    ///
+    /// # Examples
+    ///
     /// ```
     /// // A four-bar: link 0 the frame (the first link), crank 1 turned
     /// // at 10 rad/s from 45°, coupler 2, rocker 3; lengths in m.
@@ -239,11 +250,10 @@ impl Study {
         }
         let mut an = (*fitted.analysis).clone();
         an.scales_at = Arc::default();
-        let (solved, scales) = an.run_rescaled(
-            self.watcher.get(),
-            &|n| drawing::course::shown(&an, n),
-            |all| drawing::course::plan_scales(&an, all, &trajectories(&an, all), &opt),
-        )?;
+        let (solved, scales) =
+            an.run_rescaled(self.watcher.get(), &|n| Chosen::of(&an, n).shown(), |all| {
+                drawing::course::plan_scales(&an, all, &SheetData::solve(&an, all, COURSE)?, &opt)
+            })?;
         an.scales_at = scales;
         let study = Study {
             analysis: Arc::new(an),
@@ -275,8 +285,8 @@ impl Study {
                 first.push(s);
                 Ok(())
             })?;
-            let t = trajectories(&an, &first);
-            an.scales_at = Arc::new(drawing::course::plan_scales(&an, &first, &t, &opt)?);
+            let data = SheetData::solve(&an, &first, COURSE)?;
+            an.scales_at = Arc::new(drawing::course::plan_scales(&an, &first, &data, &opt)?);
         }
         let same = an.drafting.field == self.analysis.drafting.field
             && an.scales_at == self.analysis.scales_at;
@@ -296,6 +306,25 @@ impl Study {
     }
 
     /// A scene file.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Io`] where the file cannot be read (naming it), else those
+    /// of [`Study::from_json`], each message naming the file.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let dir = std::env::temp_dir().join("mechplan-doc-from-path");
+    /// std::fs::create_dir_all(&dir).unwrap();
+    /// let path = dir.join("scene.json");
+    /// std::fs::write(&path, mechplan::DEFAULT_SCENE).unwrap();
+    /// let study = mechplan::Study::from_path(&path)?;
+    /// assert_eq!(study.position_count()?, 12);
+    /// let missing = mechplan::Study::from_path(&dir.join("none.json")).unwrap_err();
+    /// assert!(missing.to_string().contains("none.json"));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn from_path(path: &Path) -> Result<Study> {
         Study::named(&read(path)?, &path.display().to_string())
     }
@@ -494,3 +523,11 @@ impl Study {
         }
     }
 }
+
+/// What the course sheet draws beyond the positions, whose layout fixes
+/// the scales of the plans it shows.
+const COURSE: SheetNeeds = SheetNeeds {
+    trajectories: true,
+    diagrams: false,
+    course: true,
+};

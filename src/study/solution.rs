@@ -10,7 +10,7 @@ use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, Sheet, SheetSize};
 use crate::presentation::report;
-use crate::studies::trajectories::trajectories;
+use crate::studies::sheet_data::SheetData;
 use kurbo::{Point, Vec2};
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -49,6 +49,23 @@ impl<'a> Solution<'a> {
     /// a `count` sweep from 0, given input values from 1), as the sheets,
     /// the result files and `--position` number it; an error naming the
     /// range if there is none.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Input`] at `position` when the study has no position
+    /// `number`, with the range it has.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// let solution = study.solve()?;
+    /// let b = solution.position(3)?.point("B")?;
+    /// assert!(b.velocity().is_some());
+    /// let e = solution.position(12).unwrap_err().to_string();
+    /// assert!(e.contains("from 0 to 11"), "{e}");
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn position(&self, number: usize) -> Result<PositionResult<'_>> {
         let k = super::prepared::position_index(self.an().numbering, number, self.positions.len())
             .map_err(|m| Error::scene("position", m))?;
@@ -138,14 +155,39 @@ impl<'a> Solution<'a> {
         };
         let opt = req.options(self.study.lang());
         let (an, solved) = (self.an(), &self.positions);
-        // The trajectories and the output's extreme positions solved here,
-        // only for the sheets that draw them: presentation never solves.
-        let t = drawing::draws_trajectories(an, solved, &opt).then(|| trajectories(an, solved));
-        drawing::sheets_on_each(an, solved, t.as_ref(), &opt, (&sizes, &only), sink)
+        // What the sheets draw beyond the positions (trajectories, extreme
+        // positions, the chosen positions, the diagrams) solved here, only
+        // for the sheets drawn: presentation never solves.
+        let needs = drawing::sheet_needs(an, solved, &opt, only.is_empty());
+        let data = SheetData::solve(an, solved, needs)?;
+        drawing::sheets_on_each(an, solved, &data, &opt, (&sizes, &only), sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written
     /// and the notes for the user.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Input`] for a request that does not fit the scene (a
+    /// position it has not, a fixed μ_l no sheet holds, naming the
+    /// smallest that fits); those of [`Study::solve`]; [`Error::Write`]
+    /// where a file cannot be written (what was there is kept: each file
+    /// is written whole and renamed).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// let dir = std::env::temp_dir().join("mechplan-doc-draw");
+    /// let req = mechplan::DrawRequest {
+    ///     dir: dir.clone(),
+    ///     positions: vec![3],
+    ///     ..mechplan::DrawRequest::default()
+    /// };
+    /// let written = study.solve()?.draw(&req)?;
+    /// assert!(written.files.iter().any(|f| f.ends_with("velocity_3.svg")));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         req.validate()?;
         let an = self.an();
@@ -391,6 +433,27 @@ pub struct Positions<'a> {
 impl Study {
     /// Solve every position, all kept in memory (for a long sweep, see
     /// [`Study::positions`], which keeps none).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Unsolvable`] naming the input value where the mechanism
+    /// cannot be assembled (lengths that do not reach:
+    /// [`Unsolvable::Assembly`](crate::error::Unsolvable::Assembly)) or where its equations have no unique
+    /// solution (a dead centre, the routes' disagreement beyond their
+    /// bound: [`Unsolvable::Singular`](crate::error::Unsolvable::Singular)).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let study = mechplan::Study::default_scene();
+    /// let solution = study.solve()?;
+    /// assert_eq!(solution.len(), 12);
+    /// // The crank of the lecture's six-link turns clockwise at 10 rad/s
+    /// // (ω1 = −10 rad/s, counterclockwise positive).
+    /// let crank = solution.position(0)?.link("1")?;
+    /// assert_eq!(crank.omega(), Some(-10.0));
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
     pub fn solve(&self) -> Result<Solution<'_>> {
         Ok(Solution::new(self, self.solved()?))
     }

@@ -70,6 +70,15 @@ impl Study {
     /// language is asked by [`CheckRequest::lang`] (through
     /// [`Solution::check_answer`]).
     ///
+    /// # Errors
+    ///
+    /// [`Error::Input`] for an answer that cannot be read (broken JSON, an
+    /// unknown point, a drawing without a pole or scale), each problem at
+    /// its place and naming `name`; the errors of [`Study::solve`]. A wrong
+    /// answer is no error: it is the verdict.
+    ///
+    /// # Examples
+    ///
     /// ```
     /// let study = mechplan::Study::default_scene();
     /// // A student read v_B = 0.3 m/s off a velocity plan drawn at
@@ -452,6 +461,26 @@ impl Centres<'_> {
     pub fn to_json(&self) -> serde_json::Value {
         tables::centres_json(self.solution.an(), self.solution.all(), self.position)
     }
+    /// The same, typed: per position its centres (name, place in m or
+    /// direction at infinity, links, how, the reliability `sin_angle`) and
+    /// the ones that cannot be placed.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let study = mechplan::Study::from_json(mechplan::DEFAULT_SCENE)?;
+    /// let solution = study.solve()?;
+    /// let centres = solution.into_centres(Some(0))?;
+    /// let at = &centres.positions()[0];
+    /// // The crank's centre relative to the frame is its pivot, P12 (a pair).
+    /// let p12 = at.centres.iter().find(|c| c.name == "P12").unwrap();
+    /// assert_eq!(p12.sin_angle, 1.0);
+    /// assert!(p12.at.is_some());
+    /// # Ok::<(), mechplan::Error>(())
+    /// ```
+    pub fn positions(&self) -> Vec<tables::CentresAt> {
+        tables::centres_records(self.solution.an(), self.solution.all(), self.position)
+    }
 }
 
 /// The phases of an output (recess, dwell, approach) and their motion-law
@@ -512,6 +541,10 @@ impl Invariants<'_> {
     /// As `mechplan invariants --format json` writes them.
     pub fn to_json(&self) -> serde_json::Value {
         tables::invariants_json(&self.study.analysis, &self.settings, &self.phases)
+    }
+    /// The same phases, typed, angles in degrees as the file writes them.
+    pub fn phases(&self) -> Vec<tables::PhaseRecord> {
+        tables::phase_records(&self.phases)
     }
 }
 

@@ -27,7 +27,7 @@ pub fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
 
 /// Every phrase of one language, read from its catalogue file
 /// (`src/words/en.json`, `uk.json`, `ru.json`, compiled in): a new
-/// language is one more file and its [`Lang`].
+/// language is one more file and its line in `crate::lang`'s list.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Catalogue {
@@ -59,24 +59,43 @@ pub struct Catalogue {
     pub units: UnitPhrases,
     /// The check of a student's plan: its report and the mistakes it names.
     pub check: CheckPhrases,
+    /// The words `check` reads in a drawing's texts, and the balancing
+    /// moment's subscript.
+    pub reading: ReadingWords,
+}
+
+/// The words of a language that `check` reads in a student's drawing (any
+/// language's, whatever the scene's), and the subscript it names the
+/// balancing moment (force) by.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReadingWords {
+    /// M_b, F_b: "b" (uk "зр", ru "ур": "зрівноважувальний",
+    /// "уравновешивающий").
+    pub balancing_subscript: String,
+    /// The word "plan" (a title's word starting so: "plans", "плани").
+    pub plan_words: Vec<String>,
+    /// Stems of "velocity" and of "acceleration" in a plan's title
+    /// ("velocit", "швидкост").
+    pub velocity_stems: Vec<String>,
+    pub acceleration_stems: Vec<String>,
+}
+
+/// The reading words of every language, in the order of [`Lang::ALL`].
+pub fn every_reading() -> impl Iterator<Item = &'static ReadingWords> {
+    Lang::ALL.into_iter().map(|l| &catalogue(l).reading)
 }
 
 /// The catalogue of `lang`, read once.
 pub fn catalogue(lang: Lang) -> &'static Catalogue {
-    static ALL: OnceLock<[Catalogue; 3]> = OnceLock::new();
+    static ALL: OnceLock<[Catalogue; Lang::ALL.len()]> = OnceLock::new();
     let all = ALL.get_or_init(|| {
-        [
-            include_str!("en.json"),
-            include_str!("uk.json"),
-            include_str!("ru.json"),
-        ]
-        .map(|text| serde_json::from_str(text).expect("the words' catalogues are valid (tested)"))
+        Lang::ALL.map(|l| {
+            serde_json::from_str(l.catalogue_text())
+                .expect("the words' catalogues are valid (tested)")
+        })
     });
-    &all[match lang {
-        Lang::En => 0,
-        Lang::Uk => 1,
-        Lang::Ru => 2,
-    }]
+    &all[lang.index()]
 }
 
 #[cfg(test)]

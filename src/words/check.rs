@@ -102,11 +102,7 @@ mod tests {
 
     /// The `check` section of a language's catalogue file, as JSON.
     fn section(lang: Lang) -> Value {
-        let text = match lang {
-            Lang::En => include_str!("en.json"),
-            Lang::Uk => include_str!("uk.json"),
-            Lang::Ru => include_str!("ru.json"),
-        };
+        let text = lang.catalogue_text();
         let mut v: Value = serde_json::from_str(text).expect("a valid catalogue");
         v["check"].take()
     }

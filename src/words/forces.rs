@@ -11,13 +11,17 @@ use crate::kinetostatics::{Load, Origin};
 use crate::lang::Lang;
 use crate::model::mechanism::Mechanism;
 
-/// The subscript of the balancing moment (force) in `lang`.
+/// The subscript of the balancing moment (force) in `lang` (its
+/// catalogue's `reading.balancing_subscript`).
 pub fn balancing_sub(lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => "b",
-        Lang::Uk => "зр",
-        Lang::Ru => "ур",
-    }
+    &super::catalogue::catalogue(lang).reading.balancing_subscript
+}
+
+/// Whether `key` (a force's name as `check` reads it, letters only) is
+/// the balancing force ("F") or moment ("M") in any language: Fb, Fзр.
+pub fn is_balancing(key: &str, letter: &str) -> bool {
+    super::catalogue::every_reading()
+        .any(|r| key.strip_prefix(letter) == Some(r.balancing_subscript.as_str()))
 }
 
 /// The balancing moment of an input: M_b.

@@ -153,17 +153,21 @@ pub fn check_docs_example(heading: &str, fixture: &str) {
     }
 }
 
-/// The sheets `opt` draws of `solved` (`drawing::sheets`), the points'
-/// trajectories and the output's extreme positions solved first where a
-/// sheet draws them, as `Study::draw` does: presentation never solves.
+/// The sheets `opt` draws of `solved` (`drawing::sheets`), what they draw
+/// beyond the positions (trajectories, extreme positions, chosen
+/// positions, diagrams) solved first, as `Study::draw` does: presentation
+/// never solves. None where that fails (a diagrams sheet that cannot be
+/// built).
 pub fn sheets(
     an: &Analysis,
     solved: &[Solved],
     opt: &mechplan::drawing::DrawOptions,
 ) -> Vec<mechplan::drawing::Sheet> {
-    let t = mechplan::drawing::draws_trajectories(an, solved, opt)
-        .then(|| mechplan::studies::trajectories::trajectories(an, solved));
-    mechplan::drawing::sheets(an, solved, t.as_ref(), opt)
+    let needs = mechplan::drawing::sheet_needs(an, solved, opt, true);
+    match mechplan::studies::sheet_data::SheetData::solve(an, solved, needs) {
+        Ok(data) => mechplan::drawing::sheets(an, solved, &data, opt),
+        Err(_) => Vec::new(),
+    }
 }
 
 /// The `mechplan` binary on `args`: its exit status, standard output and

@@ -143,7 +143,7 @@ fn expect(
     ans: &ForceAnswer,
 ) -> std::result::Result<Expect, String> {
     let k = key(name);
-    if matches!(k.as_str(), "Fb" | "Fзр" | "Fур") {
+    if crate::words::forces::is_balancing(&k, "F") {
         // A driving slider's balancing force is laid off on the polygon:
         // its drafting tolerance, in N.
         if kind != "value" {
@@ -165,7 +165,7 @@ fn expect(
         let tol = (plan.err[v.from] + plan.err[v.to] + ans.delta) * plan.mu;
         return Ok((b, tol, Some(seg.hypot())));
     }
-    if matches!(k.as_str(), "Mb" | "Mзр" | "Mур") {
+    if crate::words::forces::is_balancing(&k, "M") {
         if kind != "value" {
             return Err("the balancing moment (force) is a value, not a segment".into());
         }

@@ -30,7 +30,7 @@ mod plan;
 
 use known::Applied;
 #[cfg(feature = "internals")]
-pub use plan::Drawn;
+pub use plan::{Drawn, DrawnLine};
 pub use plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
 
 use super::loads::Load;

@@ -81,7 +81,13 @@ impl Reader {
             }
         }
         if o.is_empty() {
-            self.err(at, "expected a string or an object of texts by language (en, uk, ru), found an empty object");
+            self.err(
+                at,
+                format!(
+                    "expected a string or an object of texts by language ({}), found an empty object",
+                    Lang::codes()
+                ),
+            );
             return None;
         }
         let default = Lang::ALL

@@ -2,6 +2,7 @@
 //! language.
 
 use super::reader::Reader;
+use crate::lang::Lang;
 use super::{NamedPoint, Scales, Want};
 use serde_json::Value;
 
@@ -118,11 +119,19 @@ impl Reader {
             };
         }
         if let Some(l) = o.get("lang") {
-            match l.as_str() {
-                Some(s @ ("en" | "uk" | "ru")) => w.lang = s.to_owned(),
-                _ => self.err("/want/lang", "expected \"en\", \"uk\" or \"ru\""),
-            }
+            self.lang(l, &mut w.lang);
         }
         Some(w)
+    }
+
+    /// `want.lang`: a language's code ([`Lang::parse`]).
+    fn lang(&mut self, l: &Value, to: &mut String) {
+        match l.as_str().filter(|s| Lang::parse(s).is_some()) {
+            Some(s) => *to = s.to_owned(),
+            None => self.err(
+                "/want/lang",
+                format!("expected a language code: {}", Lang::codes()),
+            ),
+        }
     }
 }

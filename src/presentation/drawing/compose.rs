@@ -18,7 +18,7 @@ use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::presentation::position_number;
 use crate::pipeline::Solved;
-use crate::studies::trajectories::Trajectories;
+use crate::studies::sheet_data::{SheetData, SheetNeeds};
 use kurbo::Rect;
 use std::collections::BTreeMap;
 
@@ -50,13 +50,19 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
     }
 }
 
-/// Whether the sheets `opt` draws for `solved` draw the positions' trajectories
-/// and the output's extreme positions (the positions sheet, the course
-/// sheet): the caller then computes them
-/// ([`crate::studies::trajectories::trajectories`]) and hands them to
-/// [`sheets_on_each`], which only reads them.
-pub fn draws_trajectories(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> bool {
-    asked(an, solved, "positions") || opt.course || asked(an, solved, "course")
+/// What the sheets `opt` draws for `solved` need solved beyond the
+/// positions (`all`: every position's sheets are drawn, not only some):
+/// the positions sheet and the course sheet their trajectories and the
+/// chosen positions, the diagrams sheet and the course sheet the
+/// diagrams. The caller solves them ([`SheetData::solve`]) and hands them
+/// to [`sheets_on_each`], which only reads them.
+pub fn sheet_needs(an: &Analysis, solved: &[Solved], opt: &DrawOptions, all: bool) -> SheetNeeds {
+    let course = opt.course || asked(an, solved, "course");
+    SheetNeeds {
+        trajectories: asked(an, solved, "positions") || course,
+        diagrams: all && diagram::asked(an),
+        course,
+    }
 }
 
 /// The drawings a scene asks for (`want.drawings`; by default the plan
@@ -65,17 +71,17 @@ pub fn draws_trajectories(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -
 /// `opt.sheet`, each figure at the scale that fills its field; a μ_l the
 /// scene fixes that does not fit is replaced by the one that fills (the
 /// sheets say which). `mechplan draw` uses [`sheets_on`], which refuses
-/// instead. `t`: the trajectories, where [`draws_trajectories`].
+/// instead. `data`: what [`sheet_needs`] names, solved.
 #[cfg(feature = "internals")]
 pub fn sheets(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
 ) -> Vec<Sheet> {
-    match sheets_on(an, solved, t, opt, &[opt.sheet]) {
+    match sheets_on(an, solved, data, opt, &[opt.sheet]) {
         Ok((s, _)) => s,
-        Err(_) => compose(an, solved, t, opt, Scale::Fill).unwrap_or_default(),
+        Err(_) => compose(an, solved, data, opt, Scale::Fill).unwrap_or_default(),
     }
 }
 
@@ -99,12 +105,12 @@ enum Scale {
 pub fn sheets_on(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
     let mut sheets = Vec::new();
-    let size = sheets_on_each(an, solved, t, opt, (sizes, &[]), &mut |s| {
+    let size = sheets_on_each(an, solved, data, opt, (sizes, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -114,14 +120,13 @@ pub fn sheets_on(
 /// [`sheets_on`], each sheet handed to `sink` as soon as it is drawn (a
 /// sheet is dropped there: memory flat in the number of positions); with
 /// `only` (positions from 0, none: all), only those positions' sheets,
-/// drawn at the scales of the whole set and numbered as in it. `t`: the
-/// trajectories of `solved`, computed by the caller where
-/// [`draws_trajectories`] (presentation never solves); without them such
-/// a sheet is an internal error.
+/// drawn at the scales of the whole set and numbered as in it. `data`:
+/// what [`sheet_needs`] names, solved by the caller (presentation never
+/// solves); a sheet without its data is an internal error.
 pub fn sheets_on_each(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
     (sizes, only): (&[SheetSize], &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
@@ -132,11 +137,11 @@ pub fn sheets_on_each(
             sheet: first,
             ..*opt
         };
-        compose_each(an, solved, t, &opt, (Scale::Scene, only), sink)?;
+        compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
         return Ok(first);
     };
     let t = match asked(an, solved, "positions") {
-        true => Some(positions::given(t)?),
+        true => Some(positions::given(data, solved.len())?),
         false => None,
     };
     // Counted before anything is drawn: the joints alone at μ_l. A drawing
@@ -158,7 +163,7 @@ pub fn sheets_on_each(
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            compose_each(an, solved, t, &opt, (Scale::Scene, only), sink)?;
+            compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
             return Ok(size);
         }
     }
@@ -172,7 +177,7 @@ fn mechanism_union(
     solved: &[Solved],
     opt: &DrawOptions,
     mu_l: f64,
-    t: Option<&Trajectories>,
+    t: Option<positions::Drawn>,
 ) -> Rect {
     let mut u = mechanism_bounds(an, solved, opt, mu_l);
     if let Some(t) = t {
@@ -193,7 +198,7 @@ fn misfit(
     sizes: &[SheetSize],
     (u, at_least): (Rect, bool),
     mu_l: f64,
-    t: Option<&Trajectories>,
+    t: Option<positions::Drawn>,
 ) -> Error {
     use crate::format::format_quantity as q;
     let first = sizes.first().copied().unwrap_or(opt.sheet);
@@ -252,12 +257,12 @@ fn misfit(
 fn compose(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
     how: Scale,
 ) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
-    compose_each(an, solved, t, opt, (how, &[]), &mut |s| {
+    compose_each(an, solved, data, opt, (how, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -282,19 +287,19 @@ struct Shared {
 fn compose_each(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
     (how, only): (Scale, &[usize]),
     sink: &mut dyn FnMut(Sheet) -> Result<()>,
 ) -> Result<()> {
     fixed_plan_scales(an, solved, opt)?;
-    let shared = shared_scales(an, solved, t, opt, how)?;
+    let shared = shared_scales(an, solved, data, opt, how)?;
     let all = only.is_empty();
     let mut lead = 0;
     if opt.course || asked(an, solved, "course") {
         lead += 1;
-        let course = course::sheet(an, solved, positions::given(t)?, opt)?;
-        let forces = course_forces::sheet(an, solved, opt)?;
+        let course = course::sheet(an, solved, data, opt)?;
+        let forces = course_forces::sheet(an, solved, data, opt)?;
         lead += usize::from(forces.is_some());
         if all {
             sink(course)?;
@@ -327,7 +332,7 @@ fn compose_each(
         sheet.position = at.map(|k| position_number(an, k));
         sink(sheet)
     })?;
-    if all && let Some(d) = diagram::wanted(an, opt)? {
+    if all && let Some(d) = diagram::wanted(an, data, opt)? {
         sink(d)?;
     }
     Ok(())
@@ -337,7 +342,7 @@ fn compose_each(
 fn shared_scales(
     an: &Analysis,
     solved: &[Solved],
-    t: Option<&Trajectories>,
+    data: &SheetData,
     opt: &DrawOptions,
     how: Scale,
 ) -> Result<Shared> {
@@ -357,7 +362,7 @@ fn shared_scales(
         return Ok(out);
     }
     if asked(an, solved, "positions") {
-        let t = positions::given(t)?;
+        let t = positions::given(data, solved.len())?;
         let draw = |mu: f64| {
             let mut c = Canvas::default();
             positions::draw(an, solved, t, &mut c, mu);

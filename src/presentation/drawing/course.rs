@@ -16,7 +16,6 @@ use super::canvas::{Canvas, SMALL};
 use super::pack::{Figure, GAP, caption_line, field_of, pack, place, round3, size};
 use super::sheet::{self, Page};
 use super::table::{self, Ruled, number, unit};
-use super::chosen::{chosen, position};
 use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
@@ -26,13 +25,13 @@ use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
-use crate::studies::trajectories::Trajectories;
+use crate::studies::sheet_data::SheetData;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
 
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
-    Positions(&'a Trajectories),
+    Positions(positions::Drawn<'a>),
     /// The velocity plans of these positions (the k-th, from 1: not their
     /// numbers, which `position_number` gives) at one μ_v, in a
     /// grid of this many columns.
@@ -48,22 +47,24 @@ enum Source<'a> {
 /// drawing read at arm's length), their indices 2.5 mm.
 pub const COURSE_LETTERING: f64 = 2.5 / (0.7 * 2.5) * 1.0001;
 
-/// The course sheet of `solved` (every position of the scene), with their
-/// trajectories `t` ([`crate::studies::trajectories::trajectories`]), its
-/// lettering [`COURSE_LETTERING`] times the other sheets'.
-pub fn sheet(an: &Analysis, solved: &[Solved], t: &Trajectories, opt: &DrawOptions) -> Result<Sheet> {
-    super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, t, opt))
+/// The course sheet of `solved` (every position of the scene), with what
+/// it draws beyond them solved in `data` (trajectories, chosen positions,
+/// diagrams: [`crate::studies::sheet_data`]), its lettering
+/// [`COURSE_LETTERING`] times the other sheets'.
+pub fn sheet(an: &Analysis, solved: &[Solved], data: &SheetData, opt: &DrawOptions) -> Result<Sheet> {
+    super::canvas::with_lettering(COURSE_LETTERING, || course_sheet(an, solved, data, opt))
 }
 
 /// The sheet's figures placed on its field, and the positions whose plans
 /// they show (velocity, acceleration).
 type Layout = (Vec<(Figure, Point)>, (Vec<usize>, Vec<usize>));
 
-fn layout(an: &Analysis, solved: &[Solved], t: &Trajectories, opt: &DrawOptions) -> Result<Layout> {
+fn layout(an: &Analysis, solved: &[Solved], data: &SheetData, opt: &DrawOptions) -> Result<Layout> {
     let size = size(opt);
     let lang = opt.lang;
-    let chosen = chosen(an, solved);
-    let fixed = fixed_figures(an, solved, size, lang, &chosen);
+    let t = positions::given(data, solved.len())?;
+    let chosen = (data.chosen.velocity.clone(), data.chosen.acceleration.clone());
+    let fixed = fixed_figures(an, solved, data, (size, lang), &chosen);
     // The velocity plans' grid: of the column counts tried, the one that
     // draws them largest (the smallest μ_v) while no other figure is drawn
     // smaller than with the default grid. A grid of 5 × 3 cells, each as
@@ -145,28 +146,18 @@ fn layout_with(
     Ok(placed)
 }
 
-/// The positions (from 0) of `n` whose plans the course sheet shows: the
-/// ones [`plan_scales`] may fix the scales of, known before any is solved.
-pub fn shown(an: &Analysis, n: usize) -> Vec<usize> {
-    let (vel_at, acc_at) = super::chosen::chosen_of(an, n);
-    let mut at: Vec<usize> = vel_at.into_iter().chain(acc_at).filter(|&k| k >= 1).map(|k| k - 1).collect();
-    at.sort_unstable();
-    at.dedup();
-    at
-}
-
 /// The scales the course sheet draws its plans at, by position (from 0:
 /// μ_v, μ_a): one μ_v for every velocity plan it shows, each acceleration
-/// plan's μ_a. Built at them, the plans state them everywhere. `t`: the
-/// trajectories of `solved` the sheet draws.
+/// plan's μ_a. Built at them, the plans state them everywhere. `data`:
+/// what the sheet draws beyond `solved`, solved.
 pub fn plan_scales(
     an: &Analysis,
     solved: &[Solved],
-    t: &Trajectories,
+    data: &SheetData,
     opt: &DrawOptions,
 ) -> Result<crate::kinematics::solve::ScalesAt> {
     let (placed, (vel_at, _)) = super::canvas::with_lettering(COURSE_LETTERING, || {
-        layout(an, solved, t, opt)
+        layout(an, solved, data, opt)
     })?;
     let mut out = crate::kinematics::solve::ScalesAt::new();
     for (f, _) in &placed {
@@ -191,17 +182,17 @@ pub fn plan_scales(
 fn course_sheet(
     an: &Analysis,
     solved: &[Solved],
-    t: &Trajectories,
+    data: &SheetData,
     opt: &DrawOptions,
 ) -> Result<Sheet> {
     let size = size(opt);
     let w = words(opt.lang);
-    let (placed, _) = layout(an, solved, t, opt)?;
+    let (placed, _) = layout(an, solved, data, opt)?;
     let mut page = Page::new(size);
     place(&mut page, &placed);
     let title = w.course.to_string();
     // Sheet 1 of 2 when the force analysis sheet follows.
-    let sheets = if position_has_forces(an, solved) {
+    let sheets = if position_has_forces(solved, data) {
         2
     } else {
         1
@@ -234,8 +225,8 @@ fn has_plans(solved: &[Solved]) -> (bool, bool) {
 fn fixed_figures(
     an: &Analysis,
     solved: &[Solved],
-    size: SheetSize,
-    lang: Lang,
+    data: &SheetData,
+    (size, lang): (SheetSize, Lang),
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
 ) -> Vec<Figure> {
     let w = words(lang);
@@ -243,15 +234,12 @@ fn fixed_figures(
     let mut fixed: Vec<Figure> = Vec::new();
     let cylinder = !an.mech.scene.several_inputs() && !super::cylinder::pairs(an).is_empty();
     if (matches!(an.mech.scene.positions, PositionsSpec::Count { .. }) || cylinder)
-        && let Ok(d) = crate::studies::diagrams::Diagrams::build(
-            an,
-            crate::studies::invariants::default_output(an),
-            12,
-            match size {
+        && let Some(d) = data.diagrams.as_ref().map(|d| {
+            d.at_length(match size {
                 SheetSize::A1 => 340.0,
                 _ => 120.0,
-            },
-        )
+            })
+        })
     {
         fixed.push(Figure {
             id: "diagrams".into(),
@@ -289,7 +277,7 @@ fn fixed_figures(
 /// the `chosen` positions' plans (drawn at a scale), then the `fixed`
 /// ones (share 0).
 fn sources<'a>(
-    (solved, t): (&[Solved], &'a Trajectories),
+    (solved, t): (&[Solved], positions::Drawn<'a>),
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
     fixed: &'a [Figure],
     cols: usize,
@@ -455,7 +443,7 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
         Source::Fixed(f) => Some((*f).clone()),
         Source::Positions(t) => {
             let mut c = Canvas::default();
-            positions::draw(an, solved, t, &mut c, mu);
+            positions::draw(an, solved, *t, &mut c, mu);
             Some(Figure {
                 id: "positions".into(),
                 caption: vec![format!(
@@ -609,12 +597,11 @@ fn results(an: &Analysis, solved: &[Solved], at: &[usize], kind: PlanKind, lang:
     Ruled { head, rows }
 }
 
-
 /// Whether the second sheet is drawn: the analysed position has force
 /// plans.
-pub fn position_has_forces(an: &Analysis, solved: &[Solved]) -> bool {
+pub fn position_has_forces(solved: &[Solved], data: &SheetData) -> bool {
     !solved.is_empty()
-        && solved[position(an, solved)]
+        && solved[data.chosen.analysed(solved.len())]
             .dynamics
             .as_ref()
             .is_some_and(|d| d.force_plans.is_some())

@@ -13,7 +13,7 @@
 //! until everything packs.
 
 use super::canvas::Canvas;
-use super::chosen::position;
+use crate::studies::sheet_data::SheetData;
 use super::pack::{self, Figure};
 use super::sheet::{self, Page};
 use super::table::{Ruled, number};
@@ -194,17 +194,27 @@ fn figures(
 
 /// The second course sheet; `None` without force plans. Lettered as the
 /// first ([`super::course::COURSE_LETTERING`]).
-pub fn sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
+pub fn sheet(
+    an: &Analysis,
+    solved: &[Solved],
+    data: &SheetData,
+    opt: &DrawOptions,
+) -> Result<Option<Sheet>> {
     super::canvas::with_lettering(super::course::COURSE_LETTERING, || {
-        forces_sheet(an, solved, opt)
+        forces_sheet(an, solved, data, opt)
     })
 }
 
-fn forces_sheet(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<Option<Sheet>> {
+fn forces_sheet(
+    an: &Analysis,
+    solved: &[Solved],
+    data: &SheetData,
+    opt: &DrawOptions,
+) -> Result<Option<Sheet>> {
     if solved.is_empty() {
         return Ok(None);
     }
-    let k = position(an, solved);
+    let k = data.chosen.analysed(solved.len());
     let s = &solved[k];
     if s.dynamics
         .as_ref()

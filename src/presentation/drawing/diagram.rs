@@ -10,6 +10,7 @@ use super::canvas::{Canvas, Class, Label, SMALL};
 use super::table::{number, unit};
 use super::{DrawOptions, Sheet, page_svg};
 use crate::kinematics::solve::Analysis;
+use crate::studies::sheet_data::SheetData;
 use crate::studies::diagrams::{DENSE, Diagrams};
 use crate::words::catalogue::fill;
 use crate::words::construction::Lang;
@@ -301,15 +302,25 @@ fn curve(c: &mut Canvas, pts: &[Point], class: Class) {
     }
 }
 
-/// The diagrams sheet a scene asks for (`want.drawings` has "diagrams"):
-/// the output of the last group, N = 12 as the lecture draws them.
-pub fn wanted(an: &Analysis, opt: &DrawOptions) -> crate::error::Result<Option<Sheet>> {
-    if !an.mech.scene.want.drawings.iter().any(|w| w == "diagrams") {
+/// Whether the scene asks for the diagrams sheet (`want.drawings` has
+/// "diagrams").
+pub fn asked(an: &Analysis) -> bool {
+    an.mech.scene.want.drawings.iter().any(|w| w == "diagrams")
+}
+
+/// The diagrams sheet a scene asks for ([`asked`]): the output of the last
+/// group, N = 12 as the lecture draws them, from the diagrams solved in
+/// `data` (an internal error where they were not).
+pub fn wanted(an: &Analysis, data: &SheetData, opt: &DrawOptions) -> crate::error::Result<Option<Sheet>> {
+    if !asked(an) {
         return Ok(None);
     }
-    let out = crate::studies::invariants::default_output(an);
-    let d = Diagrams::build(an, out, 12, LENGTH)?;
-    Ok(Some(sheet(an, &d, opt)))
+    let d = data.diagrams.as_ref().ok_or_else(|| {
+        crate::error::Error::Internal(
+            "the diagrams sheet needs the diagrams (studies::sheet_data), not given".into(),
+        )
+    })?;
+    Ok(Some(sheet(an, &d.at_length(LENGTH), opt)))
 }
 
 /// The abscissa of a revolution, mm.

@@ -2,10 +2,10 @@
 //! velocities and accelerations, the positions sheet and the course sheet,
 //! as SVG sheets with the ГОСТ 2.104 frame (and title block), exported to
 //! PNG (resvg) and PDF (svg2pdf). The drawing code only reads the
-//! analysis: the kernel knows nothing of SVG. The positions' trajectories
-//! and the output's extreme positions the positions and course sheets
-//! draw are handed in solved ([`crate::studies::trajectories`]; see
-//! [`draws_trajectories`]).
+//! analysis: the kernel knows nothing of SVG. What the sheets draw beyond
+//! the solved positions (the trajectories and extreme positions, the
+//! positions a course singles out, the kinematic diagrams) is handed in
+//! solved ([`crate::studies::sheet_data`]; see [`sheet_needs`]).
 //!
 //! Every figure is drawn at the scale that fills its field: the smallest
 //! standard μ (1, 2, 2.5, 4, 5 × 10^k, ГОСТ 2.302) at which the drawing,
@@ -15,7 +15,6 @@
 
 pub mod canvas;
 mod captions;
-pub mod chosen;
 mod compose;
 pub mod centres;
 pub mod course;
@@ -51,7 +50,7 @@ pub use export::{pdf, pdf_book, png};
 pub(crate) use captions::{position_text, scale_label, scale_text, words};
 #[cfg(feature = "internals")]
 pub use compose::{sheets, sheets_on};
-pub use compose::{draws_trajectories, sheets_on_each};
+pub use compose::{sheet_needs, sheets_on_each};
 pub use layout::plan_field;
 pub(crate) use layout::{Pending, field_size, fill, lower_scale, mechanism_extent, page_svg, reduction, main_title_block, title_block};
 pub use kind::SheetKind;

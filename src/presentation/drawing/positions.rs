@@ -13,21 +13,19 @@ use super::mechanism::body_points;
 use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
+use crate::studies::sheet_data::SheetData;
 use crate::studies::trajectories::{Trajectories, crank_tip};
 use kurbo::Point;
 
 /// The positions sheet's drawing of `solved` at `mu_l`, with their
 /// trajectories `t` ([`crate::studies::trajectories::trajectories`]).
-pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, mu_l: f64) {
+pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f64) {
+    let (t, bold) = (d.t, d.bold);
     let m = &an.mech;
     if solved.is_empty() {
         return;
     }
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    // The bold position: the one the course analyses (the middle of the
-    // working stroke by default), not the first, an extreme position where
-    // a slider-crank's links lie on one line.
-    let bold = super::chosen::position(an, solved);
     super::mechanism::draw_over(an, &solved[bold], solved, c, mu_l, true);
     let input = m.scene.input.link();
     let tip = crank_tip(m);
@@ -127,14 +125,29 @@ pub fn draw(an: &Analysis, solved: &[Solved], t: &Trajectories, c: &mut Canvas, 
     c.place_pending();
 }
 
-/// The trajectories a drawing of the positions reads: an internal error
-/// where the caller did not compute them (presentation never solves).
-pub fn given(t: Option<&Trajectories>) -> crate::error::Result<&Trajectories> {
-    t.ok_or_else(|| {
+/// What a drawing of the positions reads beyond the positions: their
+/// trajectories and the position drawn bold.
+#[derive(Clone, Copy)]
+pub struct Drawn<'a> {
+    pub t: &'a Trajectories,
+    /// The position the course analyses (from 0): the middle of the working
+    /// stroke by default, not the first, an extreme position where a
+    /// slider-crank's links lie on one line.
+    pub bold: usize,
+}
+
+/// The data a drawing of the `n` positions reads: an internal error where
+/// the caller did not solve the trajectories (presentation never solves).
+pub fn given(data: &SheetData, n: usize) -> crate::error::Result<Drawn<'_>> {
+    let t = data.trajectories.as_ref().ok_or_else(|| {
         crate::error::Error::Internal(
-            "the drawing of the positions needs their trajectories (studies::trajectories), not given"
+            "the drawing of the positions needs their trajectories (studies::sheet_data), not given"
                 .into(),
         )
+    })?;
+    Ok(Drawn {
+        t,
+        bold: data.chosen.analysed(n),
     })
 }
 

@@ -23,6 +23,9 @@ mod model;
 #[cfg(feature = "internals")]
 pub use model::Exact;
 mod real;
+#[cfg(feature = "internals")]
 pub use real::Real;
+#[cfg(not(feature = "internals"))]
+pub(crate) use real::Real;
 mod solution;
 pub use solution::*;

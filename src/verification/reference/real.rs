@@ -11,9 +11,19 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// Working precision, bits (≈ 57 decimal digits).
 pub const BITS: usize = 192;
 
-/// A real number of [`BITS`] bits.
-#[derive(Clone, Debug, PartialEq, PartialOrd)]
-pub struct Real(FBig<HalfEven, 2>);
+/// The number type, public to the project's tests (`internals`) only:
+/// the product reaches it through no public item.
+macro_rules! real {
+    ($vis:vis) => {
+        /// A real number of [`BITS`] bits.
+        #[derive(Clone, Debug, PartialEq, PartialOrd)]
+        $vis struct Real(FBig<HalfEven, 2>);
+    };
+}
+#[cfg(feature = "internals")]
+real!(pub);
+#[cfg(not(feature = "internals"))]
+real!(pub(crate));
 
 impl Real {
     /// The exact value of an f64 (every finite f64 is a dyadic rational).
@@ -33,6 +43,7 @@ impl Real {
         PI.get_or_init(|| Real(FBig::<HalfEven, 2>::pi(BITS)))
             .clone()
     }
+    #[cfg(feature = "internals")]
     /// Degrees to radians with the extended π.
     pub fn from_degrees(deg: &Real) -> Real {
         deg * &Real::pi() / Real::from_f64(180.0)

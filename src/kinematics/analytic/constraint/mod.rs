@@ -12,5 +12,8 @@
 mod answer;
 mod path;
 pub use answer::{Conditioning, Factors, Unknowns};
+// Named by the tests that read a corrected answer (`internals`).
+#[cfg(feature = "internals")]
+pub use answer::Corrected;
 mod solver;
 pub use solver::*;

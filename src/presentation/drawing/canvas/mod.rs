@@ -10,6 +10,9 @@
 //! writing as SVG and the number formatter.
 
 mod grid;
+// Named by the tests that read a canvas's boxes (`internals`).
+#[cfg(feature = "internals")]
+pub use grid::Grid;
 mod label;
 mod placement;
 mod primitives;
