@@ -39,6 +39,7 @@ fn family(k: &SheetKind) -> &'static str {
         SheetKind::Course => "course",
         SheetKind::CourseForces => "course_forces",
         SheetKind::Forces(_) => "forces",
+        SheetKind::ForcesPart { .. } => "forces of a group",
         SheetKind::Lever { input: None, .. } => "lever",
         SheetKind::Lever { input: Some(_), .. } => "lever of an input",
     }
@@ -51,6 +52,11 @@ fn every_sheet_drawn_is_named_by_its_kind() {
         ("dynamics/arm_two_cylinders.json", &["--course"][..]),
         ("dynamics/six_link_fig2_10.json", &["--course"][..]),
         ("four_bar.json", &[][..]),
+        // On the A4 asked for, the six-link's groups one to a sheet.
+        (
+            "dynamics/six_link_fig2_10.json",
+            &["--sheet", "A4", "--title-block", "--position", "1"][..],
+        ),
     ] {
         let dir = common::fresh("names", &scene.replace('/', "-"));
         let (code, out) = draw(scene, &dir, args);
@@ -75,6 +81,7 @@ fn every_sheet_drawn_is_named_by_its_kind() {
         "course",
         "course_forces",
         "forces",
+        "forces of a group",
         "lever",
         "lever of an input",
     ];
@@ -89,7 +96,7 @@ fn sheets_of_every_kind_not_from_this_run_are_told() {
     let old = [
         "velocity_99.svg",
         "forces_99.svg",
-        "lever_99.svg",
+        "forces_99_2.svg",
         "lever_99_2.pdf",
         "course_forces.svg",
         "mechanism_99.dxf",

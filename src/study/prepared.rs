@@ -108,6 +108,7 @@ impl DrawRequest {
             table: self.table,
             centres: self.centres,
             course: self.course,
+            fixed_sheet: self.sheet.is_some(),
         }
     }
 }

@@ -16,6 +16,7 @@ use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
+use crate::kinetostatics::force_plan::ForcePlan;
 use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use crate::studies::sheet_data::{SheetData, SheetNeeds};
@@ -474,7 +475,7 @@ fn position_sheets(
         {
             continue;
         }
-        let (plan, c, t) = plan_figure(an, s, kind, opt);
+        let (plan, c, t) = plan_figure(an, (k, s), kind, opt);
         let n = position_number(an, k);
         let (sym, unit, key, sheet) = match kind {
             PlanKind::Velocity => ("v", "m/s", "mu_v", SheetKind::Velocity(n)),
@@ -491,18 +492,26 @@ fn position_sheets(
             )
         });
     }
-    if asked(an, solved, "forces")
-        && let Some((size, f)) = force_figure(an, s, opt)
-    {
+    let parts = match asked(an, solved, "forces") {
+        true => force_figures(an, s, opt),
+        false => Vec::new(),
+    };
+    let several = parts.len() > 1;
+    for (part, (size, f)) in parts.into_iter().enumerate() {
         // Each panel states its μ_l and μ_F: the heading none.
         let mut scales: Vec<(&'static str, f64)> = f.mu_l.iter().map(|&m| ("mu_l", m)).collect();
         scales.extend(f.mu_f.iter().map(|&m| ("mu_F", m)));
+        let position = position_number(an, k);
+        let kind = match several {
+            true => SheetKind::ForcesPart { position, part },
+            false => SheetKind::Forces(position),
+        };
         out.push(Pending {
             sheet: (size != opt.sheet).then_some(size),
             scale: None,
             scales,
             ..pending(
-                SheetKind::Forces(position_number(an, k)).stem(),
+                kind.stem(),
                 format!("{}, {pos}", forces::title(opt.lang)),
                 String::new(),
                 ("mu_l", 0.0),
@@ -514,15 +523,55 @@ fn position_sheets(
     Ok(out)
 }
 
-/// The force sheet of position `s` on the first of the run's sheet and
-/// the larger ones on which every free body is drawn at least
-/// [`forces::LEAST_BODY`] (else on the largest), with its size.
-fn force_figure(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Option<(SheetSize, forces::Figure)> {
+/// The force sheets of position `s`, each with its size (none without
+/// force plans). Where the user asked for the sheet (`--sheet`:
+/// `opt.fixed_sheet`), on it: every group on one sheet where a grid
+/// holds them (the polygons' equations left off where that is what it
+/// takes), else each group on a sheet of its own (`forces_N_M`), and only
+/// a group no such sheet holds on a larger one. Else one sheet, on the
+/// run's sheet or the first larger one on which each free body is drawn
+/// at least [`forces::LEAST_BODY`].
+fn force_figures(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Vec<(SheetSize, forces::Figure)> {
+    let Some(plans) = s
+        .dynamics
+        .as_ref()
+        .and_then(|d| d.force_plans.as_ref())
+        .map(|f| &f.plans[..])
+    else {
+        return Vec::new();
+    };
+    if !opt.fixed_sheet {
+        return larger_force_figure(an, s, opt, plans).into_iter().collect();
+    }
+    let field = field_size(opt, 0.0);
+    let on_asked = |plans: &[ForcePlan]| {
+        forces::figure_of(an, s, opt, (field, false), plans)
+            .or_else(|| forces::figure_of(an, s, opt, (field, true), plans))
+            .map(|f| (opt.sheet, f))
+    };
+    if let Some(whole) = on_asked(plans) {
+        return vec![whole];
+    }
+    plans
+        .chunks(1)
+        .filter_map(|one| on_asked(one).or_else(|| larger_force_figure(an, s, opt, one)))
+        .collect()
+}
+
+/// The force sheet of `plans` on the run's sheet or the first larger one
+/// on which every free body is drawn at least [`forces::LEAST_BODY`],
+/// else on the largest that holds them.
+fn larger_force_figure(
+    an: &Analysis,
+    s: &Solved,
+    opt: &DrawOptions,
+    plans: &[ForcePlan],
+) -> Option<(SheetSize, forces::Figure)> {
     let mut last = None;
     for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
         let o = DrawOptions { sheet: size, ..*opt };
-        // None: no force plans, or none of the grids holds the polygons.
-        let Some(f) = forces::figure(an, s, &o, (field_size(&o, 0.0), false)) else {
+        // None: none of the grids holds the polygons.
+        let Some(f) = forces::figure_of(an, s, &o, (field_size(&o, 0.0), false), plans) else {
             continue;
         };
         if f.smallest >= forces::LEAST_BODY {
@@ -654,11 +703,22 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
 /// table for it.
 fn plan_figure(
     an: &Analysis,
-    s: &Solved,
+    (k, s): (usize, &Solved),
     kind: PlanKind,
     opt: &DrawOptions,
 ) -> (Plan, Canvas, Option<table::Ruled>) {
-    let (plan, _, _) = plan_extent(s, kind, opt);
+    let (plan, points, field) = plan_extent(s, kind, opt);
+    // A plan built at the course sheet's scale (`scales_at`) is that
+    // sheet's; its own sheet draws it built again at the scale that fills
+    // its own field (every sheet at its own scale on its own paper).
+    let course = an.scales_at.get(&k).is_some_and(|&(v, a)| match kind {
+        PlanKind::Velocity => v.is_some(),
+        PlanKind::Acceleration => a.is_some(),
+    });
+    if course && let Some((_, (own, c))) = fitting_scale(an, s, kind, (plan, points), field) {
+        let table = opt.table.then(|| table::plan_table(&own, opt.lang));
+        return (own, c, table);
+    }
     let table = opt.table.then(|| table::plan_table(plan, opt.lang));
     (plan.clone(), draw_plan(an, plan), table)
 }

@@ -146,7 +146,7 @@ fn figures(
         let draw = |l: &crate::kinetostatics::lever::Lever| {
             let mu_f = lever::force_scale(l);
             let mut c = Canvas::default();
-            lever::draw(an, l, &mut c, mu_f, lang);
+            lever::draw(an, l, &mut c, (mu_f, lever_box.0), lang);
             c
         };
         let e = first.plan.points.iter().fold(kurbo::Rect::ZERO, |r, p| {

@@ -10,7 +10,9 @@ use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::{DrawOptions, fill, force_polygon, lower_scale, table};
 use crate::kinematics::solve::Analysis;
-use crate::kinetostatics::force_plan::ForcePlan;
+use crate::kinematics::construction::scale::standard_above;
+use crate::kinetostatics::force_plan::{self, ForcePlan, Which};
+use crate::kinetostatics::loads::Load;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::catalogue::fill as phrase;
@@ -164,12 +166,65 @@ pub fn figure(
     opt: &DrawOptions,
     (field, may_drop): ((f64, f64), bool),
 ) -> Option<Figure> {
+    let fp = s.dynamics.as_ref()?.force_plans.as_ref()?;
+    figure_of(an, s, opt, (field, may_drop), &fp.plans)
+}
+
+/// The figure of position `s`'s force plans `plans` (all, or one group's
+/// where a sheet holds them one by one) on a field of `field` mm; `None`
+/// where none, or where no grid holds them. Where no grid holds the
+/// polygons as built, each is built again at the next standard μ_F up,
+/// round by round, until the panels hold them: a construction at that
+/// scale, stated in its panel.
+pub fn figure_of(
+    an: &Analysis,
+    s: &Solved,
+    opt: &DrawOptions,
+    (field, may_drop): ((f64, f64), bool),
+    plans: &[ForcePlan],
+) -> Option<Figure> {
     let d = s.dynamics.as_ref()?;
-    let fp = d.force_plans.as_ref()?;
-    let plans = &fp.plans;
     if plans.is_empty() {
         return None;
     }
+    let mut sheet = try_figure(an, s, opt, (field, may_drop), plans);
+    let mut plans = plans.to_vec();
+    for _ in 0..8 {
+        if sheet.is_some() {
+            break;
+        }
+        plans = plans
+            .iter()
+            .map(|p| at_scale(an, s, &d.loads, p, standard_above(p.mu)))
+            .collect::<Option<Vec<_>>>()?;
+        sheet = try_figure(an, s, opt, (field, may_drop), &plans);
+    }
+    sheet
+}
+
+/// `plan` built again at the scale `mu` N/mm (the force construction of
+/// its group or input at that μ_F).
+fn at_scale(an: &Analysis, s: &Solved, loads: &[Load], plan: &ForcePlan, mu: f64) -> Option<ForcePlan> {
+    let which = match (plan.group, plan.input) {
+        (Some(g), _) => Which::Group(g),
+        (None, Some(i)) => Which::Input(i),
+        (None, None) => return None,
+    };
+    let all = force_plan::solve_at(an, s, loads, plan.delta, Some((which, mu))).ok()?;
+    all.plans
+        .into_iter()
+        .find(|p| p.group == plan.group && p.input == plan.input)
+}
+
+/// [`figure`] of the force plans `plans` as they are built.
+fn try_figure(
+    an: &Analysis,
+    s: &Solved,
+    opt: &DrawOptions,
+    (field, may_drop): ((f64, f64), bool),
+    plans: &[ForcePlan],
+) -> Option<Figure> {
+    let d = s.dynamics.as_ref()?;
     let loads = &d.loads;
     let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
     let scene = |i: usize| Scene {

@@ -24,6 +24,15 @@ pub enum SheetKind {
     CourseForces,
     /// The force analysis at one position (`forces_N`).
     Forces(usize),
+    /// One group's (or input's) force analysis at one position, where
+    /// the sheet asked for holds them only one by one (`forces_N_M`, M
+    /// from 1 in the order of the analysis).
+    ForcesPart {
+        /// The position's number.
+        position: usize,
+        /// The part, from 0.
+        part: usize,
+    },
     /// Zhukovsky's lever at one position (`lever_N`), of one input
     /// (`lever_N_M`, M from 1) where the mechanism has several.
     Lever {
@@ -46,6 +55,7 @@ impl SheetKind {
             SheetKind::Course => "course".into(),
             SheetKind::CourseForces => "course_forces".into(),
             SheetKind::Forces(n) => format!("forces_{n}"),
+            SheetKind::ForcesPart { position, part } => format!("forces_{position}_{}", part + 1),
             SheetKind::Lever { position, input: None } => format!("lever_{position}"),
             SheetKind::Lever {
                 position,
@@ -73,7 +83,16 @@ impl SheetKind {
             "mechanism" => number(rest).map(SheetKind::Mechanism),
             "velocity" => number(rest).map(SheetKind::Velocity),
             "acceleration" => number(rest).map(SheetKind::Acceleration),
-            "forces" => number(rest).map(SheetKind::Forces),
+            "forces" => match rest.split_once('_') {
+                None => number(rest).map(SheetKind::Forces),
+                Some((p, m)) => {
+                    let (position, m) = (number(p)?, number(m)?);
+                    (m >= 1).then_some(SheetKind::ForcesPart {
+                        position,
+                        part: m - 1,
+                    })
+                }
+            },
             "lever" => match rest.split_once('_') {
                 None => number(rest).map(|position| SheetKind::Lever {
                     position,
@@ -113,6 +132,10 @@ mod tests {
             SheetKind::Course,
             SheetKind::CourseForces,
             SheetKind::Forces(7),
+            SheetKind::ForcesPart {
+                position: 7,
+                part: 1,
+            },
             SheetKind::Lever {
                 position: 2,
                 input: None,
@@ -125,7 +148,7 @@ mod tests {
         for k in kinds {
             assert_eq!(SheetKind::parse(&k.stem()), Some(k), "{k}");
         }
-        for stem in ["velocity_", "velocity_x", "lever_2_0", "sheets", "course_", "forces"] {
+        for stem in ["velocity_", "velocity_x", "lever_2_0", "sheets", "course_", "forces", "forces_1_0"] {
             assert_eq!(SheetKind::parse(stem), None, "{stem}");
         }
     }

@@ -131,18 +131,19 @@ fn force(
 }
 
 /// The lever on a canvas, the pole at the origin, with the caption under
-/// it; `mu_f` the force scale.
-pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
+/// it, its lines broken to be no wider than `width` mm; `mu_f` the force
+/// scale.
+pub fn draw(an: &Analysis, l: &Lever, c: &mut Canvas, (mu_f, width): (f64, f64), lang: Lang) {
     figure(an, l, c, mu_f, lang);
     let bottom = c.bounds().y0;
-    for (i, t) in caption(an, l, mu_f, lang).iter().enumerate() {
-        c.rich(
-            Point::new(c.bounds().x0.min(0.0), bottom - 8.0 - 5.0 * i as f64),
-            t,
-            SMALL,
-            "",
-            "start",
-        );
+    let x = c.bounds().x0.min(0.0);
+    let size = SMALL * super::canvas::lettering();
+    let lines = caption(an, l, mu_f, lang)
+        .iter()
+        .flat_map(|t| super::canvas::wrap(t, width, size))
+        .collect::<Vec<_>>();
+    for (i, t) in lines.iter().enumerate() {
+        c.rich(Point::new(x, bottom - 8.0 - 5.0 * i as f64), t, SMALL, "", "start");
     }
 }
 
@@ -342,13 +343,15 @@ pub(super) fn pending(
     let mut out = Vec::new();
     for input in 0..an.mech.scene.input_count() {
         let first = lever_at(an, s, loads, input, Naming::Full, None)?;
+        let right = |l: &Lever| table(an, l, opt.lang).size().0 + super::sheet::PAD;
+        // The caption's lines broken to the field beside the table.
+        let width = super::field_size(opt, right(&first)).0;
         let figure = |l: &Lever| {
             let mu_f = force_scale(l);
             let mut c = Canvas::default();
-            draw(an, l, &mut c, mu_f, opt.lang);
+            draw(an, l, &mut c, (mu_f, width), opt.lang);
             (c, mu_f)
         };
-        let right = |l: &Lever| table(an, l, opt.lang).size().0 + super::sheet::PAD;
         let fixed = !several && an.drafting.mu_v.is_some();
         let (l, (c, mu_f)) = if fixed {
             let f = figure(&first);

@@ -54,6 +54,10 @@ pub struct DrawOptions {
     pub centres: bool,
     /// Compose the course sheet (besides what `want.drawings` asks).
     pub course: bool,
+    /// The user asked for `sheet` (`--sheet`): every sheet but the course
+    /// sheets is drawn on it, the force sheets too (without it a force
+    /// sheet whose free bodies cannot be read on `sheet` goes on A3).
+    pub fixed_sheet: bool,
 }
 
 impl Default for DrawOptions {
@@ -65,6 +69,7 @@ impl Default for DrawOptions {
             table: false,
             centres: false,
             course: false,
+            fixed_sheet: false,
         }
     }
 }

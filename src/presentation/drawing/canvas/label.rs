@@ -18,6 +18,36 @@ pub(super) fn char_width(c: char) -> f64 {
     }
 }
 
+/// `text` (the lecture's notation, [`crate::words::notation::runs`]) in
+/// lines no wider than `width` mm at font size `size`, broken after a
+/// comma, a colon or a semicolon and its space (an equation's steps stay
+/// whole between them); a piece wider than `width` alone keeps its line.
+pub fn wrap(text: &str, width: f64, size: f64) -> Vec<String> {
+    let wide = |t: &str| runs_width(&crate::words::notation::runs(t), size);
+    let mut pieces: Vec<&str> = Vec::new();
+    let mut start = 0;
+    for (i, _) in text.match_indices([',', ':', ';']) {
+        if text[i + 1..].starts_with(' ') {
+            pieces.push(&text[start..i + 2]);
+            start = i + 2;
+        }
+    }
+    pieces.push(&text[start..]);
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for p in pieces {
+        let joined = format!("{line}{p}");
+        if !line.is_empty() && wide(joined.trim_end()) > width {
+            lines.push(line.trim_end().to_string());
+            line = p.to_string();
+        } else {
+            line = joined;
+        }
+    }
+    lines.push(line.trim_end().to_string());
+    lines
+}
+
 /// Estimated width in mm of runs of text at font size `size`: a
 /// superscript and the subscript right after it stand one above the
 /// other, so the wider of the two counts.

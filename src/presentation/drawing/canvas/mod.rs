@@ -18,7 +18,7 @@ mod placement;
 mod primitives;
 mod render;
 
-pub use label::{Label, runs_width};
+pub use label::{Label, runs_width, wrap};
 pub use placement::{lettering, with_lettering};
 pub use render::{fmt, xml};
 pub use primitives::*;
