@@ -222,6 +222,10 @@ pub enum Command {
         output_dir: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = DrawFormat::Svg)]
         format: DrawFormat,
+        /// Language of the table or the sheet (its words and decimal mark): en, uk or ru
+        /// (default: the scene's want.lang).
+        #[arg(long, value_parser = lang)]
+        lang: Option<Lang>,
     },
     /// Families of link positions in the Frenet trihedron (paper 001, Figs 2, 3, 5) as sheets.
     Frenet {

@@ -228,9 +228,12 @@ fn studies(c: Command) -> Result<(), Error> {
             n,
             output_dir,
             format,
+            lang,
         } => {
             let study = study(&scene, None)?;
-            let d = study.diagram(output.as_deref(), point.as_deref(), n)?;
+            let d = study
+                .diagram(output.as_deref(), point.as_deref(), n)?
+                .in_lang(lang);
             match output_dir {
                 Some(dir) => wrote(&d.write_into(&dir, format.sheet())?),
                 None => stdout(&d.to_table()),

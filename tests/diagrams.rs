@@ -215,3 +215,150 @@ fn the_displacement_is_positive_along_the_working_stroke() {
         assert!(d.ds_mid[0] > 0.0, "{name}: {:?}", d.ds_mid);
     }
 }
+
+/// The numbers of a text in order, each as written (its decimal mark
+/// kept): digits, one mark ('.' or ','), digits. A mark not between
+/// digits ("12, from") ends the number.
+fn numbers_written(text: &str) -> Vec<String> {
+    let c: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < c.len() {
+        if !c[i].is_ascii_digit() {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < c.len() && c[i].is_ascii_digit() {
+            i += 1;
+        }
+        if i + 1 < c.len() && (c[i] == '.' || c[i] == ',') && c[i + 1].is_ascii_digit() {
+            i += 1;
+            while i < c.len() && c[i].is_ascii_digit() {
+                i += 1;
+            }
+        }
+        out.push(c[start..i].iter().collect());
+    }
+    out
+}
+
+/// `mechplan diagram` of a Ukrainian scene (`want.lang`: "uk") prints its
+/// table in Ukrainian, with the decimal comma, and writes its sheet so;
+/// `--lang en` gives English with decimal points, `--lang ru` Russian:
+/// the same numbers, only their mark and the words changed.
+#[test]
+fn the_diagram_command_speaks_the_scenes_language_or_lang() {
+    let dir = fresh("diagrams", "lang");
+    let mut v = fixture("six_link_fig2_10");
+    v["want"] = serde_json::json!({ "lang": "uk" });
+    let scene = dir.join("scene.json");
+    std::fs::write(&scene, v.to_string()).unwrap();
+    let scene = scene.to_str().unwrap();
+    let table = |extra: &[&str]| {
+        let mut args = vec!["diagram", scene];
+        args.extend_from_slice(extra);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "{extra:?}: {err}");
+        out
+    };
+    let has_mark = |t: &str, mark: char| {
+        numbers_written(t)
+            .iter()
+            .filter(|n| n.contains(mark))
+            .count()
+    };
+    let uk = table(&[]);
+    for word in [
+        "кінематичні діаграми",
+        "масштаби",
+        "вузол",
+        "точно",
+        "інтервал",
+        "хорди",
+    ] {
+        assert!(
+            uk.contains(word),
+            "the Ukrainian table has no {word:?}:\n{uk}"
+        );
+    }
+    for word in ["kinematic", "scales", "node", "exact", "interval", "chords"] {
+        assert!(
+            !uk.contains(word),
+            "an English {word:?} in the Ukrainian table:\n{uk}"
+        );
+    }
+    assert_eq!(
+        has_mark(&uk, '.'),
+        0,
+        "a decimal point in the Ukrainian table:\n{uk}"
+    );
+    assert!(
+        has_mark(&uk, ',') > 50,
+        "the Ukrainian table's decimal commas:\n{uk}"
+    );
+    assert_eq!(table(&["--lang", "uk"]), uk, "--lang uk is the scene's own");
+
+    let en = table(&["--lang", "en"]);
+    for word in [
+        "kinematic diagrams",
+        "scales",
+        "node",
+        "exact",
+        "interval",
+        "chords",
+    ] {
+        assert!(
+            en.contains(word),
+            "the English table has no {word:?}:\n{en}"
+        );
+    }
+    assert!(!en.contains("вузол") && !en.contains("масштаби"), "{en}");
+    assert_eq!(
+        has_mark(&en, ','),
+        0,
+        "a decimal comma in the English table:\n{en}"
+    );
+    assert!(has_mark(&en, '.') > 50, "{en}");
+    // The same numbers in both: only the mark differs.
+    let points = |t: &str| -> Vec<String> {
+        numbers_written(t)
+            .into_iter()
+            .map(|n| n.replace(',', "."))
+            .collect()
+    };
+    assert_eq!(points(&uk), points(&en), "the numbers of the two tables");
+
+    let ru = table(&["--lang", "ru"]);
+    assert!(ru.contains("узел") && ru.contains("масштабы"), "{ru}");
+    assert_eq!(has_mark(&ru, '.'), 0, "{ru}");
+
+    // The sheet too: in the scene's language, or --lang's.
+    for (lang, title, mark, other) in [
+        (None, "Кінематичні діаграми", ',', '.'),
+        (Some("en"), "Kinematic diagrams", '.', ','),
+    ] {
+        let out = dir.join(format!("sheet-{}", lang.unwrap_or("scene")));
+        let mut args = vec!["diagram", scene, "-o", out.to_str().unwrap()];
+        if let Some(l) = lang {
+            args.extend(["--lang", l]);
+        }
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 0, "{lang:?}: {err}");
+        let svg = std::fs::read_to_string(out.join("diagrams.svg")).unwrap();
+        assert!(svg.contains(title), "{lang:?}: the sheet's title");
+        // The sheet's words: the text of its <tspan>s.
+        let text: String = svg
+            .split("<tspan")
+            .skip(1)
+            .filter_map(|t| Some(&t[t.find('>')? + 1..t.find("</tspan>")?]))
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(has_mark(&text, mark) > 0, "{lang:?}: {text}");
+        assert_eq!(has_mark(&text, other), 0, "{lang:?}: {text}");
+    }
+    // An unknown language is refused, as the other commands refuse it.
+    let (code, _, err) = run(&["diagram", scene, "--lang", "xx"]);
+    assert_eq!(code, 2, "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

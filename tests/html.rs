@@ -422,3 +422,109 @@ fn a_uk_or_ru_handout_writes_no_decimal_point() {
         }
     }
 }
+
+/// The board's caption names the position whose tab is current: for every
+/// tab of a Ukrainian handout (a `count` sweep numbered from 0, given
+/// angles from 1), the plans the board steps through under that tab (the
+/// figures with the tab's `data-pos`) carry a caption (`data-title`, the
+/// text the page's script writes on the board) ending in "положення N"
+/// with N the tab's number, as the position's heading does; and the script
+/// writes the board from that caption alone and marks the tab of the same
+/// figure's `data-pos` (no number of its own made from an index).
+#[test]
+fn the_boards_caption_is_the_number_of_its_tab() {
+    let js = include_str!("../src/presentation/drawing/handout.js");
+    for needle in [
+        "pos: +fig.getAttribute('data-pos')",
+        "title: fig.getAttribute('data-title')",
+        "where.textContent = P.title + ",
+        "showPos(P.pos);",
+        "+t.getAttribute('data-pos') === pos",
+    ] {
+        assert!(js.contains(needle), "handout.js no longer has {needle:?}");
+    }
+    let board: Vec<&str> = js
+        .lines()
+        .filter(|l| l.contains("where.textContent"))
+        .collect();
+    assert_eq!(
+        board.len(),
+        1,
+        "the board's caption written once: {board:?}"
+    );
+    assert!(
+        !board[0].contains("pos") && !board[0].contains("+ 1"),
+        "the board's caption makes a number of its own: {}",
+        board[0]
+    );
+    for (name, first) in [("six_link_fig2_10", 0usize), ("prp_tangent_drive", 1)] {
+        let dir = fresh("html-board", name);
+        let scene = format!("{}/fixtures/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let (code, _, err) = run(&[
+            "draw",
+            &scene,
+            "-o",
+            dir.to_str().unwrap(),
+            "--html",
+            "--lang",
+            "uk",
+        ]);
+        assert_eq!(code, 0, "{name}: {err}");
+        let h = std::fs::read_to_string(dir.join("handout.html")).unwrap();
+        let tag = r#"<button type="button" class="tab" data-pos=""#;
+        let tabs: Vec<(usize, usize)> = h
+            .match_indices(tag)
+            .map(|(i, _)| {
+                let rest = &h[i + tag.len()..];
+                let pos = rest[..rest.find('"').unwrap()].parse().unwrap();
+                let shown = &rest[rest.find('>').unwrap() + 1..];
+                let shown = shown[..shown.find(' ').unwrap()].parse().unwrap();
+                (pos, shown)
+            })
+            .collect();
+        assert!(tabs.len() >= 7, "{name}: {} tabs", tabs.len());
+        assert_eq!(tabs[0].0, first, "{name}: the first tab");
+        let figures: Vec<&str> = h
+            .match_indices(r#"<figure class="fig plan""#)
+            .map(|(i, _)| &h[i..i + h[i..].find('>').unwrap()])
+            .collect();
+        let attr = |el: &str, a: &str| {
+            let key = format!(" {a}=\"");
+            let i = el.find(&key).unwrap() + key.len();
+            el[i..i + el[i..].find('"').unwrap()].to_string()
+        };
+        for &(pos, shown) in &tabs {
+            assert_eq!(
+                pos, shown,
+                "{name}: the tab of position {pos} shows {shown}"
+            );
+            let under: Vec<String> = figures
+                .iter()
+                .filter(|f| attr(f, "data-pos") == pos.to_string())
+                .map(|f| attr(f, "data-title"))
+                .collect();
+            assert!(!under.is_empty(), "{name}: no plan under tab {pos}");
+            for title in &under {
+                assert!(
+                    title.ends_with(&format!("положення {pos}")),
+                    "{name}: the board says {title:?} above tab {pos}"
+                );
+            }
+            assert!(
+                h.contains(&format!(
+                    "<section class=\"position\" id=\"pos-{pos}\" data-pos=\"{pos}\">\n<h2>Положення {pos}: "
+                )),
+                "{name}: the heading of position {pos}"
+            );
+        }
+        // Every plan is under a tab.
+        for f in &figures {
+            let pos: usize = attr(f, "data-pos").parse().unwrap();
+            assert!(
+                tabs.iter().any(|t| t.0 == pos),
+                "{name}: a plan of position {pos} without a tab"
+            );
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

@@ -553,6 +553,9 @@ impl Invariants<'_> {
 pub struct Diagram<'a> {
     study: &'a Study,
     diagrams: Diagrams,
+    /// The language of the table and the sheet: the scene's `want.lang`
+    /// unless [`Diagram::in_lang`] asks another (`mechplan diagram --lang`).
+    lang: Lang,
 }
 
 pub(super) fn diagram<'a>(
@@ -575,21 +578,41 @@ pub(super) fn diagram<'a>(
         }
         None => Diagrams::build(an, out, n, drawing::diagram::LENGTH)?,
     };
-    Ok(Diagram { study, diagrams })
+    Ok(Diagram {
+        study,
+        diagrams,
+        lang: study.lang(),
+    })
 }
 
 impl Diagram<'_> {
-    /// The table of the diagrams and their errors (`mechplan diagram`),
-    /// in the scene's `want.lang`.
-    pub fn to_table(&self) -> String {
-        tables::diagrams_table(&self.study.analysis, &self.diagrams, self.study.lang())
+    /// The table and the sheet in `lang` (`mechplan diagram --lang`);
+    /// None keeps the scene's `want.lang`.
+    pub fn in_lang(mut self, lang: Option<Lang>) -> Self {
+        if let Some(l) = lang {
+            self.lang = l;
+        }
+        self
     }
-    /// The diagrams' sheet (SVG).
+    /// The language the table and the sheet are written in.
+    pub fn lang(&self) -> Lang {
+        self.lang
+    }
+    /// The table of the diagrams and their errors (`mechplan diagram`),
+    /// in the scene's `want.lang` (or [`Diagram::in_lang`]'s): its words
+    /// and its decimal mark.
+    pub fn to_table(&self) -> String {
+        tables::diagrams_table(&self.study.analysis, &self.diagrams, self.lang)
+    }
+    /// The diagrams' sheet (SVG), in the same language as the table.
     pub fn sheet(&self) -> Sheet {
         drawing::diagram::sheet(
             &self.study.analysis,
             &self.diagrams,
-            &DrawOptions::default(),
+            &DrawOptions {
+                lang: self.lang,
+                ..DrawOptions::default()
+            },
         )
     }
     /// The sheet written into `dir` in `format`.

@@ -63,8 +63,10 @@ pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f6
             );
         }
     }
+    // Every position in thin lines, position 0 (the start of the working
+    // stroke, A₀) included, but the bold one: drawn once, in main lines.
     for (k, s) in solved.iter().enumerate() {
-        if k > 0 {
+        if k != bold {
             bodies(c, &s.config, Line::Thin);
         }
         // Number the positions as the sheet does (the lecture's 0 … 11 for
