@@ -84,13 +84,21 @@ fn course_sheets_pass_the_layout_checks() {
             for want in [
                 "fig-positions",
                 "fig-velocity",
-                "fig-acceleration-1",
                 "fig-diagrams",
                 "fig-table-velocity",
                 "fig-table-acceleration",
             ] {
                 assert!(ids.contains(&want), "{at}: no {want} in {ids:?}");
             }
+            // The acceleration plans of the middle of the working and of
+            // the idle stroke (not the extreme position the sweep starts
+            // at, a dead centre).
+            let acc: Vec<&&str> = ids
+                .iter()
+                .filter(|i| i.starts_with("fig-acceleration-"))
+                .collect();
+            assert_eq!(acc.len(), 2, "{at}: {ids:?}");
+            assert!(!ids.contains(&"fig-acceleration-1"), "{at}: {ids:?}");
             for (i, (a, ra)) in figs.iter().enumerate() {
                 assert!(
                     frame.inset(-1.0).contains(ra.origin())

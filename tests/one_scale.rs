@@ -87,23 +87,55 @@ fn check(scene: &str, lang: &str, name: &str) {
             .find(|s| s["file"] == file.as_str())
             .and_then(|s| s["scales"][key].as_f64())
     };
-    let mut drawn = Vec::new();
     // Each position's sheets, named by its number in the result file.
-    for pos in json["positions"].as_array().unwrap() {
-        let k = &pos["position"];
-        drawn.push(('v', scale(format!("velocity_{k}.svg"), "mu_v").unwrap()));
-        if let Some(a) = scale(format!("acceleration_{k}.svg"), "mu_a") {
-            drawn.push(('a', a));
+    let drawn_in = |sheets: &Value| -> Vec<(char, f64)> {
+        let scale = |file: String, key: &str| -> Option<f64> {
+            sheets["sheets"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|s| s["file"] == file.as_str())
+                .and_then(|s| s["scales"][key].as_f64())
+        };
+        let mut drawn = Vec::new();
+        for pos in json["positions"].as_array().unwrap() {
+            let k = &pos["position"];
+            drawn.push(('v', scale(format!("velocity_{k}.svg"), "mu_v").unwrap()));
+            if let Some(a) = scale(format!("acceleration_{k}.svg"), "mu_a") {
+                drawn.push(('a', a));
+            }
         }
-    }
-    assert_eq!(drawn, want, "sheets");
+        drawn
+    };
+    let drawn = drawn_in(&sheets);
     if let Some(mu_v) = scale("course.svg".into(), "mu_v") {
         // The course sheet's one μ_v is every velocity plan's it shows
-        // (all of them, up to 24 positions).
+        // (all of them, up to 24 positions): the result file, the steps
+        // and the handout state it.
         assert!(
             want.iter().filter(|w| w.0 == 'v').all(|w| w.1 == mu_v),
             "course μ_v {mu_v}"
         );
+        // A position's own sheets are at their own scales: those of the
+        // same scene drawn without the course sheet (issue 40: an A1
+        // sheet's μ ran A4 plans off their page).
+        let mut alone: Value = serde_json::from_str(scene).unwrap();
+        alone["want"]["drawings"] = serde_json::json!(["mechanism", "velocity", "acceleration"]);
+        let apath = dir.path().join("alone.json");
+        std::fs::write(&apath, alone.to_string()).unwrap();
+        let aout = dir.path().join("alone");
+        mechplan(&[
+            "draw",
+            apath.to_str().unwrap(),
+            "-o",
+            aout.to_str().unwrap(),
+        ]);
+        let asheets: Value =
+            serde_json::from_str(&std::fs::read_to_string(aout.join("sheets.json")).unwrap())
+                .unwrap();
+        assert_eq!(drawn, drawn_in(&asheets), "sheets at their own scales");
+    } else {
+        assert_eq!(drawn, want, "sheets");
     }
     // The handout: a section per position.
     let html_dir = dir.path().join("html");

@@ -14,9 +14,10 @@ pub struct Chosen {
     /// The velocity plans shown: every position (every k-th beyond 24
     /// positions) unless `want.plans_at` says.
     pub velocity: Vec<usize>,
-    /// The acceleration plans shown: `want.plans_at`'s, by default the
-    /// first position (the start of the working stroke) and the one in
-    /// the middle of the working stroke.
+    /// The acceleration plans shown: `want.plans_at`'s; by default, in a
+    /// sweep (`count`), the positions in the middle of the working stroke
+    /// and in the middle of the idle stroke (not its start, an extreme
+    /// position: a dead centre), else the first and the middle one.
     pub acceleration: Vec<usize>,
 }
 
@@ -30,19 +31,30 @@ impl Chosen {
             (1..=n).step_by(step).collect()
         });
         let acceleration = at.acceleration.clone().unwrap_or_else(|| {
-            let middle = match &an.mech.scene.positions {
+            let middles = match &an.mech.scene.positions {
+                // A sweep starts at the working stroke's start, an extreme
+                // position (a dead centre of a slider-crank): the plans of
+                // the middle of the working stroke and of the idle stroke
+                // instead, as a course draws them.
                 PositionsSpec::Count { count, output } => {
                     let out = output.unwrap_or_else(|| an.default_output());
                     an.working_stroke(out).ok().map(|(_, stroke)| {
                         let step = std::f64::consts::TAU / *count as f64;
-                        1 + ((stroke / 2.0) / step).round() as usize
+                        let at = |phi: f64| 1 + (phi / step).round() as usize;
+                        let idle = std::f64::consts::TAU - stroke;
+                        vec![at(stroke / 2.0), at(stroke + idle / 2.0)]
                     })
                 }
-                _ => Some(n / 2 + 1),
+                _ => Some(vec![1, n / 2 + 1]),
             };
-            let mut v = vec![1];
-            if let Some(k) = middle.filter(|&k| k > 1 && k <= n) {
-                v.push(k);
+            let mut v: Vec<usize> = Vec::new();
+            for k in middles.unwrap_or_default() {
+                if (1..=n).contains(&k) && !v.contains(&k) {
+                    v.push(k);
+                }
+            }
+            if v.is_empty() {
+                v.push(1);
             }
             v
         });
@@ -53,8 +65,8 @@ impl Chosen {
     }
 
     /// The position (from 0) of `n` that the force analysis sheet
-    /// analyses: the first with an acceleration plan after the first, else
-    /// the first.
+    /// analyses: the first with an acceleration plan after the first
+    /// position, else the first with one.
     pub fn analysed(&self, n: usize) -> usize {
         self.acceleration
             .iter()

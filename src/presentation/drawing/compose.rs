@@ -16,7 +16,6 @@ use crate::error::{Error, Result};
 use crate::kinematics::analytic::Order;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
-use crate::kinetostatics::force_plan::ForcePlan;
 use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use crate::studies::sheet_data::{SheetData, SheetNeeds};
@@ -493,7 +492,7 @@ fn position_sheets(
         });
     }
     let parts = match asked(an, solved, "forces") {
-        true => force_figures(an, s, opt),
+        true => forces::sheets_of(an, s, opt),
         false => Vec::new(),
     };
     let several = parts.len() > 1;
@@ -521,65 +520,6 @@ fn position_sheets(
     }
     out.extend(levers);
     Ok(out)
-}
-
-/// The force sheets of position `s`, each with its size (none without
-/// force plans). Where the user asked for the sheet (`--sheet`:
-/// `opt.fixed_sheet`), on it: every group on one sheet where a grid
-/// holds them (the polygons' equations left off where that is what it
-/// takes), else each group on a sheet of its own (`forces_N_M`), and only
-/// a group no such sheet holds on a larger one. Else one sheet, on the
-/// run's sheet or the first larger one on which each free body is drawn
-/// at least [`forces::LEAST_BODY`].
-fn force_figures(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Vec<(SheetSize, forces::Figure)> {
-    let Some(plans) = s
-        .dynamics
-        .as_ref()
-        .and_then(|d| d.force_plans.as_ref())
-        .map(|f| &f.plans[..])
-    else {
-        return Vec::new();
-    };
-    if !opt.fixed_sheet {
-        return larger_force_figure(an, s, opt, plans).into_iter().collect();
-    }
-    let field = field_size(opt, 0.0);
-    let on_asked = |plans: &[ForcePlan]| {
-        forces::figure_of(an, s, opt, (field, false), plans)
-            .or_else(|| forces::figure_of(an, s, opt, (field, true), plans))
-            .map(|f| (opt.sheet, f))
-    };
-    if let Some(whole) = on_asked(plans) {
-        return vec![whole];
-    }
-    plans
-        .chunks(1)
-        .filter_map(|one| on_asked(one).or_else(|| larger_force_figure(an, s, opt, one)))
-        .collect()
-}
-
-/// The force sheet of `plans` on the run's sheet or the first larger one
-/// on which every free body is drawn at least [`forces::LEAST_BODY`],
-/// else on the largest that holds them.
-fn larger_force_figure(
-    an: &Analysis,
-    s: &Solved,
-    opt: &DrawOptions,
-    plans: &[ForcePlan],
-) -> Option<(SheetSize, forces::Figure)> {
-    let mut last = None;
-    for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
-        let o = DrawOptions { sheet: size, ..*opt };
-        // None: none of the grids holds the polygons.
-        let Some(f) = forces::figure_of(an, s, &o, (field_size(&o, 0.0), false), plans) else {
-            continue;
-        };
-        if f.smallest >= forces::LEAST_BODY {
-            return Some((size, f));
-        }
-        last = Some((size, f));
-    }
-    last
 }
 
 fn too_large() -> Error {
@@ -707,7 +647,7 @@ fn plan_figure(
     kind: PlanKind,
     opt: &DrawOptions,
 ) -> (Plan, Canvas, Option<table::Ruled>) {
-    let (plan, points, field) = plan_extent(s, kind, opt);
+    let (plan, _, _) = plan_extent(s, kind, opt);
     // A plan built at the course sheet's scale (`scales_at`) is that
     // sheet's; its own sheet draws it built again at the scale that fills
     // its own field (every sheet at its own scale on its own paper).
@@ -715,9 +655,22 @@ fn plan_figure(
         PlanKind::Velocity => v.is_some(),
         PlanKind::Acceleration => a.is_some(),
     });
-    if course && let Some((_, (own, c))) = fitting_scale(an, s, kind, (plan, points), field) {
-        let table = opt.table.then(|| table::plan_table(&own, opt.lang));
-        return (own, c, table);
+    if course {
+        let order = match kind {
+            PlanKind::Velocity => Order::Velocity,
+            PlanKind::Acceleration => Order::Acceleration,
+        };
+        // The scales the construction chooses for this sheet's field, as
+        // for a position the course sheet does not show.
+        let own = an.plans_at_scales(s, order, None, None).ok().and_then(|p| match kind {
+            PlanKind::Velocity => Some(p.velocity),
+            PlanKind::Acceleration => p.acceleration,
+        });
+        if let Some(own) = own {
+            let table = opt.table.then(|| table::plan_table(&own, opt.lang));
+            let c = draw_plan(an, &own);
+            return (own, c, table);
+        }
     }
     let table = opt.table.then(|| table::plan_table(plan, opt.lang));
     (plan.clone(), draw_plan(an, plan), table)

@@ -8,7 +8,8 @@
 
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
-use super::{DrawOptions, fill, force_polygon, lower_scale, table};
+use super::layout::field_size;
+use super::{DrawOptions, SheetSize, fill, force_polygon, lower_scale, table};
 use crate::kinematics::solve::Analysis;
 use crate::kinematics::construction::scale::standard_above;
 use crate::kinetostatics::force_plan::{self, ForcePlan, Which};
@@ -412,4 +413,63 @@ fn draw_panel(
         id: Some(format!("{tag}-mu")),
         class: "scale",
     });
+}
+
+/// The force sheets of position `s`, each with its size (none without
+/// force plans). Where the user asked for the sheet (`--sheet`:
+/// `opt.fixed_sheet`), on it: every group on one sheet where a grid
+/// holds them (the polygons' equations left off where that is what it
+/// takes), else each group on a sheet of its own (`forces_N_M`), and only
+/// a group no such sheet holds on a larger one. Else one sheet, on the
+/// run's sheet or the first larger one on which each free body is drawn
+/// at least [`LEAST_BODY`].
+pub(super) fn sheets_of(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Vec<(SheetSize, Figure)> {
+    let Some(plans) = s
+        .dynamics
+        .as_ref()
+        .and_then(|d| d.force_plans.as_ref())
+        .map(|f| &f.plans[..])
+    else {
+        return Vec::new();
+    };
+    if !opt.fixed_sheet {
+        return larger_force_figure(an, s, opt, plans).into_iter().collect();
+    }
+    let field = field_size(opt, 0.0);
+    let on_asked = |plans: &[ForcePlan]| {
+        figure_of(an, s, opt, (field, false), plans)
+            .or_else(|| figure_of(an, s, opt, (field, true), plans))
+            .map(|f| (opt.sheet, f))
+    };
+    if let Some(whole) = on_asked(plans) {
+        return vec![whole];
+    }
+    plans
+        .chunks(1)
+        .filter_map(|one| on_asked(one).or_else(|| larger_force_figure(an, s, opt, one)))
+        .collect()
+}
+
+/// The force sheet of `plans` on the run's sheet or the first larger one
+/// on which every free body is drawn at least [`LEAST_BODY`],
+/// else on the largest that holds them.
+fn larger_force_figure(
+    an: &Analysis,
+    s: &Solved,
+    opt: &DrawOptions,
+    plans: &[ForcePlan],
+) -> Option<(SheetSize, Figure)> {
+    let mut last = None;
+    for size in SheetSize::ALL.into_iter().filter(|z| z.mm().0 >= opt.sheet.mm().0) {
+        let o = DrawOptions { sheet: size, ..*opt };
+        // None: none of the grids holds the polygons.
+        let Some(f) = figure_of(an, s, &o, (field_size(&o, 0.0), false), plans) else {
+            continue;
+        };
+        if f.smallest >= LEAST_BODY {
+            return Some((size, f));
+        }
+        last = Some((size, f));
+    }
+    last
 }
