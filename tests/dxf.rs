@@ -410,3 +410,138 @@ fn joints_and_sliders_are_blocks() {
     assert!(joints >= 12 * 4, "{joints} joints");
     let _ = std::fs::remove_dir_all(&base);
 }
+
+/// The style LibreCAD draws Cyrillic and Greek in (issue 40). LibreCAD
+/// (2.2) takes a text's font from its style's *name*, case aside, and
+/// reads no TrueType file: every text of a sheet is in the style
+/// `lc_opengost-ar`, the name of the ГОСТ 2.304 stroke font LibreCAD ships
+/// (`lc_opengost-ar.lff`), whose font file for the other readers (AutoCAD,
+/// KOMPAS, ezdxf) is `DejaVuSans.ttf`; `$TEXTSTYLE` is it too. Then,
+/// independently of the writer: where LibreCAD's fonts are on the machine
+/// (Debian's `librecad-data`), that font has a glyph for every character
+/// the shaper's Ukrainian and Russian DXF sheets (with dynamics and the
+/// course sheets) write; without it, that half is skipped with a note.
+/// No font file is copied into the repository.
+#[test]
+fn texts_are_in_the_style_named_as_librecads_gost_font() {
+    const FONT: &str = "lc_opengost-ar";
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let base = std::env::temp_dir().join(format!("mechplan-dxf-font-{}", std::process::id()));
+    let fixture = root.join("fixtures/dynamics/shaper_fig2_11.json");
+    let fixture = fixture.to_str().unwrap();
+    let mut used = std::collections::BTreeMap::<char, String>::new();
+    let mut texts = 0;
+    for lang in ["uk", "ru"] {
+        let out = base.join(lang);
+        draw(
+            &[fixture, "--course", "--lang", lang, "--format", "dxf"],
+            &out,
+        );
+        let mut sheets: Vec<PathBuf> = std::fs::read_dir(&out)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "dxf"))
+            .collect();
+        sheets.sort();
+        assert!(sheets.len() > 3, "{lang}: {} DXF sheets", sheets.len());
+        for sheet in &sheets {
+            let name = format!("{lang}/{}", sheet.file_name().unwrap().to_string_lossy());
+            let ps = pairs(&std::fs::read_to_string(sheet).unwrap());
+            let styles = entities(&ps, "TABLES", "STYLE");
+            let ours = styles
+                .iter()
+                .find(|s| value(s, 2) == Some(FONT))
+                .unwrap_or_else(|| panic!("{name}: no text style {FONT}"));
+            assert_eq!(value(ours, 3), Some("DejaVuSans.ttf"), "{name}");
+            let at = ps.iter().position(|p| p.0 == 9 && p.1 == "$TEXTSTYLE");
+            assert_eq!(
+                at.map(|i| ps[i + 1].1.as_str()),
+                Some(FONT),
+                "{name}: $TEXTSTYLE"
+            );
+            for kind in ["TEXT", "MTEXT"] {
+                for e in entities(&ps, "ENTITIES", kind)
+                    .iter()
+                    .chain(&entities(&ps, "BLOCKS", kind))
+                {
+                    assert_eq!(value(e, 7), Some(FONT), "{name}: a {kind}'s style");
+                    texts += 1;
+                    let s: String = e
+                        .iter()
+                        .filter(|p| p.0 == 1 || p.0 == 3)
+                        .map(|p| p.1.as_str())
+                        .collect();
+                    let s = if kind == "MTEXT" { mtext_text(&s) } else { s };
+                    for c in s.chars().filter(|c| !c.is_whitespace()) {
+                        used.entry(c).or_insert_with(|| format!("{name}: {s}"));
+                    }
+                }
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&base);
+    assert!(texts > 100, "{texts} texts");
+    for c in ['ї', 'є', 'і', 'ы', 'μ', 'φ', 'ω'] {
+        assert!(used.contains_key(&c), "no {c} on the sheets: {used:?}");
+    }
+    let Some(lff) = [
+        "/usr/share/librecad/fonts",
+        "/usr/local/share/librecad/fonts",
+    ]
+    .iter()
+    .map(|d| Path::new(d).join(format!("{FONT}.lff")))
+    .find(|p| p.is_file()) else {
+        eprintln!(
+            "skipped: LibreCAD's {FONT}.lff is not on this machine \
+             (apt-get install librecad-data): the glyphs are not checked"
+        );
+        return;
+    };
+    // A glyph of an .lff starts with a line `[XXXX]`, its code point in hex.
+    let glyphs: std::collections::BTreeSet<char> = std::fs::read_to_string(&lff)
+        .unwrap()
+        .lines()
+        .filter_map(|l| l.strip_prefix('[')?.split_once(']'))
+        .filter_map(|(hex, _)| u32::from_str_radix(hex.trim_start_matches('#'), 16).ok())
+        .filter_map(char::from_u32)
+        .collect();
+    assert!(
+        glyphs.len() > 300,
+        "{}: {} glyphs",
+        lff.display(),
+        glyphs.len()
+    );
+    let missing: Vec<String> = used
+        .iter()
+        .filter(|(c, _)| !glyphs.contains(c))
+        .map(|(c, at)| format!("{c} (U+{:04X}, in {at})", *c as u32))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "{} has no glyph for {} character(s) the sheets write, LibreCAD draws each as ◊:\n{}",
+        lff.display(),
+        missing.len(),
+        missing.join("\n")
+    );
+}
+
+/// What an MTEXT's content prints: its stacks (`\Sn^KC;`, `\S^v;`) as
+/// their characters, `\\`, `\{`, `\}` as the character escaped.
+fn mtext_text(s: &str) -> String {
+    let mut out = String::new();
+    let mut it = s.chars();
+    let mut stack = false;
+    while let Some(c) = it.next() {
+        match c {
+            '\\' => match it.next() {
+                Some('S') => stack = true,
+                Some(x) => out.push(x),
+                None => {}
+            },
+            '^' if stack => {}
+            ';' if stack => stack = false,
+            _ => out.push(c),
+        }
+    }
+    out
+}

@@ -167,9 +167,9 @@ def check_sheet(name, svg_path, dxf_path):
         if lo.x < -TOL or lo.y < -TOL or hi.x > w + TOL or hi.y > h + TOL:
             fail(name, f"extents {lo} – {hi} outside the paper {w}×{h}")
     # The style and the layers' definitions.
-    style = doc.styles.get("MECHPLAN")
+    style = doc.styles.get("lc_opengost-ar")
     if style is None or not style.dxf.font.lower().endswith(".ttf"):
-        fail(name, "no text style MECHPLAN with a TrueType font")
+        fail(name, "no text style lc_opengost-ar with a TrueType font")
     for layer in doc.layers:
         lt = layer.dxf.linetype
         if lt not in doc.linetypes:
@@ -200,7 +200,9 @@ def check_sheet(name, svg_path, dxf_path):
         else:
             got = plain_mtext(e.text)
             at = e.dxf.insert
-        if got != s:
+        # The DXF's turning arrows are the closed ones of the same sense,
+        # which LibreCAD's ГОСТ font has (style.rs, escape).
+        if got != s.replace("↺", "⥀").replace("↻", "⥁"):
             fail(name, f"text {s!r} written as {got!r}")
         if not close(e.dxf.height if e.dxftype() == "TEXT" else e.dxf.char_height, size):
             fail(name, f"text {s!r}: height not {size}")

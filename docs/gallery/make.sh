@@ -135,11 +135,11 @@ cp "$tmp/cfs/course_forces.png" "$out/course_forces_shaper_fig2_11_uk.png"
 # The same course sheets as LibreCAD draws their DXF (docs/sheets.md, "DXF
 # sheets"): `librecad dxf2pdf` without a window (Qt's offscreen platform),
 # then poppler's pdftoppm to PNG at the SVG pictures' 100 dpi. LibreCAD
-# (2.2) takes a text's font from its style's name and reads no TrueType
-# font, so a private font folder maps the style MECHPLAN to its own ГОСТ
-# font lc_opengost-ar; a private HOME keeps the user's LibreCAD settings
-# out of it (and it out of them). Skipped, the pictures left as they are,
-# without librecad or pdftoppm.
+# (2.2) takes a text's font from its style's name, and mechplan's style is
+# named as its own ГОСТ font, lc_opengost-ar: no font alias, LibreCAD as
+# installed. A private HOME keeps the user's LibreCAD settings out of it
+# (and it out of them). Skipped, the pictures left as they are, without
+# librecad or pdftoppm.
 lc_pairs="course_six_link_fig2_10:course6 course_shaper_fig2_11_uk:course_shaper
 course_compressor_fig2_12_ru:course_compressor course_boom_cylinder:course_boom
 course_forces_six_link_fig2_10:cf6 course_forces_shaper_fig2_11_uk:cfs
@@ -149,15 +149,7 @@ if ! command -v librecad > /dev/null || ! command -v pdftoppm > /dev/null; then
     "the course sheets' LibreCAD pictures are left as they are" >&2
 else
   lc=$tmp/librecad
-  mkdir -p "$lc/home/.config/LibreCAD" "$lc/fonts" "$lc/dxf" "$lc/pdf"
-  for d in /usr/share/librecad/fonts /usr/local/share/librecad/fonts; do
-    if [ -f "$d/lc_opengost-ar.lff" ]; then
-      ln -s "$d/lc_opengost-ar.lff" "$lc/fonts/mechplan.lff"
-      break
-    fi
-  done
-  [ -e "$lc/fonts/mechplan.lff" ] || echo "LibreCAD's font lc_opengost-ar not found: its standard font, no Cyrillic or Greek" >&2
-  printf '[Paths]\nFonts=%s\n' "$lc/fonts" > "$lc/home/.config/LibreCAD/LibreCAD.conf"
+  mkdir -p "$lc/home" "$lc/dxf" "$lc/pdf"
   ./target/release/mechplan draw fixtures/six_link_fig2_10.json --course -o "$lc/course6" --format dxf > /dev/null
   ./target/release/mechplan draw "$tmp/shaper_uk.json" --course -o "$lc/course_shaper" --format dxf > /dev/null
   ./target/release/mechplan draw fixtures/dynamics/compressor_fig2_12.json --course --lang ru -o "$lc/course_compressor" --format dxf > /dev/null

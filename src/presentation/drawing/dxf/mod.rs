@@ -13,8 +13,9 @@
 //!   joint's circle or a slider's block) → a solid HATCH;
 //! - `text` → TEXT at its baseline (plain text) or MTEXT (text with sub- or
 //!   superscripts: `\S^sub;`, `\Ssup^sub;`), each SVG text one entity, its
-//!   height the font size in mm, in the style `MECHPLAN` (DejaVu Sans, which
-//!   carries Cyrillic and Greek), in UTF-8 (R2007 and later: no code
+//!   height the font size in mm, in the style `lc_opengost-ar` (LibreCAD
+//!   takes that name for its ГОСТ font; the font file, for the others, is
+//!   DejaVu Sans: both carry Cyrillic and Greek), in UTF-8 (R2007 and later: no code
 //!   page, no `\U+XXXX` escapes for a reader to decode);
 //! - a symbol the renderer groups (`<g data-symbol=…>`: a joint, a fixed
 //!   pivot, a slider block, a centre of mass) → an INSERT, on the layer of
@@ -517,6 +518,7 @@ mod tests {
     #[test]
     fn texts_escape_past_ascii() {
         assert_eq!(escape("φ\n= 5°"), "φ = 5°");
+        assert_eq!(escape("0,837 ↺ 0,934 ↻"), "0,837 ⥀ 0,934 ⥁");
         assert_eq!(
             mtext_content(&[("a".into(), 0), ("n".into(), 1), ("KC".into(), -1)]),
             "a\\Sn^KC;"

@@ -1,9 +1,16 @@
 //! What the DXF's parts share: the text style, the ГОСТ 2.303 linetypes
 //! and the layers' lineweights, the writing of numbers and text.
 
-/// The text style of every text.
-pub const STYLE: &str = "MECHPLAN";
-/// Its font file (TrueType, Latin, Cyrillic and Greek).
+/// The text style of every text, named as LibreCAD's ГОСТ 2.304 stroke
+/// font (type A) is named: LibreCAD (2.2) takes a text's font from its
+/// style's name, case aside, and reads no font file; this one, shipped
+/// with it (`lc_opengost-ar.lff`), has Latin, Cyrillic (Ukrainian and
+/// Russian) and Greek. Any other name and LibreCAD draws its `standard`
+/// font, each Cyrillic or Greek letter a ◊ (issue 40).
+pub const STYLE: &str = "lc_opengost-ar";
+/// Its font file, for the readers that read it (AutoCAD, KOMPAS, ezdxf):
+/// TrueType, Latin, Cyrillic and Greek, the SVG's own font, whose widths
+/// the title block's width factors are measured in. LibreCAD ignores it.
 pub const FONT_FILE: &str = "DejaVuSans.ttf";
 
 /// The linetypes, after ГОСТ 2.303 (mm; a dash positive, a gap negative,
@@ -46,8 +53,13 @@ pub fn num(x: f64) -> String {
     crate::format::fixed(x, 4)
 }
 
-/// Text for a DXF string value: UTF-8 as R2007 writes it, no line ends.
+/// Text for a DXF string value: UTF-8 as R2007 writes it, no line ends;
+/// the tables' turning arrows (↺ U+21BA, ↻ U+21BB), which none of
+/// LibreCAD's fonts has, as the closed circle arrows of the same sense
+/// (⥀ U+2940, ⥁ U+2941), which its ГОСТ font and DejaVu Sans both have.
 pub fn escape(s: &str) -> String {
     s.replace(['\n', '\r'], " ")
+        .replace('↺', "⥀")
+        .replace('↻', "⥁")
 }
 
