@@ -170,3 +170,20 @@ fn coincident_references_are_an_error_not_nan() {
         "{e}"
     );
 }
+
+/// The DXF answer reader (fuzz target `dxf_answer`, CI 2026-11-29): a
+/// file ending in a SECTION with neither a name nor a body sliced past
+/// its end; now an answer refused with a message.
+#[test]
+fn dxf_answer_ending_in_a_bare_section_is_refused() {
+    let study = mechplan::Study::from_json(mechplan::DEFAULT_SCENE).unwrap();
+    let solution = study.solve().unwrap();
+    for text in ["   0\nSECTION\n  ", "0\nSECTION", "0\nSECTION\n2\nENTITIES"] {
+        let req = mechplan::CheckRequest::default();
+        let e = solution
+            .check_answer(text, "answer.dxf", true, &req)
+            .err()
+            .unwrap_or_else(|| panic!("{text:?} read as an answer"));
+        assert!(e.to_string().contains("answer.dxf"), "{e}");
+    }
+}

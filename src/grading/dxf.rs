@@ -321,7 +321,8 @@ fn read_file<'a>(gs: &[Group<'a>]) -> Result<File<'a>> {
             continue;
         }
         let name = gs.get(k + 1).filter(|g| g.code == 2).map_or("", |g| g.value);
-        let start = k + 2;
+        // A SECTION at the very end (no name, no body) has an empty body.
+        let start = (k + 2).min(gs.len());
         let mut end = start;
         while end < gs.len() && !(gs[end].code == 0 && gs[end].value == "ENDSEC") {
             end += 1;
