@@ -79,24 +79,10 @@ fn check(scene: &str, lang: &str, name: &str) {
     mechplan(&["draw", p, "-o", out.to_str().unwrap()]);
     let sheets: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("sheets.json")).unwrap()).unwrap();
-    let scale = |file: String, key: &str| -> Option<f64> {
-        sheets["sheets"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|s| s["file"] == file.as_str())
-            .and_then(|s| s["scales"][key].as_f64())
-    };
+    let scale = |file: String, key: &str| scale_in(&sheets, &file, key);
     // Each position's sheets, named by its number in the result file.
     let drawn_in = |sheets: &Value| -> Vec<(char, f64)> {
-        let scale = |file: String, key: &str| -> Option<f64> {
-            sheets["sheets"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .find(|s| s["file"] == file.as_str())
-                .and_then(|s| s["scales"][key].as_f64())
-        };
+        let scale = |file: String, key: &str| scale_in(sheets, &file, key);
         let mut drawn = Vec::new();
         for pos in json["positions"].as_array().unwrap() {
             let k = &pos["position"];
@@ -147,6 +133,16 @@ fn check(scene: &str, lang: &str, name: &str) {
         .collect();
     let sym = ("μ<sub>v</sub> = ", "μ<sub>a</sub> = ");
     assert_eq!(stated(&html, sym, &marks), want, "handout");
+}
+
+/// The scale `key` a manifest (`sheets.json`) lists for sheet `file`.
+fn scale_in(sheets: &Value, file: &str, key: &str) -> Option<f64> {
+    sheets["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["file"] == file)
+        .and_then(|s| s["scales"][key].as_f64())
 }
 
 /// A scratch folder, removed when done.

@@ -188,19 +188,21 @@ pub fn figure_of(
     if plans.is_empty() {
         return None;
     }
-    let mut sheet = try_figure(an, s, opt, (field, may_drop), plans);
+    let first = try_figure(an, s, opt, (field, may_drop), plans);
+    if first.is_some() {
+        return first;
+    }
     let mut plans = plans.to_vec();
     for _ in 0..8 {
-        if sheet.is_some() {
-            break;
-        }
         plans = plans
             .iter()
             .map(|p| at_scale(an, s, &d.loads, p, standard_above(p.mu)))
             .collect::<Option<Vec<_>>>()?;
-        sheet = try_figure(an, s, opt, (field, may_drop), &plans);
+        if let Some(f) = try_figure(an, s, opt, (field, may_drop), &plans) {
+            return Some(f);
+        }
     }
-    sheet
+    None
 }
 
 /// `plan` built again at the scale `mu` N/mm (the force construction of
