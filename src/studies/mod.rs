@@ -13,4 +13,5 @@ pub mod diagrams;
 pub mod frenet;
 pub mod invariants;
 pub mod sheet_data;
+pub mod stroke;
 pub mod trajectories;

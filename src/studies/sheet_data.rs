@@ -10,6 +10,7 @@ use crate::error::Result;
 use crate::kinematics::solve::{Analysis, Position};
 use crate::studies::chosen::Chosen;
 use crate::studies::diagrams::Diagrams;
+use crate::studies::stroke::Stroke;
 use crate::studies::trajectories::{Trajectories, trajectories};
 use std::ops::Deref;
 
@@ -45,6 +46,9 @@ pub struct SheetData {
     /// The diagrams of the mechanism's output, N = 12, where drawn and
     /// built.
     pub diagrams: Option<Diagrams>,
+    /// The output's stroke H, the working and idle strokes' crank angles
+    /// and K, for the course sheet (none for an output that turns fully).
+    pub stroke: Option<Stroke>,
 }
 
 impl SheetData {
@@ -74,6 +78,7 @@ impl SheetData {
                 false => Chosen::default(),
             },
             diagrams,
+            stroke: if needs.course { Stroke::of(an) } else { None },
         })
     }
 }

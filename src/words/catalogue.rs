@@ -62,6 +62,37 @@ pub struct Catalogue {
     /// The words `check` reads in a drawing's texts, and the balancing
     /// moment's subscript.
     pub reading: ReadingWords,
+    /// The course sheet's structure, given data, stroke and comparison.
+    pub course_sheet: CourseSheetPhrases,
+}
+
+/// Sheet 1's words beside its drawings: the structure and given data,
+/// the output's stroke, the plans against the analytic solution.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CourseSheetPhrases {
+    /// The caption of the structure and given data.
+    pub given_caption: String,
+    /// Words before Chebyshev's W and before the structure formula.
+    pub mobility: String,
+    pub formula: String,
+    /// The output's stroke: a slider's (`{id}`), a rocker's swing.
+    pub stroke_slide: String,
+    pub stroke_rocker: String,
+    /// The working and idle strokes' crank angles, and K.
+    pub working: String,
+    pub idle: String,
+    pub k: String,
+    /// The subscripts of φ of the working and idle strokes (φ_w, φ_i).
+    pub w: String,
+    pub i: String,
+    /// The given data table's heads.
+    pub given_head: [String; 2],
+    /// The comparison's caption (`{k}`: the position), its note on how
+    /// the plan's values are read (`{d}`: the reading, mm) and its heads.
+    pub compare_caption: String,
+    pub compare_note: String,
+    pub compare_head: [String; 5],
 }
 
 /// The words of a language that `check` reads in a student's drawing (any

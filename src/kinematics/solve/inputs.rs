@@ -106,7 +106,7 @@ impl Analysis {
     /// own precision even where the transfer function is stiff (near a
     /// toggle, a change point); elsewhere the root by bisection.
     pub fn stroke_start(&self, out: usize) -> Result<StrokeStart> {
-        let (root, bracket, stroke) = match self.stroke_root(out)? {
+        let (root, bracket, stroke, swing) = match self.stroke_root(out)? {
             Some(found) => found,
             None => {
                 let InputSpec::Crank { angle, .. } = self.mech.scene.input else {
@@ -115,6 +115,7 @@ impl Analysis {
                 return Ok(StrokeStart {
                     angle,
                     stroke: TAU,
+                    swing: None,
                     found: Found::Input,
                 });
             }
@@ -128,20 +129,23 @@ impl Analysis {
             Some((q, _)) => StrokeStart {
                 angle: q.rem_euclid(TAU),
                 stroke,
+                swing: Some(swing),
                 found: Found::InLine,
             },
             None => StrokeStart {
                 angle: root,
                 stroke,
+                swing: Some(swing),
                 found: Found::Root,
             },
         })
     }
 
     /// The root of the output's transfer function that begins the
-    /// working stroke, the width of its bracket and the stroke's crank
-    /// angle; `None` for an output that turns fully.
-    fn stroke_root(&self, out: usize) -> Result<Option<(f64, f64, f64)>> {
+    /// working stroke, the width of its bracket, the stroke's crank
+    /// angle and the output's swing between its extremes; `None` for an
+    /// output that turns fully.
+    fn stroke_root(&self, out: usize) -> Result<Option<(f64, f64, f64, f64)>> {
         let m = &self.mech;
         let sc = &m.scene;
         if sc.several_inputs() {
@@ -193,7 +197,12 @@ impl Analysis {
             return Ok(None);
         }
         let (start, stroke) = working_stroke_of(&extremes, sc.input.sense());
-        Ok(Some((start, TAU / n as f64, stroke)))
+        let (lo, hi) = extremes
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| {
+                (lo.min(e.1), hi.max(e.1))
+            });
+        Ok(Some((start, TAU / n as f64, stroke, hi - lo)))
     }
 }
 
@@ -206,6 +215,12 @@ pub struct StrokeStart {
     /// The crank angle the working stroke takes (2π for an output that
     /// turns fully).
     pub stroke: f64,
+    /// The output's stroke between its extreme positions: the slide H
+    /// along a frame guide (m), else the rocker's swing (rad); `None`
+    /// for an output that turns fully. Read at the extremes, where the
+    /// output stands still, so an error δφ of their crank angles moves
+    /// it by O(δφ²) only.
+    pub swing: Option<f64>,
     pub found: Found,
 }
 

@@ -28,6 +28,7 @@ use crate::words::construction::Lang;
 use crate::studies::sheet_data::SheetData;
 use kurbo::{Point, Rect};
 use std::collections::HashMap;
+use std::rc::Rc;
 
 /// What each figure draws at a scale (or at its only size).
 enum Source<'a> {
@@ -39,7 +40,7 @@ enum Source<'a> {
     /// The acceleration plan of a position.
     Acceleration(usize),
     /// Drawn once, at its own size (the diagrams, a table).
-    Fixed(&'a Figure),
+    Fixed(Rc<Figure>),
 }
 
 /// The factor on the lettering of the course sheets: the labels drawn
@@ -64,48 +65,119 @@ fn layout(an: &Analysis, solved: &[Solved], data: &SheetData, opt: &DrawOptions)
     let lang = opt.lang;
     let t = positions::given(data, solved.len())?;
     let chosen = (data.chosen.velocity.clone(), data.chosen.acceleration.clone());
-    let fixed = fixed_figures(an, solved, data, (size, lang), &chosen);
-    // The velocity plans' grid: of the column counts tried, the one that
-    // draws them largest (the smallest μ_v) while no other figure is drawn
-    // smaller than with the default grid. A grid of 5 × 3 cells, each as
-    // wide as its column's widest plan, leaves the plans 25–40 mm long on
-    // A1; 6 × 2 or 4 × 3 may hold them at the next scale.
+    // The velocity plans' grid and the diagrams' length: of the column
+    // counts and lengths tried, the layout that draws the figures largest
+    // by [`score`]. A grid of 5 × 3 cells, each as wide as its column's
+    // widest plan, leaves the plans 25–40 mm long on A1; 6 × 2 or 4 × 3
+    // may hold them at the next scale, and shorter diagrams leave room
+    // for larger plans.
     let n = chosen.0.len();
     let default = grid(n).0;
-    let laid = |cols: usize| {
-        let sources = sources((solved, t), &chosen, &fixed, cols);
-        layout_with(an, solved, lang, size, sources)
-    };
-    let mut best = laid(default)?;
-    let scales = |l: &Vec<(Figure, Point)>| -> Vec<(String, f64)> {
-        l.iter()
-            .flat_map(|(f, _)| f.scales.iter().map(|&(k, mu)| (format!("{}/{k}", f.id), mu)))
-            .collect()
-    };
-    let base = scales(&best);
-    let mu_v = |sc: &[(String, f64)]| {
-        sc.iter()
-            .find(|(k, _)| k.ends_with("/mu_v"))
-            .map_or(f64::INFINITY, |x| x.1)
-    };
-    let mut best_mu = mu_v(&base);
-    let mut options: Vec<usize> = [n.div_ceil(2), n.div_ceil(3), n.div_ceil(4), default + 1]
+    let mut columns: Vec<usize> = [default, n.div_ceil(2), n.div_ceil(3), n.div_ceil(4), default + 1]
         .into_iter()
-        .filter(|&c| c >= 1 && c <= n && c != default)
+        .filter(|&c| c >= 1 && c <= n)
         .collect();
-    options.dedup();
-    for cols in options {
-        let Ok(l) = laid(cols) else { continue };
-        let sc = scales(&l);
-        let none_smaller = sc.iter().all(|(k, mu)| {
-            k.ends_with("/mu_v") || base.iter().find(|b| &b.0 == k).is_none_or(|b| *mu <= b.1)
-        });
-        let m = mu_v(&sc);
-        if none_smaller && m < best_mu {
-            (best, best_mu) = (l, m);
+    columns.dedup();
+    let lengths: &[f64] = match size {
+        SheetSize::A1 => &[DIAGRAMS_A1, 0.85 * DIAGRAMS_A1, 0.7 * DIAGRAMS_A1],
+        _ => &[120.0],
+    };
+    let mut best: Option<(f64, Placed)> = None;
+    let mut first_err = None;
+    let mut base: Option<Vec<(String, f64)>> = None;
+    let mut cache = Drawn::new();
+    // Sheet 1's data (the structure and given data, the comparison) go
+    // with the drawings; where they cannot all pack (an A2 sheet), the
+    // comparison is left out first, then the given data.
+    let sheet_one: Vec<Rc<Figure>> = std::iter::once(super::course_data::given(an, solved, data, lang))
+        .chain(super::course_data::compare(an, solved, data, lang))
+        .map(Rc::new)
+        .collect();
+    for kept in (0..=sheet_one.len()).rev() {
+        for &len in lengths {
+            let fixed: Vec<Rc<Figure>> = sheet_one[..kept]
+                .iter()
+                .cloned()
+                .chain(fixed_figures(an, solved, data, (lang, len), &chosen).into_iter().map(Rc::new))
+                .collect();
+            for &cols in &columns {
+                let sources = sources((solved, t), &chosen, &fixed, cols);
+                let l = match layout_with(an, solved, lang, size, sources, &mut cache) {
+                    Ok(l) => l,
+                    Err(e) => {
+                        first_err.get_or_insert(e);
+                        continue;
+                    }
+                };
+                let sc: Vec<(String, f64)> = l
+                    .iter()
+                    .flat_map(|(f, _)| f.scales.iter().map(|&(k, mu)| (format!("{}/{k}", f.id), mu)))
+                    .collect();
+                let base = base.get_or_insert_with(|| sc.clone());
+                let s = score(base, &sc) + 0.5 * (len / DIAGRAMS_A1).ln();
+                if best.as_ref().is_none_or(|b| s > b.0 + 1e-9) {
+                    best = Some((s, l));
+                }
+            }
+        }
+        if best.is_some() {
+            break;
         }
     }
-    Ok((best, chosen))
+    match best {
+        Some((_, l)) => Ok((
+            l.into_iter()
+                .map(|(f, at)| (Rc::unwrap_or_clone(f), at))
+                .collect(),
+            chosen,
+        )),
+        None => Err(first_err.expect("a layout tried")),
+    }
+}
+
+/// Which drawing a figure is, whatever else the sheet holds: the
+/// positions, the grid of velocity plans in so many columns, an
+/// acceleration plan.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum Key {
+    Positions,
+    Velocities(usize),
+    Acceleration(usize),
+}
+
+/// Every drawing made while the layouts are tried, by what it is and its
+/// scale (its bits): each is made once.
+type Drawn = HashMap<(Key, u64), Option<Sized>>;
+
+/// A figure drawn, with its size (mm, its caption included).
+type Sized = (Rc<Figure>, (f64, f64));
+
+/// Figures placed on the field: each and its top left corner.
+type Placed = Vec<(Rc<Figure>, Point)>;
+
+/// The diagrams' length on an A1 course sheet, mm, when nothing else
+/// wants the room.
+const DIAGRAMS_A1: f64 = 340.0;
+
+/// How much larger a layout's scales `sc` draw the figures than `base`'s:
+/// the sum of the logarithms of the ratios, the plans of velocities
+/// (the smallest drawings, read on every position) weighing twice, the
+/// acceleration plans shared as one.
+fn score(base: &[(String, f64)], sc: &[(String, f64)]) -> f64 {
+    let acc = sc.iter().filter(|(k, _)| k.ends_with("/mu_a")).count().max(1) as f64;
+    sc.iter()
+        .filter_map(|(k, mu)| {
+            let b = base.iter().find(|b| &b.0 == k)?.1;
+            let w = if k.ends_with("/mu_v") {
+                2.0
+            } else if k.ends_with("/mu_a") {
+                1.0 / acc
+            } else {
+                1.0
+            };
+            Some(w * (b / mu).ln())
+        })
+        .sum()
 }
 
 /// The figures of `sources` at the largest zooms that pack on the field.
@@ -115,7 +187,8 @@ fn layout_with(
     lang: Lang,
     size: SheetSize,
     sources: Vec<(Source<'_>, f64)>,
-) -> Result<Vec<(Figure, Point)>> {
+    cache: &mut Drawn,
+) -> Result<Placed> {
     let field = field_of(size);
     let block = sheet::block(size);
     let cx = Ctx {
@@ -124,18 +197,17 @@ fn layout_with(
         lang,
         field,
     };
-    let mut cache = HashMap::new();
     // The figures at zooms `z` (one per figure; a figure's target area is
     // its share of the field times z²), and where they go if they pack.
-    let attempt = |z: &[f64]| -> Option<Vec<(Figure, Point)>> {
-        let mut figs: Vec<Figure> = Vec::new();
+    let attempt = |z: &[f64]| -> Option<Placed> {
+        let mut figs: Vec<Sized> = Vec::new();
         for (i, (src, share)) in sources.iter().enumerate() {
             let area = *share * z[i] * z[i] * field.area();
-            figs.push(figure(&cx, src, area, &mut cache, i)?);
+            figs.push(figure(&cx, src, area, cache)?);
         }
-        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.size()).collect();
+        let rects: Vec<(f64, f64)> = figs.iter().map(|f| f.1).collect();
         let at = pack(&rects, field, block)?;
-        Some(figs.into_iter().zip(at).collect())
+        Some(figs.into_iter().map(|f| f.0).zip(at).collect())
     };
     let shares: Vec<f64> = sources.iter().map(|s| s.1).collect();
     let placed = grow(&shares, attempt).ok_or_else(|| {
@@ -226,7 +298,7 @@ fn fixed_figures(
     an: &Analysis,
     solved: &[Solved],
     data: &SheetData,
-    (size, lang): (SheetSize, Lang),
+    (lang, length): (Lang, f64),
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
 ) -> Vec<Figure> {
     let w = words(lang);
@@ -235,10 +307,7 @@ fn fixed_figures(
     let cylinder = !an.mech.scene.several_inputs() && !super::cylinder::pairs(an).is_empty();
     if (matches!(an.mech.scene.positions, PositionsSpec::Count { .. }) || cylinder)
         && let Some(d) = data.diagrams.as_ref().map(|d| {
-            d.at_length(match size {
-                SheetSize::A1 => 340.0,
-                _ => 120.0,
-            })
+            d.at_length(length)
         })
     {
         fixed.push(Figure {
@@ -279,7 +348,7 @@ fn fixed_figures(
 fn sources<'a>(
     (solved, t): (&[Solved], positions::Drawn<'a>),
     (vel_at, acc_at): &(Vec<usize>, Vec<usize>),
-    fixed: &'a [Figure],
+    fixed: &[Rc<Figure>],
     cols: usize,
 ) -> Vec<(Source<'a>, f64)> {
     let (has_plans, has_acc) = has_plans(solved);
@@ -293,7 +362,7 @@ fn sources<'a>(
         }
     }
     for f in fixed {
-        sources.push((Source::Fixed(f), 0.0));
+        sources.push((Source::Fixed(f.clone()), 0.0));
     }
     sources
 }
@@ -361,25 +430,32 @@ fn figure(
     cx: &Ctx,
     src: &Source,
     area: f64,
-    cache: &mut HashMap<(usize, u64), Option<Figure>>,
-    i: usize,
-) -> Option<Figure> {
-    if let Source::Fixed(f) = src {
-        return Some((*f).clone());
-    }
+    cache: &mut Drawn,
+) -> Option<Sized> {
+    let key = match src {
+        Source::Fixed(f) => return Some((f.clone(), f.size())),
+        Source::Positions(_) => Key::Positions,
+        Source::Velocities(_, cols) => Key::Velocities(*cols),
+        Source::Acceleration(k) => Key::Acceleration(*k),
+    };
     let (aspect, lower_w, lower_h) = natural(cx, src)?;
     let bw = (area * aspect).sqrt().min(cx.field.width());
     let bh = (area / aspect).sqrt().min(cx.field.height());
     let mut mu = standard_scale(lower_scale(lower_w, lower_h, (bw, bh)), 1.0);
     // A box smaller than the figure's lettering allows: the smallest
     // drawing there is (the packer then judges it).
-    let mut smallest: Option<(f64, Figure)> = None;
+    let mut smallest: Option<(f64, Sized)> = None;
     for _ in 0..16 {
         let f = cache
-            .entry((i, mu.to_bits()))
-            .or_insert_with(|| draw(cx, src, mu))
+            .entry((key, mu.to_bits()))
+            .or_insert_with(|| {
+                draw(cx, src, mu).map(|f| {
+                    let size = f.size();
+                    (Rc::new(f), size)
+                })
+            })
             .as_ref()?;
-        let (w, h) = f.size();
+        let (w, h) = f.1;
         if w <= bw && h <= bh {
             return Some(f.clone());
         }
@@ -440,7 +516,7 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
     let (an, solved, lang) = (cx.an, cx.solved, cx.lang);
     let w = words(lang);
     match src {
-        Source::Fixed(f) => Some((*f).clone()),
+        Source::Fixed(f) => Some((**f).clone()),
         Source::Positions(t) => {
             let mut c = Canvas::default();
             positions::draw(an, solved, *t, &mut c, mu);

@@ -18,6 +18,7 @@ mod captions;
 mod compose;
 pub mod centres;
 pub mod course;
+mod course_data;
 mod course_forces;
 pub mod cylinder;
 pub mod diagram;
