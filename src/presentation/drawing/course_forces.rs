@@ -136,7 +136,14 @@ fn figures(
             id: "forces".into(),
             caption: vec![format!("{}, {pos}", forces::title(lang))],
             canvas: f.canvas,
-            scales: f.mu_l.iter().map(|&m| ("mu_l", m)).collect(),
+            // Each panel's μ_l and its polygon's μ_F, as the panels state
+            // them.
+            scales: f
+                .mu_l
+                .iter()
+                .map(|&m| ("mu_l", m))
+                .chain(f.mu_f.iter().map(|&m| ("mu_F", m)))
+                .collect(),
         });
     }
     let loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);

@@ -24,12 +24,14 @@ pub fn at(plan: &ForcePlan, i: usize, k: f64) -> Option<Point> {
 
 /// Draw `plan` at `k` times its size, naming each force by `name`; ids
 /// start with `tag`: `{tag}-vec-{from}-{to}` for the vectors (the plan's
-/// point numbers), `{tag}-pt-{i}` for the points.
+/// point numbers), `{tag}-pt-{i}` for the points. Its details (local
+/// enlargements) beside it in a row, or with `column` (a box taller than
+/// wide) one above the other.
 pub fn draw(
     plan: &ForcePlan,
     name: &dyn Fn(Force) -> Option<Label>,
     c: &mut Canvas,
-    k: f64,
+    (k, column): (f64, bool),
     tag: &str,
 ) {
     let pt = |i: usize| at(plan, i, k);
@@ -122,7 +124,7 @@ pub fn draw(
         }
     }
     c.place_pending();
-    draw_details(&details, &segs, &pt, name, c, tag);
+    draw_details(&details, &segs, &pt, name, c, (tag, column));
 }
 
 /// The local enlargements `details` of a polygon drawn in `c` (its
@@ -135,10 +137,10 @@ fn draw_details(
     pt: &dyn Fn(usize) -> Option<Point>,
     name: &dyn Fn(Force) -> Option<Label>,
     c: &mut Canvas,
-    tag: &str,
+    (tag, column): (&str, bool),
 ) {
     let mut x = c.bounds().x1 + DETAIL_GAP;
-    let top = c.bounds().y0;
+    let mut top = c.bounds().y0;
     for (n, d) in details.iter().enumerate() {
         let numeral = ["I", "II", "III", "IV"][n];
         // On the polygon: a thin circle round the short vectors, numbered.
@@ -174,7 +176,12 @@ fn draw_details(
             }
         }
         c.place_pending();
-        x = c.bounds().x1 + DETAIL_GAP;
+        if column {
+            // The next above this one's designation.
+            top = o.y + d.area.height() * m / 2.0 + 6.0 + FONT;
+        } else {
+            x = c.bounds().x1 + DETAIL_GAP;
+        }
     }
 }
 
@@ -314,13 +321,14 @@ const EQUATION_WIDTH: f64 = 60.0;
 
 /// The vector equation of `plan` under what `c` holds (its polygon), in
 /// the order of laying off and with the polygon's names ("R^τ_34 + Φ_4 +
-/// … + R^n_34 = 0"), wrapped to the polygon's width (at least
-/// [`EQUATION_WIDTH`]); its lines' ids `{tag}-equation-{j}`.
+/// … + R^n_34 = 0"), wrapped to the polygon's width or `room` mm (the
+/// width of the box it is drawn in), whichever is wider, and at least
+/// [`EQUATION_WIDTH`]; its lines' ids `{tag}-equation-{j}`.
 pub fn equation(
     plan: &ForcePlan,
     name: &dyn Fn(Force) -> Option<Label>,
     c: &mut Canvas,
-    tag: &str,
+    (tag, room): (&str, f64),
 ) {
     use super::canvas::{lettering, runs_width};
     use crate::words::notation::runs;
@@ -333,7 +341,7 @@ pub fn equation(
     }
     let size = FONT * lettering();
     let b = c.bounds();
-    let width = b.width().max(EQUATION_WIDTH);
+    let width = b.width().max(room).max(EQUATION_WIDTH);
     let wide = |s: &str| runs_width(&runs(s), size);
     let mut lines: Vec<String> = vec![String::new()];
     let n = terms.len();

@@ -11,9 +11,10 @@ use super::free_body::{self, Scene};
 use super::layout::field_size;
 use super::{DrawOptions, SheetSize, fill, force_polygon, lower_scale, table};
 use crate::kinematics::solve::Analysis;
-use crate::kinematics::construction::scale::standard_above;
 use crate::kinetostatics::force_plan::{self, ForcePlan, Which};
+use crate::kinematics::construction::scale::standard_above;
 use crate::kinetostatics::loads::Load;
+use crate::model::structure::Stage;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::catalogue::fill as phrase;
@@ -116,45 +117,88 @@ fn note_lines(lang: Lang, width: f64) -> Vec<String> {
 /// The least width and height of a free body's box, mm.
 const MIN_BODY: f64 = 30.0;
 
-/// Panels in a grid on a field, each of the same size: its caption and
-/// scale on top, its free body on the left, its polygon on the right in a
-/// box that holds the largest of the polygons (each drawn at its plan's
-/// own μ_F, the one its steps and the result file state). Each free body
-/// is drawn at its own μ_l, the largest standard scale that fills the rest
-/// of the panel, as the course draws each group apart: one μ_l for all
-/// would shrink the input link to a blob beside a large group.
+/// How much larger the main group's panel is than the others (its row's
+/// height, its width in its row), as a weight against their 1.
+const MAIN_WEIGHT: f64 = 1.5;
+
+/// How many times a polygon may be built at the next standard μ_F up
+/// from its plan's where no grid holds the polygons.
+const ROUNDS: usize = 8;
+
+/// The least share of its box's width or height a polygon's vectors span
+/// for it to be drawn there (where a box holds it only smaller, its names
+/// and details crowd it out: a larger box is wanted).
+const LEAST_SPAN: f64 = 0.4;
+
+/// The shares of a panel's width (less the gap) its polygon's box may
+/// take: the smallest that holds the polygons leaves the free bodies the
+/// most.
+const POLYGON_SHARES: [f64; 3] = [0.4, 0.5, 0.62];
+
+/// Panels in a grid on a field: each its caption and scale on top, its
+/// free body on the left, its polygon on the right in a box of its own.
+/// The main group's panel (the first group attached to the input) is the
+/// largest: its row taller, and it wider than the others in its row. Each
+/// free body is drawn at its own μ_l and each polygon built at its own
+/// μ_F, the largest standard scales that fill their boxes, as the course
+/// draws each group apart: one μ_l for all would shrink the input link to
+/// a blob beside a large group.
 #[derive(Clone, Copy)]
 struct Grid {
     cols: usize,
     rows: usize,
     field: (f64, f64),
-    /// The polygons' box, w × h (mm).
-    polygon: (f64, f64),
+    /// The main group's panel (its place among the plans).
+    main: Option<usize>,
+    /// The share of a panel's width its polygon's box takes.
+    share: f64,
 }
 
 impl Grid {
-    fn col_width(&self) -> f64 {
-        (self.field.0 - GAP * (self.cols - 1) as f64) / self.cols as f64
+    /// Row `r`'s weight in the field's height.
+    fn row_weight(&self, r: usize) -> f64 {
+        match self.main {
+            Some(m) if self.rows > 1 && m / self.cols == r => MAIN_WEIGHT,
+            _ => 1.0,
+        }
     }
-    fn row_height(&self) -> f64 {
-        (self.field.1 - GAP * (self.rows - 1) as f64) / self.rows as f64
+    /// Column `c`'s weight in row `r`'s width.
+    fn col_weight(&self, r: usize, c: usize) -> f64 {
+        match self.main {
+            Some(m) if self.cols > 1 && m / self.cols == r && m % self.cols == c => MAIN_WEIGHT,
+            _ => 1.0,
+        }
     }
     /// The band at a panel's top: its caption and its μ_l.
     fn head() -> f64 {
         2.0 * CAPTION * super::canvas::lettering()
     }
+    /// Panel `i`'s top left corner (drawing coordinates, y up), its width
+    /// and height.
+    fn cell(&self, i: usize) -> (Point, f64, f64) {
+        let (col, row) = (i % self.cols, i / self.cols);
+        let rows: f64 = (0..self.rows).map(|r| self.row_weight(r)).sum();
+        let unit_h = (self.field.1 - GAP * (self.rows - 1) as f64) / rows;
+        let above: f64 = (0..row).map(|r| self.row_weight(r)).sum();
+        let cols: f64 = (0..self.cols).map(|c| self.col_weight(row, c)).sum();
+        let unit_w = (self.field.0 - GAP * (self.cols - 1) as f64) / cols;
+        let left: f64 = (0..col).map(|c| self.col_weight(row, c)).sum();
+        (
+            Point::new(
+                left * unit_w + col as f64 * GAP,
+                -(above * unit_h + row as f64 * GAP),
+            ),
+            self.col_weight(row, col) * unit_w,
+            self.row_weight(row) * unit_h,
+        )
+    }
     /// Panel `i`'s top left corner (drawing coordinates, y up), its free
     /// body's box and its polygon's box (w × h).
     fn panel(&self, i: usize) -> (Point, (f64, f64), (f64, f64)) {
-        let (col, row) = (i % self.cols, i / self.cols);
-        let (cw, rh) = (self.col_width(), self.row_height());
+        let (corner, cw, rh) = self.cell(i);
         let h = rh - Grid::head();
-        let pw = self.polygon.0;
-        (
-            Point::new(col as f64 * (cw + GAP), -(row as f64) * (rh + GAP)),
-            (cw - pw - GAP, h),
-            (pw, h - SCALE_LINE),
-        )
+        let pw = (cw - GAP) * self.share;
+        (corner, (cw - GAP - pw, h), (pw, h - SCALE_LINE))
     }
 }
 
@@ -169,45 +213,25 @@ pub fn figure(
 ) -> Option<Figure> {
     let fp = s.dynamics.as_ref()?.force_plans.as_ref()?;
     figure_of(an, s, opt, (field, may_drop), &fp.plans)
+        .or_else(|| figure_in(an, s, opt, (field, may_drop, false), &fp.plans))
 }
 
-/// The figure of position `s`'s force plans `plans` (all, or one group's
-/// where a sheet holds them one by one) on a field of `field` mm; `None`
-/// where none, or where no grid holds them. Where no grid holds the
-/// polygons as built, each is built again at the next standard μ_F up,
-/// round by round, until the panels hold them: a construction at that
-/// scale, stated in its panel.
-pub fn figure_of(
-    an: &Analysis,
-    s: &Solved,
-    opt: &DrawOptions,
-    (field, may_drop): ((f64, f64), bool),
-    plans: &[ForcePlan],
-) -> Option<Figure> {
-    let d = s.dynamics.as_ref()?;
-    if plans.is_empty() {
-        return None;
-    }
-    let first = try_figure(an, s, opt, (field, may_drop), plans);
-    if first.is_some() {
-        return first;
-    }
-    let mut plans = plans.to_vec();
-    for _ in 0..8 {
-        plans = plans
-            .iter()
-            .map(|p| at_scale(an, s, &d.loads, p, standard_above(p.mu)))
-            .collect::<Option<Vec<_>>>()?;
-        if let Some(f) = try_figure(an, s, opt, (field, may_drop), &plans) {
-            return Some(f);
-        }
-    }
-    None
+/// The place among `plans` of the main group's: the first Assur group
+/// attached to the input (the first solved, the last plan of a group).
+fn main_plan(an: &Analysis, plans: &[ForcePlan]) -> Option<usize> {
+    let first = an.structure.stages.iter().find_map(|st| match st {
+        Stage::Group(g) => Some(*g),
+        Stage::Input(_) => None,
+    })?;
+    plans.iter().position(|p| p.group == Some(first))
 }
 
 /// `plan` built again at the scale `mu` N/mm (the force construction of
-/// its group or input at that μ_F).
+/// its group or input at that μ_F); itself where it is built at `mu`.
 fn at_scale(an: &Analysis, s: &Solved, loads: &[Load], plan: &ForcePlan, mu: f64) -> Option<ForcePlan> {
+    if (plan.mu - mu).abs() <= 1e-12 * mu {
+        return Some(plan.clone());
+    }
     let which = match (plan.group, plan.input) {
         (Some(g), _) => Which::Group(g),
         (None, Some(i)) => Which::Input(i),
@@ -219,15 +243,50 @@ fn at_scale(an: &Analysis, s: &Solved, loads: &[Load], plan: &ForcePlan, mu: f64
         .find(|p| p.group == plan.group && p.input == plan.input)
 }
 
-/// [`figure`] of the force plans `plans` as they are built.
-fn try_figure(
+/// The real extent of `plan`'s points, w × h (N).
+fn real_extent(plan: &ForcePlan) -> (f64, f64) {
+    let r = plan.points.iter().fold(None, |r: Option<Rect>, p| {
+        let q = Rect::from_points(p.to_point(), p.to_point());
+        Some(r.map_or(q, |r| r.union(q)))
+    });
+    r.map_or((0.0, 0.0), |r| (r.width() * plan.mu, r.height() * plan.mu))
+}
+
+/// A polygon built and drawn: its plan at the μ_F it is drawn at, and
+/// its drawing (the polygon, its details, its equation).
+type Polygon = (ForcePlan, Canvas);
+
+/// The figure of position `s`'s force plans `plans` (all, or one group's
+/// where a sheet holds them one by one) on a field of `field` mm; `None`
+/// where none, or where no grid holds them. Each polygon is built again
+/// at the smallest standard μ_F at which it fills its box: a
+/// construction at that scale, stated in its panel.
+pub fn figure_of(
     an: &Analysis,
     s: &Solved,
     opt: &DrawOptions,
     (field, may_drop): ((f64, f64), bool),
     plans: &[ForcePlan],
 ) -> Option<Figure> {
+    figure_in(an, s, opt, (field, may_drop, true), plans)
+}
+
+/// [`figure_of`]; with `legible`, only where each polygon's vectors span
+/// at least [`LEAST_SPAN`] of its box one way (else the box is too small
+/// for it, its names and details: a larger sheet, or a sheet of its
+/// own, holds it); without, at whatever μ_F its box holds it (up to
+/// [`ROUNDS`] standard values above its plan's).
+fn figure_in(
+    an: &Analysis,
+    s: &Solved,
+    opt: &DrawOptions,
+    (field, may_drop, legible): ((f64, f64), bool, bool),
+    plans: &[ForcePlan],
+) -> Option<Figure> {
     let d = s.dynamics.as_ref()?;
+    if plans.is_empty() {
+        return None;
+    }
     let loads = &d.loads;
     let tags: Vec<String> = (1..=plans.len()).map(|i| format!("f{i}")).collect();
     let scene = |i: usize| Scene {
@@ -249,61 +308,101 @@ fn try_figure(
         .map(|(i, p)| free_body::extent(&scene(i), p))
         .collect();
     let name = |f| names::force(&an.mech, loads, f, opt.lang);
-    // The polygons with their equations under them; where no grid holds
-    // those and `may_drop` (a small field with no larger format to go to:
-    // the A2 course sheet), the polygons alone.
-    let draw_polygons = |equations: bool| -> Vec<Canvas> {
-        plans
-            .iter()
-            .enumerate()
-            .map(|(i, plan)| {
-                let mut c = Canvas::default();
-                force_polygon::draw(plan, &name, &mut c, 1.0, &tags[i]);
+    // Polygon i with its equation under it (or without) built at the
+    // scale that fills a box, from the scale its real extent fits at (as
+    // built where it is all at the pole), at most `cap`.
+    let polygon = |i: usize, bx: (f64, f64), (equations, cap): (bool, f64)| -> Option<Polygon> {
+        let draw = |plan: ForcePlan| {
+            let mut c = Canvas::default();
+            c.group_id("force-polygon", format!("{}-polygon", tags[i]), |c| {
+                force_polygon::draw(&plan, &name, c, (1.0, bx.1 > bx.0), &tags[i]);
                 if equations {
-                    force_polygon::equation(plan, &name, &mut c, &tags[i]);
+                    force_polygon::equation(&plan, &name, c, (&tags[i], bx.0));
                 }
-                c
-            })
-            .collect()
-    };
-    let box_of = |polygons: &[Canvas]| {
-        polygons.iter().fold((0.0f64, 0.0f64), |a, c| {
-            let b = c.bounds();
-            (a.0.max(b.width()), a.1.max(b.height()))
-        })
+            });
+            Some((plan, c))
+        };
+        let p = &plans[i];
+        let (w, h) = real_extent(p);
+        let lower = match w.max(h) > 1e-9 {
+            true => lower_scale(w, h, bx).min(cap),
+            false => p.mu,
+        };
+        let build = |mu: f64| {
+            (mu <= cap * (1.0 + 1e-9))
+                .then(|| at_scale(an, s, loads, p, mu).and_then(draw))
+                .flatten()
+        };
+        let (_, (plan, c)) = fill(lower, bx, build, |(_, c)| c.bounds())?;
+        // Its vectors' span in its box (mm: the plan's points are drawn
+        // as built); a plan all at the pole spans nothing at any scale.
+        let (w, h) = real_extent(p);
+        let held = !legible || span(&plan, bx) >= LEAST_SPAN || w.max(h) <= 1e-9;
+        held.then_some((plan, c))
     };
     // The note's lines under the panels.
     let note = note_lines(opt.lang, field.0);
     let note_band = NOTE_LINE * super::canvas::lettering() * note.len() as f64;
-    let panels = (field.0, field.1 - note_band);
-    let mut polygons = draw_polygons(true);
-    let mut polygon = box_of(&polygons);
-    let mut found = best_grid(plans.len(), (panels, polygon), &real, &body);
-    if found.is_none() && may_drop {
-        polygons = draw_polygons(false);
-        polygon = box_of(&polygons);
-        found = best_grid(plans.len(), (panels, polygon), &real, &body);
+    let panels = ((field.0, field.1 - note_band), main_plan(an, plans));
+    // Each polygon at most as small as built (its longest vector 40–80
+    // mm); where no grid holds them so, at most the next standard μ_F up,
+    // round by round. The polygons with their equations under them; where
+    // no grid holds those and `may_drop` (a small field with no larger
+    // format to go to: the A2 course sheet), the polygons alone.
+    let grids = grids(plans.len(), panels, &real, &body);
+    let mut caps: Vec<f64> = plans.iter().map(|p| p.mu).collect();
+    let mut found = None;
+    for _ in 0..=ROUNDS {
+        let try_with = |equations: bool| {
+            let each = |i: usize, b: (f64, f64)| polygon(i, b, (equations, caps[i]));
+            holding(&grids, &each, legible)
+        };
+        found = try_with(true).or_else(|| may_drop.then(|| try_with(false)).flatten());
+        if found.is_some() {
+            break;
+        }
+        caps = caps.iter().map(|&m| standard_above(m)).collect();
     }
-    let (grid, bodies) = found?;
+    let (k, polygons) = found?;
+    let (grid, bodies) = &grids[k];
     let smallest = bodies
         .iter()
         .zip(&real)
         .map(|((mu, _), r)| r.width().max(r.height()) / mu)
         .fold(f64::INFINITY, f64::min);
+    let (canvas, mu_l, mu_f) = compose(an, opt.lang, (grid, bodies, &polygons), (&note, field.1));
+    Some(Figure {
+        canvas,
+        mu_l,
+        mu_f,
+        smallest,
+    })
+}
+
+/// The figure's drawing: the panels of `grid` with their free bodies
+/// `bodies` and polygons `polygons`, the note's lines `note` at the foot
+/// of a field `height` mm high; with each body's μ_l and each polygon's
+/// μ_F.
+fn compose(
+    an: &Analysis,
+    lang: Lang,
+    (grid, bodies, polygons): (&Grid, &[(f64, Canvas)], &[Polygon]),
+    (note, height): (&[String], f64),
+) -> (Canvas, Vec<f64>, Vec<f64>) {
     let mut out = Canvas::default();
     let (mut mu_l, mut mu_f) = (Vec::new(), Vec::new());
-    for (i, (plan, (mu, body))) in plans.iter().zip(&bodies).enumerate() {
+    for (i, ((mu, body), (plan, poly))) in bodies.iter().zip(polygons).enumerate() {
         let caption = [
-            Label::new(caption(an, plan, opt.lang), ""),
-            super::captions::scale_label("l", *mu, "m", opt.lang),
+            Label::new(caption(an, plan, lang), ""),
+            super::captions::scale_label("l", *mu, "m", lang),
         ];
         draw_panel(
             &mut out,
-            (plan, &tags[i]),
-            (body, &polygons[i]),
-            grid.panel(i),
+            (plan, &format!("f{}", i + 1)),
+            (body, poly),
+            (grid.panel(i), grid.cell(i)),
             caption,
-            opt.lang,
+            lang,
         );
         mu_l.push(*mu);
         mu_f.push(plan.mu);
@@ -312,52 +411,53 @@ fn try_figure(
     let line = NOTE_LINE * super::canvas::lettering();
     for (j, text) in note.iter().enumerate() {
         out.rich_id(
-            Point::new(0.0, -field.1 + (note.len() - 1 - j) as f64 * line + 1.5),
+            Point::new(0.0, -height + (note.len() - 1 - j) as f64 * line + 1.5),
             text,
             FONT,
             ("note", "start"),
             format!("forces-note-{j}"),
         );
     }
-    Some(Figure {
-        canvas: out,
-        mu_l,
-        mu_f,
-        smallest,
-    })
+    (out, mu_l, mu_f)
 }
 
-/// The grid of `count` panels on `field` whose smallest free body is
-/// drawn largest (each at its own μ_l from its real extent in `real`;
-/// `body` draws body i at a μ_l), its polygons' box `polygon` (mm) beside
-/// each: one to three columns; with each body's μ_l and drawing; `None`
-/// where no grid holds the polygons.
-fn best_grid(
+/// A grid with its free bodies drawn: each body's μ_l and drawing.
+type Bodies = (Grid, Vec<(f64, Canvas)>);
+
+/// The grids of `count` panels on `field` (the main group's panel `main`
+/// the largest) that hold the free bodies, of one to three columns and
+/// each share of a panel for its polygon ([`POLYGON_SHARES`]), the one
+/// whose smallest free body is drawn largest first (each at its own μ_l
+/// from its real extent in `real`; `body` draws body i at a μ_l).
+fn grids(
     count: usize,
-    (field, polygon): ((f64, f64), (f64, f64)),
+    (field, main): ((f64, f64), Option<usize>),
     real: &[Rect],
     body: &impl Fn(usize, f64) -> Canvas,
-) -> Option<(Grid, Vec<(f64, Canvas)>)> {
-    // (smallest body, the grid, the bodies drawn)
-    type Candidate = (f64, Grid, Vec<(f64, Canvas)>);
-    let mut best: Option<Candidate> = None;
-    for cols in (1..=3usize).filter(|&c| c <= count) {
+) -> Vec<Bodies> {
+    let mut out: Vec<(f64, Bodies)> = Vec::new();
+    let each = (1..=3usize)
+        .filter(|&c| c <= count)
+        .flat_map(|c| POLYGON_SHARES.map(|share| (c, share)));
+    for (cols, share) in each {
         let grid = Grid {
             cols,
             rows: count.div_ceil(cols),
             field,
-            polygon,
+            main,
+            share,
         };
-        let (_, (bw, bh), (_, ph)) = grid.panel(0);
-        if bw < MIN_BODY || bh < MIN_BODY || ph < polygon.1 {
+        let boxes: Vec<_> = (0..count).map(|i| grid.panel(i).1).collect();
+        if boxes.iter().any(|(bw, bh)| *bw < MIN_BODY || *bh < MIN_BODY) {
             continue;
         }
         let drawn: Option<Vec<(f64, Canvas)>> = real
             .iter()
+            .zip(&boxes)
             .enumerate()
-            .map(|(i, r)| {
-                let lower = lower_scale(r.width(), r.height(), (bw, bh));
-                fill(lower, (bw, bh), |mu| Some(body(i, mu)), |c| c.bounds())
+            .map(|(i, (r, b))| {
+                let lower = lower_scale(r.width(), r.height(), *b);
+                fill(lower, *b, |mu| Some(body(i, mu)), |c| c.bounds())
             })
             .collect();
         let Some(drawn) = drawn else { continue };
@@ -367,12 +467,52 @@ fn best_grid(
             .zip(real)
             .map(|((mu, _), r)| r.width().max(r.height()) / mu)
             .fold(f64::INFINITY, f64::min);
-        if best.as_ref().is_none_or(|b| smallest > b.0) {
-            best = Some((smallest, grid, drawn));
+        out.push((smallest, (grid, drawn)));
+    }
+    out.sort_by(|a, b| b.0.total_cmp(&a.0));
+    out.into_iter().map(|(_, g)| g).collect()
+}
+
+/// The grid of `grids` in whose boxes `polygon` builds every polygon,
+/// with the polygons: with `first`, the first such (its bodies the
+/// largest); else the one whose least filled polygon spans the most of
+/// its box.
+fn holding(
+    grids: &[Bodies],
+    polygon: &dyn Fn(usize, (f64, f64)) -> Option<Polygon>,
+    first: bool,
+) -> Option<(usize, Vec<Polygon>)> {
+    let mut best: Option<(f64, (usize, Vec<Polygon>))> = None;
+    for (k, (grid, drawn)) in grids.iter().enumerate() {
+        let polygons: Option<Vec<Polygon>> = (0..drawn.len())
+            .map(|i| polygon(i, grid.panel(i).2))
+            .collect();
+        let Some(polygons) = polygons else { continue };
+        if first {
+            return Some((k, polygons));
+        }
+        let least = polygons
+            .iter()
+            .enumerate()
+            .map(|(i, (plan, _))| span(plan, grid.panel(i).2))
+            .fold(f64::INFINITY, f64::min);
+        if best.as_ref().is_none_or(|b| least > b.0) {
+            best = Some((least, (k, polygons)));
         }
     }
-    best.map(|(_, g, d)| (g, d))
+    best.map(|(_, b)| b)
 }
+
+/// The larger share of box `bx`'s width or height (mm) `plan`'s vectors
+/// span (its points are drawn as built).
+fn span(plan: &ForcePlan, bx: (f64, f64)) -> f64 {
+    let (w, h) = real_extent(plan);
+    (w / bx.0).max(h / bx.1) / plan.mu
+}
+
+/// A panel's place: its corner, its free body's and polygon's boxes
+/// ([`Grid::panel`]), and its corner, width and height ([`Grid::cell`]).
+type Panel = ((Point, (f64, f64), (f64, f64)), (Point, f64, f64));
 
 /// Draw one panel into `out`: the `caption` (the group, its μ_l), the free
 /// body `body` in its box and the polygon of `plan` drawn at its own μ_F
@@ -381,11 +521,18 @@ fn draw_panel(
     out: &mut Canvas,
     (plan, tag): (&ForcePlan, &str),
     (body, poly): (&Canvas, &Canvas),
-    (corner, (bw, bh), (pw, ph)): (Point, (f64, f64), (f64, f64)),
+    ((corner, (bw, bh), (pw, ph)), (_, cw, rh)): Panel,
     caption: [Label; 2],
     lang: Lang,
 ) {
     let top = corner.y - Grid::head();
+    // The panel and the polygon's box, not drawn: the checks read them.
+    let px = corner.x + bw + GAP;
+    out.region(
+        Rect::new(corner.x, corner.y - rh, corner.x + cw, corner.y),
+        format!("{tag}-panel"),
+    );
+    out.region(Rect::new(px, top - ph, px + pw, top), format!("{tag}-polygon-box"));
     let mu = plan.mu;
     let line = CAPTION * super::canvas::lettering();
     for (j, label) in caption.into_iter().enumerate() {
@@ -402,7 +549,6 @@ fn draw_panel(
     };
     let d = centre_in(body, Rect::new(corner.x, top - bh, corner.x + bw, top));
     out.append(body, d.x, d.y);
-    let px = corner.x + bw + GAP;
     let d = centre_in(poly, Rect::new(px, top - ph, px + pw, top));
     out.append(poly, d.x, d.y);
     // μ_F under the polygon, with an id the checks read it by.
@@ -421,8 +567,9 @@ fn draw_panel(
 /// force plans). Where the user asked for the sheet (`--sheet`:
 /// `opt.fixed_sheet`), on it: every group on one sheet where a grid
 /// holds them (the polygons' equations left off where that is what it
-/// takes), else each group on a sheet of its own (`forces_N_M`), and only
-/// a group no such sheet holds on a larger one. Else one sheet, on the
+/// takes), else each group on a sheet of its own (`forces_N_M`), its
+/// polygon smaller where that is what it takes, and only a group no such
+/// sheet holds on a larger one. Else one sheet, on the
 /// run's sheet or the first larger one on which each free body is drawn
 /// at least [`LEAST_BODY`].
 pub(super) fn sheets_of(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Vec<(SheetSize, Figure)> {
@@ -438,17 +585,21 @@ pub(super) fn sheets_of(an: &Analysis, s: &Solved, opt: &DrawOptions) -> Vec<(Sh
         return larger_force_figure(an, s, opt, plans).into_iter().collect();
     }
     let field = field_size(opt, 0.0);
-    let on_asked = |plans: &[ForcePlan]| {
-        figure_of(an, s, opt, (field, false), plans)
-            .or_else(|| figure_of(an, s, opt, (field, true), plans))
+    let on_asked = |plans: &[ForcePlan], legible: bool| {
+        figure_in(an, s, opt, (field, false, legible), plans)
+            .or_else(|| figure_in(an, s, opt, (field, true, legible), plans))
             .map(|f| (opt.sheet, f))
     };
-    if let Some(whole) = on_asked(plans) {
+    if let Some(whole) = on_asked(plans, true) {
         return vec![whole];
     }
     plans
         .chunks(1)
-        .filter_map(|one| on_asked(one).or_else(|| larger_force_figure(an, s, opt, one)))
+        .filter_map(|one| {
+            on_asked(one, true)
+                .or_else(|| on_asked(one, false))
+                .or_else(|| larger_force_figure(an, s, opt, one))
+        })
         .collect()
 }
 
@@ -473,5 +624,13 @@ fn larger_force_figure(
         }
         last = Some((size, f));
     }
-    last
+    // None holds the polygons legibly: the largest as it may.
+    last.or_else(|| {
+        let o = DrawOptions {
+            sheet: SheetSize::ALL.into_iter().last()?,
+            ..*opt
+        };
+        let f = figure_in(an, s, &o, (field_size(&o, 0.0), true, false), plans)?;
+        Some((o.sheet, f))
+    })
 }

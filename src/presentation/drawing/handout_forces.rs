@@ -102,7 +102,7 @@ fn plan_figure(
     // The polygon as the plan was built: at its own μ_F.
     let name = |f| crate::words::forces::force(&an.mech, &d.loads, f, lang);
     let mut poly = Canvas::default();
-    force_polygon::draw(plan, &name, &mut poly, 1.0, &tag);
+    force_polygon::draw(plan, &name, &mut poly, (1.0, false), &tag);
     let caption = forces::caption(an, plan, lang);
     let _ = write!(
         h,

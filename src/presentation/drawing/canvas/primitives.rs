@@ -169,9 +169,15 @@ pub enum Prim {
         class: &'static str,
         opacity: f64,
         ink: &'static str,
+        /// Its id, where the checks find it by one.
+        id: Option<String>,
     },
     /// The end of a symbol or a group.
     End,
+    /// A region of the sheet, not drawn: a box the checks read (a force
+    /// polygon's box in its panel), `<g id=… data-box="x0 y0 x1 y1"/>` in
+    /// page coordinates.
+    Region { rect: Rect, id: String },
 }
 
 impl Prim {
@@ -192,6 +198,10 @@ impl Prim {
             Prim::Arrow { tip, .. } => *tip = p(*tip),
             Prim::Rich { at, .. } | Prim::Text { at, .. } | Prim::Symbol { at, .. } => {
                 *at = p(*at)
+            }
+            Prim::Region { rect, .. } => {
+                let (a, b) = (p(Point::new(rect.x0, rect.y0)), p(Point::new(rect.x1, rect.y1)));
+                *rect = Rect::from_points(a, b);
             }
             Prim::Group { .. } | Prim::End => {}
         }
@@ -368,6 +378,20 @@ impl Canvas {
             class,
             opacity,
             ink,
+            id: None,
+        });
+        draw(self);
+        self.prims.push(Prim::End);
+    }
+
+    /// What `draw` draws, as a group named `class` with the id `id` (a
+    /// figure the checks find whole: a force polygon), as drawn.
+    pub fn group_id(&mut self, class: &'static str, id: String, draw: impl FnOnce(&mut Canvas)) {
+        self.prims.push(Prim::Group {
+            class,
+            opacity: 1.0,
+            ink: "black",
+            id: Some(id),
         });
         draw(self);
         self.prims.push(Prim::End);
@@ -376,6 +400,12 @@ impl Canvas {
     /// The last primitive drawn, past the end of a symbol.
     pub fn last_drawn_mut(&mut self) -> Option<&mut Prim> {
         self.prims.iter_mut().rev().find(|p| !matches!(p, Prim::End))
+    }
+
+    /// A region not drawn, with an id the checks read its box by
+    /// ([`Prim::Region`]).
+    pub fn region(&mut self, rect: Rect, id: String) {
+        self.prims.push(Prim::Region { rect, id });
     }
 
     /// A plan or mechanism point: a dot with an id the checks can find.
@@ -458,7 +488,7 @@ impl Canvas {
                         0.2,
                     );
                 }
-                Prim::Symbol { .. } | Prim::Group { .. } | Prim::End => {}
+                Prim::Symbol { .. } | Prim::Group { .. } | Prim::End | Prim::Region { .. } => {}
             }
         }
         r.unwrap_or(Rect::ZERO)

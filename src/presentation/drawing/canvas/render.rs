@@ -145,6 +145,7 @@ impl Canvas {
                     class,
                     opacity,
                     ink,
+                    id,
                 } => {
                     inks.push(inked(ink, inks.last().copied().unwrap_or("black")));
                     let opacity = if *opacity < 1.0 {
@@ -152,12 +153,14 @@ impl Canvas {
                     } else {
                         String::new()
                     };
-                    let _ = writeln!(out, r#"<g class="{class}"{opacity}>"#);
+                    let id = id_attr(id);
+                    let _ = writeln!(out, r#"<g{id} class="{class}"{opacity}>"#);
                 }
                 Prim::End => {
                     inks.pop();
                     out.push_str("</g>\n")
                 }
+                Prim::Region { rect, id } => region_svg(out, o, *rect, id),
                 Prim::Rich {
                     at,
                     runs,
@@ -399,6 +402,21 @@ fn label_svg(label: &Label, size: f64) -> String {
 }
 
 /// ` id="…"` of an element that has an id, else nothing.
+/// A region not drawn ([`Prim::Region`]): an empty group with its id and
+/// its box on the page, top left and bottom right.
+fn region_svg(out: &mut String, o: Origin, rect: kurbo::Rect, id: &str) {
+    let (a, b) = (Point::new(rect.x0, rect.y1), Point::new(rect.x1, rect.y0));
+    let _ = writeln!(
+        out,
+        r#"<g id="{}" class="region" data-box="{} {} {} {}"/>"#,
+        xml(id),
+        o.x(a),
+        o.y(a),
+        o.x(b),
+        o.y(b)
+    );
+}
+
 fn id_attr(id: &Option<String>) -> String {
     id.as_ref()
         .map(|i| format!(r#" id="{i}""#))
