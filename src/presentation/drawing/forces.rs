@@ -297,10 +297,19 @@ fn figure_in(
         lang: opt.lang,
         tag: &tags[i],
     };
+    // Each free body drawn once at a scale, whichever grids ask for it
+    // (placing its labels is most of a force sheet's time).
+    let bodies_drawn = std::cell::RefCell::new(std::collections::HashMap::new());
     let body = |i: usize, mu: f64| -> Canvas {
-        let mut c = Canvas::default();
-        free_body::draw(&scene(i), &plans[i], &mut c, mu);
-        c
+        bodies_drawn
+            .borrow_mut()
+            .entry((i, mu.to_bits()))
+            .or_insert_with(|| {
+                let mut c = Canvas::default();
+                free_body::draw(&scene(i), &plans[i], &mut c, mu);
+                c
+            })
+            .clone()
     };
     let real: Vec<Rect> = plans
         .iter()
