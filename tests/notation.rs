@@ -1,0 +1,120 @@
+//! The lecture's notation on the sheets, the steps and the tables (issue
+//! 40's notation items), each against the lecture (seed `000`, Fig. 2.11).
+
+mod common;
+
+use common::*;
+use mechplan::words::construction::Lang;
+
+/// The shaper of Fig. 2.11 solved at its twelve positions.
+fn shaper() -> (mechplan::Analysis, Vec<mechplan::Solved>) {
+    let v = fixture("shaper_fig2_11");
+    let positions = v["positions"].clone();
+    solve(scene_with(v, positions))
+}
+
+/// Seed `000`, Fig. 2.11: "a^K_B3B = 2·ω3·v_B3B", its direction "v_B3B
+/// turned by 90° in the sense of ω3": a capital K, and the angular
+/// velocity of the guide (the kulisa 3 that slider 2 slides on), not of
+/// the slider — in the steps of every language and in the plan's table.
+#[test]
+fn coriolis_is_capital_k_with_the_guides_omega() {
+    let (an, solved) = shaper();
+    for lang in [Lang::En, Lang::Uk, Lang::Ru] {
+        let t = mechplan::report::to_steps(&an, &solved, lang);
+        // The equations underline their vectors with combining marks.
+        let t: String = t
+            .chars()
+            .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+            .collect();
+        assert!(t.contains("a^K_B3B2 = 2·ω3·v_B3B2"), "{t}");
+        assert!(t.contains("a_B3 = a_B + a^K_B3B + a^r_B3B"), "{t}");
+        assert!(!t.contains("a^k"), "a lower-case a^k in\n{t}");
+        assert!(!t.contains("·ω2·"), "ω of the slider in\n{t}");
+    }
+    let t = mechplan::report::to_steps(&an, &solved, Lang::En);
+    assert!(t.contains("v_B3B2 turned by 90° in the sense of ω3"), "{t}");
+    let plan = solved[1]
+        .plans
+        .as_ref()
+        .unwrap()
+        .acceleration
+        .clone()
+        .unwrap();
+    let rows = mechplan::drawing::table::plan_rows(&plan);
+    let names: Vec<&str> = rows.iter().map(|r| r.quantity.as_str()).collect();
+    assert!(names.contains(&"a^K_B3B2"), "{names:?}");
+    assert!(names.contains(&"a^r_B3B2"), "{names:?}");
+}
+
+/// The shaper with its masses and cutting force drawn at its twelve
+/// positions with the default options.
+fn shaper_sheets() -> Vec<mechplan::drawing::Sheet> {
+    let v = fixture("dynamics/shaper_fig2_11");
+    let positions = v["positions"].clone();
+    let (an, solved) = solve(scene_with(v, positions));
+    sheets(&an, &solved, &mechplan::drawing::DrawOptions::default())
+}
+
+/// A label's text as the sheet shows it (its runs joined).
+fn label_text(svg: &str, id: &str) -> Option<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let n = doc.descendants().find(|n| n.attribute("id") == Some(id))?;
+    Some(
+        n.descendants()
+            .filter(|t| t.is_text())
+            .filter_map(|t| t.text())
+            .collect(),
+    )
+}
+
+/// Seed `000`, Fig. 2.11 b: the plan of velocities shows d₅ for the ram
+/// 5 (it translates: its K, M and T lie there too, as the steps say) and
+/// the pole p_v alone; before, every shaper plan read "d₅, k′, m, t" and
+/// "p_v, d₀" and drew p_v → k′, p_v → m, p_v → t over d₀ → d₅ (four
+/// arrows in one).
+#[test]
+fn a_translating_links_points_are_not_named_again_on_the_plans() {
+    let sheets = shaper_sheets();
+    let plans: Vec<_> = sheets
+        .iter()
+        .filter(|s| s.name.starts_with("velocity_") || s.name.starts_with("acceleration_"))
+        .collect();
+    assert_eq!(plans.len(), 24);
+    for s in plans {
+        let pole = if s.name.starts_with("velocity") {
+            "p_v"
+        } else {
+            "p_a"
+        };
+        let d5 = label_text(&s.svg, "label-d_5");
+        if s.name.ends_with("_0") {
+            // The dead centre: d₅ at the pole with b₃, d, s₃.
+            let t = label_text(&s.svg, &format!("label-{pole}")).unwrap();
+            assert!(
+                !t.contains('k') && !t.contains('m') && !t.contains('t'),
+                "{}: {t}",
+                s.name
+            );
+            continue;
+        }
+        assert_eq!(d5.as_deref(), Some("d5"), "{}", s.name);
+        assert_eq!(
+            label_text(&s.svg, &format!("label-{pole}")).as_deref(),
+            Some(&pole.replace('_', "")[..]),
+            "{}",
+            s.name
+        );
+        let doc = roxmltree::Document::parse(&s.svg).unwrap();
+        let mut seen: Vec<[String; 4]> = Vec::new();
+        for n in doc.descendants().filter(|n| n.has_tag_name("line")) {
+            let e = ["x1", "y1", "x2", "y2"].map(|a| n.attribute(a).unwrap().to_string());
+            assert!(
+                !seen.contains(&e),
+                "{}: a vector drawn twice: {e:?}",
+                s.name
+            );
+            seen.push(e);
+        }
+    }
+}
