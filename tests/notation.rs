@@ -118,3 +118,44 @@ fn a_translating_links_points_are_not_named_again_on_the_plans() {
         }
     }
 }
+
+/// Every text element of a sheet, its runs joined, in order.
+fn texts(svg: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .map(|n| {
+            n.descendants()
+                .filter(|t| t.is_text())
+                .filter_map(|t| t.text())
+                .collect()
+        })
+        .collect()
+}
+
+/// Zhukovsky's lever gives F_b one way in its table and in its caption's
+/// ΣM_p = 0: its magnitude, the arrow drawn as it acts, the convention
+/// stated on the sheet. Before, a balancing force against its assumed
+/// direction read 45.83 in the table and −45.83 in the caption
+/// (positions 7 and 11 of the shaper).
+#[test]
+fn the_balancing_force_has_one_sign_on_the_lever_sheet() {
+    for s in shaper_sheets()
+        .iter()
+        .filter(|s| s.name.starts_with("lever_"))
+    {
+        let t = texts(&s.svg);
+        let row = t.iter().position(|x| x == "Fb (B)").unwrap();
+        let in_table = &t[row + 1];
+        let sum = t.iter().find(|x| x.starts_with("ΣMp")).unwrap();
+        let in_caption = sum.rsplit("Fb = ").next().unwrap().trim_end_matches(" N");
+        assert_eq!(in_caption, in_table, "{}: {sum}", s.name);
+        assert!(!in_caption.starts_with('−'), "{}: {sum}", s.name);
+        assert!(
+            t.iter()
+                .any(|x| x.starts_with("Fb in the table and in ΣMp")),
+            "{}",
+            s.name
+        );
+    }
+}

@@ -252,13 +252,16 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
             n(sum),
             u("N·mm"),
             {
-                let h = l.at_b.cross(l.dir_b);
+                // The arm of F_b as it acts (the arrow drawn), so that F_b
+                // is its magnitude, as in the table.
+                let h = l.at_b.cross(l.dir_b) * l.f_b.signum();
                 if h < 0.0 { format!("({})", n(h)) } else { n(h) }
             },
             u("mm"),
-            n(l.f_b),
+            n(l.f_b.abs()),
             u("N")
         ),
+        w.convention.replace("{b}", b),
     ];
     let m = &an.mech;
     match l.balancing {
@@ -274,16 +277,18 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
                 crate::model::scene::InputSpec::Slider { .. } => ("", mb / l.f_b),
             };
             out.push(format!(
-                "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {}",
+                "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {} {}",
                 m.point_name(l.point_b),
-                n(l.f_b),
+                n(l.f_b.abs()),
                 n(arm),
-                n(mb),
-                u("N·m")
+                n(mb.abs()),
+                u("N·m"),
+                // Its sense, as F_b is a magnitude: ↺ counter-clockwise.
+                if mb < 0.0 { "↻" } else { "↺" }
             ));
         }
         Balancing::Force(fb) => {
-            out[1] = out[1].replace(&format!("F_{b} = {} {}", n(l.f_b), u("N")), "");
+            out[1] = out[1].replace(&format!("F_{b} = {} {}", n(l.f_b.abs()), u("N")), "");
             out.push(format!("F_{b} = {} {} ({})", n(fb), u("N"), w.along));
         }
     }
