@@ -159,3 +159,46 @@ fn the_balancing_force_has_one_sign_on_the_lever_sheet() {
         );
     }
 }
+
+/// The plan of the mechanism shows the angular velocity of every link
+/// that turns, as the plan of velocities measured it, not ω1 alone (seed
+/// `000`, Fig. 2.11: "ω3 направлена у той же бік", the kulisa's ω3 drawn
+/// on the scheme): the shaper's kulisa 3; not its slider blocks 2 and 4
+/// (they turn with their guides) nor the ram 5 (it translates). The
+/// six-link's coupler 2, rocker 3 and connecting rod 4 each have theirs.
+#[test]
+fn the_plan_of_the_mechanism_shows_every_turning_links_omega() {
+    let ids = |sheets: &[mechplan::drawing::Sheet], name: &str| -> Vec<String> {
+        let s = sheets.iter().find(|s| s.name == name).unwrap();
+        let doc = roxmltree::Document::parse(&s.svg).unwrap();
+        doc.descendants()
+            .filter_map(|n| n.attribute("id"))
+            .filter(|id| id.starts_with("omega-") || id.starts_with("input-"))
+            .map(String::from)
+            .collect()
+    };
+    let sh = shaper_sheets();
+    for k in 1..12 {
+        let got = ids(&sh, &format!("mechanism_{k}"));
+        assert!(
+            got.contains(&"omega-3".to_string()),
+            "mechanism_{k}: {got:?}"
+        );
+        for l in ["omega-2", "omega-4", "omega-5", "omega-1"] {
+            assert!(!got.contains(&l.to_string()), "mechanism_{k}: {got:?}");
+        }
+        let s = sh
+            .iter()
+            .find(|s| s.name == format!("mechanism_{k}"))
+            .unwrap();
+        assert!(texts(&s.svg).iter().any(|t| t == "ω3"), "mechanism_{k}");
+    }
+    let v = fixture("six_link_fig2_10");
+    let positions = v["positions"].clone();
+    let (an, solved) = solve(scene_with(v, positions));
+    let six = sheets(&an, &solved, &mechplan::drawing::DrawOptions::default());
+    let got = ids(&six, "mechanism_2");
+    for l in ["omega-2", "omega-3", "omega-4", "input-ω"] {
+        assert!(got.contains(&l.to_string()), "{got:?}");
+    }
+}

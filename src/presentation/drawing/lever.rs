@@ -276,15 +276,15 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
                 ),
                 crate::model::scene::InputSpec::Slider { .. } => ("", mb / l.f_b),
             };
+            // M_b signed, counter-clockwise positive; F_b a magnitude.
+            let sign = if mb < 0.0 { "−" } else { "" };
             out.push(format!(
-                "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {} {}",
+                "M_{b} = {sign}F_{b}·l_{pivot}{} = {sign}{}·{} = {} {}",
                 m.point_name(l.point_b),
                 n(l.f_b.abs()),
                 n(arm),
-                n(mb.abs()),
-                u("N·m"),
-                // Its sense, as F_b is a magnitude: ↺ counter-clockwise.
-                if mb < 0.0 { "↻" } else { "↺" }
+                n(mb),
+                u("N·m")
             ));
         }
         Balancing::Force(fb) => {
