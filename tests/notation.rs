@@ -202,3 +202,60 @@ fn the_plan_of_the_mechanism_shows_every_turning_links_omega() {
         assert!(got.contains(&l.to_string()), "{got:?}");
     }
 }
+
+/// The kinematic diagrams write each ordinate's name (s, s′, s″) at the
+/// upper end of its axis, as axes are labelled, not at the origin beside
+/// the abscissa; φ1's name at the abscissa's arrow; and where φ1 counts
+/// from: the start of the working stroke (node 0).
+#[test]
+fn diagram_axes_are_named_at_their_ends_and_phi1_has_its_origin() {
+    let dir = fresh("notation", "diagrams");
+    let scene = format!(
+        "{}/fixtures/six_link_fig2_10.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (code, _, err) = run(&["diagram", &scene, "-o", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(dir.join("diagrams.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let y = |n: roxmltree::Node| -> f64 { n.attribute("y").unwrap().parse().unwrap() };
+    let joined = |n: roxmltree::Node| -> String {
+        n.descendants()
+            .filter(|t| t.is_text())
+            .filter_map(|t| t.text())
+            .collect()
+    };
+    let mut abscissas: Vec<f64> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text") && joined(*n) == "φ1")
+        .map(y)
+        .collect();
+    abscissas.sort_by(f64::total_cmp);
+    assert_eq!(abscissas.len(), 3, "{abscissas:?}");
+    for (i, (name, at)) in [
+        ("s", abscissas[0]),
+        ("s′", abscissas[1]),
+        ("s″", abscissas[2]),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let n = doc
+            .descendants()
+            .find(|n| n.attribute("id") == Some(&format!("axis-{i}")[..]))
+            .unwrap_or_else(|| panic!("no axis-{i}"));
+        assert_eq!(joined(n), name);
+        assert!(
+            y(n) < at - 8.0,
+            "{name} at y = {} beside its origin (abscissa at {at})",
+            y(n)
+        );
+    }
+    assert!(
+        texts(&svg)
+            .iter()
+            .any(|t| t.contains("(the start of the working stroke)")),
+        "no φ1 origin"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
