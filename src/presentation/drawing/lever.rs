@@ -297,8 +297,10 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
 
 /// The table beside the lever: every force, its magnitude, arm and
 /// moment about the pole (counter-clockwise positive), the balancing
-/// force last.
+/// force last; three significant digits, as a course project's result
+/// table gives them (the caption's equation keeps four).
 pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
+    use super::pack::round3;
     let w = words(lang);
     let mut rows: Vec<Vec<String>> = l
         .forces
@@ -307,17 +309,17 @@ pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
             let at = f.point.map(|p| an.mech.point_name(p)).unwrap_or("·");
             vec![
                 format!("{} ({at})", name(an, f)),
-                number(f.f.hypot(), lang),
-                number(f.arm, lang),
-                number(f.moment, lang),
+                number(round3(f.f.hypot()), lang),
+                number(round3(f.arm), lang),
+                number(round3(f.moment), lang),
             ]
         })
         .collect();
     rows.push(vec![
         format!("F_{} ({})", w.balancing, an.mech.point_name(l.point_b)),
-        number(l.f_b.abs(), lang),
-        number(l.arm_b, lang),
-        number(l.moment_b, lang),
+        number(round3(l.f_b.abs()), lang),
+        number(round3(l.arm_b), lang),
+        number(round3(l.moment_b), lang),
     ]);
     Ruled {
         head: w.heads.iter().map(|s| s.to_string()).collect(),
