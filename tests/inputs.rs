@@ -465,7 +465,7 @@ fn the_cylinder_in_the_steps() {
         "through r3 a line ⊥ CB2",
         // The boom's point K is not on the cylinder's pair: the Coriolis
         // point is the lecture's k3.
-        "n2k3 = a^k_B3B2 = 2·ω2·v_B3B2/μ_a",
+        "n2k3 = a^K_B3B2 = 2·ω2·v_B3B2/μ_a",
         "k3r3 = a^r_B3B2/μ_a",
         "ω3 = ω2: links 3 and 2 form a prismatic pair",
     ] {
@@ -476,7 +476,7 @@ fn the_cylinder_in_the_steps() {
         mechplan::words::construction::Lang::Ru,
     ] {
         let t = mechplan::report::to_steps(&an, &solved, lang);
-        assert!(t.contains("a^k_B3B2 = 2·ω2·v_B3B2"), "{t}");
+        assert!(t.contains("a^K_B3B2 = 2·ω2·v_B3B2"), "{t}");
     }
 }
 
@@ -894,7 +894,7 @@ fn the_boom_plan_table_names_the_cylinder() {
     let rows = mechplan::drawing::table::plan_rows(&plan);
     let names: Vec<&str> = rows.iter().map(|r| r.quantity.as_str()).collect();
     for want in [
-        "a^k_B3B2", "a^r_B3B2", "a^n_KC", "a^t_KC", "a^n_PB", "a^t_PB",
+        "a^K_B3B2", "a^r_B3B2", "a^n_KC", "a^t_KC", "a^n_PB", "a^t_PB",
     ] {
         assert!(names.contains(&want), "no {want} in {names:?}");
     }

@@ -134,9 +134,16 @@ pub fn split_segment(key: &str, known: &dyn Fn(&str) -> bool) -> Option<(String,
 /// Parse "ω2", "omega2", "w2", "ε3", "eps3", "epsilon3" → (is ε, link id);
 /// "v_B", "vB", "a_D" → (is a, point name); "v_B3B2", "a_B3B2" (a
 /// point of one link relative to another, resolved on the scene);
-/// "a^r_B3B2", "ar_B3B2" → ('r', …), "a^k_B3B2", "ak_B3B2" → ('k', …).
+/// "a^r_B3B2", "ar_B3B2" → ('r', …), "a^k_B3B2", "ak_B3B2" (or the lecture's capital a^K_B3B2) → ('k', …).
 fn quantity(key: &str) -> Option<(char, String)> {
-    for (prefix, kind) in [("a^r_", 'r'), ("ar_", 'r'), ("a^k_", 'k'), ("ak_", 'k')] {
+    for (prefix, kind) in [
+        ("a^r_", 'r'),
+        ("ar_", 'r'),
+        ("a^k_", 'k'),
+        ("ak_", 'k'),
+        ("a^K_", 'k'),
+        ("aK_", 'k'),
+    ] {
         if let Some(rest) = key.strip_prefix(prefix)
             && rest.chars().next().is_some_and(|c| c.is_ascii_uppercase())
         {

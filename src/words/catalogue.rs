@@ -336,6 +336,9 @@ pub struct LeverPhrases {
     pub input: String,
     /// "along the guide".
     pub along: String,
+    /// The sign convention of the balancing force, one for the table and
+    /// the caption: its magnitude, drawn as it acts; h signed.
+    pub convention: String,
 }
 
 /// The result tables' words.

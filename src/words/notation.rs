@@ -1,5 +1,5 @@
 //! The lecture's notation as runs of text: `v_B3C` is v with the
-//! subscript B3C, `a^k_B3B2` is a with k above and B3B2 below, the pole
+//! subscript B3C, `a^K_B3B2` is a with K above and B3B2 below, the pole
 //! `p_vb` is p with the subscript v and then b, digits after a letter are
 //! a subscript (`ω1`, `b3`, `O2`). The sheets (SVG) and the handout (HTML)
 //! write the same runs each in its own way.
@@ -144,7 +144,7 @@ mod tests {
     #[test]
     fn the_lecture_notation() {
         assert_eq!(show("v_B3C"), "v_{B3C}");
-        assert_eq!(show("a^k_B3B2 = 2·ω2"), "a^{k}_{B3B2} = 2·ω_{2}");
+        assert_eq!(show("a^K_B3B2 = 2·ω3"), "a^{K}_{B3B2} = 2·ω_{3}");
         assert_eq!(show("p_vb = 12.5 mm"), "p_{v}b = 12.5 mm");
         assert_eq!(show("φ1 = 30°, O2"), "φ_{1} = 30°, O_{2}");
         assert_eq!(show("120 mm"), "120 mm");

@@ -153,8 +153,8 @@ impl Builder<'_> {
 
     /// The line of a slide of `unknown` along `u` relative to `known`, the
     /// point of `known` at x being plan point `kx`:
-    /// v_X = v_Xk + v_rel (∥ guide); a_X = a_Xk + a^k + a^r (∥ guide),
-    /// a^k = 2·ω×v_rel turned by 90° in the sense of ω (on a rotating guide).
+    /// v_X = v_Xk + v_rel (∥ guide); a_X = a_Xk + a^K + a^r (∥ guide),
+    /// a^K = 2·ω×v_rel turned by 90° in the sense of ω (on a rotating guide).
     fn slide(&mut self, kx: usize, u: Vec2, s: Slide, (x, xn): (Point, Name)) -> Ray {
         let way = Way::Guide(s.guide);
         let u = if self.making(Mistake::SlideAcross) {
@@ -174,7 +174,7 @@ impl Builder<'_> {
         };
         let vrel = (vel.points[iu].at - vel.points[ik].at) * vel.mu;
         let verr = (vel.points[iu].err + vel.points[ik].err) * vel.mu;
-        let k = self.coriolis(kx, vrel, w, (xn, s.unknown, s.known), verr);
+        let k = self.coriolis(kx, vrel, w, (xn, s.unknown, s.known, s.guide), verr);
         self.line(k, u, way)
     }
 
@@ -280,7 +280,7 @@ impl Builder<'_> {
     /// The line of X of a cylinder's link `c.moving`, sliding as given on
     /// the link `c.link` that turns about the known joint J:
     /// v_X = v_J + v_rel (given, ∥ guide) + v_XJ (⊥ JX), and
-    /// a_X = a_J + a^n (toward J) + a^k (2·ω×v_rel) + a^r (given, ∥ guide)
+    /// a_X = a_J + a^n (toward J) + a^K (2·ω×v_rel) + a^r (given, ∥ guide)
     /// plus a^t (⊥ JX). The known parts are laid off from j in that order
     /// (the construction starts from the relative velocity along the
     /// cylinder); returns the line and the plan point its part starts from.
@@ -329,7 +329,7 @@ impl Builder<'_> {
             from = self.normal(j, r * (toward * w * w), c.link, (xu, jn), seg, err);
         }
         if turns && d.rate != 0.0 {
-            from = self.coriolis(from, ug * d.rate, w, (xn, c.moving, c.link), 0.0);
+            from = self.coriolis(from, ug * d.rate, w, (xn, c.moving, c.link, pr.guide), 0.0);
         }
         if d.rate2 != 0.0 {
             from = self.lay_off(from, ug * d.rate2, given, way, id, 0.0);

@@ -118,7 +118,7 @@ impl Builder<'_> {
     /// The link a driving pair `pair` places on its known link `known` (a
     /// chained input, or a cylinder's link that hangs on its other): at
     /// the slider's point X, v_X = v_Xk + v_rel (given, ∥ guide); a_X =
-    /// a_Xk + a^k (2·ω_k × v_rel, on a rotating guide) + a^r (given).
+    /// a_Xk + a^K (2·ω_k × v_rel, on a rotating guide) + a^r (given).
     pub(super) fn chained(&mut self, pair: usize, known: usize, (rate, rate2): (f64, f64)) {
         let m = self.m();
         let pr = &m.prismatics[pair];
@@ -182,7 +182,7 @@ impl Builder<'_> {
             let w = self.omega(known);
             let mut from = kx;
             if !self.t.nr[known] && w != 0.0 {
-                from = self.coriolis(kx, u * rate, w, (xp, placed, known), 0.0);
+                from = self.coriolis(kx, u * rate, w, (xp, placed, known, pr.guide), 0.0);
             }
             self.lay_off(
                 from,
@@ -211,7 +211,8 @@ impl Builder<'_> {
     }
 
     /// Lay off from `from` the Coriolis acceleration 2·ω×v_rel of X of
-    /// link `unknown` sliding on `known` (ω of `known`, `vrel` the relative
+    /// link `unknown` sliding on `known` (ω of `known`, equal to the
+    /// guide's, the rate the sheets name: `guide`, `vrel` the relative
     /// velocity, `verr` the error of its value): the point k. The error of
     /// its length is the worst case of ω ± Δω and v_rel ± Δv:
     /// 2·(|ω|·Δv + Δω·|v_rel| + Δω·Δv).
@@ -220,7 +221,7 @@ impl Builder<'_> {
         from: usize,
         vrel: kurbo::Vec2,
         w: f64,
-        (x, unknown, known): (Name, usize, usize),
+        (x, unknown, known, guide): (Name, usize, usize, usize),
         verr: f64,
     ) -> usize {
         if self.forgets(
@@ -243,8 +244,18 @@ impl Builder<'_> {
         self.lay_off(
             from,
             k_vec,
-            What::Coriolis { x, unknown, known },
-            Way::Turned { x, unknown, known },
+            What::Coriolis {
+                x,
+                unknown,
+                known,
+                guide,
+            },
+            Way::Turned {
+                x,
+                unknown,
+                known,
+                guide,
+            },
             PointId::Coriolis { link: unknown },
             2.0 * (w.abs() * verr + self.omega_err(known) * (vrel.hypot() + verr)),
         )

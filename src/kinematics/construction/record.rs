@@ -44,11 +44,13 @@ pub(super) enum Way {
     Toward(Seg),
     /// ∥ the guide of a link.
     Guide(usize),
-    /// v_XuXk turned by 90° in the sense of ωk.
+    /// v_XuXk turned by 90° in the sense of ωg, g the guide (the
+    /// lecture's transport rotation: ω3 of the shaper's kulisa 3).
     Turned {
         x: Name,
         unknown: usize,
         known: usize,
+        guide: usize,
     },
     /// ⊥ the segment in the sense of a rate.
     PerpSense(Seg, Rate),
@@ -104,11 +106,14 @@ pub(super) enum What {
         j: Name,
         is: Product,
     },
-    /// The Coriolis acceleration of X of link `unknown` sliding on `known`.
+    /// The Coriolis acceleration of X of link `unknown` sliding on `known`,
+    /// `guide` the one of the two that is the guide: a^K = 2·ω_guide·v_rel
+    /// (the lecture's a^K_B3B = 2·ω3·v_B3B).
     Coriolis {
         x: Name,
         unknown: usize,
         known: usize,
+        guide: usize,
     },
     /// The driving slider's own velocity (acceleration): `v_B`.
     Drive(Name),
@@ -151,7 +156,7 @@ pub(super) enum Eqn {
     Special { base: usize, leashes: [Seg; 2] },
     /// X of link `moving` from the coincident point `base` of `known`
     /// across a driving pair, every part known: v_X = v_Xk + v_rel;
-    /// a_X = a_Xk (+ a^k on a rotating guide) + a^r.
+    /// a_X = a_Xk (+ a^K on a rotating guide) + a^r.
     Driven {
         x: Name,
         base: Name,
@@ -394,11 +399,16 @@ impl Words<'_> {
                 self.name(j),
                 self.product(is)
             ),
-            What::Coriolis { x, unknown, known } => {
+            What::Coriolis {
+                x,
+                unknown,
+                known,
+                guide,
+            } => {
                 let v = self.relative(x, unknown, known);
                 let x = self.name(x);
-                let (u, k) = (self.link(unknown), self.link(known));
-                format!("a^k_{x}{u}{x}{k} = 2·ω{k}·{v}")
+                let (u, k, g) = (self.link(unknown), self.link(known), self.link(guide));
+                format!("a^K_{x}{u}{x}{k} = 2·ω{g}·{v}")
             }
             What::Drive(x) => format!("{}_{}", self.v(), self.name(x)),
             What::Given { x, moving, known } => self.given(x, moving, known),
@@ -419,9 +429,14 @@ impl Words<'_> {
             Way::Perp(s) => Dir::Perp(self.seg(s)),
             Way::Toward((a, b)) => Dir::Toward(self.name(a), self.name(b)),
             Way::Guide(l) => Dir::Guide(self.link(l).to_string()),
-            Way::Turned { x, unknown, known } => Dir::Turned(
+            Way::Turned {
+                x,
+                unknown,
+                known,
+                guide,
+            } => Dir::Turned(
                 self.relative(x, unknown, known),
-                self.rate(Rate::Omega(known)),
+                self.rate(Rate::Omega(guide)),
             ),
             Way::PerpSense(s, r) => Dir::PerpSense(self.seg(s), self.rate(r)),
         }
@@ -448,7 +463,7 @@ impl Words<'_> {
             );
         }
         let mut parts = vec![known(&format!("a_{base}"))];
-        let (along, across) = if r.rigid { ('n', 't') } else { ('k', 'r') };
+        let (along, across) = if r.rigid { ('n', 't') } else { ('K', 'r') };
         if r.rotating {
             parts.push(known(&format!("a^{along}_{x}{base}")));
         }
@@ -457,7 +472,7 @@ impl Words<'_> {
     }
     /// X of link `moving` through a cylinder whose link `rigid` turns
     /// about the known point: v_X = v_J + v_XmXr (given) + v_XrJ (⊥);
-    /// a_X = a_J + a^n_XrJ + a^k_XmXr + a^r_XmXr + a^t_XrJ (⊥).
+    /// a_X = a_J + a^n_XrJ + a^K_XmXr + a^r_XmXr + a^t_XrJ (⊥).
     fn cylinder(&self, r: Relation, moving: usize, rigid: usize) -> String {
         let (x, base) = (self.name(r.x), self.name(r.base));
         let xr = format!("{x}{}", self.link(rigid));
@@ -473,7 +488,7 @@ impl Words<'_> {
         let mut parts = vec![known(&format!("a_{base}"))];
         if r.rotating {
             parts.push(known(&format!("a^n_{xr}{base}")));
-            parts.push(known(&format!("a^k{}", &rel[1..])));
+            parts.push(known(&format!("a^K{}", &rel[1..])));
         }
         parts.push(known(&format!("a^r{}", &rel[1..])));
         parts.push(direction_known(&format!("a^t_{xr}{base}")));
@@ -492,7 +507,7 @@ impl Words<'_> {
                 let v = self.v();
                 let mut parts = vec![known(&format!("{v}_{bn}"))];
                 if !self.vel() && rotating {
-                    parts.push(known(&format!("a^k{}", &self.relative(x, moving, k)[1..])));
+                    parts.push(known(&format!("a^K{}", &self.relative(x, moving, k)[1..])));
                 }
                 parts.push(known(&self.given(x, moving, k)));
                 format!("{v}_{xn} = {}", parts.join(" + "))

@@ -62,14 +62,14 @@ pub fn figure(an: &Analysis, d: &Diagrams, lang: Lang) -> Canvas {
     );
     c.arrow(Point::new(0.0, st.top), Vec2::new(0.0, 1.0));
     // Displacement: the curve, its points 0, 1′, 2′ … and the chords.
-    st.divisions(&mut c, st.oy[0], None, &sym);
+    st.divisions(&mut c, 0, None, &sym);
     st.displacement(&mut c);
     // Velocity analogue: P1's rays parallel to the chords, their ordinates
     // carried to the midpoints, the curve through them.
-    st.divisions(&mut c, st.oy[1], Some((d.h1, "P1")), &format!("{sym}′"));
+    st.divisions(&mut c, 1, Some((d.h1, "P1")), &format!("{sym}′"));
     st.velocity(&mut c);
     // Acceleration analogue from the velocity diagram's chords, with P2.
-    st.divisions(&mut c, st.oy[2], Some((d.h2, "P2")), &format!("{sym}″"));
+    st.divisions(&mut c, 2, Some((d.h2, "P2")), &format!("{sym}″"));
     st.acceleration(&mut c);
     st.scales(&mut c, &sym);
     c.place_pending();
@@ -87,6 +87,9 @@ struct Stack<'a> {
     l: f64,
     s_mm: Vec<f64>,
     oy: [f64; 3],
+    /// Each diagram's highest ordinate (mm): the upper end of its part of
+    /// the ordinate axis, where its name stands.
+    ends: [f64; 3],
     top: f64,
     bottom: f64,
 }
@@ -125,6 +128,7 @@ impl<'a> Stack<'a> {
             l,
             s_mm,
             oy: [oy_s, oy_v, oy_a],
+            ends: [oy_s + es.1 + 8.0, oy_v + ev.1 + 4.0, oy_a + ea.1 + 4.0],
             top: oy_s + es.1 + 8.0,
             bottom: oy_a + ea.0 - 4.0,
         }
@@ -146,11 +150,14 @@ impl<'a> Stack<'a> {
             .collect()
     }
 
-    /// A diagram's abscissa at `oy` with its divisions numbered, its name
+    /// Diagram `i`'s abscissa with its divisions numbered, its name at the
+    /// upper end of its part of the ordinate axis (the abscissa's name at
+    /// its arrow, as drawings write axes: at their ends, not the origin)
     /// and, for an analogue, its pole `pole` (distance H, name) left of
     /// the origin.
-    fn divisions(&self, c: &mut Canvas, oy: f64, pole: Option<(f64, &str)>, name: &str) {
+    fn divisions(&self, c: &mut Canvas, i: usize, pole: Option<(f64, &str)>, name: &str) {
         let (an, d, lang, l) = (self.an, self.d, self.lang, self.l);
+        let oy = self.oy[i];
         let n = d.n;
         let left = pole.map(|(h, _)| -h).unwrap_or(0.0) - 4.0;
         c.seg(Point::new(left, oy), Point::new(l + 8.0, oy), Class::Thin);
@@ -183,7 +190,8 @@ impl<'a> Stack<'a> {
         }
         // The curve's name, the pole and its distance H are placed after
         // the rays and projection lines are drawn, where none crosses them.
-        c.label_later(Point::new(0.0, oy), Label::new(name, ""), SMALL, None);
+        let end = Point::new(0.0, self.ends[i]);
+        c.label_later(end, Label::new(name, ""), SMALL, Some(format!("axis-{i}")));
         if let Some((h, pname)) = pole {
             let p = Point::new(-h, oy);
             c.dot(p, pname.to_string());
@@ -264,9 +272,18 @@ impl<'a> Stack<'a> {
         } else {
             ("φ".to_string(), "rad", "2π".to_string())
         };
+        // Where the abscissa starts: φ1 from the start of the working
+        // stroke (node 0), as the lecture's diagrams.
+        let dw = &crate::words::catalogue(lang).diagrams;
+        let start = if d.stroke {
+            String::new()
+        } else {
+            let angle = number(d.phi0.to_degrees().rem_euclid(360.0), lang);
+            format!(",  0: {}", fill(&dw.turn, &[("angle", &angle)]))
+        };
         let lines = [
             format!(
-                "μ_{sym} = {} {unit_}/{mm},  μ_{x} = {span}/{} = {} {}/{mm}",
+                "μ_{sym} = {} {unit_}/{mm},  μ_{x} = {span}/{} = {} {}/{mm}{start}",
                 number(d.mu_s, lang),
                 number(l, lang),
                 number(d.mu_phi, lang),

@@ -252,13 +252,16 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
             n(sum),
             u("N·mm"),
             {
-                let h = l.at_b.cross(l.dir_b);
+                // The arm of F_b as it acts (the arrow drawn), so that F_b
+                // is its magnitude, as in the table.
+                let h = l.at_b.cross(l.dir_b) * l.f_b.signum();
                 if h < 0.0 { format!("({})", n(h)) } else { n(h) }
             },
             u("mm"),
-            n(l.f_b),
+            n(l.f_b.abs()),
             u("N")
         ),
+        w.convention.replace("{b}", b),
     ];
     let m = &an.mech;
     match l.balancing {
@@ -273,17 +276,19 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
                 ),
                 crate::model::scene::InputSpec::Slider { .. } => ("", mb / l.f_b),
             };
+            // M_b signed, counter-clockwise positive; F_b a magnitude.
+            let sign = if mb < 0.0 { "−" } else { "" };
             out.push(format!(
-                "M_{b} = F_{b}·l_{pivot}{} = {}·{} = {} {}",
+                "M_{b} = {sign}F_{b}·l_{pivot}{} = {sign}{}·{} = {} {}",
                 m.point_name(l.point_b),
-                n(l.f_b),
+                n(l.f_b.abs()),
                 n(arm),
                 n(mb),
                 u("N·m")
             ));
         }
         Balancing::Force(fb) => {
-            out[1] = out[1].replace(&format!("F_{b} = {} {}", n(l.f_b), u("N")), "");
+            out[1] = out[1].replace(&format!("F_{b} = {} {}", n(l.f_b.abs()), u("N")), "");
             out.push(format!("F_{b} = {} {} ({})", n(fb), u("N"), w.along));
         }
     }
@@ -292,8 +297,10 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
 
 /// The table beside the lever: every force, its magnitude, arm and
 /// moment about the pole (counter-clockwise positive), the balancing
-/// force last.
+/// force last; three significant digits, as a course project's result
+/// table gives them (the caption's equation keeps four).
 pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
+    use super::pack::round3;
     let w = words(lang);
     let mut rows: Vec<Vec<String>> = l
         .forces
@@ -302,17 +309,17 @@ pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
             let at = f.point.map(|p| an.mech.point_name(p)).unwrap_or("·");
             vec![
                 format!("{} ({at})", name(an, f)),
-                number(f.f.hypot(), lang),
-                number(f.arm, lang),
-                number(f.moment, lang),
+                number(round3(f.f.hypot()), lang),
+                number(round3(f.arm), lang),
+                number(round3(f.moment), lang),
             ]
         })
         .collect();
     rows.push(vec![
         format!("F_{} ({})", w.balancing, an.mech.point_name(l.point_b)),
-        number(l.f_b.abs(), lang),
-        number(l.arm_b, lang),
-        number(l.moment_b, lang),
+        number(round3(l.f_b.abs()), lang),
+        number(round3(l.arm_b), lang),
+        number(round3(l.moment_b), lang),
     ]);
     Ruled {
         head: w.heads.iter().map(|s| s.to_string()).collect(),

@@ -5,6 +5,7 @@
 //! centres of mass.
 
 use super::canvas::{Canvas, Class, FONT, Label, MAIN, SMALL, THIN};
+use super::rate_arc::{obstacles, rate_arc};
 use super::wall::{BLOCK, Block, Wall, crossing_at, draw_wall};
 use crate::geom::perp;
 use crate::kinematics::solve::Analysis;
@@ -95,6 +96,7 @@ pub fn draw_over(
     super::cylinder::draw(an, s, c, mu_l);
     let supports = sc.pairs(c, &bodies, with_labels);
     sc.inputs(c, &bodies, &supports);
+    sc.rates(c, &bodies, &supports);
 }
 
 /// The corners of a slider block of half length `a` and half width `b`
@@ -183,6 +185,10 @@ struct Scheme<'a> {
     /// Per point: a pair of two links or more.
     joints: Vec<bool>,
 }
+
+/// Where a link's ω arc may go: its centre, the directions taken there
+/// (with their half widths, rad), the direction wished.
+type Try = (Point, Vec<(f64, f64)>, f64);
 
 impl<'a> Scheme<'a> {
     fn new(an: &'a Analysis, s: &'a Solved, mu_l: f64) -> Scheme<'a> {
@@ -461,25 +467,74 @@ impl<'a> Scheme<'a> {
                 }
                 // On the far side of the pivot from the crank, as textbooks
                 // draw it, when that side is free.
-                let r = 6.0 + 3.5 * k as f64;
-                let sweep = room.min(1.6) * val.signum();
-                let a0 = mid - sweep / 2.0;
-                c.arc(o, r, a0, sweep);
-                let end = a0 + sweep;
-                let tip = o + Vec2::from_angle(end) * r;
-                let tangent = perp(Vec2::from_angle(end)) * val.signum();
-                c.arrow(tip, tangent);
-                c.label_later(
-                    o + Vec2::from_angle(a0 + sweep / 2.0) * (r + 2.0),
-                    Label::new(name, m.link_id(link)),
-                    FONT,
-                    Some(if i == 0 {
-                        format!("input-{name}")
-                    } else {
-                        format!("input-{name}{}", m.link_id(link))
-                    }),
-                );
+                let id = if i == 0 {
+                    format!("input-{name}")
+                } else {
+                    format!("input-{name}{}", m.link_id(link))
+                };
+                let label = Label::new(name, m.link_id(link));
+                rate_arc(c, (o, 6.0 + 3.5 * k as f64), (mid, room), val, label, id);
             }
+        }
+    }
+
+    /// The angular velocities of the other links that turn, as the plan
+    /// of velocities measured them (seed `000`, Fig. 2.11: ω3 of the
+    /// kulisa drawn on the scheme, "ω3 направлена у той же бік"): an arc
+    /// about the link's fixed pivot, or about the middle of a coupler,
+    /// clear of the lines there. A one-point link (a slider block) turns
+    /// with its guide and is left to the guide's arc.
+    fn rates(&self, c: &mut Canvas, bodies: &[(Point, Point)], supports: &[Option<Vec2>]) {
+        let m = self.m;
+        let Some(plans) = &self.s.plans else { return };
+        let cranks: Vec<usize> = (m.scene.inputs())
+            .filter_map(|i| match *i {
+                InputSpec::Crank { link, .. } => Some(link),
+                _ => None,
+            })
+            .collect();
+        let tiny = 1e-9 * self.s.drives.iter().map(|d| d.rate.abs()).fold(1.0, f64::max);
+        let obstacles = obstacles(c);
+        for (l, link) in self.moving() {
+            let Some(Some((w, _))) = plans.velocity.rates.get(l) else { continue };
+            if cranks.contains(&l) || w.abs() < tiny || link.points.len() < 2 {
+                continue;
+            }
+            let body = self.body(l);
+            let pivot = link.points.iter().copied().find(|p| m.links[self.frame].points.contains(p));
+            // Where the arc may go: about the fixed pivot, else along a
+            // coupler from its middle; each side of it.
+            let mut tries: Vec<Try> = Vec::new();
+            if let Some(pv) = pivot {
+                let o = self.at_point(pv);
+                let away = body.iter().map(|&q| q - o).find(|d| d.hypot() > 1e-9);
+                let wish = away.map_or(0.0, |d| d.atan2() + std::f64::consts::PI);
+                let busy = self.busy_about(pv, o, bodies, supports);
+                tries.push((o, busy.clone(), wish));
+                tries.push((o, busy, wish + std::f64::consts::PI));
+            } else if body.len() >= 2 {
+                let (a, b) = (body[0], body[1]);
+                let d = (b - a).atan2();
+                let busy = vec![(d, 0.35), (d + std::f64::consts::PI, 0.35)];
+                for t in [0.5, 0.35, 0.65, 0.2, 0.8] {
+                    for side in [1.0, -1.0] {
+                        let wish = d + side * std::f64::consts::FRAC_PI_2;
+                        tries.push((a + (b - a) * t, busy.clone(), wish));
+                    }
+                }
+            }
+            let clear = tries.into_iter().map(|(o, busy, wish)| (o, free_arc(&busy, wish))).find(
+                |&(o, (mid, room))| {
+                    let sweep = room.min(1.6);
+                    (0..=16).all(|k| {
+                        let a = mid - sweep / 2.0 + sweep * k as f64 / 16.0;
+                        !obstacles.iter().any(|q| q(o + Vec2::from_angle(a) * 6.0))
+                    })
+                },
+            );
+            let Some((o, (mid, room))) = clear else { continue };
+            let label = Label::new("ω", m.link_id(l));
+            rate_arc(c, (o, 6.0), (mid, room), *w, label, format!("omega-{}", m.link_id(l)));
         }
     }
 

@@ -40,6 +40,7 @@ mod output;
 mod pack;
 pub mod plan;
 pub mod positions;
+mod rate_arc;
 pub mod sheet;
 pub mod table;
 mod wall;

@@ -131,12 +131,22 @@ impl Steps<'_> {
         }
     }
 
-    /// The vector `from` → `to`, once.
+    /// The vector `from` → `to`, once: once too where other plan points
+    /// at the same two places drew it already (the shaper's p_v → k′, m, t
+    /// of the translating ram lie on d₀ → d₅: one arrow, not four).
     fn vector(&mut self, c: &mut Canvas, from: usize, to: usize, class: Class) {
-        if self.drawn.contains(&(from, to)) {
+        let same = |p: Point, q: Point| (p - q).hypot() < 0.05;
+        let (a, b) = (self.at(from), self.at(to));
+        let twice = self
+            .drawn
+            .iter()
+            .any(|&(f, t)| same(self.at(f), a) && same(self.at(t), b));
+        self.drawn.push((from, to));
+        if twice {
+            self.used[from] = true;
+            self.used[to] = true;
             return;
         }
-        self.drawn.push((from, to));
         let p = &self.plan.points;
         c.vector(
             self.at(from),
@@ -205,10 +215,24 @@ impl Steps<'_> {
     }
 
     /// The shown points' dots and labels: points at one place share one
-    /// label ("p_v, o₁, o₂"), of the step that made the first of them.
+    /// label ("p_v, o₁, o₂"), of the step that made the first of them. A
+    /// point that only coincides with another by a step of its own (a
+    /// point of the frame at the pole, a point of a translating link at
+    /// the point that link's motion was found at) is not named again: the
+    /// lecture's plan of Fig. 2.11 shows d₅ alone for the ram, not "d₅, k′,
+    /// m, t", and p_v alone, never the frame's d₀ (steps and tables still
+    /// name them, "point k′ coincides with d₅").
     fn labels(&mut self, c: &mut Canvas) {
         let plan = self.plan;
         let made = made_at(plan);
+        let echoes: Vec<(usize, usize)> = plan
+            .steps
+            .iter()
+            .filter_map(|s| match s.op {
+                Op::Coincide { out, with, .. } => Some((out, with)),
+                _ => None,
+            })
+            .collect();
         let made_of =
             |members: &[usize]| members.iter().filter_map(|&i| made[i]).min().unwrap_or(0);
         let mut groups: Vec<(Point, Vec<usize>)> = Vec::new();
@@ -220,6 +244,16 @@ impl Steps<'_> {
             match groups.iter_mut().find(|g| (g.0 - p).hypot() < 0.05) {
                 Some(g) => g.1.push(i),
                 None => groups.push((p, vec![i])),
+            }
+        }
+        for (_, members) in groups.iter_mut() {
+            let shown: Vec<usize> = members
+                .iter()
+                .copied()
+                .filter(|&i| !echoes.iter().any(|&(o, w)| o == i && members.contains(&w)))
+                .collect();
+            if !shown.is_empty() {
+                *members = shown;
             }
         }
         for (p, members) in &groups {

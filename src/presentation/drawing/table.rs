@@ -1,7 +1,7 @@
 //! Ruled tables on a sheet (ГОСТ 2.105: a heading row, ruled columns, the
 //! unit of every quantity): what was measured on a plan, and the course
 //! sheet's tables of every position. Cells are text in the lecture's
-//! notation (`v_B3B`, `a^k_B3B2`), numbers with the language's decimal
+//! notation (`v_B3B`, `a^K_B3B2`), numbers with the language's decimal
 //! sign.
 
 use super::canvas::{Canvas, Line, SMALL, lettering, runs_width};
@@ -171,7 +171,7 @@ pub struct Row {
 
 /// Every quantity a plan lays off or measures, in the order of the
 /// construction: the known vectors laid off (v_B, a^n_BA, the Coriolis
-/// a^k), the relative slide along a moving guide (v_B3B, a^r) that the
+/// a^K), the relative slide along a moving guide (v_B3B, a^r) that the
 /// lecture measures there, the measured segments and the angular rates
 /// they give.
 pub fn plan_rows(plan: &Plan) -> Vec<Row> {
@@ -223,7 +223,7 @@ pub fn plan_rows(plan: &Plan) -> Vec<Row> {
                             .iter()
                             .find_map(|s| match &s.op {
                                 Op::LayOff { to, what, .. } if *to == a => {
-                                    Some(symbol(what).replacen("^k", "^r", 1))
+                                    Some(symbol(what).replacen("^K", "^r", 1))
                                 }
                                 _ => None,
                             })

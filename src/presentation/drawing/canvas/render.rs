@@ -401,14 +401,14 @@ fn label_svg(label: &Label, size: f64) -> String {
     format!("{base}{sub}{more}{tail}")
 }
 
-/// ` id="…"` of an element that has an id, else nothing.
 /// A region not drawn ([`Prim::Region`]): an empty group with its id and
-/// its box on the page, top left and bottom right.
+/// its box on the page, top left and bottom right, `display="none"` so
+/// that a renderer gives it no place (no box at the page's origin).
 fn region_svg(out: &mut String, o: Origin, rect: kurbo::Rect, id: &str) {
     let (a, b) = (Point::new(rect.x0, rect.y1), Point::new(rect.x1, rect.y0));
     let _ = writeln!(
         out,
-        r#"<g id="{}" class="region" data-box="{} {} {} {}"/>"#,
+        r#"<g id="{}" class="region" display="none" data-box="{} {} {} {}"/>"#,
         xml(id),
         o.x(a),
         o.y(a),
@@ -417,6 +417,7 @@ fn region_svg(out: &mut String, o: Origin, rect: kurbo::Rect, id: &str) {
     );
 }
 
+/// ` id="…"` of an element that has an id, else nothing.
 fn id_attr(id: &Option<String>) -> String {
     id.as_ref()
         .map(|i| format!(r#" id="{i}""#))
