@@ -201,8 +201,8 @@ def check_sheet(name, svg_path, dxf_path):
             got = plain_mtext(e.text)
             at = e.dxf.insert
         # The DXF's turning arrows are the closed ones of the same sense,
-        # which LibreCAD's ГОСТ font has (style.rs, escape).
-        if got != s.replace("↺", "⥀").replace("↻", "⥁"):
+        # which LibreCAD's ГОСТ font has, and "->" for → (style.rs, escape).
+        if got != s.replace("↺", "⥀").replace("↻", "⥁").replace("→", "->"):
             fail(name, f"text {s!r} written as {got!r}")
         if not close(e.dxf.height if e.dxftype() == "TEXT" else e.dxf.char_height, size):
             fail(name, f"text {s!r}: height not {size}")

@@ -519,6 +519,7 @@ mod tests {
     fn texts_escape_past_ascii() {
         assert_eq!(escape("φ\n= 5°"), "φ = 5°");
         assert_eq!(escape("0,837 ↺ 0,934 ↻"), "0,837 ⥀ 0,934 ⥁");
+        assert_eq!(escape("I(0,1) → II(2,3)"), "I(0,1) -> II(2,3)");
         assert_eq!(
             mtext_content(&[("a".into(), 0), ("n".into(), 1), ("KC".into(), -1)]),
             "a\\Sn^KC;"

@@ -56,10 +56,13 @@ pub fn num(x: f64) -> String {
 /// Text for a DXF string value: UTF-8 as R2007 writes it, no line ends;
 /// the tables' turning arrows (↺ U+21BA, ↻ U+21BB), which none of
 /// LibreCAD's fonts has, as the closed circle arrows of the same sense
-/// (⥀ U+2940, ⥁ U+2941), which its ГОСТ font and DejaVu Sans both have.
+/// (⥀ U+2940, ⥁ U+2941), which its ГОСТ font and DejaVu Sans both have;
+/// the structure formula's arrow (→ U+2192, in no arrow of that font) as
+/// "->".
 pub fn escape(s: &str) -> String {
     s.replace(['\n', '\r'], " ")
         .replace('↺', "⥀")
         .replace('↻', "⥁")
+        .replace('→', "->")
 }
 
