@@ -290,3 +290,62 @@ fn the_lever_table_has_three_significant_digits() {
         }
     }
 }
+
+/// A plan drawn with `--table` gives its numbers to what a reading of the
+/// plan supports: the segments to 0.1 mm, the values to three significant
+/// digits (the old tables printed four: 0.8569, 137.1).
+#[test]
+fn plan_tables_give_three_significant_digits() {
+    let dir = std::env::temp_dir().join(format!("mechplan-notation-table-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let scene = format!(
+        "{}/fixtures/six_link_fig2_10.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["draw", &scene, "--table", "-o"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut cells = 0;
+    for sheet in ["velocity_3.svg", "acceleration_3.svg"] {
+        let svg = std::fs::read_to_string(dir.join(sheet)).unwrap();
+        for line in svg.lines().filter(|l| l.contains("class=\"table\"")) {
+            let text: String = {
+                let mut t = String::new();
+                let mut inside = false;
+                for ch in line.chars() {
+                    match ch {
+                        '<' => inside = true,
+                        '>' => inside = false,
+                        c if !inside => t.push(c),
+                        _ => {}
+                    }
+                }
+                t
+            };
+            // A value with its unit ("0.935 m/s", "19.1 ↺ rad/s") or a length.
+            let Some(first) = text.split_whitespace().next() else {
+                continue;
+            };
+            let Ok(x) = first.replace('−', "-").parse::<f64>() else {
+                continue;
+            };
+            let digits = first
+                .chars()
+                .filter(|c| c.is_ascii_digit())
+                .collect::<String>();
+            let significant = digits.trim_start_matches('0').len();
+            if text.contains('/') {
+                assert!(significant <= 3, "{sheet}: {text} ({x})");
+            } else {
+                let decimals = first.split('.').nth(1).map_or(0, str::len);
+                assert!(decimals <= 1, "{sheet}: a length {text} beyond 0.1 mm");
+            }
+            cells += 1;
+        }
+    }
+    assert!(cells > 20, "{cells} numbers read");
+    let _ = std::fs::remove_dir_all(&dir);
+}

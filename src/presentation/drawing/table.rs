@@ -350,8 +350,11 @@ fn symbol(what: &str) -> String {
     what.split(" = ").next().unwrap_or(what).trim().to_string()
 }
 
-/// The table of a plan's quantities (`plan_rows`).
+/// The table of a plan's quantities (`plan_rows`), to what a reading of
+/// the plan supports: each segment to 0.1 mm, each value to three
+/// significant digits.
 pub fn plan_table(plan: &Plan, l: Lang) -> Ruled {
+    let three = super::pack::round3;
     let h = heads(l);
     Ruled {
         head: h.iter().map(|s| s.to_string()).collect(),
@@ -359,18 +362,20 @@ pub fn plan_table(plan: &Plan, l: Lang) -> Ruled {
             .into_iter()
             .map(|r| {
                 let v = if r.rate {
-                    let v = rate(r.value, l);
+                    let v = rate(three(r.value), l);
                     match v.split_once(' ') {
                         Some((n, s)) => format!("{n} {} {s}", unit(r.unit, l)),
                         None => format!("{v} {}", unit(r.unit, l)),
                     }
                 } else {
-                    format!("{} {}", number(r.value, l), unit(r.unit, l))
+                    format!("{} {}", number(three(r.value), l), unit(r.unit, l))
                 };
                 vec![
                     r.quantity,
                     r.segment,
-                    r.mm.map(|x| number(x, l)).unwrap_or_else(|| "—".into()),
+                    r.mm
+                        .map(|x| number((x * 10.0).round() / 10.0, l))
+                        .unwrap_or_else(|| "—".into()),
                     v,
                 ]
             })
