@@ -453,10 +453,11 @@ fn manifest_files(dir: &Path) -> Vec<String> {
 #[test]
 fn two_draws_into_one_folder_at_once_leave_it_as_one_of_them_lists_it() {
     let dir = temp_dir("concurrent");
-    // Two sets of sheets by other names: a run's manifest with the other's
-    // sheets beside it would show.
-    let a = scene_with(&dir, "a.json", "four_bar", 40, None);
-    let b = scene_with(&dir, "b.json", "four_bar", 30, Some(&["velocity"]));
+    // Two sets of sheets by other names, drawn in about the same time: a
+    // run's manifest with the other's sheets beside it would show
+    // (without the lock, 8 of 8 trials so).
+    let a = scene_with(&dir, "a.json", "four_bar", 200, Some(&["velocity"]));
+    let b = scene_with(&dir, "b.json", "four_bar", 200, Some(&["acceleration"]));
     let out = dir.join("out");
     for trial in 0..20 {
         let _ = std::fs::remove_dir_all(&out);
