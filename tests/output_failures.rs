@@ -290,3 +290,281 @@ fn bad_input_keeps_status_2() {
         .unwrap();
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
+
+/// A scene of `fixture` with `positions.count = count` (and `drawings`,
+/// if given) written into `dir` as `name`.
+fn scene_with(
+    dir: &Path,
+    name: &str,
+    fixture_name: &str,
+    count: usize,
+    drawings: Option<&[&str]>,
+) -> String {
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(fixture(fixture_name)).unwrap()).unwrap();
+    v["positions"] = serde_json::json!({ "count": count });
+    if let Some(d) = drawings {
+        v["want"]["drawings"] = serde_json::json!(d);
+    }
+    let path = dir.join(name);
+    std::fs::write(&path, v.to_string()).unwrap();
+    path.display().to_string()
+}
+
+/// Send `signal` (a name: INT, TERM) to process `pid`.
+fn kill(signal: &str, pid: u32) {
+    let s = Command::new("kill")
+        .args([&format!("-{signal}"), &pid.to_string()])
+        .status()
+        .unwrap();
+    assert!(s.success());
+}
+
+/// The hidden temporaries in `dir`.
+fn temporaries(dir: &Path) -> Vec<String> {
+    entries(dir)
+        .into_iter()
+        .filter(|e| e.starts_with('.'))
+        .collect()
+}
+
+#[test]
+fn sigint_and_sigterm_mid_write_leave_no_temporary() {
+    let dir = temp_dir("signals");
+    // The longest sweep allowed: seconds of writing.
+    let scene = scene_with(&dir, "long.json", "four_bar", 100_000, None);
+    let target = dir.join("out.csv");
+    for (signal, status) in [("INT", 130), ("TERM", 143)] {
+        let mut child = Command::new(EXE)
+            .args(["solve", &scene, "--format", "csv", "-o"])
+            .arg(&target)
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let tmp = dir.join(format!(".out.csv.tmp{}", child.id()));
+        let start = std::time::Instant::now();
+        // Mid-write: the temporary holds some of the result.
+        while !std::fs::metadata(&tmp).is_ok_and(|m| m.len() > 0) {
+            assert!(
+                start.elapsed().as_secs() < 60,
+                "no temporary {}",
+                tmp.display()
+            );
+            assert!(
+                child.try_wait().unwrap().is_none(),
+                "finished before the signal"
+            );
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        kill(signal, child.id());
+        let o = child.wait_with_output().unwrap();
+        assert_eq!(o.status.code(), Some(status), "SIG{signal}: {}", stderr(&o));
+        assert_eq!(entries(&dir), vec!["long.json"], "after SIG{signal}");
+    }
+}
+
+#[test]
+fn a_file_size_limit_with_sigxfsz_at_its_default_leaves_no_temporary() {
+    // `ulimit -f` in a plain shell: SIGXFSZ at its default action would
+    // kill the process (and leave its temporary); the command ignores it
+    // and fails the write instead.
+    let dir = temp_dir("xfsz-default");
+    let six = fixture("six_link_fig2_10");
+    let target = dir.join("result.json").display().to_string();
+    let o = Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "trap - XFSZ; ulimit -f 1; exec '{EXE}' solve '{six}' --format json -o '{target}'"
+        ))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(3), "{:?} {}", o.status, stderr(&o));
+    assert!(stderr(&o).contains("File too large"), "{}", stderr(&o));
+    assert_eq!(entries(&dir), Vec::<String>::new());
+}
+
+#[test]
+fn the_temporaries_of_a_dead_process_are_removed_by_the_next_run() {
+    let dir = temp_dir("stale");
+    // No process 999999 (else the case proves nothing).
+    if Path::new("/proc/999999").exists() {
+        eprintln!("process 999999 exists: skipped");
+        return;
+    }
+    std::fs::write(dir.join(".x.tmp999999"), "half a result").unwrap();
+    std::fs::write(dir.join(".result.csv.tmp999999"), "half a result").unwrap();
+    // A live process's (this test's), and a file that only looks alike.
+    let live = format!(".y.tmp{}", std::process::id());
+    std::fs::write(dir.join(&live), "being written").unwrap();
+    std::fs::write(dir.join(".notes.tmpx"), "mine").unwrap();
+    let target = dir.join("result.csv").display().to_string();
+    let o = Command::new(EXE)
+        .args([
+            "solve",
+            &fixture("four_bar"),
+            "--format",
+            "csv",
+            "-o",
+            &target,
+        ])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        entries(&dir),
+        vec![".notes.tmpx", live.as_str(), "result.csv"]
+    );
+    // A sheet folder too.
+    let sheets = dir.join("sheets");
+    std::fs::create_dir_all(&sheets).unwrap();
+    std::fs::write(sheets.join(".velocity_1.svg.tmp999999"), "<svg").unwrap();
+    let o = Command::new(EXE)
+        .args(["draw", &fixture("four_bar"), "-o"])
+        .arg(&sheets)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(temporaries(&sheets), Vec::<String>::new());
+    assert!(
+        stderr(&o).contains("removed 1 temporary file"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// The files `dir`'s manifest lists (sheets and book).
+fn manifest_files(dir: &Path) -> Vec<String> {
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sheets.json")).unwrap()).unwrap();
+    let mut out: Vec<String> = v["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["file"].as_str().unwrap().to_string())
+        .collect();
+    if let Some(b) = v["book"].as_str() {
+        out.push(b.to_string());
+    }
+    out.push("sheets.json".into());
+    out.sort();
+    out
+}
+
+#[test]
+fn two_draws_into_one_folder_at_once_leave_it_as_one_of_them_lists_it() {
+    let dir = temp_dir("concurrent");
+    // Two sets of sheets by other names, drawn in about the same time: a
+    // run's manifest with the other's sheets beside it would show
+    // (without the lock, 8 of 8 trials so).
+    let a = scene_with(&dir, "a.json", "four_bar", 200, Some(&["velocity"]));
+    let b = scene_with(&dir, "b.json", "four_bar", 200, Some(&["acceleration"]));
+    let out = dir.join("out");
+    for trial in 0..20 {
+        let _ = std::fs::remove_dir_all(&out);
+        let (first, second) = if trial % 2 == 0 { (&a, &b) } else { (&b, &a) };
+        let spawn = |scene: &str| {
+            Command::new(EXE)
+                .args(["draw", scene, "-o"])
+                .arg(&out)
+                .stdout(Stdio::null())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap()
+        };
+        let (p, q) = (spawn(first), spawn(second));
+        let (p, q) = (p.wait_with_output().unwrap(), q.wait_with_output().unwrap());
+        assert!(p.status.success(), "trial {trial}: {}", stderr(&p));
+        assert!(q.status.success(), "trial {trial}: {}", stderr(&q));
+        assert_eq!(entries(&out), manifest_files(&out), "trial {trial}");
+    }
+}
+
+#[test]
+fn a_run_stopped_during_its_renames_leaves_the_set_its_manifest_lists() {
+    let dir = temp_dir("renames");
+    let old = scene_with(&dir, "old.json", "four_bar", 60, None);
+    let new = scene_with(&dir, "new.json", "four_bar", 300, Some(&["velocity"]));
+    let out = dir.join("out");
+    let mut caught = 0;
+    for trial in 0..6 {
+        let _ = std::fs::remove_dir_all(&out);
+        let o = Command::new(EXE)
+            .args(["draw", &old, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        let mut child = Command::new(EXE)
+            .args(["draw", &new, "-o"])
+            .arg(&out)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The new manifest staged: the renames begin.
+        let staged = out
+            .join(format!(".mechplan-staging-{}", child.id()))
+            .join("sheets.json");
+        let start = std::time::Instant::now();
+        while !staged.exists() && child.try_wait().unwrap().is_none() {
+            assert!(start.elapsed().as_secs() < 60);
+        }
+        let _ = Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status();
+        let o = child.wait_with_output().unwrap();
+        if o.status.code() == Some(143) {
+            caught += 1;
+        }
+        assert!(
+            matches!(o.status.code(), Some(0 | 143)),
+            "trial {trial}: {:?} {}",
+            o.status,
+            stderr(&o)
+        );
+        assert_eq!(entries(&out), manifest_files(&out), "trial {trial}");
+    }
+    eprintln!("{caught} of 6 runs stopped by the signal");
+}
+
+#[test]
+fn an_unwritable_folder_fails_before_the_sweep() {
+    let dir = temp_dir("early");
+    let scene = scene_with(&dir, "long.json", "four_bar", 100_000, Some(&["velocity"]));
+    let plain = dir.join("plain");
+    std::fs::write(&plain, "x").unwrap();
+    let under = plain.join("sheets").display().to_string();
+    let start = std::time::Instant::now();
+    let o = Command::new(EXE)
+        .args(["draw", &scene, "-o", &under])
+        .output()
+        .unwrap();
+    let took = start.elapsed();
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert!(stderr(&o).contains(&under), "{}", stderr(&o));
+    // Solving 100 000 positions takes seconds.
+    assert!(took.as_millis() < 1000, "{took:?}");
+    assert_eq!(entries(&dir), vec!["long.json", "plain"]);
+}
+
+#[test]
+fn a_reader_gone_stops_the_sweep_at_once() {
+    let dir = temp_dir("reader-gone");
+    let scene = scene_with(&dir, "long.json", "four_bar", 100_000, None);
+    let start = std::time::Instant::now();
+    let mut child = Command::new(EXE)
+        .args(["solve", &scene, "--format", "csv"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    // The reader closes its end before any line came.
+    drop(child.stdout.take());
+    let o = child.wait_with_output().unwrap();
+    let took = start.elapsed();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
+    // The whole sweep takes seconds.
+    assert!(took.as_millis() < 1000, "{took:?}");
+}

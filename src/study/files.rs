@@ -5,11 +5,82 @@
 //! A text for standard output is held back ([`Spool`]: in memory, then in
 //! a temporary file for long texts) until the whole text is ready, so that
 //! a run refused at a late position prints nothing; the command prints it.
+//!
+//! Every temporary this process is writing (a file's `.NAME.tmpPID`, a
+//! sheet folder's staging folder and lock file) is listed in a
+//! process-wide register ([`remove_temporaries`]), so that the command's
+//! signal handler can remove them before it exits; the temporaries of a
+//! process that died anyway (SIGKILL, a power cut) are removed by the next
+//! run writing into that folder ([`remove_stale`]).
 
 use crate::error::{Error, Result};
 use std::fs::File;
 use std::io::{BufWriter, Read, Seek, Write};
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
+
+/// The temporaries this process is writing, removed by
+/// [`remove_temporaries`].
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Held while files are renamed into place ([`committing`]).
+static COMMIT: Mutex<()> = Mutex::new(());
+
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Note `path` (a file or a folder) as a temporary of this process, before
+/// it is made: a signal handler's [`remove_temporaries`] removes it.
+pub(crate) fn track(path: &Path) {
+    lock(&TEMPORARIES).push(path.to_path_buf());
+}
+
+/// `path` is no temporary any more (renamed into place, or removed).
+pub(crate) fn untrack(path: &Path) {
+    let mut t = lock(&TEMPORARIES);
+    if let Some(k) = t.iter().rposition(|p| p == path) {
+        t.swap_remove(k);
+    }
+}
+
+/// Remove `path`, a temporary file or folder, and forget it.
+pub(crate) fn discard(path: &Path) {
+    remove_any(path);
+    untrack(path);
+}
+
+fn remove_any(path: &Path) {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.is_dir() => {
+            let _ = std::fs::remove_dir_all(path);
+        }
+        Ok(_) => {
+            let _ = std::fs::remove_file(path);
+        }
+        Err(_) => {}
+    }
+}
+
+/// The renames that put a run's files into place, in progress: held by
+/// the writer while it renames, taken by a signal handler before
+/// [`remove_temporaries`], so that a run interrupted then finishes its
+/// renames first (and leaves the new set, not a mix).
+pub fn committing() -> MutexGuard<'static, ()> {
+    lock(&COMMIT)
+}
+
+/// Remove every temporary this process is writing (for a signal handler
+/// about to exit). The register stays locked as long as the guard is
+/// held: hold it until the process exits, so that no new temporary is
+/// made meanwhile (a temporary is noted before it is made).
+pub fn remove_temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
+    let mut t = lock(&TEMPORARIES);
+    for p in t.drain(..).rev() {
+        remove_any(&p);
+    }
+    t
+}
 
 /// How errors name standard output.
 pub const STDOUT: &str = "standard output";
@@ -61,10 +132,20 @@ pub fn write_atomically_with(
 ) -> Result<()> {
     match write_pending(path, fill)? {
         Pending::Direct => Ok(()),
-        Pending::Temp(tmp) => std::fs::rename(&tmp, path).map_err(|e| {
-            let _ = std::fs::remove_file(&tmp);
-            write_error(&path.display().to_string(), e)
-        }),
+        Pending::Temp(tmp) => {
+            let _commit = committing();
+            let renamed = std::fs::rename(&tmp, path);
+            match renamed {
+                Ok(()) => {
+                    untrack(&tmp);
+                    Ok(())
+                }
+                Err(e) => {
+                    discard(&tmp);
+                    Err(write_error(&path.display().to_string(), e))
+                }
+            }
+        }
     }
 }
 
@@ -102,13 +183,15 @@ impl Staged {
     /// Rename every temporary into its place.
     pub fn commit(mut self) -> Result<()> {
         let temps = std::mem::take(&mut self.temps);
+        let _commit = committing();
         for (k, (tmp, path)) in temps.iter().enumerate() {
             if let Err(e) = std::fs::rename(tmp, path) {
                 for (t, _) in &temps[k..] {
-                    let _ = std::fs::remove_file(t);
+                    discard(t);
                 }
                 return Err(write_error(&path.display().to_string(), e));
             }
+            untrack(tmp);
         }
         Ok(())
     }
@@ -117,7 +200,7 @@ impl Staged {
 impl Drop for Staged {
     fn drop(&mut self) {
         for (tmp, _) in &self.temps {
-            let _ = std::fs::remove_file(tmp);
+            discard(tmp);
         }
     }
 }
@@ -167,6 +250,10 @@ fn write_pending(path: &Path, fill: impl FnOnce(&mut Output) -> Result<()>) -> R
         _ => {}
     }
     let tmp = temp_path(path);
+    if let Some(dir) = tmp.parent() {
+        remove_stale_once(dir);
+    }
+    track(&tmp);
     let written = (|| {
         let f = File::create(&tmp).map_err(err)?;
         let mut w = BufWriter::with_capacity(1 << 16, f);
@@ -177,9 +264,189 @@ fn write_pending(path: &Path, fill: impl FnOnce(&mut Output) -> Result<()>) -> R
     match written {
         Ok(()) => Ok(Pending::Temp(tmp)),
         Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
+            discard(&tmp);
             Err(e)
         }
+    }
+}
+
+/// Whether process `pid` is alive; `None` where the system does not list
+/// its processes (no /proc).
+fn alive(pid: &str) -> Option<bool> {
+    let proc = Path::new("/proc");
+    proc.is_dir().then(|| proc.join(pid).exists())
+}
+
+/// [`remove_stale`] of `dir`, once in a process.
+fn remove_stale_once(dir: &Path) {
+    static SWEPT: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+    let mut swept = lock(&SWEPT);
+    if !swept.iter().any(|d| d == dir) {
+        swept.push(dir.to_path_buf());
+        drop(swept);
+        remove_stale(dir);
+    }
+}
+
+/// Remove the temporaries `.NAME.tmpPID` in `dir` of processes that are
+/// gone (killed before they could remove them): the number removed.
+/// Those of live processes (and everything, where the system does not
+/// list its processes) are left alone.
+pub fn remove_stale(dir: &Path) -> usize {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return 0;
+    };
+    let own = std::process::id().to_string();
+    let mut removed = 0;
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some((stem, pid)) = name.strip_prefix('.').and_then(|n| n.rsplit_once(".tmp")) else {
+            continue;
+        };
+        if stem.is_empty()
+            || pid.is_empty()
+            || !pid.bytes().all(|b| b.is_ascii_digit())
+            || pid == own
+            || alive(pid) != Some(false)
+            || !e.file_type().is_ok_and(|t| t.is_file())
+        {
+            continue;
+        }
+        if std::fs::remove_file(e.path()).is_ok() {
+            removed += 1;
+        }
+    }
+    removed
+}
+
+/// Check, before any work, that files can be made in `dir` (a folder to
+/// write into, made later if missing): a probe file is made and removed in
+/// it, or in the nearest folder above it that exists. The error names
+/// `shown`, the path the user gave.
+pub fn check_writable(dir: &Path, shown: &Path) -> Result<()> {
+    let err = |e| write_error(&shown.display().to_string(), e);
+    let mut at = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    loop {
+        match std::fs::metadata(at) {
+            Ok(m) if m.is_dir() => break,
+            Ok(_) => {
+                return Err(err(std::io::Error::new(
+                    std::io::ErrorKind::NotADirectory,
+                    format!("{} is a file, not a folder", at.display()),
+                )));
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                match at.parent().filter(|p| !p.as_os_str().is_empty()) {
+                    Some(p) => at = p,
+                    None => {
+                        at = Path::new(".");
+                        break;
+                    }
+                }
+            }
+            Err(e) => return Err(err(e)),
+        }
+    }
+    let probe = at.join(format!(".mechplan-probe.tmp{}", std::process::id()));
+    track(&probe);
+    let made = std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(&probe);
+    discard(&probe);
+    made.map(|_| ()).map_err(err)
+}
+
+/// The lock file of a folder written by a run ([`FolderLock`]).
+pub const LOCK: &str = ".mechplan.lock";
+
+/// What a run waiting for another's folder is told (set by the command:
+/// a note on standard error); a library caller is told nothing.
+static WAITING: std::sync::OnceLock<fn(&str)> = std::sync::OnceLock::new();
+
+/// Say `f(text)` when a run waits for a folder another run is writing.
+pub fn on_waiting(f: fn(&str)) {
+    let _ = WAITING.set(f);
+}
+
+/// An output folder locked for this run: an advisory lock on the file
+/// [`LOCK`] in it. A second run into the folder waits for the first to
+/// finish (told through [`on_waiting`]); the lock goes with the process,
+/// however it ends, and the file is removed when the run is done.
+pub struct FolderLock {
+    file: File,
+    path: PathBuf,
+}
+
+impl FolderLock {
+    /// Lock `dir` (which exists), waiting for any other run.
+    pub fn acquire(dir: &Path) -> Result<FolderLock> {
+        let path = dir.join(LOCK);
+        let err = |e| write_error(&path.display().to_string(), e);
+        let mut told = false;
+        loop {
+            // Not noted as a temporary until locked: until then it may be
+            // another run's (an empty lock file left by a kill between
+            // these lines is harmless: the next run locks and removes it).
+            let file = std::fs::OpenOptions::new()
+                .read(true)
+                .write(true)
+                .create(true)
+                .truncate(false)
+                .open(&path)
+                .map_err(err)?;
+            match file.try_lock() {
+                Ok(()) => {}
+                Err(std::fs::TryLockError::WouldBlock) => {
+                    if !told {
+                        told = true;
+                        if let Some(f) = WAITING.get() {
+                            f(&format!(
+                                "waiting for another run writing into {} (its lock: {})",
+                                dir.display(),
+                                path.display()
+                            ));
+                        }
+                    }
+                    file.lock().map_err(err)?;
+                }
+                Err(std::fs::TryLockError::Error(e)) => return Err(err(e)),
+            }
+            // The run before us may have removed the file it locked: the
+            // lock holds only if the file locked is still the one there.
+            if same_file(&file, &path) {
+                track(&path);
+                return Ok(FolderLock { file, path });
+            }
+        }
+    }
+}
+
+/// Whether the open `file` is the one at `path` now.
+#[cfg(unix)]
+fn same_file(file: &File, path: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (file.metadata(), std::fs::metadata(path)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+#[cfg(not(unix))]
+fn same_file(_: &File, path: &Path) -> bool {
+    path.exists()
+}
+
+impl Drop for FolderLock {
+    /// The lock file removed while still locked, then unlocked.
+    fn drop(&mut self) {
+        discard(&self.path);
+        let _ = self.file.unlock();
     }
 }
 

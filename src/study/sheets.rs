@@ -2,7 +2,7 @@
 //! next run remove the sheets of its own it no longer draws
 //! ([`write_sheets`]).
 
-use super::files::write_error;
+use super::files::{FolderLock, committing, discard, remove_stale, track, write_error};
 use crate::error::Result;
 use crate::presentation::drawing::dxf::dxf;
 use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
@@ -82,17 +82,28 @@ pub struct SheetWriter {
     /// Some sheets of a set (`draw --position`): the folder's others are
     /// kept, and so are their entries in the manifest.
     partial: bool,
+    /// The folder locked for this run (from the start when it exists,
+    /// else from its making at the first sheet) until the writer is
+    /// dropped; dropped after the staging folder is removed.
+    lock: Option<FolderLock>,
 }
 
 impl SheetWriter {
     /// A writer into `dir` (made at the first sheet if missing), reading
     /// the manifest an earlier run left there.
     pub fn new(dir: &Path, format: Format, dpi: f64) -> Result<SheetWriter> {
+        // Another run writing into the folder is waited for before its
+        // manifest is read.
+        let lock = match dir.is_dir() {
+            true => Some(FolderLock::acquire(dir)?),
+            false => None,
+        };
         Ok(SheetWriter {
             dir: dir.to_path_buf(),
             format,
             dpi,
             before: listed(dir),
+            lock,
             staging: None,
             staged: Vec::new(),
             notes: Vec::new(),
@@ -136,10 +147,22 @@ impl SheetWriter {
                 let dir = &self.dir;
                 std::fs::create_dir_all(dir)
                     .map_err(|e| write_error(&dir.display().to_string(), e))?;
+                if self.lock.is_none() {
+                    self.lock = Some(FolderLock::acquire(dir)?);
+                    self.before = listed(dir);
+                }
                 if let Some(note) = remove_interrupted(dir) {
                     self.notes.push(note);
                 }
+                let stale = remove_stale(dir);
+                if stale > 0 {
+                    self.notes.push(format!(
+                        "removed {stale} temporary file(s) of interrupted run(s) in {}",
+                        dir.display()
+                    ));
+                }
                 let s = dir.join(format!("{STAGING}{}", std::process::id()));
+                track(&s);
                 std::fs::create_dir_all(&s)
                     .map_err(|e| write_error(&s.display().to_string(), e))?;
                 self.staging = Some(s.clone());
@@ -181,6 +204,14 @@ impl SheetWriter {
                 std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder, not a file");
             return Err(write_error(&p.display().to_string(), e));
         }
+        // The order (a signal meanwhile waits for it, see `committing`):
+        // every file of the run is complete in the staging folder before
+        // the first rename; the sheets (and the book) are renamed into
+        // place, then the manifest last, then the sheets of the earlier
+        // manifest this run does not draw are removed. A run killed
+        // outright (SIGKILL) during the renames leaves the old manifest
+        // with new sheets beside it, which the next run replaces.
+        let _commit = committing();
         for (tmp, path) in &staged {
             std::fs::rename(tmp, path).map_err(|e| write_error(&path.display().to_string(), e))?;
         }
@@ -238,7 +269,7 @@ impl Drop for SheetWriter {
     /// folder goes; finished, it is empty and goes too.
     fn drop(&mut self) {
         if let Some(s) = &self.staging {
-            let _ = std::fs::remove_dir_all(s);
+            discard(s);
         }
     }
 }

@@ -472,6 +472,8 @@ impl Study {
     /// and the notes for the user.
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         req.validate()?;
+        // A folder that cannot be written fails now, not after the sweep.
+        files::check_writable(&req.dir, &req.dir)?;
         // The pipeline run once; the course sheet's scales chosen from it.
         let (study, solved) = self.solved_for_sheets(req)?;
         Solution::new(&study, solved).draw(req)
