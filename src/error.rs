@@ -160,9 +160,17 @@ impl Error {
 /// mechplan's result type.
 pub type Result<T> = std::result::Result<T, Error>;
 
-/// Name `name` in the messages of an input's problems ("… (in NAME)").
+/// Name `name` in the messages of an input's problems ("… (in NAME)"):
+/// those of its fields and those of its JSON (a syntax error at its line
+/// and column, a repeated name).
 pub fn in_file(name: &str) -> impl Fn(Error) -> Error + '_ {
     move |e| match e {
+        Error::Input(Input::Json(lines)) => Error::json(
+            lines
+                .into_iter()
+                .map(|l| format!("{l} (in {name})"))
+                .collect(),
+        ),
         Error::Input(Input::Fields(mut v)) => {
             for i in &mut v {
                 i.message = format!("{} (in {name})", i.message);

@@ -85,6 +85,23 @@ pub fn format_quantity(x: f64, unit: &str) -> String {
     }
 }
 
+/// `shown` (a value in the unit it is shown in: degrees, metres) in the
+/// fewest significant digits whose decimal `back` turns into `exact`
+/// (the value as computed: radians, metres) — "60" for the 60° of a
+/// file that came back through radians as 59.99999999999999°, while two
+/// values a nano-degree apart still read apart. Without such a decimal,
+/// `shown` to its last digit.
+pub fn read_back(shown: f64, exact: f64, back: &dyn Fn(f64) -> f64) -> String {
+    if !shown.is_finite() {
+        return shown.to_string();
+    }
+    (1..=17)
+        .filter_map(|p| format!("{:.*e}", p - 1, shown).parse::<f64>().ok())
+        .find(|&d| back(d) == exact)
+        .unwrap_or(shown)
+        .to_string()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -121,5 +138,18 @@ mod tests {
         assert_eq!(fixed(3.0, 6), "3");
         assert_eq!(fixed(-0.001, 2), "0");
         assert_eq!(fixed(-1.26, 1), "-1.3");
+    }
+
+    #[test]
+    fn values_read_back_in_their_fewest_digits() {
+        let rad = std::f64::consts::PI / 180.0;
+        let deg = |d: f64| d * rad;
+        let q = 60.0 * rad;
+        assert_eq!(q.to_degrees().to_string(), "59.99999999999999");
+        assert_eq!(read_back(q.to_degrees(), q, &deg), "60");
+        let near = f64::from_bits(q.to_bits() + 1);
+        assert_ne!(read_back(near.to_degrees(), near, &deg), "60");
+        assert_eq!(read_back(0.07, 0.07, &|x| x), "0.07");
+        assert_eq!(read_back(-0.0, 0.0, &|x| x), "-0");
     }
 }

@@ -18,6 +18,9 @@ use terminal::{stdout, wrote};
 /// positions numbered as `--positions-from` says (else as the scene does).
 fn study(path: &Path, numbering: Option<Numbering>) -> Result<Study, Error> {
     let study = Study::from_path(path)?.watched_by(Arc::new(terminal::Bar::default()));
+    if let Some(n) = study.units_note() {
+        terminal::note(&n);
+    }
     Ok(match numbering {
         Some(n) => study.numbered(n),
         None => study,

@@ -7,7 +7,7 @@
 use super::Study;
 use super::studies::{self, CheckRequest};
 use crate::error::{Error, Result, in_file};
-use crate::grading::answer::{self, MAX_ANSWER_BYTES};
+use crate::grading::answer::MAX_ANSWER_BYTES;
 use crate::grading::dxf;
 use std::path::Path;
 
@@ -62,8 +62,7 @@ fn photo_overlay(checked: &super::Checked, answer: &Path, out: &Path) -> Result<
     };
     let file = checked.photo_file().ok_or_else(not_marks)?;
     let photo = answer.parent().unwrap_or(Path::new("")).join(file);
-    let bytes = std::fs::read(&photo)
-        .map_err(|e| Error::scene("/photo/file", format!("{}: {e}", photo.display())))?;
+    let bytes = super::reads::read_bounded(&photo, super::reads::MAX_PHOTO_BYTES, "a photo")?;
     let size = crate::grading::photo::displayed_size(&bytes)?;
     let folder = |p: &Path| {
         p.parent()
@@ -118,20 +117,8 @@ pub(super) fn is_drawing(path: &Path) -> bool {
 /// ([`crate::grading::dxf::decode`]), its bytes kept for the copy with the
 /// overlay (`--dxf`).
 pub(super) fn read_answer(path: &Path) -> Result<(String, Option<Vec<u8>>)> {
-    use std::io::Read;
     let name = path.display().to_string();
-    let io = |source| Error::Io {
-        path: name.clone(),
-        source,
-    };
-    let f = std::fs::File::open(path).map_err(io)?;
-    if let Ok(md) = f.metadata() {
-        answer::check_size(md.len()).map_err(in_file(&name))?;
-    }
-    let mut bytes = Vec::new();
-    f.take(MAX_ANSWER_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)
-        .map_err(io)?;
+    let bytes = super::reads::read_bounded(path, MAX_ANSWER_BYTES as u64, "an answer")?;
     let dxf = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dxf"));
@@ -139,11 +126,9 @@ pub(super) fn read_answer(path: &Path) -> Result<(String, Option<Vec<u8>>)> {
         let text = dxf::decode(&bytes).map_err(in_file(&name))?;
         return Ok((text, Some(bytes)));
     }
-    let text = String::from_utf8(bytes).map_err(|e| {
-        io(std::io::Error::new(
-            std::io::ErrorKind::InvalidData,
-            e.utf8_error(),
-        ))
+    let text = String::from_utf8(bytes).map_err(|e| Error::Io {
+        path: name,
+        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e.utf8_error()),
     })?;
     Ok((text, None))
 }

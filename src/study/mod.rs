@@ -31,6 +31,7 @@ mod check_file;
 pub mod files;
 mod group;
 mod prepared;
+mod reads;
 mod sheets;
 mod solution;
 mod studies;

@@ -157,12 +157,11 @@ pub(super) fn position_index(
 /// The embedded default scene: the lecture's six-link mechanism (Fig. 2.10).
 pub const DEFAULT_SCENE: &str = include_str!("../../fixtures/six_link_fig2_10.json");
 
-/// Read a file whole, an error naming it if it cannot be read.
+/// Read a scene file whole, an error naming it if it cannot be read; one
+/// of more than [`crate::model::scene::MAX_FILE_BYTES`] (a device, an endless
+/// pipe) is refused once that many bytes are read.
 pub fn read(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).map_err(|source| Error::Io {
-        path: path.display().to_string(),
-        source,
-    })
+    super::reads::read_text_bounded(path, crate::model::scene::MAX_FILE_BYTES as u64, "a scene")
 }
 
 impl Study {
@@ -349,6 +348,22 @@ impl Study {
     #[cfg(feature = "internals")]
     pub fn analysis(&self) -> &Analysis {
         &self.analysis
+    }
+
+    /// A note for the user when the scene's lengths look like
+    /// millimetres read as metres: the file states no `units.length` and
+    /// its sketch is more than
+    /// [`MILLIMETRES_LIKELY_M`](crate::model::scene::MILLIMETRES_LIKELY_M) (20 m)
+    /// across. Nothing is refused: the scene is solved as written.
+    pub fn units_note(&self) -> Option<String> {
+        let m = &self.analysis.mech;
+        let limit = crate::model::scene::MILLIMETRES_LIKELY_M;
+        (!m.scene.length_stated && m.size > limit).then(|| {
+            format!(
+                "the scene states no \"units\": its lengths are read as metres, which makes the mechanism {} across (more than {limit} m); if they are millimetres, add \"units\": {{\"length\": \"mm\"}} to the scene",
+                crate::format::format_quantity(m.size, "m")
+            )
+        })
     }
 
     /// The scene's language for annotations (`want.lang`).

@@ -185,7 +185,8 @@ pub(super) fn parse_answer(
         .map(std::path::Path::to_path_buf);
     let photo_file = move |f: &str| {
         let p = folder.as_ref().map_or_else(|| f.into(), |b| b.join(f));
-        std::fs::read(&p).map_err(|e| format!("{}: {e}", p.display()))
+        super::reads::read_bounded(&p, super::reads::MAX_PHOTO_BYTES, "a photo")
+            .map_err(|e| e.to_string())
     };
     let (ans, notes, photo) =
         read::from_text_full(text, name, svg, &reading(req), Some(&photo_file))?;

@@ -2,6 +2,7 @@
 //! group's closed form shares: a point of a link, a pair's point, the
 //! angle across a pair, a slider's line, a link placed by two of its points.
 
+use crate::format::read_back;
 use crate::geom::{Pose, rotate};
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
@@ -27,11 +28,30 @@ impl Configuration {
 }
 
 /// Describe the input values for messages: "φ = 123.4°" or "s = 0.05 m",
-/// in the shortest decimal that is the value (near a limit, positions a
-/// nano-degree apart must read apart); several inputs each with its link's
-/// id: "φ1 = 30°, φ4 = 120°".
+/// in the shortest decimal that is the value as the file's units give it
+/// ([`read_back`]: 60° written in degrees is "φ = 60°", not the
+/// 59.99999999999999° it comes back as through radians; near a limit,
+/// positions a nano-degree apart still read apart); several inputs each
+/// with its link's id: "φ1 = 30°, φ4 = 120°".
 pub fn describe_input(m: &Mechanism, q: &[f64]) -> String {
-    describe_input_with(m, q, &|q| format!("{}°", q.to_degrees()), &|q| format!("{q} m"))
+    let unit = m.scene.length_unit;
+    describe_input_with(
+        m,
+        q,
+        &|q| {
+            let deg = |d: f64| (d % 360.0) * (std::f64::consts::PI / 180.0);
+            format!("{}°", read_back(q.to_degrees(), q, &deg))
+        },
+        &|q| {
+            // The shortest decimal in the file's unit, in metres (a slide
+            // of 70 mm is 0.07 m, not 0.07000000000000001 m).
+            let written = read_back(q / unit, q, &|x| x * unit);
+            let m = format!("{written}e{}", unit.log10().round() as i32)
+                .parse::<f64>()
+                .map_or(written, |m| m.to_string());
+            format!("{m} m")
+        },
+    )
 }
 
 /// The input values `q` as [`describe_input`] names them, each angle (rad)

@@ -15,6 +15,8 @@ use serde_json::{Map, Value};
 pub(super) struct Reader {
     pub(super) issues: Vec<Issue>,
     pub(super) len: f64,
+    /// Whether `units.length` is written.
+    pub(super) len_stated: bool,
     pub(super) ang: f64,
     /// [`Scene::input_rounding`], as the positions are read.
     pub(super) rounding: Vec<f64>,
@@ -239,6 +241,7 @@ impl Reader {
             want: want?,
             dynamics,
             length_unit: self.len,
+            length_stated: self.len_stated,
             angle_unit: self.ang,
             input_rounding: std::mem::take(&mut self.rounding),
         })
@@ -246,6 +249,7 @@ impl Reader {
 
     fn units(&mut self, v: Option<&Value>) {
         self.len = 1.0;
+        self.len_stated = v.is_some_and(|v| v.get("length").is_some());
         self.ang = std::f64::consts::PI / 180.0;
         let Some(v) = v else { return };
         let Some(o) = self.object(v, "/units") else {

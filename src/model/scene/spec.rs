@@ -321,6 +321,10 @@ pub struct Scene {
     pub want: Want,
     /// Length unit of the file (m per unit), to echo inputs in their units.
     pub length_unit: f64,
+    /// Whether the file states its length unit (`units.length`): without
+    /// it the lengths are metres, and a sketch larger than
+    /// [`MILLIMETRES_LIKELY_M`] draws a note that they may be millimetres.
+    pub length_stated: bool,
     /// Angle unit of the file (rad per unit).
     pub angle_unit: f64,
     /// The rounding of each listed input value as the file writes it (rad
@@ -338,6 +342,13 @@ pub struct Scene {
 
 /// Unit roundoff of f64: half an ulp, relative.
 pub(super) const U: f64 = f64::EPSILON / 2.0;
+
+/// The size of a sketch (the diagonal of its bounding box, m) beyond
+/// which a scene that states no `units.length` draws a note that its
+/// lengths, read as metres, may be millimetres: no machine drawn in a
+/// course is 20 m across, while a mechanism of a few hundred millimetres
+/// read as metres is hundreds of metres.
+pub const MILLIMETRES_LIKELY_M: f64 = 20.0;
 
 /// Upper limits that keep a hostile file from exhausting the machine.
 pub const MAX_FILE_BYTES: usize = 4 << 20;
