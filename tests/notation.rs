@@ -349,3 +349,92 @@ fn plan_tables_give_three_significant_digits() {
     assert!(cells > 20, "{cells} numbers read");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Zhukovsky's lever names its points as the plan of velocities does:
+/// the shaper's ram by d₅ alone, not "d₅, k′, m, t" (its K, M and T lie
+/// there: it translates), the pole p_v alone.
+#[test]
+fn the_lever_names_a_translating_links_point_once() {
+    let sheets = shaper_sheets();
+    let levers: Vec<_> = sheets
+        .iter()
+        .filter(|s| s.name.starts_with("lever_"))
+        .collect();
+    assert!(levers.len() >= 10, "{} lever sheets", levers.len());
+    let mut seen = 0;
+    for s in levers {
+        if let Some(d5) = label_text(&s.svg, "label-d_5") {
+            assert_eq!(d5, "d5", "{}", s.name);
+            seen += 1;
+        }
+        if let Some(p) = label_text(&s.svg, "label-p_v") {
+            assert!(
+                !p.contains("d0"),
+                "{}: the frame's d₀ named at the pole: {p}",
+                s.name
+            );
+        }
+    }
+    assert!(seen >= 10, "d₅ named on {seen} levers");
+}
+
+/// ГОСТ 2.770's cylinder with a piston: the barrel closed at both ends
+/// (its bottom at the pivot, the end cap the rod passes through), each a
+/// main line across the axis as wide as the barrel; the rod crosses the
+/// cap. Read from the boom's plans of the mechanism, the group
+/// `cylinder-1`.
+#[test]
+fn the_cylinders_barrel_is_closed_at_both_ends() {
+    let v = fixture("boom_cylinder");
+    let positions = v["positions"].clone();
+    let (an, solved) = solve(scene_with(v, positions));
+    let sheets = sheets(&an, &solved, &mechplan::drawing::DrawOptions::default());
+    let mut checked = 0;
+    for s in sheets.iter().filter(|s| s.name.starts_with("mechanism_")) {
+        let doc = roxmltree::Document::parse(&s.svg).unwrap();
+        let g = doc
+            .descendants()
+            .find(|n| n.attribute("id") == Some("cylinder-1"))
+            .unwrap_or_else(|| panic!("{}: no cylinder-1", s.name));
+        let segs: Vec<[f64; 4]> = g
+            .descendants()
+            .filter(|n| n.has_tag_name("line"))
+            .map(|n| ["x1", "y1", "x2", "y2"].map(|a| n.attribute(a).unwrap().parse().unwrap()))
+            .collect();
+        let len = |e: &[f64; 4]| (e[2] - e[0]).hypot(e[3] - e[1]);
+        let dir = |e: &[f64; 4]| ((e[2] - e[0]) / len(e), (e[3] - e[1]) / len(e));
+        // The barrel's two walls: the two longest parallel lines.
+        let mut by_len = segs.clone();
+        by_len.sort_by(|a, b| len(b).total_cmp(&len(a)));
+        let wall = by_len
+            .iter()
+            .find(|e| {
+                by_len.iter().any(|f| {
+                    f != *e
+                        && (len(f) - len(e)).abs() < 0.05
+                        && (dir(f).0 * dir(e).1 - dir(f).1 * dir(e).0).abs() < 1e-3
+                })
+            })
+            .unwrap_or_else(|| panic!("{}: no barrel walls in {segs:?}", s.name));
+        let u = dir(wall);
+        // Lines across the axis (⊥ the walls) at the walls' two ends.
+        let across: Vec<&[f64; 4]> = segs
+            .iter()
+            .filter(|e| {
+                (dir(e).0 * u.0 + dir(e).1 * u.1).abs() < 1e-2 && (len(e) - 4.4).abs() < 0.05
+            })
+            .collect();
+        let at = |x: f64, y: f64| (x - wall[0]) * u.0 + (y - wall[1]) * u.1;
+        let ends: Vec<f64> = across.iter().map(|e| at(e[0], e[1])).collect();
+        for t in [0.0, len(wall)] {
+            assert!(
+                ends.iter().any(|e| (e - t).abs() < 0.05),
+                "{}: the barrel not closed at {t:.1} mm of its {:.1} (lines across at {ends:?})",
+                s.name,
+                len(wall)
+            );
+        }
+        checked += 1;
+    }
+    assert!(checked >= 10, "{checked} plans of the mechanism");
+}

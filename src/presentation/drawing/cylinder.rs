@@ -1,8 +1,10 @@
 //! The symbol of a hydraulic (pneumatic) cylinder on the plan of the
 //! mechanism (ГОСТ 2.770-68, "цилиндр с поршнем"): the barrel a narrow
-//! rectangle along the cylinder's axis, closed at its pivot's end and open
-//! at the other; the piston a stroke across the barrel; the rod a line
-//! from the piston out through the open end to its pin. Drawn for the
+//! rectangle along the cylinder's axis, closed at both ends (its pivot's
+//! end and the end cap the rod passes through); the piston a stroke
+//! across the barrel; the rod a line from the piston out through the end
+//! cap to its pin. Each cylinder is a group `cylinder-K` (K: the pair's
+//! number from 1), so that a reader finds its parts. Drawn for the
 //! driving pair of a driving slider on a moving guide (the cylinder is the
 //! guide, the rod the slider), over the two links' own lines.
 
@@ -41,6 +43,13 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64) {
 }
 
 pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize) {
+    c.group_id("cylinder", format!("cylinder-{}", k + 1), |c| {
+        barrel(an, s, c, mu_l, k)
+    });
+}
+
+/// The barrel, the piston and the rod of pair `k`.
+fn barrel(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize) {
     let m = &an.mech;
     let pr = &m.prismatics[k];
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
@@ -51,8 +60,8 @@ pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize
     let on_axis = |t: f64| origin + u * t;
     let pin = to(s.config.point(m, pr.slider, pr.point));
     let t_pin = along(pin);
-    // The barrel: the cylinder link's points along the axis, its closed
-    // end the one away from the rod's pin.
+    // The barrel: the cylinder link's points along the axis, its bottom
+    // the end away from the rod's pin, its cap the end toward it.
     let ts: Vec<f64> = m.links[pr.guide]
         .points
         .iter()
@@ -64,15 +73,15 @@ pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize
             (a.min(t), b.max(t))
         });
     let toward_pin = if t_pin >= 0.5 * (lo + hi) { 1.0 } else { -1.0 };
-    let (closed, open) = if hi - lo > 2.0 * HALF_WIDTH {
+    let (bottom, cap) = if hi - lo > 2.0 * HALF_WIDTH {
         if toward_pin > 0.0 { (lo, hi) } else { (hi, lo) }
     } else {
         (lo, lo + toward_pin * DEFAULT_BARREL)
     };
     // The piston: the rod's point deepest in the barrel (the rod's pin
-    // alone: a little inside the open end), kept inside the barrel.
-    let depth = |t: f64| (t - closed) * toward_pin;
-    let len = depth(open);
+    // alone: a little inside the cap), kept inside the barrel.
+    let depth = |t: f64| (t - bottom) * toward_pin;
+    let len = depth(cap);
     let deepest = m.links[pr.slider]
         .points
         .iter()
@@ -84,8 +93,9 @@ pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize
         depth(deepest)
     }
     .clamp(1.0, (len - 1.0).max(1.0));
-    let piston = closed + toward_pin * piston_depth;
-    // The barrel over the links' lines, open at the rod's end.
+    let piston = bottom + toward_pin * piston_depth;
+    // The barrel over the links' lines, closed at both ends: the rod
+    // passes through the end cap.
     let corners = |t0: f64, t1: f64, h: f64| {
         vec![
             on_axis(t0) - n * h,
@@ -94,16 +104,18 @@ pub(crate) fn one(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, k: usize
             on_axis(t0) + n * h,
         ]
     };
-    c.poly(corners(closed, open, HALF_WIDTH), "white", 0.0);
-    c.seg(
-        on_axis(closed) - n * HALF_WIDTH,
-        on_axis(closed) + n * HALF_WIDTH,
-        Class::Main,
-    );
+    c.poly(corners(bottom, cap, HALF_WIDTH), "white", 0.0);
+    for end in [bottom, cap] {
+        c.seg(
+            on_axis(end) - n * HALF_WIDTH,
+            on_axis(end) + n * HALF_WIDTH,
+            Class::Main,
+        );
+    }
     for side in [-1.0, 1.0] {
         c.seg(
-            on_axis(closed) + n * (side * HALF_WIDTH),
-            on_axis(open) + n * (side * HALF_WIDTH),
+            on_axis(bottom) + n * (side * HALF_WIDTH),
+            on_axis(cap) + n * (side * HALF_WIDTH),
             Class::Main,
         );
     }

@@ -214,6 +214,8 @@ pub fn figure(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
         c.dot(*p, format!("pt-{}", plan.points[members[0]].key));
     }
     for (p, members) in groups {
+        // Named as on the plan: d₅ alone for the ram, not "d₅, k′, m, t".
+        let members = super::plan::named(plan, &members);
         let first = &plan.points[members[0]];
         let mut label = Label::new(first.label.0.clone(), first.label.1.clone());
         for &i in &members[1..] {

@@ -225,14 +225,6 @@ impl Steps<'_> {
     fn labels(&mut self, c: &mut Canvas) {
         let plan = self.plan;
         let made = made_at(plan);
-        let echoes: Vec<(usize, usize)> = plan
-            .steps
-            .iter()
-            .filter_map(|s| match s.op {
-                Op::Coincide { out, with, .. } => Some((out, with)),
-                _ => None,
-            })
-            .collect();
         let made_of =
             |members: &[usize]| members.iter().filter_map(|&i| made[i]).min().unwrap_or(0);
         let mut groups: Vec<(Point, Vec<usize>)> = Vec::new();
@@ -247,14 +239,7 @@ impl Steps<'_> {
             }
         }
         for (_, members) in groups.iter_mut() {
-            let shown: Vec<usize> = members
-                .iter()
-                .copied()
-                .filter(|&i| !echoes.iter().any(|&(o, w)| o == i && members.contains(&w)))
-                .collect();
-            if !shown.is_empty() {
-                *members = shown;
-            }
+            *members = named(plan, members);
         }
         for (p, members) in &groups {
             c.dot(*p, format!("pt-{}", plan.points[members[0]].key));
@@ -275,5 +260,23 @@ impl Steps<'_> {
             }
             self.tag(c, made_of(&members));
         }
+    }
+}
+
+/// Of the plan points `members` at one place, those its label names: not
+/// a point that only coincides with another of them by a step of its own
+/// (the frame's d₀ at the pole, a translating ram's k′, m, t at d₅), as
+/// the lecture names them; all of them where that would name none.
+pub(super) fn named(plan: &Plan, members: &[usize]) -> Vec<usize> {
+    let echo = |i: usize| {
+        plan.steps.iter().any(|s| {
+            matches!(s.op, Op::Coincide { out, with, .. } if out == i && members.contains(&with))
+        })
+    };
+    let shown: Vec<usize> = members.iter().copied().filter(|&i| !echo(i)).collect();
+    if shown.is_empty() {
+        members.to_vec()
+    } else {
+        shown
     }
 }
