@@ -332,7 +332,8 @@ fn force_steps_read_off_the_reactions() {
 }
 
 /// The steps end each position with Zhukovsky's lever, whose M_b (read
-/// from the text in each language) is the links' equilibrium's.
+/// from the text in each language, M_b = F_b·l or M_b = −F_b·l) is the
+/// links' equilibrium's.
 #[test]
 fn force_steps_end_with_the_lever() {
     use mechplan::words::construction::Lang;
@@ -344,7 +345,13 @@ fn force_steps_end_with_the_lever() {
             (Lang::Ru, "M_ур = F_ур"),
         ] {
             let text = mechplan::report::to_steps(&an, &solved, lang);
-            let lines: Vec<&str> = text.lines().filter(|l| l.contains(key)).collect();
+            // M_b = F_b·l, or M_b = −F_b·l where F_b (a magnitude, drawn
+            // as it acts) turns the other way.
+            let negative = key.replacen("= ", "= −", 1);
+            let lines: Vec<&str> = text
+                .lines()
+                .filter(|l| l.contains(key) || l.contains(&negative))
+                .collect();
             assert_eq!(lines.len(), solved.len(), "{name} {lang:?}");
             for (line, s) in lines.iter().zip(&solved) {
                 let value: f64 = line

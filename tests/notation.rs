@@ -438,3 +438,50 @@ fn the_cylinders_barrel_is_closed_at_both_ends() {
     }
     assert!(checked >= 10, "{checked} plans of the mechanism");
 }
+
+/// ГОСТ 2.304's least size is 2.5 mm: every word of an A4 sheet's title
+/// block (`--title-block`), the columns' words included (they were 2 mm),
+/// is at least that, narrowed to its cell where it is wider.
+#[test]
+fn title_block_words_are_at_least_2_5_mm() {
+    let dir = std::env::temp_dir().join(format!("mechplan-notation-tb-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let scene = format!(
+        "{}/fixtures/dynamics/shaper_fig2_11.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    for lang in ["en", "uk", "ru"] {
+        let out = dir.join(lang);
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args([
+                "draw",
+                &scene,
+                "--title-block",
+                "--sheet",
+                "A4",
+                "--lang",
+                lang,
+                "-o",
+            ])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let svg = std::fs::read_to_string(out.join("velocity_1.svg")).unwrap();
+        let sizes: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<text class=\"title-block"))
+            .map(|l| {
+                let at = l.find("font-size=\"").unwrap() + 11;
+                l[at..].split('"').next().unwrap().parse().unwrap()
+            })
+            .collect();
+        assert!(
+            sizes.len() >= 12,
+            "{lang}: {} title-block texts",
+            sizes.len()
+        );
+        assert!(sizes.iter().all(|&s| s >= 2.5), "{lang}: sizes {sizes:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -353,8 +353,10 @@ pub(super) fn pending(
     for input in 0..an.mech.scene.input_count() {
         let first = lever_at(an, s, loads, input, Naming::Full, None)?;
         let right = |l: &Lever| table(an, l, opt.lang).size().0 + super::sheet::PAD;
-        // The caption's lines broken to the field beside the table.
-        let width = super::field_size(opt, right(&first)).0;
+        // The caption's lines broken to the field beside the table (less a
+        // margin: the breaking estimates a line's width as plain text, the
+        // sheet measures its subscripts).
+        let width = super::field_size(opt, right(&first)).0 - 3.0;
         let figure = |l: &Lever| {
             let mu_f = force_scale(l);
             let mut c = Canvas::default();

@@ -164,10 +164,11 @@ impl Block {
     }
 
     /// Text `what` (nothing if empty) at the form's (`x`, `y`), in a cell
-    /// `width` mm wide. Where the sheet's lettering is enlarged (the
+    /// `width` mm wide; where the sheet's lettering is enlarged (the
     /// course sheets, [`with_lettering`]) at that factor and at least
-    /// 3.5 mm, and narrowed to its cell where wider (as ГОСТ 2.304's
-    /// narrow type A would write it).
+    /// 3.5 mm. Narrowed to its cell where wider (as ГОСТ 2.304's narrow
+    /// type A would write it): the form's column words are 2.5 mm, the
+    /// least size of ГОСТ 2.304's series, not 2 mm, on every sheet.
     fn text(
         &mut self,
         (x, y): (f64, f64),
@@ -187,7 +188,7 @@ impl Block {
         } else {
             format!(r#" text-anchor="{anchor}""#)
         };
-        let narrow = if k > 1.0 && runs_width(&runs(what), size) > width {
+        let narrow = if runs_width(&runs(what), size) > width {
             format!(
                 r#" textLength="{}" lengthAdjust="spacingAndGlyphs""#,
                 fmt(width)
@@ -239,7 +240,7 @@ impl Block {
     fn fill(&mut self, t: &TitleBlock, size: SheetSize) {
         let w = words(t.lang);
         let small = |b: &mut Block, at: (f64, f64), cell: f64, anchor: &str, what: &str| {
-            b.text(at, (2.0, cell - 1.0), anchor, what, "title-block");
+            b.text(at, (2.5, cell - 1.0), anchor, what, "title-block");
         };
         // Headings of the columns (baselines 1.5 mm above a 5 mm row's
         // bottom, centred in their cells).
