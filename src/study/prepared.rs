@@ -158,7 +158,7 @@ pub(super) fn position_index(
 pub const DEFAULT_SCENE: &str = include_str!("../../fixtures/six_link_fig2_10.json");
 
 /// Read a scene file whole, an error naming it if it cannot be read; one
-/// of more than [`crate::model::scene::MAX_FILE_BYTES`] (a device, an endless
+/// of more than 4 MiB (the scene reader's bound: a device, an endless
 /// pipe) is refused once that many bytes are read.
 pub fn read(path: &Path) -> Result<String> {
     super::reads::read_text_bounded(path, crate::model::scene::MAX_FILE_BYTES as u64, "a scene")
@@ -353,7 +353,7 @@ impl Study {
     /// A note for the user when the scene's lengths look like
     /// millimetres read as metres: the file states no `units.length` and
     /// its sketch is more than
-    /// [`MILLIMETRES_LIKELY_M`](crate::model::scene::MILLIMETRES_LIKELY_M) (20 m)
+    /// 20 m (`MILLIMETRES_LIKELY_M`)
     /// across. Nothing is refused: the scene is solved as written.
     pub fn units_note(&self) -> Option<String> {
         let m = &self.analysis.mech;
