@@ -243,3 +243,57 @@ fn a_plan_scale_that_overflows_one_position_is_refused_naming_it() {
         );
     }
 }
+
+/// The four-bar scaled by `k` (every coordinate and length), one position.
+fn four_bar_scaled(tag: &str, k: f64) -> String {
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(fixture_path("four_bar")).unwrap()).unwrap();
+    for (_, p) in v["points"].as_object_mut().unwrap() {
+        for c in p.as_array_mut().unwrap() {
+            *c = serde_json::json!(c.as_f64().unwrap() * k);
+        }
+    }
+    for (_, l) in v["lengths"].as_object_mut().unwrap() {
+        *l = serde_json::json!(l.as_f64().unwrap() * k);
+    }
+    v["positions"] = serde_json::json!({ "count": 1 });
+    let p = dir(tag).join(format!("scene-{k}.json"));
+    std::fs::write(&p, v.to_string()).unwrap();
+    p.display().to_string()
+}
+
+/// The plan of the mechanism's μ_l is one of ГОСТ 2.302's scales of a
+/// drawing, as the standard prints them (1:15 and 1:75 among them, no
+/// 1:250), from a four-bar of a few millimetres to one of hundreds of
+/// metres; each of the standard's scales up to 1:1000 is met on the way.
+#[test]
+fn the_mechanism_takes_gost_2_302s_scales() {
+    let printed = [
+        "100:1", "50:1", "40:1", "20:1", "10:1", "5:1", "4:1", "2.5:1", "2:1", "1:1", "1:2",
+        "1:2.5", "1:4", "1:5", "1:10", "1:15", "1:20", "1:25", "1:40", "1:50", "1:75", "1:100",
+        "1:200", "1:400", "1:500", "1:800", "1:1000", // For large objects.
+        "1:2000", "1:5000", "1:10000",
+    ];
+    let mu_of = |s: &str| {
+        let (a, b) = s.split_once(':').unwrap();
+        b.parse::<f64>().unwrap() / a.parse::<f64>().unwrap() * 1e-3
+    };
+    let mut met = std::collections::BTreeSet::new();
+    // 1.08 apart: finer than the standard's closest steps (1:75 → 1:100
+    // is ×1.33), from ×0.003 to ×3000.
+    let mut k = 0.003f64;
+    while k < 3000.0 {
+        let mu = solve_mu_l(&four_bar_scaled("gost", k));
+        let at = printed
+            .iter()
+            .position(|s| (mu_of(s) - mu).abs() <= 1e-9 * mu);
+        let at = at.unwrap_or_else(|| panic!("×{k}: μ_l = {mu} m/mm is no scale of ГОСТ 2.302"));
+        met.insert(at);
+        k *= 1.08;
+    }
+    let missed: Vec<&str> = (0..printed.len() - 3)
+        .filter(|i| !met.contains(i))
+        .map(|i| printed[i])
+        .collect();
+    assert!(missed.is_empty(), "never chosen: {missed:?}");
+}

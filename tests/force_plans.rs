@@ -362,8 +362,10 @@ fn force_steps_end_with_the_lever() {
                     .and_then(|v| v.parse().ok())
                     .unwrap_or_else(|| panic!("{line}"));
                 let mb = s.dynamics.as_ref().unwrap().balancing[0].value();
+                // Three significant digits: within half a unit of the third.
+                let unit = 10f64.powi(mb.abs().max(1e-9).log10().floor() as i32 - 2);
                 assert!(
-                    (value - mb).abs() <= 1e-3 * mb.abs().max(1e-3),
+                    (value - mb).abs() <= 0.5 * unit * (1.0 + 1e-9),
                     "{name} {lang:?}: {line} vs {mb}"
                 );
             }

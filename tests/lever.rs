@@ -275,8 +275,14 @@ fn lever_sheets() {
         .expect("a lever sheet");
     assert_eq!(lever.scales, vec![("mu_v", 0.1), ("mu_F", 50.0)]);
     // The caption's numbers (the SVG writes subscripts apart: the numbers
-    // are whole).
-    for text in ["96720", "967.2", "96.72", "−100"] {
+    // are whole): the worked example's ΣM = 96 720 N·mm, F_b = 967.2 N and
+    // M_b = 96.72 N·m to three significant digits, as the table.
+    for text in [
+        "96700 N·mm",
+        "(−100) mm = 0",
+        "= 967 N",
+        "967·0.1 = 96.7 N·m",
+    ] {
         assert!(lever.svg.contains(text), "{text} not on the sheet");
     }
     let arm = names(&analysis("arm_two_cylinders"));

@@ -1,8 +1,81 @@
-//! Scale coefficients μ from the standard drafting values (ГОСТ 2.302):
-//! 1, 2, 2.5, 4, 5 × 10^k.
-
+//! Scale coefficients μ from standard values: the plans' 1, 2, 2.5, 4,
+//! 5 × 10^k ([`Series::Plans`]: velocities, accelerations, forces,
+//! diagrams) and ГОСТ 2.302's scales of a drawing for lengths
+//! ([`Series::Drawing`]: the plan of the mechanism, its positions, its
+//! free bodies), whose reductions run 1:10, 1:15, 1:20, 1:25, 1:40, 1:50,
+//! 1:75, 1:100, 1:200, 1:400, 1:500, 1:800, 1:1000 (no 1:250).
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
+
+/// ГОСТ 2.302's scales of a drawing as n of "1:n" (μ_l = n/1000 m per
+/// mm): the enlargements 100:1 … 2:1, full size, the reductions 1:2 …
+/// 1:1000 and those it allows for large objects, 1:2000 … 1:50 000.
+const DRAWING_N: [f64; 33] = [
+    0.01, 0.02, 0.025, 0.05, 0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0,
+    25.0, 40.0, 50.0, 75.0, 100.0, 200.0, 400.0, 500.0, 800.0, 1000.0, 2000.0, 5000.0, 10000.0,
+    20000.0, 25000.0, 50000.0,
+];
+
+/// Which standard values a scale is taken from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Series {
+    /// The plans' 1, 2, 2.5, 4, 5 × 10^k (any unit per mm).
+    Plans,
+    /// ГОСТ 2.302's scales of a drawing, μ_l in m/mm; past its ends
+    /// (100:1 and 1:50 000) its rule for larger enlargements, (100·k):1,
+    /// and the plans' values for still larger reductions.
+    Drawing,
+}
+
+impl Series {
+    /// The smallest value of the series not below `target` (real value
+    /// per mm), `target` finite and above zero.
+    pub fn at_least(self, target: f64) -> f64 {
+        match self {
+            Series::Plans => standard_of_ratio(target),
+            Series::Drawing => drawing_of_ratio(target),
+        }
+    }
+
+    /// The smallest value of the series with which `largest` (a real
+    /// value) is drawn no longer than `max_mm`; 0 when there is nothing
+    /// to fit (so that it never dominates).
+    pub fn scale(self, largest: f64, max_mm: f64) -> f64 {
+        if !fits_something(largest) {
+            return 0.0;
+        }
+        self.at_least(largest / max_mm)
+    }
+
+    /// The next value of the series above `mu` (a value of it or not).
+    pub fn above(self, mu: f64) -> f64 {
+        self.at_least(mu * (1.0 + 1e-9))
+    }
+}
+
+/// The smallest "1:n" of ГОСТ 2.302 with n not below `n` (≥ 1): the
+/// reduction that brings a drawing `n` times too large within its sheet.
+pub fn drawing_reduction(n: f64) -> f64 {
+    match DRAWING_N.iter().find(|&&v| v >= n * (1.0 - 1e-12)) {
+        Some(&v) => v,
+        None => standard_of_ratio(n),
+    }
+}
+
+/// The smallest of ГОСТ 2.302's scales (μ_l, m/mm) not below `target`.
+fn drawing_of_ratio(target: f64) -> f64 {
+    let n = target * 1e3;
+    let smallest = DRAWING_N[0];
+    if n < smallest * (1.0 - 1e-12) {
+        // (100·k):1 with the largest k not too large: n = 1/(100·k).
+        let k = (1.0 / (100.0 * n) * (1.0 + 1e-12)).floor().max(1.0);
+        return round_sig(1e-3 / (100.0 * k));
+    }
+    match DRAWING_N.iter().find(|&&v| v >= n * (1.0 - 1e-12)) {
+        Some(&v) => round_sig(v * 1e-3),
+        None => standard_of_ratio(target),
+    }
+}
 
 /// Where a plan drawn at a standard scale must fit, mm: its longest vector
 /// and its whole extent. Which field is the caller's decision (the
@@ -194,5 +267,45 @@ mod tests {
             let mm = x / mu;
             assert!((75.0..=150.0).contains(&mm), "{x}: {mu} gives {mm} mm");
         }
+    }
+
+    #[test]
+    fn lengths_take_gost_2_302s_scales_of_a_drawing() {
+        // ГОСТ 2.302-68 as printed: enlargements, full size, reductions.
+        let gost = [
+            "100:1", "50:1", "40:1", "20:1", "10:1", "5:1", "4:1", "2.5:1", "2:1", "1:1", "1:2",
+            "1:2.5", "1:4", "1:5", "1:10", "1:15", "1:20", "1:25", "1:40", "1:50", "1:75",
+            "1:100", "1:200", "1:400", "1:500", "1:800", "1:1000",
+        ];
+        let mu = |s: &str| {
+            let (a, b) = s.split_once(':').unwrap();
+            b.parse::<f64>().unwrap() / a.parse::<f64>().unwrap() * 1e-3
+        };
+        let d = Series::Drawing;
+        for w in gost.windows(2) {
+            let (lo, hi) = (mu(w[0]), mu(w[1]));
+            assert!((d.at_least(lo) - lo).abs() < 1e-15 * lo, "{} itself", w[0]);
+            // Every ratio between two neighbours takes the larger: no
+            // value between them (1:250 is not one).
+            for t in [0.01, 0.5, 0.99] {
+                let r = lo + t * (hi - lo);
+                assert!((d.at_least(r) - hi).abs() < 1e-12 * hi, "{r} between {w:?}");
+            }
+            assert!((d.above(lo) - hi).abs() < 1e-12 * hi, "after {}", w[0]);
+        }
+        assert_eq!(d.scale(0.0, 200.0), 0.0);
+        // A sketch of 3 m within 200 mm: 1:15; 12 m: 1:75.
+        assert!((d.scale(3.0, 200.0) - 0.015).abs() < 1e-15);
+        assert!((d.scale(12.0, 200.0) - 0.075).abs() < 1e-15);
+        // Past 100:1, (100·k):1: 1 mm within 150 mm is 150:1 at most, so 100:1.
+        assert!((d.scale(1e-3, 150.0) - 1e-5).abs() < 1e-20);
+        // 0.1 mm within 150 mm: 1500:1 → (100·15):1.
+        let m = d.scale(1e-4, 150.0);
+        assert!((m - 1e-3 / 1500.0).abs() < 1e-18, "{m}");
+        // Reductions of a sheet: 1:3 → 1:4, 1:12 → 1:15, 1:230 → 1:400.
+        assert_eq!(drawing_reduction(3.0), 4.0);
+        assert_eq!(drawing_reduction(12.0), 15.0);
+        assert_eq!(drawing_reduction(230.0), 400.0);
+        assert_eq!(drawing_reduction(1.0), 1.0);
     }
 }

@@ -162,7 +162,7 @@ impl Analysis {
             (false, false) => None,
         };
         let mu_l = sc.want.scales.mu_l.unwrap_or_else(|| {
-            crate::kinematics::construction::scale::standard_scale(mech.size, 200.0)
+            crate::kinematics::construction::scale::Series::Drawing.scale(mech.size, 200.0)
         });
         let drafting = Drafting {
             mu_v: sc.want.scales.mu_v,

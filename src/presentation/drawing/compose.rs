@@ -3,6 +3,7 @@
 //! acceleration plans, the positions sheet, the course sheets, the force
 //! sheets and the levers.
 
+use crate::kinematics::construction::scale::Series;
 use super::canvas::Canvas;
 use super::layout::{
     Pending, field_size, fill, fits, lower_scale, mechanism_bounds, mechanism_canvas,
@@ -207,6 +208,7 @@ fn misfit(
     let (aw, ah) = area_of(first);
     let e = mechanism_extent(an, solved);
     let mu = fill(
+        Series::Drawing,
         lower_scale(e.width(), e.height(), (aw, ah)),
         (aw, ah),
         |mu| Some(mechanism_union(an, solved, opt, mu, t)),
@@ -370,14 +372,14 @@ fn shared_scales(
         };
         out.positions = Some(match fixed_l {
             Some(mu) => (mu, draw(mu).unwrap_or_default()),
-            None => fill(lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
+            None => fill(Series::Drawing, lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
         });
     }
     if asked(an, solved, "mechanism") {
         let bounds = |mu: f64| Some(mechanism_bounds(an, solved, opt, mu));
         out.mechanism = Some(match fixed_l {
             Some(mu) => (mu, mechanism_bounds(an, solved, opt, mu)),
-            None => fill(lower, field, bounds, |r| *r).ok_or_else(too_large)?,
+            None => fill(Series::Drawing, lower, field, bounds, |r| *r).ok_or_else(too_large)?,
         });
     }
     Ok(out)
@@ -573,7 +575,7 @@ fn fitting_scale(
         let c = draw_plan(an, &plan);
         Some((plan, c))
     };
-    fill(lower, field, rebuild, |(_, c)| c.bounds())
+    fill(Series::Plans, lower, field, rebuild, |(_, c)| c.bounds())
 }
 
 /// The scales the scene fixes for its plans (`want.scales.mu_v`, `mu_a`),

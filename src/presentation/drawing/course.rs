@@ -19,7 +19,7 @@ use super::table::{self, Ruled, number, unit};
 use super::{DrawOptions, Sheet, SheetSize, lower_scale, positions, scale_text, words};
 use crate::error::Result;
 use crate::kinematics::analytic::Order;
-use crate::kinematics::construction::scale::{standard_above, standard_scale};
+use crate::kinematics::construction::scale::Series;
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::model::scene::PositionsSpec;
@@ -441,7 +441,13 @@ fn figure(
     let (aspect, lower_w, lower_h) = natural(cx, src)?;
     let bw = (area * aspect).sqrt().min(cx.field.width());
     let bh = (area / aspect).sqrt().min(cx.field.height());
-    let mut mu = standard_scale(lower_scale(lower_w, lower_h, (bw, bh)), 1.0);
+    // The positions are a drawing of the mechanism (ГОСТ 2.302's scales),
+    // the rest plans.
+    let series = match key {
+        Key::Positions => Series::Drawing,
+        _ => Series::Plans,
+    };
+    let mut mu = series.at_least(lower_scale(lower_w, lower_h, (bw, bh)));
     // A box smaller than the figure's lettering allows: the smallest
     // drawing there is (the packer then judges it).
     let mut smallest: Option<(f64, Sized)> = None;
@@ -462,7 +468,7 @@ fn figure(
         if smallest.as_ref().is_none_or(|(a, _)| w * h < *a) {
             smallest = Some((w * h, f.clone()));
         }
-        mu = standard_above(mu);
+        mu = series.above(mu);
     }
     smallest.map(|(_, f)| f)
 }

@@ -12,6 +12,7 @@
 //! the title block as on the kinematic sheet; the boxes shrink together
 //! until everything packs.
 
+use crate::kinematics::construction::scale::Series;
 use super::canvas::Canvas;
 use crate::studies::sheet_data::SheetData;
 use super::pack::{self, Figure};
@@ -165,7 +166,7 @@ fn figures(
             let c = draw(&l);
             Some((l, c))
         };
-        let (l, c) = fill(lower, lever_box, rebuild, |(_, c)| c.bounds())
+        let (l, c) = fill(Series::Plans, lower, lever_box, rebuild, |(_, c)| c.bounds())
             .map(|(_, x)| x)
             .unwrap_or_else(|| {
                 let c = draw(&first);

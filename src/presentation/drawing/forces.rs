@@ -6,6 +6,7 @@
 //! largest standard scale at which it fills its box (its μ_l and μ_F
 //! written in its panel), as the course draws each group apart.
 
+use crate::kinematics::construction::scale::Series;
 use super::canvas::{Canvas, FONT, Label, Prim};
 use super::free_body::{self, Scene};
 use super::layout::field_size;
@@ -342,7 +343,7 @@ fn figure_in(
                 .then(|| at_scale(an, s, loads, p, mu).and_then(draw))
                 .flatten()
         };
-        let (_, (plan, c)) = fill(lower, bx, build, |(_, c)| c.bounds())?;
+        let (_, (plan, c)) = fill(Series::Plans, lower, bx, build, |(_, c)| c.bounds())?;
         // Its vectors' span in its box (mm: the plan's points are drawn
         // as built); a plan all at the pole spans nothing at any scale.
         let (w, h) = real_extent(p);
@@ -466,7 +467,7 @@ fn grids(
             .enumerate()
             .map(|(i, (r, b))| {
                 let lower = lower_scale(r.width(), r.height(), *b);
-                fill(lower, *b, |mu| Some(body(i, mu)), |c| c.bounds())
+                fill(Series::Drawing, lower, *b, |mu| Some(body(i, mu)), |c| c.bounds())
             })
             .collect();
         let Some(drawn) = drawn else { continue };

@@ -4,7 +4,7 @@
 
 use super::canvas::{Canvas, Class, Label};
 use super::{DrawOptions, Sheet, page_svg};
-use crate::kinematics::construction::scale::standard_scale;
+use crate::kinematics::construction::scale::Series;
 use crate::studies::frenet;
 use kurbo::Point;
 use std::f64::consts::TAU;
@@ -158,7 +158,7 @@ pub fn sheets(count: usize, opt: &DrawOptions) -> Vec<Sheet> {
                     hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
                 }
             }
-            let mu = standard_scale(hi.x - lo.x, 220.0).max(standard_scale(hi.y - lo.y, 150.0));
+            let mu = Series::Drawing.scale(hi.x - lo.x, 220.0).max(Series::Drawing.scale(hi.y - lo.y, 150.0));
             let to = |p: Point| Point::new(p.x / mu, p.y / mu);
             let mut c = Canvas::default();
             for j in 0..count {

@@ -13,6 +13,7 @@
 //! only when a position has a force analysis, so that a handout without
 //! `dynamics` stays as it was.
 
+use crate::kinematics::construction::scale::Series;
 use super::canvas::{Canvas, xml};
 use super::free_body::{self, Scene};
 use super::html_parts::{Fit, label_html, prefixed, rich};
@@ -96,7 +97,7 @@ fn plan_figure(
         free_body::draw(&sc, plan, &mut c, mu);
         Some(c)
     };
-    let (mu_l, body) = fill(lower, BODY_BOX, draw, |c| c.bounds())
+    let (mu_l, body) = fill(Series::Drawing, lower, BODY_BOX, draw, |c| c.bounds())
         .or_else(|| draw(lower).map(|c| (lower, c)))
         .expect("a free body is drawn");
     // The polygon as the plan was built: at its own μ_F.

@@ -9,12 +9,12 @@ use super::sheet::{self, Page, TitleBlock};
 use super::table::{self, number};
 use super::{centres, mechanism};
 use crate::kinematics::construction::Field;
-use crate::kinematics::construction::scale::{standard_above, standard_scale};
+use crate::kinematics::construction::scale::{Series, drawing_reduction};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use kurbo::{Point, Rect};
 
-/// The smallest standard μ, not below `lower`, at which `draw(μ)` fits
+/// The smallest μ of `series`, not below `lower`, at which `draw(μ)` fits
 /// `field` (w × h, mm), with its drawing; `None` when nothing up to a
 /// million times `lower` fits. A drawing at a smaller μ is larger (a
 /// drawing's size never shrinks with its scale but for its labels, which
@@ -22,12 +22,13 @@ use kurbo::{Point, Rect};
 /// one before it, the drawing overflowed, and standard values are at most
 /// ×2 apart, so it spans at least half the field one way.
 pub fn fill<T>(
+    series: Series,
     lower: f64,
     field: (f64, f64),
     mut draw: impl FnMut(f64) -> Option<T>,
     extent: impl Fn(&T) -> Rect,
 ) -> Option<(f64, T)> {
-    let mut mu = standard_scale(lower.max(1e-12), 1.0);
+    let mut mu = series.at_least(lower.max(1e-12));
     let top = mu * 1e6;
     while mu <= top {
         if let Some(t) = draw(mu)
@@ -35,7 +36,7 @@ pub fn fill<T>(
         {
             return Some((mu, t));
         }
-        mu = standard_above(mu);
+        mu = series.above(mu);
     }
     None
 }
@@ -221,8 +222,8 @@ pub fn reduction(b: Rect, opt: &DrawOptions) -> f64 {
         .min(f.height() / b.height())
         .min(1.0);
     if k < 1.0 {
-        // The largest "1:n" reduction with n from the standard values.
-        standard_scale(1.0 / k, 1.0)
+        // The smallest "1:n" reduction of ГОСТ 2.302 that brings it within.
+        drawing_reduction(1.0 / k)
     } else {
         1.0
     }

@@ -6,6 +6,7 @@
 //! its point; a table of forces, arms and moments beside it and under the
 //! figure the equation Σ M_p = 0 solved for the balancing value.
 
+use crate::kinematics::construction::scale::Series;
 use super::canvas::{Canvas, Class, FONT, Label, Line, SMALL};
 use super::table::{Ruled, number};
 use super::kind::SheetKind;
@@ -234,7 +235,9 @@ pub fn figure(an: &Analysis, l: &Lever, c: &mut Canvas, mu_f: f64, lang: Lang) {
 /// The caption: the scales, and Σ M_p = 0 solved with numbers.
 pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<String> {
     let w = words(lang);
-    let n = |x: f64| number(x, lang);
+    // Three significant digits, as the table: the arms are read on the
+    // lever to a tenth of a millimetre.
+    let n = |x: f64| number(super::pack::round3(x), lang);
     let u = |s: &str| unit(s, lang);
     let b = &w.balancing;
     let sum: f64 = l.forces.iter().map(|f| f.moment).sum();
@@ -300,7 +303,7 @@ pub(crate) fn caption(an: &Analysis, l: &Lever, mu_f: f64, lang: Lang) -> Vec<St
 /// The table beside the lever: every force, its magnitude, arm and
 /// moment about the pole (counter-clockwise positive), the balancing
 /// force last; three significant digits, as a course project's result
-/// table gives them (the caption's equation keeps four).
+/// table gives them (and the caption's equation).
 pub fn table(an: &Analysis, l: &Lever, lang: Lang) -> Ruled {
     use super::pack::round3;
     let w = words(lang);
@@ -378,7 +381,7 @@ pub(super) fn pending(
                 let f = figure(&l);
                 Some((l, f))
             };
-            match super::fill(lower, field, rebuild, |(_, (c, _))| c.bounds()) {
+            match super::fill(Series::Plans, lower, field, rebuild, |(_, (c, _))| c.bounds()) {
                 Some((_, x)) => x,
                 None => {
                     let f = figure(&first);
