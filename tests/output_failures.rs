@@ -527,6 +527,81 @@ fn a_run_stopped_during_its_renames_leaves_the_set_its_manifest_lists() {
     eprintln!("{caught} of 6 runs stopped by the signal");
 }
 
+/// A run killed outright (SIGKILL: no handler runs) during its renames
+/// leaves new sheets beside the old manifest; the next run into the folder
+/// finishes those renames from the dead run's journal before anything
+/// else, so that it removes the dead run's sheets it does not draw itself.
+/// Without the journal the third run below leaves the dead run's sheets
+/// that the first run did not draw (velocity_60 …) unlisted beside its own.
+#[test]
+fn a_run_killed_during_its_renames_is_finished_by_the_next() {
+    let dir = temp_dir("sigkill");
+    let old = scene_with(&dir, "old.json", "four_bar", 60, None);
+    let new = scene_with(&dir, "new.json", "four_bar", 300, Some(&["velocity"]));
+    let third = scene_with(&dir, "third.json", "four_bar", 10, Some(&["acceleration"]));
+    let out = dir.join("out");
+    let (mut killed, mut mixed) = (0, 0);
+    for trial in 0..6 {
+        let _ = std::fs::remove_dir_all(&out);
+        let draw = |scene: &str| {
+            Command::new(EXE)
+                .args(["draw", scene, "-o"])
+                .arg(&out)
+                .output()
+                .unwrap()
+        };
+        let o = draw(&old);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let mut child = Command::new(EXE)
+            .args(["draw", &new, "-o"])
+            .arg(&out)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // A sheet the old run did not draw renamed into place: the
+        // renames are under way.
+        let renamed = out.join("velocity_61.svg");
+        let start = std::time::Instant::now();
+        while !renamed.exists() && child.try_wait().unwrap().is_none() {
+            assert!(start.elapsed().as_secs() < 60);
+        }
+        let _ = child.kill();
+        let status = child.wait().unwrap();
+        if status.success() {
+            continue;
+        }
+        // Killed after its renames (its lock file left): nothing to finish.
+        let shown: Vec<String> = entries(&out)
+            .into_iter()
+            .filter(|e| !e.starts_with('.'))
+            .collect();
+        let staging = out.join(format!(".mechplan-staging-{}", child.id()));
+        if !staging.exists() {
+            assert_eq!(shown, manifest_files(&out), "trial {trial}");
+            continue;
+        }
+        killed += 1;
+        if shown != manifest_files(&out) {
+            mixed += 1;
+        }
+        let o = draw(&third);
+        assert!(o.status.success(), "trial {trial}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("finished the renames of 1 run(s) killed"),
+            "trial {trial}: {}",
+            stderr(&o)
+        );
+        assert_eq!(entries(&out), manifest_files(&out), "trial {trial}");
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("sheets.json")).unwrap())
+                .unwrap();
+        assert_eq!(v["sheets"].as_array().unwrap().len(), 10, "trial {trial}");
+    }
+    eprintln!("{killed} of 6 runs killed during their renames, {mixed} left a mixed folder");
+    assert!(mixed > 0, "no run was killed during its renames");
+}
+
 #[test]
 fn an_unwritable_folder_fails_before_the_sweep() {
     let dir = temp_dir("early");

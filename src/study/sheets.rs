@@ -151,8 +151,11 @@ impl SheetWriter {
                     self.lock = Some(FolderLock::acquire(dir)?);
                     self.before = listed(dir);
                 }
-                if let Some(note) = remove_interrupted(dir) {
-                    self.notes.push(note);
+                let (note, finished) = remove_interrupted(dir);
+                self.notes.extend(note);
+                if finished {
+                    // The folder as the interrupted run's manifest lists it.
+                    self.before = listed(dir);
                 }
                 let stale = remove_stale(dir);
                 if stale > 0 {
@@ -210,12 +213,29 @@ impl SheetWriter {
         // place, then the manifest last, then the sheets of the earlier
         // manifest this run does not draw are removed. A run killed
         // outright (SIGKILL) during the renames leaves the old manifest
-        // with new sheets beside it, which the next run replaces.
+        // with new sheets beside it until the next run into the folder,
+        // which finishes the renames from the journal before anything else.
+        let dir = &self.dir;
+        let is_written: HashSet<&PathBuf> = written.iter().collect();
+        // The earlier manifest's sheets this run does not draw (none for
+        // some sheets of a set: the others stay).
+        let outdated: Vec<String> = match self.partial {
+            true => Vec::new(),
+            false => std::mem::take(&mut self.before)
+                .into_iter()
+                .filter(|old| !is_written.contains(&dir.join(old)))
+                .collect(),
+        };
         let _commit = committing();
+        // The journal first: a run killed outright from here on is
+        // finished by the next run into the folder ([`remove_interrupted`]).
+        if let Some(staging) = &self.staging {
+            let moves: Vec<String> = staged.iter().map(|(t, _)| file_name(t)).collect();
+            write_journal(staging, &moves, &outdated)?;
+        }
         for (tmp, path) in &staged {
             std::fs::rename(tmp, path).map_err(|e| write_error(&path.display().to_string(), e))?;
         }
-        let dir = &self.dir;
         let mut notes = std::mem::take(&mut self.notes);
         if self.partial {
             return Ok(Written {
@@ -223,12 +243,11 @@ impl SheetWriter {
                 notes,
             });
         }
-        let is_written: HashSet<&PathBuf> = written.iter().collect();
-        let removed: Vec<String> = std::mem::take(&mut self.before)
+        let removed: Vec<String> = outdated
             .into_iter()
             .map(|old| dir.join(old))
-            .filter(|p| !is_written.contains(p) && p.is_file() && std::fs::remove_file(p).is_ok())
-            .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+            .filter(|p| p.is_file() && std::fs::remove_file(p).is_ok())
+            .map(|p| file_name(&p))
             .collect();
         if !removed.is_empty() {
             notes.push(format!(
@@ -277,18 +296,75 @@ impl Drop for SheetWriter {
 /// The name of a run's staging folder, before its process id.
 const STAGING: &str = ".mechplan-staging-";
 
-/// Remove the staging folders in `dir` of runs whose process is gone
-/// (killed before they finished or cleaned up): a note saying so, if any.
-/// Where the system does not list its processes (no /proc), they are
-/// left alone.
-fn remove_interrupted(dir: &Path) -> Option<String> {
-    let proc = Path::new("/proc");
-    if !proc.is_dir() {
-        return None;
+/// The journal in a staging folder, written before the first rename: the
+/// files to move into place, in order, and the earlier sheets to remove.
+const JOURNAL: &str = ".commit";
+
+/// A path's file name as text.
+fn file_name(p: &Path) -> String {
+    p.file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+/// Write the journal of a run's renames into its staging folder (whole or
+/// not at all: a temporary renamed).
+fn write_journal(staging: &Path, moves: &[String], remove: &[String]) -> Result<()> {
+    let text = serde_json::json!({ "moves": moves, "remove": remove }).to_string();
+    let (tmp, path) = (staging.join(".commit.tmp"), staging.join(JOURNAL));
+    std::fs::write(&tmp, text)
+        .and_then(|_| std::fs::rename(&tmp, &path))
+        .map_err(|e| write_error(&path.display().to_string(), e))
+}
+
+/// Finish the renames of an interrupted run from its journal: every file
+/// still in `staging` moved into `dir` in the journal's order (the
+/// manifest last), the earlier sheets it lists removed. The number of
+/// files moved; `None` when there is no readable journal (the run was
+/// killed before its renames: nothing of it is in place).
+fn finish_journal(dir: &Path, staging: &Path) -> Option<usize> {
+    let text = std::fs::read_to_string(staging.join(JOURNAL)).ok()?;
+    let v: serde_json::Value = serde_json::from_str(&text).ok()?;
+    // Plain names in the folder itself only, as a manifest's.
+    let plain = |f: &&str| !f.is_empty() && !f.contains(['/', '\\']) && *f != ".." && *f != ".";
+    let names = |key: &str| -> Vec<String> {
+        v[key]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(|x| x.as_str())
+            .filter(plain)
+            .map(str::to_string)
+            .collect()
+    };
+    let mut moved = 0;
+    for name in names("moves") {
+        let from = staging.join(&name);
+        if from.is_file() && std::fs::rename(&from, dir.join(&name)).is_ok() {
+            moved += 1;
+        }
     }
-    let mut files = 0;
-    let mut runs = 0;
-    for e in std::fs::read_dir(dir).ok()?.flatten() {
+    for name in names("remove") {
+        let p = dir.join(&name);
+        if p.is_file() {
+            let _ = std::fs::remove_file(p);
+        }
+    }
+    Some(moved)
+}
+
+/// Deal with the staging folders in `dir` of runs whose process is gone:
+/// one killed during its renames (a journal) is finished, one killed
+/// before them removed. A note saying so, if any, and whether a run was
+/// finished (the folder's manifest is then that run's). Where the system
+/// does not list its processes (no /proc), they are left alone.
+fn remove_interrupted(dir: &Path) -> (Option<String>, bool) {
+    let proc = Path::new("/proc");
+    let Some(entries) = proc.is_dir().then(|| std::fs::read_dir(dir).ok()).flatten() else {
+        return (None, false);
+    };
+    let (mut files, mut runs, mut finished, mut moved) = (0, 0, 0, 0);
+    for e in entries.flatten() {
         let name = e.file_name().to_string_lossy().into_owned();
         let Some(pid) = name.strip_prefix(STAGING) else {
             continue;
@@ -296,17 +372,29 @@ fn remove_interrupted(dir: &Path) -> Option<String> {
         if !pid.bytes().all(|b| b.is_ascii_digit()) || proc.join(pid).exists() {
             continue;
         }
-        files += std::fs::read_dir(e.path()).map_or(0, |d| d.count());
-        if std::fs::remove_dir_all(e.path()).is_ok() {
+        if let Some(n) = finish_journal(dir, &e.path()) {
+            finished += 1;
+            moved += n;
+        } else {
+            files += std::fs::read_dir(e.path()).map_or(0, |d| d.count());
             runs += 1;
         }
+        let _ = std::fs::remove_dir_all(e.path());
     }
-    (runs > 0).then(|| {
-        format!(
+    let mut notes = Vec::new();
+    if finished > 0 {
+        notes.push(format!(
+            "finished the renames of {finished} run(s) killed while putting their sheets into place in {} ({moved} file(s) moved)",
+            dir.display()
+        ));
+    }
+    if runs > 0 {
+        notes.push(format!(
             "removed {files} unfinished file(s) of {runs} interrupted run(s) in {}",
             dir.display()
-        )
-    })
+        ));
+    }
+    ((!notes.is_empty()).then(|| notes.join("; ")), finished > 0)
 }
 
 /// The manifest `text` of some sheets merged into the one at `path`: its
