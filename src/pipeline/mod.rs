@@ -9,7 +9,8 @@ mod rescaled;
 mod run;
 mod switches;
 
-pub use inputs::InputPositions;
+pub use inputs::{InputPosition, InputPositions};
+pub(crate) use inputs::count_step;
 
 pub use crate::kinematics::solve::{Analysis, Position};
 pub use crate::verification::crosscheck::CrossCheck;

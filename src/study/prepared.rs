@@ -6,7 +6,7 @@ use super::files;
 use crate::error::{Error, Result, in_file};
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
-use crate::model::scene::{Numbering, Scene};
+use crate::model::scene::{MAX_COUNT, MAX_POSITIONS, Numbering, Scene};
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
@@ -242,6 +242,7 @@ impl Study {
     /// drawn on. The study so prepared (its `scales_at` the course
     /// sheet's), and the positions.
     pub(super) fn solved_for_sheets(&self, req: &DrawRequest) -> Result<(Study, Vec<Solved>)> {
+        self.held()?;
         let opt = req.options(self.lang());
         let fitted = self.fitted(req);
         if !fitted.course_drawn(&opt) {
@@ -280,6 +281,7 @@ impl Study {
         an.drafting.field = drawing::plan_field(&opt);
 
         if self.course_drawn(&opt) {
+            self.held()?;
             let mut first = Vec::new();
             an.run_each_with(self.watcher.get(), |s| {
                 first.push(s);
@@ -371,9 +373,26 @@ impl Study {
         Lang::parse(&self.analysis.mech.scene.want.lang).unwrap_or(Lang::En)
     }
 
+    /// Refuses a sweep of more than [`MAX_POSITIONS`] positions where
+    /// every position is held at once (the sheets, the checks, the
+    /// server, [`Study::solve`]): `solve` writes each position as it is
+    /// solved and takes any count the scene may give ([`MAX_COUNT`]).
+    pub(super) fn held(&self) -> Result<()> {
+        let n = self.analysis.mech.scene.positions.count();
+        if n <= MAX_POSITIONS {
+            return Ok(());
+        }
+        Err(Error::scene(
+            "/positions/count",
+            format!(
+                "{n} positions: drawing, checking and serving hold every position at once and take at most {MAX_POSITIONS}; `mechplan solve` writes each position as it is solved (every format) and takes up to {MAX_COUNT}"
+            ),
+        ))
+    }
+
     /// How many positions the scene asks for.
     pub fn position_count(&self) -> Result<usize> {
-        Ok(self.analysis.input_values()?.len())
+        Ok(self.analysis.mech.scene.positions.count())
     }
 
     /// How this study numbers its positions in everything it writes and

@@ -460,6 +460,7 @@ impl Study {
 
     /// Every position solved, in order.
     pub(super) fn solved(&self) -> Result<Vec<Solved>> {
+        self.held()?;
         let mut out = Vec::new();
         self.each(|s| {
             out.push(s);
