@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
 use crate::kinematics::analytic::Coords;
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::inputs::{Found, in_line_extremes};
+use crate::kinematics::solve::inputs::{Found, count_step, in_line_extremes};
 use crate::model::scene::{MAX_INPUTS, PositionsSpec, Scene};
 use std::f64::consts::TAU;
 
@@ -95,12 +95,6 @@ impl InputPositions<'_> {
         };
         InputPosition { value, rounding }
     }
-}
-
-/// Step `k` of `count` equal steps of a revolution from the crank angle
-/// `start` in the sense `sense` (±1), in [0, 2π).
-pub(crate) fn count_step(start: f64, sense: f64, k: usize, count: usize) -> f64 {
-    (start + sense * TAU * k as f64 / count as f64).rem_euclid(TAU)
 }
 
 impl Analysis {

@@ -521,7 +521,7 @@ impl Analysis {
                 checks.changed,
             )?);
             solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
-            return Ok(solved);
+            return Ok(if self.lean { solved.lean() } else { solved });
         };
         let mut cs = cs.clone();
         let t1 = Clock::now();
@@ -554,7 +554,7 @@ impl Analysis {
         solved.check =
             Some(self.cross_check(&solved, &other, plans, costs, p.q_rounding, checks.changed)?);
         solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
-        Ok(solved)
+        Ok(if self.lean { solved.lean() } else { solved })
     }
 }
 

@@ -240,14 +240,22 @@ impl Study {
     /// finished again at them ([`Analysis::run_rescaled`]), so that the
     /// sheets, tables and handout state the μ of the sheet each plan is
     /// drawn on. The study so prepared (its `scales_at` the course
-    /// sheet's), and the positions.
-    pub(super) fn solved_for_sheets(&self, req: &DrawRequest) -> Result<(Study, Vec<Solved>)> {
+    /// sheet's), the positions, and whether they are held lean
+    /// ([`Solved::lean`]: where no sheet reads every position's plans —
+    /// no course sheet, no handout, no plan scale the scene fixes, whose
+    /// fit is judged over all positions).
+    pub(super) fn solved_for_sheets(
+        &self,
+        req: &DrawRequest,
+    ) -> Result<(Study, Vec<Solved>, bool)> {
         self.held()?;
         let opt = req.options(self.lang());
         let fitted = self.fitted(req);
         if !fitted.course_drawn(&opt) {
-            let solved = fitted.solved()?;
-            return Ok((fitted, solved));
+            let d = &fitted.analysis.drafting;
+            let lean = !req.html && d.mu_v.is_none() && d.mu_a.is_none();
+            let solved = fitted.solved_held(lean)?;
+            return Ok((fitted, solved, lean));
         }
         let mut an = (*fitted.analysis).clone();
         an.scales_at = Arc::default();
@@ -260,7 +268,7 @@ impl Study {
             analysis: Arc::new(an),
             watcher: self.watcher.clone(),
         };
-        Ok((study, solved))
+        Ok((study, solved, false))
     }
 
     /// The same study with its plans at the scales of the sheets `req`
@@ -440,14 +448,9 @@ impl Study {
         position_index(self.numbering(), number, count).map_err(|m| Error::scene(parameter, m))
     }
 
-    /// Each position as it is solved, in order, told to the watcher.
-    pub(super) fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        self.each_of(&self.analysis, f)
-    }
-
     /// Each position of `an` (this study's analysis, or a variant of it)
     /// as it is solved, in order, told to the watcher.
-    fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+    pub(super) fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
         an.run_each_with(self.watcher.get(), f)
     }
 

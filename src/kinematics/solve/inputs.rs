@@ -7,7 +7,6 @@ use crate::geom::{Pose, wrap_pi};
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::positions::{Configuration, PositionSolver, crank_frame, slide_pose};
 use crate::model::scene::{InputSpec, PositionsSpec};
-use crate::pipeline::count_step;
 use crate::model::structure::{AssurGroup, DyadKind, Joint};
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
@@ -212,6 +211,12 @@ impl Analysis {
             });
         Ok(Some((start, TAU / n as f64, stroke, hi - lo)))
     }
+}
+
+/// Step `k` of `count` equal steps of a revolution from the crank angle
+/// `start` in the sense `sense` (±1), in [0, 2π).
+pub(crate) fn count_step(start: f64, sense: f64, k: usize, count: usize) -> f64 {
+    (start + sense * TAU * k as f64 / count as f64).rem_euclid(TAU)
 }
 
 /// The extreme position that begins the working stroke of an output
