@@ -46,7 +46,7 @@ struct Steps {
 
 impl InputPositions<'_> {
     /// How many positions the scene asks for.
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         match (&self.steps, &self.scene.positions) {
             (Some(steps), _) => steps.count,
             (None, PositionsSpec::List(v)) => v.len(),
