@@ -72,11 +72,11 @@ fn decided_conditioning_decides_as_the_svd() {
         let Ok(inputs) = an.input_positions() else {
             continue;
         };
-        let qs: Vec<f64> = inputs.values.iter().map(|q| q.first()).collect();
+        let qs: Vec<f64> = inputs.iter().map(|p| p.value.first()).collect();
         if scene.several_inputs() {
             continue;
         }
-        let rounding: Vec<f64> = inputs.rounding.iter().map(|r| r.first()).collect();
+        let rounding: Vec<f64> = inputs.iter().map(|p| p.rounding.first()).collect();
         // Each position after the ones answered before it, as a user
         // reaches it.
         let mut accepted: Vec<usize> = Vec::new();

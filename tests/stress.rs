@@ -840,8 +840,8 @@ fn stress_catalogue_against_the_independent_reference() {
                 continue;
             }
         };
-        let qs: Vec<f64> = inputs.values.iter().map(|q| q.first()).collect();
-        let rounding: Vec<f64> = inputs.rounding.iter().map(|r| r.first()).collect();
+        let qs: Vec<f64> = inputs.iter().map(|p| p.value.first()).collect();
+        let rounding: Vec<f64> = inputs.iter().map(|p| p.rounding.first()).collect();
         let refs = refdoc["positions"].as_array().unwrap();
         assert_eq!(refs.len(), qs.len(), "{name}: positions");
         // `count`: mechplan's start within its own error bound of the

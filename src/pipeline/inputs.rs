@@ -10,32 +10,102 @@ use crate::error::{Error, Result};
 use crate::geom::{Pose, wrap_pi};
 use crate::kinematics::analytic::Coords;
 use crate::kinematics::positions::describe_input;
-use crate::kinematics::solve::inputs::{Found, in_line_extremes};
-use crate::model::scene::PositionsSpec;
+use crate::kinematics::solve::inputs::{Found, count_step, in_line_extremes};
+use crate::model::scene::{MAX_INPUTS, PositionsSpec, Scene};
 use std::f64::consts::TAU;
 
-/// The positions asked for: every input's coordinates (rad or m) and,
-/// position by position, a bound on each one's error.
-#[derive(Clone, Debug, PartialEq)]
-pub struct InputPositions {
-    pub values: Vec<Coords>,
-    pub rounding: Vec<Coords>,
+/// The positions asked for, made one at a time as a sweep reaches them
+/// (a sweep of a million positions keeps no list of them): every input's
+/// coordinates (rad or m) and, position by position, a bound on each
+/// one's error.
+#[derive(Clone, Debug)]
+pub struct InputPositions<'a> {
+    scene: &'a Scene,
+    /// `positions.count`'s steps; `None`: the values the scene lists.
+    steps: Option<Steps>,
+}
+
+/// One position asked for: every input's coordinates and how far each
+/// may be from the value the scene means.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InputPosition {
+    pub value: Coords,
+    pub rounding: Coords,
+}
+
+/// `positions.count`: equal steps of a revolution of the crank from the
+/// start of the working stroke, each with the start's error bound.
+#[derive(Clone, Copy, Debug)]
+struct Steps {
+    start: f64,
+    count: usize,
+    /// The sense of the crank's turning, ±1.
+    sense: f64,
+    rounding: f64,
+}
+
+impl InputPositions<'_> {
+    /// How many positions the scene asks for.
+    pub(crate) fn len(&self) -> usize {
+        match (&self.steps, &self.scene.positions) {
+            (Some(steps), _) => steps.count,
+            (None, PositionsSpec::List(v)) => v.len(),
+            (None, PositionsSpec::Values(v)) => v.len(),
+            (None, PositionsSpec::Single | PositionsSpec::Count { .. }) => 1,
+        }
+    }
+
+    /// Position `k` (from 0, in the sweep's order); `None` past the last.
+    pub fn get(&self, k: usize) -> Option<InputPosition> {
+        (k < self.len()).then(|| self.at(k))
+    }
+
+    /// Every position in order, each made as it is reached.
+    pub fn iter(&self) -> impl Iterator<Item = InputPosition> + '_ {
+        (0..self.len()).filter_map(|k| self.get(k))
+    }
+
+    /// Position `k`, which is one of the positions asked for.
+    fn at(&self, k: usize) -> InputPosition {
+        let sc = self.scene;
+        if let Some(s) = &self.steps {
+            return InputPosition {
+                value: Coords::one(count_step(s.start, s.sense, k, s.count)),
+                rounding: Coords::one(s.rounding),
+            };
+        }
+        let value = match &sc.positions {
+            PositionsSpec::List(v) => Coords::one(v[k]),
+            PositionsSpec::Values(v) => Coords::new(&v[k]),
+            PositionsSpec::Single | PositionsSpec::Count { .. } => {
+                // The inputs' own values, as the scene states them.
+                let mut own = [0.0; MAX_INPUTS];
+                for (x, i) in own.iter_mut().zip(sc.inputs()) {
+                    *x = i.coordinate();
+                }
+                Coords::new(&own[..sc.input_count()])
+            }
+        };
+        // The rounding of the values as the file writes them, where the
+        // reader recorded it; none for values made in the program.
+        let w = value.len();
+        let rounding = match sc.input_rounding.get(k * w..(k + 1) * w) {
+            Some(r) if sc.input_rounding.len() == self.len() * w => Coords::new(r),
+            _ => Coords::new(&[0.0; MAX_INPUTS][..w]),
+        };
+        InputPosition { value, rounding }
+    }
 }
 
 impl Analysis {
     /// The positions asked for with their error bounds
-    /// ([`InputPositions`]).
-    pub fn input_positions(&self) -> Result<InputPositions> {
+    /// ([`InputPositions`]): for `positions.count`, the start of the
+    /// working stroke and its error found here, the steps made as the
+    /// sweep reaches them.
+    pub fn input_positions(&self) -> Result<InputPositions<'_>> {
         let sc = &self.mech.scene;
         let PositionsSpec::Count { count, output } = sc.positions else {
-            let values = self.input_coords()?;
-            let w = sc.input_count();
-            let rounding = if sc.input_rounding.len() == values.len() * w {
-                sc.input_rounding.chunks(w).map(Coords::new).collect()
-            } else {
-                vec![Coords::new(&vec![0.0; w]); values.len()]
-            };
-            return Ok(InputPositions { values, rounding });
+            return Ok(InputPositions { scene: sc, steps: None });
         };
         let out = output.unwrap_or_else(|| self.default_output());
         let start = self.stroke_start(out)?;
@@ -46,10 +116,16 @@ impl Analysis {
             Found::Root => self.root_error(out, start.angle)?,
         };
         // With the rounding of the steps and of the reduction to a turn.
-        let r = Coords::one(error + 4.0 * f64::EPSILON * TAU);
-        let values = self.count_values(start.angle, count);
-        let rounding = vec![r; count];
-        Ok(InputPositions { values, rounding })
+        let steps = Steps {
+            start: start.angle,
+            count,
+            sense: sc.input.sense(),
+            rounding: error + 4.0 * f64::EPSILON * TAU,
+        };
+        Ok(InputPositions {
+            scene: sc,
+            steps: Some(steps),
+        })
     }
 
     /// The error of a start where crank and coupler lie in line: what the

@@ -4,12 +4,13 @@
 //! [`Position`] with its [`CrossCheck`] and, with the scene's `dynamics`,
 //! its force analysis; it reads as its position (`Deref`).
 
+mod held;
 mod inputs;
 mod rescaled;
 mod run;
 mod switches;
 
-pub use inputs::InputPositions;
+pub use inputs::{InputPosition, InputPositions};
 
 pub use crate::kinematics::solve::{Analysis, Position};
 pub use crate::verification::crosscheck::CrossCheck;

@@ -1,7 +1,7 @@
 //! Solving every position asked for: the positions found in order by both
 //! routes, then each one's rates, plans and cross-check.
 
-use super::{Analysis, InputPositions, Position, RUN_CHUNK, Solved};
+use super::{Analysis, InputPosition, InputPositions, Position, RUN_CHUNK, Solved};
 use crate::kinematics::solve::Motions;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
@@ -93,10 +93,7 @@ impl Analysis {
         mut f: impl FnMut(Solved) -> Result<()>,
         then: impl FnOnce(&mut dyn FnMut(&Analysis, usize) -> Result<Solved>) -> Result<()>,
     ) -> Result<()> {
-        let InputPositions {
-            values,
-            rounding: roundings,
-        } = self.input_positions()?;
+        let inputs: InputPositions = self.input_positions()?;
         let m = &self.mech;
         let mut ps = PositionSolver::new(m, &self.structure, self.need.clone())?;
         let route = self.route()?;
@@ -116,8 +113,8 @@ impl Analysis {
         // … and route (a)'s answers one continuous motion: closed forms of
         // class II groups (a class III group is tracked in small steps).
         let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
-        progress.start(values.len(), "positions");
-        let keep = keep(values.len());
+        progress.start(inputs.len(), "positions");
+        let keep = keep(inputs.len());
         let mut kept: Vec<Placed> = Vec::new();
         let checks = Checks {
             changed: &changed,
@@ -160,12 +157,12 @@ impl Analysis {
                 }
                 stop.map_or(Ok(()), Err)
             };
-            for (k, chunk) in values.chunks(RUN_CHUNK).enumerate() {
-                let from = k * RUN_CHUNK;
-                // How far each input value may be from the one meant.
-                let rounding = &roundings[from..from + chunk.len()];
+            // The input values made a chunk at a time, none kept.
+            let mut values = inputs.iter();
+            for from in (0..inputs.len()).step_by(RUN_CHUNK) {
+                let chunk: Vec<InputPosition> = values.by_ref().take(RUN_CHUNK).collect();
                 let route = (program, &mut state, &mut kernel);
-                let (placed, stop) = self.place_chunk((from, chunk), rounding, &mut ps, route, &mut cs);
+                let (placed, stop) = self.place_chunk((from, &chunk), &mut ps, route, &mut cs);
                 kept.extend(Placed::kept(&placed, &keep));
                 let checks = &checks;
                 let finish = move || {
@@ -231,20 +228,20 @@ impl Analysis {
     }
 
     /// The positions of one chunk of [`Analysis::run_each`] (the number
-    /// of its first position, its input values) found in order: route
+    /// of its first position, its input values with how far each may be
+    /// from the one meant) found in order: route
     /// (a)'s places (compiled where `program`, on its `state`), route
     /// (b)'s path run on, the kernel's plans; the first error stops the
     /// chunk and is returned with the positions before it.
     fn place_chunk<'a>(
         &'a self,
-        (from, values): (usize, &[Coords]),
-        rounding: &[Coords],
+        (from, values): (usize, &[InputPosition]),
         ps: &mut PositionSolver,
         (program, state, kernel): (Option<&Program<'a>>, &mut Option<State>, &mut Option<Kernel>),
         cs: &mut Option<ConstraintSolver<'a>>,
     ) -> (Vec<Placed<'a>>, Option<Error>) {
         let mut placed = Vec::with_capacity(values.len());
-        for (i, (&q, &q_rounding)) in values.iter().zip(rounding).enumerate() {
+        for (i, &InputPosition { value: q, rounding: q_rounding }) in values.iter().enumerate() {
             let t0 = Clock::now();
             let config = match (program, &mut *state) {
                 (Some(prog), Some(st)) => prog.positions_coords(st, q).map(|()| st.config.clone()),
@@ -524,7 +521,7 @@ impl Analysis {
                 checks.changed,
             )?);
             solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
-            return Ok(solved);
+            return Ok(if self.lean { solved.lean() } else { solved });
         };
         let mut cs = cs.clone();
         let t1 = Clock::now();
@@ -557,7 +554,7 @@ impl Analysis {
         solved.check =
             Some(self.cross_check(&solved, &other, plans, costs, p.q_rounding, checks.changed)?);
         solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
-        Ok(solved)
+        Ok(if self.lean { solved.lean() } else { solved })
     }
 }
 

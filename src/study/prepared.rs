@@ -6,7 +6,7 @@ use super::files;
 use crate::error::{Error, Result, in_file};
 use crate::kinematics::solve::Analysis;
 use crate::lang::Lang;
-use crate::model::scene::{Numbering, Scene};
+use crate::model::scene::{MAX_COUNT, MAX_POSITIONS, Numbering, Scene};
 use crate::pipeline::Solved;
 use crate::presentation::drawing::{self, DrawOptions, Format, SheetSize};
 use crate::presentation::report;
@@ -240,13 +240,22 @@ impl Study {
     /// finished again at them ([`Analysis::run_rescaled`]), so that the
     /// sheets, tables and handout state the μ of the sheet each plan is
     /// drawn on. The study so prepared (its `scales_at` the course
-    /// sheet's), and the positions.
-    pub(super) fn solved_for_sheets(&self, req: &DrawRequest) -> Result<(Study, Vec<Solved>)> {
+    /// sheet's), the positions, and whether they are held lean
+    /// ([`Solved::lean`]: where no sheet reads every position's plans —
+    /// no course sheet, no handout, no plan scale the scene fixes, whose
+    /// fit is judged over all positions).
+    pub(super) fn solved_for_sheets(
+        &self,
+        req: &DrawRequest,
+    ) -> Result<(Study, Vec<Solved>, bool)> {
+        self.held()?;
         let opt = req.options(self.lang());
         let fitted = self.fitted(req);
         if !fitted.course_drawn(&opt) {
-            let solved = fitted.solved()?;
-            return Ok((fitted, solved));
+            let d = &fitted.analysis.drafting;
+            let lean = !req.html && d.mu_v.is_none() && d.mu_a.is_none();
+            let solved = fitted.solved_held(lean)?;
+            return Ok((fitted, solved, lean));
         }
         let mut an = (*fitted.analysis).clone();
         an.scales_at = Arc::default();
@@ -259,7 +268,7 @@ impl Study {
             analysis: Arc::new(an),
             watcher: self.watcher.clone(),
         };
-        Ok((study, solved))
+        Ok((study, solved, false))
     }
 
     /// The same study with its plans at the scales of the sheets `req`
@@ -280,6 +289,7 @@ impl Study {
         an.drafting.field = drawing::plan_field(&opt);
 
         if self.course_drawn(&opt) {
+            self.held()?;
             let mut first = Vec::new();
             an.run_each_with(self.watcher.get(), |s| {
                 first.push(s);
@@ -371,9 +381,26 @@ impl Study {
         Lang::parse(&self.analysis.mech.scene.want.lang).unwrap_or(Lang::En)
     }
 
+    /// Refuses a sweep of more than [`MAX_POSITIONS`] positions where
+    /// every position is held at once (the sheets, the checks, the
+    /// server, [`Study::solve`]): `solve` writes each position as it is
+    /// solved and takes any count the scene may give ([`MAX_COUNT`]).
+    pub(super) fn held(&self) -> Result<()> {
+        let n = self.analysis.mech.scene.positions.count();
+        if n <= MAX_POSITIONS {
+            return Ok(());
+        }
+        Err(Error::scene(
+            "/positions/count",
+            format!(
+                "{n} positions: drawing, checking and serving hold every position at once and take at most {MAX_POSITIONS}; `mechplan solve` writes each position as it is solved (every format) and takes up to {MAX_COUNT}"
+            ),
+        ))
+    }
+
     /// How many positions the scene asks for.
     pub fn position_count(&self) -> Result<usize> {
-        Ok(self.analysis.input_values()?.len())
+        Ok(self.analysis.mech.scene.positions.count())
     }
 
     /// How this study numbers its positions in everything it writes and
@@ -421,14 +448,9 @@ impl Study {
         position_index(self.numbering(), number, count).map_err(|m| Error::scene(parameter, m))
     }
 
-    /// Each position as it is solved, in order, told to the watcher.
-    pub(super) fn each(&self, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
-        self.each_of(&self.analysis, f)
-    }
-
     /// Each position of `an` (this study's analysis, or a variant of it)
     /// as it is solved, in order, told to the watcher.
-    fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
+    pub(super) fn each_of(&self, an: &Analysis, f: impl FnMut(Solved) -> Result<()>) -> Result<()> {
         an.run_each_with(self.watcher.get(), f)
     }
 

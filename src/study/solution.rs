@@ -23,11 +23,28 @@ use std::thread::JoinHandle;
 pub struct Solution<'a> {
     study: &'a Study,
     positions: Vec<Solved>,
+    /// Whether the positions are held lean ([`Solved::lean`], for the
+    /// sheets only): each position's sheets build its plans again.
+    lean: bool,
 }
 
 impl<'a> Solution<'a> {
     pub(super) fn new(study: &'a Study, positions: Vec<Solved>) -> Solution<'a> {
-        Solution { study, positions }
+        Solution {
+            study,
+            positions,
+            lean: false,
+        }
+    }
+
+    /// The positions of `study` held lean ([`Solved::lean`]), to be drawn
+    /// ([`Solution::draw`]) and nothing else.
+    pub(super) fn lean(study: &'a Study, positions: Vec<Solved>) -> Solution<'a> {
+        Solution {
+            study,
+            positions,
+            lean: true,
+        }
     }
 
     /// The study solved.
@@ -160,7 +177,14 @@ impl<'a> Solution<'a> {
         // for the sheets drawn: presentation never solves.
         let needs = drawing::sheet_needs(an, solved, &opt, only.is_empty());
         let data = SheetData::solve(an, solved, needs)?;
-        drawing::sheets_on_each(an, solved, &data, &opt, (&sizes, &only), sink)
+        // A lean position's own sheets read its plans built again.
+        let again: drawing::Finish = &|k, held| {
+            let mut s = held.clone();
+            s.position.plans = an.plans_again(k, held)?;
+            Ok(Cow::Owned(s))
+        };
+        let finish = if self.lean { again } else { &drawing::as_held };
+        drawing::sheets_on_each(an, (solved, finish), &data, &opt, (&sizes, &only), sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written
@@ -460,8 +484,17 @@ impl Study {
 
     /// Every position solved, in order.
     pub(super) fn solved(&self) -> Result<Vec<Solved>> {
-        let mut out = Vec::new();
-        self.each(|s| {
+        self.solved_held(false)
+    }
+
+    /// [`Study::solved`], each position held `lean` ([`Solved::lean`],
+    /// made so as it is finished) where only the sheets will read it.
+    pub(super) fn solved_held(&self, lean: bool) -> Result<Vec<Solved>> {
+        self.held()?;
+        let mut an = (*self.analysis).clone();
+        an.lean = lean;
+        let mut out = Vec::with_capacity(an.mech.scene.positions.count());
+        self.each_of(&an, |s| {
             out.push(s);
             Ok(())
         })?;
@@ -475,8 +508,11 @@ impl Study {
         // A folder that cannot be written fails now, not after the sweep.
         files::check_writable(&req.dir, &req.dir)?;
         // The pipeline run once; the course sheet's scales chosen from it.
-        let (study, solved) = self.solved_for_sheets(req)?;
-        Solution::new(&study, solved).draw(req)
+        let (study, solved, lean) = self.solved_for_sheets(req)?;
+        match lean {
+            true => Solution::lean(&study, solved).draw(req),
+            false => Solution::new(&study, solved).draw(req),
+        }
     }
 
     /// Every position, solved as it is read (flat memory; see

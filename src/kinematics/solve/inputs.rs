@@ -15,6 +15,13 @@ impl Analysis {
     /// The first input's coordinates of the positions asked for (rad or
     /// m): with one input, the positions' input values.
     pub fn input_values(&self) -> Result<Vec<f64>> {
+        let sc = &self.mech.scene;
+        if let PositionsSpec::Count { count, output } = sc.positions {
+            // The steps themselves, not a list of every input's slots.
+            let out = output.unwrap_or_else(|| self.default_output());
+            let (start, sense) = (self.stroke_start(out)?.angle, sc.input.sense());
+            return Ok((0..count).map(|k| count_step(start, sense, k, count)).collect());
+        }
         Ok(self.input_coords()?.iter().map(|q| q.first()).collect())
     }
 
@@ -41,9 +48,9 @@ impl Analysis {
     /// The input values of `count` equal steps of a revolution from the
     /// crank angle `start`, in the sense of ω, each in [0, 2π).
     pub(crate) fn count_values(&self, start: f64, count: usize) -> Vec<Coords> {
-        let dir = self.mech.scene.input.sense();
+        let sense = self.mech.scene.input.sense();
         (0..count)
-            .map(|k| Coords::one((start + dir * TAU * k as f64 / count as f64).rem_euclid(TAU)))
+            .map(|k| Coords::one(count_step(start, sense, k, count)))
             .collect()
     }
 
@@ -204,6 +211,12 @@ impl Analysis {
             });
         Ok(Some((start, TAU / n as f64, stroke, hi - lo)))
     }
+}
+
+/// Step `k` of `count` equal steps of a revolution from the crank angle
+/// `start` in the sense `sense` (±1), in [0, 2π).
+pub(crate) fn count_step(start: f64, sense: f64, k: usize, count: usize) -> f64 {
+    (start + sense * TAU * k as f64 / count as f64).rem_euclid(TAU)
 }
 
 /// The extreme position that begins the working stroke of an output

@@ -51,6 +51,12 @@ pub struct Analysis {
     /// the SVD only where that bound falls below a threshold the check
     /// compares with, so every decision is the SVD's.
     pub printed_check: bool,
+    /// Whether each position is handed over lean
+    /// ([`crate::pipeline::Solved::lean`]: plans reduced to their rates,
+    /// no transfer functions), made so where it is finished: where only the
+    /// sheets read the positions held (`draw`), a chunk in flight is then
+    /// some 3 kB a position, not 20 to 35.
+    pub lean: bool,
     /// Where the result keeps no plans, build them by the sweep's
     /// construction kernel ([`crate::kinematics::construction::Kernel`],
     /// each plan first at the last position's scale), in the order of the
@@ -179,6 +185,7 @@ impl Analysis {
             plans,
             keep_plans: true,
             printed_check: true,
+            lean: false,
             #[cfg(feature = "internals")]
             sweep_kernel: false,
             #[cfg(feature = "internals")]

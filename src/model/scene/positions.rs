@@ -2,7 +2,7 @@
 //! revolution, or (several inputs) one list of values per position.
 
 use super::reader::Reader;
-use super::{InputSpec, LinkSpec, MAX_POSITIONS, PositionsSpec, U};
+use super::{InputSpec, LinkSpec, MAX_COUNT, MAX_POSITIONS, PositionsSpec, U};
 use serde_json::{Map, Value};
 
 impl Reader {
@@ -127,11 +127,11 @@ impl Reader {
         slider: bool,
     ) -> Option<PositionsSpec> {
         let count = match o["count"].as_u64() {
-            Some(c) if (1..=MAX_POSITIONS as u64).contains(&c) => c as usize,
+            Some(c) if (1..=MAX_COUNT as u64).contains(&c) => c as usize,
             _ => {
                 self.err(
                     "/positions/count",
-                    format!("expected a whole number from 1 to {MAX_POSITIONS}"),
+                    format!("expected a whole number from 1 to {MAX_COUNT}"),
                 );
                 return None;
             }

@@ -197,12 +197,7 @@ impl Reader {
         let positions = self.positions(top.get("positions"), &links, inputs.as_deref());
         let mut want = self.want(top.get("want"), &points);
         let sheet = self.sheet_info(top.get("sheet"));
-        let count = positions.as_ref().map(|p| match p {
-            PositionsSpec::Single => 1,
-            PositionsSpec::List(v) => v.len(),
-            PositionsSpec::Values(v) => v.len(),
-            PositionsSpec::Count { count, .. } => *count,
-        });
+        let count = positions.as_ref().map(PositionsSpec::count);
         if let (Some(w), Some(n), Some(at)) = (
             want.as_mut(),
             count,

@@ -129,6 +129,16 @@ pub enum PositionsSpec {
 }
 
 impl PositionsSpec {
+    /// How many positions are asked for.
+    pub fn count(&self) -> usize {
+        match self {
+            PositionsSpec::Single => 1,
+            PositionsSpec::List(v) => v.len(),
+            PositionsSpec::Values(v) => v.len(),
+            PositionsSpec::Count { count, .. } => *count,
+        }
+    }
+
     /// How the scene's positions are numbered: a `count` sweep from 0
     /// (position 0 is the extreme position that starts the working stroke,
     /// as the lecture numbers them), every other sweep (the input values
@@ -357,7 +367,17 @@ pub const MAX_POINTS: usize = 10_000;
 
 pub const MAX_LINKS: usize = 5_000;
 
+/// The most positions a list (`angles`, `s`, `values`) may give, and
+/// the most a command that holds every position at once (`draw`'s
+/// handout, `check`, `serve`, [`crate::Study::solve`]) takes.
 pub const MAX_POSITIONS: usize = 100_000;
+
+/// The most positions `positions.count` may ask for. A count's steps are
+/// made as the sweep reaches them and `solve` writes each position as it
+/// is solved, so memory does not bound it; this refuses only what no run
+/// would finish (a billion four-bar positions are some 40 minutes and
+/// 480 GB of CSV).
+pub const MAX_COUNT: usize = 1_000_000_000;
 
 /// Largest magnitude of any number: accelerations square velocities, so
 /// larger inputs would overflow to infinity.

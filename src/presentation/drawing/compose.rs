@@ -21,7 +21,18 @@ use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use crate::studies::sheet_data::{SheetData, SheetNeeds};
 use kurbo::Rect;
+use std::borrow::Cow;
 use std::collections::BTreeMap;
+
+/// A position as its own sheets read it, from the position held: itself,
+/// or where a long sweep is held lean ([`Solved::lean`]), with its plans
+/// built again by the caller (presentation never solves).
+pub type Finish<'f> = &'f dyn for<'s> Fn(usize, &'s Solved) -> Result<Cow<'s, Solved>>;
+
+/// Positions held whole: their sheets read them as they are.
+pub fn as_held(_: usize, s: &Solved) -> Result<Cow<'_, Solved>> {
+    Ok(Cow::Borrowed(s))
+}
 
 /// Whether the scene asks for drawing `d` (`want.drawings`; by default the
 /// plan of the mechanism and the plans wanted, plus the positions sheet
@@ -111,7 +122,7 @@ pub fn sheets_on(
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
     let mut sheets = Vec::new();
-    let size = sheets_on_each(an, solved, data, opt, (sizes, &[]), &mut |s| {
+    let size = sheets_on_each(an, (solved, &as_held), data, opt, (sizes, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -123,10 +134,11 @@ pub fn sheets_on(
 /// `only` (positions from 0, none: all), only those positions' sheets,
 /// drawn at the scales of the whole set and numbered as in it. `data`:
 /// what [`sheet_needs`] names, solved by the caller (presentation never
-/// solves); a sheet without its data is an internal error.
+/// solves); a sheet without its data is an internal error. `finish`:
+/// how a position held is read by its own sheets ([`Finish`]).
 pub fn sheets_on_each(
     an: &Analysis,
-    solved: &[Solved],
+    (solved, finish): (&[Solved], Finish),
     data: &SheetData,
     opt: &DrawOptions,
     (sizes, only): (&[SheetSize], &[usize]),
@@ -138,7 +150,7 @@ pub fn sheets_on_each(
             sheet: first,
             ..*opt
         };
-        compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
+        compose_each(an, (solved, finish), data, &opt, (Scale::Scene, only), sink)?;
         return Ok(first);
     };
     let t = match asked(an, solved, "positions") {
@@ -164,7 +176,7 @@ pub fn sheets_on_each(
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
+            compose_each(an, (solved, finish), data, &opt, (Scale::Scene, only), sink)?;
             return Ok(size);
         }
     }
@@ -264,7 +276,7 @@ fn compose(
     how: Scale,
 ) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
-    compose_each(an, solved, data, opt, (how, &[]), &mut |s| {
+    compose_each(an, (solved, &as_held), data, opt, (how, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -288,7 +300,7 @@ struct Shared {
 /// diagrams sheets are left out (counted in the numbering all the same).
 fn compose_each(
     an: &Analysis,
-    solved: &[Solved],
+    (solved, finish): (&[Solved], Finish),
     data: &SheetData,
     opt: &DrawOptions,
     (how, only): (Scale, &[usize]),
@@ -314,7 +326,7 @@ fn compose_each(
     // `None`), counted when the numbers are needed.
     let mut counts: BTreeMap<Option<usize>, usize> = BTreeMap::new();
     if opt.title_block {
-        figures(an, solved, opt, &shared, &|_| true, &mut |at, _| {
+        figures(an, (solved, finish), opt, &shared, &|_| true, &mut |at, _| {
             *counts.entry(at).or_default() += 1;
             Ok(())
         })?;
@@ -322,7 +334,7 @@ fn compose_each(
     let n: usize = counts.values().sum();
     let chosen = |at: Option<usize>| all || at.is_some_and(|k| only.contains(&k));
     let (mut last, mut within) = (None, 0);
-    figures(an, solved, opt, &shared, &chosen, &mut |at, p| {
+    figures(an, (solved, finish), opt, &shared, &chosen, &mut |at, p| {
         if last != Some(at) {
             (last, within) = (Some(at), 0);
         }
@@ -387,10 +399,10 @@ fn shared_scales(
 
 /// Every figure to render, in the order of the sheets, to `emit`: the
 /// positions sheet, then per position its plan of the mechanism and the
-/// rest of its sheets.
+/// rest of its sheets, each position as `finish` gives it.
 fn figures(
     an: &Analysis,
-    solved: &[Solved],
+    (solved, finish): (&[Solved], Finish),
     opt: &DrawOptions,
     shared: &Shared,
     chosen: &dyn Fn(Option<usize>) -> bool,
@@ -406,7 +418,8 @@ fn figures(
             c.clone(),
         ))?;
     }
-    for (k, s) in solved.iter().enumerate().filter(|(k, _)| chosen(Some(*k))) {
+    for (k, held) in solved.iter().enumerate().filter(|(k, _)| chosen(Some(*k))) {
+        let s = &*finish(k, held)?;
         let pos = position_text(an, s, k, opt.lang);
         if let Some((mu_l, centre_on)) = shared.mechanism {
             emit(Some(k), Pending {

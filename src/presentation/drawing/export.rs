@@ -26,40 +26,50 @@ pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default()
     };
-    let list: Vec<serde_json::Value> = sheets
-        .iter()
-        .zip(files)
-        .map(|(s, f)| {
-            // A kind of scale the sheet has once is a number; one its
-            // figures have at several values (the force panels' μ_l, the
-            // course sheet's μ_a of each acceleration plan), a list of them
-            // in the order of the figures.
-            let mut scales = serde_json::Map::new();
-            for (k, v) in &s.scales {
-                let all: Vec<f64> = s.scales.iter().filter(|x| x.0 == *k).map(|x| x.1).collect();
-                let one = all.iter().all(|x| x == v);
-                scales.entry(k.to_string()).or_insert_with(|| match one {
-                    true => serde_json::json!(v),
-                    false => serde_json::json!(all),
-                });
-            }
-            let mut sheet = serde_json::json!({
-                "file": name(f),
-                "title": s.title,
-                "size": format!("{:?}", s.size),
-                "scales": scales,
-            });
-            if let Some(k) = s.position {
-                sheet["position"] = serde_json::json!(k);
-            }
-            sheet
-        })
-        .collect();
-    let mut doc = serde_json::json!({ "mechplan": 1, "sheets": list });
-    if format == Format::Pdf {
-        doc["book"] = serde_json::json!(BOOK);
+    // Each sheet's entry made and printed on its own (a run of thousands
+    // of sheets holds their text, not a tree of them), indented into the
+    // document as the document printed whole is.
+    let mut text = String::from("{\n  \"mechplan\": 1,\n  \"sheets\": [");
+    let mut listed = 0;
+    for (s, f) in sheets.iter().zip(files) {
+        let entry = serde_json::to_string_pretty(&sheet_entry(s, &name(f))).unwrap_or_default();
+        text += if listed == 0 { "\n    " } else { ",\n    " };
+        text += &entry.replace('\n', "\n    ");
+        listed += 1;
     }
-    serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+    text += if listed == 0 { "]" } else { "\n  ]" };
+    if format == Format::Pdf {
+        text += &format!(",\n  \"book\": \"{BOOK}\"");
+    }
+    text + "\n}\n"
+}
+
+/// A sheet's entry in the manifest: its file, title, size, scales and
+/// position.
+fn sheet_entry(s: &Sheet, file: &str) -> serde_json::Value {
+    // A kind of scale the sheet has once is a number; one its figures
+    // have at several values (the force panels' μ_l, the course sheet's
+    // μ_a of each acceleration plan), a list of them in the order of the
+    // figures.
+    let mut scales = serde_json::Map::new();
+    for (k, v) in &s.scales {
+        let all: Vec<f64> = s.scales.iter().filter(|x| x.0 == *k).map(|x| x.1).collect();
+        let one = all.iter().all(|x| x == v);
+        scales.entry(k.to_string()).or_insert_with(|| match one {
+            true => serde_json::json!(v),
+            false => serde_json::json!(all),
+        });
+    }
+    let mut sheet = serde_json::json!({
+        "file": file,
+        "title": s.title,
+        "size": format!("{:?}", s.size),
+        "scales": scales,
+    });
+    if let Some(k) = s.position {
+        sheet["position"] = serde_json::json!(k);
+    }
+    sheet
 }
 
 /// Rendering with resvg and svg2pdf (the `render` feature).
