@@ -133,7 +133,7 @@ fn fast_check_decides_as_before() {
     let differ: Vec<String> = want
         .iter()
         .zip(&got)
-        .filter(|(w, g)| w != &g)
+        .filter(|(w, g)| **w != g.as_str())
         .map(|(w, g)| format!("was {w}\nnow {g}"))
         .collect();
     assert_eq!(
