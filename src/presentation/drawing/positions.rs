@@ -65,8 +65,11 @@ pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f6
     }
     // Every position in thin lines, position 0 (the start of the working
     // stroke, A₀) included, but the bold one: drawn once, in main lines.
+    // Of a long sweep only the numbered ones (some 24 round the crank):
+    // thousands of outlines over each other are a smear, not a drawing,
+    // and the sheet's size stays that of 24.
     for (k, s) in solved.iter().enumerate() {
-        if k != bold {
+        if k != bold && k % every == 0 {
             bodies(c, &s.config, Line::Thin);
         }
         // Number the positions as the sheet does (the lecture's 0 … 11 for
