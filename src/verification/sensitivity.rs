@@ -17,13 +17,16 @@ use crate::kinematics::analytic::{Coords, Drives, Motion, Order, contour};
 use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::{Analysis, Position};
 
+/// A unit run: inputs i (and j) at unit rate, with its motions.
+type Run<'a> = ((usize, Option<usize>), &'a [Option<Motion>]);
+
 /// The unit drives of the transfer functions a position keeps, in the
 /// order of [`Position::analogue`], [`Position::more_analogues`] and
 /// [`Position::mixed`]: input i at unit rate (and input j with it), the
 /// others standing; with each run's motions.
-fn transfer_runs(s: &Position) -> Vec<((usize, Option<usize>), &[Option<Motion>])> {
+fn transfer_runs(s: &Position) -> Vec<Run<'_>> {
     let w = s.drives.len();
-    let mut out: Vec<((usize, Option<usize>), &[Option<Motion>])> = Vec::new();
+    let mut out: Vec<Run<'_>> = Vec::new();
     if s.analogue.iter().all(Option::is_none) {
         return out;
     }
