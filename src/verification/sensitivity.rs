@@ -12,7 +12,7 @@
 //! there (issue 41: φ'' printed 2.6× beyond its bound before).
 
 use super::crosscheck::{ChangedData, DATA_PERTURBATION, Residuals};
-use crate::kinematics::analytic::constraint::{ConstraintSolver, Factors, Unknowns};
+use crate::kinematics::analytic::constraint::{Factors, Unknowns};
 use crate::kinematics::analytic::{Coords, Drives, Motion, Order, contour};
 use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::{Analysis, Position};
@@ -54,7 +54,8 @@ impl Analysis {
     /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
     /// moves it) at route (a)'s answer `u`, corrected by one step, and
     /// compared with the answer as the data check compares; the solves by
-    /// the scene's own factors `near` ([`ConstraintSolver::corrected_by`]).
+    /// the scene's own factors `near`; the transfer functions' runs at the
+    /// same corrected positions (`ConstraintSolver::corrected_runs_by`).
     /// `None` where a changed scene is refused or its Jacobian singular
     /// (the solve again decides).
     pub(super) fn linear_sensitivity(
@@ -68,6 +69,15 @@ impl Analysis {
     ) -> Option<(f64, f64)> {
         let units = DATA_PERTURBATION / f64::EPSILON;
         let rates = self.input_rates();
+        // The transfer functions' runs in route (b)'s unknowns, corrected
+        // at the same positions as the real rates.
+        let runs: Vec<(Unknowns, Vec<(f64, f64)>)> = transfer_runs(s)
+            .into_iter()
+            .map(|(ij, mine)| {
+                let u = eqs.base.unknowns(|l| s.config.pose(l), mine, self.order);
+                (u, unit_rates(s.drives.len(), ij))
+            })
+            .collect();
         let (mut worst, mut transfer) = (0.0f64, 0.0f64);
         for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
             let (Some(cs), Ok(an)) = (cs, an) else {
@@ -77,14 +87,15 @@ impl Analysis {
             for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
                 *x += sign * units * r;
             }
-            let c = cs.corrected_by(u, &x, &rates, near).ok()?;
+            let (c, moved) = cs.corrected_runs_by(u, &x, &rates, &runs, near).ok()?;
             let (d, _) = self.compare_with(s, &s.motion, &c.motion, &an.mech);
-            if d.is_nan() {
+            worst = worst.max(d);
+            for ((_, mine), other) in transfer_runs(s).into_iter().zip(&moved) {
+                transfer = transfer.max(self.compare_with(s, mine, other, &an.mech).0);
+            }
+            if worst.is_nan() || transfer.is_nan() {
                 return None;
             }
-            worst = worst.max(d);
-            let t = self.transfer_moved_linear(s, &eqs.base, cs, an, &x, near)?;
-            transfer = transfer.max(t);
         }
         Some((worst, transfer))
     }
@@ -113,32 +124,4 @@ impl Analysis {
         Ok(worst)
     }
 
-    /// As [`Analysis::transfer_moved`] to first order (the fast path):
-    /// route (b)'s equations of the changed scene `cs` at the transfer
-    /// functions' own unknowns, corrected by one step with the factors
-    /// `near`. `None` where the Jacobian is singular or a run not
-    /// comparable (the solve again decides).
-    pub(super) fn transfer_moved_linear(
-        &self,
-        s: &Position,
-        base: &ConstraintSolver,
-        cs: &ConstraintSolver,
-        an: &Analysis,
-        x: &Coords,
-        near: &Factors,
-    ) -> Option<f64> {
-        let mut worst = 0.0f64;
-        for (ij, mine) in transfer_runs(s) {
-            let u: Unknowns = base.unknowns(|l| s.config.pose(l), mine, self.order);
-            let c = cs
-                .corrected_by(&u, x, &unit_rates(s.drives.len(), ij), near)
-                .ok()?;
-            let (d, _) = self.compare_with(s, mine, &c.motion, &an.mech);
-            if d.is_nan() {
-                return None;
-            }
-            worst = worst.max(d);
-        }
-        Some(worst)
-    }
 }
