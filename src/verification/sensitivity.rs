@@ -9,7 +9,8 @@
 //! change cancel, the relative change of the real accelerations can be
 //! many times smaller than that of φ''. A `count` start near a toggle is
 //! such a place: its own error moves φ'' by φ'''·δq, and φ''' is large
-//! there (issue 41: φ'' printed 2.6× beyond its bound before).
+//! there (issue 41: the rod's φ'' printed 2.6× and 10.4× beyond its bound
+//! at starts 1e-9 and 1e-10 of the rod from a slider-crank's toggle).
 
 use super::crosscheck::{ChangedData, DATA_PERTURBATION, Residuals};
 use crate::kinematics::analytic::constraint::{Factors, Unknowns};
