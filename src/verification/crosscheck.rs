@@ -15,7 +15,7 @@ use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{
-    Conditioning, ConstraintSolver, Factors, Settings, Unknowns,
+    Conditioning, ConstraintSolver, Settings,
 };
 use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::construction::Plans;
@@ -43,8 +43,9 @@ pub struct CrossCheck {
     /// Wall time of the plans' construction, seconds (0 without plans).
     pub plan_time: f64,
     /// How far the answer moves when the scene's data change by a few
-    /// units of rounding, relative as `max_rel_diff` (`None` only before
-    /// it is measured).
+    /// units of rounding, relative as `max_rel_diff`: the larger of the
+    /// real rates' and the transfer functions' (`None` only before it is
+    /// measured).
     pub data_sensitivity: Option<f64>,
     /// The error bound of every reported number of each kind, in SI
     /// (`None` only before the data sensitivity is measured).
@@ -76,8 +77,8 @@ pub enum Method {
 /// ways ([`Analysis::changed_data`]; `None` where the changed scene is
 /// refused).
 pub(crate) struct Residuals<'a> {
-    base: ConstraintSolver<'a>,
-    changed: Vec<Option<ConstraintSolver<'a>>>,
+    pub(super) base: ConstraintSolver<'a>,
+    pub(super) changed: Vec<Option<ConstraintSolver<'a>>>,
     /// The orientation of the assembly the sketch shows
     /// ([`ConstraintSolver::sketch_orientation`]).
     pub sketch_orientation: Option<f64>,
@@ -93,7 +94,9 @@ pub(crate) struct Residuals<'a> {
 /// their accumulation through the groups), d the routes' disagreement (the
 /// part of their own arithmetic that κ misses near a dead point), σ the
 /// data sensitivity (the part the data's rounding decides, which both
-/// routes share); S the position's scale of that kind: the sketch's size
+/// routes share; for the transfer functions the larger of the real rates'
+/// and their own, `verification/sensitivity.rs`); S the position's scale of
+/// that kind: the sketch's size
 /// for places, the largest |v| or |ω|·size for velocities, the largest
 /// |a|, |ε|·size or ω²·size for accelerations, the same at unit input rate
 /// for the transfer functions. Angles, ω, ε and their transfer functions:
@@ -120,7 +123,7 @@ pub const MAX_REL_DIFF: f64 = ACCURACY.max_rel_diff;
 
 /// The change of the data for the sensitivity check: every length and
 /// sketch coordinate by this many units of rounding (relative).
-const DATA_PERTURBATION: f64 = ACCURACY.data_roundings * f64::EPSILON;
+pub(super) const DATA_PERTURBATION: f64 = ACCURACY.data_roundings * f64::EPSILON;
 
 /// The scene with its data changed by a few units of rounding, both ways
 /// ([`Analysis::changed_data`]).
@@ -182,7 +185,7 @@ impl Analysis {
             constraint_time: costs.constraint_time,
             conditioning: costs.conditioning,
             plan_time: costs.plan_time,
-            data_sensitivity: Some(sens),
+            data_sensitivity: Some(sens.0.max(sens.1)),
             bound: Some(bound),
             method: Method::Routes,
             orientation: None,
@@ -271,7 +274,7 @@ impl Analysis {
                 self.linear_sensitivity(s, &u, eqs, near, q_rounding, changed)
             })
             .flatten()
-            .filter(|&x| x <= ACCURACY.linear_data_sensitivity);
+            .filter(|&(x, t)| x.max(t) <= ACCURACY.linear_data_sensitivity);
         let sens = match linear {
             Some(x) => x,
             None => self
@@ -289,7 +292,7 @@ impl Analysis {
             constraint_time: t0.elapsed().as_secs_f64(),
             conditioning: c.conditioning,
             plan_time: 0.0,
-            data_sensitivity: Some(sens),
+            data_sensitivity: Some(sens.0.max(sens.1)),
             bound,
             method: Method::Residuals {
                 linear_data: linear.is_some(),
@@ -298,48 +301,17 @@ impl Analysis {
         })
     }
 
-    /// The data sensitivity to first order: route (b)'s equations of each
-    /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
-    /// moves it) at route (a)'s answer `u`, corrected by one step, and
-    /// compared with the answer as the data check compares; the solves by
-    /// the scene's own factors `near` ([`ConstraintSolver::corrected_by`]).
-    /// `None` where a changed scene is refused or its Jacobian singular
-    /// (the solve again decides).
-    fn linear_sensitivity(
-        &self,
-        s: &Position,
-        u: &Unknowns,
-        eqs: &Residuals,
-        near: &Factors,
-        q_rounding: Coords,
-        changed: &ChangedData,
-    ) -> Option<f64> {
-        let units = DATA_PERTURBATION / f64::EPSILON;
-        let rates = self.input_rates();
-        let mut worst = 0.0f64;
-        for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
-            let (Some(cs), Ok(an)) = (cs, an) else {
-                return None;
-            };
-            let mut x = s.drives.coords();
-            for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
-                *x += sign * units * r;
-            }
-            let c = cs.corrected_by(u, &x, &rates, near).ok()?;
-            let (d, _) = self.compare_with(s, &c.motion, &an.mech);
-            if d.is_nan() {
-                return None;
-            }
-            worst = worst.max(d);
-        }
-        Some(worst)
-    }
-
     /// The bounds of a solved position ([`Bounds`]).
-    fn bounds(&self, s: &Position, conditioning: f64, diff: f64, sens: f64) -> Bounds {
+    /// `sens`: the data sensitivity of the real rates (and places), and
+    /// of the transfer functions, each bounding its own kinds.
+    fn bounds(&self, s: &Position, conditioning: f64, diff: f64, sens: (f64, f64)) -> Bounds {
         let m = &self.mech;
         let size = m.size;
-        let rel = BOUND_ROUNDINGS * f64::EPSILON / conditioning + 4.0 * diff + 4.0 * sens;
+        let arithmetic = BOUND_ROUNDINGS * f64::EPSILON / conditioning + 4.0 * diff;
+        let rel = arithmetic + 4.0 * sens.0;
+        // The transfer functions: their own data check (places and real
+        // rates do not bound them where ε1 outweighs ω1², transfer.rs).
+        let rel_q = arithmetic + 4.0 * sens.0.max(sens.1);
         // The scale of one kind: the points' magnitudes and the links'
         // rates × size (and ω²·size for accelerations).
         let scale = |mo: &[Option<Motion>], acc: bool| -> f64 {
@@ -378,13 +350,13 @@ impl Analysis {
             p: rel * size,
             v: rel * sv,
             a: rel * sa,
-            v_q: rel * sq,
-            a_q: rel * sqq,
+            v_q: rel_q * sq,
+            a_q: rel_q * sqq,
             angle: rel,
             omega: rel * sv / size,
             epsilon: rel * sa / size,
-            phi_q: rel * sq / size,
-            phi_qq: rel * sqq / size,
+            phi_q: rel_q * sq / size,
+            phi_qq: rel_q * sqq / size,
         }
     }
 
@@ -451,10 +423,11 @@ impl Analysis {
         s: &Position,
         q_rounding: Coords,
         changed: &ChangedData,
-    ) -> std::result::Result<f64, String> {
+    ) -> std::result::Result<(f64, f64), String> {
         let order = self.order.unwrap_or(Order::Velocity);
         let units = DATA_PERTURBATION / f64::EPSILON;
         let mut worst = (0.0f64, Worst::default());
+        let mut transfer = 0.0f64;
         for (an, sign) in changed.iter().zip([1.0, -1.0]) {
             // The input moves with the data, by as many units of its own
             // rounding (exact reductions leave an ulp of the angle).
@@ -473,18 +446,22 @@ impl Analysis {
                     let mut ps = PositionSolver::new(&an.mech, &an.structure, an.need.clone())
                         .map_err(|e| e.to_string())?;
                     let c = ps.solve_coords(q).map_err(|e| e.to_string())?;
-                    contour::solve(&an.mech, &an.structure, &an.need, &c, drives, order)
-                    .map(|mo| (an, mo))
-                    .map_err(|e| e.to_string())
+                    let mo = contour::solve(&an.mech, &an.structure, &an.need, &c, drives, order)
+                        .map_err(|e| e.to_string())?;
+                    let moved = self.transfer_moved(s, an, &c, drives, order)?;
+                    Ok((an, mo, moved))
                 })
                 .map_err(|e| {
                     format!(
                         "the position is within rounding of a dead point: with the data changed by {units} units of rounding the mechanism has no answer here ({e})"
                     )
                 })?;
-            let (d, what) = self.compare_with(s, &moved.1, &moved.0.mech);
+            let (d, what) = self.compare_with(s, &s.motion, &moved.1, &moved.0.mech);
             if d > worst.0 || d.is_nan() {
                 worst = (d, what);
+            }
+            if moved.2 > transfer || moved.2.is_nan() {
+                transfer = moved.2;
             }
         }
         if worst.0.is_nan() || worst.0 > MAX_REL_DIFF {
@@ -493,7 +470,12 @@ impl Analysis {
                 worst.1, worst.0
             ));
         }
-        Ok(worst.0)
+        if transfer.is_nan() || transfer > MAX_REL_DIFF {
+            return Err(format!(
+                "the answer is decided by the rounding of the data: a change of {units} units of rounding in the data moves the transfer functions by {transfer:.2e} (relative); the position is too close to a dead point"
+            ));
+        }
+        Ok((worst.0, transfer))
     }
 
     /// Largest relative difference between the plans (measured values × μ)
@@ -563,15 +545,17 @@ impl Analysis {
 
     /// Largest relative difference between route (a) and route (b).
     fn compare(&self, s: &Position, other: &[Option<Motion>]) -> (f64, Worst) {
-        self.compare_with(s, other, &self.mech)
+        self.compare_with(s, &s.motion, other, &self.mech)
     }
 
     /// As [`Analysis::compare`], the other motions belonging to mechanism
     /// `om` (the same links and points, its own shapes: a scene with its
-    /// data changed).
-    fn compare_with(
+    /// data changed); `mine` the motions of `s` compared (its real rates,
+    /// or one run of its transfer functions).
+    pub(super) fn compare_with(
         &self,
         s: &Position,
+        mine: &[Option<Motion>],
         other: &[Option<Motion>],
         om: &Mechanism,
     ) -> (f64, Worst) {
@@ -612,12 +596,12 @@ impl Analysis {
         };
         let (mut sv, mut sa) = (f64::MIN_POSITIVE, f64::MIN_POSITIVE);
         for (p, l) in pts() {
-            let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
+            let (va, aa) = a_of(mine, l, s.config.point(m, l, p));
             sv = sv.max(va.hypot());
             sa = sa.max(aa.hypot());
         }
         for l in links() {
-            let ma = s.motion[l].unwrap();
+            let ma = mine[l].unwrap();
             sv = sv.max(ma.omega.abs() * m.size);
             sa = sa.max(ma.epsilon.abs() * m.size);
         }
@@ -625,7 +609,7 @@ impl Analysis {
         // first): v, ω, then a, ε.
         let mut da = Vec::new();
         for (p, l) in pts() {
-            let (va, aa) = a_of(&s.motion, l, s.config.point(m, l, p));
+            let (va, aa) = a_of(mine, l, s.config.point(m, l, p));
             let (vb, ab) = a_of(other, l, place_b(p, l));
             note((va - vb).hypot() / sv, Quantity::Velocity, Item::Point(p));
             if acc {
@@ -633,7 +617,7 @@ impl Analysis {
             }
         }
         for l in links() {
-            let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
+            let (ma, mb) = (mine[l].unwrap(), other[l].unwrap());
             note((ma.omega - mb.omega).abs() * m.size / sv, Quantity::Omega, Item::Link(l));
         }
         if acc {
@@ -641,7 +625,7 @@ impl Analysis {
                 note(d, Quantity::Acceleration, Item::Point(p));
             }
             for l in links() {
-                let (ma, mb) = (s.motion[l].unwrap(), other[l].unwrap());
+                let (ma, mb) = (mine[l].unwrap(), other[l].unwrap());
                 let d = (ma.epsilon - mb.epsilon).abs() * m.size / sa;
                 note(d, Quantity::Epsilon, Item::Link(l));
             }

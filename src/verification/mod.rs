@@ -8,4 +8,5 @@
 pub mod crosscheck;
 pub mod precision;
 pub mod reference;
+mod sensitivity;
 pub mod worst;

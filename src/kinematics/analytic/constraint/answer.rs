@@ -108,38 +108,59 @@ impl ConstraintSolver<'_> {
     /// roundings of the data, times κ) enters only the correction of a
     /// residual itself of that size — second order, far below what the
     /// data check compares.
-    pub fn corrected_by(
+    pub fn corrected_runs_by(
         &self,
         u: &Unknowns,
         x: &[f64],
         rates: &[(f64, f64)],
+        runs: &[(Unknowns, Vec<(f64, f64)>)],
         near: &Factors,
-    ) -> std::result::Result<Corrected, String> {
+    ) -> std::result::Result<(Corrected, Vec<Motions>), String> {
         let singular = || "the constraint Jacobian is singular".to_string();
         let q = &u.q - near.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
         let j = self.jacobian(&q);
+        let motion = self.rates_by(&q, &j, u, rates, near)?;
+        let runs = runs
+            .iter()
+            .map(|(u, rates)| self.rates_by(&q, &j, u, rates, near))
+            .collect::<std::result::Result<Vec<_>, _>>()?;
+        let corrected = Corrected {
+            motion,
+            conditioning: f64::NAN,
+            orientation: f64::NAN,
+            factors: None,
+        };
+        Ok((corrected, runs))
+    }
+
+    /// The rates of `u` corrected at the positions `q` (Jacobian `j`) by
+    /// the factors `near`, with each input's (rate, rate of rate).
+    fn rates_by(
+        &self,
+        q: &DVector<f64>,
+        j: &nalgebra::DMatrix<f64>,
+        u: &Unknowns,
+        rates: &[(f64, f64)],
+        near: &Factors,
+    ) -> std::result::Result<Vec<Option<Motion>>, String> {
+        let singular = || "the constraint Jacobian is singular".to_string();
         let mut b = DVector::zeros(self.rows());
         for &(i, row) in &self.driver_rows {
             b[row] = rates[i].0;
         }
         let qd = match &u.qd {
-            Some(qd) => Some(qd - near.solve(&(&j * qd - b)).ok_or_else(singular)?),
+            Some(qd) => Some(qd - near.solve(&(j * qd - b)).ok_or_else(singular)?),
             None => None,
         };
         let qdd = match (&u.qdd, &qd) {
             (Some(qdd), Some(qd_new)) => {
                 let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                let g = self.gamma(&q, qd_new, &acc);
-                Some(qdd - near.solve(&(&j * qdd - g)).ok_or_else(singular)?)
+                let g = self.gamma(q, qd_new, &acc);
+                Some(qdd - near.solve(&(j * qdd - g)).ok_or_else(singular)?)
             }
             _ => None,
         };
-        Ok(Corrected {
-            motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
-            conditioning: f64::NAN,
-            orientation: f64::NAN,
-            factors: None,
-        })
+        Ok(self.motions(q, qd.as_ref(), qdd.as_ref()))
     }
 }
 
@@ -156,6 +177,9 @@ impl ConstraintSolver<'_> {
         (self.scaled_conditioning(&j), bound, j.ncols())
     }
 }
+
+/// Every solved link's motion (`None` for the others).
+pub type Motions = Vec<Option<Motion>>;
 
 /// The LU factors of a constraint Jacobian.
 pub type Factors = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
@@ -194,6 +218,6 @@ pub struct Corrected {
     /// changes only through a singular position.
     pub orientation: f64,
     /// The LU factors of Φ_q at the answer's positions (without
-    /// `relinearize`): for [`ConstraintSolver::corrected_by`].
+    /// `relinearize`): for [`ConstraintSolver::corrected_runs_by`].
     pub factors: Option<Factors>,
 }

@@ -1,0 +1,128 @@
+//! The data check to first order (the fast path's), and the data check of
+//! the transfer functions (φ', φ'', v_q, a_q): how far
+//! the scene's data changed by a few units of rounding (the input moved by
+//! as many units of its own rounding) move them, measured on the transfer
+//! functions themselves.
+//!
+//! The real rates do not stand in for them: ε_n = ω1²·φ''_n + ε1·φ'_n, and
+//! where ε1 outweighs ω1² (a slow crank, a start) or the two terms of a
+//! change cancel, the relative change of the real accelerations can be
+//! many times smaller than that of φ''. A `count` start near a toggle is
+//! such a place: its own error moves φ'' by φ'''·δq, and φ''' is large
+//! there (issue 41: the rod's φ'' printed 2.6× and 10.4× beyond its bound
+//! at starts 1e-9 and 1e-10 of the rod from a slider-crank's toggle).
+
+use super::crosscheck::{ChangedData, DATA_PERTURBATION, Residuals};
+use crate::kinematics::analytic::constraint::{Factors, Unknowns};
+use crate::kinematics::analytic::{Coords, Drives, Motion, Order, contour};
+use crate::kinematics::positions::Configuration;
+use crate::kinematics::solve::{Analysis, Position};
+
+/// A unit run: inputs i (and j) at unit rate, with its motions.
+type Run<'a> = ((usize, Option<usize>), &'a [Option<Motion>]);
+
+/// The unit drives of the transfer functions a position keeps, in the
+/// order of [`Position::analogue`], [`Position::more_analogues`] and
+/// [`Position::mixed`]: input i at unit rate (and input j with it), the
+/// others standing; with each run's motions.
+fn transfer_runs(s: &Position) -> Vec<Run<'_>> {
+    let w = s.drives.len();
+    let mut out: Vec<Run<'_>> = Vec::new();
+    if s.analogue.iter().all(Option::is_none) {
+        return out;
+    }
+    out.push(((0, None), &s.analogue));
+    for (i, mo) in s.more_analogues.iter().enumerate() {
+        out.push(((i + 1, None), mo));
+    }
+    let pairs = (0..w).flat_map(|i| (i + 1..w).map(move |j| (i, Some(j))));
+    for (ij, mo) in pairs.zip(&s.mixed) {
+        out.push((ij, mo));
+    }
+    out
+}
+
+/// The input rates of a unit run: (1, 0) for inputs i and j, (0, 0) for
+/// the others.
+fn unit_rates(n: usize, (i, j): (usize, Option<usize>)) -> Vec<(f64, f64)> {
+    (0..n)
+        .map(|k| (if k == i || Some(k) == j { 1.0 } else { 0.0 }, 0.0))
+        .collect()
+}
+
+impl Analysis {
+    /// The data sensitivity to first order: route (b)'s equations of each
+    /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
+    /// moves it) at route (a)'s answer `u`, corrected by one step, and
+    /// compared with the answer as the data check compares; the solves by
+    /// the scene's own factors `near`; the transfer functions' runs at the
+    /// same corrected positions (`ConstraintSolver::corrected_runs_by`).
+    /// `None` where a changed scene is refused or its Jacobian singular
+    /// (the solve again decides).
+    pub(super) fn linear_sensitivity(
+        &self,
+        s: &Position,
+        u: &Unknowns,
+        eqs: &Residuals,
+        near: &Factors,
+        q_rounding: Coords,
+        changed: &ChangedData,
+    ) -> Option<(f64, f64)> {
+        let units = DATA_PERTURBATION / f64::EPSILON;
+        let rates = self.input_rates();
+        // The transfer functions' runs in route (b)'s unknowns, corrected
+        // at the same positions as the real rates.
+        let runs: Vec<(Unknowns, Vec<(f64, f64)>)> = transfer_runs(s)
+            .into_iter()
+            .map(|(ij, mine)| {
+                let u = eqs.base.unknowns(|l| s.config.pose(l), mine, self.order);
+                (u, unit_rates(s.drives.len(), ij))
+            })
+            .collect();
+        let (mut worst, mut transfer) = (0.0f64, 0.0f64);
+        for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
+            let (Some(cs), Ok(an)) = (cs, an) else {
+                return None;
+            };
+            let mut x = s.drives.coords();
+            for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
+                *x += sign * units * r;
+            }
+            let (c, moved) = cs.corrected_runs_by(u, &x, &rates, &runs, near).ok()?;
+            let (d, _) = self.compare_with(s, &s.motion, &c.motion, &an.mech);
+            worst = worst.max(d);
+            for ((_, mine), other) in transfer_runs(s).into_iter().zip(&moved) {
+                transfer = transfer.max(self.compare_with(s, mine, other, &an.mech).0);
+            }
+            if worst.is_nan() || transfer.is_nan() {
+                return None;
+            }
+        }
+        Some((worst, transfer))
+    }
+
+    /// The largest relative change of the transfer functions of `s` on
+    /// the changed scene `an` placed at `c` (route (a) solved again with
+    /// unit drives), each run against its own scale as the cross-check
+    /// compares the real rates.
+    pub(super) fn transfer_moved(
+        &self,
+        s: &Position,
+        an: &Analysis,
+        c: &Configuration,
+        drives: Drives,
+        order: Order,
+    ) -> std::result::Result<f64, String> {
+        let mut worst = 0.0f64;
+        for ((i, j), mine) in transfer_runs(s) {
+            let other = contour::solve(&an.mech, &an.structure, &an.need, c, drives.unit(i, j), order)
+                .map_err(|e| e.to_string())?;
+            let (d, _) = self.compare_with(s, mine, &other, &an.mech);
+            if d > worst || d.is_nan() {
+                worst = d;
+            }
+        }
+        Ok(worst)
+    }
+
+}
