@@ -217,5 +217,12 @@ fn drawing_refuses_a_count_beyond_what_it_holds() {
         "{e}"
     );
     assert!(!sheets.join("sheets.json").exists());
+    // The work-precision report holds them all too (and their references).
+    let o = Command::new(EXE)
+        .args(["precision", &scene.display().to_string()])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("/positions/count"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -602,6 +602,37 @@ fn a_run_killed_during_its_renames_is_finished_by_the_next() {
     assert!(mixed > 0, "no run was killed during its renames");
 }
 
+/// A staging folder left by an earlier run is removed by the next run
+/// into the folder whatever its process id: the folder's lock says no live
+/// run is writing there. In a container every run may be process 1 (here:
+/// a live process's id, which the liveness test of before kept for ever).
+#[test]
+fn a_staging_folder_of_a_reused_process_id_is_cleared() {
+    let dir = temp_dir("reused-pid");
+    let scene = scene_with(&dir, "s.json", "four_bar", 12, None);
+    let out = dir.join("out");
+    let draw = || {
+        Command::new(EXE)
+            .args(["draw", &scene, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    assert!(draw().status.success());
+    let stale = out.join(".mechplan-staging-1");
+    std::fs::create_dir_all(&stale).unwrap();
+    std::fs::write(stale.join("velocity_0.svg"), "half a sheet").unwrap();
+    let o = draw();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("removed 1 unfinished file(s) of 1 interrupted run(s)"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!stale.exists());
+    assert_eq!(entries(&out), manifest_files(&out));
+}
+
 #[test]
 fn an_unwritable_folder_fails_before_the_sweep() {
     let dir = temp_dir("early");

@@ -60,7 +60,8 @@ pub fn write_sheets(sheets: &[Sheet], dir: &Path, format: Format, dpi: f64) -> R
 /// manifest and moves everything into place; a failure, or a writer
 /// dropped unfinished, removes the staging folder. A run killed before
 /// either leaves its staging folder behind: the next run into the folder
-/// removes it (when that process is gone) and says so. Nothing touches
+/// (holding its lock, so that no staging folder there is a live run's)
+/// removes it, or finishes its renames from its journal, and says so. Nothing touches
 /// the folder before the first sheet (a refused scene creates nothing).
 /// Then the sheets an earlier run listed in the manifest and this one did
 /// not write are removed, each named in a note.
@@ -353,14 +354,15 @@ fn finish_journal(dir: &Path, staging: &Path) -> Option<usize> {
     Some(moved)
 }
 
-/// Deal with the staging folders in `dir` of runs whose process is gone:
-/// one killed during its renames (a journal) is finished, one killed
-/// before them removed. A note saying so, if any, and whether a run was
-/// finished (the folder's manifest is then that run's). Where the system
-/// does not list its processes (no /proc), they are left alone.
+/// Deal with the staging folders in `dir` of earlier runs: one killed
+/// during its renames (a journal) is finished, one killed before them
+/// removed. Called with the folder's lock held, so that no staging folder
+/// in it belongs to a live run, whatever its process id (a container's
+/// runs are often all process 1, and ids are reused). A note saying so,
+/// if any, and whether a run was finished (the folder's manifest is then
+/// that run's).
 fn remove_interrupted(dir: &Path) -> (Option<String>, bool) {
-    let proc = Path::new("/proc");
-    let Some(entries) = proc.is_dir().then(|| std::fs::read_dir(dir).ok()).flatten() else {
+    let Ok(entries) = std::fs::read_dir(dir) else {
         return (None, false);
     };
     let (mut files, mut runs, mut finished, mut moved) = (0, 0, 0, 0);
@@ -369,7 +371,7 @@ fn remove_interrupted(dir: &Path) -> (Option<String>, bool) {
         let Some(pid) = name.strip_prefix(STAGING) else {
             continue;
         };
-        if !pid.bytes().all(|b| b.is_ascii_digit()) || proc.join(pid).exists() {
+        if !pid.bytes().all(|b| b.is_ascii_digit()) || !e.path().is_dir() {
             continue;
         }
         if let Some(n) = finish_journal(dir, &e.path()) {

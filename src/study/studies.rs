@@ -627,6 +627,8 @@ impl Diagram<'_> {
 pub struct PrecisionReport(precision::Report);
 
 pub(super) fn precision(study: &Study, settings: &precision::Settings) -> Result<PrecisionReport> {
+    // The report holds every position's values and references at once.
+    study.held()?;
     if !(settings.min_time.is_finite() && settings.min_time > 0.0) {
         return Err(Error::scene(
             "min-time",

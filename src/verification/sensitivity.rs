@@ -89,13 +89,19 @@ impl Analysis {
                 *x += sign * units * r;
             }
             let (c, moved) = cs.corrected_runs_by(u, &x, &rates, &runs, near).ok()?;
+            // A NaN is no sensitivity (f64::max would drop it): refused,
+            // so that the position falls back to the full solve.
             let (d, _) = self.compare_with(s, &s.motion, &c.motion, &an.mech);
+            if d.is_nan() {
+                return None;
+            }
             worst = worst.max(d);
             for ((_, mine), other) in transfer_runs(s).into_iter().zip(&moved) {
-                transfer = transfer.max(self.compare_with(s, mine, other, &an.mech).0);
-            }
-            if worst.is_nan() || transfer.is_nan() {
-                return None;
+                let t = self.compare_with(s, mine, other, &an.mech).0;
+                if t.is_nan() {
+                    return None;
+                }
+                transfer = transfer.max(t);
             }
         }
         Some((worst, transfer))

@@ -31,6 +31,9 @@ impl Series {
     /// The smallest value of the series not below `target` (real value
     /// per mm), `target` finite and above zero.
     pub fn at_least(self, target: f64) -> f64 {
+        // Within the decades any drawing reaches (a NaN as 1): the
+        // searches below then end in a few dozen steps.
+        let target = if target.is_nan() { 1.0 } else { target.clamp(1e-15, 1e15) };
         match self {
             Series::Plans => standard_of_ratio(target),
             Series::Drawing => drawing_of_ratio(target),
@@ -67,9 +70,10 @@ fn drawing_of_ratio(target: f64) -> f64 {
     let n = target * 1e3;
     let smallest = DRAWING_N[0];
     if n < smallest * (1.0 - 1e-12) {
-        // (100·k):1 with the largest k not too large: n = 1/(100·k).
-        let k = (1.0 / (100.0 * n) * (1.0 + 1e-12)).floor().max(1.0);
-        return round_sig(1e-3 / (100.0 * k));
+        // The standard's (100·k):1, k from the plans' row (1, 2, 2.5, 4,
+        // 5 × 10^j, so that the next scale is at most ×2 away, not k/(k−1)):
+        // the largest k with n = 1/(100·k) not below the target.
+        return round_sig(1e-5 / standard_at_most(1.0 / (100.0 * n)));
     }
     match DRAWING_N.iter().find(|&&v| v >= n * (1.0 - 1e-12)) {
         Some(&v) => round_sig(v * 1e-3),
@@ -152,6 +156,22 @@ fn fits_something(largest: f64) -> bool {
     !(largest.is_nan() || largest <= 0.0 || !largest.is_finite())
 }
 
+/// The largest standard value (1, 2, 2.5, 4, 5 × 10^j) not above `r`
+/// (at least 1).
+fn standard_at_most(r: f64) -> f64 {
+    let mut j = r.log10().floor() as i32 + 1;
+    while j >= 0 {
+        for m in MANTISSAS.into_iter().rev() {
+            let v = m * 10f64.powi(j);
+            if v <= r * (1.0 + 1e-12) {
+                return v;
+            }
+        }
+        j -= 1;
+    }
+    1.0
+}
+
 /// The smallest standard value not below `target` (real value per mm).
 fn standard_of_ratio(target: f64) -> f64 {
     let mut k = target.log10().floor() as i32 - 1;
@@ -198,6 +218,9 @@ pub fn standard_above(mu: f64) -> f64 {
 
 /// Round to 12 significant digits so that 2.5e-3 prints as 0.0025.
 fn round_sig(x: f64) -> f64 {
+    if !x.is_normal() {
+        return x;
+    }
     let p = 10f64.powi(11 - x.abs().log10().floor() as i32);
     (x * p).round() / p
 }
@@ -299,9 +322,28 @@ mod tests {
         assert!((d.scale(12.0, 200.0) - 0.075).abs() < 1e-15);
         // Past 100:1, (100·k):1: 1 mm within 150 mm is 150:1 at most, so 100:1.
         assert!((d.scale(1e-3, 150.0) - 1e-5).abs() < 1e-20);
-        // 0.1 mm within 150 mm: 1500:1 → (100·15):1.
+        // 0.1 mm within 150 mm: 1500:1 at most → (100·10):1, k from the
+        // plans' row; the next larger scale is (100·20):1, not (100·16):1.
         let m = d.scale(1e-4, 150.0);
-        assert!((m - 1e-3 / 1500.0).abs() < 1e-18, "{m}");
+        assert!((m - 1e-3 / 1000.0).abs() < 1e-18, "{m}");
+        assert!((d.above(m) - 1e-3 / 500.0).abs() < 1e-18);
+        // Far past the standard's ends, and bad input, in a few steps.
+        for t in [1e-300, 0.0, -1.0, f64::NAN, f64::INFINITY, 1e300] {
+            let mu = d.at_least(t);
+            assert!(mu.is_finite() && mu > 0.0, "{t}: {mu}");
+            let p = Series::Plans.at_least(t);
+            assert!(p.is_finite() && p > 0.0, "{t}: {p}");
+            if t < 1.0 {
+                assert!(d.above(mu) > mu && Series::Plans.above(p) > p, "{t}");
+            }
+        }
+        // A fill from the smallest drawing up steps at most ×2.5.
+        let mut mu = d.at_least(1e-12);
+        while mu < 1e6 {
+            let next = d.above(mu);
+            assert!(next > mu && next <= 2.5 * mu * (1.0 + 1e-9), "{mu} → {next}");
+            mu = next;
+        }
         // Reductions of a sheet: 1:3 → 1:4, 1:12 → 1:15, 1:230 → 1:400.
         assert_eq!(drawing_reduction(3.0), 4.0);
         assert_eq!(drawing_reduction(12.0), 15.0);
