@@ -48,7 +48,7 @@ fn main() -> ExitCode {
     if let Some(Command::Solve { output: None, .. }) = &cli.command {
         signals::stop_when_stdout_closes();
     }
-    finish(match cli.command {
+    terminal::finish(match cli.command {
         Some(c) => command(c),
         // No arguments: the embedded default scene, solved and drawn.
         None => {
@@ -256,54 +256,4 @@ fn studies(c: Command) -> Result<(), Error> {
         | Command::Serve { .. }
         | Command::Frenet { .. } => Ok(()),
     }
-}
-
-/// The exit status: the command's own (0 success; `check`: 1 an item
-/// wrong, 4 an item that cannot be judged), 2 bad input or a mechanism
-/// that cannot be solved, 3 a failed write, 5 an internal error.
-fn finish(result: Result<u8, Error>) -> ExitCode {
-    let mut e = match result {
-        Ok(status) => return ExitCode::from(status),
-        Err(e) => e,
-    };
-    // A reader that closed the pipe (`solve | head`) has what it wanted:
-    // the run ends quietly, as a filter does.
-    if let Error::Write { path, source } = &e
-        && path == "standard output"
-        && source.kind() == std::io::ErrorKind::BrokenPipe
-    {
-        return ExitCode::SUCCESS;
-    }
-    // The library names its parameters; here they are options.
-    if let Some(issues) = e.issues_mut() {
-        for i in issues {
-            let options = [
-                "output",
-                "point",
-                "sheet",
-                "position",
-                "positions-from",
-                "tolerance",
-                "dpi",
-                "min-dwell",
-                "n",
-                "min-time",
-                "count",
-                "delta",
-                "mu",
-                "plan",
-                "svg",
-            ];
-            if options.contains(&i.pointer.as_str()) {
-                let dash = if i.pointer == "n" { "-" } else { "--" };
-                i.pointer = format!("{dash}{}", i.pointer);
-            }
-        }
-    }
-    terminal::error(&e.to_string());
-    ExitCode::from(match e {
-        Error::Write { .. } => 3,
-        Error::Internal(_) => 5,
-        _ => 2,
-    })
 }

@@ -4,10 +4,11 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use mechplan::Progress;
-use mechplan::Result;
 use mechplan::study::files::{STDOUT, Spool, write_error};
+use mechplan::{Error, Result};
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
+use std::process::ExitCode;
 use std::sync::Mutex;
 
 /// An error for the user on standard error, every line "mechplan: …";
@@ -120,4 +121,55 @@ impl Progress for Bar {
             pb.finish_and_clear();
         }
     }
+}
+
+/// The exit status, an error reported on standard error first: the
+/// command's own (0 success; `check`: 1 an item wrong, 4 an item that
+/// cannot be judged), 2 bad input or a mechanism that cannot be solved,
+/// 3 a failed write, 5 an internal error.
+pub fn finish(result: Result<u8>) -> ExitCode {
+    let mut e = match result {
+        Ok(status) => return ExitCode::from(status),
+        Err(e) => e,
+    };
+    // A reader that closed the pipe (`solve | head`) has what it wanted:
+    // the run ends quietly, as a filter does.
+    if let Error::Write { path, source } = &e
+        && path == "standard output"
+        && source.kind() == std::io::ErrorKind::BrokenPipe
+    {
+        return ExitCode::SUCCESS;
+    }
+    // The library names its parameters; here they are options.
+    if let Some(issues) = e.issues_mut() {
+        for i in issues {
+            let options = [
+                "output",
+                "point",
+                "sheet",
+                "position",
+                "positions-from",
+                "tolerance",
+                "dpi",
+                "min-dwell",
+                "n",
+                "min-time",
+                "count",
+                "delta",
+                "mu",
+                "plan",
+                "svg",
+            ];
+            if options.contains(&i.pointer.as_str()) {
+                let dash = if i.pointer == "n" { "-" } else { "--" };
+                i.pointer = format!("{dash}{}", i.pointer);
+            }
+        }
+    }
+    error(&e.to_string());
+    ExitCode::from(match e {
+        Error::Write { .. } => 3,
+        Error::Internal(_) => 5,
+        _ => 2,
+    })
 }

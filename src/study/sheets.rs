@@ -37,10 +37,14 @@ fn listed(dir: &Path) -> Vec<String> {
     if let Some(b) = v["book"].as_str() {
         out.push(b.to_string());
     }
-    // Only plain file names in the folder itself: a manifest is no
-    // licence to remove anything elsewhere.
-    out.retain(|f| !f.is_empty() && !f.contains(['/', '\\']) && f != ".." && f != ".");
+    out.retain(|f| plain_name(f));
     out
+}
+
+/// Whether `f` names a file in the folder itself: a manifest or a journal
+/// is no licence to move or remove anything elsewhere.
+fn plain_name(f: &str) -> bool {
+    !f.is_empty() && !f.contains(['/', '\\']) && f != ".." && f != "."
 }
 
 /// Write every sheet into `dir` in `format` (with the PDF book of them
@@ -265,7 +269,7 @@ impl SheetWriter {
                 .filter_map(|e| e.ok())
                 .map(|e| e.path())
                 .filter(|p| p.is_file() && !is_written.contains(p) && looks_like_a_sheet(p))
-                .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+                .map(|p| file_name(&p))
                 .collect();
             stale.sort();
             if !stale.is_empty() {
@@ -326,15 +330,13 @@ fn write_journal(staging: &Path, moves: &[String], remove: &[String]) -> Result<
 fn finish_journal(dir: &Path, staging: &Path) -> Option<usize> {
     let text = std::fs::read_to_string(staging.join(JOURNAL)).ok()?;
     let v: serde_json::Value = serde_json::from_str(&text).ok()?;
-    // Plain names in the folder itself only, as a manifest's.
-    let plain = |f: &&str| !f.is_empty() && !f.contains(['/', '\\']) && *f != ".." && *f != ".";
     let names = |key: &str| -> Vec<String> {
         v[key]
             .as_array()
             .into_iter()
             .flatten()
             .filter_map(|x| x.as_str())
-            .filter(plain)
+            .filter(|f| plain_name(f))
             .map(str::to_string)
             .collect()
     };

@@ -56,13 +56,16 @@ impl Series {
     }
 }
 
-/// The smallest "1:n" of ГОСТ 2.302 with n not below `n` (≥ 1): the
-/// reduction that brings a drawing `n` times too large within its sheet.
+/// The smallest "1:n" of ГОСТ 2.302 with n not below `n` (from 0.01,
+/// 100:1): the reduction that brings a drawing `n` times too large within
+/// its sheet, and the table [`Series::Drawing`] looks its values up in.
 pub fn drawing_reduction(n: f64) -> f64 {
-    match DRAWING_N.iter().find(|&&v| v >= n * (1.0 - 1e-12)) {
-        Some(&v) => v,
-        None => standard_of_ratio(n),
-    }
+    DRAWING_N
+        .iter()
+        .copied()
+        .find(|&v| v >= n * (1.0 - 1e-12))
+        // Past 1:50 000, the plans' row.
+        .unwrap_or_else(|| standard_of_ratio(n))
 }
 
 /// The smallest of ГОСТ 2.302's scales (μ_l, m/mm) not below `target`.
@@ -75,10 +78,7 @@ fn drawing_of_ratio(target: f64) -> f64 {
         // the largest k with n = 1/(100·k) not below the target.
         return round_sig(1e-5 / standard_at_most(1.0 / (100.0 * n)));
     }
-    match DRAWING_N.iter().find(|&&v| v >= n * (1.0 - 1e-12)) {
-        Some(&v) => round_sig(v * 1e-3),
-        None => standard_of_ratio(target),
-    }
+    round_sig(drawing_reduction(n) * 1e-3)
 }
 
 /// Where a plan drawn at a standard scale must fit, mm: its longest vector
