@@ -1,0 +1,502 @@
+#!/usr/bin/env python3
+"""Write the catalogue of force-plan answers (tests/forces_catalogue/):
+honest answers and answers with one seeded mistake each, for several
+positions of every dynamics fixture, every group's plan and the input
+link's, computed by tests/reference/forceref.py (60 digits, independent
+of mechplan's force code), and a few bad answers; `labels.json` says what
+each answer is. tests/check_forces_catalogue.rs grades `check` on them.
+
+Run from the repository's root after `cargo build --release` (mechplan
+gives only the input angles of a `count` scene and the positions'
+numbers):
+    python3 tests/forces_catalogue/make.py        (or tests/forces_catalogue/make.sh)
+"""
+import glob
+import json
+import math
+import os
+import random
+import shutil
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', 'reference'))
+import forceref as fr  # noqa: E402
+from forceref import mp, mpf, add, sub, mul, cross, norm, unit, perp  # noqa: E402
+
+BINARY = 'target/release/mechplan'
+# Positions (indices into the scene's positions) per fixture; all of a
+# scene with fewer.
+POSITIONS = [0, 2, 5, 8]
+DELTA = 0.5          # the δ the answers state, mm
+SEG_NOISE = 0.3      # mm
+ANG_NOISE = 0.5      # degrees
+# A mistake is kept where some item moves by more than this many mm on
+# the plan (an angle: sideways at the vector's end), or M_b by more than
+# this many of its tolerances δ·μ_l·Σ|F| (otherwise it is no mistake a
+# pencil shows).
+SEEN_MM = 3.0
+SEEN_MB = 3.0
+# No direction is read off a segment shorter than this, mm.
+MIN_ANGLE_MM = 2.0
+
+SKIPPED = {
+    'arm_two_cylinders': 'two inputs: mpref (the kinematics) solves one input only',
+}
+
+
+def standard_at_least(x):
+    """The smallest 1, 2, 2.5, 4, 5 × 10^k not below x."""
+    k = math.floor(math.log10(x))
+    for e in (k - 1, k, k + 1):
+        for m in (1, 2, 2.5, 4, 5):
+            if m * 10 ** e >= x * (1 - 1e-12):
+                return float(f"{m * 10 ** e:.6g}")
+    raise ValueError(x)
+
+
+def f(x):
+    return float(x)
+
+
+# ---------------------------------------------------------------------------
+# The plans as mechplan's check names their forces (docs/check.md).
+
+def pair_between(M, a, b):
+    for q in fr.pairs_of(M):
+        if {q[2], q[3]} == {a, b}:
+            return q
+    return None
+
+
+def force_on(M, pos, q, x, link):
+    return fr.pair_action(M, pos, q, x)[link][0]
+
+
+class Plan:
+    """One plan: its links, its items [(name, vector, role)], and for a
+    dyad the geometry of its polygon."""
+
+
+def dyad_scheme(M, links, attached):
+    """Side 0, side 1, their outer links and the three pairs, in the
+    course's reading (a contour read from its revolute end)."""
+    a, b = links
+    pairs = fr.pairs_of(M)
+    ext = {}
+    for L in (a, b):
+        ext[L] = next(q for q in pairs if L in (q[2], q[3]) and ({q[2], q[3]} - {L}) <= attached)
+    mid = pair_between(M, a, b)
+    letters = [ext[a][0], mid[0], ext[b][0]]
+    s0, s1 = (b, a) if letters in (['P', 'R', 'R'], ['P', 'P', 'R']) else (a, b)
+    k1 = next(iter({ext[s0][2], ext[s0][3]} - {s0}))
+    k2 = next(iter({ext[s1][2], ext[s1][3]} - {s1}))
+    return s0, s1, k1, k2, ext[s0], mid, ext[s1]
+
+
+def link_forces(lds, L):
+    return [ld for ld in lds if ld['link'] == L and norm(ld['f']) > 0]
+
+
+def plan_items(M, pos, lds, solved, gi, groups, balancing):
+    """The items of plan gi (None: the input link's): (name, vector, role);
+    roles: 'measured', 'tau', 'load', 'neighbour'."""
+    attached = {'0', M.input_link}
+    for g in groups[:gi] if gi is not None else groups:
+        attached |= set(g)
+    links = groups[gi] if gi is not None else [M.input_link]
+    items = []
+    later = set()
+    if gi is not None:
+        for g in groups[gi + 1:]:
+            later |= set(g)
+    else:
+        for g in groups:
+            later |= set(g)
+    # The answer gives what the plan finds (the reactions, their τ
+    # components, M_b) and the later group's reactions it takes over; the
+    # given loads are not asked for.
+    for L in links:
+        for q, x in solved.items():
+            other = next(iter({q[2], q[3]} - {L}), None)
+            if L in (q[2], q[3]) and other in later:
+                items.append((f"R_{other}{L}", force_on(M, pos, q, x, L), 'neighbour'))
+    scheme = None
+    if gi is not None:
+        s0, s1, k1, k2, e1, mid, e2 = dyad_scheme(M, links, attached)
+        scheme = (s0, s1, k1, k2, e1, mid, e2)
+        r1 = force_on(M, pos, e1, solved[e1], s0)
+        r2 = force_on(M, pos, e2, solved[e2], s1)
+        rm = force_on(M, pos, mid, solved[mid], s0)
+        if e1[0] == 'R' and mid[0] == 'R':
+            A, B = pos.p[e1[1]], pos.p[mid[1]]
+            e = perp(unit(sub(B, A)))
+            items.append((f"R^τ_{k1}{s0}", mul(e, r1[0] * e[0] + r1[1] * e[1]), 'tau'))
+        if e2[0] == 'R' and mid[0] == 'R':
+            C, B = pos.p[e2[1]], pos.p[mid[1]]
+            e = perp(unit(sub(B, C)))
+            items.append((f"R^τ_{k2}{s1}", mul(e, r2[0] * e[0] + r2[1] * e[1]), 'tau'))
+        items += [(f"R_{k1}{s0}", r1, 'measured'), (f"R_{k2}{s1}", r2, 'measured'),
+                  (f"R_{s1}{s0}", rm, 'measured')]
+    else:
+        L = M.input_link
+        q = next(q for q in solved if L in (q[2], q[3]) and '0' in (q[2], q[3]))
+        items.append((f"R_0{L}", force_on(M, pos, q, solved[q], L), 'measured'))
+    p = Plan()
+    p.gi, p.links, p.items, p.scheme, p.balancing = gi, links, items, scheme, balancing
+    # Σ|F| of the forces laid off on the plan (the loads and the later
+    # reactions): what M_b's arms multiply.
+    n_laid = sum(1 for L in links for ld in link_forces(lds, L)) + sum(
+        1 for _, _, role in items if role in ('neighbour', 'tau'))
+    p.bound = drafting_bound(M, pos, scheme, n_laid)
+    p.laid = sum(f(norm(ld['f'])) for L in links for ld in link_forces(lds, L)) + sum(
+        f(norm(v)) for _, v, role in items if role == 'neighbour')
+    return p
+
+
+def drafting_bound(M, pos, scheme, n):
+    """How far a careful pencil may put a plan's closing point, mm: δ per
+    vector laid off (n of them) and per line, over the sine at which the
+    closing lines meet, and δ more to measure (this file's own model of
+    drafting, docs/check.md's in spirit)."""
+    if scheme is None:
+        return DELTA * (n + 1) + DELTA
+    s0, s1, k1, k2, e1, mid, e2 = scheme
+
+    def line(e, o):
+        if e[0] == 'P':
+            return perp(pos.guides[e[1]])
+        if mid[0] == 'R':
+            return sub(pos.p[mid[1]], pos.p[e[1]])
+        return perp(pos.guides[mid[1]])
+    if e1[0] == 'R' and mid[0] == 'P' and e2[0] == 'R':
+        sin = 1.0
+    else:
+        d1, d2 = line(e1, 0), line(e2, 1)
+        sin = abs(f(cross(unit(d1), unit(d2))))
+    return DELTA * (n + 2) / max(sin, 1e-12) + DELTA
+
+
+def polygon(M, pos, lds, solved, plan, t1, t2):
+    """A dyad's polygon (RRR, RRP) as drawn with the first side's τ vector
+    t1 and (RRR) the second's t2: the three measured reactions."""
+    s0, s1, k1, k2, e1, mid, e2 = plan.scheme
+    A, B = pos.p[e1[1]], pos.p[mid[1]]
+
+    def known_sum(L):
+        F = (mpf(0), mpf(0))
+        for ld in lds:
+            if ld['link'] == L:
+                F = add(F, ld['f'])
+        for q, x in solved.items():
+            if q in (e1, mid, e2):
+                continue
+            acts = fr.pair_action(M, pos, q, x)
+            if L in acts:
+                F = add(F, acts[L][0])
+        return F
+    P1 = t1
+    end0 = add(P1, known_sum(s0))
+    end1 = add(end0, known_sum(s1))
+    end = add(end1, t2) if t2 is not None else end1
+    l1 = sub(B, A)
+    if e2[0] == 'R':
+        d2 = sub(B, pos.p[e2[1]])
+    else:
+        d2 = perp(pos.guides[e2[1]])
+    # X = t·l1 = end + s·d2
+    det = cross(l1, mul(d2, -1))
+    t = cross(end, mul(d2, -1)) / det
+    X = mul(l1, t)
+    return {f"R_{k1}{s0}": sub(P1, X), f"R_{k2}{s1}": sub(X, end1), f"R_{s1}{s0}": sub(X, end0)}
+
+
+# ---------------------------------------------------------------------------
+# Answers.
+
+def choose_mu(items):
+    longest = max(f(norm(v)) for _, v, _ in items)
+    return standard_at_least(longest / 100.0)
+
+
+def angle_of(v):
+    return math.degrees(math.atan2(f(v[1]), f(v[0]))) % 360.0
+
+
+def input_moment_tolerance(plan, mu_l):
+    """check's tolerance of M_b: δ·μ_l·Σ|F| over the forces laid off."""
+    return DELTA * mu_l * plan.laid
+
+
+def answer(position, plan, mu, mu_l, vecs, style, rng, mb=None, seg_factor=1.0, noise=True):
+    """The JSON answer of `vecs` [(name, vector)] in `style`: 'vectors'
+    (segments and angles), 'segments', 'values'; M_b as a value (input)."""
+    a = {'plan': 'force', 'position': position, 'links': plan.links, 'mu': mu, 'delta': DELTA,
+         'mu_l': mu_l}
+    segs, angs, vals = {}, {}, {}
+    for name, v in vecs:
+        n = f(norm(v))
+        ds = rng.uniform(-SEG_NOISE, SEG_NOISE) if noise else 0.0
+        da = rng.uniform(-ANG_NOISE, ANG_NOISE) if noise else 0.0
+        if style in ('vectors', 'segments'):
+            segs[name] = round(max(n / mu * seg_factor + ds, 0.0), 1)
+        if style == 'vectors' and n / mu * seg_factor >= MIN_ANGLE_MM:
+            angs[name] = round((angle_of(v) + da) % 360.0, 1)
+        if style == 'values':
+            vals[name] = float(f"{max(n + ds * mu, 0.0):.4g}")
+    if mb is not None and style in ('vectors', 'values'):
+        tol = input_moment_tolerance(plan, mu_l)
+        d = rng.uniform(-0.3, 0.3) * tol if noise else 0.0
+        vals['M_b'] = float(f"{f(mb) + d:.5g}")
+    if segs:
+        a['segments'] = segs
+    if angs:
+        a['angles'] = angs
+    if vals:
+        a['values'] = vals
+    return a
+
+
+def seen(plan, mu, mu_l, right, wrong, mb_right=None, mb_wrong=None):
+    """Whether a mistaken set of vectors (and M_b) differs from the right
+    one by more than a pencil's error somewhere."""
+    limit = max(SEEN_MM, 1.5 * plan.bound)
+    for name, v in wrong.items():
+        r = right[name]
+        a, b = f(norm(v)) / mu, f(norm(r)) / mu
+        if abs(a - b) > limit:
+            return True
+        if min(a, b) >= MIN_ANGLE_MM and f(norm(sub(mul(unit(v), norm(r)), r))) / mu > limit:
+            return True
+    if mb_right is not None and mb_wrong is not None:
+        tol = input_moment_tolerance(plan, mu_l)
+        if abs(f(mb_wrong - mb_right)) > SEEN_MB * tol:
+            return True
+    return False
+
+
+def scene_answers(name, path, out_dir, labels):
+    mj = fr.mechplan_json(path, BINARY)
+    text = open(path).read()
+    inputs = fr.input_texts(mj)
+    numbers = [p['position'] for p in mj['positions']]
+    scene, M, groups, ref = fr.reference(text, inputs)
+    _, _, _, ref_nr = fr.reference(text, inputs, ('not_reversed',))
+    _, _, _, ref_nw = fr.reference(text, inputs, ('no_weights',))
+    S_p = f(M.S_p)
+    mu_l = standard_at_least(S_p / 200.0)
+    ks = [k for k in POSITIONS if k < len(ref)] or [0]
+    crank = M.kind == 'crank'
+    count = 0
+    for k in ks:
+        if ref[k] is None:
+            continue
+        pos, lds, solved, b = ref[k]
+        plans = [plan_items(M, pos, lds, solved, gi, groups, b) for gi in range(len(groups))]
+        plans.append(plan_items(M, pos, lds, solved, None, groups, b))
+        for plan in plans:
+            tag = f"{numbers[k]}_{''.join(plan.links)}"
+            rng = random.Random(f"{name}|{tag}")
+            right = {n: v for n, v, _ in plan.items}
+            vecs = [(n, v) for n, v, _ in plan.items]
+            mu = choose_mu(plan.items)
+            is_input = plan.gi is None
+            mb = b if is_input and crank else None
+
+            def put(kind, a, style):
+                nonlocal count
+                fn = f"{tag}_{kind}_{style}.json"
+                with open(os.path.join(out_dir, fn), 'w') as fh:
+                    json.dump(a, fh, ensure_ascii=False, indent=1)
+                    fh.write('\n')
+                labels.append({'file': f"{name}/{fn}", 'scene': f"fixtures/dynamics/{name}.json",
+                               'position': numbers[k], 'links': plan.links, 'style': style,
+                               'expected': kind})
+                count += 1
+
+            # (a) honest, three styles
+            if plan.scheme and plan.scheme[4][0] == 'R' and plan.scheme[5][0] == 'R':
+                # the polygon closed from the reference's τ must give its reactions
+                t1 = right[f"R^τ_{plan.scheme[2]}{plan.scheme[0]}"]
+                t2 = right.get(f"R^τ_{plan.scheme[3]}{plan.scheme[1]}")
+                got = polygon(M, pos, lds, solved, plan, t1, t2)
+                for n_, v in got.items():
+                    assert f(norm(sub(v, right[n_]))) < 1e-30 * max(f(norm(right[n_])), 1.0), (name, tag, n_)
+            for style in ('vectors', 'segments', 'values'):
+                put('honest', answer(numbers[k], plan, mu, mu_l, vecs, style, rng, mb), style)
+
+            # (b) one seeded mistake each
+            def mistaken_whole(ref_v, kind):
+                pv, lv, sv, bv = ref_v[k]
+                pl = plan_items(M, pv, lv, sv, plan.gi, groups, bv)
+                w = {n: v for n, v, _ in pl.items}
+                if set(w) != set(right):
+                    return    # a load vanishes: its name is absent, not wrong
+                mbw = bv if is_input and crank else None
+                if seen(plan, mu, mu_l, right, w, mb, mbw):
+                    put(kind, answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors', rng, mbw),
+                        'vectors')
+            mistaken_whole(ref_nr, 'not_reversed')
+            # weights left out: the G vectors are not drawn at all
+            pv, lv, sv, bv = ref_nw[k]
+            pl = plan_items(M, pv, lv, sv, plan.gi, groups, bv)
+            w = {n: v for n, v, _ in pl.items}
+            mbw = bv if is_input and crank else None
+            if seen(plan, mu, mu_l, right, w, mb, mbw):
+                put('weights_left_out', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors',
+                                               rng, mbw), 'vectors')
+            if plan.scheme and plan.scheme[4][0] == 'R' and plan.scheme[5][0] == 'R':
+                s0, s1, k1, k2 = plan.scheme[:4]
+                n1, n2 = f"R^τ_{k1}{s0}", f"R^τ_{k2}{s1}"
+                t1, t2 = right[n1], right.get(n2)
+                # τ with the wrong sign, the polygon closed with it
+                got = polygon(M, pos, lds, solved, plan, mul(t1, -1), t2)
+                w = dict(right)
+                w.update(got)
+                w[n1] = mul(t1, -1)
+                if seen(plan, mu, mu_l, right, w):
+                    put('tau_wrong_sign', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors', rng),
+                        'vectors')
+                # τ laid along the link instead of across it
+                A, B = pos.p[plan.scheme[4][1]], pos.p[plan.scheme[5][1]]
+                e = perp(unit(sub(B, A)))
+                tau1 = t1[0] * e[0] + t1[1] * e[1]
+                a1 = mul(unit(sub(B, A)), tau1)
+                a2 = None
+                if t2 is not None:
+                    C = pos.p[plan.scheme[6][1]]
+                    e_ = perp(unit(sub(B, C)))
+                    a2 = mul(unit(sub(B, C)), t2[0] * e_[0] + t2[1] * e_[1])
+                got = polygon(M, pos, lds, solved, plan, a1, a2)
+                w = dict(right)
+                w.update(got)
+                w[n1] = a1
+                if a2 is not None:
+                    w[n2] = a2
+                if seen(plan, mu, mu_l, right, w):
+                    put('tau_along_link', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors', rng),
+                        'vectors')
+            # a reaction drawn as the action: the measured ones turned by 180°
+            w = dict(right)
+            for n_, v, role in plan.items:
+                if role == 'measured' and f(norm(v)) / mu > max(SEEN_MM, plan.bound, MIN_ANGLE_MM):
+                    w[n_] = mul(v, -1)
+                    break
+            if seen(plan, mu, mu_l, right, w):
+                put('reaction_as_action', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors', rng, mb),
+                    'vectors')
+            # the later group's force taken with the wrong sign
+            neighbours = [n_ for n_, _, role in plan.items if role == 'neighbour']
+            if neighbours:
+                w = neighbour_sign(M, scene, lds, pos, groups, plan)
+                mbw = w.pop('M_b', None)
+                if seen(plan, mu, mu_l, right, w, mb, mbw):
+                    put('neighbour_wrong_sign', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors',
+                                                       rng, mbw), 'vectors')
+            # the polygon drawn at twice or half the stated μ_F
+            for kind, factor in (('scale_twice', 2.0), ('scale_half', 0.5)):
+                put(kind, answer(numbers[k], plan, mu, mu_l, vecs, 'segments', rng, None, seg_factor=factor),
+                    'segments')
+            if mb is not None:
+                put('mb_wrong_sign', answer(numbers[k], plan, mu, mu_l, vecs, 'values', rng, -mb), 'values')
+                # M_b from the moments about the crank's other joint
+                L = M.input_link
+                other = [P for P in M.links[L][:2] if P != scene['input']['pivot']][0]
+                Aq = pos.p[other]
+                mw = mpf(0)
+                for ld in lds:
+                    if ld['link'] == L:
+                        mw -= cross(sub(ld['at'], Aq), ld['f']) + ld['c']
+                for q, x in solved.items():
+                    acts = fr.pair_action(M, pos, q, x)
+                    if L in acts and '0' not in (q[2], q[3]):
+                        mw -= cross(sub(acts[L][1], Aq), acts[L][0]) + acts[L][2]
+                if seen(plan, mu, mu_l, right, {}, mb, mw):
+                    put('mb_arms_wrong_point', answer(numbers[k], plan, mu, mu_l, vecs, 'values', rng, mw),
+                        'values')
+    # (c) bad answers, at the first position's first plan
+    pos, lds, solved, b = ref[ks[0]]
+    plan = plan_items(M, pos, lds, solved, 0, groups, b)
+    mu = choose_mu(plan.items)
+    first = plan.items[-1][0]
+    base = {'plan': 'force', 'position': numbers[ks[0]], 'links': plan.links, 'mu': mu, 'delta': DELTA,
+            'segments': {first: round(f(norm(plan.items[-1][1])) / mu, 1)}}
+    bad = [
+        ('unknown_force', dict(base, segments={'R_99': 10.0}), '/segments/R_99'),
+        ('negative_mu', dict(base, mu=-mu), '/mu'),
+    ]
+    for kind, a, pointer in bad:
+        fn = f"bad_{kind}.json"
+        with open(os.path.join(out_dir, fn), 'w') as fh:
+            json.dump(a, fh, ensure_ascii=False, indent=1)
+            fh.write('\n')
+        labels.append({'file': f"{name}/{fn}", 'scene': f"fixtures/dynamics/{name}.json",
+                       'expected': 'bad', 'pointer': pointer})
+    # NaN is no JSON number: written as text
+    fn = "bad_nan.json"
+    text_ = json.dumps(base, ensure_ascii=False, indent=1).replace(
+        f'"{first}": {base["segments"][first]}', f'"{first}": NaN')
+    with open(os.path.join(out_dir, fn), 'w') as fh:
+        fh.write(text_ + '\n')
+    labels.append({'file': f"{name}/{fn}", 'scene': f"fixtures/dynamics/{name}.json",
+                   'expected': 'bad', 'pointer': f"/segments/{first}"})
+    return count
+
+
+def neighbour_sign(M, scene, lds, pos, groups, plan):
+    """The plan's vectors (and M_b) when the later group's reactions on
+    its links are laid off with the wrong sign."""
+    later = set()
+    for g in (groups[plan.gi + 1:] if plan.gi is not None else groups):
+        later |= set(g)
+
+    def override(gi, links, solved, seen_):
+        if gi != plan.gi:
+            return
+        for L in links:
+            seen_[L] = [(ld['f'], ld['at'], ld['c']) for ld in lds if ld['link'] == L]
+            for q, x in solved.items():
+                acts = fr.pair_action(M, pos, q, x)
+                if L in acts:
+                    f_, at, c = acts[L]
+                    other = next(iter({q[2], q[3]} - {L}))
+                    if other in later:
+                        f_, c = mul(f_, -1), -c
+                    seen_[L].append((f_, at, c))
+    solved, b = fr.solve_position(scene, M, pos, lds, groups, override)
+    # the plan's own reactions from the mistaken solve; the neighbour's
+    # vectors as laid off (reversed)
+    pl = plan_items(M, pos, lds, solved, plan.gi, groups, b)
+    w = {}
+    for n_, v, role in pl.items:
+        w[n_] = mul(v, -1) if role == 'neighbour' else v
+    if plan.gi is None and M.kind == 'crank':
+        w['M_b'] = b
+    return w
+
+
+def main():
+    if not os.path.exists(BINARY):
+        raise SystemExit("build first: cargo build --release")
+    labels = []
+    for d in glob.glob(os.path.join(HERE, '*', '')):
+        shutil.rmtree(d)
+    total = 0
+    for path in sorted(glob.glob('fixtures/dynamics/*.json')):
+        name = os.path.basename(path)[:-5]
+        if name in SKIPPED:
+            print(f"{name}: skipped ({SKIPPED[name]})", file=sys.stderr)
+            continue
+        out_dir = os.path.join(HERE, name)
+        os.makedirs(out_dir)
+        n = scene_answers(name, path, out_dir, labels)
+        print(f"{name}: {n} answers", file=sys.stderr)
+        total += n
+    with open(os.path.join(HERE, 'labels.json'), 'w') as fh:
+        json.dump({'skipped': SKIPPED, 'answers': labels}, fh, ensure_ascii=False, indent=1)
+        fh.write('\n')
+    print(f"{total} answers, {len(labels) - total} bad", file=sys.stderr)
+
+
+if __name__ == '__main__':
+    main()
