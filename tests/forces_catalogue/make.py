@@ -230,7 +230,8 @@ def input_moment_tolerance(plan, mu_l):
 
 def answer(position, plan, mu, mu_l, vecs, style, rng, mb=None, seg_factor=1.0, noise=True):
     """The JSON answer of `vecs` [(name, vector)] in `style`: 'vectors'
-    (segments and angles), 'segments', 'values'; M_b as a value (input)."""
+    (segments, angles and values), 'segments', 'values'; M_b as a value
+    (the input link's plan)."""
     a = {'plan': 'force', 'position': position, 'links': plan.links, 'mu': mu, 'delta': DELTA,
          'mu_l': mu_l}
     segs, angs, vals = {}, {}, {}
@@ -242,8 +243,9 @@ def answer(position, plan, mu, mu_l, vecs, style, rng, mb=None, seg_factor=1.0, 
             segs[name] = round(max(n / mu * seg_factor + ds, 0.0), 1)
         if style == 'vectors' and n / mu * seg_factor >= MIN_ANGLE_MM:
             angs[name] = round((angle_of(v) + da) % 360.0, 1)
-        if style == 'values':
-            vals[name] = float(f"{max(n + ds * mu, 0.0):.4g}")
+        if style in ('vectors', 'values'):
+            dv = rng.uniform(-SEG_NOISE, SEG_NOISE) if noise else 0.0
+            vals[name] = float(f"{max(n + dv * mu, 0.0):.4g}")
     if mb is not None and style in ('vectors', 'values'):
         tol = input_moment_tolerance(plan, mu_l)
         d = rng.uniform(-0.3, 0.3) * tol if noise else 0.0
