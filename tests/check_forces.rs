@@ -480,3 +480,42 @@ fn a_force_plan_drawn_in_an_editor_is_read_and_judged() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// docs/check.md's worked example of a force verdict (τ with the wrong
+/// sign, from the independent catalogue): the command prints the page's
+/// lines in order and exits with status 1.
+#[test]
+fn the_worked_example_in_the_docs() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let page = std::fs::read_to_string(format!("{root}/docs/check.md")).unwrap();
+    let at = page
+        .find("\n### A worked example: τ with the wrong sign\n")
+        .expect("the heading");
+    let example = &page[at..];
+    let block = |fence: &str| {
+        let start = example.find(fence).unwrap() + fence.len();
+        let end = start + example[start..].find("```").unwrap();
+        example[start..end].to_string()
+    };
+    let (answer, printed) = (block("```json\n"), block("```text\n"));
+    // The page's answer is the catalogue's file, item for item.
+    let file =
+        format!("{root}/tests/forces_catalogue/six_link_fig2_10/0_23_tau_wrong_sign_vectors.json");
+    let page_answer: serde_json::Value = serde_json::from_str(&answer).unwrap();
+    let stored: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(page_answer, stored, "the page's answer is the catalogue's");
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["check", &scene_path(), &file])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let mut lines = text.lines();
+    for want in printed.lines().filter(|l| *l != "…") {
+        assert!(
+            lines.any(|l| l == want),
+            "the page prints a line the command does not, in this order:\n{want}\n---\n{text}"
+        );
+    }
+}

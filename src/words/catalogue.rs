@@ -617,13 +617,28 @@ pub struct CheckPhrases {
     /// `{mistake}`.
     pub force_diagnosis: String,
     pub force_not_recognised: String,
-    /// The force plans' typical mistakes.
+    /// Why an item cannot be judged: `{mu}`; `{what}`.
+    pub force_not_finite: String,
+    pub force_mistake_too: String,
+    /// The force plans' typical mistakes (`force_scale`: `{k}`, a factor).
     pub force_not_reversed: String,
     pub force_weights_left_out: String,
-    /// Why an item cannot be judged: `{mu}`; `{tol}`; `{what}`.
-    pub force_not_finite: String,
-    pub force_too_small: String,
-    pub force_mistake_too: String,
+    pub force_tau_sign: String,
+    pub force_tau_along: String,
+    pub force_action_for_reaction: String,
+    pub force_neighbour_sign: String,
+    pub force_scale: String,
+    pub force_mb_sign: String,
+    pub force_mb_arm: String,
+    /// A diagnosis with the item it shows first in: `{mistake}`, `{item}`.
+    pub force_first_at: String,
+    /// Mistakes fitting alike: `{mistakes}`, joined by `force_or`.
+    pub force_either: String,
+    pub force_or: String,
+    /// An item too small to judge at the student's μ_F: `{what}`, `{size}`.
+    pub force_small: String,
+    /// A value off the plan (M_b) too small to judge: `{what}`, `{tol}`.
+    pub force_small_value: String,
     /// What an item is: a segment, a direction, a value.
     pub force_kinds: [String; 3],
 }

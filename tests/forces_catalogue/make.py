@@ -405,7 +405,11 @@ def scene_answers(name, path, out_dir, labels):
                 put(kind, answer(numbers[k], plan, mu, mu_l, vecs, 'segments', rng, None, seg_factor=factor),
                     'segments')
             if mb is not None:
-                put('mb_wrong_sign', answer(numbers[k], plan, mu, mu_l, vecs, 'values', rng, -mb), 'values')
+                # (a sign flip of an M_b within a pencil's error of zero is
+                # no mistake a drawing can show)
+                if seen(plan, mu, mu_l, right, {}, mb, -mb):
+                    put('mb_wrong_sign', answer(numbers[k], plan, mu, mu_l, vecs, 'values', rng, -mb),
+                        'values')
                 # M_b from the moments about the crank's other joint
                 L = M.input_link
                 other = [P for P in M.links[L][:2] if P != scene['input']['pivot']][0]

@@ -10,19 +10,23 @@
 //! one) cannot be judged; a wrong answer that one explains is diagnosed.
 
 mod answer;
+mod mistakes;
+mod place;
 
 pub use answer::{ForceAnswer, from_json, from_svg, is_force_answer, is_force_svg};
+pub use mistakes::ForceMistake;
 
 use super::{Judgement, Verdict};
 use crate::error::{Error, Result};
 use crate::kinematics::solve::Analysis;
-use crate::kinetostatics::force_plan::{self, ForcePlan, ForceStep, Which};
-use crate::kinetostatics::loads::{Load, Origin};
+use crate::kinetostatics::force_plan::{Force, ForcePlan, ForceStep, Which};
+use crate::kinetostatics::loads::Load;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
 use crate::words::{check, numbers};
 use answer::issue;
+use place::{which, which_of};
 
 /// The check of a force plan.
 #[derive(Clone, Debug)]
@@ -37,7 +41,12 @@ pub struct ForceReport {
     pub delta: f64,
     /// The verdicts, item by item.
     pub verdicts: Vec<Verdict>,
-    /// The typical mistake that explains every wrong item, if one does.
+    /// The items too small to judge at the student's μ_F (indices into
+    /// `verdicts`): reported, and the rest graded without them.
+    pub small: Vec<usize>,
+    /// The typical mistake the whole answer fits, and no other.
+    pub mistake: Option<ForceMistake>,
+    /// That mistake in words, with the item it shows first in.
     pub diagnosis: Option<String>,
     /// The language of its words.
     pub lang: Lang,
@@ -51,11 +60,14 @@ impl ForceReport {
             .filter(|v| v.judgement == Judgement::Wrong)
             .count()
     }
-    /// 0 right, 1 wrong, 4 none wrong but some cannot be judged.
+    /// 0 right, 1 wrong, 4 none wrong but some cannot be judged (an item
+    /// too small to judge does not withhold the grade of the rest, unless
+    /// nothing else was judged).
     pub fn status(&self) -> u8 {
+        let judged = (0..self.verdicts.len()).filter(|i| !self.small.contains(i));
         if self.wrong() > 0 {
             1
-        } else if self.verdicts.iter().any(|v| !v.ok()) {
+        } else if judged.clone().any(|i| !self.verdicts[i].ok()) || judged.count() == 0 {
             4
         } else {
             0
@@ -90,28 +102,8 @@ fn key(s: &str) -> String {
     s.chars().filter(|c| *c != '_' && *c != '^').collect()
 }
 
-/// A plan's place: its group's, or its input link's.
-fn which_of(p: &ForcePlan) -> Which {
-    match (p.group, p.input) {
-        (Some(g), _) => Which::Group(g),
-        (None, Some(i)) => Which::Input(i),
-        (None, None) => unreachable!("a plan is a group's or an input's"),
-    }
-}
-
-/// Which plan the answer's links name.
-fn which(an: &Analysis, plans: &[ForcePlan], links: &[String]) -> Option<(Which, usize)> {
-    let m = &an.mech;
-    let mut want: Vec<&str> = links.iter().map(String::as_str).collect();
-    want.sort_unstable();
-    plans.iter().enumerate().find_map(|(k, p)| {
-        let mut ids: Vec<&str> = p.links.iter().map(|&l| m.link_id(l)).collect();
-        ids.sort_unstable();
-        (ids == want).then(|| (which_of(p), k))
-    })
-}
-
-/// What a plan says of one item: (expected, tolerance, on the plan in mm).
+/// What a plan says of one item: (expected, tolerance, on the plan in mm:
+/// a segment's or a value's length, a direction's vector's).
 type Expect = (f64, f64, Option<f64>);
 
 /// The balancing value and the forces on the input link of `plan`.
@@ -177,14 +169,12 @@ fn expect(
                     .into(),
             );
         };
-        // Each arm read to δ on the drawing at μ_l, each force to its own.
-        return Ok((b, ans.delta * mu_l * forces, None));
+        return Ok((b, balancing_tolerance(plan, ans, mu_l, forces), None));
     }
-    let v = plan
+    let found = plan
         .vectors
         .iter()
-        .rev()
-        .find(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)) == k)
+        .rposition(|v| key(&force_name(&an.mech, loads, v.force, Lang::En)) == k)
         .ok_or_else(|| {
             let names: Vec<String> = plan
                 .vectors
@@ -196,17 +186,61 @@ fn expect(
                 names.join(", ")
             )
         })?;
+    let v = &plan.vectors[found];
     let seg = plan.points[v.to] - plan.points[v.from];
-    let tol_mm = plan.err[v.from] + plan.err[v.to] + ans.delta;
+    let tol_mm = vector_tolerance(plan, found, ans.delta);
     Ok(match kind {
         "segment" => (seg.hypot(), tol_mm, Some(seg.hypot())),
         "value" => (v.value.hypot(), tol_mm * plan.mu, Some(seg.hypot())),
         _ => {
             let deg = seg.y.atan2(seg.x).to_degrees().rem_euclid(360.0);
-            let tol = (tol_mm / seg.hypot().max(1e-300)).atan().to_degrees();
-            (deg, tol.min(180.0), None)
+            // A vector no longer than its own tolerance may point anywhere.
+            let tol = if seg.hypot() <= tol_mm {
+                180.0
+            } else {
+                (tol_mm / seg.hypot()).asin().to_degrees()
+            };
+            // (its vector's length on the plan, to say how small it is)
+            (deg, tol, Some(seg.hypot()))
         }
     })
+}
+
+/// A vector's tolerance on the plan, mm, judged as its step draws it: a
+/// load laid off from the student's own previous point, 2δ (drawn and
+/// read), wherever it stands in the polygon; a reaction carried over from
+/// another plan or a moment equation and laid off, 4δ (its value read
+/// there as well); a reaction read off the closed polygon, the drafting
+/// error of its two ends (amplified where the closing lines meet) and δ.
+fn vector_tolerance(plan: &ForcePlan, k: usize, delta: f64) -> f64 {
+    let v = &plan.vectors[k];
+    let laid_off = plan.steps.contains(&ForceStep::LayOff(k));
+    match (laid_off, v.force) {
+        (true, Force::Load(_)) => 2.0 * delta,
+        (true, _) => 4.0 * delta,
+        (false, _) => plan.err[v.from] + plan.err[v.to] + delta,
+    }
+}
+
+/// The balancing moment's tolerance, N·m: each arm measured to δ on the
+/// drawing at μ_l (δ·μ_l·|F|), each force read to δ (a load) or 2δ (a
+/// reaction read off its plan) at μ_F times its arm. `forces`: the sum of
+/// the forces, for a plan without arms (δ·μ_l·Σ|F|).
+fn balancing_tolerance(plan: &ForcePlan, ans: &ForceAnswer, mu_l: f64, forces: f64) -> f64 {
+    if plan.arms.is_empty() {
+        return ans.delta * mu_l * forces;
+    }
+    plan.arms
+        .iter()
+        .map(|&(k, arm)| {
+            let v = &plan.vectors[k];
+            let read = match v.force {
+                Force::Load(_) => ans.delta,
+                _ => 2.0 * ans.delta,
+            };
+            ans.delta * mu_l * v.value.hypot() + arm * read * plan.mu
+        })
+        .sum()
 }
 
 /// The difference of two readings of kind `kind` (angles modulo 360°).
@@ -258,17 +292,20 @@ pub fn check_in(
             ),
         ));
     };
-    let delta = ans.delta;
-    let at_scale = |loads: &[Load]| -> Result<ForcePlan> {
-        let fp = force_plan::solve_at(an, s, loads, delta, Some((w, ans.mu)))?;
-        let (_, i) = which(an, &fp.plans, &ans.links).expect("the same structure");
-        Ok(fp.plans[i].clone())
+    let place = mistakes::At {
+        an,
+        s,
+        loads: right_loads,
+        delta: ans.delta,
+        which: w,
+        mu: ans.mu,
+        links: &ans.links,
     };
-    let plan = at_scale(right_loads)?;
+    let plan = place.plan(right_loads, None)?;
     // The typical mistakes, as whole plans at the student's scale.
-    let mistaken: Vec<(&str, ForcePlan)> = mistakes(right_loads, lang)
+    let mistaken: Vec<(ForceMistake, ForcePlan)> = ForceMistake::ALL
         .into_iter()
-        .filter_map(|(what, loads)| at_scale(&loads).ok().map(|p| (what, p)))
+        .flat_map(|m| place.mistaken(m, &plan).into_iter().map(move |p| (m, p)))
         .collect();
     let judge = Judge {
         an,
@@ -278,48 +315,11 @@ pub fn check_in(
         mistaken: &mistaken,
         lang,
     };
-    let mut verdicts = Vec::new();
-    let mut issues = Vec::new();
-    let mut explained: Vec<usize> = vec![0; mistaken.len()];
-    let items = [
-        ("segment", &ans.segments, "mm"),
-        ("angle", &ans.angles, "°"),
-        ("value", &ans.values, ""),
-    ];
-    for (kind, list, unit) in items {
-        for (pointer, name, given) in list.iter() {
-            match judge.verdict((kind, unit), pointer, name, *given, &mut explained) {
-                Ok(v) => verdicts.push(v),
-                Err(i) => issues.push(i),
-            }
-        }
-    }
+    let (readings, issues) = judge.read_all();
     if !issues.is_empty() {
         return Err(Error::fields(issues));
     }
-    let wrong = verdicts
-        .iter()
-        .filter(|v| v.judgement == Judgement::Wrong)
-        .count();
-    let diagnosis = (wrong > 0)
-        .then(|| {
-            mistaken
-                .iter()
-                .zip(&explained)
-                .filter(|(_, n)| **n >= wrong)
-                .max_by_key(|(_, n)| **n)
-                .map(|((what, _), _)| what.to_string())
-        })
-        .flatten();
-    Ok(ForceReport {
-        position: an.numbering.number(at),
-        links: ans.links.clone(),
-        mu: ans.mu,
-        delta,
-        verdicts,
-        diagnosis,
-        lang,
-    })
+    Ok(judge.report(an.numbering.number(at), &readings))
 }
 
 /// The answer with its plan's links: an SVG answer names its forces, not
@@ -361,69 +361,6 @@ fn kind_index(kind: &str) -> usize {
     }
 }
 
-/// The typical mistakes, each with the loads it draws the plans with:
-/// the inertia forces and couples not reversed, the weights left out.
-fn mistakes(right_loads: &[Load], lang: Lang) -> Vec<(&'static str, Vec<Load>)> {
-    let w = check::phrases(lang);
-    vec![
-        (
-            w.force_not_reversed.as_str(),
-            right_loads
-                .iter()
-                .map(|l| match *l {
-                    Load::Force {
-                        f,
-                        origin: Origin::Inertia,
-                        link,
-                        point,
-                        at,
-                    } => Load::Force {
-                        f: -f,
-                        origin: Origin::Inertia,
-                        link,
-                        point,
-                        at,
-                    },
-                    Load::Couple {
-                        m,
-                        origin: Origin::Inertia,
-                        link,
-                    } => Load::Couple {
-                        m: -m,
-                        origin: Origin::Inertia,
-                        link,
-                    },
-                    other => other,
-                })
-                .collect(),
-        ),
-        (
-            w.force_weights_left_out.as_str(),
-            // Zeroed in place (a zero force is not drawn), so that every
-            // other load keeps its index and its name.
-            right_loads
-                .iter()
-                .map(|l| match *l {
-                    Load::Force {
-                        origin: Origin::Gravity,
-                        link,
-                        point,
-                        at,
-                        ..
-                    } => Load::Force {
-                        f: kurbo::Vec2::ZERO,
-                        origin: Origin::Gravity,
-                        link,
-                        point,
-                        at,
-                    },
-                    other => other,
-                })
-                .collect(),
-        ),
-    ]
-}
-
 /// What the items are judged against: the plan at the student's scale
 /// with the right loads, and the plans of the typical mistakes.
 struct Judge<'a> {
@@ -431,24 +368,58 @@ struct Judge<'a> {
     loads: &'a [Load],
     plan: &'a ForcePlan,
     ans: &'a ForceAnswer,
-    mistaken: &'a [(&'a str, ForcePlan)],
+    mistaken: &'a [(ForceMistake, ForcePlan)],
     /// The language of the report's words.
     lang: Lang,
 }
 
+/// One item of the answer read against every plan: what the right plan
+/// expects, and whether each mistaken plan gives it (and differs there
+/// from the right one).
+struct Reading<'a> {
+    kind: &'static str,
+    unit: &'static str,
+    pointer: &'a str,
+    name: &'a str,
+    given: f64,
+    expect: Expect,
+    /// Per mistaken plan: (it gives the item within its tolerance, it is
+    /// apart from the right plan there).
+    mistakes: Vec<(bool, bool)>,
+}
+
 impl Judge<'_> {
-    /// The verdict on the item `name` of kind `kind` (its unit `unit`, a
-    /// value's by its name) that gives `given`; counts in `explained` the
-    /// items each mistaken plan explains (when it differs from the right
-    /// one). `Err`: the item cannot be read.
-    fn verdict(
+    /// Every item of the answer read (segments, directions, values); the
+    /// items that cannot be read, as issues.
+    fn read_all(&self) -> (Vec<Reading<'_>>, Vec<crate::error::Issue>) {
+        let ans = self.ans;
+        let items = [
+            ("segment", &ans.segments, "mm"),
+            ("angle", &ans.angles, "°"),
+            ("value", &ans.values, ""),
+        ];
+        let mut readings = Vec::new();
+        let mut issues = Vec::new();
+        for (kind, list, unit) in items {
+            for (pointer, name, given) in list.iter() {
+                match self.read((kind, unit), pointer, name, *given) {
+                    Ok(r) => readings.push(r),
+                    Err(i) => issues.push(i),
+                }
+            }
+        }
+        (readings, issues)
+    }
+
+    /// The item `name` of kind `kind` that gives `given`, read against the
+    /// right plan and every mistaken one. `Err`: it cannot be read.
+    fn read<'b>(
         &self,
-        (kind, unit): (&str, &'static str),
-        pointer: &str,
-        name: &str,
+        (kind, unit): (&'static str, &'static str),
+        pointer: &'b str,
+        name: &'b str,
         given: f64,
-        explained: &mut [usize],
-    ) -> std::result::Result<Verdict, crate::error::Issue> {
+    ) -> std::result::Result<Reading<'b>, crate::error::Issue> {
         let (an, loads, ans) = (self.an, self.loads, self.ans);
         let w = check::phrases(self.lang);
         let (expected, tol, on_plan) =
@@ -462,49 +433,161 @@ impl Judge<'_> {
             let mu = crate::format::num(ans.mu);
             return Err(issue(pointer, check::fill(&w.force_not_finite, &[("mu", &mu)])));
         }
-        let diff = difference(kind, given, expected);
-        let mut also = None;
-        for (j, (what, p)) in self.mistaken.iter().enumerate() {
-            let Ok((e2, t2, _)) = expect(an, loads, p, kind, name, ans) else {
-                continue;
-            };
-            let apart = difference(kind, e2, expected) > tol;
-            if apart && difference(kind, given, e2) <= t2 {
-                explained[j] += 1;
-                also.get_or_insert(*what);
-            }
-        }
-        let judgement = if diff > tol {
-            Judgement::Wrong
-        } else if kind != "angle" && tol >= expected.abs() {
-            let tol = numbers::quantity(tol, unit, self.lang);
-            Judgement::CannotJudge(check::fill(&w.force_too_small, &[("tol", &tol)]))
-        } else if let Some(what) = also {
-            Judgement::CannotJudge(check::fill(&w.force_mistake_too, &[("what", what)]))
-        } else {
-            Judgement::Right
-        };
-        Ok(Verdict {
-            pointer: pointer.to_string(),
-            key: name.to_string(),
-            what: format!("{} {name}", w.force_kinds[kind_index(kind)]),
-            expected,
-            given,
-            difference: diff,
-            tolerance: tol,
+        let mistakes = self
+            .mistaken
+            .iter()
+            .map(|(_, p)| match expect(an, loads, p, kind, name, ans) {
+                Ok((e2, t2, _)) if e2.is_finite() && t2.is_finite() => (
+                    difference(kind, given, e2) <= t2,
+                    difference(kind, e2, expected) > tol,
+                ),
+                _ => (false, false),
+            })
+            .collect();
+        Ok(Reading {
+            kind,
             unit,
-            on_plan: on_plan.map(|e| {
-                (
-                    e,
-                    if kind == "value" {
-                        given / ans.mu
-                    } else {
-                        given
-                    },
-                )
-            }),
-            step: None,
-            judgement,
+            pointer,
+            name,
+            given,
+            expect: (expected, tol, on_plan),
+            mistakes,
         })
     }
+
+    /// The report: each item right, wrong, too small to judge, or not to
+    /// be judged because the whole answer fits a mistaken plan as well as
+    /// the right one; the mistake named when the whole answer fits it and
+    /// no other.
+    fn report(&self, position: usize, readings: &[Reading]) -> ForceReport {
+        let w = check::phrases(self.lang);
+        // The mistaken plans the whole answer fits, that differ somewhere.
+        let fits: Vec<usize> = (0..self.mistaken.len())
+            .filter(|&j| {
+                readings.iter().all(|r| r.mistakes[j].0) && readings.iter().any(|r| r.mistakes[j].1)
+            })
+            .collect();
+        let mut verdicts = Vec::new();
+        let mut small = Vec::new();
+        for r in readings {
+            let (expected, tol, on_plan) = r.expect;
+            let diff = difference(r.kind, r.given, expected);
+            let also = fits.iter().find(|&&j| r.mistakes[j].1);
+            let judgement = if diff > tol {
+                Judgement::Wrong
+            } else if (r.kind != "angle" && tol >= expected.abs()) || (r.kind == "angle" && tol >= 180.0) {
+                small.push(verdicts.len());
+                let what = format!("{} {}", w.force_kinds[kind_index(r.kind)], r.name);
+                Judgement::CannotJudge(match on_plan {
+                    Some(mm) => {
+                        let size = crate::format::num(round_to(mm, 0.1));
+                        let size = numbers::decimals(&size, self.lang);
+                        check::fill(&w.force_small, &[("what", &what), ("size", &size)])
+                    }
+                    None => {
+                        let tol = numbers::quantity(tol, r.unit, self.lang);
+                        check::fill(&w.force_small_value, &[("what", &what), ("tol", &tol)])
+                    }
+                })
+            } else if let Some(&j) = also {
+                let what = self.mistaken[j].0.words(self.lang);
+                Judgement::CannotJudge(check::fill(&w.force_mistake_too, &[("what", &what)]))
+            } else {
+                Judgement::Right
+            };
+            verdicts.push(Verdict {
+                pointer: r.pointer.to_string(),
+                key: r.name.to_string(),
+                what: format!("{} {}", w.force_kinds[kind_index(r.kind)], r.name),
+                expected,
+                given: r.given,
+                difference: diff,
+                tolerance: tol,
+                unit: r.unit,
+                on_plan: on_plan.filter(|_| r.kind != "angle").map(|e| {
+                    (
+                        e,
+                        if r.kind == "value" {
+                            r.given / self.ans.mu
+                        } else {
+                            r.given
+                        },
+                    )
+                }),
+                step: None,
+                judgement,
+            });
+        }
+        let (named, alike) = self.named(readings, &verdicts);
+        let mistake = named.map(|j| self.mistaken[j].0);
+        let either = (alike.len() > 1).then(|| {
+            let all: Vec<String> = alike.iter().map(|m| m.words(self.lang)).collect();
+            check::fill(&w.force_either, &[("mistakes", &all.join(&w.force_or))])
+        });
+        let diagnosis = named.map(|j| {
+            let m = self.mistaken[j].0;
+            let first = (0..readings.len())
+                .find(|&i| verdicts[i].judgement == Judgement::Wrong && readings[i].mistakes[j].0);
+            match first {
+                Some(i) => check::fill(
+                    &w.force_first_at,
+                    &[("mistake", &m.words(self.lang)), ("item", &verdicts[i].what)],
+                ),
+                None => m.words(self.lang),
+            }
+        });
+        let diagnosis = diagnosis.or(either);
+        ForceReport {
+            position,
+            links: self.ans.links.clone(),
+            mu: self.ans.mu,
+            delta: self.ans.delta,
+            verdicts,
+            small,
+            mistake,
+            diagnosis,
+            lang: self.lang,
+        }
+    }
+}
+
+impl Judge<'_> {
+    /// The mistake to name: the one mistaken plan that explains every
+    /// wrong item and every other item as well (a reading of the finished
+    /// plan, like a reaction read the wrong way round, may touch some
+    /// items only: there the others may be right), and no other does.
+    /// Beside it, every mistake that explains the answer so (more than one:
+    /// the answer cannot tell them apart, and none is named).
+    fn named(
+        &self,
+        readings: &[Reading],
+        verdicts: &[Verdict],
+    ) -> (Option<usize>, Vec<ForceMistake>) {
+        let wrong = |i: usize| verdicts[i].judgement == Judgement::Wrong;
+        if !(0..readings.len()).any(wrong) {
+            return (None, Vec::new());
+        }
+        let explains = |j: usize| {
+            let partial = self.mistaken[j].0 == ForceMistake::ActionForReaction;
+            (0..readings.len()).all(|i| {
+                let (fits, _) = readings[i].mistakes[j];
+                fits || (partial && !wrong(i))
+            })
+        };
+        // One mistake, though it may be drawn more ways than one (τ's sign).
+        let found: Vec<usize> = (0..self.mistaken.len()).filter(|&j| explains(j)).collect();
+        let mut alike: Vec<ForceMistake> = Vec::new();
+        for &j in &found {
+            if !alike.contains(&self.mistaken[j].0) {
+                alike.push(self.mistaken[j].0);
+            }
+        }
+        let one = (alike.len() == 1).then(|| found[0]);
+        (one, alike)
+    }
+}
+
+/// `x` to the nearest multiple of `step`.
+fn round_to(x: f64, step: f64) -> f64 {
+    (x / step).round() * step
 }

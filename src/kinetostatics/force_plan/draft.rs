@@ -28,6 +28,7 @@ impl Draft {
                 lines: Vec::new(),
                 steps: Vec::new(),
                 worst_sin: 1.0,
+                arms: Vec::new(),
             },
         }
     }

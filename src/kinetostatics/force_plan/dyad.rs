@@ -4,7 +4,7 @@
 //! guides' couples read off; a cylinder's inner pair and drive force.
 
 use super::draft::Draft;
-use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
+use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part, Slip};
 use super::known::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
 use crate::geom::perp;
@@ -53,7 +53,7 @@ pub(super) fn group_plan(
     s: &Position,
     d: &Dyad,
     (known, out): (&mut Vec<Applied>, &mut ForcePlans),
-    (delta, scale): (f64, ScaleOf),
+    (delta, scale, slip): (f64, ScaleOf, Option<Slip>),
     at: &dyn Fn() -> String,
 ) -> Result<ForcePlan> {
     let mut sides = [vec![d.links[0]], vec![d.links[1]]];
@@ -67,7 +67,7 @@ pub(super) fn group_plan(
     let draw = |mu: f64| -> Result<(ForcePlan, Solution)> {
         let mut dr = Draft::new(mu, delta);
         dr.plan.links = sides.concat();
-        let sol = dyad_polygon(an, s, d, &sides, known, (o1, o2), &mut dr, at)?;
+        let sol = dyad_polygon(an, s, (d, slip), &sides, known, (o1, o2), &mut dr, at)?;
         Ok((dr.plan, sol))
     };
     let (trial, _) = draw(1.0)?;
@@ -122,9 +122,25 @@ struct Polygon<'k> {
     o2: Outer,
     b: Point,
     mid_guide: Option<Vec2>,
+    slip: Option<Slip>,
 }
 
 impl Polygon<'_> {
+    /// A tangential component `e·t` (`e` ⊥ the link `along`; the second
+    /// side's when `second`) as the plan lays it off: with a student's
+    /// slip, reversed or along the link.
+    fn tangential(&self, e: Vec2, along: Vec2, t: f64, second: bool) -> Vec2 {
+        match self.slip {
+            Some(Slip::TangentialSign { first, second: other })
+                if (second && other) || (!second && first) =>
+            {
+                e * -t
+            }
+            Some(Slip::TangentialAlong) => along.normalize() * t,
+            _ => e * t,
+        }
+    }
+
     /// The reaction in the first outer pair, on the group (`part` of it).
     fn r1_force(&self, part: Part) -> Force {
         reaction(self.e1.from, self.e1.to, self.e1.joint, part)
@@ -146,7 +162,7 @@ impl Polygon<'_> {
                 // ΣM_B(side 0) = 0: R^τ ⊥ AB.
                 let e = perp((b - a).normalize());
                 let t = -s0.moment_about(b) / (a - b).cross(e);
-                pre = e * t;
+                pre = self.tangential(e, b - a, t, false);
                 dr.plan.steps.push(ForceStep::Moment {
                     links: s0.links.clone(),
                     about: b,
@@ -201,7 +217,7 @@ impl Polygon<'_> {
                 force: self.r2_force(Part::Tangential),
                 value: t,
             });
-            dr.lay_off(e * t, self.r2_force(Part::Tangential));
+            dr.lay_off(self.tangential(e, b - c, t, true), self.r2_force(Part::Tangential));
         }
     }
 
@@ -265,7 +281,7 @@ pub(super) fn reaction(from: usize, to: usize, joint: Joint, part: Part) -> Forc
 fn dyad_polygon(
     an: &Analysis,
     s: &Position,
-    d: &Dyad,
+    (d, slip): (&Dyad, Option<Slip>),
     sides: &[Vec<usize>; 2],
     known: &[Applied],
     (o1, o2): (Outer, Outer),
@@ -295,6 +311,7 @@ fn dyad_polygon(
         o2,
         b,
         mid_guide,
+        slip,
     };
     let (pre, pre_force) = pg.first_component(dr);
     dr.lay_off(pre, pre_force);

@@ -3,7 +3,7 @@
 
 use super::draft::Draft;
 use super::dyad::{couple_step, reaction};
-use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
+use super::plan::{Force, ForcePlan, ForcePlans, ForceStep, Part, Slip};
 use super::known::{Applied, ScaleOf, Side, record};
 use crate::error::Result;
 use crate::kinematics::solve::{Analysis, Position};
@@ -20,7 +20,7 @@ pub(super) fn input_plan(
     s: &Position,
     i: usize,
     (known, out): (&mut Vec<Applied>, &mut ForcePlans),
-    (delta, scale): (f64, ScaleOf),
+    (delta, scale, slip): (f64, ScaleOf, Option<Slip>),
 ) -> Result<ForcePlan> {
     let m = &an.mech;
     let spec = m.scene.input_at(i);
@@ -45,7 +45,18 @@ pub(super) fn input_plan(
     match *spec {
         InputSpec::Crank { pivot, .. } => {
             let o = s.config.point(m, link, pivot);
-            let mb = -side.moment_about(o);
+            // The arms a student measures, force by force as laid off.
+            dr.plan.arms = side
+                .forces()
+                .filter(|a| a.f != Vec2::ZERO)
+                .enumerate()
+                .map(|(k, a)| (k, (a.at - o).cross(a.f.normalize()).abs()))
+                .collect();
+            let about = match slip {
+                Some(Slip::BalancingAbout) => other_joint(an, s, link, pivot).unwrap_or(o),
+                _ => o,
+            };
+            let mb = -side.moment_about(about);
             dr.plan.steps.push(ForceStep::Balancing {
                 input: i,
                 value: mb,
@@ -91,4 +102,14 @@ pub(super) fn input_plan(
         }
     }
     Ok(dr.plan)
+}
+
+/// The crank's other joint (the first revolute of `link` not at `pivot`):
+/// where a student slips and takes the balancing moment's arms from.
+fn other_joint(an: &Analysis, s: &Position, link: usize, pivot: usize) -> Option<kurbo::Point> {
+    let m = &an.mech;
+    m.revolutes
+        .iter()
+        .find(|r| (r.a == link || r.b == link) && r.point != pivot)
+        .map(|r| s.config.point(m, link, r.point))
 }

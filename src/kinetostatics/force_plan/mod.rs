@@ -31,7 +31,7 @@ mod plan;
 use known::Applied;
 #[cfg(feature = "internals")]
 pub use plan::{Drawn, DrawnLine};
-pub use plan::{Force, ForcePlan, ForcePlans, ForceStep, Part};
+pub use plan::{Force, ForcePlan, ForcePlans, ForceStep, Part, Slip};
 
 use super::loads::Load;
 use crate::error::{Error, Result};
@@ -75,6 +75,21 @@ pub fn solve_at(
     delta: f64,
     fixed: Option<(Which, f64)>,
 ) -> Result<ForcePlans> {
+    solve_slipped(an, s, loads, delta, fixed, None)
+}
+
+/// [`solve_at`] with the plan `fixed` names drawn with a student's `slip`
+/// (the others as the course draws them): the plans `check` compares a
+/// wrong answer with to name its mistake.
+pub fn solve_slipped(
+    an: &Analysis,
+    s: &Position,
+    loads: &[Load],
+    delta: f64,
+    fixed: Option<(Which, f64)>,
+    slip: Option<Slip>,
+) -> Result<ForcePlans> {
+    let slip_in = |w: Which| slip.filter(|_| fixed.is_some_and(|(f, _)| f == w));
     let scale_of = |w: Which, pts: &[Vec2]| match fixed {
         Some((f, mu)) if f == w => mu,
         _ => POLYGON.scale(pts.iter().copied()),
@@ -113,7 +128,10 @@ pub fn solve_at(
                     ));
                 };
                 let mu = |pts: &[Vec2]| scale_of(Which::Group(g), pts);
-                let plan = dyad::group_plan(an, s, d, (&mut known, &mut out), (delta, &mu), &at)?;
+                let slip = slip_in(Which::Group(g));
+                neighbours_slipped(&mut known, slip);
+                let plan =
+                    dyad::group_plan(an, s, d, (&mut known, &mut out), (delta, &mu, slip), &at)?;
                 out.plans.push(ForcePlan {
                     group: Some(g),
                     ..plan
@@ -124,7 +142,10 @@ pub fn solve_at(
                     continue;
                 }
                 let mu = |pts: &[Vec2]| scale_of(Which::Input(i), pts);
-                let plan = input::input_plan(an, s, i, (&mut known, &mut out), (delta, &mu))?;
+                let slip = slip_in(Which::Input(i));
+                neighbours_slipped(&mut known, slip);
+                let plan =
+                    input::input_plan(an, s, i, (&mut known, &mut out), (delta, &mu, slip))?;
                 out.plans.push(ForcePlan {
                     input: Some(i),
                     ..plan
@@ -135,3 +156,19 @@ pub fn solve_at(
     Ok(out)
 }
 
+
+/// The slip of taking the reactions of the groups solved before with the
+/// wrong sign: every reaction known so far reversed (only those on the
+/// plan's own links enter it).
+fn neighbours_slipped(known: &mut [Applied], slip: Option<Slip>) {
+    if slip != Some(Slip::NeighbourSign) {
+        return;
+    }
+    for a in known
+        .iter_mut()
+        .filter(|a| matches!(a.force, Force::Reaction { .. }))
+    {
+        a.f = -a.f;
+        a.couple = -a.couple;
+    }
+}

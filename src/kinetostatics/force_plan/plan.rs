@@ -119,6 +119,28 @@ pub struct ForcePlan {
     pub steps: Vec<ForceStep>,
     /// The smallest sine of the lines' meeting (1: none).
     pub worst_sin: f64,
+    /// The input link's plan: each force whose moment gives the balancing
+    /// moment, by its vector, with its arm about the pivot, m (what a
+    /// student measures on the drawing of the mechanism).
+    pub arms: Vec<(usize, f64)>,
+}
+
+/// A slip in drawing one plan, as a student makes it (the mistakes
+/// `check` names; [`super::solve_slipped`]): the plan is drawn as the
+/// course draws it but for this one step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Slip {
+    /// The tangential components R^τ with the sign of their moment
+    /// equation reversed: the first side's, the second's, or both.
+    TangentialSign { first: bool, second: bool },
+    /// The tangential components laid along the link (their value right).
+    TangentialAlong,
+    /// The reactions of the groups solved before taken with the wrong
+    /// sign (R_ij on this group's link where R_ji acts).
+    NeighbourSign,
+    /// The balancing moment from the moments about the crank's other
+    /// joint instead of its pivot.
+    BalancingAbout,
 }
 
 /// Every pair's reaction as the force plans find it (the conventions of
