@@ -213,6 +213,26 @@ impl<'a> Solution<'a> {
     /// # Ok::<(), mechplan::Error>(())
     /// ```
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
+        match self.staged(req)? {
+            Staged::Done(written) => Ok(written),
+            Staged::Sheets(writer, notes) => finish(writer, notes),
+        }
+    }
+
+    /// [`Solution::draw`], the positions dropped before the files are
+    /// put into place (the manifest, the renames: a long sweep's peak).
+    pub(super) fn draw_dropped(self, req: &DrawRequest) -> Result<Written> {
+        let staged = self.staged(req)?;
+        drop(self);
+        match staged {
+            Staged::Done(written) => Ok(written),
+            Staged::Sheets(writer, notes) => finish(writer, notes),
+        }
+    }
+
+    /// The files of [`Solution::draw`] written (the handout), or the
+    /// sheets staged, with the notes on them, to be put into place.
+    fn staged(&self, req: &DrawRequest) -> Result<Staged> {
         req.validate()?;
         let an = self.an();
         if req.html {
@@ -222,10 +242,10 @@ impl<'a> Solution<'a> {
             let path = req.dir.join("handout.html");
             let page = drawing::html::handout(an, &self.positions, lang);
             files::write_files_atomically(&[(path.clone(), page.as_bytes())])?;
-            return Ok(Written {
+            return Ok(Staged::Done(Written {
                 files: vec![path],
                 notes: Vec::new(),
-            });
+            }));
         }
         let mut writer = SheetWriter::new(&req.dir, req.format, req.dpi)?;
         if !req.positions.is_empty() {
@@ -240,11 +260,25 @@ impl<'a> Solution<'a> {
                 an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
             ));
         }
-        let mut written = writer.finish()?;
-        notes.append(&mut written.notes);
-        written.notes = notes;
-        Ok(written)
+        Ok(Staged::Sheets(writer, notes))
     }
+}
+
+/// What [`Solution::draw`] has done before the files are put into place.
+enum Staged {
+    /// Written (the handout).
+    Done(Written),
+    /// The sheets staged, and the notes on them.
+    Sheets(SheetWriter, Vec<String>),
+}
+
+/// The sheets staged put into place ([`SheetWriter::finish`]), `notes`
+/// before the writer's own.
+fn finish(writer: SheetWriter, mut notes: Vec<String>) -> Result<Written> {
+    let mut written = writer.finish()?;
+    notes.append(&mut written.notes);
+    written.notes = notes;
+    Ok(written)
 }
 
 /// One solved position, read by name.
@@ -510,8 +544,8 @@ impl Study {
         // The pipeline run once; the course sheet's scales chosen from it.
         let (study, solved, lean) = self.solved_for_sheets(req)?;
         match lean {
-            true => Solution::lean(&study, solved).draw(req),
-            false => Solution::new(&study, solved).draw(req),
+            true => Solution::lean(&study, solved).draw_dropped(req),
+            false => Solution::new(&study, solved).draw_dropped(req),
         }
     }
 
