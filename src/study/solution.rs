@@ -174,7 +174,7 @@ impl<'a> Solution<'a> {
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
         match self.staged(req)? {
             Staged::Done(written) => Ok(written),
-            Staged::Sheets(writer, notes) => finish(writer, notes),
+            Staged::Sheets(writer, notes) => finish(*writer, notes),
         }
     }
 
@@ -185,7 +185,7 @@ impl<'a> Solution<'a> {
         drop(self);
         match staged {
             Staged::Done(written) => Ok(written),
-            Staged::Sheets(writer, notes) => finish(writer, notes),
+            Staged::Sheets(writer, notes) => finish(*writer, notes),
         }
     }
 
@@ -209,7 +209,7 @@ impl<'a> Solution<'a> {
         let solved: &[Solved] = &self.positions;
         let data = |needs| SheetData::solve(an, solved, needs);
         let (writer, notes) = staged_sheets(self.study, &solved, &data, req)?;
-        Ok(Staged::Sheets(writer, notes))
+        Ok(Staged::Sheets(Box::new(writer), notes))
     }
 }
 
@@ -274,7 +274,7 @@ enum Staged {
     /// Written (the handout).
     Done(Written),
     /// The sheets staged, and the notes on them.
-    Sheets(SheetWriter, Vec<String>),
+    Sheets(Box<SheetWriter>, Vec<String>),
 }
 
 /// The sheets staged put into place ([`SheetWriter::finish`]), `notes`
