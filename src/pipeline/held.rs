@@ -1,6 +1,7 @@
-//! Positions held lean for the sheets of a long sweep: the sheets that
-//! share scales (the mechanism's μ_l and box, the positions sheet) read
-//! every position before any is drawn, but of its plans only the rates
+//! Positions made lean as they are finished, where only the sheets read
+//! them (`draw` of a sweep no sheet reads all at once, whose runs hold a
+//! chunk of positions in flight): the sheets that share scales (the
+//! mechanism's μ_l and box) read of a position's plans only the rates
 //! (the plan of the mechanism marks ω); each position's own sheets get
 //! its plans built again when its turn comes. A lean position is some
 //! 3 kB where a whole one with its plans is 20 to 35 kB.

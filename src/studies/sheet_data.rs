@@ -7,12 +7,11 @@
 //! with [`Diagrams::at_length`]).
 
 use crate::error::Result;
-use crate::kinematics::solve::{Analysis, Position};
+use crate::kinematics::solve::Analysis;
 use crate::studies::chosen::Chosen;
 use crate::studies::diagrams::Diagrams;
 use crate::studies::stroke::Stroke;
-use crate::studies::trajectories::{Trajectories, trajectories};
-use std::ops::Deref;
+use crate::studies::trajectories::{Placed, Trajectories, trajectories};
 
 /// The kinematic diagrams' intervals per revolution, as the lecture draws
 /// them (N = 12).
@@ -55,7 +54,7 @@ impl SheetData {
     /// Solve what `needs` names for the positions `solved`. Errors: the
     /// diagrams the diagrams sheet needs cannot be built (an output that
     /// turns fully, one that does not move).
-    pub fn solve<S: Deref<Target = Position>>(
+    pub fn solve<S: Placed>(
         an: &Analysis,
         solved: &[S],
         needs: SheetNeeds,

@@ -14,6 +14,39 @@ use crate::model::scene::{InputSpec, PositionsSpec};
 use kurbo::Point;
 use std::ops::Deref;
 
+/// What the trajectories read of a solved position: its (first) input's
+/// coordinate and its configuration.
+pub trait Placed {
+    fn q(&self) -> f64;
+    fn config(&self) -> &Configuration;
+}
+
+impl<S: Deref<Target = Position>> Placed for S {
+    fn q(&self) -> f64 {
+        self.deref().q
+    }
+    fn config(&self) -> &Configuration {
+        &self.deref().config
+    }
+}
+
+/// A solved position as the trajectories read it, and no more: what a
+/// long sweep drawn without holding its positions keeps of each.
+#[derive(Clone, Debug)]
+pub struct Sketch {
+    pub q: f64,
+    pub config: Configuration,
+}
+
+impl Placed for Sketch {
+    fn q(&self) -> f64 {
+        self.q
+    }
+    fn config(&self) -> &Configuration {
+        &self.config
+    }
+}
+
 /// The trajectories of the coupler points (m), the crank's circle and
 /// the output's extreme positions ([`trajectories`]).
 #[derive(Clone, Debug, Default)]
@@ -42,7 +75,7 @@ pub fn crank_tip(m: &Mechanism) -> Option<usize> {
 /// a slider of a frame guide: through 72 positions per revolution of a
 /// crank turning fully, else through the solved ones; with the crank's
 /// circle and the output's extreme positions when the crank turns fully.
-pub fn trajectories<S: Deref<Target = Position>>(an: &Analysis, solved: &[S]) -> Trajectories {
+pub fn trajectories<S: Placed>(an: &Analysis, solved: &[S]) -> Trajectories {
     let m = &an.mech;
     if solved.is_empty() {
         return Trajectories::default();
@@ -53,7 +86,7 @@ pub fn trajectories<S: Deref<Target = Position>>(an: &Analysis, solved: &[S]) ->
     let tracked = tracked(an);
     let mut paths: Vec<Vec<Point>> = Vec::new();
     if full_turn && let Ok(mut ps) = PositionSolver::new(m, &an.structure, an.need.clone()) {
-        let q0 = solved[0].q;
+        let q0 = solved[0].q();
         let dir = m.scene.input.sense();
         let mut ok = true;
         let mut samples: Vec<Vec<Point>> = vec![Vec::new(); tracked.len()];
@@ -77,14 +110,14 @@ pub fn trajectories<S: Deref<Target = Position>>(an: &Analysis, solved: &[S]) ->
     if paths.is_empty() {
         paths = tracked
             .iter()
-            .map(|&(p, l)| solved.iter().map(|s| s.config.point(m, l, p)).collect())
+            .map(|&(p, l)| solved.iter().map(|s| s.config().point(m, l, p)).collect())
             .collect();
     }
     let input = m.scene.input.link();
     let circle = match (&m.scene.input, crank_tip(m)) {
         (InputSpec::Crank { pivot, .. }, Some(p)) if full_turn => {
-            let o = solved[0].config.point(m, m.frame(), *pivot);
-            Some((o, (solved[0].config.point(m, input, p) - o).hypot()))
+            let o = solved[0].config().point(m, m.frame(), *pivot);
+            Some((o, (solved[0].config().point(m, input, p) - o).hypot()))
         }
         _ => None,
     };
@@ -129,7 +162,7 @@ fn tracked(an: &Analysis) -> Vec<(usize, usize)> {
 /// working stroke) that are not among the `solved` ones, followed from
 /// the first solved position on its branch; none where the output turns
 /// fully or a position cannot be reached.
-fn extremes<S: Deref<Target = Position>>(an: &Analysis, solved: &[S]) -> Vec<(Configuration, usize)> {
+fn extremes<S: Placed>(an: &Analysis, solved: &[S]) -> Vec<(Configuration, usize)> {
     let m = &an.mech;
     let out = match m.scene.positions {
         PositionsSpec::Count {
@@ -147,12 +180,12 @@ fn extremes<S: Deref<Target = Position>>(an: &Analysis, solved: &[S]) -> Vec<(Co
         return Vec::new();
     };
     let dir = m.scene.input.sense();
-    let q0 = solved[0].q;
+    let q0 = solved[0].q();
     // The start, unwound to within a turn after the first position.
     let start = q0 + dir * (dir * (start - q0)).rem_euclid(std::f64::consts::TAU);
     let drawn = |q: f64| {
         solved.iter().any(|s| {
-            let d = (s.q - q).rem_euclid(std::f64::consts::TAU);
+            let d = (s.q() - q).rem_euclid(std::f64::consts::TAU);
             d.min(std::f64::consts::TAU - d) < 1e-9
         })
     };

@@ -27,6 +27,7 @@
 //! Parameters that the command line shows as options are named here by
 //! their bare names (`output`, `position`, `sheet` …) in [`crate::Issue`]s.
 
+mod again;
 mod check_file;
 pub mod files;
 mod group;

@@ -240,22 +240,26 @@ impl Study {
     /// finished again at them ([`Analysis::run_rescaled`]), so that the
     /// sheets, tables and handout state the μ of the sheet each plan is
     /// drawn on. The study so prepared (its `scales_at` the course
-    /// sheet's), the positions, and whether they are held lean
-    /// ([`Solved::lean`]: where no sheet reads every position's plans —
-    /// no course sheet, no handout, no plan scale the scene fixes, whose
-    /// fit is judged over all positions).
+    /// sheet's) and the positions, held only where a sheet reads them all
+    /// at once (the course sheet, the handout, a plan scale the scene
+    /// fixes, whose fit is judged over all positions): else none are
+    /// solved here, and the sheets solve them again each time they read
+    /// the sweep (`again::Again`).
     pub(super) fn solved_for_sheets(
         &self,
         req: &DrawRequest,
-    ) -> Result<(Study, Vec<Solved>, bool)> {
+    ) -> Result<(Study, Option<Vec<Solved>>)> {
         self.held()?;
         let opt = req.options(self.lang());
         let fitted = self.fitted(req);
         if !fitted.course_drawn(&opt) {
+            // No sheet reads every position at once: none held.
             let d = &fitted.analysis.drafting;
-            let lean = !req.html && d.mu_v.is_none() && d.mu_a.is_none();
-            let solved = fitted.solved_held(lean)?;
-            return Ok((fitted, solved, lean));
+            if !req.html && d.mu_v.is_none() && d.mu_a.is_none() {
+                return Ok((fitted, None));
+            }
+            let solved = fitted.solved()?;
+            return Ok((fitted, Some(solved)));
         }
         let mut an = (*fitted.analysis).clone();
         an.scales_at = Arc::default();
@@ -268,7 +272,7 @@ impl Study {
             analysis: Arc::new(an),
             watcher: self.watcher.clone(),
         };
-        Ok((study, solved, false))
+        Ok((study, Some(solved)))
     }
 
     /// The same study with its plans at the scales of the sheets `req`

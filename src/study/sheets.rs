@@ -3,11 +3,15 @@
 //! ([`write_sheets`]).
 
 use super::files::{FolderLock, committing, discard, remove_stale, track, write_error};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::presentation::drawing::dxf::dxf;
-use crate::presentation::drawing::export::{BOOK, MANIFEST, manifest};
+use crate::presentation::drawing::export::{
+    BOOK, MANIFEST, MANIFEST_HEAD, manifest_entry, manifest_tail,
+};
 use crate::presentation::drawing::{Format, Sheet, SheetKind, pdf, pdf_book, png};
 use std::collections::HashSet;
+use std::fs::File;
+use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// Files written, and what the user should be told of the folder.
@@ -74,16 +78,19 @@ pub struct SheetWriter {
     format: Format,
     dpi: f64,
     before: Vec<String>,
-    /// This run's staging folder, once made, and the files in it with
-    /// their places.
+    /// This run's staging folder, once made, and the names of the files
+    /// in it, in order (each for the file of that name in the folder).
     staging: Option<PathBuf>,
-    staged: Vec<(PathBuf, PathBuf)>,
+    staged: Vec<String>,
     /// Notes of the staging (an interrupted run's files removed).
     notes: Vec<String>,
-    /// The sheets written, for the manifest (their SVG kept only for a
-    /// PDF book), and their files.
+    /// The manifest in the staging folder, each sheet's entry written as
+    /// the sheet comes (a run of thousands of sheets holds none of them),
+    /// and how many.
+    manifest: Option<BufWriter<File>>,
+    listed: usize,
+    /// The sheets written, with their SVG, for a PDF book only.
     sheets: Vec<Sheet>,
-    paths: Vec<PathBuf>,
     /// Some sheets of a set (`draw --position`): the folder's others are
     /// kept, and so are their entries in the manifest.
     partial: bool,
@@ -112,8 +119,9 @@ impl SheetWriter {
             staging: None,
             staged: Vec::new(),
             notes: Vec::new(),
+            manifest: None,
+            listed: 0,
             sheets: Vec::new(),
-            paths: Vec::new(),
             partial: false,
         })
     }
@@ -125,7 +133,8 @@ impl SheetWriter {
         self
     }
 
-    /// Render sheet `s` and write it to its temporary.
+    /// Render sheet `s`, write it to its temporary and its entry to the
+    /// manifest's.
     pub fn put(&mut self, mut s: Sheet) -> Result<()> {
         let (ext, bytes) = match self.format {
             Format::Svg => ("svg", std::mem::take(&mut s.svg).into_bytes()),
@@ -133,19 +142,40 @@ impl SheetWriter {
             Format::Pdf => ("pdf", pdf(&s.svg)?),
             Format::Dxf => ("dxf", dxf(&s.svg)?.into_bytes()),
         };
-        let path = self.dir.join(format!("{}.{ext}", s.name));
-        self.stage(&path, &bytes)?;
-        if self.format != Format::Pdf {
-            s.svg = String::new();
+        let file = format!("{}.{ext}", s.name);
+        self.stage(&file, &bytes)?;
+        self.list(&s, &file)?;
+        if self.format == Format::Pdf {
+            self.sheets.push(s);
         }
-        self.sheets.push(s);
-        self.paths.push(path);
         Ok(())
     }
 
-    /// Write `bytes` for `path` into the staging folder (made, with the
-    /// output folder, at the first file).
-    fn stage(&mut self, path: &Path, bytes: &[u8]) -> Result<()> {
+    /// Sheet `s`'s entry, in `file`, written to the manifest in the
+    /// staging folder (begun at the first).
+    fn list(&mut self, s: &Sheet, file: &str) -> Result<()> {
+        let m = self.dir.join(MANIFEST);
+        let fail = |e| write_error(&m.display().to_string(), e);
+        let w = match (&mut self.manifest, &self.staging) {
+            (Some(w), _) => w,
+            (None, Some(staging)) => {
+                let mut w = BufWriter::new(File::create(staging.join(MANIFEST)).map_err(fail)?);
+                w.write_all(MANIFEST_HEAD.as_bytes()).map_err(fail)?;
+                self.manifest.insert(w)
+            }
+            (None, None) => {
+                return Err(Error::Internal("a sheet listed before it is staged".into()));
+            }
+        };
+        w.write_all(manifest_entry(s, file, self.listed).as_bytes())
+            .map_err(fail)?;
+        self.listed += 1;
+        Ok(())
+    }
+
+    /// Write `bytes` for the folder's file `name` into the staging folder
+    /// (made, with the output folder, at the first file).
+    fn stage(&mut self, name: &str, bytes: &[u8]) -> Result<()> {
         let staging = match &self.staging {
             Some(s) => s.clone(),
             None => {
@@ -177,36 +207,55 @@ impl SheetWriter {
                 s
             }
         };
-        let name = path.file_name().expect("a file name");
-        let tmp = staging.join(name);
-        std::fs::write(&tmp, bytes).map_err(|e| write_error(&path.display().to_string(), e))?;
-        self.staged.push((tmp, path.to_path_buf()));
+        let path = self.dir.join(name);
+        std::fs::write(staging.join(name), bytes)
+            .map_err(|e| write_error(&path.display().to_string(), e))?;
+        self.staged.push(name.to_string());
+        Ok(())
+    }
+
+    /// The manifest's end written after its entries (the whole of it when
+    /// no sheet came), merged into the folder's for some sheets of a set.
+    fn end_manifest(&mut self) -> Result<()> {
+        let m = self.dir.join(MANIFEST);
+        let fail = |e| write_error(&m.display().to_string(), e);
+        let tail = manifest_tail(self.listed, self.format);
+        let (Some(mut w), Some(staging)) = (self.manifest.take(), self.staging.clone()) else {
+            let mut text = format!("{MANIFEST_HEAD}{tail}");
+            if self.partial {
+                text = merged(&m, &text);
+            }
+            return self.stage(MANIFEST, text.as_bytes());
+        };
+        w.write_all(tail.as_bytes())
+            .and_then(|_| w.flush())
+            .map_err(fail)?;
+        drop(w);
+        if self.partial {
+            let tmp = staging.join(MANIFEST);
+            let text = std::fs::read_to_string(&tmp).map_err(fail)?;
+            std::fs::write(&tmp, merged(&m, &text)).map_err(fail)?;
+        }
+        self.staged.push(MANIFEST.to_string());
         Ok(())
     }
 
     /// The book and the manifest, everything renamed into place, and the
     /// notes on what else the folder holds.
     pub fn finish(mut self) -> Result<Written> {
-        let mut written = std::mem::take(&mut self.paths);
-        if self.format == Format::Pdf && self.sheets.len() > 1 && !self.partial {
-            let book = self.dir.join(BOOK);
+        if self.format == Format::Pdf && self.listed > 1 && !self.partial {
             let bytes = pdf_book(&self.sheets)?;
-            self.stage(&book, &bytes)?;
-            written.push(book);
+            self.stage(BOOK, &bytes)?;
         }
-        let m = self.dir.join(MANIFEST);
-        let mut text = manifest(&self.sheets, &written, self.format);
-        if self.partial {
-            text = merged(&m, &text);
-        }
-        self.stage(&m, text.as_bytes())?;
-        written.push(m);
+        self.sheets = Vec::new();
+        self.end_manifest()?;
         // Into place, when no place is taken by something that is not a
         // file (a folder of that name): then nothing is moved.
         let staged = std::mem::take(&mut self.staged);
-        if let Some((_, p)) = staged
+        let written: Vec<PathBuf> = staged.iter().map(|n| self.dir.join(n)).collect();
+        if let Some(p) = written
             .iter()
-            .find(|(_, p)| std::fs::metadata(p).is_ok_and(|m| m.is_dir()))
+            .find(|p| std::fs::metadata(p).is_ok_and(|m| m.is_dir()))
         {
             let e =
                 std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder, not a file");
@@ -235,11 +284,11 @@ impl SheetWriter {
         // The journal first: a run killed outright from here on is
         // finished by the next run into the folder ([`remove_interrupted`]).
         if let Some(staging) = &self.staging {
-            let moves: Vec<String> = staged.iter().map(|(t, _)| file_name(t)).collect();
-            write_journal(staging, &moves, &outdated)?;
-        }
-        for (tmp, path) in &staged {
-            std::fs::rename(tmp, path).map_err(|e| write_error(&path.display().to_string(), e))?;
+            write_journal(staging, &staged, &outdated)?;
+            for (name, path) in staged.iter().zip(&written) {
+                std::fs::rename(staging.join(name), path)
+                    .map_err(|e| write_error(&path.display().to_string(), e))?;
+            }
         }
         let mut notes = std::mem::take(&mut self.notes);
         if self.partial {
@@ -292,6 +341,7 @@ impl Drop for SheetWriter {
     /// A writer dropped before it finished (a failure): its staging
     /// folder goes; finished, it is empty and goes too.
     fn drop(&mut self) {
+        self.manifest = None;
         if let Some(s) = &self.staging {
             discard(s);
         }

@@ -8,9 +8,9 @@ use crate::error::{Error, Result};
 use crate::kinematics::construction::{Plan, PlanKind};
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
-use crate::presentation::drawing::{self, Sheet, SheetSize};
+use crate::presentation::drawing::{self, Sheet, SheetSize, Sweep};
 use crate::presentation::report;
-use crate::studies::sheet_data::SheetData;
+use crate::studies::sheet_data::{SheetData, SheetNeeds};
 use kurbo::{Point, Vec2};
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -23,28 +23,11 @@ use std::thread::JoinHandle;
 pub struct Solution<'a> {
     study: &'a Study,
     positions: Vec<Solved>,
-    /// Whether the positions are held lean ([`Solved::lean`], for the
-    /// sheets only): each position's sheets build its plans again.
-    lean: bool,
 }
 
 impl<'a> Solution<'a> {
     pub(super) fn new(study: &'a Study, positions: Vec<Solved>) -> Solution<'a> {
-        Solution {
-            study,
-            positions,
-            lean: false,
-        }
-    }
-
-    /// The positions of `study` held lean ([`Solved::lean`]), to be drawn
-    /// ([`Solution::draw`]) and nothing else.
-    pub(super) fn lean(study: &'a Study, positions: Vec<Solved>) -> Solution<'a> {
-        Solution {
-            study,
-            positions,
-            lean: true,
-        }
+        Solution { study, positions }
     }
 
     /// The study solved.
@@ -158,33 +141,9 @@ impl<'a> Solution<'a> {
         req: &DrawRequest,
         sink: &mut dyn FnMut(Sheet) -> Result<()>,
     ) -> Result<SheetSize> {
-        req.validate()?;
-        let numbering = self.an().numbering;
-        let only = req
-            .positions
-            .iter()
-            .map(|&k| super::prepared::position_index(numbering, k, self.positions.len()))
-            .collect::<std::result::Result<Vec<usize>, String>>()
-            .map_err(|m| Error::scene("position", m))?;
-        let sizes = match req.sheet {
-            Some(s) => vec![s],
-            None => SheetSize::ALL.to_vec(),
-        };
-        let opt = req.options(self.study.lang());
-        let (an, solved) = (self.an(), &self.positions);
-        // What the sheets draw beyond the positions (trajectories, extreme
-        // positions, the chosen positions, the diagrams) solved here, only
-        // for the sheets drawn: presentation never solves.
-        let needs = drawing::sheet_needs(an, solved, &opt, only.is_empty());
-        let data = SheetData::solve(an, solved, needs)?;
-        // A lean position's own sheets read its plans built again.
-        let again: drawing::Finish = &|k, held| {
-            let mut s = held.clone();
-            s.position.plans = an.plans_again(k, held)?;
-            Ok(Cow::Owned(s))
-        };
-        let finish = if self.lean { again } else { &drawing::as_held };
-        drawing::sheets_on_each(an, (solved, finish), &data, &opt, (&sizes, &only), sink)
+        let solved: &[Solved] = &self.positions;
+        let data = |needs| SheetData::solve(self.an(), solved, needs);
+        sheets_of(self.study, &solved, &data, req, sink)
     }
 
     /// Draw the sheets (or the handout) into `req.dir`: the files written
@@ -213,6 +172,26 @@ impl<'a> Solution<'a> {
     /// # Ok::<(), mechplan::Error>(())
     /// ```
     pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
+        match self.staged(req)? {
+            Staged::Done(written) => Ok(written),
+            Staged::Sheets(writer, notes) => finish(*writer, notes),
+        }
+    }
+
+    /// [`Solution::draw`], the positions dropped before the files are
+    /// put into place (the manifest, the renames: a long sweep's peak).
+    pub(super) fn draw_dropped(self, req: &DrawRequest) -> Result<Written> {
+        let staged = self.staged(req)?;
+        drop(self);
+        match staged {
+            Staged::Done(written) => Ok(written),
+            Staged::Sheets(writer, notes) => finish(*writer, notes),
+        }
+    }
+
+    /// The files of [`Solution::draw`] written (the handout), or the
+    /// sheets staged, with the notes on them, to be put into place.
+    fn staged(&self, req: &DrawRequest) -> Result<Staged> {
         req.validate()?;
         let an = self.an();
         if req.html {
@@ -222,29 +201,89 @@ impl<'a> Solution<'a> {
             let path = req.dir.join("handout.html");
             let page = drawing::html::handout(an, &self.positions, lang);
             files::write_files_atomically(&[(path.clone(), page.as_bytes())])?;
-            return Ok(Written {
+            return Ok(Staged::Done(Written {
                 files: vec![path],
                 notes: Vec::new(),
-            });
+            }));
         }
-        let mut writer = SheetWriter::new(&req.dir, req.format, req.dpi)?;
-        if !req.positions.is_empty() {
-            writer = writer.partial();
-        }
-        let sheet = self.sheets_each(req, &mut |s| writer.put(s))?;
-        let mut notes = Vec::new();
-        let asked = req.sheet.unwrap_or(SheetSize::A4);
-        if sheet != asked {
-            notes.push(format!(
-                "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {asked:?}: drawn on {sheet:?}",
-                an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
-            ));
-        }
-        let mut written = writer.finish()?;
-        notes.append(&mut written.notes);
-        written.notes = notes;
-        Ok(written)
+        let solved: &[Solved] = &self.positions;
+        let data = |needs| SheetData::solve(an, solved, needs);
+        let (writer, notes) = staged_sheets(self.study, &solved, &data, req)?;
+        Ok(Staged::Sheets(Box::new(writer), notes))
     }
+}
+
+/// The sheets `req` asks for of the positions `sweep` of `study` (held,
+/// or solved again as they are read), each handed to `sink` as it is
+/// drawn; `data`: what they draw beyond the positions, solved for the
+/// needs given ([`SheetData::solve`]). The sheet size used.
+pub(super) fn sheets_of(
+    study: &Study,
+    sweep: &dyn Sweep,
+    data: &dyn Fn(SheetNeeds) -> Result<SheetData>,
+    req: &DrawRequest,
+    sink: &mut dyn FnMut(Sheet) -> Result<()>,
+) -> Result<SheetSize> {
+    req.validate()?;
+    let an = &*study.analysis;
+    let only = req
+        .positions
+        .iter()
+        .map(|&k| super::prepared::position_index(an.numbering, k, sweep.len()))
+        .collect::<std::result::Result<Vec<usize>, String>>()
+        .map_err(|m| Error::scene("position", m))?;
+    let sizes = match req.sheet {
+        Some(s) => vec![s],
+        None => SheetSize::ALL.to_vec(),
+    };
+    let opt = req.options(study.lang());
+    // What the sheets draw beyond the positions (trajectories, extreme
+    // positions, the chosen positions, the diagrams) solved here, only
+    // for the sheets drawn: presentation never solves.
+    let data = data(drawing::sweep_needs(an, sweep, &opt, only.is_empty()))?;
+    drawing::sheets_on_each(an, sweep, &data, &opt, (&sizes, &only), sink)
+}
+
+/// [`sheets_of`] staged into `req.dir` ([`SheetWriter`]), with the notes
+/// for the user, to be put into place ([`finish`]).
+pub(super) fn staged_sheets(
+    study: &Study,
+    sweep: &dyn Sweep,
+    data: &dyn Fn(SheetNeeds) -> Result<SheetData>,
+    req: &DrawRequest,
+) -> Result<(SheetWriter, Vec<String>)> {
+    let an = &*study.analysis;
+    let mut writer = SheetWriter::new(&req.dir, req.format, req.dpi)?;
+    if !req.positions.is_empty() {
+        writer = writer.partial();
+    }
+    let sheet = sheets_of(study, sweep, data, req, &mut |s| writer.put(s))?;
+    let mut notes = Vec::new();
+    let asked = req.sheet.unwrap_or(SheetSize::A4);
+    if sheet != asked {
+        notes.push(format!(
+            "the drawing of the mechanism at μ_l = {} m/mm (want.scales.mu_l) does not fit sheet {asked:?}: drawn on {sheet:?}",
+            an.mech.scene.want.scales.mu_l.unwrap_or(an.mu_l),
+        ));
+    }
+    Ok((writer, notes))
+}
+
+/// What [`Solution::draw`] has done before the files are put into place.
+enum Staged {
+    /// Written (the handout).
+    Done(Written),
+    /// The sheets staged, and the notes on them.
+    Sheets(Box<SheetWriter>, Vec<String>),
+}
+
+/// The sheets staged put into place ([`SheetWriter::finish`]), `notes`
+/// before the writer's own.
+pub(super) fn finish(writer: SheetWriter, mut notes: Vec<String>) -> Result<Written> {
+    let mut written = writer.finish()?;
+    notes.append(&mut written.notes);
+    written.notes = notes;
+    Ok(written)
 }
 
 /// One solved position, read by name.
@@ -484,35 +523,14 @@ impl Study {
 
     /// Every position solved, in order.
     pub(super) fn solved(&self) -> Result<Vec<Solved>> {
-        self.solved_held(false)
-    }
-
-    /// [`Study::solved`], each position held `lean` ([`Solved::lean`],
-    /// made so as it is finished) where only the sheets will read it.
-    pub(super) fn solved_held(&self, lean: bool) -> Result<Vec<Solved>> {
         self.held()?;
-        let mut an = (*self.analysis).clone();
-        an.lean = lean;
+        let an = &*self.analysis;
         let mut out = Vec::with_capacity(an.mech.scene.positions.count());
-        self.each_of(&an, |s| {
+        self.each_of(an, |s| {
             out.push(s);
             Ok(())
         })?;
         Ok(out)
-    }
-
-    /// Draw the sheets (or the handout) into `req.dir`: the files written
-    /// and the notes for the user.
-    pub fn draw(&self, req: &DrawRequest) -> Result<Written> {
-        req.validate()?;
-        // A folder that cannot be written fails now, not after the sweep.
-        files::check_writable(&req.dir, &req.dir)?;
-        // The pipeline run once; the course sheet's scales chosen from it.
-        let (study, solved, lean) = self.solved_for_sheets(req)?;
-        match lean {
-            true => Solution::lean(&study, solved).draw(req),
-            false => Solution::new(&study, solved).draw(req),
-        }
     }
 
     /// Every position, solved as it is read (flat memory; see

@@ -6,11 +6,13 @@
 use crate::kinematics::construction::scale::Series;
 use super::canvas::Canvas;
 use super::layout::{
-    Pending, field_size, fill, fits, lower_scale, mechanism_bounds, mechanism_canvas,
+    Pending, field_size, fill, fits, lower_scale, mechanism_canvas,
     mechanism_extent, render,
 };
 use super::kind::SheetKind;
 use super::output::{DrawOptions, Sheet, SheetSize};
+use super::shared::{Scale, Shared, asked, mechanism_bounds, shared_scales};
+use super::sweep::{self, Sweep};
 use super::{course, course_forces, diagram, forces, lever, plan, positions, sheet, table};
 use super::{position_text, scale_text, words};
 use crate::error::{Error, Result};
@@ -21,46 +23,7 @@ use crate::presentation::position_number;
 use crate::pipeline::Solved;
 use crate::studies::sheet_data::{SheetData, SheetNeeds};
 use kurbo::Rect;
-use std::borrow::Cow;
 use std::collections::BTreeMap;
-
-/// A position as its own sheets read it, from the position held: itself,
-/// or where a long sweep is held lean ([`Solved::lean`]), with its plans
-/// built again by the caller (presentation never solves).
-pub type Finish<'f> = &'f dyn for<'s> Fn(usize, &'s Solved) -> Result<Cow<'s, Solved>>;
-
-/// Positions held whole: their sheets read them as they are.
-pub fn as_held(_: usize, s: &Solved) -> Result<Cow<'_, Solved>> {
-    Ok(Cow::Borrowed(s))
-}
-
-/// Whether the scene asks for drawing `d` (`want.drawings`; by default the
-/// plan of the mechanism and the plans wanted, plus the positions sheet
-/// when there are several positions).
-fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
-    let want = &an.mech.scene.want.drawings;
-    if want.is_empty() {
-        let has_vel = solved.first().is_some_and(|s| s.plans.is_some());
-        let has_acc = solved
-            .first()
-            .and_then(|s| s.plans.as_ref())
-            .is_some_and(|p| p.acceleration.is_some());
-        match d {
-            "mechanism" => true,
-            "velocity" => has_vel,
-            "acceleration" => has_acc,
-            "positions" => solved.len() > 1,
-            "lever" => solved.first().is_some_and(|s| s.dynamics.is_some()),
-            "forces" => solved
-                .first()
-                .and_then(|s| s.dynamics.as_ref())
-                .is_some_and(|d| d.force_plans.is_some()),
-            _ => false,
-        }
-    } else {
-        want.iter().any(|w| w == d)
-    }
-}
 
 /// What the sheets `opt` draws for `solved` need solved beyond the
 /// positions (`all`: every position's sheets are drawn, not only some):
@@ -68,7 +31,13 @@ fn asked(an: &Analysis, solved: &[Solved], d: &str) -> bool {
 /// chosen positions, the diagrams sheet and the course sheet the
 /// diagrams. The caller solves them ([`SheetData::solve`]) and hands them
 /// to [`sheets_on_each`], which only reads them.
+#[cfg(feature = "internals")]
 pub fn sheet_needs(an: &Analysis, solved: &[Solved], opt: &DrawOptions, all: bool) -> SheetNeeds {
+    sweep_needs(an, &solved, opt, all)
+}
+
+/// [`sheet_needs`] of a sweep ([`Sweep`]).
+pub fn sweep_needs(an: &Analysis, solved: &dyn Sweep, opt: &DrawOptions, all: bool) -> SheetNeeds {
     let course = opt.course || asked(an, solved, "course");
     SheetNeeds {
         trajectories: asked(an, solved, "positions") || course,
@@ -97,16 +66,6 @@ pub fn sheets(
     }
 }
 
-/// How the mechanism's scale is chosen.
-#[derive(Clone, Copy, PartialEq)]
-enum Scale {
-    /// The scene's μ_l (`want.scales.mu_l`) when it gives one.
-    Scene,
-    /// Chosen to fill, whatever the scene says ([`sheets`]).
-    #[cfg(feature = "internals")]
-    Fill,
-}
-
 /// The sheets, on the first of `sizes` whose field holds the mechanism's
 /// drawings at the μ_l the scene fixes (without one, the first size: the
 /// scale then fills it); with it, the size used. When a fixed μ_l fits
@@ -122,7 +81,7 @@ pub fn sheets_on(
     sizes: &[SheetSize],
 ) -> Result<(Vec<Sheet>, SheetSize)> {
     let mut sheets = Vec::new();
-    let size = sheets_on_each(an, (solved, &as_held), data, opt, (sizes, &[]), &mut |s| {
+    let size = sheets_on_each(an, &solved, data, opt, (sizes, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
@@ -134,11 +93,11 @@ pub fn sheets_on(
 /// `only` (positions from 0, none: all), only those positions' sheets,
 /// drawn at the scales of the whole set and numbered as in it. `data`:
 /// what [`sheet_needs`] names, solved by the caller (presentation never
-/// solves); a sheet without its data is an internal error. `finish`:
-/// how a position held is read by its own sheets ([`Finish`]).
+/// solves); a sheet without its data is an internal error. `solved`:
+/// the positions, held or solved again as they are read ([`Sweep`]).
 pub fn sheets_on_each(
     an: &Analysis,
-    (solved, finish): (&[Solved], Finish),
+    solved: &dyn Sweep,
     data: &SheetData,
     opt: &DrawOptions,
     (sizes, only): (&[SheetSize], &[usize]),
@@ -150,7 +109,7 @@ pub fn sheets_on_each(
             sheet: first,
             ..*opt
         };
-        compose_each(an, (solved, finish), data, &opt, (Scale::Scene, only), sink)?;
+        compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
         return Ok(first);
     };
     let t = match asked(an, solved, "positions") {
@@ -160,7 +119,7 @@ pub fn sheets_on_each(
     // Counted before anything is drawn: the joints alone at μ_l. A drawing
     // that no standard sheet could hold is refused at once (drawn at such
     // a scale, its hatching alone would run to millions of strokes).
-    let e = mechanism_extent(an, solved);
+    let e = mechanism_extent(an, solved.configs());
     let joints = Rect::new(0.0, 0.0, e.width() / mu_l, e.height() / mu_l);
     let largest = DrawOptions {
         sheet: SheetSize::ALL[SheetSize::ALL.len() - 1],
@@ -169,14 +128,14 @@ pub fn sheets_on_each(
     if !solved.is_empty() && !fits(joints, field_size(&largest, 0.0)) {
         return Err(misfit(an, solved, opt, sizes, (joints, true), mu_l, t));
     }
-    let u = mechanism_union(an, solved, opt, mu_l, t);
+    let u = mechanism_union(an, solved, opt, mu_l, t)?;
     for &size in sizes {
         let opt = DrawOptions {
             sheet: size,
             ..*opt
         };
         if solved.is_empty() || fits(u, field_size(&opt, 0.0)) {
-            compose_each(an, (solved, finish), data, &opt, (Scale::Scene, only), sink)?;
+            compose_each(an, solved, data, &opt, (Scale::Scene, only), sink)?;
             return Ok(size);
         }
     }
@@ -187,18 +146,19 @@ pub fn sheets_on_each(
 /// plan of the mechanism and, with trajectories `t`, the positions sheet.
 fn mechanism_union(
     an: &Analysis,
-    solved: &[Solved],
+    solved: &dyn Sweep,
     opt: &DrawOptions,
     mu_l: f64,
     t: Option<positions::Drawn>,
-) -> Rect {
-    let mut u = mechanism_bounds(an, solved, opt, mu_l);
+) -> Result<Rect> {
+    let mut u = mechanism_bounds(an, solved, opt, &[mu_l])?[0];
     if let Some(t) = t {
         let mut c = Canvas::default();
-        positions::draw(an, solved, t, &mut c, mu_l);
+        let configs = solved.configs();
+        positions::draw(an, (sweep::at(solved, t.bold)?, &configs), t, &mut c, mu_l);
         u = u.union(c.bounds());
     }
-    u
+    Ok(u)
 }
 
 /// Why the mechanism's drawings at the scene's μ_l do not fit any of
@@ -206,7 +166,7 @@ fn mechanism_union(
 /// bound of it (the joints alone, when they fit no sheet).
 fn misfit(
     an: &Analysis,
-    solved: &[Solved],
+    solved: &dyn Sweep,
     opt: &DrawOptions,
     sizes: &[SheetSize],
     (u, at_least): (Rect, bool),
@@ -218,12 +178,12 @@ fn misfit(
     let last = sizes.last().copied().unwrap_or(opt.sheet);
     let area_of = |sheet| field_size(&DrawOptions { sheet, ..*opt }, 0.0);
     let (aw, ah) = area_of(first);
-    let e = mechanism_extent(an, solved);
+    let e = mechanism_extent(an, solved.configs());
     let mu = fill(
         Series::Drawing,
         lower_scale(e.width(), e.height(), (aw, ah)),
         (aw, ah),
-        |mu| Some(mechanism_union(an, solved, opt, mu, t)),
+        |mu| mechanism_union(an, solved, opt, mu, t).ok(),
         |r| *r,
     )
     .map(|(mu, _)| mu)
@@ -276,19 +236,11 @@ fn compose(
     how: Scale,
 ) -> Result<Vec<Sheet>> {
     let mut sheets = Vec::new();
-    compose_each(an, (solved, &as_held), data, opt, (how, &[]), &mut |s| {
+    compose_each(an, &solved, data, opt, (how, &[]), &mut |s| {
         sheets.push(s);
         Ok(())
     })?;
     Ok(sheets)
-}
-
-/// The scales every position's sheets share, found before any of them is
-/// drawn: the positions sheet's μ_l and drawing, and the plan of the
-/// mechanism's μ_l with the box all positions' drawings are centred on.
-struct Shared {
-    positions: Option<(f64, Canvas)>,
-    mechanism: Option<(f64, Rect)>,
 }
 
 /// [`compose`], each sheet handed to `sink` as soon as it is rendered and
@@ -300,7 +252,7 @@ struct Shared {
 /// diagrams sheets are left out (counted in the numbering all the same).
 fn compose_each(
     an: &Analysis,
-    (solved, finish): (&[Solved], Finish),
+    solved: &dyn Sweep,
     data: &SheetData,
     opt: &DrawOptions,
     (how, only): (Scale, &[usize]),
@@ -312,8 +264,9 @@ fn compose_each(
     let mut lead = 0;
     if opt.course || asked(an, solved, "course") {
         lead += 1;
-        let course = course::sheet(an, solved, data, opt)?;
-        let forces = course_forces::sheet(an, solved, data, opt)?;
+        let held = sweep::held(solved)?;
+        let course = course::sheet(an, held, data, opt)?;
+        let forces = course_forces::sheet(an, held, data, opt)?;
         lead += usize::from(forces.is_some());
         if all {
             sink(course)?;
@@ -326,7 +279,7 @@ fn compose_each(
     // `None`), counted when the numbers are needed.
     let mut counts: BTreeMap<Option<usize>, usize> = BTreeMap::new();
     if opt.title_block {
-        figures(an, (solved, finish), opt, &shared, &|_| true, &mut |at, _| {
+        figures(an, solved, opt, &shared, &|_| true, &mut |at, _| {
             *counts.entry(at).or_default() += 1;
             Ok(())
         })?;
@@ -334,7 +287,7 @@ fn compose_each(
     let n: usize = counts.values().sum();
     let chosen = |at: Option<usize>| all || at.is_some_and(|k| only.contains(&k));
     let (mut last, mut within) = (None, 0);
-    figures(an, (solved, finish), opt, &shared, &chosen, &mut |at, p| {
+    figures(an, solved, opt, &shared, &chosen, &mut |at, p| {
         if last != Some(at) {
             (last, within) = (Some(at), 0);
         }
@@ -352,57 +305,12 @@ fn compose_each(
     Ok(())
 }
 
-/// The scales of the sheets every position shares ([`Shared`]).
-fn shared_scales(
-    an: &Analysis,
-    solved: &[Solved],
-    data: &SheetData,
-    opt: &DrawOptions,
-    how: Scale,
-) -> Result<Shared> {
-    let fixed_l = match how {
-        Scale::Scene => an.mech.scene.want.scales.mu_l,
-        #[cfg(feature = "internals")]
-        Scale::Fill => None,
-    };
-    let field = field_size(opt, 0.0);
-    let extent = mechanism_extent(an, solved);
-    let lower = lower_scale(extent.width(), extent.height(), field);
-    let mut out = Shared {
-        positions: None,
-        mechanism: None,
-    };
-    if solved.is_empty() {
-        return Ok(out);
-    }
-    if asked(an, solved, "positions") {
-        let t = positions::given(data, solved.len())?;
-        let draw = |mu: f64| {
-            let mut c = Canvas::default();
-            positions::draw(an, solved, t, &mut c, mu);
-            Some(c)
-        };
-        out.positions = Some(match fixed_l {
-            Some(mu) => (mu, draw(mu).unwrap_or_default()),
-            None => fill(Series::Drawing, lower, field, draw, |c| c.bounds()).ok_or_else(too_large)?,
-        });
-    }
-    if asked(an, solved, "mechanism") {
-        let bounds = |mu: f64| Some(mechanism_bounds(an, solved, opt, mu));
-        out.mechanism = Some(match fixed_l {
-            Some(mu) => (mu, mechanism_bounds(an, solved, opt, mu)),
-            None => fill(Series::Drawing, lower, field, bounds, |r| *r).ok_or_else(too_large)?,
-        });
-    }
-    Ok(out)
-}
-
 /// Every figure to render, in the order of the sheets, to `emit`: the
 /// positions sheet, then per position its plan of the mechanism and the
 /// rest of its sheets, each position as `finish` gives it.
 fn figures(
     an: &Analysis,
-    (solved, finish): (&[Solved], Finish),
+    solved: &dyn Sweep,
     opt: &DrawOptions,
     shared: &Shared,
     chosen: &dyn Fn(Option<usize>) -> bool,
@@ -418,8 +326,7 @@ fn figures(
             c.clone(),
         ))?;
     }
-    for (k, held) in solved.iter().enumerate().filter(|(k, _)| chosen(Some(*k))) {
-        let s = &*finish(k, held)?;
+    solved.each(&|k| chosen(Some(k)), &mut |k, s| {
         let pos = position_text(an, s, k, opt.lang);
         if let Some((mu_l, centre_on)) = shared.mechanism {
             emit(Some(k), Pending {
@@ -436,8 +343,8 @@ fn figures(
         for p in position_sheets(an, solved, (k, s), opt)? {
             emit(Some(k), p)?;
         }
-    }
-    Ok(())
+        Ok(())
+    })
 }
 
 /// A sheet to render: its name, title, scale text and the scale its
@@ -465,7 +372,7 @@ fn pending(
 /// mechanism: the plans asked for, the forces, then Zhukovsky's lever.
 fn position_sheets(
     an: &Analysis,
-    solved: &[Solved],
+    solved: &dyn Sweep,
     (k, s): (usize, &Solved),
     opt: &DrawOptions,
 ) -> Result<Vec<Pending>> {
@@ -537,9 +444,6 @@ fn position_sheets(
     Ok(out)
 }
 
-fn too_large() -> Error {
-    Error::Internal("no standard scale up to a million times the first fits the sheet".into())
-}
 
 /// The solved plan of `kind` at position `s`, the extent of its points
 /// (mm, the pole included) and the field it is drawn in (beside its table
@@ -597,7 +501,7 @@ fn fitting_scale(
 /// the smallest standard scale that fits every position (drawn at a scale
 /// of a millionth of the right one, a plan's dashed lines alone would
 /// take gigabytes).
-fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Result<()> {
+fn fixed_plan_scales(an: &Analysis, solved: &dyn Sweep, opt: &DrawOptions) -> Result<()> {
     for kind in [PlanKind::Velocity, PlanKind::Acceleration] {
         let (fixed, name, sym, unit, key) = match kind {
             PlanKind::Velocity => (an.drafting.mu_v, "velocity", "v", "(m/s)/mm", "mu_v"),
@@ -607,7 +511,7 @@ fn fixed_plan_scales(an: &Analysis, solved: &[Solved], opt: &DrawOptions) -> Res
         if !asked(an, solved, name) {
             continue;
         }
-        let drawn: Vec<(usize, &Solved)> = solved
+        let drawn: Vec<(usize, &Solved)> = sweep::held(solved)?
             .iter()
             .enumerate()
             .filter(|(_, s)| {

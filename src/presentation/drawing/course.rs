@@ -479,7 +479,7 @@ fn natural(cx: &Ctx, src: &Source) -> Option<(f64, f64, f64)> {
     match src {
         Source::Fixed(_) => None,
         Source::Positions(_) => {
-            let e = super::mechanism_extent(cx.an, cx.solved);
+            let e = super::mechanism_extent(cx.an, cx.solved.iter().map(|s| &s.config));
             let aspect = (e.width() / e.height().max(1e-12)).clamp(0.5, 3.0);
             Some((aspect, e.width(), e.height()))
         }
@@ -525,7 +525,9 @@ fn draw(cx: &Ctx, src: &Source, mu: f64) -> Option<Figure> {
         Source::Fixed(f) => Some((**f).clone()),
         Source::Positions(t) => {
             let mut c = Canvas::default();
-            positions::draw(an, solved, *t, &mut c, mu);
+            let configs: Vec<_> = solved.iter().map(|s| &s.config).collect();
+            let bold = solved.get(t.bold)?;
+            positions::draw(an, (bold, &configs), *t, &mut c, mu);
             Some(Figure {
                 id: "positions".into(),
                 caption: vec![format!(

@@ -11,33 +11,29 @@ pub use render::{pdf, pdf_book, png};
 pub use render::tree;
 #[cfg(not(feature = "render"))]
 pub use unrendered::{pdf, pdf_book, png};
-use std::path::PathBuf;
 
 /// The manifest's file name.
 pub const MANIFEST: &str = "sheets.json";
 /// The PDF book's file name (`--format pdf`).
 pub const BOOK: &str = "sheets.pdf";
 
-/// The manifest of a run: every file written, each sheet's title and
-/// scales.
-pub fn manifest(sheets: &[Sheet], files: &[PathBuf], format: Format) -> String {
-    let name = |p: &PathBuf| {
-        p.file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default()
-    };
-    // Each sheet's entry made and printed on its own (a run of thousands
-    // of sheets holds their text, not a tree of them), indented into the
-    // document as the document printed whole is.
-    let mut text = String::from("{\n  \"mechplan\": 1,\n  \"sheets\": [");
-    let mut listed = 0;
-    for (s, f) in sheets.iter().zip(files) {
-        let entry = serde_json::to_string_pretty(&sheet_entry(s, &name(f))).unwrap_or_default();
-        text += if listed == 0 { "\n    " } else { ",\n    " };
-        text += &entry.replace('\n', "\n    ");
-        listed += 1;
-    }
-    text += if listed == 0 { "]" } else { "\n  ]" };
+/// How the manifest of a run (every file written, each sheet's title
+/// and scales) starts, before its sheets' entries.
+pub const MANIFEST_HEAD: &str = "{\n  \"mechplan\": 1,\n  \"sheets\": [";
+
+/// Sheet `s`'s entry in the manifest, written to `file`, after `listed`
+/// others: made and printed on its own (a run of thousands of sheets
+/// writes their text as it goes, not a tree of them), indented into the
+/// document as the document printed whole is.
+pub fn manifest_entry(s: &Sheet, file: &str, listed: usize) -> String {
+    let entry = serde_json::to_string_pretty(&sheet_entry(s, file)).unwrap_or_default();
+    let lead = if listed == 0 { "\n    " } else { ",\n    " };
+    format!("{lead}{}", entry.replace('\n', "\n    "))
+}
+
+/// How the manifest of `listed` sheets ends.
+pub fn manifest_tail(listed: usize, format: Format) -> String {
+    let mut text = String::from(if listed == 0 { "]" } else { "\n  ]" });
     if format == Format::Pdf {
         text += &format!(",\n  \"book\": \"{BOOK}\"");
     }

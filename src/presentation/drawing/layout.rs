@@ -10,6 +10,7 @@ use super::table::{self, number};
 use super::{centres, mechanism};
 use crate::kinematics::construction::Field;
 use crate::kinematics::construction::scale::{Series, drawing_reduction};
+use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::Analysis;
 use crate::pipeline::Solved;
 use kurbo::{Point, Rect};
@@ -53,8 +54,12 @@ pub(super) fn fits(u: Rect, (aw, ah): (f64, f64)) -> bool {
     u.width() <= aw && u.height() <= ah
 }
 
-/// The real extent of the mechanism's shown points over `solved` (m).
-pub(crate) fn mechanism_extent(an: &Analysis, solved: &[Solved]) -> Rect {
+/// The real extent of the mechanism's shown points over the positions of
+/// `configs` (m).
+pub(crate) fn mechanism_extent<'c>(
+    an: &Analysis,
+    configs: impl IntoIterator<Item = &'c Configuration>,
+) -> Rect {
     let m = &an.mech;
     let mut r: Option<Rect> = None;
     // The points drawn: those of moving links, and the frame's pivots (a
@@ -63,10 +68,10 @@ pub(crate) fn mechanism_extent(an: &Analysis, solved: &[Solved]) -> Rect {
         let ls = m.links_of_point(p);
         ls.iter().any(|&l| l != m.frame() && an.link(l)) || ls.len() >= 2
     };
-    for s in solved {
+    for config in configs {
         for p in (0..m.scene.points.len()).filter(|&p| drawn(p)) {
             if let Some(&l) = m.links_of_point(p).iter().find(|&&l| an.link(l)) {
-                let q = s.config.point(m, l, p);
+                let q = config.point(m, l, p);
                 let b = Rect::from_points(q, q);
                 r = Some(r.map_or(b, |x| x.union(b)));
             }
@@ -84,16 +89,6 @@ pub(super) fn mechanism_canvas(an: &Analysis, s: &Solved, opt: &DrawOptions, mu_
     }
     c.place_pending();
     c
-}
-
-/// The box every position's plan of the mechanism at `mu_l` fits in,
-/// each drawn and dropped in turn.
-pub(super) fn mechanism_bounds(an: &Analysis, solved: &[Solved], opt: &DrawOptions, mu_l: f64) -> Rect {
-    solved
-        .iter()
-        .map(|s| mechanism_canvas(an, s, opt, mu_l).bounds())
-        .reduce(|a, b| a.union(b))
-        .unwrap_or(Rect::ZERO)
 }
 
 /// How far a plan's letters reach beyond its points, mm: the margin its

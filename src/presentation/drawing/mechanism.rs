@@ -8,6 +8,7 @@ use super::canvas::{Canvas, Class, FONT, Label, MAIN, SMALL, THIN};
 use super::rate_arc::{obstacles, rate_arc};
 use super::wall::{BLOCK, Block, Wall, crossing_at, draw_wall};
 use crate::geom::perp;
+use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::Analysis;
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
@@ -70,7 +71,7 @@ pub fn draw(an: &Analysis, s: &Solved, c: &mut Canvas, mu_l: f64, with_labels: b
 pub fn draw_over(
     an: &Analysis,
     s: &Solved,
-    stroke: &[Solved],
+    stroke: &[&Configuration],
     c: &mut Canvas,
     mu_l: f64,
     with_labels: bool,
@@ -333,7 +334,7 @@ impl<'a> Scheme<'a> {
     /// The frame's guides: one line and one hatched wall for all the
     /// sliders on one line (two pistons in one cylinder share their wall),
     /// with the sliders' places in every position of `stroke` too.
-    fn walls(&self, stroke: &[Solved]) -> Vec<Wall> {
+    fn walls(&self, stroke: &[&Configuration]) -> Vec<Wall> {
         let m = self.m;
         let mut walls: Vec<Wall> = Vec::new();
         for pr in &m.prismatics {
@@ -354,7 +355,7 @@ impl<'a> Scheme<'a> {
             };
             walls[i].2.push((pr.slider, q));
             for o in stroke {
-                let p = o.config.point(m, pr.slider, pr.point);
+                let p = o.point(m, pr.slider, pr.point);
                 walls[i].2.push((pr.slider, self.to(p)));
             }
         }

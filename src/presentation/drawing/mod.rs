@@ -42,6 +42,8 @@ pub mod plan;
 pub mod positions;
 mod rate_arc;
 pub mod sheet;
+mod shared;
+mod sweep;
 pub mod table;
 mod wall;
 
@@ -52,7 +54,10 @@ pub use export::{pdf, pdf_book, png};
 pub(crate) use captions::{position_text, scale_label, scale_text, words};
 #[cfg(feature = "internals")]
 pub use compose::{sheets, sheets_on};
-pub use compose::{Finish, as_held, sheet_needs, sheets_on_each};
+#[cfg(feature = "internals")]
+pub use compose::sheet_needs;
+pub use compose::{sheets_on_each, sweep_needs};
+pub use sweep::Sweep;
 pub use layout::plan_field;
 pub(crate) use layout::{Pending, field_size, fill, lower_scale, mechanism_extent, page_svg, reduction, main_title_block, title_block};
 pub use kind::SheetKind;

@@ -17,16 +17,18 @@ use crate::studies::sheet_data::SheetData;
 use crate::studies::trajectories::{Trajectories, crank_tip};
 use kurbo::Point;
 
-/// The positions sheet's drawing of `solved` at `mu_l`, with their
-/// trajectories `t` ([`crate::studies::trajectories::trajectories`]).
-pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f64) {
+/// The positions sheet's drawing at `mu_l` of the positions whose
+/// configurations are `solved`, the one drawn bold (`d.bold`) given
+/// whole, with their trajectories `d.t`
+/// ([`crate::studies::trajectories::trajectories`]).
+pub fn draw(an: &Analysis, (bold_at, solved): (&Solved, &[&Configuration]), d: Drawn, c: &mut Canvas, mu_l: f64) {
     let (t, bold) = (d.t, d.bold);
     let m = &an.mech;
     if solved.is_empty() {
         return;
     }
     let to = |p: Point| Point::new(p.x / mu_l, p.y / mu_l);
-    super::mechanism::draw_over(an, &solved[bold], solved, c, mu_l, true);
+    super::mechanism::draw_over(an, bold_at, solved, c, mu_l, true);
     let input = m.scene.input.link();
     let tip = crank_tip(m);
     let every = numbering_step(solved.len());
@@ -70,14 +72,14 @@ pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f6
     // and the sheet's size stays that of 24.
     for (k, s) in solved.iter().enumerate() {
         if k != bold && k % every == 0 {
-            bodies(c, &s.config, Line::Thin);
+            bodies(c, s, Line::Thin);
         }
         // Number the positions as the sheet does (the lecture's 0 … 11 for
         // a `count` sweep), at the input's moving point.
         if let Some(p) = tip
             && k % every == 0
         {
-            let at = to(s.config.point(m, input, p));
+            let at = to(s.point(m, input, p));
             c.circle(at, 0.4, "black", 0.0);
             c.label_later(
                 at,
@@ -96,13 +98,13 @@ pub fn draw(an: &Analysis, solved: &[Solved], d: Drawn, c: &mut Canvas, mu_l: f6
         }
         let moves = solved.windows(2).any(|w| {
             let (a, b) = (
-                w[0].config.point(m, pr.slider, pr.point),
-                w[1].config.point(m, pr.slider, pr.point),
+                w[0].point(m, pr.slider, pr.point),
+                w[1].point(m, pr.slider, pr.point),
             );
             (b - a).hypot() / mu_l > 0.5
         });
         for (k, s) in solved.iter().enumerate() {
-            let at = to(s.config.point(m, pr.slider, pr.point));
+            let at = to(s.point(m, pr.slider, pr.point));
             c.circle(at, 0.5, "black", 0.0);
             if moves && k % every == 0 {
                 c.label_later(
