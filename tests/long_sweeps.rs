@@ -226,3 +226,34 @@ fn drawing_refuses_a_count_beyond_what_it_holds() {
     assert!(stderr(&o).contains("/positions/count"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The library's `Analysis::run` holds every position: a count beyond
+/// what it holds is refused at once, naming the field, where
+/// `run_each` streams any count.
+#[test]
+fn the_library_run_refuses_a_count_it_cannot_hold() {
+    let path = format!("{}/fixtures/four_bar.json", env!("CARGO_MANIFEST_DIR"));
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["positions"]["count"] = serde_json::json!(200_000);
+    let an = mechplan::Analysis::new(mechplan::scene::Scene::from_json(&v.to_string()).unwrap())
+        .unwrap();
+    let t = std::time::Instant::now();
+    let e = an.run().expect_err("200 000 positions held").to_string();
+    assert!(t.elapsed().as_secs_f64() < 1.0, "refused before solving");
+    assert!(
+        e.contains("/positions/count") && e.contains("run_each"),
+        "{e}"
+    );
+    // The same scene streams.
+    let mut n = 0;
+    an.run_each(|_| {
+        n += 1;
+        if n == 50 {
+            return Err(mechplan::Error::scene("/stop", "enough"));
+        }
+        Ok(())
+    })
+    .expect_err("stopped after 50");
+    assert_eq!(n, 50);
+}

@@ -53,7 +53,21 @@ impl Analysis {
     /// ([`crate::progress::map_on`], a chunk at a time). The result, and
     /// the first error in the order of the positions, are those of a
     /// sequential run.
+    ///
+    /// Every position is held: a sweep of more than
+    /// [`MAX_POSITIONS`](crate::model::scene::MAX_POSITIONS) is refused
+    /// (naming `/positions/count`); [`Analysis::run_each`] takes any count.
     pub fn run(&self) -> Result<Vec<Solved>> {
+        use crate::model::scene::MAX_POSITIONS;
+        let n = self.mech.scene.positions.count();
+        if n > MAX_POSITIONS {
+            return Err(crate::error::Error::scene(
+                "/positions/count",
+                format!(
+                    "{n} positions: Analysis::run holds every position and takes at most {MAX_POSITIONS}; Analysis::run_each hands each over as it is solved and takes any count"
+                ),
+            ));
+        }
         let mut out = Vec::new();
         self.run_each(|s| {
             out.push(s);

@@ -46,9 +46,10 @@ fn listed(dir: &Path) -> Vec<String> {
 }
 
 /// Whether `f` names a file in the folder itself: a manifest or a journal
-/// is no licence to move or remove anything elsewhere.
+/// is no licence to move or remove anything elsewhere (a drive letter,
+/// `C:x`, names another folder on Windows; mechplan's names have no `:`).
 fn plain_name(f: &str) -> bool {
-    !f.is_empty() && !f.contains(['/', '\\']) && f != ".." && f != "."
+    !f.is_empty() && !f.contains(['/', '\\', ':', '\0']) && f != ".." && f != "."
 }
 
 /// Write every sheet into `dir` in `format` (with the PDF book of them
@@ -498,4 +499,21 @@ fn looks_like_a_sheet(p: &Path) -> bool {
     }
     // A sheet by its kind, or the document of them all.
     SheetKind::parse(stem).is_some() || stem == "sheets"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::plain_name;
+
+    #[test]
+    fn only_names_in_the_folder_itself_are_plain() {
+        for good in ["sheet-01.svg", "sheets.json", "a b.pdf", "..x"] {
+            assert!(plain_name(good), "{good}");
+        }
+        for bad in [
+            "", ".", "..", "../x", "a/b", "a\\b", "C:x", "C:\\x", "/x", "x\0y",
+        ] {
+            assert!(!plain_name(bad), "{bad:?}");
+        }
+    }
 }
