@@ -314,25 +314,36 @@ fn answer(an: &Analysis, s: &Solved, k: usize, mu: f64) -> ForceAnswer {
 }
 
 /// `check` judges an answer read off the class III plan (never "no force
-/// plans"): right at every position; a segment half as long again wrong.
+/// plans"): right at every position; its longest segment half as long
+/// again wrong.
 #[test]
 fn check_judges_a_class3_force_answer() {
     let (an, solved) = solved_of(&fixture());
+    // Each position at the plan's own standard μ_F (the forces grow
+    // tenfold towards the dead point).
+    let mu = |k: usize, s: &Solved| {
+        let fp = force_plan::solve(&an, s, &loads::loads(&an, s, k), 0.5).unwrap();
+        triad_plan(&an, &fp).1.mu
+    };
     for (k, s) in solved.iter().enumerate() {
-        let ans = answer(&an, s, k, 4.0);
+        let ans = answer(&an, s, k, mu(k, s));
         let r = check(&an, &solved, &ans).unwrap();
         let text = mechplan::presentation::verdict::force_to_text(&r);
         assert_eq!(r.wrong(), 0, "position {}: {text}", k + 1);
         assert_eq!(r.verdicts.len(), 12, "{text}");
+        // Its longest reaction half as long again.
         let mut wrong = ans.clone();
-        wrong.segments[0].2 *= 1.5;
+        let longest = (0..wrong.segments.len())
+            .max_by(|&a, &b| wrong.segments[a].2.total_cmp(&wrong.segments[b].2))
+            .unwrap();
+        wrong.segments[longest].2 *= 1.5;
         assert!(check(&an, &solved, &wrong).unwrap().wrong() >= 1);
     }
     // The command: the answer judged, status 0 (right) or 4 (not all
     // judged), not refused (2).
     let dir = std::env::temp_dir().join(format!("mechplan_class3_check_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let a = answer(&an, &solved[3], 3, 4.0);
+    let a = answer(&an, &solved[3], 3, mu(3, &solved[3]));
     let seg: serde_json::Map<String, serde_json::Value> = a
         .segments
         .iter()
@@ -380,4 +391,37 @@ fn draw_writes_the_class3_force_sheets() {
         assert!(svg.contains("-polygon"), "position {n}: no polygon");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Towards the group's dead point (its three leash axes meeting in one
+/// point near φ1 = 34.6°: Σ's arm to the third axis vanishes, the
+/// reactions and the inertia forces grow without bound) the plan still
+/// agrees with the links' equilibrium to 1e-9 of the position's largest
+/// force, every reaction within its stated bound; past it the position is
+/// refused, never a number.
+#[test]
+fn towards_the_dead_point_bounded_then_refused() {
+    let mut v = fixture();
+    v["positions"] = serde_json::json!({ "angles": [33, 34, 34.4, 34.5, 34.52] });
+    let (an, solved) = solved_of(&v);
+    for (k, s) in solved.iter().enumerate() {
+        let loads = loads::loads(&an, s, k);
+        let ne = newton_euler::solve(&an, s, &loads).unwrap();
+        let fp = force_plan::solve(&an, s, &loads, 0.5).unwrap();
+        let scale = s.dynamics.as_ref().unwrap().force_scale;
+        let (_, plan) = triad_plan(&an, &fp);
+        for step in &plan.steps {
+            let ForceStep::Measure(i) = *step else {
+                continue;
+            };
+            let v = plan.vectors[i];
+            let d = (v.value - analytic(&an, &ne, v.force).unwrap()).hypot();
+            let bound = (plan.err[v.from] + plan.err[v.to] + plan.delta) * plan.mu;
+            assert!(d <= bound && d <= 1e-9 * scale, "position {k}: {d}");
+        }
+    }
+    v["positions"] = serde_json::json!({ "angles": [33, 34.5, 34.6] });
+    let an = Analysis::new(Scene::from_json(&v.to_string()).unwrap()).unwrap();
+    let e = an.run().unwrap_err().to_string();
+    assert!(e.contains("class III"), "{e}");
 }
