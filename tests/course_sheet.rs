@@ -360,6 +360,7 @@ fn force_course_sheets_pass_the_layout_checks() {
         "shaper_fig2_11",
         "compressor_fig2_12",
         "worked_slider_crank",
+        "class3_004",
     ] {
         let path = format!(
             "{}/fixtures/dynamics/{name}.json",

@@ -20,6 +20,7 @@ const DYNAMICS: &[&str] = &[
     "compressor_fig2_12",
     "arm_two_cylinders",
     "worked_slider_crank",
+    "class3_004",
 ];
 
 /// The least share of its box's width or height a polygon spans.

@@ -21,6 +21,7 @@ const DYNAMICS: &[&str] = &[
     "compressor_fig2_12",
     "arm_two_cylinders",
     "worked_slider_crank",
+    "class3_004",
 ];
 
 fn solve(name: &str, lang: Lang) -> (mechplan::Analysis, Vec<mechplan::Solved>, Vec<Sheet>) {

@@ -48,9 +48,9 @@ pub struct Dynamics {
     /// The largest force at the position (N; a couple counted over the
     /// mechanism's size): the scale of its residuals.
     pub force_scale: f64,
-    /// The force plans, group by group (`None` with a class III group:
-    /// no scheme draws it), and their largest disagreement with the
-    /// links' equilibrium, relative to `force_scale`.
+    /// The force plans, group by group (class III groups by Assur's
+    /// point), and their largest disagreement with the links'
+    /// equilibrium, relative to `force_scale`.
     pub force_plans: Option<force_plan::ForcePlans>,
     pub force_plans_diff: Option<f64>,
 }
@@ -114,10 +114,8 @@ pub fn analyse(an: &Analysis, s: &Position, k: usize) -> Result<Option<Dynamics>
             ),
         ));
     }
-    let (force_plans, force_plans_diff) = match plans(an, s, &loads, &x, scale)? {
-        Some((p, d)) => (Some(p), Some(d)),
-        None => (None, None),
-    };
+    let (p, d) = plans(an, s, &loads, &x, scale)?;
+    let (force_plans, force_plans_diff) = (Some(p), Some(d));
     let lever = lever::check(an, s, &loads, &balancing, &floors)?;
     Ok(Some(Dynamics {
         loads,
@@ -245,8 +243,8 @@ fn balancing_diff(balancing: &[Balancing], vp: &power::VirtualPower, floors: &[f
 }
 
 /// The force plans at position `s` and their largest disagreement with the
-/// links' equilibrium `x` (relative to `scale`); `None` with a class III
-/// group. Refused where they disagree by more than
+/// links' equilibrium `x` (relative to `scale`). Refused where they
+/// disagree by more than
 /// `accuracy::max_balancing_diff`.
 fn plans(
     an: &Analysis,
@@ -254,17 +252,8 @@ fn plans(
     loads: &[Load],
     x: &newton_euler::Unknowns,
     scale: f64,
-) -> Result<Option<(force_plan::ForcePlans, f64)>> {
-    use crate::model::structure::AssurGroup;
+) -> Result<(force_plan::ForcePlans, f64)> {
     let m = &an.mech;
-    if an
-        .structure
-        .groups
-        .iter()
-        .any(|g| matches!(g, AssurGroup::Triad(_)))
-    {
-        return Ok(None);
-    }
     let fp = force_plan::solve(an, s, loads, an.drafting.delta)?;
     let size = m.size;
     let mut diff: f64 = 0.0;
@@ -299,5 +288,5 @@ fn plans(
             ),
         ));
     }
-    Ok(Some((fp, diff)))
+    Ok((fp, diff))
 }

@@ -41,11 +41,18 @@ fn links_words(an: &Analysis, links: &[usize], w: &Phrases) -> String {
     format!("{word} {}", ids.join(", "))
 }
 
-/// The point a moment is taken about: its name, else its coordinates.
-fn about_words(an: &Analysis, step_about: (kurbo::Point, Option<usize>)) -> String {
+/// The point a moment is taken about: its name, else (a class III
+/// group's Assur point, where two leashes' axes meet) Σ and its
+/// coordinates, separated by "; " where the decimal mark is a comma.
+fn about_words(an: &Analysis, step_about: (kurbo::Point, Option<usize>), lang: Lang) -> String {
     match step_about.1 {
         Some(p) => an.mech.point_name(p).to_string(),
-        None => format!("({}, {})", num(step_about.0.x), num(step_about.0.y)),
+        None => {
+            let comma = super::catalogue::catalogue(lang).units.decimal == ",";
+            let sep = if comma { "; " } else { ", " };
+            let (x, y) = (num(step_about.0.x), num(step_about.0.y));
+            format!("Σ({x}{sep}{y})")
+        }
     }
 }
 
@@ -133,7 +140,7 @@ impl Step<'_> {
                 force,
                 value,
             } => {
-                let at = about_words(self.an, (*about, *about_name));
+                let at = about_words(self.an, (*about, *about_name), self.lang);
                 let what = links_words(self.an, links, w);
                 let (f, value) = (self.name(*force), num(*value));
                 let args = [("at", &*at), ("what", &what), ("f", &f), ("value", &value), ("n", n)];

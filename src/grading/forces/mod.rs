@@ -270,7 +270,7 @@ pub fn check_in(
     let Some(fp) = s.dynamics.as_ref().and_then(|d| d.force_plans.as_ref()) else {
         return Err(Error::scene(
             "/plan",
-            "the scene has no force plans to check against: it needs a dynamics object (and no class III group)",
+            "the scene has no force plans to check against: it needs a dynamics object",
         ));
     };
     let right_loads = s.dynamics.as_ref().map_or(&[][..], |d| &d.loads[..]);

@@ -19,14 +19,18 @@
 //!
 //! Every plan point carries a drafting error radius (δ per vector laid
 //! off, amplified by 1/sin θ where two lines meet), as the kinematic plans
-//! do; the reactions are measured off the plan. Class III groups have no
-//! scheme here: their reactions come from the links' equilibrium only.
+//! do; the reactions are measured off the plan. A class III group
+//! (`triad`): each leash's tangential component from its moments about
+//! its joint on the base, the third leash's normal component from the
+//! group's moments about Assur's point (where two leashes' axes meet),
+//! the polygon closed along those two axes, the inner reactions read off.
 
 mod draft;
 mod dyad;
 mod input;
 mod known;
 mod plan;
+mod triad;
 
 use known::Applied;
 #[cfg(feature = "internals")]
@@ -34,7 +38,7 @@ pub use plan::{Drawn, DrawnLine};
 pub use plan::{Force, ForcePlan, ForcePlans, ForceStep, Part, Slip};
 
 use super::loads::Load;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::kinematics::construction::Field;
 use crate::kinematics::positions::describe_input;
 use crate::kinematics::solve::{Analysis, Position};
@@ -122,16 +126,17 @@ pub fn solve_slipped(
     for stage in st.stages.iter().rev() {
         match *stage {
             Stage::Group(g) => {
-                let AssurGroup::Dyad(d) = &st.groups[g] else {
-                    return Err(Error::structure(
-                        "mechplan draws no force plan of a class III group (its reactions come from the links' equilibrium only)",
-                    ));
-                };
                 let mu = |pts: &[Vec2]| scale_of(Which::Group(g), pts);
                 let slip = slip_in(Which::Group(g));
                 neighbours_slipped(&mut known, slip);
-                let plan =
-                    dyad::group_plan(an, s, d, (&mut known, &mut out), (delta, &mu, slip), &at)?;
+                let sheet = (&mut known, &mut out);
+                // (τ's slips are drawn for a dyad's scheme only)
+                let plan = match &st.groups[g] {
+                    AssurGroup::Dyad(d) => {
+                        dyad::group_plan(an, s, d, sheet, (delta, &mu, slip), &at)?
+                    }
+                    AssurGroup::Triad(t) => triad::group_plan(an, s, t, sheet, (delta, &mu), &at)?,
+                };
                 out.plans.push(ForcePlan {
                     group: Some(g),
                     ..plan

@@ -59,6 +59,8 @@ pub struct DrawnLine {
 pub enum ForceStep {
     /// ΣM about point `about` of `links` = 0 gives `force` (a scalar along
     /// its known direction), N; or a couple (`force` a prismatic pair's).
+    /// `about_name`: the point's id; `None` for a class III group's Assur
+    /// point (where the axes of two leashes meet).
     Moment {
         links: Vec<usize>,
         about: Point,

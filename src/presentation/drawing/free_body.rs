@@ -343,18 +343,16 @@ fn arrows(sc: &Scene, plan: &ForcePlan, to: &dyn Fn(Point) -> Point) -> Vec<Arro
             part: part @ (Part::Tangential | Part::AlongGuide),
         } = v.force
         {
-            let whole = Force::Reaction {
-                from,
-                to: on,
-                joint,
-                part: Part::Whole,
+            let other = if part == Part::Tangential {
+                Part::Normal
+            } else {
+                Part::AcrossGuide
             };
-            if let Some(w) = plan.vectors.iter().find(|w| w.force == whole) {
-                let other = if part == Part::Tangential {
-                    Part::Normal
-                } else {
-                    Part::AcrossGuide
-                };
+            let of = |part| Force::Reaction { from, to: on, joint, part };
+            // Not where that component is laid off itself (a class III
+            // group's third leash: R^n from the moments about S).
+            let laid = plan.vectors.iter().any(|w| w.force == of(other));
+            if let Some(w) = plan.vectors.iter().find(|w| w.force == of(Part::Whole) && !laid) {
                 out.push(Arrow {
                     at,
                     f: w.value - v.value,
