@@ -604,7 +604,8 @@ fn arrow_svg(
 
 /// The plan drawn in a CAD (DXF, y up): LINEs, each with a SOLID
 /// triangle at its head (the `reversed` one's at its tail), one of them
-/// (the first) inserted as a block.
+/// (the first) inserted as a block, the third an LWPOLYLINE whose width
+/// tapers to 0 (its SOLID left out).
 fn arrow_dxf(vs: &[(String, kurbo::Vec2, kurbo::Vec2)], reversed: &str) -> String {
     let mut body = String::new();
     let mut blocks = String::new();
@@ -636,7 +637,20 @@ fn arrow_dxf(vs: &[(String, kurbo::Vec2, kurbo::Vec2)], reversed: &str) -> Strin
                 t[2].1 - o.1
             )
         };
-        if i == 0 {
+        if i == 2 && name != reversed {
+            // An LWPOLYLINE arrow: the shaft, then the head tapering
+            // from 2 mm wide to 0 over its last 3 mm.
+            let u = kurbo::Vec2::new(pb.0 - pa.0, pb.1 - pa.1).normalize();
+            let base = (pb.0 - 3.0 * u.x, pb.1 - 3.0 * u.y);
+            body = body.replacen(
+                &format!("0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n", pa.0, pa.1, pb.0, pb.1),
+                &format!(
+                    "0\nLWPOLYLINE\n8\n0\n90\n3\n70\n0\n10\n{}\n20\n{}\n10\n{}\n20\n{}\n40\n2\n41\n0\n10\n{}\n20\n{}\n",
+                    pa.0, pa.1, base.0, base.1, pb.0, pb.1
+                ),
+                1,
+            );
+        } else if i == 0 {
             // A block of the arrow drawn at its tip, inserted there.
             blocks += &format!(
                 "0\nBLOCK\n8\n0\n2\nARROW\n70\n0\n10\n0\n20\n0\n{}0\nENDBLK\n",

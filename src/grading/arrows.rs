@@ -186,6 +186,54 @@ pub(crate) fn senses(heads: &[Head], lines: &[Vec<Point>], segs: &[(Point, Point
         .collect()
 }
 
+/// A DXF LWPOLYLINE's arrowheads drawn by its width (`codes`: its
+/// groups, 40 and 41 each vertex's start and end width): a segment whose
+/// width tapers to 0 is a triangle, its base at the segment's start, its
+/// tip at its end, pushed to `heads` (its corners; the size is checked
+/// in mm by [`triangle`]). Its vertices back, the shaft's end left out
+/// where the head goes on straight along it (shaft and head one vector).
+pub(crate) fn taper(
+    ps: &[(Point, f64)],
+    codes: &[(i32, &str)],
+    heads: &mut Vec<(Vec<Point>, Option<usize>)>,
+) -> Vec<(Point, f64)> {
+    let mut w = vec![(0.0, 0.0); ps.len()];
+    let mut k: Option<usize> = None;
+    let num = |v: &str| v.trim().parse::<f64>().ok().filter(|x| x.is_finite());
+    for &(c, v) in codes {
+        match c {
+            10 => k = Some(k.map_or(0, |k| k + 1)),
+            40 | 41 => {
+                if let (Some(x), Some(n)) = (k.and_then(|k| w.get_mut(k)), num(v)) {
+                    if c == 40 { x.0 = n } else { x.1 = n }
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut out: Vec<(Point, f64)> = Vec::new();
+    for (i, &(p, bulge)) in ps.iter().enumerate() {
+        let Some(&(tip, _)) = ps.get(i + 1) else {
+            out.push((p, bulge));
+            continue;
+        };
+        let u = tip - p;
+        if bulge == 0.0 && w[i].0 > 0.0 && w[i].1 == 0.0 && u.hypot() > 0.0 {
+            let n = kurbo::Vec2::new(-u.y, u.x).normalize() * (w[i].0 / 2.0);
+            heads.push((vec![tip, p + n, p - n], None));
+            // The shaft going on straight into the head: one vector.
+            if let Some(&(prev, 0.0)) = out.last() {
+                let v = p - prev;
+                if v.dot(u) > 0.0 && v.cross(u).abs() <= 1e-3 * v.hypot() * u.hypot() {
+                    continue;
+                }
+            }
+        }
+        out.push((p, bulge));
+    }
+    out
+}
+
 /// The direction of a vector drawn from `a` to `b` (mm, y down as
 /// drawn), degrees counter-clockwise from +x in [0, 360), y up.
 pub(crate) fn direction(a: Point, b: Point) -> f64 {

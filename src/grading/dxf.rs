@@ -437,6 +437,8 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
                     .into_iter()
                     .map(|(p, b)| (t * p, b))
                     .collect();
+                let codes: Vec<(i32, &str)> = e.groups.iter().map(|g| (g.code, g.value)).collect();
+                let ps = super::arrows::taper(&ps, &codes, &mut out.heads);
                 push_runs(out, &ps, e.flags(70) & 1 == 1);
             }
             "SOLID" => {
