@@ -519,3 +519,247 @@ fn the_worked_example_in_the_docs() {
         );
     }
 }
+
+/// Group (4, 5)'s plan at the first position drawn at μ_F = 2 N/mm: each
+/// vector's force name and its ends (mm, y up).
+fn drawn_vectors(an: &Analysis, s: &Solved) -> Vec<(String, kurbo::Vec2, kurbo::Vec2)> {
+    let loads = loads::loads(an, s, 0);
+    let fp = force_plan::solve_at(an, s, &loads, 0.5, Some((Which::Group(1), 2.0))).unwrap();
+    let plan = fp.plans.iter().find(|p| p.group == Some(1)).unwrap();
+    plan.vectors
+        .iter()
+        .map(|v| {
+            let name = mechplan::words::forces::force_name(
+                &an.mech,
+                &loads,
+                v.force,
+                mechplan::words::construction::Lang::En,
+            );
+            (name, plan.points[v.from], plan.points[v.to])
+        })
+        .collect()
+}
+
+/// An arrowhead's triangle (y as drawn): its tip at `tip`, 3 mm long
+/// and 2 mm wide, pointing from `back`'s side.
+fn arrow_triangle(tip: (f64, f64), back: (f64, f64)) -> [(f64, f64); 3] {
+    let u = kurbo::Vec2::new(tip.0 - back.0, tip.1 - back.1).normalize();
+    let b = (tip.0 - 3.0 * u.x, tip.1 - 3.0 * u.y);
+    [tip, (b.0 - u.y, b.1 + u.x), (b.0 + u.y, b.1 - u.x)]
+}
+
+/// The plan drawn in SVG (y down, 100 mm from the corner) in a layer
+/// `translate(5 3) scale(k)`, each vector's arrowhead a `marker-end` or a
+/// filled triangle (`marker`), the `reversed` one's at its tail instead
+/// (a `marker-start`, a triangle pointing out of the tail).
+fn arrow_svg(
+    vs: &[(String, kurbo::Vec2, kurbo::Vec2)],
+    k: f64,
+    marker: bool,
+    reversed: &str,
+) -> String {
+    let mut body = String::new();
+    for (name, a, b) in vs {
+        // In the layer's units.
+        let p = |q: kurbo::Vec2| ((100.0 + q.x) / k, (100.0 - q.y) / k);
+        let (pa, pb) = (p(*a), p(*b));
+        let m = ((pa.0 + pb.0) / 2.0, (pa.1 + pb.1) / 2.0);
+        let n = kurbo::Vec2::new(pb.1 - pa.1, -(pb.0 - pa.0)).normalize() * 2.0 / k;
+        let (head, back) = if name == reversed { (pa, pb) } else { (pb, pa) };
+        let mark = match (marker, name == reversed) {
+            (true, false) => " marker-end=\"url(#arrow)\"",
+            (true, true) => " style=\"marker-start:url(#arrow)\"",
+            (false, _) => "",
+        };
+        body += &format!(
+            "<path d=\"M {} {} L {} {}\" stroke=\"black\" fill=\"none\"{mark}/>\n<text x=\"{}\" y=\"{}\" font-size=\"{}\">{name}</text>\n",
+            pa.0,
+            pa.1,
+            pb.0,
+            pb.1,
+            m.0 + n.x - 0.9 / k,
+            m.1 + n.y + 1.0 / k,
+            3.0 / k
+        );
+        if !marker {
+            let t = arrow_triangle((head.0 * k, head.1 * k), (back.0 * k, back.1 * k));
+            body += &format!(
+                "<path d=\"M {} {} L {} {} L {} {} Z\" style=\"fill:#000000;stroke:none\"/>\n",
+                t[0].0 / k,
+                t[0].1 / k,
+                t[1].0 / k,
+                t[1].1 / k,
+                t[2].0 / k,
+                t[2].1 / k
+            );
+        }
+    }
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\">\n<defs><marker id=\"arrow\" orient=\"auto\" markerWidth=\"6\" markerHeight=\"4\" refX=\"6\" refY=\"2\"><path d=\"M 0 0 L 6 2 L 0 4 Z\"/></marker></defs>\n<g transform=\"translate(5 3) scale({k})\">\n{body}<text x=\"{}\" y=\"{}\" font-size=\"{}\">μ_F = 2 N/mm</text>\n</g></svg>\n",
+        10.0 / k,
+        200.0 / k,
+        3.0 / k
+    )
+}
+
+/// The plan drawn in a CAD (DXF, y up): LINEs, each with a SOLID
+/// triangle at its head (the `reversed` one's at its tail), one of them
+/// (the first) inserted as a block, the third an LWPOLYLINE whose width
+/// tapers to 0 (its SOLID left out).
+fn arrow_dxf(vs: &[(String, kurbo::Vec2, kurbo::Vec2)], reversed: &str) -> String {
+    let mut body = String::new();
+    let mut blocks = String::new();
+    for (i, (name, a, b)) in vs.iter().enumerate() {
+        let (pa, pb) = ((100.0 + a.x, 100.0 + a.y), (100.0 + b.x, 100.0 + b.y));
+        let m = ((pa.0 + pb.0) / 2.0, (pa.1 + pb.1) / 2.0);
+        let n = kurbo::Vec2::new(pb.1 - pa.1, -(pb.0 - pa.0)).normalize() * -2.0;
+        let (head, back) = if name == reversed { (pa, pb) } else { (pb, pa) };
+        let t = arrow_triangle(head, back);
+        body += &format!(
+            "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n0\nTEXT\n8\n0\n10\n{}\n20\n{}\n40\n3\n1\n{name}\n",
+            pa.0,
+            pa.1,
+            pb.0,
+            pb.1,
+            m.0 + n.x - 0.9,
+            m.1 + n.y - 1.05
+        );
+        let solid = |o: (f64, f64)| {
+            format!(
+                "0\nSOLID\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n12\n{}\n22\n{}\n13\n{}\n23\n{}\n",
+                t[0].0 - o.0,
+                t[0].1 - o.1,
+                t[1].0 - o.0,
+                t[1].1 - o.1,
+                t[2].0 - o.0,
+                t[2].1 - o.1,
+                t[2].0 - o.0,
+                t[2].1 - o.1
+            )
+        };
+        if i == 2 && name != reversed {
+            // An LWPOLYLINE arrow: the shaft, then the head tapering
+            // from 2 mm wide to 0 over its last 3 mm.
+            let u = kurbo::Vec2::new(pb.0 - pa.0, pb.1 - pa.1).normalize();
+            let base = (pb.0 - 3.0 * u.x, pb.1 - 3.0 * u.y);
+            body = body.replacen(
+                &format!("0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n", pa.0, pa.1, pb.0, pb.1),
+                &format!(
+                    "0\nLWPOLYLINE\n8\n0\n90\n3\n70\n0\n10\n{}\n20\n{}\n10\n{}\n20\n{}\n40\n2\n41\n0\n10\n{}\n20\n{}\n",
+                    pa.0, pa.1, base.0, base.1, pb.0, pb.1
+                ),
+                1,
+            );
+        } else if i == 0 {
+            // A block of the arrow drawn at its tip, inserted there.
+            blocks += &format!(
+                "0\nBLOCK\n8\n0\n2\nARROW\n70\n0\n10\n0\n20\n0\n{}0\nENDBLK\n",
+                solid(head)
+            );
+            body += &format!(
+                "0\nINSERT\n8\n0\n2\nARROW\n10\n{}\n20\n{}\n",
+                head.0, head.1
+            );
+        } else {
+            body += &solid((0.0, 0.0));
+        }
+    }
+    format!(
+        "0\nSECTION\n2\nBLOCKS\n{blocks}0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{body}0\nTEXT\n8\n0\n10\n10\n20\n5\n40\n3\n1\n\\U+03BC_F = 2 N/mm\n0\nENDSEC\n0\nEOF\n"
+    )
+}
+
+/// `check` of a drawn plan's file: its status and what it printed.
+fn check_file(file: &str, text: &str) -> (i32, String) {
+    let dir = std::env::temp_dir().join(format!("mechplan_check_arrows_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(file);
+    std::fs::write(&p, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["check", &scene_path(), p.to_str().unwrap()])
+        .output()
+        .unwrap();
+    std::fs::remove_file(&p).ok();
+    let said = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (out.status.code().unwrap_or(-1), said)
+}
+
+/// The arrowheads of a drawn force plan give its vectors' directions:
+/// with `marker-end` arrows every direction is read and judged right; one
+/// vector's arrow at its tail (`marker-start`) turns its direction
+/// round, judged wrong (status 1); filled triangles in a scaled layer
+/// read the same; a DXF with SOLID arrowheads (one inserted as a block)
+/// too, and one SOLID at a tail judged wrong.
+#[test]
+fn a_drawn_force_plans_arrowheads_give_its_directions() {
+    let (an, solved) = solved();
+    let vs = drawn_vectors(&an, &solved[0]);
+    let first = StatedPosition::default();
+    let read = |svg: &str| mechplan::check::forces::from_svg(svg, None, 0.5, first).unwrap();
+    let directions = |r: &mechplan::check::forces::ForceReport| {
+        r.verdicts
+            .iter()
+            .filter(|v| v.unit == "°")
+            .map(|v| (v.key.clone(), format!("{:?}", v.judgement)))
+            .collect::<Vec<_>>()
+    };
+    // G_5's: a vector whose tail is no joint where the plan turns back
+    // over itself (there two arrowheads would stand one on the other).
+    let reversed = "G_5".to_string();
+    assert!(vs.iter().any(|v| v.0 == reversed));
+    for (k, marker) in [(1.0, true), (0.5, false), (2.0, false)] {
+        let ans = read(&arrow_svg(&vs, k, marker, ""));
+        assert_eq!(
+            ans.angles.len(),
+            ans.segments.len(),
+            "{:?} {:?}",
+            ans.angles,
+            ans.segments
+        );
+        for (_, name, deg) in &ans.angles {
+            let (_, a, b) = vs.iter().find(|v| &v.0 == name).unwrap();
+            let want = (b.y - a.y).atan2(b.x - a.x).to_degrees().rem_euclid(360.0);
+            let off = (deg - want).rem_euclid(360.0);
+            assert!(off.min(360.0 - off) < 0.01, "{name}: {deg} vs {want}");
+        }
+        let r = check(&an, &solved, &ans).unwrap();
+        let text = mechplan::presentation::verdict::force_to_text(&r);
+        assert!(!directions(&r).is_empty(), "{text}");
+        assert_eq!(r.status(), 0, "{text}");
+        // The reversed vector's direction is judged wrong.
+        let ans = read(&arrow_svg(&vs, k, marker, &reversed));
+        let r = check(&an, &solved, &ans).unwrap();
+        let text = mechplan::presentation::verdict::force_to_text(&r);
+        assert_eq!(r.status(), 1, "{text}");
+        assert!(
+            directions(&r)
+                .iter()
+                .any(|(key, j)| key.contains(&reversed) && j == "Wrong"),
+            "{reversed}: {text}"
+        );
+    }
+    let (status, said) = check_file("plan.svg", &arrow_svg(&vs, 1.0, true, ""));
+    assert_eq!(status, 0, "{said}");
+    let (status, said) = check_file("plan.svg", &arrow_svg(&vs, 1.0, true, &reversed));
+    assert_eq!(status, 1, "{said}");
+    // DXF: SOLID arrowheads.
+    let ans = read(&arrow_dxf(&vs, ""));
+    assert_eq!(
+        ans.angles.len(),
+        ans.segments.len(),
+        "{:?} {:?}",
+        ans.angles,
+        ans.segments
+    );
+    let (status, said) = check_file("plan.dxf", &arrow_dxf(&vs, ""));
+    assert_eq!(status, 0, "{said}");
+    let (status, said) = check_file("plan.dxf", &arrow_dxf(&vs, &reversed));
+    assert_eq!(status, 1, "{said}");
+    // No arrowheads: lengths only, as before.
+    let plain = arrow_svg(&vs, 1.0, true, "").replace(" marker-end=\"url(#arrow)\"", "");
+    assert!(read(&plain).angles.is_empty());
+}

@@ -81,6 +81,8 @@ pub(crate) struct Drawing {
     pub labels: Vec<(String, Point)>,
     pub lines: Vec<Vec<Point>>,
     pub kind: &'static str,
+    /// Its arrowheads (a force plan's vectors' senses).
+    pub heads: Vec<super::arrows::Head>,
 }
 
 /// The scale a drawing states in a text such as "μ_v = 0.01 (m/s)/mm",
@@ -275,7 +277,9 @@ pub(crate) fn answer_and_notes(
     delta: f64,
     position: super::position::StatedPosition,
 ) -> Result<(Answer, Vec<String>)> {
-    let Drawing { labels, lines, kind } = drawing;
+    let Drawing {
+        labels, lines, kind, ..
+    } = drawing;
     let texts: Vec<Text> = labels.iter().map(|(s, _)| text_kind(s)).collect();
     // μ from a text such as "μ_v = 0.01 (m/s)/mm" when not given: a
     // scale no plan has is refused where it is said (the option, or the

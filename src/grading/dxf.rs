@@ -403,6 +403,9 @@ struct Out {
     labels: Vec<(String, Point)>,
     lines: Vec<Vec<Point>>,
     placed: usize,
+    /// Arrowheads' outlines (a SOLID's corners, a closed polyline's),
+    /// with the line that draws one when one does.
+    heads: Vec<(Vec<Point>, Option<usize>)>,
 }
 
 fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> Result<()> {
@@ -434,7 +437,18 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
                     .into_iter()
                     .map(|(p, b)| (t * p, b))
                     .collect();
-                out.lines.extend(straight_runs(&ps, e.flags(70) & 1 == 1));
+                let codes: Vec<(i32, &str)> = e.groups.iter().map(|g| (g.code, g.value)).collect();
+                let ps = super::arrows::taper(&ps, &codes, &mut out.heads);
+                push_runs(out, &ps, e.flags(70) & 1 == 1);
+            }
+            "SOLID" => {
+                let cs = [e.point(10)?, e.point(11)?, e.point(12)?];
+                let last = e.point(13).unwrap_or(cs[2]);
+                let mut ps: Vec<Point> = cs.iter().map(|&p| t * p).collect();
+                if !cs.iter().any(|c| (*c - last).hypot() < 1e-9) {
+                    ps.push(t * last);
+                }
+                out.heads.push((ps, None));
             }
             "POLYLINE" => {
                 // Meshes and polyface meshes are no plan's vectors.
@@ -445,7 +459,7 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
                 for v in &e.vertices {
                     ps.push((t * v.point(10)?, v.num(42, Some(0.0))?));
                 }
-                out.lines.extend(straight_runs(&ps, e.flags(70) & 1 == 1));
+                push_runs(out, &ps, e.flags(70) & 1 == 1);
             }
             "TEXT" | "MTEXT" => out.labels.push(label(e, t)?),
             "INSERT" => {
@@ -477,6 +491,16 @@ fn walk(file: &File, es: &[Entity], t: Affine, depth: usize, out: &mut Out) -> R
         }
     }
     Ok(())
+}
+
+/// A polyline's straight runs into the drawing's lines; a closed one of
+/// three straight sides is an arrowhead's outline too.
+fn push_runs(out: &mut Out, ps: &[(Point, f64)], closed: bool) {
+    let runs = straight_runs(ps, closed);
+    if closed && ps.len() == 3 && runs.len() == 1 {
+        out.heads.push((runs[0].clone(), Some(out.lines.len())));
+    }
+    out.lines.extend(runs);
 }
 
 /// A polyline's straight runs: its vertices (each with the bulge of the
@@ -612,6 +636,7 @@ fn parse_in(text: &str) -> Result<(Drawing, f64)> {
         labels: Vec::new(),
         lines: Vec::new(),
         placed: 0,
+        heads: Vec::new(),
     };
     walk(&file, &file.entities, Affine::IDENTITY, 0, &mut out)?;
     if out.labels.is_empty() && out.lines.is_empty() {
@@ -634,6 +659,15 @@ fn parse_in(text: &str) -> Result<(Drawing, f64)> {
             .map(|l| l.into_iter().map(mm).collect())
             .collect(),
         kind: "dxf",
+        heads: out
+            .heads
+            .into_iter()
+            .filter_map(|(ps, line)| {
+                let ps: Vec<Point> = ps.into_iter().map(mm).collect();
+                let corners = super::arrows::triangle(&ps)?;
+                Some(super::arrows::Head::Triangle { corners, line })
+            })
+            .collect(),
     };
     Ok((d, unit))
 }

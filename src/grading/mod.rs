@@ -21,6 +21,7 @@
 //! door's (`crate::study`).
 
 pub mod answer;
+mod arrows;
 mod candidates;
 mod consistency;
 mod diagnosis;

@@ -10,6 +10,7 @@
 //! is composed once from its parent's.
 
 use super::answer::check_size;
+use super::arrows::{self, Head};
 use super::drawing::{Drawing, whole};
 use crate::error::Result;
 use kurbo::Point;
@@ -101,10 +102,43 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
     let page = Page::of(&doc);
     let mut labels: Vec<(String, Point)> = Vec::new();
     let mut lines: Vec<Vec<Point>> = Vec::new();
+    let mut heads = Vec::new();
     for n in doc.descendants().filter(|n| n.is_element()) {
+        // A marker's, a symbol's or a definition's shapes are not drawn
+        // where they stand.
+        if page.unseen[n.id().get_usize()] {
+            continue;
+        }
+        let from = lines.len();
         match n.tag_name().name() {
             "text" => labels.extend(page.label(n)),
-            "path" => page.path(n, &mut lines),
+            "path" => {
+                page.path(n, &mut lines);
+                let closed = n.attribute("d").is_some_and(|d| d.contains(['z', 'Z']));
+                if let (true, true, [line]) = (closed, filled(n), &lines[from..]) {
+                    heads.extend(arrows::triangle(line).map(|corners| Head::Triangle {
+                        corners,
+                        line: Some(from),
+                    }));
+                }
+            }
+            "polygon" if filled(n) => {
+                let t = page.affine(n);
+                let nums: Vec<f64> = n
+                    .attribute("points")
+                    .unwrap_or("")
+                    .split(|c: char| c == ',' || c.is_whitespace())
+                    .filter_map(|x| x.parse().ok())
+                    .collect();
+                let ps: Vec<Point> = nums
+                    .chunks_exact(2)
+                    .map(|c| page.mm(t * Point::new(c[0], c[1])))
+                    .collect();
+                heads.extend(arrows::triangle(&ps).map(|corners| Head::Triangle {
+                    corners,
+                    line: None,
+                }));
+            }
             "line" => {
                 let t = page.affine(n);
                 let mut line = Vec::new();
@@ -117,12 +151,48 @@ pub(crate) fn parse(text: &str) -> Result<Drawing> {
             }
             _ => {}
         }
+        // A marker at the start of its first line or the end of its last.
+        if lines.len() > from && matches!(n.tag_name().name(), "path" | "line") {
+            for (prop, line, at_end) in [
+                ("marker-start", from, false),
+                ("marker-end", lines.len() - 1, true),
+            ] {
+                if property(n, prop).is_some_and(|v| v != "none") {
+                    heads.push(Head::Marked { line, at_end });
+                }
+            }
+        }
     }
     Ok(Drawing {
         labels,
         lines,
         kind: "svg",
+        heads,
     })
+}
+
+/// A presentation property of an element, its own or inherited: an
+/// attribute or a `style` declaration, the nearest's (of the element and
+/// its [`INHERIT_DEPTH`] nearest ancestors: reading stays linear).
+fn property(n: roxmltree::Node, name: &str) -> Option<String> {
+    let mut near = n.ancestors().filter(|a| a.is_element()).take(INHERIT_DEPTH);
+    near.find_map(|a| {
+        let styled = a.attribute("style").and_then(|st| {
+            st.split(';').find_map(|d| {
+                let (k, v) = d.split_once(':')?;
+                (k.trim() == name).then(|| v.trim().to_string())
+            })
+        });
+        styled.or_else(|| a.attribute(name).map(|v| v.trim().to_string()))
+    })
+}
+
+/// How many of an element's ancestors its presentation is looked up in.
+const INHERIT_DEPTH: usize = 16;
+
+/// Whether an element is filled (SVG fills black unless told `none`).
+fn filled(n: roxmltree::Node) -> bool {
+    property(n, "fill").is_none_or(|v| v != "none")
 }
 
 /// An attribute's first number.
@@ -135,6 +205,8 @@ fn num(n: roxmltree::Node, a: &str) -> Option<f64> {
 /// root's user units in mm from its viewBox's origin.
 struct Page {
     transforms: Vec<kurbo::Affine>,
+    /// Whether each node is inside a `defs`, `marker` or `symbol`.
+    unseen: Vec<bool>,
     unit: f64,
     origin: kurbo::Vec2,
 }
@@ -165,7 +237,10 @@ impl Page {
         // The transform from each node's coordinates to the root's: its
         // parent's (found first, in document order) times its own.
         let mut transforms: Vec<kurbo::Affine> = Vec::new();
+        let mut unseen: Vec<bool> = Vec::new();
         for n in doc.descendants() {
+            let hidden = n.parent().is_some_and(|p| unseen[p.id().get_usize()])
+                || matches!(n.tag_name().name(), "defs" | "marker" | "symbol");
             let parent = n
                 .parent()
                 .map_or(kurbo::Affine::IDENTITY, |p| transforms[p.id().get_usize()]);
@@ -178,11 +253,14 @@ impl Page {
             let id = n.id().get_usize();
             if transforms.len() <= id {
                 transforms.resize(id + 1, kurbo::Affine::IDENTITY);
+                unseen.resize(id + 1, false);
             }
             transforms[id] = parent * own;
+            unseen[id] = hidden;
         }
         Page {
             transforms,
+            unseen,
             unit,
             origin,
         }

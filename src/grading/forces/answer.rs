@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Issue, Result};
 use crate::json::{locate_bad_numbers, parse_strict};
+use crate::grading::arrows;
 use serde_json::{Map, Value};
 
 /// A student's force plan.
@@ -213,24 +214,42 @@ pub fn from_svg(
             "μ_F = {mu} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"
         )));
     }
-    let segments: Vec<(kurbo::Point, kurbo::Point)> = d
+    // Each vector: a segment of a line that draws no arrowhead, with
+    // its sense when its arrowhead tells it.
+    let skip = crate::grading::arrows::head_lines(&d.heads);
+    let drawn: Vec<(kurbo::Point, kurbo::Point, usize, usize)> = d
         .lines
         .iter()
-        .flat_map(|l| l.windows(2).map(|w| (w[0], w[1])))
-        .filter(|(a, b)| (*b - *a).hypot() > 0.0)
+        .enumerate()
+        .filter(|(l, _)| !skip.contains(l))
+        .flat_map(|(l, ps)| ps.windows(2).enumerate().map(move |(k, w)| (w[0], w[1], l, k)))
+        .filter(|(a, b, ..)| (*b - *a).hypot() > 0.0)
         .collect();
-    let mut items = Vec::new();
+    let senses = arrows::senses(&d.heads, &d.lines, &drawn);
+    let segments: Vec<(kurbo::Point, kurbo::Point, Option<bool>)> = drawn
+        .iter()
+        .zip(senses)
+        .map(|(&(a, b, ..), s)| (a, b, s))
+        .collect();
+    let (mut items, mut angles) = (Vec::new(), Vec::new());
     for (name, at) in &d.labels {
         if name.is_empty() || name.contains('=') {
             continue;
         }
         let nearest = segments
             .iter()
-            .map(|(a, b)| ((a.midpoint(*b) - *at).hypot(), (*b - *a).hypot()))
-            .filter(|(dist, _)| dist.is_finite() && *dist <= SNAP_MM)
+            .map(|&(a, b, sense)| ((a.midpoint(b) - *at).hypot(), a, b, sense))
+            .filter(|(dist, ..)| dist.is_finite() && *dist <= SNAP_MM)
             .min_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((_, len)) = nearest {
-            items.push((format!("svg: label {name}"), name.clone(), len));
+        if let Some((_, a, b, sense)) = nearest {
+            let at = format!("{}: label {name}", d.kind);
+            items.push((at.clone(), name.clone(), (b - a).hypot()));
+            // The arrowhead's end is the vector's head.
+            match sense {
+                Some(true) => angles.push((at, name.clone(), arrows::direction(a, b))),
+                Some(false) => angles.push((at, name.clone(), arrows::direction(b, a))),
+                None => {}
+            }
         }
     }
     if items.is_empty() {
@@ -245,7 +264,7 @@ pub fn from_svg(
         delta,
         mu_l: None,
         segments: items,
-        angles: Vec::new(),
+        angles,
         values: Vec::new(),
     })
 }
