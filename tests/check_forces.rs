@@ -763,3 +763,138 @@ fn a_drawn_force_plans_arrowheads_give_its_directions() {
     let plain = arrow_svg(&vs, 1.0, true, "").replace(" marker-end=\"url(#arrow)\"", "");
     assert!(read(&plain).angles.is_empty());
 }
+
+/// The catalogue's answer `name` of the six-link (tests/forces_catalogue).
+fn catalogued(name: &str) -> String {
+    format!(
+        "{}/tests/forces_catalogue/six_link_fig2_10/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+/// A fresh folder for one test's output.
+fn fresh(tag: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "mechplan-force-overlay-{tag}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The element of `svg` with the id `id` (its start tag).
+fn element<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    Some(&svg[start..at + svg[at..].find('>')?])
+}
+
+/// `check … --svg` of a force answer writes its overlay (atomically: no
+/// temporary left beside it), valid SVG: the right polygon, each vector
+/// the answer gives drawn in its judgement's style (τ's sign reversed: the
+/// wrong R^τ_12 red with its tolerance circle; a right answer's green),
+/// the diagnosis under it, a legend; in Ukrainian with a decimal comma.
+#[test]
+fn a_force_answer_has_its_overlay() {
+    let dir = fresh("svg");
+    let overlay = |answer: &str, lang: &str| {
+        let out = dir.join(format!("{answer}-{lang}.svg"));
+        let st = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &scene_path(), &catalogued(answer), "--svg"])
+            .arg(&out)
+            .args(["--lang", lang])
+            .output()
+            .unwrap();
+        let svg = std::fs::read_to_string(&out).unwrap();
+        mechplan::drawing::tree(&svg).expect("valid SVG");
+        roxmltree::Document::parse(&svg).expect("well-formed XML");
+        (st.status.code().unwrap(), svg)
+    };
+    let (code, svg) = overlay("0_23_tau_wrong_sign_vectors", "en");
+    assert_eq!(code, 1);
+    assert!(svg.contains("right-vec-"), "the right polygon is drawn");
+    // R^τ_12 is plan vector k: drawn red (its group wrong-item), its
+    // tolerance circle about the right end.
+    let wrong = svg.find("class=\"wrong-item\"").expect("a wrong item");
+    let vec_at = svg[wrong..].find("id=\"student-vec-").unwrap() + wrong;
+    let id: String = svg[vec_at + 4..]
+        .chars()
+        .take_while(|c| *c != '"')
+        .collect();
+    let k = id.trim_start_matches("student-vec-");
+    let line = element(&svg, &id).unwrap();
+    assert!(line.contains("#c00000"), "{line}");
+    assert!(element(&svg, &format!("tolerance-{k}")).is_some());
+    assert!(
+        svg.contains("R<tspan") || svg.contains("R</"),
+        "vectors named"
+    );
+    assert!(svg.contains("the tangential components R"), "the diagnosis");
+    assert!(svg.contains("id=\"diagnosis-0\""));
+    assert!(svg.contains("id=\"legend-0\""));
+    assert!(
+        svg.contains("class=\"right-item\""),
+        "the right vectors green"
+    );
+    let (code, svg) = overlay("0_1_honest_vectors", "en");
+    assert_eq!(code, 0);
+    assert!(svg.contains("class=\"right-item\"") && !svg.contains("class=\"wrong-item\""));
+    assert!(!svg.contains("diagnosis-0"));
+    let (_, svg) = overlay("0_1_honest_vectors", "uk");
+    assert!(svg.contains("2,5 Н/мм"), "μ_F with a decimal comma");
+    let left: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.ends_with(".svg"))
+        .collect();
+    assert!(left.is_empty(), "temporaries left: {left:?}");
+}
+
+/// A group with a right and a wrong force answer: the gradebook lists
+/// both with their grade, the wrong one's mistake named, and each its
+/// overlay.
+#[test]
+fn a_group_grades_force_answers_with_the_mistake_named() {
+    let dir = fresh("group");
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    for a in ["0_1_honest_vectors", "0_23_tau_wrong_sign_vectors"] {
+        std::fs::copy(catalogued(a), answers.join(format!("{a}.json"))).unwrap();
+    }
+    let out = dir.join("graded");
+    let st = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+        .args(["check", &scene_path()])
+        .arg(&answers)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(
+        st.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&st.stderr)
+    );
+    let csv = std::fs::read_to_string(out.join("gradebook.csv")).unwrap();
+    let row = |stem: &str| {
+        csv.lines()
+            .find(|l| l.starts_with(stem))
+            .unwrap()
+            .to_string()
+    };
+    let right = row("0_1_honest_vectors");
+    assert!(right.contains(",force,0,right,"), "{right}");
+    let wrong = row("0_23_tau_wrong_sign_vectors");
+    assert!(wrong.contains(",force,0,wrong,"), "{wrong}");
+    assert!(
+        wrong.contains("tangential components R^τ with the wrong sign"),
+        "{wrong}"
+    );
+    for a in ["0_1_honest_vectors", "0_23_tau_wrong_sign_vectors"] {
+        assert!(
+            out.join("overlays").join(format!("{a}.svg")).is_file(),
+            "{a}"
+        );
+    }
+}

@@ -273,10 +273,13 @@ fn build_group(dir: &Path) -> BTreeMap<String, Built> {
         Built::new("wrong", "force", 3),
     );
     for k in [5, 8] {
+        // Each item too small is reported in the message.
+        let mut b = Built::new("cannot be judged", "force", k);
+        b.message = "within the pencil's error".into();
         put(
             &format!("force-small-{k:02}.json"),
             force(&doc, k, 200.0, 1.0).to_string(),
-            Built::new("cannot be judged", "force", k),
+            b,
         );
     }
     // Acceleration plans where the true plan alone cannot tell the right
@@ -415,28 +418,26 @@ fn a_folder_of_thirty_answers_is_graded_at_once() {
             assert!(r["mistakes"].starts_with("step "), "{f}: {r:?}");
         }
     }
-    // An overlay for every kinematic answer checked, none for the others.
+    // An overlay for every answer checked (a force plan's: the right
+    // polygon, its values-only answer's items written wrong under it),
+    // none for the unreadable ones.
     let overlays = out.join("overlays");
-    let kinematic: Vec<&String> = built
-        .iter()
-        .filter(|(_, b)| b.kinematic())
-        .map(|(n, _)| n)
-        .collect();
-    assert_eq!(
-        std::fs::read_dir(&overlays).unwrap().count(),
-        kinematic.len()
-    );
+    let checked: Vec<(&String, &Built)> =
+        built.iter().filter(|(_, b)| !b.plan.is_empty()).collect();
+    assert_eq!(std::fs::read_dir(&overlays).unwrap().count(), checked.len());
     let page = std::fs::read_to_string(out.join("summary.html")).unwrap();
-    for name in &kinematic {
+    for (name, b) in &checked {
         let svg = std::fs::read_to_string(overlays.join(format!("{}.svg", stem(name)))).unwrap();
-        assert!(
-            svg.starts_with("<svg") && svg.contains("student-"),
-            "{name}"
-        );
+        let drawn = if b.kinematic() {
+            "student-"
+        } else {
+            "right-vec-"
+        };
+        assert!(svg.starts_with("<svg") && svg.contains(drawn), "{name}");
         let link = format!("href=\"overlays/{}.svg\"", encoded(stem(name)));
         assert!(page.contains(&link), "{link}");
     }
-    assert_eq!(page.matches("href=").count(), kinematic.len());
+    assert_eq!(page.matches("href=").count(), checked.len());
     // Every text escaped, the scene named, the totals on top, nothing
     // fetched.
     assert!(page.contains("right-v03 &quot;smith&quot; &amp; &lt;jones&gt;.json"));

@@ -180,7 +180,19 @@ pub fn row_of(file: &str, outcome: Outcome) -> GradeRow {
                 grade,
                 mistakes,
                 counts: Some(counts(&r.verdicts)),
-                message: None,
+                // The items too small to judge at the student's μ_F:
+                // reported, the grade given without them.
+                message: Some(
+                    r.small
+                        .iter()
+                        .filter_map(|&i| match &r.verdicts[i].judgement {
+                            Judgement::CannotJudge(why) => Some(why.as_str()),
+                            _ => None,
+                        })
+                        .collect::<Vec<_>>()
+                        .join("; "),
+                )
+                .filter(|m| !m.is_empty()),
             }
         }
         Outcome::Unreadable(message) => GradeRow {
@@ -242,7 +254,7 @@ pub fn written_wrong(r: &Report) -> Vec<String> {
 /// Each wrong item of `verdicts` that `keep` keeps: what it is, what was
 /// written and what is right, with the tolerance (`written_right`, in
 /// `lang`).
-fn items_wrong(verdicts: &[Verdict], lang: Lang, keep: impl Fn(&Verdict) -> bool) -> Vec<String> {
+pub(crate) fn items_wrong(verdicts: &[Verdict], lang: Lang, keep: impl Fn(&Verdict) -> bool) -> Vec<String> {
     let w = check::phrases(lang);
     verdicts
         .iter()

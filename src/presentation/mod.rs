@@ -19,6 +19,7 @@ pub mod drawing;
 pub mod dynamics;
 pub mod force_steps;
 pub mod gradebook;
+pub mod force_overlay;
 pub mod overlay;
 pub mod photo_overlay;
 pub mod precision;

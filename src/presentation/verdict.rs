@@ -2,6 +2,7 @@
 //! terminal, as JSON, and as an SVG overlay of the student's points on the
 //! correct plan (drawn by [`super::overlay`]).
 
+pub use super::force_overlay::force_overlay;
 pub use super::overlay::{overlay, overlay_dxf};
 use crate::grading::forces::ForceReport;
 use crate::words::numbers;

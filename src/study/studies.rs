@@ -240,8 +240,9 @@ fn parse_force_answer(
         }
         ans.mu = m;
     }
+    // (`--svg` draws a force plan's overlay too; a DXF answer's marked
+    // copy and a photo's overlay are of kinematic plans only.)
     for (set, option) in [
-        (req.overlay.is_some(), "svg"),
         (req.overlay_dxf.is_some(), "dxf"),
         (req.overlay_photo.is_some(), "photo-overlay"),
     ] {
@@ -249,7 +250,7 @@ fn parse_force_answer(
             return Err(Error::scene(
                 option,
                 format!(
-                    "the overlay (--{option}) is drawn for plans of velocities and accelerations only"
+                    "--{option} is drawn for plans of velocities and accelerations only (give --svg for a force plan's overlay)"
                 ),
             ));
         }
@@ -292,7 +293,7 @@ pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -
         }
         Parsed::Force(ans) => {
             let lang = lang.unwrap_or_else(|| sol.study().lang());
-            Checked::Force(forces::check_in(sol.an(), sol.all(), &ans, lang)?)
+            Checked::Force(Box::new(forces::check_in(sol.an(), sol.all(), &ans, lang)?))
         }
     })
 }
@@ -303,8 +304,8 @@ pub(super) fn check_parsed(sol: &Solution, parsed: Parsed, lang: Option<Lang>) -
 pub enum Checked {
     /// A plan of velocities or accelerations.
     Kinematic(Box<KinematicCheck>),
-    /// A force plan.
-    Force(ForceReport),
+    /// A force plan (boxed: it carries its right plan for the overlay).
+    Force(Box<ForceReport>),
 }
 
 /// A plan of velocities or accelerations checked: the verdicts, and what
@@ -371,12 +372,13 @@ impl Checked {
             Checked::Force(r) => verdict::force_to_json(r),
         }
     }
-    /// The overlay of a kinematic plan's answer: the student's points
-    /// over the right plan, as an SVG sheet; `None` for a force plan.
+    /// The overlay as an SVG sheet: a kinematic plan's answer, the
+    /// student's points over the right plan; a force plan's, the
+    /// student's vectors over the right polygon at their μ_F.
     pub fn overlay(&self) -> Option<String> {
         match self {
             Checked::Kinematic(k) => Some(verdict::overlay(&k.analysis, &k.answer, &k.report)),
-            Checked::Force(_) => None,
+            Checked::Force(r) => Some(verdict::force_overlay(r)),
         }
     }
     /// The overlay of a photographed plan (an answer read from a marks

@@ -5,6 +5,8 @@
 use crate::lang::Lang;
 use std::sync::OnceLock;
 
+pub use super::overlay_phrases::OverlayPhrases;
+
 /// A phrase with its blanks filled: each `{name}` by the value named so
 /// in `args` (one pass: a value is never filled again).
 pub fn fill(phrase: &str, args: &[(&str, &str)]) -> String {
@@ -641,23 +643,6 @@ pub struct CheckPhrases {
     pub force_small_value: String,
     /// What an item is: a segment, a direction, a value.
     pub force_kinds: [String; 3],
-}
-
-/// The check's overlay: the wrong step's mark and the legend's lines.
-#[derive(Debug, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct OverlayPhrases {
-    /// The mark beside the wrong step's lines: `{step}`.
-    pub step: String,
-    /// The legend: the right plan, the student's point, where a step puts
-    /// it with its tolerance, a point off that place, the wrong step's
-    /// lines (drawn from the student's points; on the right plan).
-    pub right_plan: String,
-    pub your_point: String,
-    pub step_place: String,
-    pub off: String,
-    pub wrong_step_own: String,
-    pub wrong_step_right: String,
 }
 
 /// Each typical mistake in one sentence: made at one decision, made at

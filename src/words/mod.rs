@@ -17,6 +17,7 @@ pub mod forces;
 pub mod inputs;
 pub mod notation;
 pub mod numbers;
+pub mod overlay_phrases;
 pub mod terminal;
 
 pub use catalogue::catalogue;

@@ -24,6 +24,7 @@ use crate::kinetostatics::loads::Load;
 use crate::pipeline::Solved;
 use crate::words::construction::Lang;
 use crate::words::forces::force_name;
+use crate::words::notation::Label;
 use crate::words::{check, numbers};
 use answer::issue;
 use place::{which, which_of};
@@ -50,6 +51,11 @@ pub struct ForceReport {
     pub diagnosis: Option<String>,
     /// The language of its words.
     pub lang: Lang,
+    /// The right plan at the student's μ_F, as the answer was judged
+    /// against it (what the overlay draws: presentation never solves).
+    pub plan: ForcePlan,
+    /// Its vectors' names, one per vector, in `lang`'s notation.
+    pub names: Vec<Label>,
 }
 
 impl ForceReport {
@@ -72,6 +78,16 @@ impl ForceReport {
         } else {
             0
         }
+    }
+
+    /// The vector of [`Self::plan`] an item's force name (`R_43`,
+    /// `R^τ_12`, `R43`) names, as the items were judged (the last of that
+    /// name: a reaction laid off and read off again is its read-off one).
+    pub fn vector_of(&self, name: &str) -> Option<usize> {
+        let k = key(name);
+        self.names
+            .iter()
+            .rposition(|l| key(&crate::words::forces::plain(l)) == k)
     }
 }
 
@@ -547,6 +563,16 @@ impl Judge<'_> {
             mistake,
             diagnosis,
             lang: self.lang,
+            plan: self.plan.clone(),
+            names: self
+                .plan
+                .vectors
+                .iter()
+                .map(|v| {
+                    crate::words::forces::force(&self.an.mech, self.loads, v.force, self.lang)
+                        .unwrap_or_else(|| Label::new("?", ""))
+                })
+                .collect(),
         }
     }
 }
