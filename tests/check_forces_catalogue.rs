@@ -1,6 +1,7 @@
 //! `check` of force plans graded on answers built independently of the
 //! engine (docs/check.md, "Force plans", "The catalogue of force-plan
-//! answers"): tests/forces_catalogue/ holds honest answers (vectors,
+//! answers"): tests/forces_catalogue/ holds, for every one-input dynamics
+//! fixture (the class III class3_004's plans too), honest answers (vectors,
 //! segments only, values only, with pencil noise), answers with one
 //! seeded mistake each and bad answers, all computed by
 //! tests/reference/forceref.py at 60 digits (tests/forces_catalogue/make.py

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Write the catalogue of force-plan answers (tests/forces_catalogue/):
 honest answers and answers with one seeded mistake each, for several
-positions of every dynamics fixture, every group's plan and the input
-link's, computed by tests/reference/forceref.py (60 digits, independent
+positions of every dynamics fixture, every group's plan (a class III
+group's too: its R^τ, R^n and reactions as triad.rs names them) and the
+input link's, computed by tests/reference/forceref.py (60 digits, independent
 of mechplan's force code), and a few bad answers; `labels.json` says what
 each answer is. tests/check_forces_catalogue.rs grades `check` on them.
 
@@ -122,7 +123,11 @@ def plan_items(M, pos, lds, solved, gi, groups, balancing):
             if L in (q[2], q[3]) and other in later:
                 items.append((f"R_{other}{L}", force_on(M, pos, q, x, L), 'neighbour'))
     scheme = None
-    if gi is not None:
+    triad = None
+    if gi is not None and len(links) == 4:
+        triad = triad_scheme(M, pos, links, attached)
+        items += triad_items(M, pos, solved, triad)
+    elif gi is not None:
         s0, s1, k1, k2, e1, mid, e2 = dyad_scheme(M, links, attached)
         scheme = (s0, s1, k1, k2, e1, mid, e2)
         r1 = force_on(M, pos, e1, solved[e1], s0)
@@ -144,14 +149,116 @@ def plan_items(M, pos, lds, solved, gi, groups, balancing):
         items.append((f"R_0{L}", force_on(M, pos, q, solved[q], L), 'measured'))
     p = Plan()
     p.gi, p.links, p.items, p.scheme, p.balancing = gi, links, items, scheme, balancing
+    p.triad = triad
     # Σ|F| of the forces laid off on the plan (the loads and the later
     # reactions): what M_b's arms multiply.
     n_laid = sum(1 for L in links for ld in link_forces(lds, L)) + sum(
         1 for _, _, role in items if role in ('neighbour', 'tau'))
-    p.bound = drafting_bound(M, pos, scheme, n_laid)
+    p.bound = drafting_bound(M, pos, scheme, n_laid) if triad is None else triad_bound(triad, n_laid)
     p.laid = sum(f(norm(ld['f'])) for L in links for ld in link_forces(lds, L)) + sum(
         f(norm(v)) for _, v, role in items if role == 'neighbour')
     return p
+
+
+class Triad:
+    """A class III group at a position: its base, its leashes (each with
+    its outer pair E on a known link and inner pair J on the base), the
+    pair of leashes (i, j) whose axes close the polygon, the third k, and
+    Assur's point S where the axes of i and j meet."""
+
+
+def triad_scheme(M, pos, links, attached):
+    """The group's base (the link paired with the three others), its
+    leashes in the group's order, and (i, j, k), S as the course picks
+    them: the two axes E→J meeting at the largest angle (the smallest
+    amplification of the closing point's error), k the third."""
+    pairs = fr.pairs_of(M)
+    s = set(links)
+    inside = [q for q in pairs if q[2] in s and q[3] in s]
+    base = next(L for L in links if sum(1 for q in inside if L in (q[2], q[3])) == 3)
+    t = Triad()
+    t.base = base
+    t.leashes = []
+    for L in links:
+        if L == base:
+            continue
+        inner = next(q for q in inside if {q[2], q[3]} == {L, base})
+        outer = next(q for q in pairs if L in (q[2], q[3]) and (({q[2], q[3]} - {L}) <= attached))
+        known = next(iter({outer[2], outer[3]} - {L}))
+        E, J = pos.p[outer[1]], pos.p[inner[1]]
+        t.leashes.append({'link': L, 'known': known, 'outer': outer, 'inner': inner,
+                          'E': E, 'J': J, 'axis': sub(J, E)})
+
+    def sine(a, b):
+        return abs(cross(unit(t.leashes[a]['axis']), unit(t.leashes[b]['axis'])))
+    best = None
+    for c in ((0, 1, 2), (0, 2, 1), (1, 2, 0)):
+        if best is None or sine(c[0], c[1]) >= sine(best[0], best[1]):
+            best = c
+    t.ijk = best
+    t.sin = f(sine(best[0], best[1]))
+    li, lj = t.leashes[best[0]], t.leashes[best[1]]
+    # S = E_i + a·axis_i = E_j + b·axis_j
+    a = cross(sub(lj['E'], li['E']), lj['axis']) / cross(li['axis'], lj['axis'])
+    t.S = add(li['E'], mul(li['axis'], a))
+    return t
+
+
+def triad_items(M, pos, solved, t):
+    """The class III plan's items as mechplan's check names them: each
+    leash's R^τ (from its moments about J), the third leash's R^n (from
+    the group's moments about S), then the measured reactions: the outer
+    ones of i, j, k and the base's on i, k, j."""
+    i, j, k = t.ijk
+    out, meas = [], []
+    for n in (i, j, k):
+        ls = t.leashes[n]
+        r = force_on(M, pos, ls['outer'], solved[ls['outer']], ls['link'])
+        e = perp(unit(ls['axis']))
+        out.append((f"R^τ_{ls['known']}{ls['link']}", mul(e, r[0] * e[0] + r[1] * e[1]), 'tau'))
+        if n == k:
+            u = unit(ls['axis'])
+            out.append((f"R^n_{ls['known']}{ls['link']}", mul(u, r[0] * u[0] + r[1] * u[1]), 'tau'))
+        meas.append((f"R_{ls['known']}{ls['link']}", r, 'measured'))
+    for n in (i, k, j):
+        ls = t.leashes[n]
+        r = force_on(M, pos, ls['inner'], solved[ls['inner']], ls['link'])
+        meas.append((f"R_{t.base}{ls['link']}", r, 'measured'))
+    return out + meas
+
+
+def triad_check(M, pos, lds, solved, t, right):
+    """The honest items as the course's construction gives them: each R^τ
+    from its leash's moments about J, R^n_k from the group's about S (the
+    loads and the τ known); they must be the reference's components."""
+    i, j, k = t.ijk
+    links = [ls['link'] for ls in t.leashes] + [t.base]
+
+    def moment(Ls, about):
+        m = mpf(0)
+        for ld in lds:
+            if ld['link'] in Ls:
+                m += cross(sub(ld['at'], about), ld['f']) + ld['c']
+        return m
+    tau = {}
+    for n, ls in enumerate(t.leashes):
+        e = perp(unit(ls['axis']))
+        v = -moment([ls['link']], ls['J']) / cross(sub(ls['E'], ls['J']), e)
+        tau[n] = mul(e, v)
+        name = f"R^τ_{ls['known']}{ls['link']}"
+        assert f(norm(sub(tau[n], right[name]))) < 1e-30 * max(f(norm(right[name])), 1.0), name
+    lk = t.leashes[k]
+    u = unit(lk['axis'])
+    taus = sum(cross(sub(t.leashes[n]['E'], t.S), tau[n]) for n in range(3))
+    nk = -(moment(links, t.S) + taus) / cross(sub(lk['E'], t.S), u)
+    name = f"R^n_{lk['known']}{lk['link']}"
+    assert f(norm(sub(mul(u, nk), right[name]))) < 1e-30 * max(f(norm(right[name])), 1.0), name
+
+
+def triad_bound(t, n):
+    """drafting_bound's model for the class III polygon: closed by the
+    axes of leashes i and j."""
+    return DELTA * (n + 2) / max(t.sin, 1e-12) + DELTA
 
 
 def drafting_bound(M, pos, scheme, n):
@@ -283,11 +390,6 @@ def scene_answers(name, path, out_dir, labels):
     inputs = fr.input_texts(mj)
     numbers = [p['position'] for p in mj['positions']]
     scene, M, groups, ref = fr.reference(text, inputs)
-    if any(len(g) != 2 for g in groups):
-        # check draws no force plan of a scene with a class III group (the
-        # reference solves it: forceref.py --against-mechplan)
-        print(f"{name}: skipped (a class III group: no force plans to check yet)", file=sys.stderr)
-        return 0
     _, _, _, ref_nr = fr.reference(text, inputs, ('not_reversed',))
     _, _, _, ref_nw = fr.reference(text, inputs, ('no_weights',))
     S_p = f(M.S_p)
@@ -329,6 +431,8 @@ def scene_answers(name, path, out_dir, labels):
                 got = polygon(M, pos, lds, solved, plan, t1, t2)
                 for n_, v in got.items():
                     assert f(norm(sub(v, right[n_]))) < 1e-30 * max(f(norm(right[n_])), 1.0), (name, tag, n_)
+            if plan.triad is not None:
+                triad_check(M, pos, lds, solved, plan.triad, right)
             for style in ('vectors', 'segments', 'values'):
                 put('honest', answer(numbers[k], plan, mu, mu_l, vecs, style, rng, mb), style)
 
@@ -352,6 +456,8 @@ def scene_answers(name, path, out_dir, labels):
             if seen(plan, mu, mu_l, right, w, mb, mbw):
                 put('weights_left_out', answer(numbers[k], plan, mu, mu_l, list(w.items()), 'vectors',
                                                rng, mbw), 'vectors')
+            # (τ's mistakes on a dyad's scheme only: mechplan draws no τ slip
+            # of a class III group, grading/forces/mistakes.rs)
             if plan.scheme and plan.scheme[4][0] == 'R' and plan.scheme[5][0] == 'R':
                 s0, s1, k1, k2 = plan.scheme[:4]
                 n1, n2 = f"R^τ_{k1}{s0}", f"R^τ_{k2}{s1}"
