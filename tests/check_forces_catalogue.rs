@@ -11,7 +11,8 @@
 //! the honest answers undecided, at least 90 % of the mistakes named, none
 //! named wrongly) are `force_catalogue_targets`.
 
-use mechplan::check::forces::{ForceMistake, check, from_json};
+use mechplan::check::forces::{ForceMistake, check, from_json, from_svg};
+use mechplan::check::position::StatedPosition;
 use mechplan::scene::Scene;
 use mechplan::{Analysis, Solved};
 use serde_json::Value;
@@ -303,5 +304,131 @@ fn force_catalogue_targets() {
         "mistakes named: {:.1} % (target ≥ {:.0} %)",
         100.0 * share,
         100.0 * TARGET_MIN_MISTAKES_NAMED
+    );
+}
+
+/// The answer's vectors drawn in SVG as a student might hand them in from
+/// a vector editor: each labelled line in a cell of its own (y down), with
+/// a `marker-end` arrowhead where the answer gives its direction, the
+/// scale written on the sheet. Vectors shorter than 0.5 mm are not drawn.
+fn drawn(ans: &Value) -> (String, Value) {
+    let mut body = String::new();
+    let mut twin_segments = serde_json::Map::new();
+    let mut twin_angles = serde_json::Map::new();
+    let segments = ans["segments"].as_object().cloned().unwrap_or_default();
+    for (k, (name, seg)) in segments.iter().enumerate() {
+        let len = seg.as_f64().unwrap();
+        if len < 0.5 {
+            continue;
+        }
+        let angle = ans["angles"].get(name).and_then(Value::as_f64);
+        // Without a direction, a direction all the same (no arrowhead
+        // tells its sense).
+        let a = angle.unwrap_or(30.0).to_radians();
+        let (cx, cy) = (
+            150.0 + 250.0 * (k % 4) as f64,
+            150.0 + 250.0 * (k / 4) as f64,
+        );
+        let (dx, dy) = (len * a.cos() / 2.0, -len * a.sin() / 2.0);
+        let (n_x, n_y) = (-dy / len * 4.0, dx / len * 4.0);
+        let mark = if angle.is_some() {
+            " marker-end=\"url(#arrow)\""
+        } else {
+            ""
+        };
+        let _ = writeln!(
+            body,
+            "<path d=\"M {} {} L {} {}\" stroke=\"black\" fill=\"none\"{mark}/>\n<text x=\"{}\" y=\"{}\" font-size=\"3\">{name}</text>",
+            cx - dx,
+            cy - dy,
+            cx + dx,
+            cy + dy,
+            cx + n_x,
+            cy + n_y
+        );
+        twin_segments.insert(name.clone(), seg.clone());
+        if let Some(a) = angle {
+            twin_angles.insert(name.clone(), a.into());
+        }
+    }
+    let svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1100mm\" height=\"1100mm\" viewBox=\"0 0 1100 1100\">\n<defs><marker id=\"arrow\" orient=\"auto\" markerWidth=\"6\" markerHeight=\"4\" refX=\"6\" refY=\"2\"><path d=\"M 0 0 L 6 2 L 0 4 Z\"/></marker></defs>\n{body}<text x=\"20\" y=\"1080\" font-size=\"5\">μ_F = {} N/mm</text>\n</svg>\n",
+        ans["mu"]
+    );
+    let mut twin = ans.clone();
+    twin["segments"] = Value::Object(twin_segments);
+    twin["angles"] = Value::Object(twin_angles);
+    twin.as_object_mut().unwrap().remove("values");
+    (svg, twin)
+}
+
+/// Every answer of the catalogue that gives directions, drawn in SVG with
+/// arrowheads (`drawn`), is read and judged as its JSON twin (the same
+/// segments and directions, no values): the same status and the same
+/// mistake named; the honest drawings are never rejected.
+#[test]
+fn drawn_answers_are_judged_as_their_json_twins() {
+    let dir = format!("{}/tests/forces_catalogue", root());
+    let labels: Value =
+        serde_json::from_str(&std::fs::read_to_string(format!("{dir}/labels.json")).unwrap())
+            .unwrap();
+    let mut scenes: BTreeMap<String, (Analysis, Vec<Solved>)> = BTreeMap::new();
+    let (mut n, mut honest, mut mistaken, mut caught) = (0, 0, 0, 0);
+    for a in labels["answers"].as_array().unwrap() {
+        let s = |k: &str| a[k].as_str().unwrap_or_default().to_string();
+        let (file, scene, expected) = (s("file"), s("scene"), s("expected"));
+        if expected == "bad" {
+            continue;
+        }
+        let text = std::fs::read_to_string(format!("{dir}/{file}")).unwrap();
+        let ans: Value = serde_json::from_str(&text).unwrap();
+        if ans["angles"].as_object().is_none_or(|m| m.is_empty()) {
+            continue;
+        }
+        let (an, solved) = scenes.entry(scene.clone()).or_insert_with(|| load(&scene));
+        let (svg, twin) = drawn(&ans);
+        let position = StatedPosition::new(ans["position"].as_u64().unwrap() as usize);
+        let read = from_svg(&svg, None, ans["delta"].as_f64().unwrap(), position)
+            .unwrap_or_else(|e| panic!("{file}: the drawing is not read: {e}"));
+        let by_drawing = check(an, solved, &read).unwrap_or_else(|e| panic!("{file}: {e}"));
+        let by_json = check(an, solved, &from_json(&twin.to_string()).unwrap()).unwrap();
+        let said = mechplan::presentation::verdict::force_to_text(&by_drawing);
+        assert_eq!(
+            (by_drawing.status(), by_drawing.mistake),
+            (by_json.status(), by_json.mistake),
+            "{file}: the drawing and its JSON twin\n{said}"
+        );
+        assert_eq!(
+            by_drawing.verdicts.len(),
+            by_json.verdicts.len(),
+            "{file}: every item read\n{said}"
+        );
+        if expected == "honest" {
+            assert_ne!(
+                by_drawing.status(),
+                1,
+                "{file}: honest drawing rejected\n{said}"
+            );
+            honest += 1;
+        } else {
+            // (a mistake the answer shows in its values only, a drawing
+            // without them cannot show: its twin is right as well)
+            mistaken += 1;
+            if by_drawing.status() == 1 {
+                caught += 1;
+            }
+        }
+        n += 1;
+    }
+    eprintln!(
+        "drawn answers: {n} ({honest} honest, {mistaken} with a mistake, {caught} of them wrong)"
+    );
+    assert!(
+        honest >= 30 && mistaken >= 100,
+        "{honest} honest, {mistaken} mistaken drawn"
+    );
+    assert!(
+        caught as f64 >= 0.95 * mistaken as f64,
+        "{caught} of {mistaken} mistaken drawings wrong"
     );
 }
