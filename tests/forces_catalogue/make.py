@@ -9,7 +9,9 @@ each answer is. tests/check_forces_catalogue.rs grades `check` on them.
 
 Run from the repository's root after `cargo build --release` (mechplan
 gives only the input angles of a `count` scene and the positions'
-numbers):
+numbers; for a scene of several inputs, the two-cylinder arm, the
+kinematics too: forceref solves its forces from them; MECHPLAN=path
+for another binary):
     python3 tests/forces_catalogue/make.py        (or tests/forces_catalogue/make.sh)
 """
 import glob
@@ -25,7 +27,7 @@ sys.path.insert(0, os.path.join(HERE, '..', 'reference'))
 import forceref as fr  # noqa: E402
 from forceref import mp, mpf, add, sub, mul, cross, norm, unit, perp  # noqa: E402
 
-BINARY = 'target/release/mechplan'
+BINARY = os.environ.get('MECHPLAN', 'target/release/mechplan')
 # Positions (indices into the scene's positions) per fixture; all of a
 # scene with fewer.
 POSITIONS = [0, 2, 5, 8]
@@ -41,9 +43,7 @@ SEEN_MB = 3.0
 # No direction is read off a segment shorter than this, mm.
 MIN_ANGLE_MM = 2.0
 
-SKIPPED = {
-    'arm_two_cylinders': 'two inputs: mpref (the kinematics) solves one input only',
-}
+SKIPPED = {}
 
 
 def standard_at_least(x):
@@ -95,6 +95,27 @@ def dyad_scheme(M, links, attached):
     return s0, s1, k1, k2, ext[s0], mid, ext[s1]
 
 
+def cylinder_scheme(M, links, attached):
+    """A group of a link and a driving cylinder (barrel and rod: a side of
+    variable length, docs/kinetostatics.md): side 0 the link, side 1 the
+    cylinder, named as mechplan's check names them (R^τ_01, R_01, R_02,
+    R_31 on the boom's plan): (s0, outer, k1, k2, e1, mid, e2, rod), the
+    cylinder's outer link (its pair on an attached link) and its other one
+    (the middle pair's on the link)."""
+    pr = next(pr for pr in M.drives if pr['slider'] in links and pr['guide'] in links)
+    cyl = [pr['guide'], pr['slider']]
+    a = next(L for L in links if L not in cyl)
+    pairs = fr.pairs_of(M)
+    e1 = next(q for q in pairs if q[0] == 'R' and a in (q[2], q[3]) and ({q[2], q[3]} - {a}) <= attached)
+    mid = next(q for q in pairs if q[0] == 'R' and a in (q[2], q[3]) and ({q[2], q[3]} - {a}) & set(cyl))
+    rod = next(iter({mid[2], mid[3]} - {a}))
+    outer = next(L for L in cyl if L != rod)
+    e2 = next(q for q in pairs if q[0] == 'R' and outer in (q[2], q[3]) and ({q[2], q[3]} - {outer}) <= attached)
+    k1 = next(iter({e1[2], e1[3]} - {a}))
+    k2 = next(iter({e2[2], e2[3]} - {outer}))
+    return a, outer, k1, k2, e1, mid, e2, rod
+
+
 def link_forces(lds, L):
     return [ld for ld in lds if ld['link'] == L and norm(ld['f']) > 0]
 
@@ -102,7 +123,7 @@ def link_forces(lds, L):
 def plan_items(M, pos, lds, solved, gi, groups, balancing):
     """The items of plan gi (None: the input link's): (name, vector, role);
     roles: 'measured', 'tau', 'load', 'neighbour'."""
-    attached = {'0', M.input_link}
+    attached = {'0', M.input_link} if M.kind != 'cylinders' else {'0'}
     for g in groups[:gi] if gi is not None else groups:
         attached |= set(g)
     links = groups[gi] if gi is not None else [M.input_link]
@@ -124,7 +145,20 @@ def plan_items(M, pos, lds, solved, gi, groups, balancing):
                 items.append((f"R_{other}{L}", force_on(M, pos, q, x, L), 'neighbour'))
     scheme = None
     triad = None
-    if gi is not None and len(links) == 4:
+    side1 = None
+    if gi is not None and M.kind == 'cylinders':
+        s0, s1, k1, k2, e1, mid, e2, rod = cylinder_scheme(M, links, attached)
+        scheme = (s0, s1, k1, k2, e1, mid, e2)
+        side1 = [s1, rod]
+        r1 = force_on(M, pos, e1, solved[e1], s0)
+        r2 = force_on(M, pos, e2, solved[e2], s1)
+        rm = force_on(M, pos, mid, solved[mid], s0)
+        for k_, s_, e_, r_ in ((k1, s0, e1, r1), (k2, s1, e2, r2)):
+            e = perp(unit(sub(pos.p[mid[1]], pos.p[e_[1]])))
+            items.append((f"R^τ_{k_}{s_}", mul(e, r_[0] * e[0] + r_[1] * e[1]), 'tau'))
+        items += [(f"R_{k1}{s0}", r1, 'measured'), (f"R_{k2}{s1}", r2, 'measured'),
+                  (f"R_{rod}{s0}", rm, 'measured')]
+    elif gi is not None and len(links) == 4:
         triad = triad_scheme(M, pos, links, attached)
         items += triad_items(M, pos, solved, triad)
     elif gi is not None:
@@ -150,6 +184,7 @@ def plan_items(M, pos, lds, solved, gi, groups, balancing):
     p = Plan()
     p.gi, p.links, p.items, p.scheme, p.balancing = gi, links, items, scheme, balancing
     p.triad = triad
+    p.side1 = side1
     # Σ|F| of the forces laid off on the plan (the loads and the later
     # reactions): what M_b's arms multiply.
     n_laid = sum(1 for L in links for ld in link_forces(lds, L)) + sum(
@@ -304,7 +339,14 @@ def polygon(M, pos, lds, solved, plan, t1, t2):
         return F
     P1 = t1
     end0 = add(P1, known_sum(s0))
-    end1 = add(end0, known_sum(s1))
+    if plan.side1 is None:
+        end1 = add(end0, known_sum(s1))
+    else:
+        # a cylinder: barrel and rod one side (their pair's N and the
+        # drive's F_b inside it cancel)
+        end1 = end0
+        for L in plan.side1:
+            end1 = add(end1, known_sum(L))
     end = add(end1, t2) if t2 is not None else end1
     l1 = sub(B, A)
     if e2[0] == 'R':
@@ -315,7 +357,8 @@ def polygon(M, pos, lds, solved, plan, t1, t2):
     det = cross(l1, mul(d2, -1))
     t = cross(end, mul(d2, -1)) / det
     X = mul(l1, t)
-    return {f"R_{k1}{s0}": sub(P1, X), f"R_{k2}{s1}": sub(X, end1), f"R_{s1}{s0}": sub(X, end0)}
+    m_ = plan.side1[-1] if plan.side1 is not None else s1
+    return {f"R_{k1}{s0}": sub(P1, X), f"R_{k2}{s1}": sub(X, end1), f"R_{m_}{s0}": sub(X, end0)}
 
 
 # ---------------------------------------------------------------------------
@@ -389,9 +432,9 @@ def scene_answers(name, path, out_dir, labels):
     text = open(path).read()
     inputs = fr.input_texts(mj)
     numbers = [p['position'] for p in mj['positions']]
-    scene, M, groups, ref = fr.reference(text, inputs)
-    _, _, _, ref_nr = fr.reference(text, inputs, ('not_reversed',))
-    _, _, _, ref_nw = fr.reference(text, inputs, ('no_weights',))
+    scene, M, groups, ref = fr.reference(text, inputs, mj=mj)
+    _, _, _, ref_nr = fr.reference(text, inputs, ('not_reversed',), mj=mj)
+    _, _, _, ref_nw = fr.reference(text, inputs, ('no_weights',), mj=mj)
     S_p = f(M.S_p)
     mu_l = standard_at_least(S_p / 200.0)
     ks = [k for k in POSITIONS if k < len(ref)] or [0]
@@ -402,7 +445,10 @@ def scene_answers(name, path, out_dir, labels):
             continue
         pos, lds, solved, b = ref[k]
         plans = [plan_items(M, pos, lds, solved, gi, groups, b) for gi in range(len(groups))]
-        plans.append(plan_items(M, pos, lds, solved, None, groups, b))
+        if M.kind != 'cylinders':
+            # (several inputs: no input link's plan; each cylinder's F_b is
+            # found in its group's)
+            plans.append(plan_items(M, pos, lds, solved, None, groups, b))
         for plan in plans:
             tag = f"{numbers[k]}_{''.join(plan.links)}"
             rng = random.Random(f"{name}|{tag}")

@@ -4,7 +4,13 @@ kinetostatics (docs/kinetostatics.md), at 60 digits.
 
 The kinematics (positions, accelerations of the points, angular
 accelerations of the links) come from mpref.py (tests/reference/README.md),
-which knows nothing of mechplan's code; the forces are this file's own:
+which knows nothing of mechplan's code; the forces are this file's own.
+A scene of several inputs (driving cylinders: fixtures/dynamics/
+arm_two_cylinders.json) is beyond mpref (one input only): its kinematics
+are read from `mechplan solve --format json` (points' positions and
+accelerations, links' angular accelerations, each double read as the
+exact decimal it prints; cross-checked by the kinematic references
+elsewhere), its forces are still this file's own, solved at 60 digits:
 
 - the loads of the scene's `dynamics` object (docs/scene-format.md,
   "Dynamics"): per link with mass the inertia force −m·a_S at its centre
@@ -21,7 +27,10 @@ which knows nothing of mechplan's code; the forces are this file's own:
   equilibrium equations in its 2p unknown reaction components as one
   linear system (a class III group's 12 from its 4 links, as a dyad's 6),
   the reactions of the groups already solved known; the input link last,
-  with its balancing moment (a crank) or force (a driving slider).
+  with its balancing moment (a crank) or force (a driving slider); with
+  several driving sliders (cylinders) no link is attached beforehand: a
+  group holds its cylinder (barrel and rod), each driving pair inside it
+  adds its force F_b to the unknowns (3k = 2p + d).
 
 Nothing here calls mechplan for a force. `--against-mechplan` compares
 with `mechplan solve --format json` (the input angles of a `count` scene
@@ -108,6 +117,71 @@ def kinematics(scene_text, inputs):
     return M, out
 
 
+def several_inputs(scene):
+    return isinstance(scene.get('input'), list)
+
+
+class Structure:
+    """A scene's links, pairs and driving pairs, read as mpref reads them
+    (for a scene of several inputs, which mpref's model refuses)."""
+
+
+def structure_of(scene):
+    M = Structure()
+    lu = mpf(1) if (scene.get('units') or {}).get('length', 'm') == 'm' else mpf(1) / 1000
+    M.links = {str(k): list(v['points']) for k, v in scene['links'].items()}
+    M.order = list(M.links.keys())
+    M.moving = [L for L in M.order if L != '0']
+    M.points = list(scene['points'].keys())
+    xs = [num(xy[0]) * lu for xy in scene['points'].values()]
+    ys = [num(xy[1]) * lu for xy in scene['points'].values()]
+    M.S_p = mp.sqrt((max(xs) - min(xs)) ** 2 + (max(ys) - min(ys)) ** 2)
+    M.pairs = []
+    for k, sl in enumerate(scene.get('sliders') or []):
+        line = sl.get('line') or {}
+        if 'along' not in line:
+            raise SystemExit(f"forceref: /sliders/{k}/line: only a line `along` two points is read "
+                             "for a scene of several inputs")
+        M.pairs.append({'slider': str(sl['slider']), 'guide': str(sl['guide']), 'point': sl['point'],
+                        'along': tuple(line['along'])})
+    M.revolutes = []
+    for p in M.points:
+        ls = [L for L in M.order if p in M.links[L]]
+        for L2 in ls[1:]:
+            M.revolutes.append((p, ls[0], L2))
+    M.kind = 'cylinders'
+    M.input_link = None
+    M.drives = []
+    for i, inp in enumerate(scene['input']):
+        if inp.get('slider') is not True:
+            raise SystemExit(f"forceref: /input/{i}: several inputs are read as driving sliders only")
+        M.drives.append(next(pr for pr in M.pairs if pr['slider'] == str(inp['link'])))
+    return M
+
+
+def dec(x):
+    """A double of mechplan's JSON as the exact decimal it prints."""
+    return mpf(repr(float(x)))
+
+
+def kinematics_from_mechplan(scene_text, mj):
+    """The kinematics of a scene of several inputs, from mechplan's JSON
+    (`mechplan solve --format json`): per position a Position."""
+    scene = json.loads(scene_text)
+    M = structure_of(scene)
+    mp.dps = DPS + 20
+    out = []
+    for P in mj['positions']:
+        pos = Position()
+        pos.p = {n: (dec(d['p'][0]), dec(d['p'][1])) for n, d in P['points'].items()}
+        pos.a = {n: (dec(d['a'][0]), dec(d['a'][1])) for n, d in P['points'].items()}
+        pos.v = {n: (dec(d['v'][0]), dec(d['v'][1])) for n, d in P['points'].items()}
+        pos.eps = {L: dec(d['epsilon']) for L, d in P['links'].items()}
+        pos.guides = [unit(sub(pos.p[pr['along'][1]], pos.p[pr['along'][0]])) for pr in M.pairs]
+        out.append(pos)
+    return M, out
+
+
 # ---------------------------------------------------------------------------
 # Loads.
 
@@ -174,17 +248,19 @@ def pairs_of(M):
 def groups_of(M):
     """Assur groups in the order they attach: lists of link ids."""
     pairs = pairs_of(M)
-    attached = {'0', M.input_link}
+    multi = M.kind == 'cylinders'
+    attached = {'0'} if multi else {'0', M.input_link}
     rest = [L for L in M.moving if L not in attached]
     groups = []
     while rest:
         found = None
-        for size in range(2, len(rest) + 1, 2):
+        for size in (range(1, len(rest) + 1) if multi else range(2, len(rest) + 1, 2)):
             for sub_ in itertools.combinations(rest, size):
                 s = set(sub_)
                 p = [q for q in pairs if (q[2] in s or q[3] in s) and q[2] in s | attached
                      and q[3] in s | attached]
-                if 3 * size == 2 * len(p):
+                d = sum(1 for pr in M.drives if pr['slider'] in s and pr['guide'] in s) if multi else 0
+                if 3 * size == 2 * len(p) + d:
                     found = list(sub_)
                     break
             if found:
@@ -281,6 +357,14 @@ def drive_action(M, pos, scene):
     return lambda v: {pr['slider']: (mul(u, v), at, mpf(0)), pr['guide']: (mul(u, -v), at, mpf(0))}
 
 
+def cylinder_action(M, pos, pr):
+    """A driving pair's force F_b per unit: +u on the rod (the slider),
+    -u on the barrel (the guide), u the guide's direction (s growing)."""
+    u = pos.guides[M.pairs.index(pr)]
+    at = pos.p[pr['point']]
+    return lambda v: {pr['slider']: (mul(u, v), at, mpf(0)), pr['guide']: (mul(u, -v), at, mpf(0))}
+
+
 def solve_position(scene, M, pos, lds, groups, override=None):
     """Every pair's unknowns and the balancing value, group by group from
     the last attached. `override(group_index, links, solved, known)` may
@@ -290,9 +374,10 @@ def solve_position(scene, M, pos, lds, groups, override=None):
     for ld in lds:
         known.setdefault(ld['link'], []).append((ld['f'], ld['at'], ld['c']))
     solved = {}
-    stages = [(i, g) for i, g in enumerate(groups)][::-1] + [(None, [M.input_link])]
+    multi = M.kind == 'cylinders'
+    stages = [(i, g) for i, g in enumerate(groups)][::-1] + ([] if multi else [(None, [M.input_link])])
     attached_before = []
-    acc = {'0', M.input_link}
+    acc = {'0'} if multi else {'0', M.input_link}
     for g in groups:
         attached_before.append(set(acc))
         acc |= set(g)
@@ -310,10 +395,18 @@ def solve_position(scene, M, pos, lds, groups, override=None):
         if override:
             override(gi, links, solved, seen)
         extra = [('b', drive_action(M, pos, scene))] if gi is None else []
+        if multi:
+            extra = [(i, cylinder_action(M, pos, pr)) for i, pr in enumerate(M.drives)
+                     if pr['slider'] in s and pr['guide'] in s]
         out, ex = solve_group(M, pos, links, unk, seen, extra)
         solved.update(out)
         if gi is None:
             balancing = ex['b']
+        elif multi:
+            balancing = balancing or {}
+            balancing.update(ex)
+    if multi:
+        balancing = [balancing[i] for i in range(len(M.drives))]
     return solved, balancing
 
 
@@ -327,13 +420,22 @@ def as_mechplan(M, solved, balancing):
             pr = M.pairs[q[1]]
             pairs.append({'slider': pr['slider'], 'guide': pr['guide'], 'point': pr['point'],
                           'N': x[0], 'M': x[1]})
+    if M.kind == 'cylinders':
+        return {'pairs': pairs, 'balancing': [{'F': b} for b in balancing]}
     return {'pairs': pairs, 'balancing': {'M' if M.kind == 'crank' else 'F': balancing}}
 
 
-def reference(scene_text, inputs=None, variant=()):
-    """Per position (None where it does not assemble): (pos, loads, solved, balancing)."""
+def reference(scene_text, inputs=None, variant=(), mj=None):
+    """Per position (None where it does not assemble): (pos, loads, solved, balancing).
+    A scene of several inputs takes its kinematics from mechplan's JSON `mj`."""
     scene = json.loads(scene_text)
-    M, positions = kinematics(scene_text, inputs)
+    if several_inputs(scene):
+        if mj is None:
+            raise SystemExit("forceref: several inputs: the kinematics are read from mechplan "
+                             "(--against-mechplan, or make.py)")
+        M, positions = kinematics_from_mechplan(scene_text, mj)
+    else:
+        M, positions = kinematics(scene_text, inputs)
     mp.dps = DPS + 20
     groups = groups_of(M)
     out = []
@@ -361,6 +463,9 @@ def input_texts(mj):
     out = []
     for p in mj['positions']:
         i = p['input']
+        if isinstance(i, list):          # several inputs: not mpref's to solve
+            out.append(','.join(repr(x['s'] if 's' in x else x['angle']) for x in i))
+            continue
         out.append(repr(i['angle'] if 'angle' in i else i['s']))
     return out
 
@@ -372,7 +477,7 @@ def against(scene_path, binary):
     mj = mechplan_json(scene_path, binary)
     text = open(scene_path).read()
     inputs = input_texts(mj)
-    scene, M, groups, ref = reference(text, inputs)
+    scene, M, groups, ref = reference(text, inputs, mj=mj)
     worst = mpf(0)
     rows = []
     for k, (r, theirs) in enumerate(zip(ref, mj['positions'])):
@@ -382,6 +487,8 @@ def against(scene_path, binary):
         pos, lds, solved, b = r
         ours = as_mechplan(M, solved, b)
         scale = max(max(norm(x) if q[0] == 'R' else abs(x[0]) for q, x in solved.items()), mpf(1))
+        if M.kind == 'cylinders':       # the largest force: the drives' F_b too
+            scale = max([scale] + [abs(bi) for bi in b])
         d = mpf(0)
         tp = theirs['dynamics']['pairs']
         for o in ours['pairs']:
@@ -395,9 +502,13 @@ def against(scene_path, binary):
                 N = mul(perp(pos.guides[k_]), o['N'])
                 d = max(d, norm(sub(N, (num(t['N'][0]), num(t['N'][1])))) / scale)
                 d = max(d, abs(o['M'] - num(t['M'])) / (scale * M.S_p))
-        key = 'M' if M.kind == 'crank' else 'F'
-        tb = num(theirs['dynamics']['balancing'][key])
-        d = max(d, abs(b - tb) / (scale * (M.S_p if key == 'M' else 1)))
+        if M.kind == 'cylinders':
+            for bi, tbi in zip(b, theirs['dynamics']['balancing']):
+                d = max(d, abs(bi - num(tbi['F'])) / scale)
+        else:
+            key = 'M' if M.kind == 'crank' else 'F'
+            tb = num(theirs['dynamics']['balancing'][key])
+            d = max(d, abs(b - tb) / (scale * (M.S_p if key == 'M' else 1)))
         worst = max(worst, d)
         rows.append((k, d))
     return worst, rows, groups
