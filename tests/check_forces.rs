@@ -898,3 +898,91 @@ fn a_group_grades_force_answers_with_the_mistake_named() {
         );
     }
 }
+
+/// Review findings of the force check (issue 42): a μ_l that draws the
+/// mechanism a few millimetres across is refused (a wrong M_b passed as
+/// too small to judge); a cylinder's balancing force is judged as F_b
+/// and M_b is refused for it; a drawing piling thousands of arrowheads
+/// on thousands of lines is read (or refused) at once, not ground through.
+#[test]
+fn force_review_findings_stay_fixed() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let dir = std::env::temp_dir().join(format!("mechplan-force-review-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |scene: &str, name: &str, text: &str| {
+        let f = dir.join(name);
+        std::fs::write(&f, text).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_mechplan"))
+            .args(["check", &format!("{root}/fixtures/dynamics/{scene}.json")])
+            .arg(&f)
+            .output()
+            .unwrap();
+        let said = format!(
+            "{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        (out.status.code(), said)
+    };
+    // M_b 200 where it is 96.7: wrong at μ_l = 0.002, refused at 0.2.
+    let mb = |mu_l: f64| {
+        format!(
+            "{{\"plan\":\"force\",\"position\":1,\"links\":[\"1\"],\"mu\":20,\"mu_l\":{mu_l},\"values\":{{\"R_21\":1054,\"R_01\":1048,\"M_b\":200}}}}"
+        )
+    };
+    let (st, said) = run("worked_slider_crank", "mb.json", &mb(0.002));
+    assert_eq!(st, Some(1), "{said}");
+    let (st, said) = run("worked_slider_crank", "mb.json", &mb(0.2));
+    assert_eq!(st, Some(2), "{said}");
+    assert!(said.contains("/mu_l"), "{said}");
+    // The arm's cylinder 1-2-3 at position 2: F_b 17 914 N.
+    let fb = |key: &str, v: f64| {
+        format!(
+            "{{\"plan\":\"force\",\"position\":2,\"links\":[\"1\",\"2\",\"3\"],\"mu\":200,\"values\":{{\"{key}\":{v}}}}}"
+        )
+    };
+    assert_eq!(
+        run("arm_two_cylinders", "fb.json", &fb("F_b", 17914.0)).0,
+        Some(0)
+    );
+    assert_eq!(
+        run("arm_two_cylinders", "fb.json", &fb("F_b", -17914.0)).0,
+        Some(1)
+    );
+    let (st, said) = run("arm_two_cylinders", "fb.json", &fb("M_b", 17914.0));
+    assert_eq!(st, Some(2), "{said}");
+    assert!(
+        said.contains("/values/M_b") && said.contains("F_b"),
+        "{said}"
+    );
+    // 2 000 lines and 2 000 triangles piled on one spot, and 12 000
+    // marked lines: an answer at once (read or refused), never minutes.
+    let mut pile = String::from(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 300\"><text x=\"10\" y=\"290\">μ_F = 2 N/mm</text>\n",
+    );
+    for _ in 0..2000 {
+        pile += "<path d=\"M 10 50 L 110 50\" stroke=\"black\"/><polygon points=\"110,50 106,48 106,52\"/>\n";
+    }
+    let mut marked = pile.clone();
+    pile += "<text x=\"60\" y=\"48\">R_34</text></svg>\n";
+    marked += "<g marker-end=\"url(#a)\">";
+    for k in 0..12_000 {
+        marked += &format!(
+            "<path d=\"M 10 {} L 20 {}\" stroke=\"black\"/>",
+            k % 200,
+            k % 200
+        );
+    }
+    marked += "</g><text x=\"60\" y=\"48\">R_34</text></svg>\n";
+    for (name, text) in [("pile.svg", &pile), ("marked.svg", &marked)] {
+        let t = std::time::Instant::now();
+        let (st, said) = run("six_link_fig2_10", name, text);
+        assert!(
+            t.elapsed().as_secs_f64() < 5.0,
+            "{name} {:?}: {said}",
+            t.elapsed()
+        );
+        assert!(matches!(st, Some(0 | 1 | 2 | 4)), "{name}: {said}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

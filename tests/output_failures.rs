@@ -501,10 +501,11 @@ fn a_run_stopped_during_its_renames_leaves_the_set_its_manifest_lists() {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        // The new manifest staged: the renames begin.
+        // The journal written: the renames begin (the manifest is staged
+        // sheet by sheet while the run draws, so it comes earlier).
         let staged = out
             .join(format!(".mechplan-staging-{}", child.id()))
-            .join("sheets.json");
+            .join(".commit");
         let start = std::time::Instant::now();
         while !staged.exists() && child.try_wait().unwrap().is_none() {
             assert!(start.elapsed().as_secs() < 60);
@@ -673,4 +674,51 @@ fn a_reader_gone_stops_the_sweep_at_once() {
     assert!(stderr(&o).is_empty(), "{}", stderr(&o));
     // The whole sweep takes seconds.
     assert!(took.as_millis() < 1000, "{took:?}");
+}
+
+/// A run stopped (SIGTERM) while it still draws, its manifest being
+/// staged sheet by sheet: its staging folder is removed though the run
+/// goes on writing into it while the signal's thread removes it, and the
+/// folder keeps the old set its manifest lists.
+#[test]
+fn a_run_stopped_while_it_draws_leaves_nothing_behind() {
+    let dir = temp_dir("drawing");
+    let old = scene_with(&dir, "old.json", "four_bar", 60, None);
+    let new = scene_with(&dir, "new.json", "four_bar", 300, None);
+    let out = dir.join("out");
+    for trial in 0..6 {
+        let _ = std::fs::remove_dir_all(&out);
+        let o = Command::new(EXE)
+            .args(["draw", &old, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        let mut child = Command::new(EXE)
+            .args(["draw", &new, "-o"])
+            .arg(&out)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let staged = out
+            .join(format!(".mechplan-staging-{}", child.id()))
+            .join("sheets.json");
+        let start = std::time::Instant::now();
+        while !staged.exists() && child.try_wait().unwrap().is_none() {
+            assert!(start.elapsed().as_secs() < 60);
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5 * trial));
+        let _ = Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status();
+        let o = child.wait_with_output().unwrap();
+        assert!(
+            matches!(o.status.code(), Some(0 | 143)),
+            "trial {trial}: {:?} {}",
+            o.status,
+            stderr(&o)
+        );
+        assert_eq!(entries(&out), manifest_files(&out), "trial {trial}");
+    }
 }

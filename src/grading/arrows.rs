@@ -104,6 +104,13 @@ fn distance(c: &[Point; 3], p: Point) -> (f64, bool) {
     (d, false)
 }
 
+/// The most segment ends a triangle looks among (a joint of a force plan
+/// holds a few; a cell of a hostile file, thousands).
+const MAX_NEAR: usize = 64;
+
+/// The most arrowheads a drawing may hold (a force plan has tens).
+pub(crate) const MAX_HEADS: usize = 10_000;
+
 /// The sense of each segment `(a, b, line, k)` (segment `k` of line
 /// `line`, points `a` → `b`): `Some(true)` when its only arrowhead is at
 /// `b`, `Some(false)` at `a`, `None` when it has none or one at each end.
@@ -113,19 +120,23 @@ fn distance(c: &[Point; 3], p: Point) -> (f64, bool) {
 /// one still in doubt is no segment's.
 pub(crate) fn senses(heads: &[Head], lines: &[Vec<Point>], segs: &[(Point, Point, usize, usize)]) -> Vec<Option<bool>> {
     let mut at = vec![(false, false); segs.len()];
+    // Each line's markers (at its start, at its end), read once: linear in
+    // the lines and the heads, whatever a hostile file holds.
+    let mut marks = vec![(false, false); lines.len()];
+    for h in heads {
+        if let Head::Marked { line, at_end } = *h
+            && let Some(m) = marks.get_mut(line)
+        {
+            if at_end { m.1 = true } else { m.0 = true }
+        }
+    }
     // Segment ends by grid cell, where a triangle looks for them.
     let cell = |p: Point| ((p.x / 32.0).floor() as i64, (p.y / 32.0).floor() as i64);
     let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = Default::default();
     for (i, &(a, b, line, k)) in segs.iter().enumerate() {
         let last = k + 2 == lines[line].len();
-        for h in heads {
-            if let Head::Marked { line: m, at_end } = h
-                && *m == line
-            {
-                at[i].1 |= *at_end && last;
-                at[i].0 |= !*at_end && k == 0;
-            }
-        }
+        at[i].1 |= marks[line].1 && last;
+        at[i].0 |= marks[line].0 && k == 0;
         for p in [a, b] {
             grid.entry(cell(p)).or_default().push(i);
         }
@@ -134,16 +145,22 @@ pub(crate) fn senses(heads: &[Head], lines: &[Vec<Point>], segs: &[(Point, Point
     for h in heads {
         let Head::Triangle { corners, .. } = h else { continue };
         let (cx, cy) = cell(corners[0]);
+        let near: Vec<usize> = (-1..=1)
+            .flat_map(|dx| (-1..=1).map(move |dy| (cx + dx, cy + dy)))
+            .flat_map(|c| grid.get(&c).into_iter().flatten().copied())
+            .collect();
+        // A triangle among more segment ends than a plan's joint holds is
+        // no one's (a hostile pile of lines: bounded work per triangle).
+        if near.len() > MAX_NEAR {
+            open.push(Vec::new());
+            continue;
+        }
         let mut cands: Vec<(usize, bool)> = Vec::new();
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for &i in grid.get(&(cx + dx, cy + dy)).into_iter().flatten() {
-                    let (a, b, ..) = segs[i];
-                    for (end, yes) in [(true, points_at(corners, a, b)), (false, points_at(corners, b, a))] {
-                        if yes && !cands.contains(&(i, end)) {
-                            cands.push((i, end));
-                        }
-                    }
+        for i in near {
+            let (a, b, ..) = segs[i];
+            for (end, yes) in [(true, points_at(corners, a, b)), (false, points_at(corners, b, a))] {
+                if yes && !cands.contains(&(i, end)) {
+                    cands.push((i, end));
                 }
             }
         }

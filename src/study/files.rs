@@ -53,7 +53,15 @@ pub(crate) fn discard(path: &Path) {
 fn remove_any(path: &Path) {
     match std::fs::symlink_metadata(path) {
         Ok(m) if m.is_dir() => {
-            let _ = std::fs::remove_dir_all(path);
+            // A writer may still be putting a file into it (a signal's
+            // thread removes it while the run draws on): removed again
+            // until it is gone, or for at most a second.
+            for _ in 0..100 {
+                if std::fs::remove_dir_all(path).is_ok() || !path.exists() {
+                    break;
+                }
+                std::thread::sleep(std::time::Duration::from_millis(10));
+            }
         }
         Ok(_) => {
             let _ = std::fs::remove_file(path);

@@ -214,14 +214,29 @@ pub fn from_svg(
             "μ_F = {mu} N/mm draws no plan: a scale between 1e-6 and 1e9 N/mm"
         )));
     }
+    // (each label looks among every segment, each triangle near its
+    // corner: a hostile file's thousands are refused, not ground through)
+    let most = crate::grading::arrows::MAX_HEADS;
+    if d.heads.len() > most || d.labels.len() > most {
+        return Err(bad(format!(
+            "the drawing has {} arrowheads and {} labels: a force plan has tens, at most {most} of each are read",
+            d.heads.len(),
+            d.labels.len()
+        )));
+    }
     // Each vector: a segment of a line that draws no arrowhead, with
     // its sense when its arrowhead tells it.
-    let skip = crate::grading::arrows::head_lines(&d.heads);
+    let mut skip = vec![false; d.lines.len()];
+    for l in crate::grading::arrows::head_lines(&d.heads) {
+        if let Some(x) = skip.get_mut(l) {
+            *x = true;
+        }
+    }
     let drawn: Vec<(kurbo::Point, kurbo::Point, usize, usize)> = d
         .lines
         .iter()
         .enumerate()
-        .filter(|(l, _)| !skip.contains(l))
+        .filter(|(l, _)| !skip[*l])
         .flat_map(|(l, ps)| ps.windows(2).enumerate().map(move |(k, w)| (w[0], w[1], l, k)))
         .filter(|(a, b, ..)| (*b - *a).hypot() > 0.0)
         .collect();

@@ -152,26 +152,33 @@ fn expect(
 ) -> std::result::Result<Expect, String> {
     let k = key(name);
     if crate::words::forces::is_balancing(&k, "F") {
-        // A driving slider's balancing force is laid off on the polygon:
-        // its drafting tolerance, in N.
-        if kind != "value" {
-            return Err("the balancing force is a value, not a segment".into());
-        }
         let (b, _) =
             balancing(plan).ok_or("this plan has no balancing force: it is the input link's")?;
-        let v = plan
-            .vectors
-            .iter()
-            .find(|v| {
-                matches!(
-                    v.force,
-                    crate::kinetostatics::force_plan::Force::Drive { .. }
-                )
-            })
-            .ok_or("this input is a crank: its balancing value is the moment M_b")?;
+        if balances_a_crank(an, plan) {
+            return Err("this input is a crank: its balancing value is the moment M_b".into());
+        }
+        let drive = plan.vectors.iter().position(|v| matches!(v.force, Force::Drive { .. }));
+        let Some(i) = drive else {
+            // A cylinder's drive acts inside its group, off the polygon:
+            // from its body's equilibrium, with the reactions read off the
+            // plan (the worst of their ends' errors, and δ twice).
+            if kind != "value" {
+                return Err("a cylinder's balancing force acts inside its group, not on the polygon: give it as a value".into());
+            }
+            let worst = plan.err.iter().copied().fold(0.0, f64::max);
+            return Ok((b, (worst + 2.0 * ans.delta) * plan.mu, None));
+        };
+        // A driving slider's is laid off on the polygon: a vector of it.
+        let v = &plan.vectors[i];
         let seg = plan.points[v.to] - plan.points[v.from];
-        let tol = (plan.err[v.from] + plan.err[v.to] + ans.delta) * plan.mu;
-        return Ok((b, tol, Some(seg.hypot())));
+        if kind == "value" {
+            let tol = vector_tolerance(plan, i, ans.delta) * plan.mu;
+            return Ok((b, tol, Some(seg.hypot())));
+        }
+        return Ok(vector_item(plan, i, kind, ans.delta));
+    }
+    if crate::words::forces::is_balancing(&k, "M") && !balances_a_crank(an, plan) {
+        return Err("this input is a driving slider: its balancing value is the force F_b".into());
     }
     if crate::words::forces::is_balancing(&k, "M") {
         if kind != "value" {
@@ -202,10 +209,16 @@ fn expect(
                 names.join(", ")
             )
         })?;
-    let v = &plan.vectors[found];
+    Ok(vector_item(plan, found, kind, ans.delta))
+}
+
+/// Vector `i` of `plan` as an item of kind `kind`: its segment, its
+/// value or its direction, with the tolerance of the step that draws it.
+fn vector_item(plan: &ForcePlan, i: usize, kind: &str, delta: f64) -> Expect {
+    let v = &plan.vectors[i];
     let seg = plan.points[v.to] - plan.points[v.from];
-    let tol_mm = vector_tolerance(plan, found, ans.delta);
-    Ok(match kind {
+    let tol_mm = vector_tolerance(plan, i, delta);
+    match kind {
         "segment" => (seg.hypot(), tol_mm, Some(seg.hypot())),
         "value" => (v.value.hypot(), tol_mm * plan.mu, Some(seg.hypot())),
         _ => {
@@ -219,6 +232,18 @@ fn expect(
             // (its vector's length on the plan, to say how small it is)
             (deg, tol, Some(seg.hypot()))
         }
+    }
+}
+
+/// Whether `plan`'s balancing value is a crank's moment (else a driving
+/// slider's or a cylinder's force).
+fn balances_a_crank(an: &Analysis, plan: &ForcePlan) -> bool {
+    plan.steps.iter().any(|s| match s {
+        ForceStep::Balancing { input, .. } => matches!(
+            an.mech.scene.input_at(*input),
+            crate::model::scene::InputSpec::Crank { .. }
+        ),
+        _ => false,
     })
 }
 
@@ -308,6 +333,9 @@ pub fn check_in(
             ),
         ));
     };
+    if let Some(mu_l) = ans.mu_l {
+        drawn_large_enough(an, s, mu_l)?;
+    }
     let place = mistakes::At {
         an,
         s,
@@ -336,6 +364,27 @@ pub fn check_in(
         return Err(Error::fields(issues));
     }
     Ok(judge.report(an.numbering.number(at), &readings))
+}
+
+/// Refuses a μ_l at which the mechanism is drawn under 10 mm across: the
+/// arms of M_b read there would make its tolerance as large as itself,
+/// and a wrong M_b would pass as too small to judge.
+fn drawn_large_enough(an: &Analysis, s: &Solved, mu_l: f64) -> Result<()> {
+    let mut box_ = kurbo::Rect::from_points(s.point(an, 0).at, s.point(an, 0).at);
+    for p in 1..an.mech.scene.points.len() {
+        box_ = box_.union_pt(s.point(an, p).at);
+    }
+    let across = box_.width().hypot(box_.height()) / mu_l;
+    if across >= 10.0 {
+        return Ok(());
+    }
+    let mm = crate::format::num(across);
+    Err(Error::scene(
+        "/mu_l",
+        format!(
+            "μ_l = {mu_l} m/mm draws the mechanism {mm} mm across: a drawing of it at least 10 mm across is needed to read the arms of M_b"
+        ),
+    ))
 }
 
 /// The answer with its plan's links: an SVG answer names its forces, not
