@@ -41,7 +41,7 @@ mod studies;
 /// ([`KinematicCheck::report`], [`Checked::Force`], a photographed
 /// plan's [`KinematicCheck::photo`]).
 pub mod verdict {
-    pub use crate::grading::forces::ForceReport;
+    pub use crate::grading::forces::{ForceMistake, ForceReport};
     pub use crate::grading::photo::{PhotoReading, Snapped};
     pub use crate::grading::{
         Candidate, Diagnosis, Elsewhere, Found, Grade, Judgement, Report, SecondOpinion,

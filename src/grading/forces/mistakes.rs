@@ -23,7 +23,10 @@ pub enum ForceMistake {
     WeightsLeftOut,
     /// The polygon drawn at `drawn` × the stated μ_F (its segments
     /// 1/`drawn` of what the stated scale gives).
-    Scale { drawn: f64 },
+    Scale {
+        /// The scale drawn at, as a multiple of the stated μ_F.
+        drawn: f64,
+    },
     /// The tangential components with the wrong sign.
     TangentialSign,
     /// The tangential components laid along the link.

@@ -53,9 +53,9 @@ pub struct ForceReport {
     pub lang: Lang,
     /// The right plan at the student's μ_F, as the answer was judged
     /// against it (what the overlay draws: presentation never solves).
-    pub plan: ForcePlan,
+    pub(crate) plan: ForcePlan,
     /// Its vectors' names, one per vector, in `lang`'s notation.
-    pub names: Vec<Label>,
+    pub(crate) names: Vec<Label>,
 }
 
 impl ForceReport {
