@@ -80,10 +80,10 @@ impl ForceReport {
         }
     }
 
-    /// The vector of [`Self::plan`] an item's force name (`R_43`,
+    /// The vector of the right plan an item's force name (`R_43`,
     /// `R^τ_12`, `R43`) names, as the items were judged (the last of that
     /// name: a reaction laid off and read off again is its read-off one).
-    pub fn vector_of(&self, name: &str) -> Option<usize> {
+    pub(crate) fn vector_of(&self, name: &str) -> Option<usize> {
         let k = key(name);
         self.names
             .iter()
