@@ -15,6 +15,12 @@ use std::process::ExitCode;
 use std::sync::Arc;
 use terminal::{stdout, wrote};
 
+/// mimalloc: per-thread heaps that take back what another thread frees
+/// cheaply (a sweep's positions are finished on the pool and freed where
+/// they are written).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 /// A scene file read, long sweeps drawing a bar on a terminal, its
 /// positions numbered as `--positions-from` says (else as the scene does).
 fn study(path: &Path, numbering: Option<Numbering>) -> Result<Study, Error> {
@@ -41,7 +47,16 @@ fn results(study: &Study, style: Results, output: Option<&Path>) -> Result<(), E
     }
 }
 
+/// mimalloc's option `arena_eager_commit` (`mi_option_e` in its
+/// mimalloc.h, v3): 0 commits an arena's memory as it is used, so that
+/// a process whose data are limited (`ulimit -d`) is not refused the
+/// whole arena it reserves (1 GiB) at its first allocation.
+const MI_OPTION_ARENA_EAGER_COMMIT: libmimalloc_sys::mi_option_t = 4;
+
 fn main() -> ExitCode {
+    // SAFETY: sets an integer option of the allocator, on the one thread
+    // running; mimalloc reads it when it next reserves an arena.
+    unsafe { libmimalloc_sys::mi_option_set(MI_OPTION_ARENA_EAGER_COMMIT, 0) };
     signals::handle();
     mechplan::study::files::on_waiting(terminal::note);
     let cli = Cli::parse();

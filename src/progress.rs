@@ -51,14 +51,29 @@ pub fn map_on<T: Sync, R: Send>(
     progress: &dyn Progress,
     f: impl Fn(&T) -> R + Sync,
 ) -> Vec<R> {
+    let mut out = Vec::new();
+    map_into(items, progress, f, &mut out);
+    out
+}
+
+/// As [`map_on`], into `out` (emptied first; its room kept: a sweep done
+/// a part at a time reuses one buffer instead of asking for a new one a
+/// part).
+pub fn map_into<T: Sync, R: Send>(
+    items: &[T],
+    progress: &dyn Progress,
+    f: impl Fn(&T) -> R + Sync,
+    out: &mut Vec<R>,
+) {
     let one = |x: &T| {
         let r = f(x);
         progress.advance(1);
         r
     };
     if items.len() >= PARALLEL_FROM {
-        items.par_iter().map(one).collect()
+        items.par_iter().map(one).collect_into_vec(out);
     } else {
-        items.iter().map(one).collect()
+        out.clear();
+        out.extend(items.iter().map(one));
     }
 }

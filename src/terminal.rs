@@ -10,6 +10,7 @@ use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Mutex;
+use std::sync::atomic::AtomicBool;
 
 /// An error for the user on standard error, every line "mechplan: …";
 /// if standard error fails too, the exit status still tells.
@@ -72,6 +73,10 @@ pub struct Bar {
     /// From this many items the bar is shown.
     from: usize,
     bar: Mutex<Option<ProgressBar>>,
+    /// Whether a bar is shown: positions advance it only then (checked
+    /// without the lock, which the threads finishing positions would
+    /// otherwise take a hundred thousand times for nothing).
+    shown: AtomicBool,
 }
 
 impl Default for Bar {
@@ -88,6 +93,7 @@ impl Bar {
         Bar {
             from,
             bar: Mutex::new(None),
+            shown: AtomicBool::new(false),
         }
     }
 }
@@ -105,9 +111,13 @@ impl Progress for Bar {
         pb.set_message(what.to_string());
         if let Ok(mut b) = self.bar.lock() {
             *b = Some(pb);
+            self.shown.store(true, std::sync::atomic::Ordering::Relaxed);
         }
     }
     fn advance(&self, n: usize) {
+        if !self.shown.load(std::sync::atomic::Ordering::Relaxed) {
+            return;
+        }
         if let Ok(b) = self.bar.lock()
             && let Some(pb) = b.as_ref()
         {
@@ -118,6 +128,8 @@ impl Progress for Bar {
         if let Ok(mut b) = self.bar.lock()
             && let Some(pb) = b.take()
         {
+            self.shown
+                .store(false, std::sync::atomic::Ordering::Relaxed);
             pb.finish_and_clear();
         }
     }

@@ -10,8 +10,9 @@
 # aim at most 1.5× the closed form in wall time on a quiet machine, issue
 # 41; 3× before) and with both plans built numbers-only for every position
 # (aim at most 12×). Wall and CPU times (user + system; the command checks
-# on two threads besides the one that writes), the best of three runs
-# each, the closed form's the best of two in its own process; prints the
+# on the pool's two threads, a third finds the positions, the main one
+# writes), the best of three runs each, the closed form's the best of two
+# in its own process; prints the
 # machine, the load before and after, the times and both ratios.
 #
 #   bash benches/peers/checked.sh [N]

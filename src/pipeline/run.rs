@@ -129,7 +129,6 @@ impl Analysis {
         let mut motion = (eqs.is_some() && !ps.has_triads()).then(|| (ps.clone(), None));
         progress.start(inputs.len(), "positions");
         let keep = keep(inputs.len());
-        let mut kept: Vec<Placed> = Vec::new();
         let checks = Checks {
             changed: &changed,
             residuals: eqs.as_ref(),
@@ -148,29 +147,24 @@ impl Analysis {
             f(s)
         };
         // Chunk after chunk: its positions found in order (route (a)'s
-        // state and route (b)'s path run on), then finished in the
-        // background — in parallel when long — while the chunk before is
-        // handed over in order and the next one found: writing a sweep's
-        // results overlaps checking it. Not where each position keeps its
-        // plans (a chunk of them is tens of MB): there a chunk is handed
-        // over before the next is found.
-        // Nor from within a thread pool's worker (a run among runs in
-        // parallel): there the chunk is finished on the caller's own pool,
-        // which a waiting worker keeps working for, as before.
+        // state and route (b)'s path run on), then finished — in parallel
+        // when long. Where the overlap is allowed a thread of its own finds
+        // and finishes the chunks while this one hands the finished ones
+        // over in order (writing a sweep's results overlaps checking it;
+        // a few chunks may wait finished, so that the pool is never idle
+        // while they are written). Not where each position keeps its plans
+        // (a chunk of them is tens of MB): there a chunk is handed over
+        // before the next is found. Nor from within a thread pool's worker
+        // (a run among runs in parallel): there the chunk is finished on
+        // the caller's own pool, which a waiting worker keeps working for.
         let overlap = !(self.plans && self.keep_plans) && rayon::current_thread_index().is_none();
-        let done = std::thread::scope(|scope| -> Result<()> {
-            type Pending<'s> = (
-                std::thread::ScopedJoinHandle<'s, Vec<Result<Solved>>>,
-                Option<Error>,
-            );
-            let mut pending: Option<Pending> = None;
-            let deliver = |(finishing, stop): Pending, hand: &mut dyn FnMut(Solved) -> Result<()>| {
-                let finished = finishing.join().expect("the finishing of a chunk does not panic");
-                for s in finished {
-                    hand(s?)?;
-                }
-                stop.map_or(Ok(()), Err)
-            };
+        let checks = &checks;
+        // Finds and finishes every chunk in order, each given to `emit`
+        // with the error that stopped it; stops when `emit` says so.
+        let mut chunks = |emit: &mut Emit| {
+            let mut kept: Vec<Placed> = Vec::new();
+            // One buffer for a chunk's results, handed back emptied.
+            let mut finished = Vec::new();
             // The input values made a chunk at a time, none kept.
             let mut values = inputs.iter();
             for from in (0..inputs.len()).step_by(RUN_CHUNK) {
@@ -178,41 +172,38 @@ impl Analysis {
                 let route = (program, &mut state, &mut kernel);
                 let (placed, stop) = self.place_chunk((from, &chunk), &mut ps, route, &mut cs);
                 kept.extend(Placed::kept(&placed, &keep));
-                let checks = &checks;
-                let finish = move || {
-                    crate::progress::map_on(&placed, progress, |p| self.finish(p, checks, program))
-                };
-                if !overlap {
-                    // Positions that keep their plans are large: one chunk
-                    // of them at a time, on this thread.
-                    for s in finish() {
-                        hand(s?)?;
-                    }
-                    match stop {
-                        Some(e) => return Err(e),
-                        None => continue,
-                    }
-                }
-                let finishing = scope.spawn(finish);
+                let finish = |p: &Placed| self.finish(p, checks, program);
+                crate::progress::map_into(&placed, progress, finish, &mut finished);
                 let last = stop.is_some();
-                if let Some(before) = pending.replace((finishing, stop)) {
-                    deliver(before, &mut hand)?;
-                }
-                if last {
-                    break;
+                match emit(std::mem::take(&mut finished), stop) {
+                    Some(back) if !last => finished = back,
+                    _ => break,
                 }
             }
-            match pending {
-                Some(before) => deliver(before, &mut hand),
-                None => Ok(()),
+            kept
+        };
+        let mut handed = move |finished: &mut Finished, stop: Option<Error>| -> Result<()> {
+            for s in finished.drain(..) {
+                hand(s?)?;
             }
-        });
+            stop.map_or(Ok(()), Err)
+        };
+        let (kept, done) = if overlap {
+            overlapped(chunks, handed)
+        } else {
+            let mut outcome = Ok(());
+            let kept = chunks(&mut |mut done, stop| {
+                outcome = handed(&mut done, stop);
+                outcome.is_ok().then_some(done)
+            });
+            (kept, outcome)
+        };
         progress.finish();
         done?;
         then(&mut |an: &Analysis, k: usize| {
             let p = kept.iter().find(|p| p.index == k);
             let p = p.ok_or_else(|| Error::Internal(format!("position {k} was not kept")))?;
-            an.finish(p, &checks, program)
+            an.finish(p, checks, program)
         })
     }
 
@@ -595,6 +586,51 @@ struct Route<'a> {
     state: Option<State>,
     kernel: Option<Kernel>,
 }
+
+/// `chunks` run on a thread of its own, each chunk it finishes handed
+/// over by `handed` on this one, in order, while the next are found and
+/// finished ([`FINISHED_AHEAD`] of them may wait); the first error of
+/// `handed` stops both. What `chunks` returns, and how the handing ended.
+fn overlapped<K: Send>(
+    chunks: impl FnOnce(&mut Emit) -> K + Send,
+    mut handed: impl FnMut(&mut Finished, Option<Error>) -> Result<()>,
+) -> (K, Result<()>) {
+    std::thread::scope(|scope| {
+        let (to_hand, finished) = std::sync::mpsc::sync_channel(FINISHED_AHEAD);
+        let (to_fill, emptied) = std::sync::mpsc::channel();
+        let finding = scope.spawn(move || {
+            chunks(&mut |done, stop| {
+                to_hand.send((done, stop)).ok()?;
+                Some(emptied.try_recv().unwrap_or_default())
+            })
+        });
+        let mut outcome = Ok(());
+        for (mut done, stop) in finished {
+            outcome = handed(&mut done, stop);
+            if outcome.is_err() {
+                // The finding thread stops at its next chunk.
+                break;
+            }
+            // Its room for another chunk (none wanted after the last).
+            let _ = to_fill.send(done);
+        }
+        let kept = finding.join().expect("finding the chunks does not panic");
+        (kept, outcome)
+    })
+}
+
+/// A chunk's finished positions, in order.
+type Finished = Vec<Result<Solved>>;
+
+/// Where [`Analysis::run_each`]'s chunks go as they are finished, each
+/// with the error that stopped it: its buffer back to be filled again,
+/// `None` to stop.
+type Emit<'e> = dyn FnMut(Finished, Option<Error>) -> Option<Finished> + 'e;
+
+/// How many finished chunks may wait to be handed over while the next
+/// are found and finished ([`Analysis::run_each`]'s overlap): enough that
+/// the pool finishing them does not wait on the writing.
+const FINISHED_AHEAD: usize = 2;
 
 /// The checks of a run, made once: the scene with its data changed, and
 /// (on the fast path) route (b)'s equations of it and of them.

@@ -13,7 +13,6 @@
 
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
-use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{
     Conditioning, ConstraintSolver, Settings,
 };
@@ -21,7 +20,6 @@ use crate::kinematics::analytic::{Coords, Motion, Order, contour};
 use crate::kinematics::construction::Plans;
 use crate::kinematics::positions::{PositionSolver, describe_input};
 use crate::kinematics::solve::{Analysis, Position};
-use crate::model::mechanism::Mechanism;
 use kurbo::Point;
 
 pub use super::worst::{Quantity, Route, Worst};
@@ -254,7 +252,7 @@ impl Analysis {
         };
         let c = eqs
             .base
-            .corrected(&u, &x, &rates, false, conditioning)
+            .corrected(&u, &x, &rates, conditioning)
             .map_err(refuse)?;
         if c.conditioning.is_nan() || c.conditioning < ACCURACY.min_conditioning {
             return Err(refuse(format!(
@@ -262,7 +260,9 @@ impl Analysis {
                 c.conditioning
             )));
         }
-        let (d, worst) = self.compare(s, &c.motion);
+        let mine = self.mine(s, &s.motion);
+        let (d, most) = self.compare_most(&mine, &c.motion, &self.mech);
+        let worst = self.named(most);
         if d.is_nan() || d > MAX_REL_DIFF {
             return Err(refuse(format!(
                 "route (a)'s answer does not satisfy the closure equations and their derivatives ({worst}: relative residual {d:.2e}); a position too close to a singular one cannot be trusted"
@@ -270,8 +270,7 @@ impl Analysis {
         }
         let linear = (c.conditioning >= ACCURACY.linear_data_conditioning)
             .then(|| {
-                let near = c.factors.as_ref()?;
-                self.linear_sensitivity(s, &u, eqs, near, q_rounding, changed)
+                self.linear_sensitivity(&mine, &u, eqs, &c.factors, q_rounding, changed)
             })
             .flatten()
             .filter(|&(x, t)| x.max(t) <= ACCURACY.linear_data_sensitivity);
@@ -547,91 +546,6 @@ impl Analysis {
     fn compare(&self, s: &Position, other: &[Option<Motion>]) -> (f64, Worst) {
         self.compare_with(s, &s.motion, other, &self.mech)
     }
-
-    /// As [`Analysis::compare`], the other motions belonging to mechanism
-    /// `om` (the same links and points, its own shapes: a scene with its
-    /// data changed); `mine` the motions of `s` compared (its real rates,
-    /// or one run of its transfer functions).
-    pub(super) fn compare_with(
-        &self,
-        s: &Position,
-        mine: &[Option<Motion>],
-        other: &[Option<Motion>],
-        om: &Mechanism,
-    ) -> (f64, Worst) {
-        let m = &self.mech;
-        // The worst item, named only at the end: a sweep compares
-        // millions of numbers and prints at most one name a position.
-        let mut worst = (0.0f64, None::<(Quantity, Item)>);
-        let mut note = |d: f64, kind: Quantity, what: Item| {
-            if d > worst.0 || d.is_nan() {
-                worst = (d, Some((kind, what)));
-            }
-        };
-        let name = |w: Option<(Quantity, Item)>| match w {
-            None => Worst::default(),
-            Some((kind, Item::Point(p))) => Worst::of(kind, m.point_name(p)),
-            Some((kind, Item::Link(l))) => Worst::of(kind, m.link_id(l)),
-        };
-        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
-        let pts = || self.points.iter().map(|&p| (p, self.carrier(p)));
-        let links = || (0..m.links.len()).filter(|&l| self.link(l));
-        for (p, l) in pts() {
-            let d = (s.config.point(m, l, p) - place_b(p, l)).hypot() / m.size;
-            note(d, Quantity::Position, Item::Point(p));
-        }
-        for l in links() {
-            let d = wrap_pi(s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
-            note(d, Quantity::Angle, Item::Link(l));
-        }
-        let Some(order) = self.order else {
-            return (worst.0, name(worst.1));
-        };
-        let acc = order == Order::Acceleration;
-        // Each motion at its own place of the point. Velocities and
-        // angular velocities share a scale (ω·size), as do accelerations
-        // and angular accelerations (ε·size): the scales first.
-        let a_of = |mo: &[Option<Motion>], l: usize, at: Point| {
-            (mo[l].unwrap().velocity(at), mo[l].unwrap().acceleration(at))
-        };
-        let (mut sv, mut sa) = (f64::MIN_POSITIVE, f64::MIN_POSITIVE);
-        for (p, l) in pts() {
-            let (va, aa) = a_of(mine, l, s.config.point(m, l, p));
-            sv = sv.max(va.hypot());
-            sa = sa.max(aa.hypot());
-        }
-        for l in links() {
-            let ma = mine[l].unwrap();
-            sv = sv.max(ma.omega.abs() * m.size);
-            sa = sa.max(ma.epsilon.abs() * m.size);
-        }
-        // In the order the names were always reported in (ties keep the
-        // first): v, ω, then a, ε.
-        let mut da = Vec::new();
-        for (p, l) in pts() {
-            let (va, aa) = a_of(mine, l, s.config.point(m, l, p));
-            let (vb, ab) = a_of(other, l, place_b(p, l));
-            note((va - vb).hypot() / sv, Quantity::Velocity, Item::Point(p));
-            if acc {
-                da.push(((aa - ab).hypot() / sa, p));
-            }
-        }
-        for l in links() {
-            let (ma, mb) = (mine[l].unwrap(), other[l].unwrap());
-            note((ma.omega - mb.omega).abs() * m.size / sv, Quantity::Omega, Item::Link(l));
-        }
-        if acc {
-            for (d, p) in da {
-                note(d, Quantity::Acceleration, Item::Point(p));
-            }
-            for l in links() {
-                let (ma, mb) = (mine[l].unwrap(), other[l].unwrap());
-                let d = (ma.epsilon - mb.epsilon).abs() * m.size / sa;
-                note(d, Quantity::Epsilon, Item::Link(l));
-            }
-        }
-        (worst.0, name(worst.1))
-    }
 }
 
 /// Every datum of `scene` the data check changes, in a fixed order:
@@ -659,11 +573,4 @@ fn each_datum(scene: &mut crate::model::scene::Scene, mut f: impl FnMut(&mut f64
         }
         f(&mut sl.line.offset);
     }
-}
-
-/// What a compared number belongs to: a point or a link.
-#[derive(Clone, Copy)]
-enum Item {
-    Point(usize),
-    Link(usize),
 }

@@ -8,5 +8,6 @@
 pub mod crosscheck;
 pub mod precision;
 pub mod reference;
+mod compare;
 mod sensitivity;
 pub mod worst;

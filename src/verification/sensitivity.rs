@@ -12,8 +12,9 @@
 //! there (issue 41: the rod's φ'' printed 2.6× and 10.4× beyond its bound
 //! at starts 1e-9 and 1e-10 of the rod from a slider-crank's toggle).
 
+use super::compare::Mine;
 use super::crosscheck::{ChangedData, DATA_PERTURBATION, Residuals};
-use crate::kinematics::analytic::constraint::{Factors, Unknowns};
+use crate::kinematics::analytic::constraint::{ConstraintSolver, Factors, Unknowns};
 use crate::kinematics::analytic::{Coords, Drives, Motion, Order, contour};
 use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::{Analysis, Position};
@@ -61,13 +62,14 @@ impl Analysis {
     /// (the solve again decides).
     pub(super) fn linear_sensitivity(
         &self,
-        s: &Position,
+        mine: &Mine,
         u: &Unknowns,
         eqs: &Residuals,
         near: &Factors,
         q_rounding: Coords,
         changed: &ChangedData,
     ) -> Option<(f64, f64)> {
+        let s = mine.position();
         let units = DATA_PERTURBATION / f64::EPSILON;
         let rates = self.input_rates();
         // The transfer functions' runs in route (b)'s unknowns, corrected
@@ -79,7 +81,7 @@ impl Analysis {
                 (u, unit_rates(s.drives.len(), ij))
             })
             .collect();
-        let (mut worst, mut transfer) = (0.0f64, 0.0f64);
+        let mut scenes = Vec::new();
         for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
             let (Some(cs), Ok(an)) = (cs, an) else {
                 return None;
@@ -88,16 +90,26 @@ impl Analysis {
             for (x, r) in x.iter_mut().zip(q_rounding.iter()) {
                 *x += sign * units * r;
             }
-            let (c, moved) = cs.corrected_runs_by(u, &x, &rates, &runs, near).ok()?;
+            scenes.push((cs, an, x));
+        }
+        let with_x: Vec<(&ConstraintSolver, &[f64])> =
+            scenes.iter().map(|(cs, _, x)| (*cs, &x[..])).collect();
+        let moved = ConstraintSolver::corrected_together(&with_x, u, &rates, &runs, near).ok()?;
+        let (mut worst, mut transfer) = (0.0f64, 0.0f64);
+        let mine_runs: Vec<Mine> = transfer_runs(s)
+            .into_iter()
+            .map(|(_, run)| self.mine(s, run))
+            .collect();
+        for ((_, an, _), (motion, moved)) in scenes.iter().zip(&moved) {
             // A NaN is no sensitivity (f64::max would drop it): refused,
             // so that the position falls back to the full solve.
-            let (d, _) = self.compare_with(s, &s.motion, &c.motion, &an.mech);
+            let (d, _) = self.compare_most(mine, motion, &an.mech);
             if d.is_nan() {
                 return None;
             }
             worst = worst.max(d);
-            for ((_, mine), other) in transfer_runs(s).into_iter().zip(&moved) {
-                let t = self.compare_with(s, mine, other, &an.mech).0;
+            for (mine, other) in mine_runs.iter().zip(moved) {
+                let t = self.compare_most(mine, other, &an.mech).0;
                 if t.is_nan() {
                     return None;
                 }

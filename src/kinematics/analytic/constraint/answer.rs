@@ -2,9 +2,12 @@
 //! (b)'s equations: its unknowns, and the answer corrected by them.
 
 use super::ConstraintSolver;
+use super::dense::{self, Lu, Square};
 use crate::geom::Pose;
+use crate::kinematics::analytic::equations::Pose as PoseOf;
 use crate::kinematics::analytic::{Motion, Order};
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
+use std::borrow::Cow;
 
 impl ConstraintSolver<'_> {
     /// An answer found otherwise (route (a)'s) in this route's unknowns:
@@ -45,122 +48,342 @@ impl ConstraintSolver<'_> {
     /// the rates the linear solves of [`Self::solve_rates_of`]), and the
     /// answer so corrected. The rates' residuals are taken at the answer's
     /// own positions and velocities, so that each quantity is checked on
-    /// its own; with `relinearize` at the corrected ones instead (an
-    /// answer of a slightly different mechanism: the scene with its data
-    /// changed, whose corrected answer is its own to first order). With
-    /// `conditioning`, the scaled conditioning of Φ_q at the answer's
-    /// positions (else NaN).
+    /// its own. With `conditioning`, the scaled conditioning of Φ_q at the
+    /// answer's positions.
     pub fn corrected(
         &self,
         u: &Unknowns,
         x: &[f64],
         rates: &[(f64, f64)],
-        relinearize: bool,
         conditioning: Conditioning,
     ) -> std::result::Result<Corrected, String> {
         let singular = || "the constraint Jacobian is singular".to_string();
-        let j = self.jacobian(&u.q);
-        let lu = j.clone().lu();
+        // The links' poses (their sines and cosines) once for the three
+        // evaluations at the answer.
+        let at = self.eq.poses(u.q.as_slice());
+        let j = self.jacobian_at(&at, u.q.len());
+        let lu = j.lu();
         let conditioning = match conditioning {
-            Conditioning::Exact => self.scaled_conditioning(&j),
+            Conditioning::Exact => self.scaled_conditioning(&j.dmatrix()),
             Conditioning::Decided(threshold) => self
                 .conditioning_at_least(&j, &lu)
                 .filter(|&c| c >= threshold)
-                .unwrap_or_else(|| self.scaled_conditioning(&j)),
+                .unwrap_or_else(|| self.scaled_conditioning(&j.dmatrix())),
         };
         let orientation = lu.determinant().signum();
-        let q = &u.q - lu.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
-        let (j, lu, at) = if relinearize {
-            let j = self.jacobian(&q);
-            (j.clone(), j.lu(), &q)
-        } else {
-            (j, lu, &u.q)
-        };
-        let mut b = DVector::zeros(self.rows());
-        for &(i, row) in &self.driver_rows {
-            b[row] = rates[i].0;
-        }
-        let qd = match &u.qd {
-            Some(qd) => Some(qd - lu.solve(&(&j * qd - b)).ok_or_else(singular)?),
-            None => None,
-        };
-        let qdd = match (&u.qdd, &u.qd, &qd) {
-            (Some(qdd), Some(qd_own), Some(qd_new)) => {
+        // The three residuals, each at the answer itself, solved together
+        // (the same bits as one by one, `Factors::solve_many`).
+        let b = self.driver_rates(rates);
+        let mut rhs = vec![DVector::from_vec(self.eq.residual(&at, x))];
+        if let Some(qd) = &u.qd {
+            rhs.push(j.mul_sub(qd, &b));
+            if let Some(qdd) = &u.qdd {
                 let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                let g = self.gamma(at, if relinearize { qd_new } else { qd_own }, &acc);
-                Some(qdd - lu.solve(&(&j * qdd - g)).ok_or_else(singular)?)
+                let g = DVector::from_vec(self.eq.gamma(&at, qd.as_slice(), &acc));
+                rhs.push(j.mul_sub(qdd, &g));
             }
-            _ => None,
-        };
+        }
+        if !lu.solve_many(&mut rhs) {
+            return Err(singular());
+        }
+        let mut dx = rhs.into_iter();
+        let mut next = |x: &DVector<f64>| x - dx.next().expect("a residual each");
+        let q = next(&u.q);
+        let qd = u.qd.as_ref().map(&mut next);
+        let qdd = qd.as_ref().and(u.qdd.as_ref()).map(&mut next);
         Ok(Corrected {
             motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
             conditioning,
             orientation,
-            factors: (!relinearize).then_some(lu),
+            factors: lu,
         })
     }
 
-    /// As [`Self::corrected`] with `relinearize`, the linear solves by the
-    /// LU factors `near` of a nearby mechanism's Jacobian (the scene before
-    /// its data were changed by a few roundings) instead of this one's
-    /// own: the residuals are this mechanism's, so the corrected answer is
-    /// its own to first order, and the change of the inverse (a few
-    /// roundings of the data, times κ) enters only the correction of a
-    /// residual itself of that size — second order, far below what the
-    /// data check compares.
-    pub fn corrected_runs_by(
-        &self,
+    /// The answer `u` corrected by the equations of nearby mechanisms
+    /// (the scene with its data changed by a few roundings, each at its
+    /// own input coordinates; `scenes`), whose corrected answers are their
+    /// own to first order: the positions by one Newton step, the rates at
+    /// the corrected positions and velocities; the linear solves by the LU
+    /// factors `near` of this mechanism's Jacobian instead of each one's
+    /// own. The residuals are each mechanism's, and the change of the
+    /// inverse (a few roundings of the data, times κ) enters only the
+    /// correction of a residual itself of that size — second order, far
+    /// below what the data check compares. `runs`: more rates of the same
+    /// answer (the transfer functions' unit runs, each with its inputs'
+    /// rates), corrected at the same positions. Each scene's motions and
+    /// its runs', in order; the scenes' independent solves made together
+    /// (`Factors::solve_many`: the same bits as one by one).
+    pub fn corrected_together(
+        scenes: &[(&Self, &[f64])],
         u: &Unknowns,
-        x: &[f64],
         rates: &[(f64, f64)],
         runs: &[(Unknowns, Vec<(f64, f64)>)],
         near: &Factors,
-    ) -> std::result::Result<(Corrected, Vec<Motions>), String> {
+    ) -> std::result::Result<Vec<(Motions, Vec<Motions>)>, String> {
         let singular = || "the constraint Jacobian is singular".to_string();
-        let q = &u.q - near.solve(&self.residual(&u.q, x)).ok_or_else(singular)?;
-        let j = self.jacobian(&q);
-        let motion = self.rates_by(&q, &j, u, rates, near)?;
-        let runs = runs
-            .iter()
-            .map(|(u, rates)| self.rates_by(&q, &j, u, rates, near))
-            .collect::<std::result::Result<Vec<_>, _>>()?;
-        let corrected = Corrected {
-            motion,
-            conditioning: f64::NAN,
-            orientation: f64::NAN,
-            factors: None,
+        let solve = |mut rhs: Vec<DVector<f64>>| match near.solve_many(&mut rhs) {
+            true => Ok(rhs),
+            false => Err(singular()),
         };
-        Ok((corrected, runs))
+        // Every run of the answer: the real rates first.
+        let all: Vec<(&Unknowns, &[(f64, f64)])> = std::iter::once((u, rates))
+            .chain(runs.iter().map(|(u, r)| (u, r.as_slice())))
+            .collect();
+        let dq = solve(scenes.iter().map(|(cs, x)| cs.residual(&u.q, x)).collect())?;
+        let qs: Vec<DVector<f64>> = dq.iter().map(|d| &u.q - d).collect();
+        // Each scene's poses at its corrected positions, once for its
+        // Jacobian and every run's γ.
+        let ats: Vec<_> = scenes.iter().zip(&qs).map(|((cs, _), q)| cs.eq.poses(q.as_slice())).collect();
+        let js: Vec<Jacobian> = scenes.iter().zip(&ats).map(|((cs, _), at)| cs.jacobian_at(at, u.q.len())).collect();
+        // The velocities of every run of every scene.
+        let mut rhs = Vec::new();
+        for ((cs, _), j) in scenes.iter().zip(&js) {
+            for (u, rates) in &all {
+                if let Some(qd) = &u.qd {
+                    rhs.push(j.mul_sub(qd, &cs.driver_rates(rates)));
+                }
+            }
+        }
+        let mut dqd = solve(rhs)?.into_iter();
+        let mut qds: Vec<Vec<Option<DVector<f64>>>> = Vec::new();
+        for _ in scenes {
+            qds.push(all.iter().map(|(u, _)| u.qd.as_ref().map(|qd| qd - dqd.next().expect("one a run"))).collect());
+        }
+        // … and their accelerations, at those velocities.
+        let mut rhs = Vec::new();
+        for ((((cs, _), j), at), qd) in scenes.iter().zip(&js).zip(&ats).zip(&qds) {
+            for ((u, rates), qd_new) in all.iter().zip(qd) {
+                if let (Some(qdd), Some(qd_new)) = (&u.qdd, qd_new) {
+                    let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
+                    let g = DVector::from_vec(cs.eq.gamma(at, qd_new.as_slice(), &acc));
+                    rhs.push(j.mul_sub(qdd, &g));
+                }
+            }
+        }
+        let mut dqdd = solve(rhs)?.into_iter();
+        let mut out = Vec::with_capacity(scenes.len());
+        for (((cs, _), q), qd) in scenes.iter().zip(&qs).zip(&qds) {
+            let mut motions = all.iter().zip(qd).map(|((u, _), qd)| {
+                let qdd = match (&u.qdd, qd) {
+                    (Some(qdd), Some(_)) => Some(qdd - dqdd.next().expect("one a run")),
+                    _ => None,
+                };
+                cs.motions(q, qd.as_ref(), qdd.as_ref())
+            });
+            let first = motions.next().expect("the real rates");
+            out.push((first, motions.collect()));
+        }
+        Ok(out)
     }
 
-    /// The rates of `u` corrected at the positions `q` (Jacobian `j`) by
-    /// the factors `near`, with each input's (rate, rate of rate).
-    fn rates_by(
-        &self,
-        q: &DVector<f64>,
-        j: &nalgebra::DMatrix<f64>,
-        u: &Unknowns,
-        rates: &[(f64, f64)],
-        near: &Factors,
-    ) -> std::result::Result<Vec<Option<Motion>>, String> {
-        let singular = || "the constraint Jacobian is singular".to_string();
+    /// The drivers' rates as the right-hand side of Φ_q·q̇ = b.
+    fn driver_rates(&self, rates: &[(f64, f64)]) -> DVector<f64> {
         let mut b = DVector::zeros(self.rows());
         for &(i, row) in &self.driver_rows {
             b[row] = rates[i].0;
         }
-        let qd = match &u.qd {
-            Some(qd) => Some(qd - near.solve(&(j * qd - b)).ok_or_else(singular)?),
-            None => None,
-        };
-        let qdd = match (&u.qdd, &qd) {
-            (Some(qdd), Some(qd_new)) => {
-                let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                let g = self.gamma(q, qd_new, &acc);
-                Some(qdd - near.solve(&(j * qdd - g)).ok_or_else(singular)?)
+        b
+    }
+
+    /// A lower bound on [`ConstraintSolver::scaled_conditioning`] from the
+    /// LU factors of the (unscaled) Jacobian `j`, without an SVD:
+    /// 1/(‖J_s‖_F·‖J_s⁻¹‖_F), the scaled Jacobian J_s = R·J·G (rows R,
+    /// columns G as there) and its inverse G⁻¹·J⁻¹·R⁻¹. Since ‖A‖₂ ≤
+    /// ‖A‖_F ≤ √n·‖A‖₂ it lies between σ_min/σ_max over n and σ_min/σ_max
+    /// (shrunk by 1e-8 of itself for the inverse's own rounding, far
+    /// below where it is used). `None` where a column vanishes or the
+    /// inverse does not exist.
+    fn conditioning_at_least(&self, j: &Jacobian, lu: &Factors) -> Option<f64> {
+        let rows = self.row_scales();
+        let n = j.ncols();
+        let mut g = vec![1.0; n];
+        for i in 0..self.eq.links.len() {
+            g[3 * i + 2] = 1.0 / self.scale[i];
+        }
+        for (c, gc) in g.iter_mut().enumerate() {
+            let norm = j
+                .column(c)
+                .iter()
+                .zip(&rows)
+                .map(|(x, r)| (x * r * *gc).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            if norm == 0.0 || !norm.is_finite() {
+                return None;
             }
-            _ => None,
+            *gc /= norm;
+        }
+        let mut f2 = 0.0;
+        let inverse = lu.inverse_columns(|c, col| {
+            if let Some(rc) = rows.get(c) {
+                for (x, gr) in col.iter().zip(&g) {
+                    f2 += (x / (gr * rc)).powi(2);
+                }
+            }
+        });
+        if !inverse {
+            return None;
+        }
+        let bound = 1.0 / ((n as f64).sqrt() * f2.sqrt()) * (1.0 - 1e-8);
+        bound.is_finite().then_some(bound)
+    }
+
+    /// The Jacobian ∂Φ/∂q at the links' poses `at` (`n` unknowns), on
+    /// the stack where it is square and small ([`dense`]).
+    fn jacobian_at(&self, at: &[PoseOf<f64>], n: usize) -> Jacobian {
+        let mut j = match Square::zeros(n).filter(|_| self.rows() == n) {
+            Some(j) => Stored::Stack(j),
+            None => Stored::Heap(DMatrix::zeros(self.rows(), n)),
         };
-        Ok(self.motions(q, qd.as_ref(), qdd.as_ref()))
+        match &mut j {
+            Stored::Stack(j) => self.eq.jacobian(at, |r, c, v| j.add(r, c, v)),
+            Stored::Heap(j) => self.eq.jacobian(at, |r, c, v| j[(r, c)] += v),
+        }
+        Jacobian(j)
+    }
+}
+
+/// A constraint Jacobian: on the stack ([`dense::Square`]) where it is
+/// square and has at most [`dense::MAX`] unknowns, else nalgebra's; the
+/// same numbers either way.
+struct Jacobian(Stored<Square, DMatrix<f64>>);
+
+/// One of two stores of the same numbers.
+#[derive(Clone)]
+enum Stored<S, H> {
+    Stack(S),
+    Heap(H),
+}
+
+impl Jacobian {
+    /// Its LU factors (nalgebra's `LU::new`, to the bit).
+    fn lu(&self) -> Factors {
+        Factors(match &self.0 {
+            Stored::Stack(j) => Stored::Stack(j.lu()),
+            Stored::Heap(j) => Stored::Heap(j.clone().lu()),
+        })
+    }
+
+    /// As nalgebra's matrix.
+    fn dmatrix(&self) -> Cow<'_, DMatrix<f64>> {
+        match &self.0 {
+            Stored::Stack(j) => Cow::Owned(j.to_dmatrix()),
+            Stored::Heap(j) => Cow::Borrowed(j),
+        }
+    }
+
+    /// The number of unknowns.
+    fn ncols(&self) -> usize {
+        match &self.0 {
+            Stored::Stack(j) => j.n(),
+            Stored::Heap(j) => j.ncols(),
+        }
+    }
+
+    /// Column `c`.
+    fn column(&self, c: usize) -> &[f64] {
+        match &self.0 {
+            Stored::Stack(j) => j.column(c),
+            Stored::Heap(j) => {
+                let n = j.nrows();
+                &j.as_slice()[c * n..(c + 1) * n]
+            }
+        }
+    }
+
+    /// J·x − b (nalgebra's `&j * x - b`, to the bit).
+    fn mul_sub(&self, x: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
+        match &self.0 {
+            Stored::Stack(j) => j.mul_sub(x, b),
+            Stored::Heap(j) => j * x - b,
+        }
+    }
+}
+
+/// The LU factors of a constraint Jacobian: on the stack where it is
+/// ([`dense::Lu`]), else nalgebra's; the same bits either way.
+#[derive(Clone)]
+pub struct Factors(Stored<Lu, nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>);
+
+impl std::fmt::Debug for Factors {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.0 {
+            Stored::Stack(lu) => write!(f, "Factors(on the stack, {} unknowns)", lu.n()),
+            Stored::Heap(lu) => write!(f, "Factors({lu:?})"),
+        }
+    }
+}
+
+impl Factors {
+    /// Solves J·x = b for each b of `bs` in place: on the stack eight at a
+    /// time ([`Lu::solve_rows`]: each column by the operations of a solve
+    /// of its own, in the same order, so the same bits; their chains of
+    /// dependent divisions overlap). False where J is singular.
+    fn solve_many(&self, bs: &mut [DVector<f64>]) -> bool {
+        const AT_ONCE: usize = 8;
+        match &self.0 {
+            Stored::Stack(lu) => {
+                let n = lu.n();
+                let mut rows = [0.0; dense::MAX * AT_ONCE];
+                for group in bs.chunks_mut(AT_ONCE) {
+                    let k = group.len();
+                    for (c, b) in group.iter().enumerate() {
+                        for (r, x) in b.iter().enumerate() {
+                            rows[r * k + c] = *x;
+                        }
+                    }
+                    if !lu.solve_rows(&mut rows, k) {
+                        return false;
+                    }
+                    for (c, b) in group.iter_mut().enumerate() {
+                        for (r, x) in b.iter_mut().enumerate().take(n) {
+                            *x = rows[r * k + c];
+                        }
+                    }
+                }
+                true
+            }
+            Stored::Heap(lu) => bs.iter_mut().all(|b| lu.solve_mut(b)),
+        }
+    }
+
+    /// det J.
+    fn determinant(&self) -> f64 {
+        match &self.0 {
+            Stored::Stack(lu) => lu.determinant(),
+            Stored::Heap(lu) => lu.determinant(),
+        }
+    }
+
+    /// `f` of each column of J⁻¹ in order; false (and `f` never called)
+    /// where J is singular.
+    fn inverse_columns(&self, mut f: impl FnMut(usize, &[f64])) -> bool {
+        match &self.0 {
+            Stored::Stack(lu) => {
+                let n = lu.n();
+                let mut inv = [0.0; dense::MAX * dense::MAX];
+                if !lu.inverse_rows(&mut inv) {
+                    return false;
+                }
+                let mut col = [0.0; dense::MAX];
+                for c in 0..n {
+                    for (r, x) in col[..n].iter_mut().enumerate() {
+                        *x = inv[r * n + c];
+                    }
+                    f(c, &col[..n]);
+                }
+                true
+            }
+            Stored::Heap(lu) => match lu.try_inverse() {
+                Some(inv) => {
+                    for c in 0..inv.ncols() {
+                        f(c, inv.column(c).as_slice());
+                    }
+                    true
+                }
+                None => false,
+            },
+        }
     }
 }
 
@@ -171,18 +394,15 @@ impl ConstraintSolver<'_> {
     #[doc(hidden)]
     #[cfg(feature = "internals")]
     pub fn conditioning_both(&self, u: &Unknowns) -> (f64, Option<f64>, usize) {
-        let j = self.jacobian(&u.q);
-        let lu = j.clone().lu();
-        let bound = self.conditioning_at_least(&j, &lu);
-        (self.scaled_conditioning(&j), bound, j.ncols())
+        let j = self.jacobian_at(&self.eq.poses(u.q.as_slice()), u.q.len());
+        let bound = self.conditioning_at_least(&j, &j.lu());
+        (self.scaled_conditioning(&j.dmatrix()), bound, j.ncols())
     }
 }
 
 /// Every solved link's motion (`None` for the others).
 pub type Motions = Vec<Option<Motion>>;
 
-/// The LU factors of a constraint Jacobian.
-pub type Factors = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
 
 /// What [`ConstraintSolver::corrected`] finds of the conditioning.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -211,13 +431,13 @@ pub struct Corrected {
     /// Every solved link's corrected motion (zero rates where the answer
     /// had none).
     pub motion: Vec<Option<Motion>>,
-    /// σ_min/σ_max of the scaled Jacobian at the answer's positions (NaN
-    /// when not asked for).
+    /// σ_min/σ_max of the scaled Jacobian at the answer's positions (or
+    /// the lower bound [`Conditioning::Decided`] allows).
     pub conditioning: f64,
     /// The sign of det Φ_q there: the orientation of the assembly, which
     /// changes only through a singular position.
     pub orientation: f64,
-    /// The LU factors of Φ_q at the answer's positions (without
-    /// `relinearize`): for [`ConstraintSolver::corrected_runs_by`].
-    pub factors: Option<Factors>,
+    /// The LU factors of Φ_q at the answer's positions: for
+    /// [`ConstraintSolver::corrected_runs_by`].
+    pub factors: Factors,
 }

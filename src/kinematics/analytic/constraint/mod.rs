@@ -10,6 +10,7 @@
 
 
 mod answer;
+mod dense;
 mod path;
 pub use answer::{Conditioning, Factors, Unknowns};
 // Named by the tests that read a corrected answer (`internals`).

@@ -187,49 +187,6 @@ impl<'a> ConstraintSolver<'a> {
         if max == 0.0 { 0.0 } else { sv.min() / max }
     }
 
-    /// A lower bound on [`ConstraintSolver::scaled_conditioning`] from the
-    /// LU factors of the (unscaled) Jacobian `j`, without an SVD:
-    /// 1/(‖J_s‖_F·‖J_s⁻¹‖_F), the scaled Jacobian J_s = R·J·G (rows R,
-    /// columns G as there) and its inverse G⁻¹·J⁻¹·R⁻¹. Since ‖A‖₂ ≤
-    /// ‖A‖_F ≤ √n·‖A‖₂ it lies between σ_min/σ_max over n and σ_min/σ_max
-    /// (shrunk by 1e-8 of itself for the inverse's own rounding, far
-    /// below where it is used). `None` where a column vanishes or the
-    /// inverse does not exist.
-    pub(super) fn conditioning_at_least(
-        &self,
-        j: &DMatrix<f64>,
-        lu: &nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
-    ) -> Option<f64> {
-        let rows = self.row_scales();
-        let n = j.ncols();
-        let mut g = vec![1.0; n];
-        for i in 0..self.eq.links.len() {
-            g[3 * i + 2] = 1.0 / self.scale[i];
-        }
-        for (c, gc) in g.iter_mut().enumerate() {
-            let norm = j
-                .column(c)
-                .iter()
-                .zip(&rows)
-                .map(|(x, r)| (x * r * *gc).powi(2))
-                .sum::<f64>()
-                .sqrt();
-            if norm == 0.0 || !norm.is_finite() {
-                return None;
-            }
-            *gc /= norm;
-        }
-        let inv = lu.try_inverse()?;
-        let mut f2 = 0.0;
-        for (c, rc) in rows.iter().enumerate().take(n) {
-            for (x, gr) in inv.column(c).iter().zip(&g) {
-                f2 += (x / (gr * rc)).powi(2);
-            }
-        }
-        let bound = 1.0 / ((n as f64).sqrt() * f2.sqrt()) * (1.0 - 1e-8);
-        bound.is_finite().then_some(bound)
-    }
-
     /// The largest correction relative to the rounding of its unknown: a
     /// coordinate against its link's size and its own magnitude, an angle
     /// against one radian.
