@@ -12,7 +12,9 @@
 #     (and no later ones) with its sentence, then Previous, the arrow keys,
 #     Home/End and the position tabs, and writes "SELFTEST PASS …" or
 #     "SELFTEST FAIL …" into the title (window errors included);
-#  3. take screenshots (1400×1000) at a few steps: docs/gallery/handout-*.png.
+#  3. take screenshots (1400×1000) at a few steps: target/html_handout/,
+#     or with UPDATE_GOLDEN=1 the gallery's docs/gallery/handout-*.png
+#     (a test run leaves the repository's files as they were).
 # Installs Chromium (Debian package `chromium`) when it is missing.
 # Run from anywhere: bash tests/html_handout.sh
 set -euo pipefail
@@ -101,11 +103,13 @@ for name in six_link_fig2_10 shaper_fig2_11 dynamics/six_link_fig2_10; do
   fi
 done
 
-# 3. Screenshots.
-mkdir -p docs/gallery
+# 3. Screenshots: into the gallery only when asked.
+shots_dir=target/html_handout
+if [ "${UPDATE_GOLDEN:-}" = 1 ]; then shots_dir=docs/gallery; fi
+mkdir -p "$shots_dir"
 for s in "${shots[@]}"; do
   read -r name hash plan <<< "$s"
-  png="docs/gallery/handout-$name-$plan.png"
+  png="$shots_dir/handout-$name-$plan.png"
   browse --hide-scrollbars --window-size=1400,1000 --virtual-time-budget=10000 \
     --screenshot="$out/shot.png" "file://$out/$name/handout.html#$hash" > /dev/null 2>&1 || true
   if [ -s "$out/shot.png" ]; then
