@@ -55,11 +55,12 @@ impl Analysis {
     /// The data sensitivity to first order: route (b)'s equations of each
     /// changed scene (the input moved too, as [`Analysis::data_sensitivity`]
     /// moves it) at route (a)'s answer `u`, corrected by one step, and
-    /// compared with the answer as the data check compares; the solves by
-    /// the scene's own factors `near`; the transfer functions' runs at the
-    /// same corrected positions (`ConstraintSolver::corrected_runs_by`).
-    /// `None` where a changed scene is refused or its Jacobian singular
-    /// (the solve again decides).
+    /// compared with the answer (`mine`: its real rates made ready for
+    /// comparisons) as the data check compares; the solves by the scene's
+    /// own factors `near`; the transfer functions' runs at the same
+    /// corrected positions (`ConstraintSolver::corrected_together`, both
+    /// scenes at once). `None` where a changed scene is refused or its
+    /// Jacobian singular (the solve again decides).
     pub(super) fn linear_sensitivity(
         &self,
         mine: &Mine,

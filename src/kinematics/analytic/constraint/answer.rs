@@ -301,7 +301,7 @@ impl Jacobian {
 }
 
 /// The LU factors of a constraint Jacobian: on the stack where it is
-/// ([`dense::Lu`]), else nalgebra's; the same bits either way.
+/// (`dense::Lu`), else nalgebra's; the same bits either way.
 #[derive(Clone)]
 pub struct Factors(Stored<Lu, nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>);
 
@@ -438,6 +438,6 @@ pub struct Corrected {
     /// changes only through a singular position.
     pub orientation: f64,
     /// The LU factors of Φ_q at the answer's positions: for
-    /// [`ConstraintSolver::corrected_runs_by`].
+    /// [`ConstraintSolver::corrected_together`].
     pub factors: Factors,
 }
