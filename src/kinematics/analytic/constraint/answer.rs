@@ -125,9 +125,14 @@ impl ConstraintSolver<'_> {
             true => Ok(rhs),
             false => Err(singular()),
         };
-        // Every run of the answer: the real rates first.
+        // Every run of the answer: the real rates first; each run's input
+        // accelerations once for every scene.
         let all: Vec<(&Unknowns, &[(f64, f64)])> = std::iter::once((u, rates))
             .chain(runs.iter().map(|(u, r)| (u, r.as_slice())))
+            .collect();
+        let accs: Vec<Vec<f64>> = all
+            .iter()
+            .map(|(_, rates)| rates.iter().map(|r| r.1).collect())
             .collect();
         let dq = solve(scenes.iter().map(|(cs, x)| cs.residual(&u.q, x)).collect())?;
         let qs: Vec<DVector<f64>> = dq.iter().map(|d| &u.q - d).collect();
@@ -152,10 +157,9 @@ impl ConstraintSolver<'_> {
         // … and their accelerations, at those velocities.
         let mut rhs = Vec::new();
         for ((((cs, _), j), at), qd) in scenes.iter().zip(&js).zip(&ats).zip(&qds) {
-            for ((u, rates), qd_new) in all.iter().zip(qd) {
+            for (((u, _), acc), qd_new) in all.iter().zip(&accs).zip(qd) {
                 if let (Some(qdd), Some(qd_new)) = (&u.qdd, qd_new) {
-                    let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                    let g = DVector::from_vec(cs.eq.gamma(at, qd_new.as_slice(), &acc));
+                    let g = DVector::from_vec(cs.eq.gamma(at, qd_new.as_slice(), acc));
                     rhs.push(j.mul_sub(qdd, &g));
                 }
             }
