@@ -62,6 +62,20 @@ impl Pose {
         }
     }
 
+    /// The pose with origin `origin` turned by `angle`, whose sine and
+    /// cosine are `sin_cos` (`angle.sin_cos()`, computed already: the
+    /// same pose as [`Pose::new`], to the bit, without computing them
+    /// again).
+    #[inline]
+    pub fn with_sin_cos(origin: Point, angle: f64, (sin, cos): (f64, f64)) -> Pose {
+        Pose {
+            origin,
+            angle,
+            sin,
+            cos,
+        }
+    }
+
     /// World position of a point given in the link's local frame.
     #[inline]
     pub fn apply(&self, local: Vec2) -> Point {

@@ -65,15 +65,29 @@ pub fn map_into<T: Sync, R: Send>(
     f: impl Fn(&T) -> R + Sync,
     out: &mut Vec<R>,
 ) {
-    let one = |x: &T| {
-        let r = f(x);
+    map_into_with(items, progress, || (), |(), x| f(x), out);
+}
+
+/// As [`map_into`], `f` given a scratch of its own made by `init` (once
+/// for each part of the work a thread takes, not once an item: a sweep's
+/// positions reuse one state instead of making a new one each).
+pub fn map_into_with<T: Sync, S, R: Send>(
+    items: &[T],
+    progress: &dyn Progress,
+    init: impl Fn() -> S + Sync + Send,
+    f: impl Fn(&mut S, &T) -> R + Sync + Send,
+    out: &mut Vec<R>,
+) {
+    let one = |s: &mut S, x: &T| {
+        let r = f(s, x);
         progress.advance(1);
         r
     };
     if items.len() >= PARALLEL_FROM {
-        items.par_iter().map(one).collect_into_vec(out);
+        items.par_iter().map_init(&init, one).collect_into_vec(out);
     } else {
         out.clear();
-        out.extend(items.iter().map(one));
+        let mut s = init();
+        out.extend(items.iter().map(|x| one(&mut s, x)));
     }
 }

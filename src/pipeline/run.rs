@@ -6,7 +6,7 @@ use crate::kinematics::solve::Motions;
 use crate::error::{Error, Result};
 use crate::geom::wrap_pi;
 use crate::kinematics::analytic::constraint::{ConstraintSolver, Settings};
-use crate::kinematics::analytic::{Coords, Drives, Order, contour};
+use crate::kinematics::analytic::{Coords, Drives, InputRates, Order, contour};
 use crate::kinematics::compiled::{Program, State};
 use super::switches::Kernel;
 use crate::kinematics::construction::{Plans, build_plans, build_plans_numbers};
@@ -172,8 +172,8 @@ impl Analysis {
                 let route = (program, &mut state, &mut kernel);
                 let (placed, stop) = self.place_chunk((from, &chunk), &mut ps, route, &mut cs);
                 kept.extend(Placed::kept(&placed, &keep));
-                let finish = |p: &Placed| self.finish(p, checks, program);
-                crate::progress::map_into(&placed, progress, finish, &mut finished);
+                let finish = |st: &mut Option<State>, p: &Placed| self.finish(p, checks, program, st);
+                crate::progress::map_into_with(&placed, progress, || None, finish, &mut finished);
                 let last = stop.is_some();
                 match emit(std::mem::take(&mut finished), stop) {
                     Some(back) if !last => finished = back,
@@ -203,7 +203,7 @@ impl Analysis {
         then(&mut |an: &Analysis, k: usize| {
             let p = kept.iter().find(|p| p.index == k);
             let p = p.ok_or_else(|| Error::Internal(format!("position {k} was not kept")))?;
-            an.finish(p, checks, program)
+            an.finish(p, checks, program, &mut None)
         })
     }
 
@@ -443,7 +443,7 @@ impl Analysis {
     }
 
     /// Every input's (rate, rate of rate), in the scene's order.
-    pub fn input_rates(&self) -> Vec<(f64, f64)> {
+    pub fn input_rates(&self) -> InputRates {
         self.mech.scene.inputs().map(|i| i.rates()).collect()
     }
 
@@ -468,16 +468,25 @@ impl Analysis {
 
     /// One placed position: both routes' rates, the plans, the cross-check
     /// (on the fast path: route (a)'s rates and their check); route (a)
-    /// by `program` (`None`: interpreted, the reference).
-    fn finish(&self, p: &Placed, checks: &Checks, program: Option<&Program>) -> Result<Solved> {
+    /// by `program` (`None`: interpreted, the reference), in the state
+    /// `scratch` (made at the first position a thread finishes, reused).
+    fn finish(
+        &self,
+        p: &Placed,
+        checks: &Checks,
+        program: Option<&Program>,
+        scratch: &mut Option<State>,
+    ) -> Result<Solved> {
         let m = &self.mech;
         let rates = self.input_rates();
         let (q, config) = (p.q, p.config.clone());
         let drives = self.drives_at(&q);
         let w = drives.len();
         let t0 = Clock::now();
+        // Route (a)'s state for the rates: the scratch of the thread's
+        // part of the sweep (its rates all written anew at each position).
         let mut st = program.map(|prog| {
-            let mut st = prog.state();
+            let st = scratch.get_or_insert_with(|| prog.state());
             st.config.clone_from(&config);
             (prog, st)
         });

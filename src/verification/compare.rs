@@ -13,6 +13,7 @@ use crate::kinematics::analytic::{Motion, Order};
 use crate::kinematics::solve::{Analysis, Position};
 use crate::model::mechanism::Mechanism;
 use kurbo::{Point, Vec2};
+use smallvec::SmallVec;
 
 /// What a compared number belongs to: a point or a link.
 #[derive(Clone, Copy, Debug)]
@@ -33,7 +34,7 @@ pub(super) struct Mine<'a> {
     motion: &'a [Option<Motion>],
     /// (point, the link carrying it, its place, its velocity and
     /// acceleration), in the analysis's order of points.
-    points: Vec<(usize, usize, Point, (Vec2, Vec2))>,
+    points: SmallVec<[(usize, usize, Point, (Vec2, Vec2)); 8]>,
     sv: f64,
     sa: f64,
 }
@@ -55,7 +56,7 @@ impl Analysis {
     /// The side `motion` of `s` made ready for comparisons ([`Mine`]).
     pub(super) fn mine<'a>(&self, s: &'a Position, motion: &'a [Option<Motion>]) -> Mine<'a> {
         let m = &self.mech;
-        let points: Vec<_> = self
+        let points: SmallVec<[(usize, usize, Point, (Vec2, Vec2)); 8]> = self
             .points
             .iter()
             .map(|&p| {
@@ -107,24 +108,37 @@ impl Analysis {
                 worst = (d, Some((kind, what)));
             }
         };
-        let place_b = |p: usize, l: usize| other[l].unwrap().pose.apply(om.local(l, p));
+        // The other side's place of every compared point, its velocity and
+        // acceleration there (where the analysis has them), once.
+        let order = self.order;
+        let others: SmallVec<[(Point, Vec2, Vec2); 8]> = mine
+            .points
+            .iter()
+            .map(|&(p, l, _, _)| {
+                let at = other[l].unwrap().pose.apply(om.local(l, p));
+                let (v, a) = match order {
+                    Some(_) => rates_at(other, l, at),
+                    None => (Vec2::ZERO, Vec2::ZERO),
+                };
+                (at, v, a)
+            })
+            .collect();
         let links = || (0..m.links.len()).filter(|&l| self.link(l));
-        for &(p, l, at, _) in &mine.points {
-            note((at - place_b(p, l)).hypot() / m.size, Quantity::Position, Item::Point(p));
+        for (&(p, _, at, _), &(at_b, _, _)) in mine.points.iter().zip(&others) {
+            note((at - at_b).hypot() / m.size, Quantity::Position, Item::Point(p));
         }
         for l in links() {
             let d = wrap_pi(mine.s.config.pose(l).angle - other[l].unwrap().pose.angle).abs();
             note(d, Quantity::Angle, Item::Link(l));
         }
-        let Some(order) = self.order else {
+        let Some(order) = order else {
             return worst;
         };
         let acc = order == Order::Acceleration;
         let (sv, sa) = (mine.sv, mine.sa);
         // In the order the names were always reported in (ties keep the
         // first): v, ω, then a, ε.
-        for &(p, l, _, (va, _)) in &mine.points {
-            let (vb, _) = rates_at(other, l, place_b(p, l));
+        for (&(p, _, _, (va, _)), &(_, vb, _)) in mine.points.iter().zip(&others) {
             note((va - vb).hypot() / sv, Quantity::Velocity, Item::Point(p));
         }
         for l in links() {
@@ -132,8 +146,7 @@ impl Analysis {
             note((ma.omega - mb.omega).abs() * m.size / sv, Quantity::Omega, Item::Link(l));
         }
         if acc {
-            for &(p, l, _, (_, aa)) in &mine.points {
-                let (_, ab) = rates_at(other, l, place_b(p, l));
+            for (&(p, _, _, (_, aa)), &(_, _, ab)) in mine.points.iter().zip(&others) {
                 note((aa - ab).hypot() / sa, Quantity::Acceleration, Item::Point(p));
             }
             for l in links() {

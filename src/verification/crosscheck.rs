@@ -270,7 +270,7 @@ impl Analysis {
         }
         let linear = (c.conditioning >= ACCURACY.linear_data_conditioning)
             .then(|| {
-                self.linear_sensitivity(&mine, &u, eqs, &c.factors, q_rounding, changed)
+                self.linear_sensitivity(&mine, &u, eqs, &c, q_rounding, changed)
             })
             .flatten()
             .filter(|&(x, t)| x.max(t) <= ACCURACY.linear_data_sensitivity);

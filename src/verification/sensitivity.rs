@@ -14,8 +14,9 @@
 
 use super::compare::Mine;
 use super::crosscheck::{ChangedData, DATA_PERTURBATION, Residuals};
-use crate::kinematics::analytic::constraint::{ConstraintSolver, Factors, Unknowns};
-use crate::kinematics::analytic::{Coords, Drives, Motion, Order, contour};
+use crate::kinematics::analytic::constraint::{ConstraintSolver, Corrected, Unknowns};
+use crate::kinematics::analytic::{Coords, Drives, InputRates, Motion, Order, contour};
+use smallvec::SmallVec;
 use crate::kinematics::positions::Configuration;
 use crate::kinematics::solve::{Analysis, Position};
 
@@ -26,9 +27,9 @@ type Run<'a> = ((usize, Option<usize>), &'a [Option<Motion>]);
 /// order of [`Position::analogue`], [`Position::more_analogues`] and
 /// [`Position::mixed`]: input i at unit rate (and input j with it), the
 /// others standing; with each run's motions.
-fn transfer_runs(s: &Position) -> Vec<Run<'_>> {
+fn transfer_runs(s: &Position) -> SmallVec<[Run<'_>; 4]> {
     let w = s.drives.len();
-    let mut out: Vec<Run<'_>> = Vec::new();
+    let mut out = SmallVec::new();
     if s.analogue.iter().all(Option::is_none) {
         return out;
     }
@@ -45,7 +46,7 @@ fn transfer_runs(s: &Position) -> Vec<Run<'_>> {
 
 /// The input rates of a unit run: (1, 0) for inputs i and j, (0, 0) for
 /// the others.
-fn unit_rates(n: usize, (i, j): (usize, Option<usize>)) -> Vec<(f64, f64)> {
+fn unit_rates(n: usize, (i, j): (usize, Option<usize>)) -> InputRates {
     (0..n)
         .map(|k| (if k == i || Some(k) == j { 1.0 } else { 0.0 }, 0.0))
         .collect()
@@ -66,7 +67,7 @@ impl Analysis {
         mine: &Mine,
         u: &Unknowns,
         eqs: &Residuals,
-        near: &Factors,
+        near: &Corrected,
         q_rounding: Coords,
         changed: &ChangedData,
     ) -> Option<(f64, f64)> {
@@ -75,14 +76,14 @@ impl Analysis {
         let rates = self.input_rates();
         // The transfer functions' runs in route (b)'s unknowns, corrected
         // at the same positions as the real rates.
-        let runs: Vec<(Unknowns, Vec<(f64, f64)>)> = transfer_runs(s)
+        let runs: SmallVec<[(Unknowns, InputRates); 4]> = transfer_runs(s)
             .into_iter()
             .map(|(ij, mine)| {
                 let u = eqs.base.unknowns(|l| s.config.pose(l), mine, self.order);
                 (u, unit_rates(s.drives.len(), ij))
             })
             .collect();
-        let mut scenes = Vec::new();
+        let mut scenes: SmallVec<[_; 2]> = SmallVec::new();
         for ((cs, an), sign) in eqs.changed.iter().zip(changed).zip([1.0, -1.0]) {
             let (Some(cs), Ok(an)) = (cs, an) else {
                 return None;
@@ -93,11 +94,11 @@ impl Analysis {
             }
             scenes.push((cs, an, x));
         }
-        let with_x: Vec<(&ConstraintSolver, &[f64])> =
+        let with_x: SmallVec<[(&ConstraintSolver, &[f64]); 2]> =
             scenes.iter().map(|(cs, _, x)| (*cs, &x[..])).collect();
-        let moved = ConstraintSolver::corrected_together(&with_x, u, &rates, &runs, near).ok()?;
+        let moved = eqs.base.corrected_together(&with_x, u, &rates, &runs, near).ok()?;
         let (mut worst, mut transfer) = (0.0f64, 0.0f64);
-        let mine_runs: Vec<Mine> = transfer_runs(s)
+        let mine_runs: SmallVec<[Mine; 4]> = transfer_runs(s)
             .into_iter()
             .map(|(_, run)| self.mine(s, run))
             .collect();

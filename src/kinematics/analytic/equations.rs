@@ -10,7 +10,15 @@
 
 use crate::model::mechanism::Mechanism;
 use crate::model::scene::InputSpec;
+use smallvec::SmallVec;
 use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// One number a row (a residual, γ): on the stack up to nine rows, the
+/// common mechanisms' (the check evaluates them at every position).
+pub type Rows<T> = SmallVec<[T; 9]>;
+
+/// Every link's pose: on the stack up to eight links.
+pub type Poses<T> = SmallVec<[Pose<T>; 8]>;
 
 /// What the equations need of a number: a field with square root,
 /// trigonometry and the exact image of every `f64`.
@@ -373,7 +381,7 @@ impl<T: Number> Equations<T> {
     }
 
     /// Every link's pose (the frame and links not solved: the identity).
-    pub fn poses(&self, q: &[T]) -> Vec<Pose<T>> {
+    pub fn poses(&self, q: &[T]) -> Poses<T> {
         self.slot
             .iter()
             .map(|s| match *s {
@@ -388,8 +396,8 @@ impl<T: Number> Equations<T> {
 
     /// The residual Φ(q, x) at input coordinates `x` (one per input in
     /// the scene's order), from the poses.
-    pub fn residual(&self, p: &[Pose<T>], x: &[T]) -> Vec<T> {
-        let mut r = Vec::with_capacity(self.rows);
+    pub fn residual(&self, p: &[Pose<T>], x: &[T]) -> Rows<T> {
+        let mut r = Rows::with_capacity(self.rows);
         for c in &self.cons {
             match c {
                 Constraint::Revolute { a, b, on_a, on_b } => {
@@ -534,7 +542,7 @@ impl<T: Number> Equations<T> {
     /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in
     /// q̇), at the poses, the rates `qd` and the inputs' accelerations (one
     /// per input in the scene's order).
-    pub fn gamma(&self, p: &[Pose<T>], qd: &[T], input_acc: &[T]) -> Vec<T> {
+    pub fn gamma(&self, p: &[Pose<T>], qd: &[T], input_acc: &[T]) -> Rows<T> {
         let rate = |l: usize| self.slot[l].map_or(T::zero(), |i| qd[3 * i + 2].clone());
         let lin = |l: usize| {
             self.slot[l].map_or(Vector::zero(), |i| {
@@ -542,7 +550,7 @@ impl<T: Number> Equations<T> {
             })
         };
         let square = |w: T| w.clone() * w;
-        let mut g = Vec::with_capacity(self.rows);
+        let mut g = Rows::with_capacity(self.rows);
         for c in &self.cons {
             match c {
                 Constraint::Revolute { a, b, on_a, on_b } => {

@@ -77,6 +77,10 @@ pub struct Drive {
 /// The most inputs a scene may have ([`crate::model::scene::MAX_INPUTS`]).
 pub const MAX_INPUTS: usize = crate::model::scene::MAX_INPUTS;
 
+/// Every input's (rate, rate of rate), in the scene's order: on the stack
+/// (at most [`MAX_INPUTS`]).
+pub type InputRates = smallvec::SmallVec<[(f64, f64); MAX_INPUTS]>;
+
 /// The coordinates of every input at one position, in the scene's order of
 /// inputs (rad for a crank, m for a slider): a value, without allocation.
 #[derive(Clone, Copy, Debug, PartialEq)]

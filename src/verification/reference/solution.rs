@@ -198,7 +198,7 @@ impl<'a> Reference<'a> {
         }
         let xd = gauss(j.clone(), b).ok_or_else(|| fail("singular Jacobian".into()))?;
         let acc: Vec<Real> = self.rates.iter().map(|r| r.1.clone()).collect();
-        let g = self.eq.gamma(&poses, &xd, &acc);
+        let g = self.eq.gamma(&poses, &xd, &acc).into_vec();
         let xdd = gauss(j, g).ok_or_else(|| fail("singular Jacobian".into()))?;
         Ok(RefState {
             links: self.motions(&x, &xd, &xdd),
@@ -221,7 +221,7 @@ impl<'a> Reference<'a> {
         let stop = &self.size * &Real::from_f64(1e-50);
         for _ in 0..40 {
             let poses = self.eq.poses(&x);
-            let r = self.eq.residual(&poses, q);
+            let r = self.eq.residual(&poses, q).into_vec();
             let j = self.jacobian(&poses);
             let dx = gauss(j, r).ok_or("the constraint Jacobian is singular")?;
             let mut big = Real::zero();

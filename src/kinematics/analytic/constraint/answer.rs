@@ -4,10 +4,31 @@
 use super::ConstraintSolver;
 use super::dense::{self, Lu, Square};
 use crate::geom::Pose;
-use crate::kinematics::analytic::equations::Pose as PoseOf;
-use crate::kinematics::analytic::{Motion, Order};
-use nalgebra::{DMatrix, DVector};
+use crate::kinematics::analytic::equations::{Pose as PoseOf, Poses, Rows};
+use crate::kinematics::analytic::{InputRates, MAX_INPUTS, Motion, Order};
+use nalgebra::{DMatrix, DVectorView, DVectorViewMut};
+use smallvec::{SmallVec, smallvec};
 use std::borrow::Cow;
+
+/// A vector of the check's (an answer's unknowns, an equation's
+/// right-hand side): on the stack up to nine numbers, [`dense::MAX`].
+pub type Col = Rows<f64>;
+
+/// Right-hand sides solved together ([`Factors::solve_many`]).
+type Sides = SmallVec<[Col; 4]>;
+
+/// One number an input (their accelerations).
+type Inputs = SmallVec<[f64; MAX_INPUTS]>;
+
+/// x − d, entry by entry (nalgebra's `x - d`).
+fn minus(x: &[f64], d: &[f64]) -> Col {
+    x.iter().zip(d).map(|(x, d)| x - d).collect()
+}
+
+/// The inputs' accelerations of `rates` (each input's rate, rate of rate).
+fn accelerations(rates: &[(f64, f64)]) -> Inputs {
+    rates.iter().map(|r| r.1).collect()
+}
 
 impl ConstraintSolver<'_> {
     /// An answer found otherwise (route (a)'s) in this route's unknowns:
@@ -21,8 +42,8 @@ impl ConstraintSolver<'_> {
         order: Option<Order>,
     ) -> Unknowns {
         let n = 3 * self.eq.links.len();
-        let mut q = DVector::zeros(n);
-        let (mut qd, mut qdd) = (DVector::zeros(n), DVector::zeros(n));
+        let mut q: Col = smallvec![0.0; n];
+        let (mut qd, mut qdd): (Col, Col) = (smallvec![0.0; n], smallvec![0.0; n]);
         for (i, &l) in self.eq.links.iter().enumerate() {
             let p = pose(l);
             (q[3 * i], q[3 * i + 1], q[3 * i + 2]) = (p.origin.x, p.origin.y, p.angle);
@@ -60,7 +81,7 @@ impl ConstraintSolver<'_> {
         let singular = || "the constraint Jacobian is singular".to_string();
         // The links' poses (their sines and cosines) once for the three
         // evaluations at the answer.
-        let at = self.eq.poses(u.q.as_slice());
+        let at = self.eq.poses(&u.q);
         let j = self.jacobian_at(&at, u.q.len());
         let lu = j.lu();
         let conditioning = match conditioning {
@@ -74,12 +95,11 @@ impl ConstraintSolver<'_> {
         // The three residuals, each at the answer itself, solved together
         // (the same bits as one by one, `Factors::solve_many`).
         let b = self.driver_rates(rates);
-        let mut rhs = vec![DVector::from_vec(self.eq.residual(&at, x))];
+        let mut rhs: Sides = smallvec![self.eq.residual(&at, x)];
         if let Some(qd) = &u.qd {
             rhs.push(j.mul_sub(qd, &b));
             if let Some(qdd) = &u.qdd {
-                let acc: Vec<f64> = rates.iter().map(|r| r.1).collect();
-                let g = DVector::from_vec(self.eq.gamma(&at, qd.as_slice(), &acc));
+                let g = self.eq.gamma(&at, qd, &accelerations(rates));
                 rhs.push(j.mul_sub(qdd, &g));
             }
         }
@@ -87,15 +107,16 @@ impl ConstraintSolver<'_> {
             return Err(singular());
         }
         let mut dx = rhs.into_iter();
-        let mut next = |x: &DVector<f64>| x - dx.next().expect("a residual each");
+        let mut next = |x: &Col| minus(x, &dx.next().expect("a residual each"));
         let q = next(&u.q);
         let qd = u.qd.as_ref().map(&mut next);
         let qdd = qd.as_ref().and(u.qdd.as_ref()).map(&mut next);
         Ok(Corrected {
-            motion: self.motions(&q, qd.as_ref(), qdd.as_ref()),
+            motion: self.motions(&q, qd.as_deref(), qdd.as_deref()),
             conditioning,
             orientation,
             factors: lu,
+            poses: at,
         })
     }
 
@@ -110,38 +131,45 @@ impl ConstraintSolver<'_> {
     /// correction of a residual itself of that size — second order, far
     /// below what the data check compares. `runs`: more rates of the same
     /// answer (the transfer functions' unit runs, each with its inputs'
-    /// rates), corrected at the same positions. Each scene's motions and
+    /// rates), corrected at the same positions. `near`: this mechanism's
+    /// answer `u` corrected ([`Self::corrected`]), its factors and its
+    /// links' poses at `u`. Each scene's motions and
     /// its runs', in order; the scenes' independent solves made together
-    /// (`Factors::solve_many`: the same bits as one by one).
+    /// (`Factors::solve_many`: the same bits as one by one). Its vectors
+    /// on the stack ([`Col`]): it runs at every position of a sweep.
     pub fn corrected_together(
+        &self,
         scenes: &[(&Self, &[f64])],
         u: &Unknowns,
         rates: &[(f64, f64)],
-        runs: &[(Unknowns, Vec<(f64, f64)>)],
-        near: &Factors,
+        runs: &[(Unknowns, InputRates)],
+        near: &Corrected,
     ) -> std::result::Result<Vec<(Motions, Vec<Motions>)>, String> {
         let singular = || "the constraint Jacobian is singular".to_string();
-        let solve = |mut rhs: Vec<DVector<f64>>| match near.solve_many(&mut rhs) {
+        let solve = |mut rhs: Sides| match near.factors.solve_many(&mut rhs) {
             true => Ok(rhs),
             false => Err(singular()),
         };
         // Every run of the answer: the real rates first; each run's input
         // accelerations once for every scene.
-        let all: Vec<(&Unknowns, &[(f64, f64)])> = std::iter::once((u, rates))
+        let all: SmallVec<[(&Unknowns, &[(f64, f64)]); 4]> = std::iter::once((u, rates))
             .chain(runs.iter().map(|(u, r)| (u, r.as_slice())))
             .collect();
-        let accs: Vec<Vec<f64>> = all
-            .iter()
-            .map(|(_, rates)| rates.iter().map(|r| r.1).collect())
-            .collect();
-        let dq = solve(scenes.iter().map(|(cs, x)| cs.residual(&u.q, x)).collect())?;
-        let qs: Vec<DVector<f64>> = dq.iter().map(|d| &u.q - d).collect();
+        let accs: SmallVec<[Inputs; 4]> = all.iter().map(|(_, rates)| accelerations(rates)).collect();
+        // The poses at `u` depend on the data only through the links'
+        // slots, the same in every scene of one mechanism.
+        let residual = |cs: &Self, x: &[f64]| match cs.eq.slot == self.eq.slot {
+            true => cs.eq.residual(&near.poses, x),
+            false => cs.eq.residual(&cs.eq.poses(&u.q), x),
+        };
+        let dq = solve(scenes.iter().map(|(cs, x)| residual(cs, x)).collect())?;
+        let qs: SmallVec<[Col; 2]> = dq.iter().map(|d| minus(&u.q, d)).collect();
         // Each scene's poses at its corrected positions, once for its
         // Jacobian and every run's γ.
-        let ats: Vec<_> = scenes.iter().zip(&qs).map(|((cs, _), q)| cs.eq.poses(q.as_slice())).collect();
-        let js: Vec<Jacobian> = scenes.iter().zip(&ats).map(|((cs, _), at)| cs.jacobian_at(at, u.q.len())).collect();
+        let ats: SmallVec<[Poses<f64>; 2]> = scenes.iter().zip(&qs).map(|((cs, _), q)| cs.eq.poses(q)).collect();
+        let js: SmallVec<[Jacobian; 2]> = scenes.iter().zip(&ats).map(|((cs, _), at)| cs.jacobian_at(at, u.q.len())).collect();
         // The velocities of every run of every scene.
-        let mut rhs = Vec::new();
+        let mut rhs = Sides::new();
         for ((cs, _), j) in scenes.iter().zip(&js) {
             for (u, rates) in &all {
                 if let Some(qd) = &u.qd {
@@ -150,29 +178,29 @@ impl ConstraintSolver<'_> {
             }
         }
         let mut dqd = solve(rhs)?.into_iter();
-        let mut qds: Vec<Vec<Option<DVector<f64>>>> = Vec::new();
+        let mut qds: SmallVec<[SmallVec<[Option<Col>; 4]>; 2]> = SmallVec::new();
         for _ in scenes {
-            qds.push(all.iter().map(|(u, _)| u.qd.as_ref().map(|qd| qd - dqd.next().expect("one a run"))).collect());
+            qds.push(all.iter().map(|(u, _)| u.qd.as_ref().map(|qd| minus(qd, &dqd.next().expect("one a run")))).collect());
         }
         // … and their accelerations, at those velocities.
-        let mut rhs = Vec::new();
+        let mut rhs = Sides::new();
         for ((((cs, _), j), at), qd) in scenes.iter().zip(&js).zip(&ats).zip(&qds) {
             for (((u, _), acc), qd_new) in all.iter().zip(&accs).zip(qd) {
                 if let (Some(qdd), Some(qd_new)) = (&u.qdd, qd_new) {
-                    let g = DVector::from_vec(cs.eq.gamma(at, qd_new.as_slice(), acc));
+                    let g = cs.eq.gamma(at, qd_new, acc);
                     rhs.push(j.mul_sub(qdd, &g));
                 }
             }
         }
         let mut dqdd = solve(rhs)?.into_iter();
         let mut out = Vec::with_capacity(scenes.len());
-        for (((cs, _), q), qd) in scenes.iter().zip(&qs).zip(&qds) {
+        for (((cs, _), at), qd) in scenes.iter().zip(&ats).zip(&qds) {
             let mut motions = all.iter().zip(qd).map(|((u, _), qd)| {
                 let qdd = match (&u.qdd, qd) {
-                    (Some(qdd), Some(_)) => Some(qdd - dqdd.next().expect("one a run")),
+                    (Some(qdd), Some(_)) => Some(minus(qdd, &dqdd.next().expect("one a run"))),
                     _ => None,
                 };
-                cs.motions(q, qd.as_ref(), qdd.as_ref())
+                cs.motions_at(at, qd.as_deref(), qdd.as_deref())
             });
             let first = motions.next().expect("the real rates");
             out.push((first, motions.collect()));
@@ -181,8 +209,8 @@ impl ConstraintSolver<'_> {
     }
 
     /// The drivers' rates as the right-hand side of Φ_q·q̇ = b.
-    fn driver_rates(&self, rates: &[(f64, f64)]) -> DVector<f64> {
-        let mut b = DVector::zeros(self.rows());
+    fn driver_rates(&self, rates: &[(f64, f64)]) -> Col {
+        let mut b: Col = smallvec![0.0; self.rows()];
         for &(i, row) in &self.driver_rows {
             b[row] = rates[i].0;
         }
@@ -200,7 +228,7 @@ impl ConstraintSolver<'_> {
     fn conditioning_at_least(&self, j: &Jacobian, lu: &Factors) -> Option<f64> {
         let rows = self.row_scales();
         let n = j.ncols();
-        let mut g = vec![1.0; n];
+        let mut g: Col = smallvec![1.0; n];
         for i in 0..self.eq.links.len() {
             g[3 * i + 2] = 1.0 / self.scale[i];
         }
@@ -296,10 +324,13 @@ impl Jacobian {
     }
 
     /// J·x − b (nalgebra's `&j * x - b`, to the bit).
-    fn mul_sub(&self, x: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
+    fn mul_sub(&self, x: &[f64], b: &[f64]) -> Col {
         match &self.0 {
             Stored::Stack(j) => j.mul_sub(x, b),
-            Stored::Heap(j) => j * x - b,
+            Stored::Heap(j) => {
+                let (x, b) = (DVectorView::from_slice(x, x.len()), DVectorView::from_slice(b, b.len()));
+                (j * x - b).iter().copied().collect()
+            }
         }
     }
 }
@@ -323,7 +354,7 @@ impl Factors {
     /// time ([`Lu::solve_rows`]: each column by the operations of a solve
     /// of its own, in the same order, so the same bits; their chains of
     /// dependent divisions overlap). False where J is singular.
-    fn solve_many(&self, bs: &mut [DVector<f64>]) -> bool {
+    fn solve_many(&self, bs: &mut [Col]) -> bool {
         const AT_ONCE: usize = 8;
         match &self.0 {
             Stored::Stack(lu) => {
@@ -347,7 +378,10 @@ impl Factors {
                 }
                 true
             }
-            Stored::Heap(lu) => bs.iter_mut().all(|b| lu.solve_mut(b)),
+            Stored::Heap(lu) => bs.iter_mut().all(|b| {
+                let n = b.len();
+                lu.solve_mut(&mut DVectorViewMut::from_slice(b, n))
+            }),
         }
     }
 
@@ -398,7 +432,7 @@ impl ConstraintSolver<'_> {
     #[doc(hidden)]
     #[cfg(feature = "internals")]
     pub fn conditioning_both(&self, u: &Unknowns) -> (f64, Option<f64>, usize) {
-        let j = self.jacobian_at(&self.eq.poses(u.q.as_slice()), u.q.len());
+        let j = self.jacobian_at(&self.eq.poses(&u.q), u.q.len());
         let bound = self.conditioning_at_least(&j, &j.lu());
         (self.scaled_conditioning(&j.dmatrix()), bound, j.ncols())
     }
@@ -423,9 +457,9 @@ pub enum Conditioning {
 /// the poses, and the rates where the analysis has them.
 #[derive(Clone, Debug)]
 pub struct Unknowns {
-    pub q: DVector<f64>,
-    pub qd: Option<DVector<f64>>,
-    pub qdd: Option<DVector<f64>>,
+    pub q: Col,
+    pub qd: Option<Col>,
+    pub qdd: Option<Col>,
 }
 
 /// An answer corrected by route (b)'s equations
@@ -444,4 +478,7 @@ pub struct Corrected {
     /// The LU factors of Φ_q at the answer's positions: for
     /// [`ConstraintSolver::corrected_together`].
     pub factors: Factors,
+    /// The links' poses at the answer's positions (their sines and
+    /// cosines): for [`ConstraintSolver::corrected_together`].
+    pub poses: Poses<f64>,
 }

@@ -8,7 +8,7 @@
 //! nalgebra's own. The unit tests below compare both on random and
 //! singular matrices; `tests/check_golden.rs` the whole check.
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 
 /// The most unknowns (and equations) held on the stack.
 pub(super) const MAX: usize = 9;
@@ -45,7 +45,7 @@ impl Square {
     }
 
     /// self·x − b, as nalgebra's `&j * x - b`.
-    pub(super) fn mul_sub(&self, x: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
+    pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> super::answer::Col {
         let n = self.n;
         let mut y = [0.0; MAX];
         let y = &mut y[..n];
@@ -61,7 +61,7 @@ impl Square {
                 }
             }
         }
-        DVector::from_iterator(n, y.iter().zip(b.iter()).map(|(y, b)| y - b))
+        y.iter().zip(b).map(|(y, b)| y - b).collect()
     }
 
     /// The same matrix as nalgebra's.
@@ -271,7 +271,7 @@ impl Lu {
 
     /// The solution of J·x = b, as `nalgebra::LU::solve`.
     #[cfg(test)]
-    fn solve(&self, b: &DVector<f64>) -> Option<DVector<f64>> {
+    fn solve(&self, b: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
         let mut x = b.clone();
         self.solve_mut(x.as_mut_slice()).then_some(x)
     }
@@ -289,6 +289,7 @@ impl Lu {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::DVector;
 
     /// A small deterministic generator (xorshift), values in [−1, 1].
     fn numbers(seed: u64) -> impl FnMut() -> f64 {
@@ -365,7 +366,7 @@ mod tests {
                 }
             }
             assert_eq!(
-                bits(sq.mul_sub(&x, &b).as_slice()),
+                bits(&sq.mul_sub(x.as_slice(), b.as_slice())),
                 bits((&dm * &x - &b).as_slice()),
                 "case {case}"
             );

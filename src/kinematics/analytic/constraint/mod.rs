@@ -12,9 +12,9 @@
 mod answer;
 mod dense;
 mod path;
-pub use answer::{Conditioning, Factors, Unknowns};
-// Named by the tests that read a corrected answer (`internals`).
+pub use answer::{Conditioning, Corrected, Unknowns};
+// Named by the fields of those (the library's `internals`).
 #[cfg(feature = "internals")]
-pub use answer::Corrected;
+pub use answer::{Col, Factors};
 mod solver;
 pub use solver::*;

@@ -1,6 +1,6 @@
 //! Route (b): the constraint solver, its settings, and the path followed from position to position with step control.
 
-use crate::kinematics::analytic::equations::{Constraint, Equations, Prism, Vector};
+use crate::kinematics::analytic::equations::{Constraint, Equations, Pose as PoseOf, Prism, Rows, Vector};
 use crate::kinematics::analytic::{Coords, Motion, Order};
 use crate::accuracy::ACCURACY;
 use crate::error::{Error, Result};
@@ -123,7 +123,7 @@ impl<'a> ConstraintSolver<'a> {
 
     /// Constraint residuals Φ(q) at input coordinates `x`.
     pub(super) fn residual(&self, q: &DVector<f64>, x: &[f64]) -> DVector<f64> {
-        DVector::from_vec(self.eq.residual(&self.eq.poses(q.as_slice()), x))
+        DVector::from_column_slice(&self.eq.residual(&self.eq.poses(q.as_slice()), x))
     }
 
     /// The Jacobian ∂Φ/∂q (analytic).
@@ -137,16 +137,16 @@ impl<'a> ConstraintSolver<'a> {
     /// γ of the acceleration equations Φ_q·q̈ = γ (the terms quadratic in q̇).
     pub(super) fn gamma(&self, q: &DVector<f64>, qd: &DVector<f64>, input_acc: &[f64]) -> DVector<f64> {
         let p = self.eq.poses(q.as_slice());
-        DVector::from_vec(self.eq.gamma(&p, qd.as_slice(), input_acc))
+        DVector::from_column_slice(&self.eq.gamma(&p, qd.as_slice(), input_acc))
     }
 
     /// The scale of each row: a length for the rows that close points, a
     /// link's size for the rows of angles (a prismatic pair's relative
     /// angle, a crank's angle).
-    pub(super) fn row_scales(&self) -> Vec<f64> {
+    pub(super) fn row_scales(&self) -> Rows<f64> {
         let m = self.m;
         let size_of = |l: usize| self.eq.slot[l].map_or(0.0, |i| self.scale[i]);
-        let mut out = Vec::with_capacity(self.rows());
+        let mut out = Rows::with_capacity(self.rows());
         for c in &self.eq.cons {
             match c {
                 Constraint::Revolute { .. } => out.extend([1.0, 1.0]),
@@ -381,16 +381,27 @@ impl<'a> ConstraintSolver<'a> {
         } else {
             None
         };
-        Ok(self.motions(&self.q, Some(&qd), qdd.as_ref()))
+        Ok(self.motions(self.q.as_slice(), Some(qd.as_slice()), qdd.as_ref().map(|x| x.as_slice())))
     }
 
     /// Every solved link's motion from the unknowns: poses `q`, rates `qd`
     /// and `qdd` (zero where not given); the frame at rest.
     pub(super) fn motions(
         &self,
-        q: &DVector<f64>,
-        qd: Option<&DVector<f64>>,
-        qdd: Option<&DVector<f64>>,
+        q: &[f64],
+        qd: Option<&[f64]>,
+        qdd: Option<&[f64]>,
+    ) -> Vec<Option<Motion>> {
+        self.motions_at(&self.eq.poses(q), qd, qdd)
+    }
+
+    /// [`Self::motions`] at the links' poses `at` (the equations' poses
+    /// of the same q, their sines and cosines computed once).
+    pub(super) fn motions_at(
+        &self,
+        at: &[PoseOf<f64>],
+        qd: Option<&[f64]>,
+        qdd: Option<&[f64]>,
     ) -> Vec<Option<Motion>> {
         let mut out = vec![None; self.m.links.len()];
         out[self.m.frame()] = Some(Motion::from_point(
@@ -401,13 +412,15 @@ impl<'a> ConstraintSolver<'a> {
             0.0,
             0.0,
         ));
-        let three = |x: Option<&DVector<f64>>, i: usize| {
+        let three = |x: Option<&[f64]>, i: usize| {
             x.map_or((Vec2::ZERO, 0.0), |x| {
                 (Vec2::new(x[3 * i], x[3 * i + 1]), x[3 * i + 2])
             })
         };
         for (i, &l) in self.eq.links.iter().enumerate() {
-            let pose = Pose::new(Point::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]);
+            let p = &at[l];
+            let origin = Point::new(p.origin.x, p.origin.y);
+            let pose = Pose::with_sin_cos(origin, p.angle, (p.sin, p.cos));
             let ((v, omega), (a, eps)) = (three(qd, i), three(qdd, i));
             out[l] = Some(Motion::from_point(pose, pose.origin, v, a, omega, eps));
         }
