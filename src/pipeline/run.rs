@@ -256,8 +256,10 @@ impl Analysis {
                 Ok(c) => c,
                 Err(e) => return (placed, Some(e)),
             };
-            let contour_time = t0.elapsed().as_secs_f64();
+            // One reading of the clock ends route (a)'s time and starts
+            // route (b)'s.
             let t1 = Clock::now();
+            let contour_time = (t1 - t0).as_secs_f64();
             if let Some(cs) = cs.as_mut() {
                 let span = self.path_span(ps, cs.last_inputs(), q);
                 if let Err(e) = cs.solve_positions_along(q, span) {
@@ -511,7 +513,10 @@ impl Analysis {
                 }
             }
         }
-        let contour_time = p.contour_time + t0.elapsed().as_secs_f64();
+        // One reading of the clock ends route (a)'s time and starts the
+        // check's.
+        let t1 = Clock::now();
+        let contour_time = p.contour_time + (t1 - t0).as_secs_f64();
         #[cfg(feature = "internals")]
         let config = {
             let mut config = config;
@@ -530,7 +535,7 @@ impl Analysis {
             solved.check = Some(self.residual_check(
                 &solved,
                 eqs,
-                contour_time,
+                (contour_time, t1),
                 p.q_rounding,
                 checks.changed,
             )?);

@@ -11,6 +11,7 @@ use crate::pipeline::Solved;
 use crate::verification::crosscheck::{CrossCheck, Method};
 use crate::words::construction::Lang;
 use serde_json::{Map, Value, json};
+use std::fmt::Write as _;
 
 #[cfg(feature = "internals")]
 pub use super::steps::to_steps;
@@ -414,7 +415,7 @@ pub fn csv_row(an: &Analysis, k: usize, s: &Solved) -> String {
     let m = &an.mech;
     let Orders { vel, acc, .. } = Orders::of(an);
     let mut row = String::with_capacity(512);
-    row.push_str(&super::position_number(an, k).to_string());
+    write!(row, "{}", super::position_number(an, k)).expect("a String takes any text");
     let mut cell = |x: f64| {
         row.push(',');
         push_num(&mut row, x);

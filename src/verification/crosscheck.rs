@@ -222,17 +222,17 @@ impl Analysis {
     /// equations of the changed data, linearized at the answer, unless
     /// the conditioning is below [`crate::accuracy::Accuracy::linear_data_conditioning`]
     /// or the result near the refusal, where route (a) is solved again
-    /// on the changed data as [`Analysis::cross_check`] does.
+    /// on the changed data as [`Analysis::cross_check`] does. Its time
+    /// from `t0` (route (a)'s end) on; `contour_time` route (a)'s.
     pub(crate) fn residual_check(
         &self,
         s: &Position,
         eqs: &Residuals,
-        contour_time: f64,
+        (contour_time, t0): (f64, std::time::Instant),
         q_rounding: Coords,
         changed: &ChangedData,
     ) -> Result<CrossCheck> {
         let m = &self.mech;
-        let t0 = std::time::Instant::now();
         let refuse = |why: String| Error::singular(describe_input(m, &s.drives.coords()), why);
         let x = s.drives.coords();
         let rates = self.input_rates();

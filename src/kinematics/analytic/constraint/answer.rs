@@ -22,7 +22,14 @@ type Inputs = SmallVec<[f64; MAX_INPUTS]>;
 
 /// x − d, entry by entry (nalgebra's `x - d`).
 fn minus(x: &[f64], d: &[f64]) -> Col {
-    x.iter().zip(d).map(|(x, d)| x - d).collect()
+    if x.len() > dense::MAX {
+        return x.iter().zip(d).map(|(x, d)| x - d).collect();
+    }
+    let mut out = [0.0; dense::MAX];
+    for ((o, x), d) in out.iter_mut().zip(x).zip(d) {
+        *o = x - d;
+    }
+    Col::from_buf_and_len(out, x.len())
 }
 
 /// The inputs' accelerations of `rates` (each input's rate, rate of rate).

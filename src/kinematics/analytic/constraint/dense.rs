@@ -47,8 +47,8 @@ impl Square {
     /// self·x − b, as nalgebra's `&j * x - b`.
     pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> super::answer::Col {
         let n = self.n;
-        let mut y = [0.0; MAX];
-        let y = &mut y[..n];
+        let mut out = [0.0; MAX];
+        let y = &mut out[..n];
         for (c, &xc) in x.iter().enumerate() {
             let col = self.column(c);
             if c == 0 {
@@ -61,7 +61,10 @@ impl Square {
                 }
             }
         }
-        y.iter().zip(b).map(|(y, b)| y - b).collect()
+        for (y, b) in y.iter_mut().zip(b) {
+            *y -= b;
+        }
+        super::answer::Col::from_buf_and_len(out, n)
     }
 
     /// The same matrix as nalgebra's.
