@@ -34,10 +34,14 @@ pub(super) struct Mine<'a> {
     motion: &'a [Option<Motion>],
     /// (point, the link carrying it, its place, its velocity and
     /// acceleration), in the analysis's order of points.
-    points: SmallVec<[(usize, usize, Point, (Vec2, Vec2)); 8]>,
+    points: SmallVec<[Compared; 8]>,
     sv: f64,
     sa: f64,
 }
+
+/// A compared point of one side: (the point, the link carrying it, its
+/// place, its velocity and acceleration).
+type Compared = (usize, usize, Point, (Vec2, Vec2));
 
 impl<'a> Mine<'a> {
     /// The position compared.
@@ -56,7 +60,7 @@ impl Analysis {
     /// The side `motion` of `s` made ready for comparisons ([`Mine`]).
     pub(super) fn mine<'a>(&self, s: &'a Position, motion: &'a [Option<Motion>]) -> Mine<'a> {
         let m = &self.mech;
-        let points: SmallVec<[(usize, usize, Point, (Vec2, Vec2)); 8]> = self
+        let points: SmallVec<[Compared; 8]> = self
             .points
             .iter()
             .map(|&p| {

@@ -17,6 +17,9 @@ pub type Col = Rows<f64>;
 /// Right-hand sides solved together ([`Factors::solve_many`]).
 type Sides = SmallVec<[Col; 4]>;
 
+/// An answer's run: its unknowns, with its inputs' (rate, rate of rate).
+type Run<'a> = (&'a Unknowns, &'a [(f64, f64)]);
+
 /// One number an input (their accelerations).
 type Inputs = SmallVec<[f64; MAX_INPUTS]>;
 
@@ -159,7 +162,7 @@ impl ConstraintSolver<'_> {
         };
         // Every run of the answer: the real rates first; each run's input
         // accelerations once for every scene.
-        let all: SmallVec<[(&Unknowns, &[(f64, f64)]); 4]> = std::iter::once((u, rates))
+        let all: SmallVec<[Run; 4]> = std::iter::once((u, rates))
             .chain(runs.iter().map(|(u, r)| (u, r.as_slice())))
             .collect();
         let accs: SmallVec<[Inputs; 4]> = all.iter().map(|(_, rates)| accelerations(rates)).collect();
