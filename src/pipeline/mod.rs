@@ -31,7 +31,7 @@ pub struct Solved {
     pub check: Option<CrossCheck>,
     /// The force analysis (with the scene's `dynamics`), after the
     /// cross-check has passed the motion it starts from.
-    pub dynamics: Option<Dynamics>,
+    pub dynamics: Option<Box<Dynamics>>,
 }
 
 impl From<Position> for Solved {

@@ -40,7 +40,7 @@ struct Placed<'a> {
     /// position, numbers only, for the cross-check (`None` where it
     /// refused: the one-position build then gives the position's error),
     /// and their time, seconds.
-    kernel: Option<(Option<Plans>, f64)>,
+    kernel: Option<(Option<Box<Plans>>, f64)>,
 }
 
 impl Analysis {
@@ -272,7 +272,10 @@ impl Analysis {
             }
             let constraint_time = t1.elapsed().as_secs_f64();
             let kernel = match (kernel.as_mut(), self.order) {
-                (Some(k), Some(order)) => Some(self.kernel_plans(k, &config, (q, from + i), order)),
+                (Some(k), Some(order)) => {
+                    let (plans, time) = self.kernel_plans(k, &config, (q, from + i), order);
+                    Some((plans.map(Box::new), time))
+                }
                 _ => None,
             };
             placed.push(Placed {
@@ -539,7 +542,7 @@ impl Analysis {
                 p.q_rounding,
                 checks.changed,
             )?);
-            solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
+            solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?.map(Box::new);
             return Ok(if self.lean { solved.lean() } else { solved });
         };
         let mut cs = cs.clone();
@@ -551,7 +554,7 @@ impl Analysis {
         // numbers only (the same plans to the bit), or by the sweep's
         // kernel (`Analysis::sweep_kernel`; where it refused, on their own).
         let lean = !self.keep_plans && !self.reference();
-        let checked = p.kernel.as_ref().and_then(|k| k.0.as_ref());
+        let checked = p.kernel.as_ref().and_then(|k| k.0.as_deref());
         let (setup, d) = (self.setup(), self.drafting_at(p.index));
         let plans = match self.order {
             Some(order) if checked.is_none() => Some(match lean {
@@ -569,10 +572,10 @@ impl Analysis {
             plan_time,
             conditioning: cs.conditioning,
         };
-        let plans = solved.plans.as_ref().or(lean.as_ref()).or(checked);
+        let plans = solved.plans.as_deref().or(lean.as_ref()).or(checked);
         solved.check =
             Some(self.cross_check(&solved, &other, plans, costs, p.q_rounding, checks.changed)?);
-        solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?;
+        solved.dynamics = crate::kinetostatics::analyse(self, &solved, p.index)?.map(Box::new);
         Ok(if self.lean { solved.lean() } else { solved })
     }
 }

@@ -121,7 +121,7 @@ impl Sweep for Again<'_> {
                 return Ok(());
             }
             let mut s = held.clone();
-            s.position.plans = an.plans_again(k, held)?;
+            s.position.plans = an.plans_again(k, held)?.map(Box::new);
             f(k, &s)
         })
     }

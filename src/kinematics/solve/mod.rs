@@ -149,7 +149,7 @@ pub struct Position {
     /// 2·∂²/∂q_i∂q_j, whence the mixed second derivatives.
     pub mixed: Vec<Vec<Option<Motion>>>,
     /// The plans of velocities and accelerations, as constructions.
-    pub plans: Option<Plans>,
+    pub plans: Option<Box<Plans>>,
 }
 
 impl Analysis {
@@ -329,7 +329,7 @@ impl Position {
             analogue: m.analogue,
             more_analogues: m.more_analogues,
             mixed: m.mixed,
-            plans,
+            plans: plans.map(Box::new),
         }
     }
 }
