@@ -46,6 +46,42 @@ impl Square {
 
     /// self·x − b, as nalgebra's `&j * x - b`.
     pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> super::answer::Col {
+        // The common sizes (one, two, three moving links) with the length
+        // known to the compiler; the same operations in the same order.
+        let out = match self.n {
+            3 => self.mul_sub_n::<3>(x, b),
+            6 => self.mul_sub_n::<6>(x, b),
+            9 => self.mul_sub_n::<9>(x, b),
+            _ => self.mul_sub_any(x, b),
+        };
+        super::answer::Col::from_buf_and_len(out, self.n)
+    }
+
+    /// [`Square::mul_sub`] of `N` unknowns, into the first `N` numbers.
+    fn mul_sub_n<const N: usize>(&self, x: &[f64], b: &[f64]) -> [f64; MAX] {
+        let mut out = [0.0; MAX];
+        let (x, b) = (&x[..N], &b[..N]);
+        let (a, _) = self.a[..N * N].as_chunks::<N>();
+        let mut y = [0.0; N];
+        for (c, (col, &xc)) in a.iter().zip(x).enumerate() {
+            if c == 0 {
+                for (y, a) in y.iter_mut().zip(col) {
+                    *y = a * xc;
+                }
+            } else {
+                for (y, a) in y.iter_mut().zip(col) {
+                    *y += a * xc;
+                }
+            }
+        }
+        for ((o, y), b) in out.iter_mut().zip(y).zip(b) {
+            *o = y - b;
+        }
+        out
+    }
+
+    /// [`Square::mul_sub`] of any size, into the first n numbers.
+    fn mul_sub_any(&self, x: &[f64], b: &[f64]) -> [f64; MAX] {
         let n = self.n;
         let mut out = [0.0; MAX];
         let y = &mut out[..n];
@@ -64,7 +100,7 @@ impl Square {
         for (y, b) in y.iter_mut().zip(b) {
             *y -= b;
         }
-        super::answer::Col::from_buf_and_len(out, n)
+        out
     }
 
     /// The same matrix as nalgebra's.
