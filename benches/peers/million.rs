@@ -142,6 +142,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     b.flush()?;
+    b.get_ref().sync_all()?;
     let rel: Vec<f64> = worst.iter().zip(&scale).map(|(w, s)| w / s).collect();
     let agree = rel.iter().copied().fold(0.0, f64::max);
     assert!(
@@ -162,9 +163,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
     let deg = |k: usize| q(k).to_degrees();
 
-    // Each CSV twice, alternating, the faster run kept: the file system's
-    // write-back of one writer's half a gigabyte falls partly into the
-    // next writer's time.
+    // Each CSV twice, alternating, the faster run kept; each file synced
+    // to the disk after its timing (not in it), so that the write-back of
+    // one writer's half a gigabyte does not fall into the next writer's
+    // time.
+    let synced = |name: &str| std::fs::File::open(out.join(name))?.sync_all();
     let (mut compiled_csv, mut closed_csv) = (f64::INFINITY, f64::INFINITY);
     let mut closed_csv_cpu = f64::INFINITY;
     for _ in 0..2 {
@@ -180,6 +183,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             Ok(0.0)
         })?;
         compiled_csv = compiled_csv.min(t);
+        synced("mechplan.csv")?;
         let cpu0 = thread_cpu_s();
         let (t, _) = timed(&mut || {
             let mut w = csv("closed_form.csv")?;
@@ -191,6 +195,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         })?;
         closed_csv = closed_csv.min(t);
         closed_csv_cpu = closed_csv_cpu.min(thread_cpu_s() - cpu0);
+        synced("closed_form.csv")?;
     }
     let mut st = prog.state();
     let (compiled, _) = timed(&mut || {
