@@ -110,7 +110,19 @@ impl Square {
 
     /// The LU factors with partial pivoting, as `nalgebra::LU::new`.
     pub(super) fn lu(&self) -> Lu {
-        let n = self.n;
+        // The common sizes with n known to the compiler (inlined for each
+        // constant); the same operations in the same order.
+        match self.n {
+            3 => self.lu_of(3),
+            6 => self.lu_of(6),
+            9 => self.lu_of(9),
+            n => self.lu_of(n),
+        }
+    }
+
+    /// [`Square::lu`] of this matrix of `n` unknowns.
+    #[inline(always)]
+    fn lu_of(&self, n: usize) -> Lu {
         let mut a = self.a;
         let mut swaps = [(0u8, 0u8); MAX];
         let mut len = 0;
@@ -225,7 +237,19 @@ impl Lu {
 
     /// [`Lu::solve_rows`] of `K` right-hand sides.
     fn solve_k<const K: usize>(&self, b: &mut [f64]) -> bool {
-        let (n, a) = (self.n, &self.a);
+        // The common sizes with n known to the compiler, as `Square::lu`.
+        match self.n {
+            3 => self.solve_k_of::<K>(b, 3),
+            6 => self.solve_k_of::<K>(b, 6),
+            9 => self.solve_k_of::<K>(b, 9),
+            n => self.solve_k_of::<K>(b, n),
+        }
+    }
+
+    /// [`Lu::solve_k`] of `n` unknowns.
+    #[inline(always)]
+    fn solve_k_of<const K: usize>(&self, b: &mut [f64], n: usize) -> bool {
+        let a = &self.a;
         let (b, _) = b[..n * K].as_chunks_mut::<K>();
         for &(i, j) in &self.swaps[..self.len] {
             b.swap(i as usize, j as usize);
