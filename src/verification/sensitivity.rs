@@ -75,8 +75,9 @@ impl Analysis {
         let units = DATA_PERTURBATION / f64::EPSILON;
         let rates = self.input_rates();
         // The transfer functions' runs in route (b)'s unknowns, corrected
-        // at the same positions as the real rates.
-        let runs: SmallVec<[(Unknowns, InputRates); 4]> = transfer_runs(s)
+        // at the same positions as the real rates (on the stack the one run
+        // of a mechanism with one input: a few hundred bytes each).
+        let runs: SmallVec<[(Unknowns, InputRates); 1]> = transfer_runs(s)
             .into_iter()
             .map(|(ij, mine)| {
                 let u = eqs.base.unknowns(|l| s.config.pose(l), mine, self.order);
@@ -98,7 +99,7 @@ impl Analysis {
             scenes.iter().map(|(cs, _, x)| (*cs, &x[..])).collect();
         let moved = eqs.base.corrected_together(&with_x, u, &rates, &runs, near).ok()?;
         let (mut worst, mut transfer) = (0.0f64, 0.0f64);
-        let mine_runs: SmallVec<[Mine; 4]> = transfer_runs(s)
+        let mine_runs: SmallVec<[Mine; 1]> = transfer_runs(s)
             .into_iter()
             .map(|(_, run)| self.mine(s, run))
             .collect();

@@ -165,7 +165,7 @@ impl ConstraintSolver<'_> {
         let all: SmallVec<[Run; 4]> = std::iter::once((u, rates))
             .chain(runs.iter().map(|(u, r)| (u, r.as_slice())))
             .collect();
-        let accs: SmallVec<[Inputs; 4]> = all.iter().map(|(_, rates)| accelerations(rates)).collect();
+        let accs: SmallVec<[Inputs; 2]> = all.iter().map(|(_, rates)| accelerations(rates)).collect();
         // The poses at `u` depend on the data only through the links'
         // slots, the same in every scene of one mechanism.
         let residual = |cs: &Self, x: &[f64]| match cs.eq.slot == self.eq.slot {
@@ -188,7 +188,7 @@ impl ConstraintSolver<'_> {
             }
         }
         let mut dqd = solve(rhs)?.into_iter();
-        let mut qds: SmallVec<[SmallVec<[Option<Col>; 4]>; 2]> = SmallVec::new();
+        let mut qds: SmallVec<[SmallVec<[Option<Col>; 2]>; 2]> = SmallVec::new();
         for _ in scenes {
             qds.push(all.iter().map(|(u, _)| u.qd.as_ref().map(|qd| minus(qd, &dqd.next().expect("one a run")))).collect());
         }
