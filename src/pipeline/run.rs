@@ -260,6 +260,8 @@ impl Analysis {
             // route (b)'s.
             let t1 = Clock::now();
             let contour_time = (t1 - t0).as_secs_f64();
+            // Route (b) along the positions (none on the fast path: no time).
+            let mut constraint_time = 0.0;
             if let Some(cs) = cs.as_mut() {
                 let span = self.path_span(ps, cs.last_inputs(), q);
                 if let Err(e) = cs.solve_positions_along(q, span) {
@@ -269,8 +271,8 @@ impl Analysis {
                     let e = self.contour_error(q, &config).unwrap_or(e);
                     return (placed, Some(e));
                 }
+                constraint_time = t1.elapsed().as_secs_f64();
             }
-            let constraint_time = t1.elapsed().as_secs_f64();
             let kernel = match (kernel.as_mut(), self.order) {
                 (Some(k), Some(order)) => {
                     let (plans, time) = self.kernel_plans(k, &config, (q, from + i), order);
