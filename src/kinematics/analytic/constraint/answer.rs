@@ -4,15 +4,13 @@
 use super::ConstraintSolver;
 use super::dense::{self, Lu, Square};
 use crate::geom::Pose;
-use crate::kinematics::analytic::equations::{Pose as PoseOf, Poses, Rows};
+use crate::kinematics::analytic::equations::{Pose as PoseOf, Poses};
 use crate::kinematics::analytic::{InputRates, MAX_INPUTS, Motion, Order};
 use nalgebra::{DMatrix, DVectorView, DVectorViewMut};
 use smallvec::{SmallVec, smallvec};
 use std::borrow::Cow;
 
-/// A vector of the check's (an answer's unknowns, an equation's
-/// right-hand side): on the stack up to nine numbers, [`dense::MAX`].
-pub type Col = Rows<f64>;
+pub use super::dense::Col;
 
 /// Right-hand sides solved together ([`Factors::solve_many`]).
 type Sides = SmallVec<[Col; 4]>;

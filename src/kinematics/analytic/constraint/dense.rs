@@ -13,6 +13,10 @@ use nalgebra::DMatrix;
 /// The most unknowns (and equations) held on the stack.
 pub(super) const MAX: usize = 9;
 
+/// A vector of the check's (an answer's unknowns, an equation's
+/// right-hand side): on the stack up to nine numbers, [`MAX`].
+pub type Col = crate::kinematics::analytic::equations::Rows<f64>;
+
 /// A square matrix of at most [`MAX`] rows, column-major as nalgebra's
 /// (entry (r, c) at c·n + r).
 #[derive(Clone, Copy)]
@@ -45,7 +49,7 @@ impl Square {
     }
 
     /// self·x − b, as nalgebra's `&j * x - b`.
-    pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> super::answer::Col {
+    pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> Col {
         // The common sizes (one, two, three moving links) with the length
         // known to the compiler; the same operations in the same order.
         let out = match self.n {
@@ -54,7 +58,7 @@ impl Square {
             9 => self.mul_sub_n::<9>(x, b),
             _ => self.mul_sub_any(x, b),
         };
-        super::answer::Col::from_buf_and_len(out, self.n)
+        Col::from_buf_and_len(out, self.n)
     }
 
     /// [`Square::mul_sub`] of `N` unknowns, into the first `N` numbers.
