@@ -77,9 +77,10 @@ impl Analysis {
         // The transfer functions' runs in route (b)'s unknowns, corrected
         // at the same positions as the real rates (on the stack the one run
         // of a mechanism with one input: a few hundred bytes each).
-        let runs: SmallVec<[(Unknowns, InputRates); 1]> = transfer_runs(s)
-            .into_iter()
-            .map(|(ij, mine)| {
+        let transfer_runs = transfer_runs(s);
+        let runs: SmallVec<[(Unknowns, InputRates); 1]> = transfer_runs
+            .iter()
+            .map(|&(ij, mine)| {
                 let u = eqs.base.unknowns(|l| s.config.pose(l), mine, self.order);
                 (u, unit_rates(s.drives.len(), ij))
             })
@@ -99,9 +100,9 @@ impl Analysis {
             scenes.iter().map(|(cs, _, x)| (*cs, &x[..])).collect();
         let moved = eqs.base.corrected_together(&with_x, u, &rates, &runs, near).ok()?;
         let (mut worst, mut transfer) = (0.0f64, 0.0f64);
-        let mine_runs: SmallVec<[Mine; 1]> = transfer_runs(s)
-            .into_iter()
-            .map(|(_, run)| self.mine(s, run))
+        let mine_runs: SmallVec<[Mine; 1]> = transfer_runs
+            .iter()
+            .map(|&(_, run)| self.mine(s, run))
             .collect();
         for ((_, an, _), (motion, moved)) in scenes.iter().zip(&moved) {
             // A NaN is no sensitivity (f64::max would drop it): refused,

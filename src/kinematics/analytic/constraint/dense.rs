@@ -50,47 +50,25 @@ impl Square {
 
     /// self·x − b, as nalgebra's `&j * x - b`.
     pub(super) fn mul_sub(&self, x: &[f64], b: &[f64]) -> Col {
-        // The common sizes (one, two, three moving links) with the length
-        // known to the compiler; the same operations in the same order.
+        // The common sizes (one, two, three moving links) with n known to
+        // the compiler (inlined for each constant), as `Square::lu`.
         let out = match self.n {
-            3 => self.mul_sub_n::<3>(x, b),
-            6 => self.mul_sub_n::<6>(x, b),
-            9 => self.mul_sub_n::<9>(x, b),
-            _ => self.mul_sub_any(x, b),
+            3 => self.mul_sub_of(x, b, 3),
+            6 => self.mul_sub_of(x, b, 6),
+            9 => self.mul_sub_of(x, b, 9),
+            n => self.mul_sub_of(x, b, n),
         };
         Col::from_buf_and_len(out, self.n)
     }
 
-    /// [`Square::mul_sub`] of `N` unknowns, into the first `N` numbers.
-    fn mul_sub_n<const N: usize>(&self, x: &[f64], b: &[f64]) -> [f64; MAX] {
-        let mut out = [0.0; MAX];
-        let (x, b) = (&x[..N], &b[..N]);
-        let (a, _) = self.a[..N * N].as_chunks::<N>();
-        let mut y = [0.0; N];
-        for (c, (col, &xc)) in a.iter().zip(x).enumerate() {
-            if c == 0 {
-                for (y, a) in y.iter_mut().zip(col) {
-                    *y = a * xc;
-                }
-            } else {
-                for (y, a) in y.iter_mut().zip(col) {
-                    *y += a * xc;
-                }
-            }
-        }
-        for ((o, y), b) in out.iter_mut().zip(y).zip(b) {
-            *o = y - b;
-        }
-        out
-    }
-
-    /// [`Square::mul_sub`] of any size, into the first n numbers.
-    fn mul_sub_any(&self, x: &[f64], b: &[f64]) -> [f64; MAX] {
-        let n = self.n;
+    /// [`Square::mul_sub`] of this matrix of `n` unknowns, into the first
+    /// n numbers.
+    #[inline(always)]
+    fn mul_sub_of(&self, x: &[f64], b: &[f64], n: usize) -> [f64; MAX] {
         let mut out = [0.0; MAX];
         let y = &mut out[..n];
-        for (c, &xc) in x.iter().enumerate() {
-            let col = self.column(c);
+        for (c, &xc) in x[..n].iter().enumerate() {
+            let col = &self.a[c * n..(c + 1) * n];
             if c == 0 {
                 for (y, a) in y.iter_mut().zip(col) {
                     *y = a * xc;
